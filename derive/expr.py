@@ -1,0 +1,197 @@
+"""Safe parser for expressions taken from untrusted problem files.
+
+Text is parsed with ``ast.parse(mode="eval")`` and the sympy tree is built by
+hand from a whitelist of node types; nothing is ever evaluated by Python or by
+sympy's own string parser.  Number literals become exact sympy Rationals taken
+from their source text (``2.35`` -> 47/20), never floats.  ``^`` means power
+(it is rewritten to ``**`` before parsing, so it also gets power precedence).
+Names resolve only to the symbols the caller declares, plus the constant
+``pi``; ``E``, ``I``, ``e``, ``N``, ``S``... are ordinary symbol names.
+Inputs are size-limited so that hostile text fails fast instead of hanging.
+"""
+from __future__ import annotations
+
+import ast
+import decimal
+import math
+from typing import Callable, Mapping
+
+import sympy
+
+__all__ = ["ExprError", "FUNCTIONS", "RESERVED", "parse"]
+
+
+class ExprError(ValueError):
+    """A one-line, human-readable reason why an expression was refused."""
+
+
+FUNCTIONS: dict[str, Callable] = {
+    "sqrt": sympy.sqrt, "sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan,
+    "asin": sympy.asin, "acos": sympy.acos, "atan": sympy.atan,
+    "sinh": sympy.sinh, "cosh": sympy.cosh, "tanh": sympy.tanh,
+    "exp": sympy.exp, "log": sympy.log, "abs": sympy.Abs,
+}
+RESERVED: frozenset[str] = frozenset(FUNCTIONS) | {"pi"}
+
+MAX_DEPTH = 60
+MAX_LOG10 = 1000  # numbers beyond 10**±1000 are refused
+_OPS = {ast.Add: sympy.Add, ast.Sub: lambda a, b: a - b, ast.Mult: sympy.Mul,
+        ast.Div: lambda a, b: a / b, ast.Pow: None, ast.BitXor: None}
+_OP_TEXT = {ast.FloorDiv: "//", ast.Mod: "%", ast.MatMult: "@", ast.LShift: "<<",
+            ast.RShift: ">>", ast.BitOr: "|", ast.BitAnd: "&", ast.Not: "not", ast.Invert: "~"}
+_NOT_ALLOWED = {ast.Attribute: "attribute access is", ast.Subscript: "subscripts are",
+                ast.Slice: "slices are", ast.Lambda: "lambda is", ast.ListComp: "comprehensions are",
+                ast.SetComp: "comprehensions are", ast.DictComp: "comprehensions are",
+                ast.GeneratorExp: "comprehensions are", ast.Compare: "comparisons are",
+                ast.BoolOp: "'and'/'or' are", ast.IfExp: "conditional expressions are",
+                ast.NamedExpr: "assignments are", ast.Tuple: "tuples are", ast.List: "lists are",
+                ast.Dict: "dicts are", ast.Set: "sets are", ast.Starred: "starred arguments are",
+                ast.JoinedStr: "string literals are", ast.Await: "await is", ast.Yield: "yield is",
+                ast.YieldFrom: "yield is"}
+
+
+def _rational(digits: str) -> sympy.Rational:
+    """Exact Rational from decimal text such as '2.35' or '-1.5e-12'."""
+    try:
+        d = decimal.Decimal(digits.replace("_", ""))
+    except decimal.InvalidOperation:
+        raise ExprError(f"not a number: {digits!r}") from None
+    if not d.is_finite():
+        raise ExprError(f"not a finite number: {digits!r}")
+    if d and abs(d.adjusted()) > MAX_LOG10:
+        raise ExprError(f"number out of range (limit 10**{MAX_LOG10})")
+    return sympy.Rational(*d.as_integer_ratio())
+
+
+def _log10_abs(r: sympy.Rational) -> float:
+    return math.log10(abs(r.p)) - math.log10(r.q)
+
+
+def _power(base: sympy.Expr, expo: sympy.Expr) -> sympy.Expr:
+    if isinstance(base, sympy.Number) and isinstance(expo, sympy.Number):
+        # check size BEFORE sympy computes the power, so 9**9**9 fails fast
+        if abs(expo) > MAX_LOG10:
+            raise ExprError(f"exponent too large (limit {MAX_LOG10})")
+        if base == 0 and expo < 0:
+            raise ExprError("division by zero")
+        if base != 0 and abs(expo * _log10_abs(base)) > MAX_LOG10:
+            raise ExprError(f"power out of range (limit 10**{MAX_LOG10})")
+    return sympy.Pow(base, expo)
+
+
+def _syntax_tree(text: str, max_length: int) -> tuple[ast.Expression, str]:
+    """Length-check, parse and depth-check ``text``; return (tree, source) (package-internal)."""
+    if len(text) > max_length:
+        raise ExprError(f"expression too long ({len(text)} characters; limit {max_length})")
+    text = text.strip().replace("^", "**")
+    if not text:
+        raise ExprError("empty expression")
+    level = deepest = 0  # redundant parentheses leave no AST node, so count them in the text
+    for ch in text:
+        level += (ch in "([{") - (ch in ")]}")
+        deepest = max(deepest, level)
+    if deepest > MAX_DEPTH:
+        raise ExprError(f"expression nested too deeply (limit {MAX_DEPTH})")
+    try:
+        tree = ast.parse(text, mode="eval")
+    except SyntaxError as e:
+        raise ExprError(f"syntax error: {e.msg}") from None
+    except (ValueError, RecursionError, MemoryError) as e:
+        raise ExprError(f"syntax error: {str(e).splitlines()[0] if str(e) else 'too complex'}") from None
+    stack = [(tree.body, 1)]  # iterative, so depth itself cannot blow the stack
+    while stack:
+        node, depth = stack.pop()
+        if depth > MAX_DEPTH:
+            raise ExprError(f"expression nested too deeply (limit {MAX_DEPTH})")
+        stack.extend((c, depth + 1) for c in ast.iter_child_nodes(node) if isinstance(c, ast.expr))
+    return tree, text
+
+
+def _build(tree: ast.Expression, source: str, resolve: Callable[[str], sympy.Expr],
+           functions: Mapping[str, Callable]) -> sympy.Expr:
+    """Turn a checked syntax tree into sympy from whitelisted nodes only (package-internal)."""
+    def build(node: ast.AST) -> sympy.Expr:
+        if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
+            a, b = build(node.left), build(node.right)
+            if isinstance(node.op, (ast.Pow, ast.BitXor)):
+                return _power(a, b)
+            if isinstance(node.op, ast.Div) and b.is_zero:
+                raise ExprError("division by zero")
+            return _OPS[type(node.op)](a, b)
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            v = build(node.operand)
+            return -v if isinstance(node.op, ast.USub) else v
+        if isinstance(node, (ast.BinOp, ast.UnaryOp)):
+            raise ExprError(f"operator '{_OP_TEXT.get(type(node.op), type(node.op).__name__)}' is not allowed")
+        if isinstance(node, ast.Constant):
+            v = node.value
+            if isinstance(v, bool) or v is None or v is Ellipsis:
+                raise ExprError(f"'{v}' is not allowed")
+            if isinstance(v, int):
+                if v and math.log10(v) > MAX_LOG10:
+                    raise ExprError(f"number is out of range (limit 10**{MAX_LOG10})")
+                return sympy.Integer(v)
+            if isinstance(v, float):
+                return _rational(ast.get_source_segment(source, node))
+            kind = {str: "string", bytes: "bytes", complex: "complex"}.get(type(v), type(v).__name__)
+            raise ExprError(f"{kind} literals are not allowed")
+        if isinstance(node, ast.Name):
+            if node.id in functions:
+                raise ExprError(f"'{node.id}' is a function; write {node.id}(...)")
+            return resolve(node.id)
+        if isinstance(node, ast.Call):
+            if not isinstance(node.func, ast.Name):
+                raise ExprError("only calls of named functions are allowed")
+            name = node.func.id
+            if name not in functions:
+                allowed = ", ".join(sorted(functions)) or "none"
+                raise ExprError(f"function '{name}' is not allowed (allowed: {allowed})")
+            if node.keywords:
+                raise ExprError(f"keyword arguments are not allowed (in {name}(...))")
+            if len(node.args) != 1:
+                raise ExprError(f"{name}() takes exactly 1 argument ({len(node.args)} given)")
+            return functions[name](build(node.args[0]))
+        what = _NOT_ALLOWED.get(type(node), f"'{type(node).__name__}' syntax is")
+        raise ExprError(f"{what} not allowed")
+
+    result = build(tree.body)
+    if result.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo):
+        raise ExprError("expression is undefined (division by zero?)")
+    return result
+
+
+def parse(text: str | int | float | decimal.Decimal, symbols: Mapping[str, sympy.Symbol], *,
+          max_length: int = 1000) -> sympy.Expr:
+    """Parse untrusted ``text`` into an exact sympy expression over ``symbols``.
+
+    >>> import sympy
+    >>> I, w = sympy.symbols("I omega")
+    >>> parse("I*omega^2/2 + 0.25", {"I": I, "omega": w})
+    I*omega**2/2 + 1/4
+
+    Numbers already decoded by YAML (int, float, Decimal) are accepted and made
+    exact.  Any refusal raises ExprError with a one-line message.
+    """
+    if isinstance(text, bool):
+        raise ExprError("expected an expression, got a boolean")
+    if isinstance(text, int):
+        return sympy.Integer(text)
+    if isinstance(text, float):
+        return _rational(repr(text))
+    if isinstance(text, decimal.Decimal):
+        return _rational(str(text))
+    if not isinstance(text, str):
+        raise ExprError(f"expected an expression, got {type(text).__name__}")
+    clash = sorted(RESERVED & set(symbols))
+    if clash:
+        raise ExprError(f"symbol name {clash[0]!r} is reserved")
+    declared = ", ".join(sorted(symbols)) or "none"
+
+    def resolve(name: str) -> sympy.Expr:
+        if name == "pi":
+            return sympy.pi
+        if name not in symbols:
+            raise ExprError(f"unknown symbol '{name}' (declared: {declared})")
+        return symbols[name]
+
+    return _build(*_syntax_tree(text, max_length), resolve, FUNCTIONS)

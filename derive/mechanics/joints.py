@@ -1,0 +1,126 @@
+"""What each constraint means to each route of derivation.
+
+For Lagrange's method a constraint is a holonomic gap g(q) = 0, normalized so that its
+multiplier *is* the physical force it names (the tension, a reaction component): the
+generalized constraint force is lambda * dg/dq. For Newton–Euler the same constraint is
+a set of forces applied at material points, and a velocity condition built from
+rigid-body kinematics (v = v_cm + omega x r), differentiated once for the accelerations.
+The two descriptions are written independently, so agreement of the routes checks both.
+
+>>> import sympy as sp
+>>> from derive.scene import Body, Pin, Scene
+>>> from derive.mechanics.kinematics import Coordinates
+>>> scene = Scene({"disk": Body("disk", "custom", sp.Symbol("M"), {}, sp.Symbol("I"))},
+...               (Pin("axle", "disk", (0, 0)),))
+>>> gaps(scene.constraints[0], Coordinates(scene))
+[x_disk, y_disk]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import singledispatch
+
+import sympy as sp
+
+from derive.mechanics.kinematics import Coordinates
+from derive.scene import Constraint, Pin, WoundString
+
+
+@dataclass(frozen=True)
+class AppliedForce:
+    """A force on a body, applied at a world-frame offset from its center of mass."""
+
+    body: str
+    offset: sp.Matrix
+    force: sp.Matrix
+    label: str
+
+
+@singledispatch
+def forces(constraint: Constraint) -> dict[str, sp.Symbol]:
+    """The unknown force components a constraint exerts, by the names an answer asks for."""
+    raise TypeError(constraint)
+
+
+@forces.register
+def _(pin: Pin) -> dict[str, sp.Symbol]:
+    return {
+        "reaction.x": sp.Symbol(f"R_x_{pin.name}", real=True),
+        "reaction.y": sp.Symbol(f"R_y_{pin.name}", real=True),
+    }
+
+
+@forces.register
+def _(cord: WoundString) -> dict[str, sp.Symbol]:
+    return {"tension": sp.Symbol(f"T_{cord.name}", real=True)}
+
+
+@singledispatch
+def gaps(constraint: Constraint, coords: Coordinates) -> list[sp.Expr]:
+    """Holonomic constraint functions g(q), each paired in order with `forces(constraint)`."""
+    raise TypeError(constraint)
+
+
+@gaps.register
+def _(pin: Pin, coords: Coordinates) -> list[sp.Expr]:
+    point = coords.position(pin.body, pin.offset)
+    anchor = point.xreplace(coords.at_rest_in_reference())
+    return list(point - anchor)
+
+
+@gaps.register
+def _(cord: WoundString, coords: Coordinates) -> list[sp.Expr]:
+    # The cord pays out from the rim: the load's height follows the rim's arc length
+    # s * R * theta, so g = y_load - y_reel - s R theta; its multiplier pulls the load up.
+    radius = coords.scene.bodies[cord.reel].sizes["radius"]
+    return [
+        coords.of(cord.load, "y").q
+        - coords.of(cord.reel, "y").q
+        - cord.side * radius * coords.angle(cord.reel)
+    ]
+
+
+@singledispatch
+def applied_forces(constraint: Constraint, coords: Coordinates) -> list[AppliedForce]:
+    """The forces a constraint applies to the bodies, for the Newton–Euler balances."""
+    raise TypeError(constraint)
+
+
+@applied_forces.register
+def _(pin: Pin, coords: Coordinates) -> list[AppliedForce]:
+    f = forces(pin)
+    reaction = sp.Matrix([f["reaction.x"], f["reaction.y"]])
+    return [AppliedForce(pin.body, coords.rotated(pin.body, pin.offset), reaction, f"reaction of {pin.name}")]
+
+
+@applied_forces.register
+def _(cord: WoundString, coords: Coordinates) -> list[AppliedForce]:
+    tension = forces(cord)["tension"]
+    radius = coords.scene.bodies[cord.reel].sizes["radius"]
+    # The tangent point is fixed in space beside the reel's center, not in the reel.
+    tangent = sp.Matrix([cord.side * radius, 0])
+    return [
+        AppliedForce(cord.load, sp.zeros(2, 1), sp.Matrix([0, tension]), f"tension of {cord.name}"),
+        AppliedForce(cord.reel, tangent, sp.Matrix([0, -tension]), f"tension of {cord.name}"),
+    ]
+
+
+@singledispatch
+def velocity_conditions(constraint: Constraint, coords: Coordinates) -> list[sp.Expr]:
+    """Velocity expressions the constraint holds at zero (rigid-body kinematics)."""
+    raise TypeError(constraint)
+
+
+@velocity_conditions.register
+def _(pin: Pin, coords: Coordinates) -> list[sp.Expr]:
+    # The material point at the pivot does not move.
+    return list(coords.material_velocity(pin.body, coords.rotated(pin.body, pin.offset)))
+
+
+@velocity_conditions.register
+def _(cord: WoundString, coords: Coordinates) -> list[sp.Expr]:
+    # An inextensible cord that does not slip on the rim: the load moves vertically with
+    # the rim's material point at the tangent.
+    radius = coords.scene.bodies[cord.reel].sizes["radius"]
+    rim = coords.material_velocity(cord.reel, sp.Matrix([cord.side * radius, 0]))
+    return [coords.of(cord.load, "y").u - rim[1]]

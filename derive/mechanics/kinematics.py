@@ -1,0 +1,106 @@
+"""Planar coordinates of a scene and the time derivative along its motion.
+
+Each body has a center-of-mass position (x, y) and, unless it is a point mass, an angle
+theta (counter-clockwise positive). Every coordinate q has a velocity symbol u and an
+acceleration symbol a, so a time derivative is the chain rule
+d/dt f(q, u) = sum(df/dq * u + df/du * a), with no sympy Function objects to substitute.
+
+>>> import sympy as sp
+>>> from derive.scene import Body, Scene
+>>> scene = Scene(bodies={"wheel": Body("wheel", "custom", sp.Symbol("M"), {}, sp.Symbol("I"))})
+>>> coords = Coordinates(scene)
+>>> th = coords.of("wheel", "theta")
+>>> coords.ddt(sp.sin(th.q))
+thetadot_wheel*cos(theta_wheel)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.scene import Scene
+
+
+@dataclass(frozen=True)
+class Coordinate:
+    """One generalized coordinate: its symbol, velocity and acceleration symbols."""
+
+    body: str
+    kind: str  # "x", "y" or "theta"
+    q: sp.Symbol
+    u: sp.Symbol
+    a: sp.Symbol
+
+
+class Coordinates:
+    """The coordinates of every body of a scene, with planar kinematics on them."""
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        self.all: list[Coordinate] = []
+        for body in scene.bodies.values():
+            kinds = ("x", "y", "theta") if body.rotates else ("x", "y")
+            for kind in kinds:
+                self.all.append(
+                    Coordinate(
+                        body.name,
+                        kind,
+                        sp.Symbol(f"{kind}_{body.name}", real=True),
+                        sp.Symbol(f"{kind}dot_{body.name}", real=True),
+                        sp.Symbol(f"{kind}ddot_{body.name}", real=True),
+                    )
+                )
+        self._by_key = {(c.body, c.kind): c for c in self.all}
+
+    def of(self, body: str, kind: str) -> Coordinate:
+        return self._by_key[(body, kind)]
+
+    def angle(self, body: str) -> sp.Expr:
+        """The body's angle, zero for a point mass."""
+        c = self._by_key.get((body, "theta"))
+        return c.q if c else sp.Integer(0)
+
+    def angular_velocity(self, body: str) -> sp.Expr:
+        c = self._by_key.get((body, "theta"))
+        return c.u if c else sp.Integer(0)
+
+    def ddt(self, expr: sp.Expr) -> sp.Expr:
+        """Total time derivative of an expression in the q and u symbols."""
+        return sum(
+            (sp.diff(expr, c.q) * c.u + sp.diff(expr, c.u) * c.a for c in self.all),
+            sp.Integer(0),
+        )
+
+    def rotated(self, body: str, offset) -> sp.Matrix:
+        """A body-frame offset turned into the world frame by the body's angle."""
+        th = self.angle(body)
+        rotation = sp.Matrix([[sp.cos(th), -sp.sin(th)], [sp.sin(th), sp.cos(th)]])
+        return rotation * sp.Matrix(offset)
+
+    def position(self, body: str, offset=(0, 0)) -> sp.Matrix:
+        """World position of the material point at a body-frame offset from the center of mass."""
+        center = sp.Matrix([self.of(body, "x").q, self.of(body, "y").q])
+        return center + self.rotated(body, offset)
+
+    def material_velocity(self, body: str, world_offset: sp.Matrix) -> sp.Matrix:
+        """Rigid-body velocity v = v_cm + omega z x r of the material point at a world offset r."""
+        omega = self.angular_velocity(body)
+        return sp.Matrix(
+            [
+                self.of(body, "x").u - omega * world_offset[1],
+                self.of(body, "y").u + omega * world_offset[0],
+            ]
+        )
+
+    def at_rest_in_reference(self) -> dict[sp.Symbol, int]:
+        """Every coordinate and velocity zero: the reference configuration, at rest."""
+        return {s: 0 for c in self.all for s in (c.q, c.u)}
+
+    @property
+    def accelerations(self) -> list[sp.Symbol]:
+        return [c.a for c in self.all]
+
+    @property
+    def state(self) -> set[sp.Symbol]:
+        return {s for c in self.all for s in (c.q, c.u)}
