@@ -14,14 +14,17 @@ from __future__ import annotations
 import ast
 import decimal
 import math
+import operator
 from typing import Callable, Mapping
 
 import sympy
 
+from derive.errors import InputError
+
 __all__ = ["ExprError", "FUNCTIONS", "RESERVED", "parse"]
 
 
-class ExprError(ValueError):
+class ExprError(InputError):
     """A one-line, human-readable reason why an expression was refused."""
 
 
@@ -35,8 +38,6 @@ RESERVED: frozenset[str] = frozenset(FUNCTIONS) | {"pi"}
 
 MAX_DEPTH = 60
 MAX_LOG10 = 1000  # numbers beyond 10**±1000 are refused
-_OPS = {ast.Add: sympy.Add, ast.Sub: lambda a, b: a - b, ast.Mult: sympy.Mul,
-        ast.Div: lambda a, b: a / b, ast.Pow: None, ast.BitXor: None}
 _OP_TEXT = {ast.FloorDiv: "//", ast.Mod: "%", ast.MatMult: "@", ast.LShift: "<<",
             ast.RShift: ">>", ast.BitOr: "|", ast.BitAnd: "&", ast.Not: "not", ast.Invert: "~"}
 _NOT_ALLOWED = {ast.Attribute: "attribute access is", ast.Subscript: "subscripts are",
@@ -50,6 +51,15 @@ _NOT_ALLOWED = {ast.Attribute: "attribute access is", ast.Subscript: "subscripts
                 ast.YieldFrom: "yield is"}
 
 
+_LIMIT = 10**MAX_LOG10
+
+
+def _check_numbers(expr: sympy.Expr) -> sympy.Expr:
+    if any(abs(r.p) > _LIMIT or r.q > _LIMIT for r in expr.atoms(sympy.Rational)):
+        raise ExprError(f"number out of range (limit 10**{MAX_LOG10})")
+    return expr
+
+
 def _rational(digits: str) -> sympy.Rational:
     """Exact Rational from decimal text such as '2.35' or '-1.5e-12'."""
     try:
@@ -60,23 +70,25 @@ def _rational(digits: str) -> sympy.Rational:
         raise ExprError(f"not a finite number: {digits!r}")
     if d and abs(d.adjusted()) > MAX_LOG10:
         raise ExprError(f"number out of range (limit 10**{MAX_LOG10})")
-    return sympy.Rational(*d.as_integer_ratio())
-
-
-def _log10_abs(r: sympy.Rational) -> float:
-    return math.log10(abs(r.p)) - math.log10(r.q)
+    return _check_numbers(sympy.Rational(*d.as_integer_ratio()))
 
 
 def _power(base: sympy.Expr, expo: sympy.Expr) -> sympy.Expr:
-    if isinstance(base, sympy.Number) and isinstance(expo, sympy.Number):
-        # check size BEFORE sympy computes the power, so 9**9**9 fails fast
-        if abs(expo) > MAX_LOG10:
-            raise ExprError(f"exponent too large (limit {MAX_LOG10})")
-        if base == 0 and expo < 0:
+    # check sizes BEFORE sympy computes the power, so 9**9**9 fails fast; sympy also
+    # distributes numeric powers over products, (2*x)**n -> 2**n*x**n, so check every number in base
+    if isinstance(expo, sympy.Number):
+        if base.is_zero and expo < 0:
             raise ExprError("division by zero")
-        if base != 0 and abs(expo * _log10_abs(base)) > MAX_LOG10:
-            raise ExprError(f"power out of range (limit 10**{MAX_LOG10})")
+        if isinstance(base, sympy.Number) and abs(expo) > MAX_LOG10:
+            raise ExprError(f"exponent too large (limit {MAX_LOG10})")
+        for r in base.atoms(sympy.Rational):
+            if r and abs(expo) * abs(math.log10(abs(r.p)) - math.log10(r.q)) > MAX_LOG10:
+                raise ExprError(f"power out of range (limit 10**{MAX_LOG10})")
     return sympy.Pow(base, expo)
+
+
+_OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
+        ast.Div: operator.truediv, ast.Pow: _power, ast.BitXor: _power}  # ^ is rewritten to ** anyway
 
 
 def _syntax_tree(text: str, max_length: int) -> tuple[ast.Expression, str]:
@@ -113,11 +125,9 @@ def _build(tree: ast.Expression, source: str, resolve: Callable[[str], sympy.Exp
     def build(node: ast.AST) -> sympy.Expr:
         if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
             a, b = build(node.left), build(node.right)
-            if isinstance(node.op, (ast.Pow, ast.BitXor)):
-                return _power(a, b)
             if isinstance(node.op, ast.Div) and b.is_zero:
                 raise ExprError("division by zero")
-            return _OPS[type(node.op)](a, b)
+            return _check_numbers(_OPS[type(node.op)](a, b))
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
             v = build(node.operand)
             return -v if isinstance(node.op, ast.USub) else v
@@ -128,9 +138,7 @@ def _build(tree: ast.Expression, source: str, resolve: Callable[[str], sympy.Exp
             if isinstance(v, bool) or v is None or v is Ellipsis:
                 raise ExprError(f"'{v}' is not allowed")
             if isinstance(v, int):
-                if v and math.log10(v) > MAX_LOG10:
-                    raise ExprError(f"number is out of range (limit 10**{MAX_LOG10})")
-                return sympy.Integer(v)
+                return _check_numbers(sympy.Integer(v))
             if isinstance(v, float):
                 return _rational(ast.get_source_segment(source, node))
             kind = {str: "string", bytes: "bytes", complex: "complex"}.get(type(v), type(v).__name__)
@@ -144,8 +152,8 @@ def _build(tree: ast.Expression, source: str, resolve: Callable[[str], sympy.Exp
                 raise ExprError("only calls of named functions are allowed")
             name = node.func.id
             if name not in functions:
-                allowed = ", ".join(sorted(functions)) or "none"
-                raise ExprError(f"function '{name}' is not allowed (allowed: {allowed})")
+                allowed = f" (allowed: {', '.join(sorted(functions))})" if functions else ""
+                raise ExprError(f"function '{name}' is not allowed{allowed}")
             if node.keywords:
                 raise ExprError(f"keyword arguments are not allowed (in {name}(...))")
             if len(node.args) != 1:
@@ -175,7 +183,7 @@ def parse(text: str | int | float | decimal.Decimal, symbols: Mapping[str, sympy
     if isinstance(text, bool):
         raise ExprError("expected an expression, got a boolean")
     if isinstance(text, int):
-        return sympy.Integer(text)
+        return _check_numbers(sympy.Integer(text))
     if isinstance(text, float):
         return _rational(repr(text))
     if isinstance(text, decimal.Decimal):

@@ -112,3 +112,60 @@ class Scene:
 
     def needs_dynamics(self) -> bool:
         return bool(self.constraints) or self.gravity is not None
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A quantity a problem may ask of its scene, parsed from a dotted path.
+
+    kinds: "inertia" (target a body, detail an axis), "acceleration" (a body; x or y),
+    "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
+    "small_oscillation" (detail omega or period).
+    """
+
+    kind: str
+    target: str | None
+    detail: str | None
+
+
+#: The forces each constraint kind exerts, as an answer path names them.
+CONSTRAINT_FORCES = {Pin: ("reaction.x", "reaction.y"), WoundString: ("tension",)}
+
+def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity:
+    """Parse an answer path such as ``block.acceleration.y`` against a scene.
+
+    Raises ValueError with a one-line reason when the path names nothing in the scene.
+
+    >>> import sympy as sp
+    >>> scene = Scene({"ball": Body("ball", "point", sp.Symbol("m"), {})})
+    >>> parse_quantity(scene, "ball.acceleration.y")
+    Quantity(kind='acceleration', target='ball', detail='y')
+    """
+    head, _, rest = path.partition(".")
+    if head == "small_oscillation":
+        if rest not in ("omega", "period"):
+            raise ValueError("small_oscillation has omega and period")
+        return Quantity("small_oscillation", None, rest)
+    if head in scene.bodies:
+        body = scene.bodies[head]
+        if rest == "inertia":
+            shape = inertia.SHAPES.get(body.shape)
+            axes = tuple(shape.axes) if shape else ()
+            if axis is None and body.shape != "point":
+                return Quantity("inertia", head, None)
+            if axis not in axes:
+                raise ValueError(f"axis of a {body.shape} is one of: {', '.join(axes) or 'none'}")
+            return Quantity("inertia", head, axis)
+        if rest in ("acceleration.x", "acceleration.y"):
+            return Quantity("acceleration", head, rest[-1])
+        if rest == "angular_acceleration" and body.rotates:
+            return Quantity("angular_acceleration", head, None)
+        raise ValueError(f"a body has inertia, acceleration.x, acceleration.y, angular_acceleration; not {rest!r}")
+    names = {c.name: c for c in scene.constraints}
+    if head in names:
+        allowed = CONSTRAINT_FORCES[type(names[head])]
+        if rest not in allowed:
+            raise ValueError(f"{head} has {', '.join(allowed)}; not {rest!r}")
+        return Quantity("force", head, rest)
+    known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
+    raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})")

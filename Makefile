@@ -1,0 +1,26 @@
+# The README's commands: `make sheet` (set up, then build the demo set) and `make test`.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+
+.PHONY: setup tools sheet test bench clean
+
+setup: $(VENV)/.installed tools
+
+$(VENV)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install --quiet --upgrade pip
+	$(BIN)/pip install --quiet -e '.[test]'
+	touch $@
+
+tools:
+	@scripts/install-tools
+
+sheet: setup
+	$(BIN)/derive sheet demo --out build/demo
+
+test: setup
+	$(BIN)/pytest -q
+
+clean:
+	rm -rf build .pytest_cache

@@ -1,0 +1,177 @@
+"""The `derive` command line: parse, call, print. Nothing else lives here.
+
+Heavy modules (sympy and what uses it) are imported inside the commands, so that
+`derive --help` starts fast. Exit status: 0 success, 2 bad input (one line on stderr),
+1 an internal error.
+"""
+from __future__ import annotations
+
+import functools
+import os
+import sys
+import traceback
+
+import click
+
+from derive import __version__
+from derive.errors import InputError
+
+FORMATS = click.Choice(["text", "latex", "json"])
+
+
+class BadInput(click.ClickException):
+    """Bad input from a file or the command line: one line, exit status 2."""
+
+    exit_code = 2
+
+    def show(self, file=None) -> None:
+        click.echo(f"derive: error: {self.format_message()}", err=True)
+
+
+def reports_errors(command):
+    """Turn bad input into exit 2 with one line, and anything unexpected into exit 1."""
+
+    @functools.wraps(command)
+    def wrapper(*args, **kwargs):
+        try:
+            return command(*args, **kwargs)
+        except click.ClickException:
+            raise
+        except InputError as error:
+            raise BadInput(str(error)) from None
+        except KeyboardInterrupt:
+            click.echo("derive: interrupted", err=True)
+            sys.exit(130)
+        except Exception as error:  # an engine bug: say so, exit 1
+            if os.environ.get("DERIVE_DEBUG"):
+                traceback.print_exc()
+            click.echo(f"derive: internal error: {type(error).__name__}: {error}", err=True)
+            sys.exit(1)
+
+    return wrapper
+
+
+def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:
+    """`--set m=2 --set "M=200 g"` as {"m": "2", "M": "200 g"}."""
+    result = {}
+    for text in assignments:
+        name, sep, value = text.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            raise BadInput(f"--set {text}: expected NAME=VALUE, e.g. --set m=2 or --set \"m=200 g\"")
+        result[name.strip()] = value.strip()
+    return result
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
+@click.version_option(__version__, prog_name="derive")
+def main() -> None:
+    """Derive the mechanics of rotating bodies, and build problem sets from it.
+
+    A problem file describes a scene (bodies, pivots, strings, gravity) and the
+    quantities it asks for; derive finds the equations of motion by Lagrange's method
+    and by Newton–Euler, checks that they agree, and answers exactly and numerically.
+
+    \b
+    Examples:
+      derive list
+      derive solve string_wrapped_disk --set m=1 --set M=2 --set R=0.2
+      derive solve problems/torque/compound_pendulum.yaml --format json
+      derive inertia rod --axis end
+      derive sheet demo --variants 5 --seed 7 --out build/demo
+    """
+
+
+@main.command()
+@click.argument("problem")
+@click.option("--set", "assignments", multiple=True, metavar="NAME=VALUE",
+              help='Give a parameter a value: "m=2" (in its declared unit) or "m=200 g". Repeatable.')
+@click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
+@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True,
+              help="Significant digits of every value (each one correct to the digits shown).")
+@reports_errors
+def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> None:
+    """Derive a problem and print its equations of motion, answers and checks.
+
+    PROBLEM is a problem file or a library id (see `derive list`). An answer gets a
+    value when every parameter it uses has one (declared in the file or given with
+    --set); otherwise only its exact expression is printed.
+    """
+    from derive import problem as problems
+    from derive import report
+
+    result = report.solve(problems.load(problem), parse_assignments(assignments), digits)
+    click.echo({"text": report.as_text, "latex": report.as_latex, "json": report.as_json}[fmt](result))
+
+
+@main.command()
+@click.argument("shape")
+@click.option("--axis", default=None, help="Axis name (rod: center, end; ring, disk: symmetry, diameter).")
+@click.option("--set", "assignments", multiple=True, metavar="NAME=VALUE", help="Values for M, L or R (SI).")
+@click.option("--format", "fmt", type=FORMATS, default="text", show_default=True)
+@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True)
+@reports_errors
+def inertia(shape: str, axis: str | None, assignments: tuple[str, ...], fmt: str, digits: int) -> None:
+    """Moment of inertia of a uniform SHAPE by integration.
+
+    Prints the integral set up, the mass from the same density, the result and the
+    result as a multiple of M times the size squared.
+
+    \b
+    Example:  derive inertia disk --axis symmetry --set M=2 --set R=0.5
+    """
+    from derive import inertia_report
+
+    result = inertia_report.report(shape, axis, parse_assignments(assignments), digits)
+    click.echo(inertia_report.FORMATTERS[fmt](result))
+
+
+@main.command(name="list")
+@click.option("--topic", default=None, help="Only problems of this topic.")
+@reports_errors
+def list_problems(topic: str | None) -> None:
+    """List the problems of the library: id, topic and title."""
+    from derive import library, problem
+
+    rows = []
+    for path in library.problem_files():
+        p = problem.load(str(path))
+        if topic is None or p.topic == topic:
+            rows.append((p.id, p.topic, p.title))
+    if not rows:
+        raise BadInput(f"no problems of topic {topic!r}")
+    width = max(len(r[0]) for r in rows)
+    for problem_id, problem_topic, title in rows:
+        click.echo(f"{problem_id:<{width}}  {problem_topic:<8}  {title}")
+
+
+@main.command()
+@click.argument("problem_set", metavar="SET")
+@click.option("--variants", type=click.IntRange(1, 1000), default=None, help="Variants per problem (default: the set's).")
+@click.option("--seed", type=int, default=None, help="Seed of the parameter draws (default: the set's).")
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              help="Output folder (default: build/<set id>).")
+@click.option("--to", "formats", default="pdf,html", show_default=True,
+              help="Outputs besides .tex and the keys: any of pdf, html.")
+@reports_errors
+def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str | None, formats: str) -> None:
+    """Build a problem set: worksheet, worked solutions and answer key.
+
+    SET is a set file or the id of one in problems/sets/. Each variant draws the
+    parameters from their declared ranges (reproducibly from the seed) and rounds them
+    to their significant figures. Writes .tex files, PDFs (latexmk), HTML (pandoc) and
+    the answer key as CSV and JSON.
+    """
+    from derive import sheet as sheets
+
+    wanted = {f.strip() for f in formats.split(",") if f.strip()}
+    unknown = wanted - {"pdf", "html"}
+    if unknown:
+        raise BadInput(f"--to: unknown format {sorted(unknown)[0]!r} (formats: pdf, html)")
+    built = sheets.build(problem_set, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
+                         progress=lambda message: click.echo(message, err=True))
+    for path in built:
+        click.echo(str(path))
+
+
+if __name__ == "__main__":
+    main()

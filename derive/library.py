@@ -1,0 +1,67 @@
+"""Where problems, sets and templates live, and how an id becomes a file.
+
+The library is the `problems/` folder of the source tree (or its copy inside an installed
+wheel), or the folder named by the DERIVE_LIBRARY environment variable.
+
+>>> find_problem("string_wrapped_disk").name
+'string_wrapped_disk.yaml'
+"""
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+
+from derive.errors import InputError
+
+_PACKAGE = Path(__file__).resolve().parent
+ID_PATTERN = re.compile(r"[a-z][a-z0-9_]*")
+
+
+class LibraryError(InputError):
+    """A problem or set that is neither a file nor a library id."""
+
+
+def _data_dir(name: str) -> Path:
+    for candidate in (_PACKAGE.parent / name, _PACKAGE / "_data" / name):
+        if candidate.is_dir():
+            return candidate
+    raise LibraryError(f"the {name}/ folder of derive is missing from the installation")
+
+
+def problems_dir() -> Path:
+    return Path(os.environ["DERIVE_LIBRARY"]) if os.environ.get("DERIVE_LIBRARY") else _data_dir("problems")
+
+
+def templates_dir() -> Path:
+    return _data_dir("templates")
+
+
+def problem_files() -> list[Path]:
+    """Every problem file of the library, sorted by path (sets excluded)."""
+    root = problems_dir()
+    return sorted(p for p in root.rglob("*.yaml") if "sets" not in p.relative_to(root).parts)
+
+
+def _find(reference: str, candidates: list[Path], kind: str) -> Path:
+    path = Path(reference)
+    if path.suffix in (".yaml", ".yml") or os.sep in reference:
+        if path.is_file():
+            return path
+        raise LibraryError(f"{reference}: no such {kind} file")
+    if not ID_PATTERN.fullmatch(reference):
+        raise LibraryError(f"{reference!r} is not a file and not a library id (lower-case letters, digits, _)")
+    for candidate in candidates:
+        if candidate.stem == reference:
+            return candidate
+    raise LibraryError(f"no {kind} file or library id {reference!r} (see `derive list`)")
+
+
+def find_problem(reference: str) -> Path:
+    """A problem file path, or the library problem with that id."""
+    return _find(reference, problem_files(), "problem")
+
+
+def find_set(reference: str) -> Path:
+    """A set file path, or the set of that id in problems/sets/."""
+    return _find(reference, sorted((problems_dir() / "sets").glob("*.yaml")), "set")

@@ -1,0 +1,393 @@
+"""Problem files (YAML) into validated Problem objects.
+
+A problem file declares parameters (meaning, unit, a value or a range, significant
+figures), a scene (bodies, constraints, loads), the quantities it asks for and the
+question text. Every expression goes through `derive.expr` (never eval or sympify),
+every unit through `derive.units`; anything wrong is a ProblemError whose one-line
+message names the file and the field.
+
+>>> problem = load("string_wrapped_disk")
+>>> sorted(problem.asks)
+['T', 'a', 'alpha']
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from decimal import Decimal
+from pathlib import Path
+
+import sympy as sp
+import yaml
+
+from derive import expr, library, units
+from derive.errors import InputError
+from derive.scene import SHAPE_SIZES, Body, Gravity, Pin, Quantity, Scene, WoundString, parse_quantity
+
+DEFAULT_SIG_FIGS = 3
+TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
+
+
+class ProblemError(InputError):
+    """Bad input in a problem file or on the command line: 'FILE: FIELD: reason'."""
+
+
+@dataclass(frozen=True)
+class Parameter:
+    name: str
+    symbol: sp.Symbol
+    meaning: str
+    unit: str
+    value: sp.Expr | None
+    range: tuple[sp.Expr, sp.Expr] | None
+    sig_figs: int
+
+
+@dataclass(frozen=True)
+class Ask:
+    name: str
+    meaning: str
+    path: str
+    quantity: Quantity
+    unit: str
+    sig_figs: int | None
+
+
+@dataclass(frozen=True)
+class Problem:
+    id: str
+    title: str
+    topic: str
+    source: str
+    path: Path
+    parameters: dict[str, Parameter]
+    scene: Scene
+    asks: dict[str, Ask]
+    question: str
+    corrections: tuple[dict[str, str], ...]
+
+    def error(self, field: str, message: str) -> ProblemError:
+        return ProblemError(f"{self.path}: {field}: {message}")
+
+    @property
+    def symbol_units(self) -> dict[sp.Symbol, str]:
+        return {p.symbol: p.unit for p in self.parameters.values()}
+
+    def values(self, overrides: dict[str, str] | None = None) -> dict[sp.Symbol, sp.Expr]:
+        """Exact SI values of the parameters that have one: declared values and `--set` overrides.
+
+        An override is "2" (in the parameter's unit) or "200 g" (converted).
+        """
+        result = {}
+        for p in self.parameters.values():
+            if p.value is not None:
+                result[p.symbol] = p.value * units.si_factor(units.parse_unit(p.unit))
+        for name, text in (overrides or {}).items():
+            if name not in self.parameters:
+                raise ProblemError(
+                    f"--set {name}: {self.id} has no parameter {name!r} (parameters: {', '.join(self.parameters)})"
+                )
+            p = self.parameters[name]
+            try:
+                number, unit = units.parse_quantity(text, p.unit)
+                result[p.symbol] = units.to_unit(number, unit, p.unit) * units.si_factor(units.parse_unit(p.unit))
+            except (units.UnitError, expr.ExprError) as error:
+                raise ProblemError(f"--set {name}={text}: {error}") from None
+        return result
+
+
+class _Loader(yaml.SafeLoader):
+    """Safe YAML that keeps decimals exact (as Decimal) and refuses duplicate keys."""
+
+
+def _decimal(loader: yaml.SafeLoader, node: yaml.Node) -> Decimal:
+    return Decimal(loader.construct_scalar(node).replace("_", ""))
+
+
+def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> dict:
+    seen = set()
+    for key_node, _ in node.value:
+        key = loader.construct_object(key_node)
+        if key in seen:
+            raise yaml.constructor.ConstructorError(None, None, f"duplicate key {key!r}", key_node.start_mark)
+        seen.add(key)
+    return loader.construct_mapping(node, deep=True)
+
+
+_Loader.add_constructor("tag:yaml.org,2002:float", _decimal)
+_Loader.add_constructor("tag:yaml.org,2002:map", _mapping)
+
+
+class _Reader:
+    """Reads one problem file, naming the file and the field in every error."""
+
+    def __init__(self, path: Path):
+        self.path = path
+        self.symbols: dict[str, sp.Symbol] = {}
+        self.symbol_units: dict[sp.Symbol, str] = {}
+
+    def fail(self, field: str, message: str) -> ProblemError:
+        return ProblemError(f"{self.path}: {field}: {message}")
+
+    def mapping(self, value, field: str, required=(), optional=()) -> dict:
+        if not isinstance(value, dict):
+            raise self.fail(field, f"expected a mapping, got {type(value).__name__}")
+        unknown = [k for k in value if k not in required and k not in optional]
+        if unknown:
+            allowed = ", ".join(sorted({*required, *optional}))
+            raise self.fail(f"{field}.{unknown[0]}" if field else str(unknown[0]), f"unknown key (allowed: {allowed})")
+        for key in required:
+            if key not in value:
+                raise self.fail(f"{field}.{key}" if field else key, "missing")
+        return value
+
+    def text(self, value, field: str) -> str:
+        if not isinstance(value, str) or not value.strip():
+            raise self.fail(field, "expected non-empty text")
+        return value
+
+    def expression(self, value, field: str, allowed=None) -> sp.Expr:
+        try:
+            return expr.parse(value, self.symbols if allowed is None else allowed)
+        except expr.ExprError as error:
+            raise self.fail(field, str(error)) from None
+        except TypeError:
+            raise self.fail(field, f"expected an expression, got {type(value).__name__}") from None
+
+    def unit(self, value, field: str) -> str:
+        text = self.text(value, field) if not isinstance(value, (int, Decimal)) else str(value)
+        try:
+            units.parse_unit(text)
+        except units.UnitError as error:
+            raise self.fail(field, str(error)) from None
+        return text
+
+    def dimensioned(self, value, field: str, unit: str, what: str) -> sp.Expr:
+        """An expression of declared symbols that must have the dimension of `unit`."""
+        result = self.expression(value, field)
+        try:
+            found = units.expression_dimension(result, self.symbol_units)
+        except units.UnitError as error:
+            raise self.fail(field, str(error)) from None
+        wanted = units.dimension(units.parse_unit(unit))
+        if not units.same_dimension(found, wanted):
+            raise self.fail(field, f"{what} must have the dimension of {unit}, but {result} has {_describe(found)}")
+        return result
+
+    def positive(self, value, field: str, unit: str, what: str) -> sp.Expr:
+        result = self.dimensioned(value, field, unit, what)
+        if result.is_positive is not True:
+            raise self.fail(field, f"{what} must be positive for every allowed parameter value (got {result})")
+        return result
+
+
+def _describe(dimension: dict) -> str:
+    return " ".join(f"{k}^{v}" if v != 1 else k for k, v in sorted(dimension.items())) or "no dimension"
+
+
+def _parameters(reader: _Reader, raw) -> dict[str, Parameter]:
+    raw = reader.mapping(raw, "parameters")
+    result = {}
+    for name, spec in raw.items():
+        field = f"parameters.{name}"
+        if not isinstance(name, str) or not name.isidentifier() or name.startswith("_"):
+            raise reader.fail(field, "a parameter name is a letter followed by letters, digits or _")
+        if name in expr.RESERVED:
+            raise reader.fail(field, f"{name!r} is reserved for a function or constant")
+        spec = reader.mapping(spec, field, required=("meaning", "unit"), optional=("value", "range", "sig_figs"))
+        if "value" not in spec and "range" not in spec:
+            raise reader.fail(field, "needs a value or a range")
+        value = reader.expression(spec["value"], f"{field}.value", {}) if "value" in spec else None
+        bounds = None
+        if "range" in spec:
+            if not isinstance(spec["range"], list) or len(spec["range"]) != 2:
+                raise reader.fail(f"{field}.range", "expected [low, high]")
+            bounds = tuple(reader.expression(v, f"{field}.range", {}) for v in spec["range"])
+            if not bounds[0] < bounds[1]:
+                raise reader.fail(f"{field}.range", f"low ({bounds[0]}) must be below high ({bounds[1]})")
+            if value is not None and not bounds[0] <= value <= bounds[1]:
+                raise reader.fail(f"{field}.value", f"{value} lies outside the range")
+        sig_figs = spec.get("sig_figs", DEFAULT_SIG_FIGS)
+        if not isinstance(sig_figs, int) or isinstance(sig_figs, bool) or not 1 <= sig_figs <= 15:
+            raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
+        lowest = bounds[0] if bounds else value
+        if value is not None:
+            lowest = min(lowest, value)
+        symbol = sp.Symbol(name, positive=True) if lowest > 0 else sp.Symbol(name, real=True)
+        unit = reader.unit(spec["unit"], f"{field}.unit")
+        reader.symbols[name] = symbol
+        reader.symbol_units[symbol] = unit
+        result[name] = Parameter(name, symbol, reader.text(spec["meaning"], f"{field}.meaning"), unit, value, bounds, sig_figs)
+    return result
+
+
+def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
+    field = f"scene.bodies.{name}"
+    spec = reader.mapping(spec, field, required=("shape", "mass"), optional=("length", "radius", "inertia", "joint"))
+    shape = spec["shape"]
+    if shape not in SHAPE_SIZES:
+        raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
+    mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
+    sizes = {}
+    for size in ("length", "radius"):
+        if size in SHAPE_SIZES[shape]:
+            if size not in spec:
+                raise reader.fail(f"{field}.{size}", f"a {shape} needs a {size}")
+            sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", f"a {size}")
+        elif size in spec:
+            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
+    given = None
+    if shape == "custom":
+        if "inertia" not in spec:
+            raise reader.fail(f"{field}.inertia", "a custom body needs its moment of inertia about its center of mass")
+        given = reader.dimensioned(spec["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia")
+        if given.is_nonnegative is not True:
+            raise reader.fail(f"{field}.inertia", "a moment of inertia cannot be negative")
+    elif "inertia" in spec:
+        raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
+    body = Body(name, shape, mass, sizes, given)
+    return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
+
+
+def _joint(reader: _Reader, body: Body, spec, field: str) -> Pin | None:
+    if spec is None:
+        return None
+    if not body.rotates:
+        raise reader.fail(field, "a point mass has no joint")
+    if spec == "fixed_axle":
+        return Pin(f"{body.name}_axle", body.name, (0, 0))
+    spec = reader.mapping(spec, field, optional=("pivot",))
+    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",))
+    distance = reader.positive(pivot["distance"], f"{field}.pivot.distance", "m", "a pivot distance")
+    return Pin(f"{body.name}_pivot", body.name, (0, distance))
+
+
+def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> WoundString:
+    field = f"scene.constraints[{index}]"
+    spec = reader.mapping(spec, field, optional=("string",))
+    if len(spec) != 1:
+        raise reader.fail(field, "expected one constraint kind (string)")
+    cord = reader.mapping(spec["string"], f"{field}.string", required=("wound_on", "hangs"), optional=("side", "name"))
+    for key in ("wound_on", "hangs"):
+        if cord[key] not in bodies:
+            raise reader.fail(f"{field}.string.{key}", f"no body {cord[key]!r} (bodies: {', '.join(bodies)})")
+    reel = bodies[cord["wound_on"]]
+    if "radius" not in reel.sizes:
+        raise reader.fail(f"{field}.string.wound_on", f"a cord winds on a disk or a ring, not a {reel.shape}")
+    if cord["hangs"] == cord["wound_on"]:
+        raise reader.fail(f"{field}.string.hangs", "a cord cannot hang from the body it is wound on")
+    side = cord.get("side", "right")
+    if side not in ("right", "left"):
+        raise reader.fail(f"{field}.string.side", "expected right or left")
+    name = cord.get("name", "string")
+    if not isinstance(name, str) or not name.isidentifier():
+        raise reader.fail(f"{field}.string.name", "expected a name of letters, digits and _")
+    return WoundString(name, reel.name, cord["hangs"], 1 if side == "right" else -1)
+
+
+def _scene(reader: _Reader, raw) -> Scene:
+    raw = reader.mapping(raw, "scene", required=("bodies",), optional=("constraints", "loads"))
+    bodies_raw = reader.mapping(raw["bodies"], "scene.bodies")
+    if not bodies_raw:
+        raise reader.fail("scene.bodies", "a scene needs at least one body")
+    bodies, pins = {}, []
+    for name, spec in bodies_raw.items():
+        if not isinstance(name, str) or not name.isidentifier():
+            raise reader.fail(f"scene.bodies.{name}", "a body name is letters, digits and _")
+        body, pin = _body(reader, name, spec)
+        bodies[name] = body
+        pins += [pin] if pin else []
+    constraints_raw = raw.get("constraints") or []
+    if not isinstance(constraints_raw, list):
+        raise reader.fail("scene.constraints", "expected a list")
+    constraints = tuple(pins) + tuple(_constraint(reader, i, c, bodies) for i, c in enumerate(constraints_raw))
+    names = [c.name for c in constraints]
+    duplicate = next((n for n in names if names.count(n) > 1 or n in bodies), None)
+    if duplicate:
+        raise reader.fail("scene.constraints", f"the name {duplicate!r} is used twice")
+    gravity = None
+    loads = raw.get("loads") or []
+    if not isinstance(loads, list):
+        raise reader.fail("scene.loads", "expected a list")
+    for i, load in enumerate(loads):
+        load = reader.mapping(load, f"scene.loads[{i}]", optional=("gravity",))
+        if "gravity" not in load:
+            raise reader.fail(f"scene.loads[{i}]", "expected a load kind (gravity)")
+        g = reader.positive(load["gravity"], f"scene.loads[{i}].gravity", "m/s^2", "a gravitational field")
+        gravity = Gravity(g)
+    return Scene(bodies, constraints, gravity)
+
+
+def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:
+    raw = reader.mapping(raw, "ask")
+    if not raw:
+        raise reader.fail("ask", "a problem asks for at least one quantity")
+    result = {}
+    for name, spec in raw.items():
+        field = f"ask.{name}"
+        if not isinstance(name, str) or not name.isidentifier():
+            raise reader.fail(field, "an answer name is letters, digits and _")
+        if name in parameters:
+            raise reader.fail(field, f"{name!r} is already a parameter")
+        spec = reader.mapping(spec, field, required=("meaning", "of", "unit"), optional=("axis", "sig_figs"))
+        path = reader.text(spec["of"], f"{field}.of")
+        try:
+            quantity = parse_quantity(scene, path, spec.get("axis"))
+        except ValueError as error:
+            raise reader.fail(f"{field}.of", str(error)) from None
+        sig_figs = spec.get("sig_figs")
+        if sig_figs is not None and (not isinstance(sig_figs, int) or not 1 <= sig_figs <= 15):
+            raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
+        result[name] = Ask(
+            name, reader.text(spec["meaning"], f"{field}.meaning"), path, quantity,
+            reader.unit(spec["unit"], f"{field}.unit"), sig_figs,
+        )
+    return result
+
+
+def parse(text: str, path: Path) -> Problem:
+    """Validate the text of a problem file; `path` names it in errors."""
+    reader = _Reader(path)
+    try:
+        raw = yaml.load(text, Loader=_Loader)  # noqa: S506 - _Loader is a SafeLoader
+    except yaml.YAMLError as error:
+        mark = getattr(error, "problem_mark", None) or getattr(error, "context_mark", None)
+        where = f"line {mark.line + 1}" if mark else "yaml"
+        reason = getattr(error, "problem", None) or str(error).splitlines()[0]
+        raise ProblemError(f"{path}: {where}: invalid YAML: {reason}") from None
+    raw = reader.mapping(raw, "", required=("id", "title", "parameters", "scene", "ask", "question"), optional=TOP_LEVEL)
+    problem_id = reader.text(raw["id"], "id")
+    if not library.ID_PATTERN.fullmatch(problem_id):
+        raise reader.fail("id", "an id is lower-case letters, digits and _")
+    parameters = _parameters(reader, raw["parameters"])
+    scene = _scene(reader, raw["scene"])
+    asks = _asks(reader, raw["ask"], scene, parameters)
+    corrections = raw.get("corrections") or []
+    if not isinstance(corrections, list):
+        raise reader.fail("corrections", "expected a list")
+    for i, c in enumerate(corrections):
+        reader.mapping(c, f"corrections[{i}]", required=("where", "notes", "derived"), optional=("proof",))
+    return Problem(
+        id=problem_id,
+        title=reader.text(raw["title"], "title"),
+        topic=reader.text(raw.get("topic", "general"), "topic"),
+        source=str(raw.get("source", "")),
+        path=path,
+        parameters=parameters,
+        scene=scene,
+        asks=asks,
+        question=reader.text(raw["question"], "question"),
+        corrections=tuple({k: str(v) for k, v in c.items()} for c in corrections),
+    )
+
+
+def load(reference: str | Path) -> Problem:
+    """Load a problem by file path or library id."""
+    try:
+        path = library.find_problem(str(reference))
+    except library.LibraryError as error:
+        raise ProblemError(str(error)) from None
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as error:
+        raise ProblemError(f"{path}: cannot read: {error}") from None
+    return parse(text, path)

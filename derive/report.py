@@ -1,0 +1,116 @@
+"""A solved problem as the command line prints it: text, LaTeX or the JSON contract.
+
+>>> from derive.problem import load
+>>> result = solve(load("string_wrapped_disk"), {"m": "2", "M": "4", "R": "0.3"}, 6)
+>>> result["answers"]["a"]["value"]
+'-4.90500'
+"""
+from __future__ import annotations
+
+import json
+
+import sympy as sp
+
+from derive import numeric, units
+from derive.answers import Solution
+from derive.problem import Problem
+
+ROUTE_TITLES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler", "integration": "Integration"}
+
+
+def _in_unit(value_si: sp.Expr, unit: str) -> sp.Expr:
+    return value_si / units.si_factor(units.parse_unit(unit))
+
+
+def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int = 15) -> dict:
+    """The JSON contract of `derive solve`: parameters, answers, equations of motion, checks."""
+    solution = Solution(problem)
+    values = problem.values(overrides)
+    parameters = {
+        name: {
+            "meaning": p.meaning,
+            "unit": p.unit,
+            "value": numeric.significant(_in_unit(values[p.symbol], p.unit), digits) if p.symbol in values else None,
+        }
+        for name, p in problem.parameters.items()
+    }
+    answers = {}
+    for name, ask in problem.asks.items():
+        expression = solution.expression(name)
+        value = numeric.evaluate(_in_unit(expression, ask.unit), values, digits)
+        answers[name] = {
+            "meaning": ask.meaning,
+            "expr": sp.sstr(expression),
+            "latex": sp.latex(expression),
+            "unit": ask.unit,
+            "value": value,
+        }
+    steps = solution.steps()
+    equations = {
+        route: [sp.sstr(e) for e in solution.derivations[route].equations]
+        for route in steps
+        if route in ("lagrange", "newton_euler")
+    }
+    checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
+    return {
+        "id": problem.id,
+        "title": problem.title,
+        "source": problem.source,
+        "parameters": parameters,
+        "answers": answers,
+        "equations_of_motion": equations,
+        "checks": checks,
+        "steps": {
+            route: [{"text": s.text, "latex": [sp.latex(e) for e in s.equations]} for s in route_steps]
+            for route, route_steps in steps.items()
+        },
+    }
+
+
+def as_json(result: dict) -> str:
+    return json.dumps(result, indent=2, ensure_ascii=False)
+
+
+def as_text(result: dict) -> str:
+    lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
+    for route, equations in result["equations_of_motion"].items():
+        lines.append(f"Equations of motion, {ROUTE_TITLES[route]}:")
+        lines += [f"  {e.replace('Eq(', '', 1)[:-1].replace(', ', ' = ', 1)}" for e in equations]
+        lines.append("")
+    lines.append("Answers:")
+    width = max(len(n) for n in result["answers"])
+    for name, a in result["answers"].items():
+        value = f" = {a['value']} {a['unit']}" if a["value"] is not None else f"  [{a['unit']}]"
+        lines.append(f"  {name:<{width}} = {a['expr']}{value}")
+        lines.append(f"  {'':<{width}}   ({a['meaning']})")
+    lines += ["", "Checks:"]
+    for name, c in result["checks"].items():
+        mark = "ok" if c["passed"] else "FAILED"
+        lines.append(f"  [{mark}] {name} ({c['method']}): {c['detail']}")
+    return "\n".join(lines)
+
+
+def as_latex(result: dict) -> str:
+    lines = [f"\\section*{{{result['title']}}}"]
+    for route, steps in result["steps"].items():
+        lines.append(f"\\subsection*{{{ROUTE_TITLES[route]}}}")
+        for step in steps:
+            lines.append(f"{step['text']}:")
+            if step["latex"]:
+                lines.append("\\begin{align*}")
+                lines.append(" \\\\\n".join(_aligned(eq) for eq in step["latex"]))
+                lines.append("\\end{align*}")
+    lines.append("\\subsection*{Answers}")
+    lines.append("\\begin{align*}")
+    rows = []
+    for name, a in result["answers"].items():
+        value = f" = {a['value']}\\,{units.latex_unit(a['unit'])}" if a["value"] is not None else ""
+        rows.append(f"{sp.latex(sp.Symbol(name))} &= {a['latex']}{value}")
+    lines.append(" \\\\\n".join(rows))
+    lines.append("\\end{align*}")
+    return "\n".join(lines)
+
+
+def _aligned(latex_equation: str) -> str:
+    """Put the alignment point at the first '=' of a LaTeX equation."""
+    return latex_equation.replace("=", "&=", 1)

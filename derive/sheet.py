@@ -1,0 +1,267 @@
+"""Problem sets: variants drawn from the parameter ranges, worksheets, solutions and keys.
+
+Each problem is derived once; each variant draws its parameters reproducibly from the
+seed, rounds them to their significant figures (exact decimals), and evaluates the
+answers. Everything is built in a temporary folder and moved into place only when the
+whole build succeeded, so a failed build leaves the previous one intact.
+
+>>> problem_set = load_set("demo")
+>>> problem_set.problems[0]
+'rod_endpoint'
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import random
+import shutil
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+import sympy as sp
+import yaml
+
+from derive import export, library, numeric, render, units
+from derive.answers import Solution
+from derive.errors import InputError
+from derive.problem import DEFAULT_SIG_FIGS, Problem, load
+
+SET_REQUIRED = ("title", "problems")
+SET_OPTIONAL = ("course", "due", "variants", "seed")
+
+
+@dataclass(frozen=True)
+class ProblemSet:
+    id: str
+    title: str
+    course: str
+    due: str
+    problems: tuple[str, ...]
+    variants: int
+    seed: int
+    path: Path
+
+
+def load_set(reference: str) -> ProblemSet:
+    """A set file by path or id; only `title` and `problems` are required."""
+    path = library.find_set(reference)
+    try:
+        raw = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except (OSError, yaml.YAMLError) as error:
+        raise InputError(f"{path}: invalid set file: {str(error).splitlines()[0]}") from None
+    if not isinstance(raw, dict):
+        raise InputError(f"{path}: expected a mapping with {', '.join(SET_REQUIRED)}")
+    for key in raw:
+        if key not in SET_REQUIRED + SET_OPTIONAL:
+            raise InputError(f"{path}: {key}: unknown key (allowed: {', '.join(SET_REQUIRED + SET_OPTIONAL)})")
+    for key in SET_REQUIRED:
+        if key not in raw:
+            raise InputError(f"{path}: {key}: missing")
+    problems = raw["problems"]
+    if not isinstance(problems, list) or not problems or not all(isinstance(p, str) for p in problems):
+        raise InputError(f"{path}: problems: expected a list of problem ids or files")
+    for key, default in (("variants", 1), ("seed", 0)):
+        value = raw.get(key, default)
+        if not isinstance(value, int) or isinstance(value, bool) or value < (1 if key == "variants" else 0):
+            raise InputError(f"{path}: {key}: expected a whole number")
+    return ProblemSet(
+        id=path.stem, title=str(raw["title"]), course=str(raw.get("course", "")), due=str(raw.get("due", "")),
+        problems=tuple(problems), variants=raw.get("variants", 1), seed=raw.get("seed", 0), path=path,
+    )
+
+
+def draw(problem: Problem, rng: random.Random) -> dict[str, sp.Expr]:
+    """Parameter values in their declared units: a range is sampled uniformly and rounded
+    to the parameter's significant figures (an exact decimal); a fixed value is kept."""
+    values = {}
+    for name, p in problem.parameters.items():
+        if p.range is None:
+            values[name] = p.value
+            continue
+        low, high = p.range
+        sample = low + (high - low) * sp.Rational(rng.random())
+        values[name] = sp.Rational(numeric.significant(sample, p.sig_figs))
+    return values
+
+
+def number_latex(text: str) -> str:
+    """A decimal string for LaTeX math: 1.23e-05 as 1.23\\times10^{-5}."""
+    mantissa, _, exponent = text.partition("e")
+    return f"{mantissa}\\times10^{{{int(exponent)}}}" if exponent else mantissa
+
+
+def quantity_latex(value: sp.Expr, unit: str, sig_figs: int) -> str:
+    number = number_latex(numeric.significant(value, sig_figs))
+    unit_tex = units.latex_unit(unit)
+    return f"{number}\\,{unit_tex}" if unit_tex else number
+
+
+@dataclass
+class _ProblemVariants:
+    """One problem of the set: its derivation (shared) and each variant's numbers."""
+
+    problem: Problem
+    solution: Solution
+    draws: list[dict[str, sp.Expr]]
+
+    def si_values(self, draw: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
+        return {
+            p.symbol: draw[name] * units.si_factor(units.parse_unit(p.unit))
+            for name, p in self.problem.parameters.items()
+        }
+
+    def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str]:
+        values = self.si_values(draw)
+        result = {}
+        for name, ask in self.problem.asks.items():
+            expression = self.solution.expressions[name] / units.si_factor(units.parse_unit(ask.unit))
+            result[name] = numeric.evaluate(expression, values, ask.sig_figs or DEFAULT_SIG_FIGS)
+        return result
+
+    def question(self, draw: dict[str, sp.Expr]) -> str:
+        shown = {
+            name: f"${quantity_latex(draw[name], p.unit, p.sig_figs)}$"
+            for name, p in self.problem.parameters.items()
+        }
+        try:
+            return render.question(self.problem.question, shown)
+        except Exception as error:  # jinja's errors: an undeclared name or bad syntax in the file
+            raise self.problem.error("question", f"{type(error).__name__}: {error}") from None
+
+
+def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress) -> list[_ProblemVariants]:
+    prepared = []
+    for reference in problem_set.problems:
+        problem = load(reference)
+        progress(f"deriving {problem.id}")
+        solution = Solution(problem)
+        solution.expressions  # derive once, for every variant
+        solution.checks()
+        draws = [draw(problem, random.Random(f"{seed}/{problem.id}/{n}")) for n in range(1, variants + 1)]
+        prepared.append(_ProblemVariants(problem, solution, draws))
+    return prepared
+
+
+def _solutions_context(item: _ProblemVariants) -> dict:
+    problem, solution = item.problem, item.solution
+    from derive.report import ROUTE_TITLES
+
+    routes = [
+        {
+            "title": ROUTE_TITLES[route],
+            "steps": [
+                {"text": s.text, "equations": [render.latex_of(e).replace("=", "&=", 1) for e in s.equations]}
+                for s in steps
+            ],
+        }
+        for route, steps in solution.steps().items()
+    ]
+    answers = [
+        {"symbol": sp.latex(sp.Symbol(n)), "latex": sp.latex(solution.expressions[n]), "meaning": a.meaning}
+        for n, a in problem.asks.items()
+    ]
+    variants = []
+    for number, values in enumerate(item.draws, start=1):
+        results = item.answers(values)
+        variants.append({
+            "number": number,
+            "given": [f"${sp.latex(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
+                      for n, p in problem.parameters.items()],
+            "results": [{"symbol": sp.latex(sp.Symbol(n)), "value": number_latex(results[n]),
+                         "unit": units.latex_unit(a.unit)} for n, a in problem.asks.items()],
+        })
+    checks = [f"{c.name.replace('_', ' ')}: {c.detail} ({c.method})" for c in solution.checks()]
+    return {"title": problem.title, "source": problem.source, "routes": routes, "answers": answers,
+            "variants": variants, "checks": checks, "corrections": list(problem.corrections)}
+
+
+def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int):
+    rows, key = [], {"set": problem_set.id, "title": problem_set.title, "seed": seed, "variants": []}
+    for number in range(1, variants + 1):
+        entry = {"variant": number, "problems": {}}
+        for item in prepared:
+            values = item.draws[number - 1]
+            answers = item.answers(values)
+            entry["problems"][item.problem.id] = {
+                "parameters": {n: {"value": numeric.significant(values[n], p.sig_figs), "unit": p.unit}
+                               for n, p in item.problem.parameters.items()},
+                "answers": {n: {"value": answers[n], "unit": a.unit, "meaning": a.meaning}
+                            for n, a in item.problem.asks.items()},
+            }
+            for n, a in item.problem.asks.items():
+                rows.append({"variant": number, "problem": item.problem.id, "answer": n, "value": answers[n],
+                             "unit": a.unit, "meaning": a.meaning})
+        key["variants"].append(entry)
+    return rows, key
+
+
+def _write(folder: Path, name: str, text: str) -> Path:
+    path = folder / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def build(reference: str, *, variants: int | None = None, seed: int | None = None, out_dir: str | None = None,
+          formats: set[str] = frozenset({"pdf", "html"}), progress: Callable[[str], None] = lambda m: None) -> list[Path]:
+    """Build a set into its output folder; return the files written."""
+    problem_set = load_set(reference)
+    variants = variants or problem_set.variants
+    seed = problem_set.seed if seed is None else seed
+    out = Path(out_dir or Path("build") / problem_set.id)
+    prepared = _prepare(problem_set, variants, seed, progress)
+    header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
+    worksheet_variants = [
+        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1])}
+                                   for item in prepared]}
+        for n in range(1, variants + 1)
+    ]
+    rows, key = _keys(problem_set, prepared, variants, seed)
+    key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${number_latex(r['value'])}$",
+                 "unit": units.latex_unit(r["unit"])} for r in rows]
+
+    out.parent.mkdir(parents=True, exist_ok=True)
+    staging = out.parent / f".{out.name}.partial-{os.getpid()}"
+    shutil.rmtree(staging, ignore_errors=True)
+    staging.mkdir()
+    try:
+        texs = [
+            _write(staging, "worksheet.tex", render.render("worksheet.tex.j2", set=header, variants=worksheet_variants)),
+            _write(staging, "solutions.tex", render.render(
+                "solutions.tex.j2", set=header, problems=[_solutions_context(i) for i in prepared])),
+            _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
+        ]
+        buffer = io.StringIO()
+        writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "unit", "meaning"],
+                                lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+        products = texs + [_write(staging, "key.csv", buffer.getvalue()),
+                           _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
+        if "pdf" in formats:
+            progress(f"compiling {len(texs)} PDFs")
+            products += export.pdfs(texs)
+        if "html" in formats:
+            progress("converting the worksheet to HTML")
+            products.append(export.html(texs[0], problem_set.title))
+        _replace(staging, out, products)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+    return [out / p.name for p in products]
+
+
+def _replace(staging: Path, out: Path, products: list[Path]) -> None:
+    """Move the finished products into `out`, replacing the previous build at once."""
+    final = staging.with_name(staging.name + "-final")
+    final.mkdir()
+    for p in products:
+        p.rename(final / p.name)
+    if out.exists():
+        old = out.with_name(f".{out.name}.old-{os.getpid()}")
+        out.rename(old)
+        final.rename(out)
+        shutil.rmtree(old, ignore_errors=True)
+    else:
+        final.rename(out)

@@ -1,0 +1,275 @@
+"""Tests for derive.units."""
+import shutil
+import subprocess
+import time
+
+import pytest
+import sympy
+from sympy.physics import units as u
+
+from derive.units import (UNITS, UnitError, dimension, expression_dimension, latex_unit,
+                          parse_quantity, parse_unit, same_dimension, si_factor, to_unit)
+
+pi = sympy.pi
+
+TABLE = {  # unit: (sympy quantity, dimension, exact SI factor)
+    "kg": (u.kilogram, {"mass": 1}, 1),
+    "g": (u.gram, {"mass": 1}, sympy.Rational(1, 1000)),
+    "mg": (u.milligram, {"mass": 1}, sympy.Rational(1, 10**6)),
+    "t": (u.tonne, {"mass": 1}, 1000),
+    "m": (u.meter, {"length": 1}, 1),
+    "cm": (u.centimeter, {"length": 1}, sympy.Rational(1, 100)),
+    "mm": (u.millimeter, {"length": 1}, sympy.Rational(1, 1000)),
+    "km": (u.kilometer, {"length": 1}, 1000),
+    "um": (u.micrometer, {"length": 1}, sympy.Rational(1, 10**6)),
+    "nm": (u.nanometer, {"length": 1}, sympy.Rational(1, 10**9)),
+    "s": (u.second, {"time": 1}, 1),
+    "ms": (u.millisecond, {"time": 1}, sympy.Rational(1, 1000)),
+    "min": (u.minute, {"time": 1}, 60),
+    "h": (u.hour, {"time": 1}, 3600),
+    "N": (u.newton, {"mass": 1, "length": 1, "time": -2}, 1),
+    "J": (u.joule, {"mass": 1, "length": 2, "time": -2}, 1),
+    "W": (u.watt, {"mass": 1, "length": 2, "time": -3}, 1),
+    "Pa": (u.pascal, {"mass": 1, "length": -1, "time": -2}, 1),
+    "Hz": (u.hertz, {"time": -1}, 1),
+    "rad": (u.radian, {}, 1),
+    "deg": (u.degree, {}, pi / 180),
+    "rev": (2 * pi * u.radian, {}, 2 * pi),
+    "rpm": (2 * pi * u.radian / u.minute, {"time": -1}, pi / 30),
+}
+
+
+def test_table_is_complete():
+    assert set(UNITS) == set(TABLE)
+
+
+@pytest.mark.parametrize("name", sorted(TABLE))
+def test_each_table_unit(name):
+    quantity, dim, factor = TABLE[name]
+    unit = parse_unit(name)
+    assert unit == quantity
+    assert dimension(unit) == dim
+    assert all(isinstance(k, str) for k in dimension(unit))
+    assert sympy.simplify(si_factor(unit) - factor) == 0
+
+
+@pytest.mark.parametrize("text", ["", "1", "  ", " 1 "])
+def test_dimensionless(text):
+    assert parse_unit(text) == 1
+    assert dimension(parse_unit(text)) == {}
+    assert si_factor(parse_unit(text)) == 1
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("m/s^2", u.meter / u.second**2),
+    ("m/s**2", u.meter / u.second**2),
+    ("m s^-2", u.meter / u.second**2),
+    ("kg m^2", u.kilogram * u.meter**2),
+    ("kg*m^2", u.kilogram * u.meter**2),
+    ("kg  m^2 s^-2", u.kilogram * u.meter**2 / u.second**2),
+    ("N m", u.newton * u.meter),
+    ("m/(kg s)", u.meter / (u.kilogram * u.second)),
+    ("1/s", 1 / u.second),
+    ("rad/s", u.radian / u.second),
+])
+def test_compound_units(text, expected):
+    assert parse_unit(text) == expected
+
+
+def test_dimension_examples():
+    assert dimension(parse_unit("m/s^2")) == {"length": 1, "time": -2}
+    assert dimension(parse_unit("N*m")) == dimension(parse_unit("J"))
+    assert same_dimension(dimension(parse_unit("N m")), dimension(parse_unit("J")))
+    assert not same_dimension(dimension(parse_unit("N")), dimension(parse_unit("J")))
+    assert same_dimension({"length": 1, "time": 0}, {"length": 1})
+    assert dimension(parse_unit("m^(1/2)")) == {"length": sympy.Rational(1, 2)}
+
+
+def test_si_factor_examples():
+    assert si_factor(parse_unit("g")) == sympy.Rational(1, 1000)
+    assert si_factor(parse_unit("deg")) == pi / 180
+    assert si_factor(parse_unit("rpm")) == pi / 30
+    assert si_factor(parse_unit("kg*m^2")) == 1
+    assert si_factor(parse_unit("g cm^2")) == sympy.Rational(1, 10**7)
+    assert si_factor(parse_unit("km/h")) == sympy.Rational(5, 18)
+    assert si_factor(parse_unit("deg^2")) == pi**2 / 32400
+
+
+@pytest.mark.parametrize("text, default, expected", [
+    ("200 g", "kg", (200, "g")),
+    ("2", "kg", (2, "kg")),
+    ("9.81 m/s^2", "m/s^2", (sympy.Rational(981, 100), "m/s^2")),
+    ("-1.5e-12 kg", "kg", (sympy.Rational(-3, 2 * 10**12), "kg")),
+    ("30 deg", "rad", (30, "deg")),
+    ("30deg", "rad", (30, "deg")),
+    ("  0.999999999999  ", "m", (sympy.Rational(999999999999, 10**12), "m")),
+    ("+.5 kg m^2", "kg*m^2", (sympy.Rational(1, 2), "kg m^2")),
+    (2, "s", (2, "s")),
+    (0.1, "s", (sympy.Rational(1, 10), "s")),
+])
+def test_parse_quantity(text, default, expected):
+    value, unit = parse_quantity(text, default)
+    assert (value, unit) == expected
+    assert isinstance(value, sympy.Rational)
+
+
+@pytest.mark.parametrize("text", ["abc", "g 200", "1,5 kg", "2 furlong", "1_000 kg", "0x10 m",
+                                  "2 kg; import os", "nan kg", "inf", "1e99999 kg", "x" * 2000])
+def test_parse_quantity_rejects(text):
+    with pytest.raises(UnitError):
+        parse_quantity(text, "kg")
+
+
+def test_parse_quantity_checks_default_unit():
+    with pytest.raises(UnitError, match="unknown unit 'parsec'"):
+        parse_quantity("2", "parsec")
+
+
+def test_to_unit_exact():
+    assert to_unit(200, "g", "kg") == sympy.Rational(1, 5)
+    value, unit = parse_quantity("200 g", "kg")
+    assert to_unit(value, unit, "kg") == sympy.Rational(1, 5)
+    assert to_unit(30, "deg", "rad") == pi / 6
+    assert to_unit(180, "deg", "rad") == pi
+    assert to_unit(60, "rpm", "rad/s") == 2 * pi
+    assert to_unit(1, "rpm", "Hz") == pi / 30   # rad/s and Hz are both 1/time (radians are dimensionless)
+    assert to_unit(1, "rev", "deg") == 360
+    assert to_unit(36, "km/h", "m/s") == 10
+    assert to_unit(1, "N m", "J") == 1
+    assert to_unit(sympy.Rational(1, 2), "h", "min") == 30
+    assert to_unit(sympy.Symbol("x"), "cm", "m") == sympy.Symbol("x") / 100
+    assert not to_unit(2.35, "g", "kg").atoms(sympy.Float)
+
+
+def test_to_unit_dimension_mismatch():
+    with pytest.raises(UnitError, match="cannot convert g to m: mass vs length"):
+        to_unit(1, "g", "m")
+    with pytest.raises(UnitError, match="cannot convert N to J"):
+        to_unit(1, "N", "J")
+
+
+@pytest.mark.parametrize("text, message", [
+    ("furlong", "unknown unit 'furlong'"),
+    ("kg*parsec", "unknown unit 'parsec'"),
+    ("pi", "unknown unit 'pi'"),
+    ("__import__('os')", "not allowed"),
+    ("m.__class__", "attribute access is not allowed"),
+    ("sqrt(m)", "function 'sqrt' is not allowed"),
+    ("m^m", "exponents must be numbers"),
+    ("'m'", "string literals are not allowed"),
+    ("m/", "syntax error"),
+    ("m" * 300, "too long"),
+    ("(" * 70 + "m" + ")" * 70, "nested too deeply"),
+    ("m^(10**10**10)", "too large|out of range"),
+])
+def test_parse_unit_rejects(text, message):
+    start = time.perf_counter()
+    with pytest.raises(UnitError, match=message) as info:
+        parse_unit(text)
+    assert "\n" not in str(info.value)
+    assert time.perf_counter() - start < 0.5
+
+
+def test_unit_error_is_value_error():
+    assert issubclass(UnitError, ValueError)
+
+
+# --- expression_dimension -------------------------------------------------------
+
+M, g, R, I, t, x = sympy.symbols("M g R I t x")
+UNITS_OF = {M: "kg", g: "m/s^2", R: "m", I: "kg*m^2", t: "s"}
+
+
+def test_expression_dimension_physical_pendulum():
+    assert expression_dimension(sympy.sqrt(M * g * R / I), UNITS_OF) == {"time": -1}
+    assert expression_dimension(M * g * R, UNITS_OF) == dimension(parse_unit("J"))
+    assert expression_dimension(2 * pi * sympy.sqrt(I / (M * g * R)), UNITS_OF) == {"time": 1}
+    assert expression_dimension(sympy.Integer(3), UNITS_OF) == {}
+
+
+def test_expression_dimension_sums_and_functions():
+    energy = I * (g / R) / 2 + M * g * R * (1 - sympy.cos(g * t**2 / R))
+    assert expression_dimension(energy, UNITS_OF) == {"mass": 1, "length": 2, "time": -2}
+    assert expression_dimension(sympy.exp(-t * sympy.sqrt(g / R)), UNITS_OF) == {}
+    assert expression_dimension(sympy.Abs(R), UNITS_OF) == {"length": 1}
+    assert expression_dimension(R**2 / R**sympy.Rational(1, 2), UNITS_OF) == {"length": sympy.Rational(3, 2)}
+
+
+def test_expression_dimension_derivatives_and_functions_of_time():
+    theta = sympy.Function("theta")(t)
+    eq = I * theta.diff(t, 2) + M * g * R * sympy.sin(theta)
+    assert expression_dimension(eq, {**UNITS_OF, theta: "rad"}) == dimension(parse_unit("N m"))
+
+
+def test_adding_length_and_mass_raises():
+    with pytest.raises(UnitError, match="adds (length to mass|mass to length)"):
+        expression_dimension(R + M, UNITS_OF)
+
+
+def test_function_of_dimensional_argument_raises():
+    with pytest.raises(UnitError, match=r"sin\(\) of length"):
+        expression_dimension(sympy.sin(R), UNITS_OF)
+    with pytest.raises(UnitError, match=r"exp\(\) of"):
+        expression_dimension(sympy.exp(t), UNITS_OF)
+    with pytest.raises(UnitError, match=r"log\(\) of"):
+        expression_dimension(sympy.log(M), UNITS_OF)
+
+
+def test_bad_powers_raise():
+    with pytest.raises(UnitError, match="exponent has dimension"):
+        expression_dimension(2**R, UNITS_OF)
+    with pytest.raises(UnitError, match="non-numeric power"):
+        expression_dimension(R**(t / t + x), {**UNITS_OF, x: "1"})
+
+
+def test_symbol_without_unit_raises():
+    with pytest.raises(UnitError, match="symbol 'x' has no unit"):
+        expression_dimension(M * x, UNITS_OF)
+
+
+# --- latex_unit -----------------------------------------------------------------
+
+LATEX = {
+    "m/s^2": r"\mathrm{m}/\mathrm{s}^{2}",
+    "kg*m^2": r"\mathrm{kg}\,\mathrm{m}^{2}",
+    "kg m^2": r"\mathrm{kg}\,\mathrm{m}^{2}",
+    "m s^-2": r"\mathrm{m}\,\mathrm{s}^{-2}",
+    "m/(kg s)": r"\mathrm{m}/(\mathrm{kg}\,\mathrm{s})",
+    "deg": r"{}^{\circ}",
+    "deg/s": r"{}^{\circ}/\mathrm{s}",
+    "um": r"\mu\mathrm{m}",
+    "rad/s": r"\mathrm{rad}/\mathrm{s}",
+    "N": r"\mathrm{N}",
+    "1/s": r"1/\mathrm{s}",
+    "m^(1/2)": r"\mathrm{m}^{1/2}",
+    "": "",
+    "1": "",
+}
+
+
+@pytest.mark.parametrize("text", sorted(LATEX))
+def test_latex_unit(text):
+    assert latex_unit(text) == LATEX[text]
+
+
+def test_latex_unit_rejects_bad_units():
+    with pytest.raises(UnitError, match="unknown unit"):
+        latex_unit("furlong")
+    with pytest.raises(UnitError):
+        latex_unit(r"\input{/etc/passwd}")
+
+
+def test_latex_unit_compiles(tmp_path):
+    body = "\n".join(rf"$2\,{latex_unit(name)}$\par" for name in [*TABLE, *LATEX])
+    (tmp_path / "u.tex").write_text(
+        "\\documentclass{article}\\usepackage{amsmath}\\begin{document}\n" + body + "\n\\end{document}\n")
+    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "u.tex"],
+                         cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stdout[-2000:]
+
+
+def test_latex_unit_readable_by_pandoc():
+    import pypandoc
+    source = " ".join(rf"$2\,{latex_unit(name)}$" for name in ["m/s^2", "kg m^2", "deg", "rpm"])
+    text = pypandoc.convert_text(source, "plain", format="latex").replace("\u2006", " ")
+    assert "m/s²" in text and "kg m²" in text and "∘" in text and "rpm" in text
