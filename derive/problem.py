@@ -128,10 +128,11 @@ class _Reader:
     def fail(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
 
-    def mapping(self, value, field: str, required=(), optional=()) -> dict:
+    def mapping(self, value, field: str, required=(), optional=(), free: bool = False) -> dict:
+        """A mapping with the given keys; `free` allows any keys (names of parameters, bodies, ...)."""
         if not isinstance(value, dict):
             raise self.fail(field, f"expected a mapping, got {type(value).__name__}")
-        unknown = [k for k in value if k not in required and k not in optional]
+        unknown = [] if free else [k for k in value if k not in required and k not in optional]
         if unknown:
             allowed = ", ".join(sorted({*required, *optional}))
             raise self.fail(f"{field}.{unknown[0]}" if field else str(unknown[0]), f"unknown key (allowed: {allowed})")
@@ -185,7 +186,7 @@ def _describe(dimension: dict) -> str:
 
 
 def _parameters(reader: _Reader, raw) -> dict[str, Parameter]:
-    raw = reader.mapping(raw, "parameters")
+    raw = reader.mapping(raw, "parameters", free=True)
     result = {}
     for name, spec in raw.items():
         field = f"parameters.{name}"
@@ -254,11 +255,11 @@ def _joint(reader: _Reader, body: Body, spec, field: str) -> Pin | None:
     if not body.rotates:
         raise reader.fail(field, "a point mass has no joint")
     if spec == "fixed_axle":
-        return Pin(f"{body.name}_axle", body.name, (0, 0))
+        return Pin("axle", body.name, (0, 0))
     spec = reader.mapping(spec, field, optional=("pivot",))
     pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",))
     distance = reader.positive(pivot["distance"], f"{field}.pivot.distance", "m", "a pivot distance")
-    return Pin(f"{body.name}_pivot", body.name, (0, distance))
+    return Pin("pivot", body.name, (0, distance))
 
 
 def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> WoundString:
@@ -286,7 +287,7 @@ def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> W
 
 def _scene(reader: _Reader, raw) -> Scene:
     raw = reader.mapping(raw, "scene", required=("bodies",), optional=("constraints", "loads"))
-    bodies_raw = reader.mapping(raw["bodies"], "scene.bodies")
+    bodies_raw = reader.mapping(raw["bodies"], "scene.bodies", free=True)
     if not bodies_raw:
         raise reader.fail("scene.bodies", "a scene needs at least one body")
     bodies, pins = {}, []
@@ -296,6 +297,9 @@ def _scene(reader: _Reader, raw) -> Scene:
         body, pin = _body(reader, name, spec)
         bodies[name] = body
         pins += [pin] if pin else []
+    # A joint is named "axle" or "pivot"; with several of a kind, "<body>_axle".
+    kinds = [p.name for p in pins]
+    pins = [p if kinds.count(p.name) == 1 else Pin(f"{p.body}_{p.name}", p.body, p.offset) for p in pins]
     constraints_raw = raw.get("constraints") or []
     if not isinstance(constraints_raw, list):
         raise reader.fail("scene.constraints", "expected a list")
@@ -318,7 +322,7 @@ def _scene(reader: _Reader, raw) -> Scene:
 
 
 def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:
-    raw = reader.mapping(raw, "ask")
+    raw = reader.mapping(raw, "ask", free=True)
     if not raw:
         raise reader.fail("ask", "a problem asks for at least one quantity")
     result = {}

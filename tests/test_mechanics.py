@@ -38,7 +38,7 @@ def test_string_wrapped_disk_matches_the_notes(route):
     assert sp.simplify(solution[sym("thetaddot_disk")] + 2 * m * g / (R * (M + 2 * m))) == 0
     assert sp.simplify(solution[sym("T_string")] - m * g * M / (M + 2 * m)) == 0
     # The axle holds the disk up against its weight and the tension.
-    assert sp.simplify(solution[sym("R_y_axle")] - M * g - solution[sym("T_string")]) == 0
+    assert sp.simplify(solution[sym("R_y^axle")] - M * g - solution[sym("T_string")]) == 0
 
 
 def test_cord_on_the_left_turns_the_disk_the_other_way():

@@ -45,8 +45,8 @@ def forces(constraint: Constraint) -> dict[str, sp.Symbol]:
 @forces.register
 def _(pin: Pin) -> dict[str, sp.Symbol]:
     return {
-        "reaction.x": sp.Symbol(f"R_x_{pin.name}", real=True),
-        "reaction.y": sp.Symbol(f"R_y_{pin.name}", real=True),
+        "reaction.x": sp.Symbol(f"R_x^{pin.name}", real=True),
+        "reaction.y": sp.Symbol(f"R_y^{pin.name}", real=True),
     }
 
 

@@ -10,7 +10,7 @@ reference configuration at rest, and q'' = -omega^2 q gives the angular frequenc
 >>> scene = Scene({"bob": Body("bob", "custom", M, {}, I)}, (Pin("pivot", "bob", (0, d)),), Gravity(g))
 >>> from derive.mechanics import lagrange
 >>> small_oscillation(scene, lagrange.derive(scene)).omega
-sqrt(M)*sqrt(d)*sqrt(g)/sqrt(I + M*d**2)
+sqrt(M*d*g/(I + M*d**2))
 """
 from __future__ import annotations
 
@@ -74,8 +74,9 @@ def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
         raise OscillationError(
             f"the equilibrium is not provably stable (q'' = {sp.sstr(-stiffness)} q): no oscillation"
         )
-    omega = sp.sqrt(stiffness)
-    period = 2 * sp.pi / omega
+    # Kept as one root, sqrt(k), as the notes write it (sympy would split it into sqrt(M)*sqrt(g)*...).
+    omega = sp.Pow(stiffness, sp.S.Half, evaluate=False)
+    period = 2 * sp.pi * sp.Pow(1 / stiffness, sp.S.Half, evaluate=False)
     q = coordinate.q
     steps = (
         Step(f"Linearize about {q} = 0 at rest", (sp.Eq(coordinate.a, -stiffness * q),)),
