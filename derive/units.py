@@ -16,6 +16,7 @@ from __future__ import annotations
 import ast
 import decimal
 import re
+from functools import lru_cache
 from typing import Mapping
 
 import sympy
@@ -71,6 +72,7 @@ def _lookup(name: str) -> sympy.Expr:
     return UNITS[name]
 
 
+@lru_cache(maxsize=256)  # a unit string parses to one immutable expression
 def parse_unit(text: str) -> sympy.Expr:
     """Parse a unit string: ``parse_unit("m/s^2") == meter/second**2``; "" and "1" give 1."""
     if isinstance(text, str) and text.strip() in ("", "1"):
@@ -123,6 +125,7 @@ def _quantity_factor(q: Quantity) -> sympy.Expr:
     return f
 
 
+@lru_cache(maxsize=256)
 def si_factor(unit: sympy.Expr | str) -> sympy.Expr:
     """Exact factor to the coherent SI unit: g -> 1/1000, deg -> pi/180, rpm -> pi/30."""
     unit = parse_unit(unit) if isinstance(unit, str) else unit

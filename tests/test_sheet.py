@@ -1,0 +1,80 @@
+"""`derive sheet`: the documents, the keys, determinism, and builds that fail safely."""
+import json
+import shutil
+import subprocess
+
+import pytest
+
+from conftest import run_derive
+
+
+@pytest.fixture(scope="module")
+def demo(tmp_path_factory):
+    out = tmp_path_factory.mktemp("sheet") / "demo"
+    done = run_derive("sheet", "demo", "--variants", "3", "--seed", "5", "--out", str(out))
+    assert done.returncode == 0, done.stderr
+    return out
+
+
+def test_documents_exist(demo):
+    for name in ("worksheet", "solutions", "key"):
+        assert (demo / f"{name}.tex").stat().st_size > 0
+        assert (demo / f"{name}.pdf").read_bytes().startswith(b"%PDF")
+    assert "<math" in (demo / "worksheet.html").read_text()
+    assert (demo / "key.csv").read_text().startswith("variant,problem,answer,value,unit,meaning")
+
+
+def pdf_text(path):
+    return subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True, check=True).stdout
+
+
+def test_answer_key_pdf_has_every_variants_answers(demo):
+    key = json.loads((demo / "key.json").read_text())
+    text = pdf_text(demo / "key.pdf").replace("−", "-")
+    assert len(key["variants"]) == 3
+    values = [a["value"] for v in key["variants"] for p in v["problems"].values() for a in p["answers"].values()]
+    assert len(values) == 3 * (1 + 3 + 2)
+    for value in values:
+        assert value in text
+
+
+def test_worksheet_pdf_shows_each_variants_numbers(demo):
+    key = json.loads((demo / "key.json").read_text())
+    text = pdf_text(demo / "worksheet.pdf")
+    for variant in key["variants"]:
+        m = variant["problems"]["string_wrapped_disk"]["parameters"]["m"]["value"]
+        assert f"{m} kg" in text
+
+
+def test_solutions_show_both_routes_and_the_numbers(demo):
+    text = pdf_text(demo / "solutions.pdf")
+    assert "Lagrange" in text and "Newton–Euler" in text and "Variant 3" in text
+
+
+def test_same_seed_same_bytes_other_seed_other_numbers(tmp_path):
+    def build(seed, name):
+        out = tmp_path / name
+        done = run_derive("sheet", "demo", "--seed", str(seed), "--variants", "2", "--to", "", "--out", str(out))
+        assert done.returncode == 0, done.stderr
+        return out
+
+    first, again, other = build(11, "a"), build(11, "b"), build(12, "c")
+    for name in ("worksheet.tex", "solutions.tex", "key.tex", "key.csv", "key.json"):
+        assert (first / name).read_bytes() == (again / name).read_bytes(), name
+    assert (first / "key.csv").read_text() != (other / "key.csv").read_text()
+
+
+def test_a_failed_build_leaves_the_previous_one_intact(tmp_path):
+    library = tmp_path / "library"
+    shutil.copytree(run_derive.__globals__["ROOT"] / "problems", library)
+    out = tmp_path / "out"
+    env_run = lambda *a: subprocess.run([str(run_derive.__globals__["DERIVE"]), *a], capture_output=True, text=True,  # noqa: E731
+                                        env={"DERIVE_LIBRARY": str(library), "PATH": "/usr/bin:/bin"})
+    assert env_run("sheet", "demo", "--to", "", "--out", str(out)).returncode == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    broken = library / "torque" / "compound_pendulum.yaml"
+    broken.write_text(broken.read_text().replace("mass: M,", "mass: -M,"))
+    done = env_run("sheet", "demo", "--to", "", "--out", str(out))
+    assert done.returncode == 2 and "compound_pendulum.yaml: scene.bodies.pendulum.mass" in done.stderr
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []
