@@ -39,6 +39,13 @@ def reports_errors(command):
             raise
         except InputError as error:
             raise BadInput(str(error)) from None
+        except RuntimeError as error:
+            from derive.export import BuildError
+
+            if not isinstance(error, BuildError):
+                raise
+            click.echo(f"derive: error: {error}", err=True)
+            sys.exit(1)
         except KeyboardInterrupt:
             click.echo("derive: interrupted", err=True)
             sys.exit(130)

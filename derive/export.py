@@ -4,12 +4,13 @@ latexmk runs without shell escape, stops at the first error, and on failure the
 error lines of the LaTeX log are raised in a BuildError. Several documents compile
 in parallel on the available cores.
 
->>> first_errors("x\\n! Undefined control sequence.\\nl.12 \\\\foo\\n")
-['! Undefined control sequence.', 'l.12 \\\\foo']
+>>> first_errors("x\\n./a.tex:12: Undefined control sequence.\\nl.12 \\\\foo\\n")
+['./a.tex:12: Undefined control sequence.', 'l.12 \\\\foo']
 """
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
@@ -18,6 +19,8 @@ from pathlib import Path
 LATEXMK = ["latexmk", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error",
            "-no-shell-escape", "-quiet"]
 LATEX_TIMEOUT = 300
+# "! message" (TeX's own form) or "./file.tex:12: message" (with -file-line-error).
+ERROR_LINE = re.compile(r"^(! |\S+\.tex:\d+: )")
 
 
 class BuildError(RuntimeError):
@@ -28,7 +31,7 @@ def first_errors(log: str, context: int = 1) -> list[str]:
     """The lines of a LaTeX log that report the first error, with the line after each."""
     lines = log.splitlines()
     for i, line in enumerate(lines):
-        if line.startswith("!") or ":" in line and " error" in line.lower() and line.split(":")[1].isdigit():
+        if ERROR_LINE.match(line):
             return lines[i : i + 1 + context]
     return lines[-5:]
 

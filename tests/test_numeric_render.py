@@ -1,0 +1,80 @@
+"""Significant figures, LaTeX escaping, strict sandboxed templates, LaTeX errors reported."""
+import shutil
+
+import jinja2
+import pytest
+import sympy as sp
+
+from conftest import ROOT, run_derive
+from derive import numeric, render
+
+
+@pytest.mark.parametrize("value, digits, text", [
+    (sp.Rational(125, 1000), 2, "0.12"),       # half to even, on the exact value
+    (sp.Rational(135, 1000), 2, "0.14"),
+    (sp.Rational(9995, 1000), 3, "10.0"),      # rounding up adds a digit before the point
+    (sp.Rational(-327, 100), 15, "-3.27000000000000"),
+    (sp.Rational(1, 10**30), 3, "1.00e-30"),
+    (sp.Integer(10) ** 30 * 7, 2, "7.0e+30"),
+    (sp.pi, 20, "3.1415926535897932385"),
+    (sp.Integer(0), 5, "0"),
+])
+def test_significant(value, digits, text):
+    assert numeric.significant(value, digits) == text
+
+
+def test_evaluate_needs_every_symbol():
+    x, y = sp.symbols("x y")
+    assert numeric.evaluate(x + y, {x: 1}, 3) is None
+    assert numeric.evaluate(x + y, {x: 1, y: sp.Rational(1, 3)}, 3) == "1.33"
+
+
+def test_tex_escape():
+    assert render.tex_escape("50% of $5 & #1_a {b} ~ ^") == (
+        r"50\% of \$5 \& \#1\_a \{b\} \textasciitilde{} \textasciicircum{}")
+
+
+def test_templates_are_strict_and_sandboxed():
+    with pytest.raises(jinja2.UndefinedError):
+        render.question("mass {{ q }}", {"m": "1"})
+    with pytest.raises(jinja2.exceptions.SecurityError):
+        render.question("{{ ''.__class__.__mro__[1].__subclasses__() }}", {})
+    env = render.templates()
+    assert env.variable_start_string == r"\VAR{" and env.undefined is jinja2.StrictUndefined
+    with pytest.raises(jinja2.UndefinedError):
+        env.from_string(r"\VAR{missing}").render()
+
+
+def copy_library(tmp_path):
+    library = tmp_path / "library"
+    shutil.copytree(ROOT / "problems", library)
+    (library / "sets" / "one.yaml").write_text("title: One\nproblems: [rod_midpoint]\n")
+    return library
+
+
+def run_with_library(library, *args):
+    import os
+    import subprocess
+
+    from conftest import DERIVE
+    return subprocess.run([str(DERIVE), *args], capture_output=True, text=True,
+                          env={**os.environ, "DERIVE_LIBRARY": str(library)})
+
+
+def test_undeclared_name_in_question_is_bad_input(tmp_path):
+    library = copy_library(tmp_path)
+    rod = library / "inertia" / "rod_midpoint.yaml"
+    rod.write_text(rod.read_text().replace("{{ m }}", "{{ mass }}"))
+    done = run_with_library(library, "sheet", "one", "--to", "", "--out", str(tmp_path / "out"))
+    assert done.returncode == 2 and "rod_midpoint.yaml: question: UndefinedError" in done.stderr
+
+
+def test_latex_error_prints_the_log_lines_of_the_error(tmp_path):
+    library = copy_library(tmp_path)
+    rod = library / "inertia" / "rod_midpoint.yaml"
+    rod.write_text(rod.read_text().replace("Find its moment", r"\nosuchmacro Find its moment"))
+    done = run_with_library(library, "sheet", "one", "--to", "pdf", "--out", str(tmp_path / "out"))
+    assert done.returncode == 1
+    assert "worksheet.tex did not compile" in done.stderr and "Undefined control sequence" in done.stderr
+    assert "internal error" not in done.stderr
+    assert not (tmp_path / "out").exists()
