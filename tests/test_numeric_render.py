@@ -1,11 +1,10 @@
 """Significant figures, LaTeX escaping, strict sandboxed templates, LaTeX errors reported."""
-import shutil
 
 import jinja2
 import pytest
 import sympy as sp
 
-from conftest import ROOT, run_derive
+from conftest import copy_library, run_derive
 from derive import numeric, render
 
 
@@ -45,35 +44,25 @@ def test_templates_are_strict_and_sandboxed():
         env.from_string(r"\VAR{missing}").render()
 
 
-def copy_library(tmp_path):
-    library = tmp_path / "library"
-    shutil.copytree(ROOT / "problems", library)
+def one_problem_library(tmp_path):
+    library = copy_library(tmp_path)
     (library / "sets" / "one.yaml").write_text("title: One\nproblems: [rod_midpoint]\n")
     return library
 
 
-def run_with_library(library, *args):
-    import os
-    import subprocess
-
-    from conftest import DERIVE
-    return subprocess.run([str(DERIVE), *args], capture_output=True, text=True,
-                          env={**os.environ, "DERIVE_LIBRARY": str(library)})
-
-
 def test_undeclared_name_in_question_is_bad_input(tmp_path):
-    library = copy_library(tmp_path)
+    library = one_problem_library(tmp_path)
     rod = library / "inertia" / "rod_midpoint.yaml"
     rod.write_text(rod.read_text().replace("{{ m }}", "{{ mass }}"))
-    done = run_with_library(library, "sheet", "one", "--to", "", "--out", str(tmp_path / "out"))
+    done = run_derive("sheet", "one", "--to", "", "--out", str(tmp_path / "out"), library=library)
     assert done.returncode == 2 and "rod_midpoint.yaml: question: UndefinedError" in done.stderr
 
 
 def test_latex_error_prints_the_log_lines_of_the_error(tmp_path):
-    library = copy_library(tmp_path)
+    library = one_problem_library(tmp_path)
     rod = library / "inertia" / "rod_midpoint.yaml"
     rod.write_text(rod.read_text().replace("Find its moment", r"\nosuchmacro Find its moment"))
-    done = run_with_library(library, "sheet", "one", "--to", "pdf", "--out", str(tmp_path / "out"))
+    done = run_derive("sheet", "one", "--to", "pdf", "--out", str(tmp_path / "out"), library=library)
     assert done.returncode == 1
     assert "worksheet.tex did not compile" in done.stderr and "Undefined control sequence" in done.stderr
     assert "internal error" not in done.stderr

@@ -1,11 +1,10 @@
 """`derive sheet`: the documents, the keys, determinism, and builds that fail safely."""
 import json
-import shutil
 import subprocess
 
 import pytest
 
-from conftest import run_derive
+from conftest import copy_library, run_derive
 
 
 @pytest.fixture(scope="module")
@@ -65,16 +64,13 @@ def test_same_seed_same_bytes_other_seed_other_numbers(tmp_path):
 
 
 def test_a_failed_build_leaves_the_previous_one_intact(tmp_path):
-    library = tmp_path / "library"
-    shutil.copytree(run_derive.__globals__["ROOT"] / "problems", library)
+    library = copy_library(tmp_path)
     out = tmp_path / "out"
-    env_run = lambda *a: subprocess.run([str(run_derive.__globals__["DERIVE"]), *a], capture_output=True, text=True,  # noqa: E731
-                                        env={"DERIVE_LIBRARY": str(library), "PATH": "/usr/bin:/bin"})
-    assert env_run("sheet", "demo", "--to", "", "--out", str(out)).returncode == 0
+    assert run_derive("sheet", "demo", "--to", "", "--out", str(out), library=library).returncode == 0
     before = {p.name: p.read_bytes() for p in out.iterdir()}
     broken = library / "torque" / "compound_pendulum.yaml"
     broken.write_text(broken.read_text().replace("mass: M,", "mass: -M,"))
-    done = env_run("sheet", "demo", "--to", "", "--out", str(out))
+    done = run_derive("sheet", "demo", "--to", "", "--out", str(out), library=library)
     assert done.returncode == 2 and "compound_pendulum.yaml: scene.bodies.pendulum.mass" in done.stderr
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []
