@@ -19,7 +19,8 @@ import sympy as sp
 
 from derive import inertia, units
 from derive.mechanics import joints, lagrange, newton_euler
-from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
+from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import Oscillation, OscillationError, small_oscillation
 from derive.problem import Ask, Problem, ProblemError
@@ -79,7 +80,53 @@ class Solution:
             return derivation.solution[self.coordinates.of(q.target, "theta").a]
         if q.kind == "force":
             return derivation.solution[joints.forces(self.scene.constraint(q.target))[q.detail]]
+        if q.kind == "contact":
+            return self._contact_expression(q.target, q.detail, derivation)
         raise AssertionError(q.kind)
+
+    def _contact_expression(self, body: str, detail: str, derivation: Derivation) -> sp.Expr:
+        """Quantities of a body on a surface, from one route's accelerations and forces."""
+        contact = self.scene.contact_of(body)
+        surface = self.scene.surfaces[contact.surface]
+        forces = {k: derivation.solution[v] for k, v in joints.forces(contact).items()}
+        if detail == "normal_force":
+            return forces["normal"]
+        if detail == "friction":
+            return forces["friction"]
+        if detail == "min_friction_coefficient":
+            return self._magnitude(tidy(forces["friction"] / forces["normal"]), f"{body}.min_friction_coefficient")
+        acceleration = sp.Matrix([derivation.solution[self.coordinates.of(body, k).a] for k in ("x", "y")])
+        along = tidy(surface.down.dot(acceleration))
+        if detail == "acceleration.down_incline":
+            return along
+        # From rest down the whole incline, at constant acceleration: s = H / sin(angle).
+        distance = surface.height / sp.sin(surface.angle)
+        if along.free_symbols & self.coordinates.state:
+            raise self.problem.error("ask", f"{body}'s acceleration along the incline is not constant")
+        if detail == "speed_at_bottom":
+            return root(2 * along * distance)
+        return root(2 * distance / along)
+
+    @cached_property
+    def energy_balances(self) -> dict[str, EnergyBalance]:
+        """The energy route to each speed asked, by body."""
+        result = {}
+        for ask in self.problem.asks.values():
+            q = ask.quantity
+            if q.kind == "contact" and q.detail == "speed_at_bottom":
+                surface = self.scene.surfaces[self.scene.contact_of(q.target).surface]
+                try:
+                    result[q.target] = speed_after_drop(self.scene, q.target, surface.height)
+                except ConservationError as error:
+                    raise self.problem.error(f"ask.{ask.name}", str(error)) from None
+        return result
+
+    def _magnitude(self, expr: sp.Expr, what: str) -> sp.Expr:
+        """|expr| as an expression: expr or -expr, by its sign over the parameter ranges."""
+        signs = {sp.sign(sp.N(expr.xreplace(point), 30)) for point in sample_points(self.problem, expr)}
+        if len(signs) != 1 or 0 in signs:
+            raise self.problem.error("ask", f"{what} changes sign over the parameter ranges: give its sign, not a magnitude")
+        return expr if signs == {1} else tidy(-expr)
 
     def _inertia(self, ask: Ask) -> sp.Expr:
         body = self.scene.bodies[ask.quantity.target]
@@ -94,10 +141,15 @@ class Solution:
             result = self._inertia(ask)
         else:
             result = self._route_expression(ask, "lagrange")
+        if ask.magnitude:
+            result = self._magnitude(result, name)
         leftover = result.free_symbols - {p.symbol for p in self.problem.parameters.values()}
         if leftover:
             names = ", ".join(sorted(map(str, leftover)))
-            raise self.problem.error(f"ask.{name}.of", f"the answer depends on the state of motion ({names})")
+            if leftover & self.coordinates.state:
+                raise self.problem.error(f"ask.{name}.of", f"the answer depends on the state of motion ({names})")
+            raise self.problem.error(f"ask.{name}.of", f"the answer depends on {names}, which the problem leaves "
+                                     "unspecified: declare them as parameters")
         return result
 
     @cached_property
@@ -113,6 +165,8 @@ class Solution:
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps
+        for body, balance in self.energy_balances.items():
+            result[f"energy of the {body}"] = list(balance.steps)
         return result
 
     def _inertia_steps(self, ask: Ask) -> Step:
@@ -139,6 +193,8 @@ class Solution:
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
         if kinds - {"inertia"}:
             result.append(self._routes_check())
+        if self.energy_balances:
+            result.append(self._energy_check())
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
                 check = self._parallel_axis_check(ask)
@@ -176,6 +232,18 @@ class Solution:
         method = "symbolic" if methods == {"symbolic"} else "symbolic and numeric"
         return Check("lagrange_vs_newton_euler", True, method, f"{len(pairs)} quantities agree")
 
+    def _energy_check(self) -> Check:
+        """Energy conservation gives the same speeds as the accelerations integrated."""
+        methods = set()
+        for body, balance in self.energy_balances.items():
+            dynamics = self._contact_expression(body, "speed_at_bottom", self.derivations["lagrange"])
+            method = agree(balance.speed, dynamics)
+            if method is None:
+                raise CheckFailure(f"{self.problem.id}: energy gives {balance.speed}, dynamics {dynamics} for {body}")
+            methods.add(method)
+        return Check("energy_vs_dynamics", True, "symbolic" if methods == {"symbolic"} else "numeric",
+                     f"speeds of {', '.join(self.energy_balances)} agree")
+
     def _parallel_axis_check(self, ask: Ask) -> Check | None:
         body = self.scene.bodies[ask.quantity.target]
         derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
@@ -190,6 +258,27 @@ class Solution:
             "parallel_axis", True, "symbolic",
             f"{ask.name}: integration equals I_cm + M d^2 with d = {derived.distance_from_center}",
         )
+
+
+def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:
+    """Points where `expr` can be evaluated: parameters inside their ranges (the middle, then
+    random draws), sizes the problem leaves open at positive values, open angles in (0, pi/2)."""
+    rng = random.Random(1)
+    by_symbol = {p.symbol: p for p in problem.parameters.values()}
+    points = []
+    for i in range(count):
+        point = {}
+        for s in expr.free_symbols:
+            p = by_symbol.get(s)
+            if p is not None and p.range is not None:
+                fraction = sp.Rational(1, 2) if i == 0 else sp.Rational(rng.randint(1, 99), 100)
+                point[s] = p.range[0] + fraction * (p.range[1] - p.range[0])
+            elif p is not None and p.value is not None:
+                point[s] = p.value
+            else:
+                point[s] = sp.Rational(rng.randint(5, 145), 100)  # open sizes; below pi/2 for angles
+        points.append(point)
+    return points
 
 
 def agree(a: sp.Expr, b: sp.Expr, trials: int = 4) -> str | None:

@@ -12,6 +12,7 @@ message names the file and the field.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from decimal import Decimal
 from pathlib import Path
@@ -21,7 +22,7 @@ import yaml
 
 from derive import expr, library, units
 from derive.errors import InputError
-from derive.scene import SHAPE_SIZES, Body, Gravity, Pin, Quantity, Scene, WoundString, parse_quantity
+from derive.scene import SHAPE_SIZES, Body, Contact, Gravity, Incline, Pin, Quantity, Scene, WoundString, parse_quantity
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -50,6 +51,7 @@ class Ask:
     quantity: Quantity
     unit: str
     sig_figs: int | None
+    magnitude: bool = False
 
 
 @dataclass(frozen=True)
@@ -64,13 +66,15 @@ class Problem:
     asks: dict[str, Ask]
     question: str
     corrections: tuple[dict[str, str], ...]
+    scene_units: dict[sp.Symbol, str]
 
     def error(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
 
     @property
     def symbol_units(self) -> dict[sp.Symbol, str]:
-        return {p.symbol: p.unit for p in self.parameters.values()}
+        """Units of every symbol: the parameters and the sizes the scene leaves open."""
+        return self.scene_units
 
     def values(self, overrides: dict[str, str] | None = None) -> dict[sp.Symbol, sp.Expr]:
         """Exact SI values of the parameters that have one: declared values and `--set` overrides.
@@ -96,7 +100,16 @@ class Problem:
 
 
 class _Loader(yaml.SafeLoader):
-    """Safe YAML that keeps decimals exact (as Decimal) and refuses duplicate keys."""
+    """Safe YAML that keeps decimals exact (as Decimal), refuses duplicate keys, and reads
+    only true/false as booleans (YAML 1.2), so that `on:` and `no` stay words."""
+
+
+_Loader.yaml_implicit_resolvers = {
+    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
+    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
+}
+_Loader.add_implicit_resolver("tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
+                              list("tTfF"))
 
 
 def _decimal(loader: yaml.SafeLoader, node: yaml.Node) -> Decimal:
@@ -174,6 +187,12 @@ class _Reader:
             raise self.fail(field, f"{what} must have the dimension of {unit}, but {result} has {_describe(found)}")
         return result
 
+    def unspecified(self, name: str, unit: str) -> sp.Symbol:
+        """A positive symbol for a size the problem leaves open; answers must not depend on it."""
+        symbol = sp.Symbol(name, positive=True)
+        self.symbol_units[symbol] = unit
+        return symbol
+
     def positive(self, value, field: str, unit: str, what: str) -> sp.Expr:
         result = self.dimensioned(value, field, unit, what)
         if result.is_positive is not True:
@@ -223,17 +242,23 @@ def _parameters(reader: _Reader, raw) -> dict[str, Parameter]:
 
 def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
     field = f"scene.bodies.{name}"
-    spec = reader.mapping(spec, field, required=("shape", "mass"), optional=("length", "radius", "inertia", "joint"))
+    all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
+    spec = reader.mapping(spec, field, required=("shape",),
+                          optional=("mass", "inertia", "joint", "on", "contact", *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
-    mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
+    if "mass" in spec:
+        mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
+    else:
+        mass = reader.unspecified(f"m_{name}", "kg")
     sizes = {}
-    for size in ("length", "radius"):
+    for size in all_sizes:
         if size in SHAPE_SIZES[shape]:
-            if size not in spec:
-                raise reader.fail(f"{field}.{size}", f"a {shape} needs a {size}")
-            sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", f"a {size}")
+            if size in spec:
+                sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", f"a {size}")
+            else:
+                sizes[size] = reader.unspecified(f"{size}_{name}", "m")
         elif size in spec:
             raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
     given = None
@@ -247,6 +272,45 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
         raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
     body = Body(name, shape, mass, sizes, given)
     return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
+
+
+def _contact(reader: _Reader, body: Body, spec: dict, surfaces: dict[str, Incline], field: str) -> Contact | None:
+    if "on" not in spec:
+        if "contact" in spec:
+            raise reader.fail(f"{field}.contact", "a contact needs a surface: on: SURFACE")
+        return None
+    if spec["on"] not in surfaces:
+        raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(surfaces) or 'none'})")
+    if spec.get("joint") is not None:
+        raise reader.fail(f"{field}.on", "a body on a surface cannot also turn on a joint")
+    kind = spec.get("contact", "rolling" if "radius" in body.sizes else "sliding")
+    if kind not in ("rolling", "sliding"):
+        raise reader.fail(f"{field}.contact", "expected rolling or sliding")
+    if kind == "rolling" and "radius" not in body.sizes:
+        raise reader.fail(f"{field}.contact", f"a {body.shape} has no radius to roll on")
+    return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling")
+
+
+def _surfaces(reader: _Reader, raw) -> dict[str, Incline]:
+    raw = reader.mapping(raw or {}, "scene.surfaces", free=True)
+    result = {}
+    for name, spec in raw.items():
+        field = f"scene.surfaces.{name}"
+        if not isinstance(name, str) or not name.isidentifier():
+            raise reader.fail(field, "a surface name is letters, digits and _")
+        spec = reader.mapping(spec, field, required=("incline",))
+        incline = reader.mapping(spec["incline"] or {}, f"{field}.incline", optional=("angle", "height"))
+        if "angle" in incline:
+            angle = reader.dimensioned(incline["angle"], f"{field}.incline.angle", "rad", "an angle")
+            if not (angle.is_nonnegative and (sp.pi / 2 - angle).is_positive) and not angle.free_symbols:
+                raise reader.fail(f"{field}.incline.angle", "an incline's angle lies in [0, pi/2)")
+        else:
+            angle = reader.unspecified(f"angle_{name}", "rad")
+        height = None
+        if "height" in incline:
+            height = reader.positive(incline["height"], f"{field}.incline.height", "m", "a height")
+        result[name] = Incline(name, angle, height)
+    return result
 
 
 def _joint(reader: _Reader, body: Body, spec, field: str) -> Pin | None:
@@ -286,7 +350,8 @@ def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> W
 
 
 def _scene(reader: _Reader, raw) -> Scene:
-    raw = reader.mapping(raw, "scene", required=("bodies",), optional=("constraints", "loads"))
+    raw = reader.mapping(raw, "scene", required=("bodies",), optional=("surfaces", "constraints", "loads"))
+    surfaces = _surfaces(reader, raw.get("surfaces"))
     bodies_raw = reader.mapping(raw["bodies"], "scene.bodies", free=True)
     if not bodies_raw:
         raise reader.fail("scene.bodies", "a scene needs at least one body")
@@ -297,9 +362,12 @@ def _scene(reader: _Reader, raw) -> Scene:
         body, pin = _body(reader, name, spec)
         bodies[name] = body
         pins += [pin] if pin else []
+        contact = _contact(reader, body, spec, surfaces, f"scene.bodies.{name}")
+        pins += [contact] if contact else []
     # A joint is named "axle" or "pivot"; with several of a kind, "<body>_axle".
     kinds = [p.name for p in pins]
-    pins = [p if kinds.count(p.name) == 1 else Pin(f"{p.body}_{p.name}", p.body, p.offset) for p in pins]
+    pins = [p if kinds.count(p.name) == 1 or not isinstance(p, Pin) else Pin(f"{p.body}_{p.name}", p.body, p.offset)
+            for p in pins]
     constraints_raw = raw.get("constraints") or []
     if not isinstance(constraints_raw, list):
         raise reader.fail("scene.constraints", "expected a list")
@@ -318,7 +386,7 @@ def _scene(reader: _Reader, raw) -> Scene:
             raise reader.fail(f"scene.loads[{i}]", "expected a load kind (gravity)")
         g = reader.positive(load["gravity"], f"scene.loads[{i}].gravity", "m/s^2", "a gravitational field")
         gravity = Gravity(g)
-    return Scene(bodies, constraints, gravity)
+    return Scene(bodies, constraints, gravity, surfaces)
 
 
 def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:
@@ -332,7 +400,9 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
             raise reader.fail(field, "an answer name is letters, digits and _")
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
-        spec = reader.mapping(spec, field, required=("meaning", "of", "unit"), optional=("axis", "sig_figs"))
+        spec = reader.mapping(spec, field, required=("meaning", "of", "unit"), optional=("axis", "sig_figs", "magnitude"))
+        if not isinstance(spec.get("magnitude", False), bool):
+            raise reader.fail(f"{field}.magnitude", "expected true or false")
         path = reader.text(spec["of"], f"{field}.of")
         try:
             quantity = parse_quantity(scene, path, spec.get("axis"))
@@ -343,7 +413,7 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
             raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
         result[name] = Ask(
             name, reader.text(spec["meaning"], f"{field}.meaning"), path, quantity,
-            reader.unit(spec["unit"], f"{field}.unit"), sig_figs,
+            reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False),
         )
     return result
 
@@ -381,6 +451,7 @@ def parse(text: str, path: Path) -> Problem:
         asks=asks,
         question=reader.text(raw["question"], "question"),
         corrections=tuple({k: str(v) for k, v in c.items()} for c in corrections),
+        scene_units=dict(reader.symbol_units),
     )
 
 

@@ -15,7 +15,12 @@ from derive import numeric, units
 from derive.answers import Solution
 from derive.problem import Problem
 
-ROUTE_TITLES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler", "integration": "Integration"}
+_ROUTE_TITLES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler", "integration": "Integration"}
+
+
+def route_title(route: str) -> str:
+    """A heading for a route of derivation ("energy of the ball" stays as it is)."""
+    return _ROUTE_TITLES.get(route, route[0].upper() + route[1:])
 
 
 def _in_unit(value_si: sp.Expr, unit: str) -> sp.Expr:
@@ -74,7 +79,7 @@ def as_json(result: dict) -> str:
 def as_text(result: dict) -> str:
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
     for route, equations in result["equations_of_motion"].items():
-        lines.append(f"Equations of motion, {ROUTE_TITLES[route]}:")
+        lines.append(f"Equations of motion, {route_title(route)}:")
         lines += [f"  {e.replace('Eq(', '', 1)[:-1].replace(', ', ' = ', 1)}" for e in equations]
         lines.append("")
     lines.append("Answers:")
@@ -93,7 +98,7 @@ def as_text(result: dict) -> str:
 def as_latex(result: dict) -> str:
     lines = [f"\\section*{{{result['title']}}}"]
     for route, steps in result["steps"].items():
-        lines.append(f"\\subsection*{{{ROUTE_TITLES[route]}}}")
+        lines.append(f"\\subsection*{{{route_title(route)}}}")
         for step in steps:
             lines.append(f"{step['text']}:")
             if step["latex"]:

@@ -11,19 +11,17 @@ modules in `derive.mechanics` derive its motion.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
 from derive import inertia
 
-#: Body shapes a scene may use, with the size names each needs.
+#: Body shapes a scene may use, with the size names each needs (from the inertia module's shapes).
 SHAPE_SIZES: dict[str, tuple[str, ...]] = {
     "point": (),
-    "rod": ("length",),
-    "ring": ("radius",),
-    "disk": ("radius",),
     "custom": (),
+    **{name: tuple(shape.sizes) for name, shape in inertia.SHAPES.items()},
 }
 
 
@@ -81,13 +79,53 @@ class WoundString:
 
 
 @dataclass(frozen=True)
+class Incline:
+    """A fixed plane surface descending to the right at `angle` (0 is a level floor).
+
+    Down-slope unit vector (cos angle, -sin angle), outward normal (sin angle, cos angle).
+    `height` is the drop from where bodies start (at rest) to the bottom, when given.
+    """
+
+    name: str
+    angle: sp.Expr
+    height: sp.Expr | None = None
+
+    @property
+    def down(self) -> sp.Matrix:
+        return sp.Matrix([sp.cos(self.angle), -sp.sin(self.angle)])
+
+    @property
+    def normal(self) -> sp.Matrix:
+        return sp.Matrix([sp.sin(self.angle), sp.cos(self.angle)])
+
+
+@dataclass(frozen=True)
+class Contact:
+    """A body resting on a surface: rolling without slipping (static friction and a normal
+    force) or sliding without friction (a normal force only). A round body touches the
+    surface a radius below its center; a point mass at its center."""
+
+    name: str
+    body: str
+    surface: str
+    rolling: bool
+
+
+@dataclass(frozen=True)
 class Gravity:
     """A uniform gravitational field of strength `g` along -y."""
 
     g: sp.Expr
 
 
-Constraint = Pin | WoundString
+Constraint = Pin | WoundString | Contact
+
+
+def constraint_bodies(constraint: Constraint) -> tuple[str, ...]:
+    """The bodies a constraint couples."""
+    if isinstance(constraint, WoundString):
+        return (constraint.reel, constraint.load)
+    return (constraint.body,)
 
 
 @dataclass(frozen=True)
@@ -97,6 +135,7 @@ class Scene:
     bodies: dict[str, Body]
     constraints: tuple[Constraint, ...] = ()
     gravity: Gravity | None = None
+    surfaces: dict[str, Incline] = field(default_factory=dict)
 
     def constraint(self, name: str) -> Constraint:
         for c in self.constraints:
@@ -107,11 +146,26 @@ class Scene:
     def degrees_of_freedom(self) -> int:
         """Coordinates (x, y and, for rotating bodies, an angle) less the scalar constraints."""
         coordinates = sum(3 if b.rotates else 2 for b in self.bodies.values())
-        equations = sum(2 if isinstance(c, Pin) else 1 for c in self.constraints)
+        equations = sum(2 if isinstance(c, Pin) or isinstance(c, Contact) and c.rolling else 1
+                        for c in self.constraints)
         return coordinates - equations
 
-    def needs_dynamics(self) -> bool:
-        return bool(self.constraints) or self.gravity is not None
+    def component(self, body: str) -> "Scene":
+        """The sub-scene of the bodies coupled to `body` through constraints."""
+        members, grew = {body}, True
+        while grew:
+            grew = False
+            for c in self.constraints:
+                coupled = set(constraint_bodies(c))
+                if coupled & members and not coupled <= members:
+                    members |= coupled
+                    grew = True
+        constraints = tuple(c for c in self.constraints if set(constraint_bodies(c)) <= members)
+        bodies = {name: b for name, b in self.bodies.items() if name in members}
+        return Scene(bodies, constraints, self.gravity, self.surfaces)
+
+    def contact_of(self, body: str) -> Contact | None:
+        return next((c for c in self.constraints if isinstance(c, Contact) and c.body == body), None)
 
 
 @dataclass(frozen=True)
@@ -120,7 +174,8 @@ class Quantity:
 
     kinds: "inertia" (target a body, detail an axis), "acceleration" (a body; x or y),
     "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
-    "small_oscillation" (detail omega or period).
+    "contact" (a body on a surface; one of CONTACT_QUANTITIES), "small_oscillation"
+    (detail omega or period).
     """
 
     kind: str
@@ -129,7 +184,11 @@ class Quantity:
 
 
 #: The forces each constraint kind exerts, as an answer path names them.
-CONSTRAINT_FORCES = {Pin: ("reaction.x", "reaction.y"), WoundString: ("tension",)}
+CONSTRAINT_FORCES = {Pin: ("reaction.x", "reaction.y"), WoundString: ("tension",), Contact: ("normal", "friction")}
+
+#: What a body on a surface can be asked, besides what every body can.
+CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
+                      "speed_at_bottom", "time_to_bottom")
 
 def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity:
     """Parse an answer path such as ``block.acceleration.y`` against a scene.
@@ -160,7 +219,17 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             return Quantity("acceleration", head, rest[-1])
         if rest == "angular_acceleration" and body.rotates:
             return Quantity("angular_acceleration", head, None)
-        raise ValueError(f"a body has inertia, acceleration.x, acceleration.y, angular_acceleration; not {rest!r}")
+        contact = scene.contact_of(head)
+        if contact and rest in CONTACT_QUANTITIES:
+            if rest in ("friction", "min_friction_coefficient") and not contact.rolling:
+                raise ValueError(f"{head} slides without friction: it has no {rest}")
+            if rest in ("speed_at_bottom", "time_to_bottom") and scene.surfaces[contact.surface].height is None:
+                raise ValueError(f"{rest} needs the height of {contact.surface}")
+            return Quantity("contact", head, rest)
+        known = "inertia, acceleration.x, acceleration.y, angular_acceleration"
+        if contact:
+            known += ", " + ", ".join(CONTACT_QUANTITIES)
+        raise ValueError(f"a body has {known}; not {rest!r}")
     names = {c.name: c for c in scene.constraints}
     if head in names:
         allowed = CONSTRAINT_FORCES[type(names[head])]

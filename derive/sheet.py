@@ -28,6 +28,7 @@ from derive import export, library, numeric, render, units
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
+from derive.report import route_title
 
 SET_REQUIRED = ("title", "problems")
 SET_OPTIONAL = ("course", "due", "variants", "seed")
@@ -147,11 +148,9 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress) -> lis
 
 def _solutions_context(item: _ProblemVariants) -> dict:
     problem, solution = item.problem, item.solution
-    from derive.report import ROUTE_TITLES
-
     routes = [
         {
-            "title": ROUTE_TITLES[route],
+            "title": route_title(route),
             "steps": [
                 {"text": s.text, "equations": [render.latex_of(e).replace("=", "&=", 1) for e in s.equations]}
                 for s in steps

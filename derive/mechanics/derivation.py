@@ -39,6 +39,12 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     return sp.factor_terms(sp.factor(expr))
 
 
+def root(expr: sp.Expr) -> sp.Expr:
+    """sqrt(expr) kept as one root, as the notes write it (sympy would split sqrt(M*g) into
+    sqrt(M)*sqrt(g) for positive symbols)."""
+    return sp.Pow(tidy(expr), sp.S.Half, evaluate=False)
+
+
 def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
     """Solve equations linear in the unknowns (accelerations and constraint forces).
 

@@ -23,7 +23,7 @@ from functools import singledispatch
 import sympy as sp
 
 from derive.mechanics.kinematics import Coordinates
-from derive.scene import Constraint, Pin, WoundString
+from derive.scene import Constraint, Contact, Pin, WoundString
 
 
 @dataclass(frozen=True)
@@ -55,6 +55,21 @@ def _(cord: WoundString) -> dict[str, sp.Symbol]:
     return {"tension": sp.Symbol(f"T_{cord.name}", real=True)}
 
 
+@forces.register
+def _(contact: Contact) -> dict[str, sp.Symbol]:
+    result = {"normal": sp.Symbol(f"N^{contact.body}", real=True)}
+    if contact.rolling:
+        result["friction"] = sp.Symbol(f"f^{contact.body}", real=True)
+    return result
+
+
+def contact_offset(contact: Contact, coords: Coordinates) -> sp.Matrix:
+    """World offset from the body's center to the point touching the surface."""
+    surface = coords.scene.surfaces[contact.surface]
+    radius = coords.scene.bodies[contact.body].sizes.get("radius", sp.Integer(0))
+    return -radius * surface.normal
+
+
 @singledispatch
 def gaps(constraint: Constraint, coords: Coordinates) -> list[sp.Expr]:
     """Holonomic constraint functions g(q), each paired in order with `forces(constraint)`."""
@@ -78,6 +93,19 @@ def _(cord: WoundString, coords: Coordinates) -> list[sp.Expr]:
         - coords.of(cord.reel, "y").q
         - cord.side * radius * coords.angle(cord.reel)
     ]
+
+
+@gaps.register
+def _(contact: Contact, coords: Coordinates) -> list[sp.Expr]:
+    # Height above the surface (multiplier: the normal force) and, when rolling, the
+    # distance rolled down the slope plus R theta (multiplier: friction along the slope).
+    surface = coords.scene.surfaces[contact.surface]
+    center = coords.position(contact.body)
+    result = [surface.normal.dot(center)]
+    if contact.rolling:
+        radius = coords.scene.bodies[contact.body].sizes["radius"]
+        result.append(surface.down.dot(center) + radius * coords.angle(contact.body))
+    return result
 
 
 @singledispatch
@@ -105,6 +133,17 @@ def _(cord: WoundString, coords: Coordinates) -> list[AppliedForce]:
     ]
 
 
+@applied_forces.register
+def _(contact: Contact, coords: Coordinates) -> list[AppliedForce]:
+    surface = coords.scene.surfaces[contact.surface]
+    f = forces(contact)
+    offset = contact_offset(contact, coords)
+    result = [AppliedForce(contact.body, offset, f["normal"] * surface.normal, "normal force")]
+    if contact.rolling:
+        result.append(AppliedForce(contact.body, offset, f["friction"] * surface.down, "static friction"))
+    return result
+
+
 @singledispatch
 def velocity_conditions(constraint: Constraint, coords: Coordinates) -> list[sp.Expr]:
     """Velocity expressions the constraint holds at zero (rigid-body kinematics)."""
@@ -124,3 +163,39 @@ def _(cord: WoundString, coords: Coordinates) -> list[sp.Expr]:
     radius = coords.scene.bodies[cord.reel].sizes["radius"]
     rim = coords.material_velocity(cord.reel, sp.Matrix([cord.side * radius, 0]))
     return [coords.of(cord.load, "y").u - rim[1]]
+
+
+@velocity_conditions.register
+def _(contact: Contact, coords: Coordinates) -> list[sp.Expr]:
+    # The material point touching the surface does not move into it, and when rolling
+    # without slipping it does not move along it either.
+    surface = coords.scene.surfaces[contact.surface]
+    touching = coords.material_velocity(contact.body, contact_offset(contact, coords))
+    result = [touching.dot(surface.normal)]
+    if contact.rolling:
+        result.append(touching.dot(surface.down))
+    return result
+
+
+def solve_gaps(scene, coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
+    """Solve every constraint gap for one coordinate, preferring translations to angles;
+    the coordinates left over are the free ones.
+
+    Raises ValueError when a gap cannot be solved for any remaining coordinate.
+    """
+    order = sorted(coords.all, key=lambda c: c.kind == "theta")
+    solved: dict[sp.Symbol, sp.Expr] = {}
+    for c in scene.constraints:
+        for gap in gaps(c, coords):
+            gap = gap.xreplace(solved)
+            for candidate in order:
+                if candidate.q in solved or not gap.has(candidate.q):
+                    continue
+                roots = sp.solve(gap, candidate.q)
+                if len(roots) == 1:
+                    solved = {q: v.xreplace({candidate.q: roots[0]}) for q, v in solved.items()}
+                    solved[candidate.q] = roots[0]
+                    break
+            else:
+                raise ValueError(f"the constraint {c.name} could not be solved for any coordinate")
+    return solved

@@ -21,6 +21,12 @@ from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 
 
+def simplest(expr: sp.Expr) -> sp.Expr:
+    """Expanded, with sin^2 + cos^2 folded where the directions of surfaces put it."""
+    expr = sp.expand(expr)
+    return sp.expand(sp.trigsimp(expr)) if expr.has(sp.sin, sp.cos) else expr
+
+
 def all_forces(scene: Scene, coords: Coordinates) -> list[joints.AppliedForce]:
     """Gravity at every center of mass, and every constraint force."""
     result = []
@@ -49,11 +55,11 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         if body.rotates:
             torque = sum((f.offset[0] * f.force[1] - f.offset[1] * f.force[0] for f in on_body), sp.Integer(0))
             balances.append(sp.Eq(body.inertia * coords.of(body.name, "theta").a, torque))
-        balances = [sp.Eq(e.lhs, sp.expand(e.rhs)) for e in balances]
+        balances = [sp.Eq(e.lhs, simplest(e.rhs)) for e in balances]
         equations += balances
         steps.append(Step(f"Forces and torques on the {body.name} ({', '.join(sorted({f.label for f in on_body})) or 'none'})", tuple(balances)))
     conditions = [v for c in scene.constraints for v in joints.velocity_conditions(c, coords)]
-    kinematic = [sp.Eq(sp.expand(coords.ddt(v)), 0) for v in conditions]
+    kinematic = [sp.Eq(simplest(coords.ddt(v)), 0) for v in conditions]
     equations += kinematic
     if conditions:
         steps.append(Step("Kinematic constraints (velocities, then accelerations)", tuple(sp.Eq(v, 0) for v in conditions) + tuple(kinematic)))

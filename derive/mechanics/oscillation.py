@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics import joints
-from derive.mechanics.derivation import Derivation, Step, tidy
+from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates
 from derive.scene import Scene
 
@@ -36,30 +36,13 @@ class Oscillation:
     steps: tuple[Step, ...]
 
 
-def _dependent_coordinates(scene: Scene, coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
-    """Solve each constraint gap for one coordinate, preferring translations to angles."""
-    order = sorted(coords.all, key=lambda c: c.kind == "theta")
-    solved: dict[sp.Symbol, sp.Expr] = {}
-    for c in scene.constraints:
-        for gap in joints.gaps(c, coords):
-            gap = gap.xreplace(solved)
-            for candidate in order:
-                if candidate.q in solved or not gap.has(candidate.q):
-                    continue
-                roots = sp.solve(gap, candidate.q)
-                if len(roots) == 1:
-                    solved = {q: v.xreplace({candidate.q: roots[0]}) for q, v in solved.items()}
-                    solved[candidate.q] = roots[0]
-                    break
-            else:
-                raise OscillationError("a constraint could not be solved for any coordinate")
-    return solved
-
-
 def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
     """Angular frequency and period of small oscillations about the reference configuration."""
     coords = Coordinates(scene)
-    dependent = _dependent_coordinates(scene, coords)
+    try:
+        dependent = joints.solve_gaps(scene, coords)
+    except ValueError as error:
+        raise OscillationError(str(error)) from None
     free = [c for c in coords.all if c.q not in dependent]
     if len(free) != 1:
         raise OscillationError(f"small oscillations need one degree of freedom; the scene has {len(free)}")
@@ -74,9 +57,8 @@ def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
         raise OscillationError(
             f"the equilibrium is not provably stable (q'' = {sp.sstr(-stiffness)} q): no oscillation"
         )
-    # Kept as one root, sqrt(k), as the notes write it (sympy would split it into sqrt(M)*sqrt(g)*...).
-    omega = sp.Pow(stiffness, sp.S.Half, evaluate=False)
-    period = 2 * sp.pi * sp.Pow(1 / stiffness, sp.S.Half, evaluate=False)
+    omega = root(stiffness)
+    period = 2 * sp.pi * root(1 / stiffness)
     q = coordinate.q
     steps = (
         Step(f"Linearize about {q} = 0 at rest", (sp.Eq(coordinate.a, -stiffness * q),)),
