@@ -71,8 +71,10 @@ class Solution:
     def _route_expression(self, ask: Ask, route: str) -> sp.Expr:
         q = ask.quantity
         if q.kind == "small_oscillation":
-            oscillation = self.oscillations[route]
-            return oscillation.omega if q.detail == "omega" else oscillation.period
+            try:
+                return self.oscillations[route].quantity(q.detail)
+            except OscillationError as error:
+                raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
         derivation = self.derivations[route]
         if q.kind == "acceleration":
             return derivation.solution[self.coordinates.of(q.target, q.detail).a]
@@ -122,11 +124,29 @@ class Solution:
         return result
 
     def _magnitude(self, expr: sp.Expr, what: str) -> sp.Expr:
-        """|expr| as an expression: expr or -expr, by its sign over the parameter ranges."""
+        """|expr|: expr or -expr when its sign is the same over the parameter ranges, else Abs(expr)."""
         signs = {sp.sign(sp.N(expr.xreplace(point), 30)) for point in sample_points(self.problem, expr)}
-        if len(signs) != 1 or 0 in signs:
-            raise self.problem.error("ask", f"{what} changes sign over the parameter ranges: give its sign, not a magnitude")
-        return expr if signs == {1} else tidy(-expr)
+        if signs == {1}:
+            return expr
+        if signs == {-1}:
+            return tidy(-expr)
+        return sp.Abs(expr)
+
+    def _zero_for(self, expr: sp.Expr, ask: Ask) -> sp.Expr:
+        """The value of a parameter at which the quantity vanishes (a critical angle, say)."""
+        parameter = self.problem.parameters[ask.zero_for]
+        roots = [r for r in sp.solve(sp.numer(sp.together(expr)), parameter.symbol)
+                 if not r.has(sp.I) and r.is_nonnegative is not False]
+        if parameter.range is not None:
+            low, high = parameter.range
+            # Keep the roots that land in the parameter's range for some parameter values.
+            inside = [r for r in roots if any(low <= sp.N(r.xreplace(p), 30) <= high
+                                              for p in sample_points(self.problem, r))]
+            roots = inside or roots
+        if len(roots) != 1:
+            raise self.problem.error(f"ask.{ask.name}.zero_for", f"{ask.path} vanishes at {len(roots)} values of "
+                                     f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
+        return tidy(roots[0])
 
     def _inertia(self, ask: Ask) -> sp.Expr:
         body = self.scene.bodies[ask.quantity.target]
@@ -141,6 +161,8 @@ class Solution:
             result = self._inertia(ask)
         else:
             result = self._route_expression(ask, "lagrange")
+        if ask.zero_for:
+            result = self._zero_for(result, ask)
         if ask.magnitude:
             result = self._magnitude(result, name)
         leftover = result.free_symbols - {p.symbol for p in self.problem.parameters.values()}

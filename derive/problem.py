@@ -22,7 +22,8 @@ import yaml
 
 from derive import expr, library, units
 from derive.errors import InputError
-from derive.scene import SHAPE_SIZES, Body, Contact, Gravity, Incline, Pin, Quantity, Scene, WoundString, parse_quantity
+from derive.scene import (SHAPE_SIZES, Body, Contact, Gravity, HubPull, Incline, Pin, Quantity, Scene, WoundString,
+                          parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -52,6 +53,7 @@ class Ask:
     unit: str
     sig_figs: int | None
     magnitude: bool = False
+    zero_for: str | None = None
 
 
 @dataclass(frozen=True)
@@ -244,7 +246,7 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
     field = f"scene.bodies.{name}"
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "inertia", "joint", "on", "contact", *all_sizes))
+                          optional=("mass", "inertia", "inertia_about", "joint", "on", "contact", *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
@@ -254,7 +256,9 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
         mass = reader.unspecified(f"m_{name}", "kg")
     sizes = {}
     for size in all_sizes:
-        if size in SHAPE_SIZES[shape]:
+        if shape == "custom" and size == "radius" and size in spec:  # a custom body may roll
+            sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", "a radius")
+        elif size in SHAPE_SIZES[shape]:
             if size in spec:
                 sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", f"a {size}")
             else:
@@ -271,7 +275,15 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
     elif "inertia" in spec:
         raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
     body = Body(name, shape, mass, sizes, given)
-    return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
+    pin = _joint(reader, body, spec.get("joint"), f"{field}.joint")
+    about = spec.get("inertia_about", "center")
+    if about not in ("center", "pivot") or about == "pivot" and (given is None or pin is None or pin.name != "pivot"):
+        raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body on a pivot joint")
+    if about == "pivot":
+        # Given about the pivot: the center-of-mass moment follows from the parallel-axis theorem.
+        distance = pin.offset[0] ** 2 + pin.offset[1] ** 2
+        body = Body(name, shape, mass, sizes, given - mass * distance)
+    return body, pin
 
 
 def _contact(reader: _Reader, body: Body, spec: dict, surfaces: dict[str, Incline], field: str) -> Contact | None:
@@ -321,9 +333,12 @@ def _joint(reader: _Reader, body: Body, spec, field: str) -> Pin | None:
     if spec == "fixed_axle":
         return Pin("axle", body.name, (0, 0))
     spec = reader.mapping(spec, field, optional=("pivot",))
-    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",))
+    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",), optional=("side",))
     distance = reader.positive(pivot["distance"], f"{field}.pivot.distance", "m", "a pivot distance")
-    return Pin("pivot", body.name, (0, distance))
+    side = pivot.get("side", "above")
+    if side not in ("above", "below"):
+        raise reader.fail(f"{field}.pivot.side", "above (the body hangs) or below (the body stands on it)")
+    return Pin("pivot", body.name, (0, distance if side == "above" else -distance))
 
 
 def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> WoundString:
@@ -376,17 +391,28 @@ def _scene(reader: _Reader, raw) -> Scene:
     duplicate = next((n for n in names if names.count(n) > 1 or n in bodies), None)
     if duplicate:
         raise reader.fail("scene.constraints", f"the name {duplicate!r} is used twice")
-    gravity = None
+    gravity, pulls = None, []
     loads = raw.get("loads") or []
     if not isinstance(loads, list):
         raise reader.fail("scene.loads", "expected a list")
     for i, load in enumerate(loads):
-        load = reader.mapping(load, f"scene.loads[{i}]", optional=("gravity",))
-        if "gravity" not in load:
-            raise reader.fail(f"scene.loads[{i}]", "expected a load kind (gravity)")
-        g = reader.positive(load["gravity"], f"scene.loads[{i}].gravity", "m/s^2", "a gravitational field")
-        gravity = Gravity(g)
-    return Scene(bodies, constraints, gravity, surfaces)
+        field = f"scene.loads[{i}]"
+        load = reader.mapping(load, field, optional=("gravity", "pull"))
+        if len(load) != 1:
+            raise reader.fail(field, "expected one load kind (gravity, pull)")
+        if "gravity" in load:
+            gravity = Gravity(reader.positive(load["gravity"], f"{field}.gravity", "m/s^2", "a gravitational field"))
+            continue
+        pull = reader.mapping(load["pull"], f"{field}.pull", required=("on", "force", "angle", "hub_radius"))
+        if pull["on"] not in bodies or not bodies[pull["on"]].rotates:
+            raise reader.fail(f"{field}.pull.on", f"no turning body {pull['on']!r} (bodies: {', '.join(bodies)})")
+        pulls.append(HubPull(
+            f"pull{i}", pull["on"],
+            reader.positive(pull["force"], f"{field}.pull.force", "N", "a pulling force"),
+            reader.dimensioned(pull["angle"], f"{field}.pull.angle", "rad", "an angle"),
+            reader.positive(pull["hub_radius"], f"{field}.pull.hub_radius", "m", "a hub radius"),
+        ))
+    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls))
 
 
 def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:
@@ -400,7 +426,11 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
             raise reader.fail(field, "an answer name is letters, digits and _")
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
-        spec = reader.mapping(spec, field, required=("meaning", "of", "unit"), optional=("axis", "sig_figs", "magnitude"))
+        spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
+                              optional=("axis", "sig_figs", "magnitude", "zero_for"))
+        zero_for = spec.get("zero_for")
+        if zero_for is not None and zero_for not in parameters:
+            raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
         if not isinstance(spec.get("magnitude", False), bool):
             raise reader.fail(f"{field}.magnitude", "expected true or false")
         path = reader.text(spec["of"], f"{field}.of")
@@ -413,7 +443,7 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
             raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
         result[name] = Ask(
             name, reader.text(spec["meaning"], f"{field}.meaning"), path, quantity,
-            reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False),
+            reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False), zero_for,
         )
     return result
 

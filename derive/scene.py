@@ -112,6 +112,30 @@ class Contact:
 
 
 @dataclass(frozen=True)
+class HubPull:
+    """A cord pulled with force `force` at `angle` above the horizontal, unwinding from the
+    underside of a hub of radius `hub_radius` on `body` (the tugged spool of the notes).
+
+    The cord leaves the hub at the tangent point r (sin angle, -cos angle) from the center,
+    fixed in space relative to the center while the hub turns under it.
+    """
+
+    name: str
+    body: str
+    force: sp.Expr
+    angle: sp.Expr
+    hub_radius: sp.Expr
+
+    @property
+    def direction(self) -> sp.Matrix:
+        return sp.Matrix([sp.cos(self.angle), sp.sin(self.angle)])
+
+    @property
+    def offset(self) -> sp.Matrix:
+        return self.hub_radius * sp.Matrix([sp.sin(self.angle), -sp.cos(self.angle)])
+
+
+@dataclass(frozen=True)
 class Gravity:
     """A uniform gravitational field of strength `g` along -y."""
 
@@ -136,6 +160,7 @@ class Scene:
     constraints: tuple[Constraint, ...] = ()
     gravity: Gravity | None = None
     surfaces: dict[str, Incline] = field(default_factory=dict)
+    pulls: tuple[HubPull, ...] = ()
 
     def constraint(self, name: str) -> Constraint:
         for c in self.constraints:
@@ -162,7 +187,8 @@ class Scene:
                     grew = True
         constraints = tuple(c for c in self.constraints if set(constraint_bodies(c)) <= members)
         bodies = {name: b for name, b in self.bodies.items() if name in members}
-        return Scene(bodies, constraints, self.gravity, self.surfaces)
+        pulls = tuple(p for p in self.pulls if p.body in members)
+        return Scene(bodies, constraints, self.gravity, self.surfaces, pulls)
 
     def contact_of(self, body: str) -> Contact | None:
         return next((c for c in self.constraints if isinstance(c, Contact) and c.body == body), None)
@@ -202,8 +228,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     """
     head, _, rest = path.partition(".")
     if head == "small_oscillation":
-        if rest not in ("omega", "period"):
-            raise ValueError("small_oscillation has omega and period")
+        if rest not in ("omega", "period", "growth_rate"):
+            raise ValueError("small_oscillation has omega, period and growth_rate (about an unstable equilibrium)")
         return Quantity("small_oscillation", None, rest)
     if head in scene.bodies:
         body = scene.bodies[head]

@@ -35,6 +35,16 @@ def energies(scene: Scene, coords: Coordinates) -> tuple[sp.Expr, sp.Expr]:
     return kinetic, potential
 
 
+def generalized_forces(scene: Scene, coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
+    """Q_j = sum F . dv_P/du_j over the non-conservative applied forces (virtual work)."""
+    result = {c.q: sp.Integer(0) for c in coords.all}
+    for pull in scene.pulls:
+        velocity = coords.material_velocity(pull.body, pull.offset)
+        for c in coords.all:
+            result[c.q] += (pull.force * pull.direction).dot(velocity.diff(c.u))
+    return result
+
+
 def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     """Euler–Lagrange equations with multipliers, solved for accelerations and forces."""
     coords = coords or Coordinates(scene)
@@ -45,10 +55,11 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         for c in scene.constraints
         for gap, force in zip(joints.gaps(c, coords), joints.forces(c).values())
     ]
+    applied = generalized_forces(scene, coords)
     equations = []
     for c in coords.all:
         lhs = coords.ddt(sp.diff(lagrangian, c.u)) - sp.diff(lagrangian, c.q)
-        rhs = sum((force * sp.diff(gap, c.q) for gap, force in pairs), sp.Integer(0))
+        rhs = applied[c.q] + sum((force * sp.diff(gap, c.q) for gap, force in pairs), sp.Integer(0))
         equations.append(sp.Eq(sp.expand(lhs), sp.expand(rhs)))
     constraint_accelerations = [sp.Eq(sp.expand(coords.ddt(coords.ddt(gap))), 0) for gap, _ in pairs]
     unknowns = coords.accelerations + [force for _, force in pairs]
@@ -65,7 +76,7 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
             )
         )
     steps += [
-        Step("Euler–Lagrange equations, d/dt(dL/dq') - dL/dq = sum of multiplier times dg/dq", tuple(equations)),
+        Step("Euler–Lagrange equations, d/dt(dL/dq') - dL/dq = Q + sum of multiplier times dg/dq", tuple(equations)),
         Step("Constraints at acceleration level", tuple(constraint_accelerations)),
         Step("Solving", tuple(sp.Eq(u, solution[u]) for u in unknowns)),
     ]

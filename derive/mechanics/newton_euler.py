@@ -36,6 +36,8 @@ def all_forces(scene: Scene, coords: Coordinates) -> list[joints.AppliedForce]:
             result.append(joints.AppliedForce(body.name, sp.zeros(2, 1), weight, "weight"))
     for c in scene.constraints:
         result += joints.applied_forces(c, coords)
+    for pull in scene.pulls:
+        result.append(joints.AppliedForce(pull.body, pull.offset, pull.force * pull.direction, f"pull of {pull.name}"))
     return result
 
 

@@ -9,7 +9,7 @@ reference configuration at rest, and q'' = -omega^2 q gives the angular frequenc
 >>> M, g, d, I = sp.symbols("M g d I", positive=True)
 >>> scene = Scene({"bob": Body("bob", "custom", M, {}, I)}, (Pin("pivot", "bob", (0, d)),), Gravity(g))
 >>> from derive.mechanics import lagrange
->>> small_oscillation(scene, lagrange.derive(scene)).omega
+>>> small_oscillation(scene, lagrange.derive(scene)).quantity("omega")
 sqrt(M*d*g/(I + M*d**2))
 """
 from __future__ import annotations
@@ -30,10 +30,25 @@ class OscillationError(ValueError):
 
 @dataclass(frozen=True)
 class Oscillation:
+    """The linearized motion q'' = -stiffness * q about the reference configuration."""
+
     coordinate: Coordinate
-    omega: sp.Expr
-    period: sp.Expr
+    stiffness: sp.Expr
     steps: tuple[Step, ...]
+
+    @property
+    def stable(self) -> bool:
+        return bool(self.stiffness.is_positive)
+
+    def quantity(self, name: str) -> sp.Expr:
+        """omega or period (stable), growth_rate (unstable)."""
+        if name == "growth_rate":
+            if self.stable:
+                raise OscillationError("the equilibrium is stable: it oscillates, it has no growth rate")
+            return root(-self.stiffness)
+        if not self.stable:
+            raise OscillationError(f"the equilibrium is unstable (q'' = {sp.sstr(-self.stiffness)} q): ask for growth_rate")
+        return root(self.stiffness) if name == "omega" else 2 * sp.pi * root(1 / self.stiffness)
 
 
 def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
@@ -53,18 +68,15 @@ def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
     if not sp.simplify(acceleration.xreplace(reference)).equals(0):
         raise OscillationError("the reference configuration (every angle zero) is not an equilibrium")
     stiffness = tidy(-sp.diff(acceleration, coordinate.q).xreplace(reference))
-    if stiffness.is_positive is not True:
-        raise OscillationError(
-            f"the equilibrium is not provably stable (q'' = {sp.sstr(-stiffness)} q): no oscillation"
-        )
-    omega = root(stiffness)
-    period = 2 * sp.pi * root(1 / stiffness)
+    if stiffness.is_positive is not True and stiffness.is_negative is not True:
+        raise OscillationError(f"cannot decide whether q'' = {sp.sstr(-stiffness)} q is stable for all parameters")
     q = coordinate.q
-    steps = (
-        Step(f"Linearize about {q} = 0 at rest", (sp.Eq(coordinate.a, -stiffness * q),)),
-        Step(
-            "Angular frequency and period of small oscillations",
-            (sp.Eq(sp.Symbol("omega"), omega), sp.Eq(sp.Symbol("T"), period)),
-        ),
-    )
-    return Oscillation(coordinate, omega, period, steps)
+    linear = Step(f"Linearize about {q} = 0 at rest", (sp.Eq(coordinate.a, -stiffness * q),))
+    if stiffness.is_positive:
+        omega = root(stiffness)
+        steps = (linear, Step("Angular frequency and period of small oscillations",
+                              (sp.Eq(sp.Symbol("omega"), omega), sp.Eq(sp.Symbol("T"), 2 * sp.pi * root(1 / stiffness)))))
+    else:
+        steps = (linear, Step("Unstable: the deviation grows as exp(a t) with growth rate",
+                              (sp.Eq(sp.Symbol("a"), root(-stiffness)),)))
+    return Oscillation(coordinate, stiffness, steps)
