@@ -1,0 +1,51 @@
+"""Library problems of the dynamics slice against independent routes (the notes' own method
+where it is sound, computed here at 50 digits), through the same code path as `derive solve`."""
+import mpmath
+import pytest
+
+from derive import problem, report
+
+mpmath.mp.dps = 50
+
+
+def solve(problem_id, **values):
+    result = report.solve(problem.load(problem_id), {k: str(v) for k, v in values.items()}, 15)
+    return {name: mpmath.mpf(a["value"]) for name, a in result["answers"].items()}, result
+
+
+def close(value, reference, digits=15):
+    return abs(value - reference) <= abs(reference) * mpmath.mpf(10) ** (1 - digits) / 2
+
+
+def test_tugged_spool_against_torque_about_the_contact_point():
+    """Notes §4.4: treat the contact point as an instantaneous pivot (I + M R^2) alpha = tau_P."""
+    F, M, R, r, I, theta = (mpmath.mpf(x) for x in ("5", "1.3", "0.06", "0.02", "0.0011", "0.7"))
+    answers, result = solve("tugged_spool", F=5, M=1.3, R=0.06, r=0.02, I_cm=0.0011, theta=0.7)
+    tangent = (r * mpmath.sin(theta), -r * mpmath.cos(theta))      # where the string leaves the hub
+    contact = (0, -R)
+    force = (F * mpmath.cos(theta), F * mpmath.sin(theta))
+    torque = (tangent[0] - contact[0]) * force[1] - (tangent[1] - contact[1]) * force[0]
+    alpha = torque / (I + M * R**2)
+    assert close(answers["a"], -alpha * R)                          # rolling: v = -omega R
+    # Friction from the center's force balance: M a = F cos(theta) + f.
+    assert close(answers["f"], abs(M * (-alpha * R) - F * mpmath.cos(theta)))
+    assert close(answers["theta_c"], mpmath.acos(r / R))
+    assert result["checks"]["lagrange_vs_newton_euler"]["passed"]
+
+
+def test_spool_rolls_toward_the_pull_below_the_critical_angle_and_away_above():
+    below, _ = solve("tugged_spool", F=5, M=1, R=0.06, r=0.02, I_cm=0.001, theta=1.0)
+    above, _ = solve("tugged_spool", F=5, M=1, R=0.06, r=0.02, I_cm=0.001, theta=1.4)
+    assert below["a"] > 0 > above["a"]
+
+
+def test_spool_at_the_critical_angle_does_not_accelerate():
+    at = mpmath.acos(mpmath.mpf(1) / 3)
+    result = report.solve(problem.load("tugged_spool"), {"F": "5", "M": "1", "R": "0.06", "r": "0.02",
+                                                         "I_cm": "0.001", "theta": mpmath.nstr(at, 40)}, 15)
+    assert abs(mpmath.mpf(result["answers"]["a"]["value"])) < mpmath.mpf(10) ** -30
+
+
+def test_tightrope_walker_growth_rate():
+    answers, _ = solve("tightrope_walker", m=70, h=1.1, I=300)
+    assert close(answers["a"], mpmath.sqrt(70 * mpmath.mpf("1.1") * mpmath.mpf("9.81") / 300))
