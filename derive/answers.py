@@ -18,12 +18,13 @@ from functools import cached_property
 import sympy as sp
 
 from derive import inertia, units
-from derive.mechanics import joints, lagrange, newton_euler
+from derive.mechanics import joints, lagrange, newton_euler, paths
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import Oscillation, OscillationError, small_oscillation
 from derive.problem import Ask, Problem, ProblemError
+from derive.scene import TIME
 
 ROUTES = ("lagrange", "newton_euler")
 
@@ -148,6 +149,10 @@ class Solution:
                                      f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
         return tidy(roots[0])
 
+    def _path(self, ask: Ask) -> sp.Expr:
+        body = self.scene.bodies[ask.quantity.target]
+        return paths.quantity(body.path, body.mass, ask.quantity.detail)
+
     def _inertia(self, ask: Ask) -> sp.Expr:
         body = self.scene.bodies[ask.quantity.target]
         if ask.quantity.detail is None:
@@ -159,13 +164,15 @@ class Solution:
         ask = self.problem.asks[name]
         if ask.quantity.kind == "inertia":
             result = self._inertia(ask)
+        elif ask.quantity.kind == "path":
+            result = self._path(ask)
         else:
             result = self._route_expression(ask, "lagrange")
         if ask.zero_for:
             result = self._zero_for(result, ask)
         if ask.magnitude:
             result = self._magnitude(result, name)
-        leftover = result.free_symbols - {p.symbol for p in self.problem.parameters.values()}
+        leftover = result.free_symbols - {p.symbol for p in self.problem.parameters.values()} - {TIME}
         if leftover:
             names = ", ".join(sorted(map(str, leftover)))
             if leftover & self.coordinates.state:
@@ -183,6 +190,8 @@ class Solution:
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
         if kinds == {"inertia"}:
             return {"integration": [self._inertia_steps(a) for a in self.problem.asks.values()]}
+        if kinds == {"path"}:
+            return {"kinematics": self._path_steps()}
         result = {route: list(d.steps) for route, d in self.derivations.items()}
         if "small_oscillation" in kinds:
             for route in result:
@@ -190,6 +199,20 @@ class Solution:
         for body, balance in self.energy_balances.items():
             result[f"energy of the {body}"] = list(balance.steps)
         return result
+
+    def _path_steps(self) -> list[Step]:
+        steps = []
+        for name in sorted({a.quantity.target for a in self.problem.asks.values()}):
+            body = self.scene.bodies[name]
+            x, y = sp.symbols("x y")
+            position = body.path.position
+            steps.append(Step(f"Position of the {name} and its derivatives", (
+                sp.Eq(x, position[0]), sp.Eq(y, position[1]),
+                sp.Eq(sp.Derivative(x, TIME), position[0].diff(TIME)),
+                sp.Eq(sp.Derivative(y, TIME), position[1].diff(TIME)))))
+        for ask in self.problem.asks.values():
+            steps.append(Step(ask.meaning, (sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name]),)))
+        return steps
 
     def _inertia_steps(self, ask: Ask) -> Step:
         body = self.scene.bodies[ask.quantity.target]
@@ -213,8 +236,11 @@ class Solution:
         """Every independent check that applies: routes, parallel axes, dimensions."""
         result = [self._dimension_check()]
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
-        if kinds - {"inertia"}:
+        if kinds - {"inertia", "path"}:
             result.append(self._routes_check())
+        if any(a.quantity.detail in ("acceleration.radial", "acceleration.tangential")
+               for a in self.problem.asks.values() if a.quantity.kind == "path"):
+            result.append(self._polar_check())
         if self.energy_balances:
             result.append(self._energy_check())
         for ask in self.problem.asks.values():
@@ -253,6 +279,18 @@ class Solution:
             methods.add(method)
         method = "symbolic" if methods == {"symbolic"} else "symbolic and numeric"
         return Check("lagrange_vs_newton_euler", True, method, f"{len(pairs)} quantities agree")
+
+    def _polar_check(self) -> Check:
+        """Polar components from the Cartesian position equal sympy.physics.mechanics' (rotating frame)."""
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind == "path" and ask.quantity.detail.startswith("acceleration."):
+                body = self.scene.bodies[ask.quantity.target]
+                radial, tangential = paths.check_polar(body.path)
+                other = {"acceleration.radial": radial, "acceleration.tangential": tangential}.get(ask.quantity.detail)
+                if other is not None and agree(other, self.expressions[ask.name]) is None:
+                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {self.expressions[ask.name]} by projection, "
+                                       f"{other} by sympy.physics.mechanics")
+        return Check("polar_vs_rotating_frame", True, "symbolic", "acceleration components agree")
 
     def _energy_check(self) -> Check:
         """Energy conservation gives the same speeds as the accelerations integrated."""

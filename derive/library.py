@@ -15,7 +15,7 @@ from pathlib import Path
 from derive.errors import InputError
 
 _PACKAGE = Path(__file__).resolve().parent
-ID_PATTERN = re.compile(r"[a-z][a-z0-9_]*")
+ID_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 
 class LibraryError(InputError):
@@ -50,7 +50,7 @@ def _find(reference: str, candidates: list[Path], kind: str) -> Path:
             return path
         raise LibraryError(f"{reference}: no such {kind} file")
     if not ID_PATTERN.fullmatch(reference):
-        raise LibraryError(f"{reference!r} is not a file and not a library id (lower-case letters, digits, _)")
+        raise LibraryError(f"{reference!r} is not a file and not a library id (letters, digits, _)")
     for candidate in candidates:
         if candidate.stem == reference:
             return candidate

@@ -22,8 +22,8 @@ import yaml
 
 from derive import expr, library, units
 from derive.errors import InputError
-from derive.scene import (SHAPE_SIZES, Body, Contact, Gravity, HubPull, Incline, Pin, Quantity, Scene, WoundString,
-                          parse_quantity)
+from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, Path, Pin, Quantity, Scene,
+                          WoundString, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -177,9 +177,9 @@ class _Reader:
             raise self.fail(field, str(error)) from None
         return text
 
-    def dimensioned(self, value, field: str, unit: str, what: str) -> sp.Expr:
-        """An expression of declared symbols that must have the dimension of `unit`."""
-        result = self.expression(value, field)
+    def dimensioned(self, value, field: str, unit: str, what: str, allowed=None) -> sp.Expr:
+        """An expression of declared (or `allowed`) symbols that must have the dimension of `unit`."""
+        result = self.expression(value, field, allowed)
         try:
             found = units.expression_dimension(result, self.symbol_units)
         except units.UnitError as error:
@@ -246,7 +246,7 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
     field = f"scene.bodies.{name}"
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "inertia", "inertia_about", "joint", "on", "contact", *all_sizes))
+                          optional=("mass", "inertia", "inertia_about", "joint", "on", "contact", "path", *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
@@ -274,7 +274,12 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
             raise reader.fail(f"{field}.inertia", "a moment of inertia cannot be negative")
     elif "inertia" in spec:
         raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
-    body = Body(name, shape, mass, sizes, given)
+    path = None
+    if "path" in spec:
+        if shape != "point" or "joint" in spec or "on" in spec:
+            raise reader.fail(f"{field}.path", "a prescribed path is for a free point mass")
+        path = _path(reader, spec["path"], f"{field}.path", name)
+    body = Body(name, shape, mass, sizes, given, path)
     pin = _joint(reader, body, spec.get("joint"), f"{field}.joint")
     about = spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and (given is None or pin is None or pin.name != "pivot"):
@@ -284,6 +289,33 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
         distance = pin.offset[0] ** 2 + pin.offset[1] ** 2
         body = Body(name, shape, mass, sizes, given - mass * distance)
     return body, pin
+
+
+PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
+
+
+def _path(reader: _Reader, raw, field: str, body: str) -> Path:
+    """`{polar: {r: EXPR, theta: EXPR}}` or `{cartesian: {x: ..., y: ...}}` in the parameters and
+    the time t; `any` leaves a coordinate an arbitrary function of time."""
+    raw = reader.mapping(raw, field, optional=tuple(PATH_COORDINATES))
+    if len(raw) != 1:
+        raise reader.fail(field, "expected polar or cartesian")
+    (kind, spec), = raw.items()
+    names = PATH_COORDINATES[kind]
+    spec = reader.mapping(spec, f"{field}.{kind}", required=tuple(n for n, _ in names))
+    if "t" in reader.symbols:
+        raise reader.fail(f"{field}.{kind}", "t is the time in a path: rename the parameter t")
+    reader.symbol_units.setdefault(TIME, "s")
+    allowed = {**reader.symbols, "t": TIME}
+    functions = []
+    for name, unit in names:
+        if spec[name] == "any":
+            function = sp.Function(name)(TIME)
+            reader.symbol_units[function] = unit
+            functions.append(function)
+        else:
+            functions.append(reader.dimensioned(spec[name], f"{field}.{kind}.{name}", unit, f"a path's {name}", allowed))
+    return Path(kind, tuple(functions))
 
 
 def _contact(reader: _Reader, body: Body, spec: dict, surfaces: dict[str, Incline], field: str) -> Contact | None:
@@ -461,7 +493,7 @@ def parse(text: str, path: Path) -> Problem:
     raw = reader.mapping(raw, "", required=("id", "title", "parameters", "scene", "ask", "question"), optional=TOP_LEVEL)
     problem_id = reader.text(raw["id"], "id")
     if not library.ID_PATTERN.fullmatch(problem_id):
-        raise reader.fail("id", "an id is lower-case letters, digits and _")
+        raise reader.fail("id", "an id is letters, digits and _, starting with a letter")
     parameters = _parameters(reader, raw["parameters"])
     scene = _scene(reader, raw["scene"])
     asks = _asks(reader, raw["ask"], scene, parameters)

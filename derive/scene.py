@@ -25,6 +25,35 @@ SHAPE_SIZES: dict[str, tuple[str, ...]] = {
 }
 
 
+TIME = sp.Symbol("t")  # the same symbol as sympy.physics.mechanics' dynamicsymbols._t
+
+#: What a point mass on a prescribed path can be asked.
+PATH_QUANTITIES = ("velocity.x", "velocity.y", "speed", "acceleration.x", "acceleration.y", "acceleration.radial",
+                   "acceleration.tangential", "angular_momentum", "areal_velocity")
+
+
+@dataclass(frozen=True)
+class Path:
+    """A body's prescribed motion: ("polar", (r(t), theta(t))) or ("cartesian", (x(t), y(t)))."""
+
+    kind: str
+    functions: tuple[sp.Expr, sp.Expr]
+
+    @property
+    def position(self) -> sp.Matrix:
+        if self.kind == "polar":
+            r, theta = self.functions
+            return sp.Matrix([r * sp.cos(theta), r * sp.sin(theta)])
+        return sp.Matrix(self.functions)
+
+    @property
+    def radius_and_angle(self) -> tuple[sp.Expr, sp.Expr]:
+        if self.kind == "polar":
+            return self.functions
+        x, y = self.functions
+        return sp.sqrt(x**2 + y**2), sp.atan2(y, x)
+
+
 @dataclass(frozen=True)
 class Body:
     """A rigid body (or a point mass) in the plane.
@@ -38,6 +67,7 @@ class Body:
     mass: sp.Expr
     sizes: dict[str, sp.Expr]
     given_inertia: sp.Expr | None = None
+    path: Path | None = None
 
     @property
     def rotates(self) -> bool:
@@ -200,8 +230,8 @@ class Quantity:
 
     kinds: "inertia" (target a body, detail an axis), "acceleration" (a body; x or y),
     "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
-    "contact" (a body on a surface; one of CONTACT_QUANTITIES), "small_oscillation"
-    (detail omega or period).
+    "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
+    prescribed path; one of PATH_QUANTITIES), "small_oscillation" (omega, period, growth_rate).
     """
 
     kind: str
@@ -233,6 +263,10 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         return Quantity("small_oscillation", None, rest)
     if head in scene.bodies:
         body = scene.bodies[head]
+        if body.path is not None:
+            if rest not in PATH_QUANTITIES:
+                raise ValueError(f"a body on a path has {', '.join(PATH_QUANTITIES)}; not {rest!r}")
+            return Quantity("path", head, rest)
         if rest == "inertia":
             shape = inertia.SHAPES.get(body.shape)
             axes = tuple(shape.axes) if shape else ()
