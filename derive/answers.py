@@ -18,7 +18,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import inertia, units
-from derive.mechanics import joints, lagrange, newton_euler, paths
+from derive.mechanics import joints, lagrange, newton_euler, orbits, paths
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
@@ -149,6 +149,13 @@ class Solution:
                                      f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
         return tidy(roots[0])
 
+    def _orbit(self, detail: str, route: str) -> sp.Expr:
+        orbit = self.scene.orbit
+        if detail in ("circular_radius", "effective_potential_minimum"):
+            radius, minimum = orbits.circular_orbit(orbit.GM, orbit.angular_momentum)
+            return radius if detail == "circular_radius" else minimum
+        return orbits.kepler(orbit.GM, orbit.semi_major_axis, orbit.eccentricity)[detail]
+
     def _path(self, ask: Ask) -> sp.Expr:
         body = self.scene.bodies[ask.quantity.target]
         return paths.quantity(body.path, body.mass, ask.quantity.detail)
@@ -166,6 +173,8 @@ class Solution:
             result = self._inertia(ask)
         elif ask.quantity.kind == "path":
             result = self._path(ask)
+        elif ask.quantity.kind == "orbit":
+            result = self._orbit(ask.quantity.detail, "lagrange")
         else:
             result = self._route_expression(ask, "lagrange")
         if ask.zero_for:
@@ -192,6 +201,8 @@ class Solution:
             return {"integration": [self._inertia_steps(a) for a in self.problem.asks.values()]}
         if kinds == {"path"}:
             return {"kinematics": self._path_steps()}
+        if kinds == {"orbit"}:
+            return {"orbit": self._orbit_steps()}
         result = {route: list(d.steps) for route, d in self.derivations.items()}
         if "small_oscillation" in kinds:
             for route in result:
@@ -199,6 +210,21 @@ class Solution:
         for body, balance in self.energy_balances.items():
             result[f"energy of the {body}"] = list(balance.steps)
         return result
+
+    def _orbit_steps(self) -> list[Step]:
+        orbit = self.scene.orbit
+        l = orbit.angular_momentum if orbit.angular_momentum is not None else sp.Symbol("l", positive=True)
+        r, f = orbits.r, orbits.f
+        rr = sp.Symbol("rddot")
+        conic, e = orbits.conic(orbit.GM, l)
+        steps = [
+            Step("Radial equation (Lagrange in polar coordinates; l = r^2 phi' conserved)",
+                 (sp.Eq(rr, orbits.radial_acceleration(orbit.GM, l, "lagrange")),)),
+            Step("Effective potential per unit mass", (sp.Eq(sp.Symbol("U_eff"), orbits.effective_potential(orbit.GM, l)),)),
+            Step("Orbit from u'' + u = GM/l^2 with u = 1/r", (sp.Eq(sp.Function("r")(f), conic),)),
+        ]
+        steps += [Step(a.meaning, (sp.Eq(sp.Symbol(n), self.expressions[n]),)) for n, a in self.problem.asks.items()]
+        return steps
 
     def _path_steps(self) -> list[Step]:
         steps = []
@@ -236,8 +262,10 @@ class Solution:
         """Every independent check that applies: routes, parallel axes, dimensions."""
         result = [self._dimension_check()]
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
-        if kinds - {"inertia", "path"}:
+        if kinds - {"inertia", "path", "orbit"}:
             result.append(self._routes_check())
+        if "orbit" in kinds:
+            result.append(self._orbit_check())
         if any(a.quantity.detail in ("acceleration.radial", "acceleration.tangential")
                for a in self.problem.asks.values() if a.quantity.kind == "path"):
             result.append(self._polar_check())
@@ -279,6 +307,23 @@ class Solution:
             methods.add(method)
         method = "symbolic" if methods == {"symbolic"} else "symbolic and numeric"
         return Check("lagrange_vs_newton_euler", True, method, f"{len(pairs)} quantities agree")
+
+    def _orbit_check(self) -> Check:
+        """Lagrange's and Newton's radial equations agree; for an ellipse, the energy is the same
+        at both turning points (where the velocity is l / r)."""
+        orbit = self.scene.orbit
+        l = sp.Symbol("l", positive=True)
+        routes = [orbits.radial_acceleration(orbit.GM, l, route) for route in ROUTES]
+        if agree(*routes) is None:
+            raise CheckFailure(f"{self.problem.id}: the radial equations differ: {routes}")
+        detail = "radial equations agree"
+        if orbit.semi_major_axis is not None:
+            k = orbits.kepler(orbit.GM, orbit.semi_major_axis, orbit.eccentricity)
+            at = [(k["angular_momentum"] / d) ** 2 / 2 - orbit.GM / d for d in (k["periapsis"], k["apoapsis"])]
+            if agree(*at) is None or agree(at[0], k["energy"]) is None:
+                raise CheckFailure(f"{self.problem.id}: the energy differs at periapsis and apoapsis")
+            detail += "; energy equal at periapsis and apoapsis"
+        return Check("lagrange_vs_newton_euler", True, "symbolic", detail)
 
     def _polar_check(self) -> Check:
         """Polar components from the Cartesian position equal sympy.physics.mechanics' (rotating frame)."""

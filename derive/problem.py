@@ -22,8 +22,8 @@ import yaml
 
 from derive import expr, library, units
 from derive.errors import InputError
-from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, Path, Pin, Quantity, Scene,
-                          WoundString, parse_quantity)
+from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, Orbit, Path, Pin, Quantity,
+                          Scene, WoundString, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -139,6 +139,7 @@ class _Reader:
         self.path = path
         self.symbols: dict[str, sp.Symbol] = {}
         self.symbol_units: dict[sp.Symbol, str] = {}
+        self.parameters: dict[str, Parameter] = {}
 
     def fail(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -239,6 +240,7 @@ def _parameters(reader: _Reader, raw) -> dict[str, Parameter]:
         reader.symbols[name] = symbol
         reader.symbol_units[symbol] = unit
         result[name] = Parameter(name, symbol, reader.text(spec["meaning"], f"{field}.meaning"), unit, value, bounds, sig_figs)
+        reader.parameters[name] = result[name]
     return result
 
 
@@ -397,11 +399,12 @@ def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> W
 
 
 def _scene(reader: _Reader, raw) -> Scene:
-    raw = reader.mapping(raw, "scene", required=("bodies",), optional=("surfaces", "constraints", "loads"))
+    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit"))
+    orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
-    bodies_raw = reader.mapping(raw["bodies"], "scene.bodies", free=True)
-    if not bodies_raw:
-        raise reader.fail("scene.bodies", "a scene needs at least one body")
+    bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
+    if not bodies_raw and orbit is None:
+        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit)")
     bodies, pins = {}, []
     for name, spec in bodies_raw.items():
         if not isinstance(name, str) or not name.isidentifier():
@@ -444,7 +447,26 @@ def _scene(reader: _Reader, raw) -> Scene:
             reader.dimensioned(pull["angle"], f"{field}.pull.angle", "rad", "an angle"),
             reader.positive(pull["hub_radius"], f"{field}.pull.hub_radius", "m", "a hub radius"),
         ))
-    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls))
+    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit)
+
+
+def _orbit(reader: _Reader, raw) -> Orbit:
+    field = "scene.orbit"
+    raw = reader.mapping(raw, field, required=("GM",), optional=("angular_momentum", "semi_major_axis", "eccentricity"))
+    GM = reader.positive(raw["GM"], f"{field}.GM", "m^3/s^2", "GM")
+    l = None
+    if "angular_momentum" in raw:
+        l = reader.positive(raw["angular_momentum"], f"{field}.angular_momentum", "m^2/s", "an angular momentum per unit mass")
+    a = e = None
+    if ("semi_major_axis" in raw) != ("eccentricity" in raw):
+        raise reader.fail(field, "an ellipse needs both semi_major_axis and eccentricity")
+    if "semi_major_axis" in raw:
+        a = reader.positive(raw["semi_major_axis"], f"{field}.semi_major_axis", "m", "a semi-major axis")
+        e = reader.dimensioned(raw["eccentricity"], f"{field}.eccentricity", "1", "an eccentricity")
+        bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]
+        if e.is_negative or not e.free_symbols and not e < 1 or any(b[0] < 0 or b[1] >= 1 for b in bounds):
+            raise reader.fail(f"{field}.eccentricity", "an ellipse has 0 <= e < 1 (e >= 1 is a parabola or hyperbola)")
+    return Orbit(GM, l, a, e)
 
 
 def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:

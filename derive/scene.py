@@ -166,6 +166,25 @@ class HubPull:
 
 
 @dataclass(frozen=True)
+class Orbit:
+    """A small mass in the inverse-square field of a mass M at the origin (per unit mass):
+    given its angular momentum l, or the ellipse's semi-major axis a and eccentricity e."""
+
+    GM: sp.Expr
+    angular_momentum: sp.Expr | None = None
+    semi_major_axis: sp.Expr | None = None
+    eccentricity: sp.Expr | None = None
+
+
+#: What an orbit can be asked, and what each needs of the orbit's description.
+ORBIT_QUANTITIES = {
+    "circular_radius": "angular_momentum", "effective_potential_minimum": "angular_momentum",
+    "energy": "semi_major_axis", "angular_momentum": "semi_major_axis", "period": "semi_major_axis",
+    "periapsis": "semi_major_axis", "apoapsis": "semi_major_axis",
+}
+
+
+@dataclass(frozen=True)
 class Gravity:
     """A uniform gravitational field of strength `g` along -y."""
 
@@ -191,6 +210,7 @@ class Scene:
     gravity: Gravity | None = None
     surfaces: dict[str, Incline] = field(default_factory=dict)
     pulls: tuple[HubPull, ...] = ()
+    orbit: Orbit | None = None
 
     def constraint(self, name: str) -> Constraint:
         for c in self.constraints:
@@ -231,7 +251,8 @@ class Quantity:
     kinds: "inertia" (target a body, detail an axis), "acceleration" (a body; x or y),
     "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
     "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
-    prescribed path; one of PATH_QUANTITIES), "small_oscillation" (omega, period, growth_rate).
+    prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES),
+    "small_oscillation" (omega, period, growth_rate).
     """
 
     kind: str
@@ -257,6 +278,14 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     Quantity(kind='acceleration', target='ball', detail='y')
     """
     head, _, rest = path.partition(".")
+    if head == "orbit":
+        if scene.orbit is None:
+            raise ValueError("the scene has no orbit")
+        if rest not in ORBIT_QUANTITIES:
+            raise ValueError(f"an orbit has {', '.join(ORBIT_QUANTITIES)}; not {rest!r}")
+        if getattr(scene.orbit, ORBIT_QUANTITIES[rest]) is None:
+            raise ValueError(f"orbit.{rest} needs the orbit's {ORBIT_QUANTITIES[rest].replace('_', ' ')}")
+        return Quantity("orbit", None, rest)
     if head == "small_oscillation":
         if rest not in ("omega", "period", "growth_rate"):
             raise ValueError("small_oscillation has omega, period and growth_rate (about an unstable equilibrium)")
