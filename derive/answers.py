@@ -18,7 +18,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import inertia, units
-from derive.mechanics import joints, lagrange, newton_euler, orbits, paths
+from derive.mechanics import events, joints, lagrange, newton_euler, orbits, paths
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
@@ -149,6 +149,24 @@ class Solution:
                                      f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
         return tidy(roots[0])
 
+    @cached_property
+    def event_results(self) -> dict[str, events.EventResult]:
+        try:
+            return {"conservation": events.by_conservation(self.scene), "impulses": events.by_impulses(self.scene)}
+        except (events.EventError, ValueError) as error:
+            raise self.problem.error("scene.events", str(error)) from None
+
+    def _event(self, q, result: events.EventResult) -> sp.Expr:
+        if q.kind == "after":
+            return result.after[q.target][("velocity.x", "velocity.y", "angular_velocity").index(q.detail)]
+        if q.detail == "turn":
+            if result.turn is None:
+                raise self.problem.error("ask", "event.turn is for an internal turn")
+            return result.turn
+        if q.detail == "energy_change":
+            return events.energy_change(self.scene, result)
+        return events.velocity_of_center(self.scene, result)[0 if q.detail.endswith("x") else 1]
+
     def _orbit(self, detail: str, route: str) -> sp.Expr:
         orbit = self.scene.orbit
         if detail in ("circular_radius", "effective_potential_minimum"):
@@ -175,6 +193,8 @@ class Solution:
             result = self._path(ask)
         elif ask.quantity.kind == "orbit":
             result = self._orbit(ask.quantity.detail, "lagrange")
+        elif ask.quantity.kind in ("event", "after"):
+            result = self._event(ask.quantity, self.event_results["conservation"])
         else:
             result = self._route_expression(ask, "lagrange")
         if ask.zero_for:
@@ -203,6 +223,8 @@ class Solution:
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
             return {"orbit": self._orbit_steps()}
+        if kinds <= {"event", "after"}:
+            return {f"by {route}": list(r.steps) for route, r in self.event_results.items()}
         result = {route: list(d.steps) for route, d in self.derivations.items()}
         if "small_oscillation" in kinds:
             for route in result:
@@ -262,8 +284,10 @@ class Solution:
         """Every independent check that applies: routes, parallel axes, dimensions."""
         result = [self._dimension_check()]
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
-        if kinds - {"inertia", "path", "orbit"}:
+        if kinds - {"inertia", "path", "orbit", "event", "after"}:
             result.append(self._routes_check())
+        if kinds & {"event", "after"}:
+            result.append(self._event_check())
         if "orbit" in kinds:
             result.append(self._orbit_check())
         if any(a.quantity.detail in ("acceleration.radial", "acceleration.tangential")
@@ -307,6 +331,18 @@ class Solution:
             methods.add(method)
         method = "symbolic" if methods == {"symbolic"} else "symbolic and numeric"
         return Check("lagrange_vs_newton_euler", True, method, f"{len(pairs)} quantities agree")
+
+    def _event_check(self) -> Check:
+        """Conservation laws and per-body impulses give the same state after the event."""
+        conservation, impulses = self.event_results["conservation"], self.event_results["impulses"]
+        compared = 0
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind in ("event", "after"):
+                a, b = self._event(ask.quantity, conservation), self._event(ask.quantity, impulses)
+                if agree(a, b) is None:
+                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {a} by conservation, {b} by impulses")
+                compared += 1
+        return Check("conservation_vs_impulses", True, "symbolic", f"{compared} quantities agree")
 
     def _orbit_check(self) -> Check:
         """Lagrange's and Newton's radial equations agree; for an ellipse, the energy is the same

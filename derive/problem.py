@@ -22,8 +22,8 @@ import yaml
 
 from derive import expr, library, units
 from derive.errors import InputError
-from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, Orbit, Path, Pin, Quantity,
-                          Scene, WoundString, parse_quantity)
+from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Motion, Orbit,
+                          Path, Pin, Quantity, Scene, Stick, WoundString, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -181,6 +181,8 @@ class _Reader:
     def dimensioned(self, value, field: str, unit: str, what: str, allowed=None) -> sp.Expr:
         """An expression of declared (or `allowed`) symbols that must have the dimension of `unit`."""
         result = self.expression(value, field, allowed)
+        if result == 0:  # zero has every dimension
+            return result
         try:
             found = units.expression_dimension(result, self.symbol_units)
         except units.UnitError as error:
@@ -248,7 +250,8 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
     field = f"scene.bodies.{name}"
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "inertia", "inertia_about", "joint", "on", "contact", "path", *all_sizes))
+                          optional=("mass", "inertia", "inertia_about", "joint", "on", "contact", "path", *MOTION_KEYS,
+                                    *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
@@ -291,6 +294,70 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
         distance = pin.offset[0] ** 2 + pin.offset[1] ** 2
         body = Body(name, shape, mass, sizes, given - mass * distance)
     return body, pin
+
+
+MOTION_KEYS = ("at", "velocity", "spin", "hits")
+
+
+def _vector(reader: _Reader, value, field: str, unit: str, what: str) -> tuple[sp.Expr, sp.Expr]:
+    if not isinstance(value, list) or len(value) != 2:
+        raise reader.fail(field, "expected [x, y]")
+    return tuple(reader.dimensioned(v, field, unit, what) for v in value)
+
+
+def _motion(reader: _Reader, name: str, spec: dict, bodies: dict[str, Body]) -> Motion | None:
+    """The state of a body just before an event: at, velocity, spin — or `hits`, which places a
+    projectile where its line of motion first meets the rim of a round body."""
+    field = f"scene.bodies.{name}"
+    if not any(k in spec for k in MOTION_KEYS):
+        return None
+    velocity = _vector(reader, spec["velocity"], f"{field}.velocity", "m/s", "a velocity") if "velocity" in spec \
+        else (sp.Integer(0), sp.Integer(0))
+    spin = reader.dimensioned(spec["spin"], f"{field}.spin", "rad/s", "a spin") if "spin" in spec else sp.Integer(0)
+    position = _vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec \
+        else (sp.Integer(0), sp.Integer(0))
+    if "hits" in spec:
+        if "at" in spec:
+            raise reader.fail(f"{field}.hits", "give at or hits, not both")
+        hits = reader.mapping(spec["hits"], f"{field}.hits", required=("body",), optional=("impact_parameter",))
+        target = bodies.get(hits["body"])
+        if target is None or "radius" not in target.sizes:
+            raise reader.fail(f"{field}.hits.body", "expected a round body of the scene")
+        radius = target.sizes["radius"]
+        b = reader.dimensioned(hits.get("impact_parameter", 0), f"{field}.hits.impact_parameter", "m",
+                               "an impact parameter")
+        speed = sp.sqrt(velocity[0] ** 2 + velocity[1] ** 2)
+        if speed == 0:
+            raise reader.fail(f"{field}.velocity", "a projectile needs a velocity")
+        along = sp.Matrix(velocity) / speed
+        left = sp.Matrix([-along[1], along[0]])
+        # The first point of the circle on the line at distance b (to the left of the motion).
+        point = -sp.sqrt(radius**2 - b**2) * along + b * left
+        position = (sp.simplify(point[0]), sp.simplify(point[1]))
+    return Motion(position, velocity, spin)
+
+
+def _events(reader: _Reader, raw, bodies: dict[str, Body]) -> tuple:
+    if not isinstance(raw, list):
+        raise reader.fail("scene.events", "expected a list")
+    result = []
+    for i, spec in enumerate(raw):
+        field = f"scene.events[{i}]"
+        spec = reader.mapping(spec, field, optional=("stick", "internal_turn"))
+        if len(spec) != 1:
+            raise reader.fail(field, "expected one event kind (stick, internal_turn)")
+        (kind, detail), = spec.items()
+        keys = ("body", "to") if kind == "stick" else ("body", "relative_to", "angle")
+        detail = reader.mapping(detail, f"{field}.{kind}", required=keys)
+        for key in keys[:2]:
+            if detail[key] not in bodies:
+                raise reader.fail(f"{field}.{kind}.{key}", f"no body {detail[key]!r} (bodies: {', '.join(bodies)})")
+        if kind == "stick":
+            result.append(Stick(f"event{i}", detail["body"], detail["to"]))
+        else:
+            angle = reader.dimensioned(detail["angle"], f"{field}.{kind}.angle", "rad", "an angle")
+            result.append(InternalTurn(f"event{i}", detail["body"], detail["relative_to"], angle))
+    return tuple(result)
 
 
 PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
@@ -399,7 +466,7 @@ def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> W
 
 
 def _scene(reader: _Reader, raw) -> Scene:
-    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit"))
+    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit", "events"))
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
@@ -447,7 +514,11 @@ def _scene(reader: _Reader, raw) -> Scene:
             reader.dimensioned(pull["angle"], f"{field}.pull.angle", "rad", "an angle"),
             reader.positive(pull["hub_radius"], f"{field}.pull.hub_radius", "m", "a hub radius"),
         ))
-    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit)
+    motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
+    events = _events(reader, raw.get("events") or [], bodies)
+    if motions and not events:
+        raise reader.fail("scene.events", "velocities and spins describe the state before an event: add the event")
+    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events)
 
 
 def _orbit(reader: _Reader, raw) -> Orbit:

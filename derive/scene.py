@@ -176,12 +176,49 @@ class Orbit:
     eccentricity: sp.Expr | None = None
 
 
+#: What an event can be asked: the change of kinetic energy, the velocity of the center of mass
+#: of the bodies after it, and (an internal turn) how far the other body turned.
+EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn")
+AFTER_QUANTITIES = ("velocity.x", "velocity.y", "angular_velocity")
+
 #: What an orbit can be asked, and what each needs of the orbit's description.
 ORBIT_QUANTITIES = {
     "circular_radius": "angular_momentum", "effective_potential_minimum": "angular_momentum",
     "energy": "semi_major_axis", "angular_momentum": "semi_major_axis", "period": "semi_major_axis",
     "periapsis": "semi_major_axis", "apoapsis": "semi_major_axis",
 }
+
+
+@dataclass(frozen=True)
+class Motion:
+    """A body's state just before an event: center position, velocity and spin (rad/s, +z)."""
+
+    position: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    velocity: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    spin: sp.Expr = sp.Integer(0)
+
+
+@dataclass(frozen=True)
+class Stick:
+    """A point mass `body` sticks to `to` where it is (a perfectly inelastic event)."""
+
+    name: str
+    body: str
+    to: str
+
+
+@dataclass(frozen=True)
+class InternalTurn:
+    """`body` turns through `angle` relative to `relative_to` on a shared axle, driven by the
+    torques between them only (Elroy's beanie)."""
+
+    name: str
+    body: str
+    relative_to: str
+    angle: sp.Expr
+
+
+Event = Stick | InternalTurn
 
 
 @dataclass(frozen=True)
@@ -211,6 +248,8 @@ class Scene:
     surfaces: dict[str, Incline] = field(default_factory=dict)
     pulls: tuple[HubPull, ...] = ()
     orbit: Orbit | None = None
+    motions: dict[str, Motion] = field(default_factory=dict)
+    events: tuple[Event, ...] = ()
 
     def constraint(self, name: str) -> Constraint:
         for c in self.constraints:
@@ -251,7 +290,8 @@ class Quantity:
     kinds: "inertia" (target a body, detail an axis), "acceleration" (a body; x or y),
     "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
     "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
-    prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES),
+    prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "event"
+    (one of EVENT_QUANTITIES), "after" (a body's state after the event; AFTER_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate).
     """
 
@@ -278,6 +318,16 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     Quantity(kind='acceleration', target='ball', detail='y')
     """
     head, _, rest = path.partition(".")
+    if head == "event":
+        if not scene.events:
+            raise ValueError("the scene has no event")
+        if rest not in EVENT_QUANTITIES:
+            raise ValueError(f"an event has {', '.join(EVENT_QUANTITIES)}; not {rest!r}")
+        return Quantity("event", None, rest)
+    if head in scene.bodies and rest.startswith("after.") and scene.events:
+        if rest[len("after."):] not in AFTER_QUANTITIES:
+            raise ValueError(f"after an event a body has {', '.join('after.' + q for q in AFTER_QUANTITIES)}")
+        return Quantity("after", head, rest[len("after."):])
     if head == "orbit":
         if scene.orbit is None:
             raise ValueError("the scene has no orbit")

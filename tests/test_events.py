@@ -1,0 +1,92 @@
+"""Events: sticky impacts, the beetle, Elroy's beanie — against the notes and simulations."""
+import math
+
+import mpmath
+import sympy as sp
+from scipy.integrate import solve_ivp
+
+from derive import problem, report, units
+
+mpmath.mp.dps = 50
+
+
+def solve(problem_id, **values):
+    result = report.solve(problem.load(problem_id), {k: str(v) for k, v in values.items()}, 15)
+    return {n: mpmath.mpf(a["value"]) for n, a in result["answers"].items()}, result
+
+
+def close(value, reference, digits=15):
+    return abs(value - reference) <= abs(reference) * mpmath.mpf(10) ** (1 - digits) / 2
+
+
+def test_beetle_matches_the_notes_and_loses_energy():
+    answers, result = solve("beetle_lazy_susan", m="0.004", v="0.2", R="0.25", I="0.005", omega0="0.6")
+    m, v, R, I, w0 = (mpmath.mpf(x) for x in ("0.004", "0.2", "0.25", "0.005", "0.6"))
+    omega = (m * v * R - I * w0) / (m * R**2 + I)
+    assert close(answers["omega"], omega)
+    before = I * w0**2 / 2 + m * v**2 / 2
+    after = I * omega**2 / 2 + m * (R * omega) ** 2 / 2
+    assert close(answers["dE"], after - before, 12)
+    assert answers["dE"] < 0
+    assert result["checks"]["conservation_vs_impulses"]["passed"]
+
+
+def test_beetle_running_against_the_spin_keeps_its_digits():
+    """v = R omega0 (1 + 1e-12): the final rate is a near-cancellation; the exact form keeps 15 digits."""
+    answers, _ = solve("beetle_lazy_susan", m="0.004", v="0.150000000000000000000000000000015", R="0.25",
+                       I="0.001", omega0="0.6")
+    m, v, R, I, w0 = (mpmath.mpf(x) for x in ("0.004", "0.150000000000000000000000000000015", "0.25", "0.001", "0.6"))
+    assert close(answers["omega"], (m * v * R - I * w0) / (m * R**2 + I))
+
+
+def test_pivoted_sphere_matches_the_notes():
+    answers, _ = solve("sticky_impact_pivoted", m="0.05", M="2", R="0.3", b="0.1", v="8")
+    m, M, R, b, v = (mpmath.mpf(x) for x in ("0.05", "2", "0.3", "0.1", "8"))
+    assert close(answers["omega"], m * b * v / (mpmath.mpf(2) / 5 * M * R**2 + m * R**2))
+
+
+def test_notes_6_4_1_angular_momentum_has_one_factor_of_v():
+    """The notes write L = m v b y-hat x v x-hat: that has the dimension of kg m^3/s^2, not of angular
+    momentum. The derived L about the pivot is -m b v (z)."""
+    m, v, b = sp.symbols("m v b", positive=True)
+    dims = {m: "kg", v: "m/s", b: "m"}
+    assert units.expression_dimension(m * v * b * v, dims) != units.dimension(units.parse_unit("kg*m^2/s"))
+    pivoted = problem.load("sticky_impact_pivoted")
+    from derive.mechanics.events import _Event
+    event = _Event(pivoted.scene)
+    before = event.angular_momentum(event.states_before(), event.pivot)
+    mass, speed, impact = (pivoted.parameters[n].symbol for n in ("m", "v", "b"))
+    assert sp.simplify(before + mass * impact * speed) == 0
+    assert pivoted.corrections[0]["where"].startswith("§6.4.1")
+
+
+def test_free_sphere_matches_the_notes_parallel_axis_route():
+    answers, _ = solve("sticky_impact_free", m="0.2", M="3", R="0.25", v="6")
+    m, M, R, v = (mpmath.mpf(x) for x in ("0.2", "3", "0.25", "6"))
+    d = m * R / (m + M)
+    inertia = mpmath.mpf(2) / 5 * M * R**2 + M * d**2 + m * (R - d) ** 2
+    assert close(answers["V_cm"], m * v / (M + m))
+    assert close(answers["omega"], m * (R - d) * v / inertia)
+    kinetic_after = (M + m) * (m * v / (M + m)) ** 2 / 2 + inertia * (m * (R - d) * v / inertia) ** 2 / 2
+    assert close(answers["dE"], kinetic_after - m * v**2 / 2, 12)
+
+
+def test_notes_6_5_elroy_numerator_is_I2():
+    """Simulate the two ovals with a motor between them (equal and opposite torques driving the
+    relative angle to 2 pi); the outer oval ends up turned by -2 pi I2/(I1+I2), not -2 pi I1/(I1+I2)."""
+    I1, I2 = 0.05, 0.02
+    answers, _ = solve("elroys_beanie", I1=I1, I2=I2)
+    k, c = 4.0, 0.6  # the motor: a stiff, damped servo on the relative angle toward 2 pi t / 10
+
+    def rhs(t, y):
+        theta1, theta2, w1, w2 = y
+        target = 2 * math.pi * min(t / 10, 1)
+        torque = k * (target - (theta2 - theta1)) - c * (w2 - w1)
+        return [w1, w2, -torque / I1, torque / I2]
+
+    run = solve_ivp(rhs, (0, 40), [0, 0, 0, 0], rtol=1e-11, atol=1e-13)
+    theta1, theta2 = run.y[0, -1], run.y[1, -1]
+    assert math.isclose(theta2 - theta1, 2 * math.pi, rel_tol=1e-6)
+    assert math.isclose(theta1, -2 * math.pi * I2 / (I1 + I2), rel_tol=1e-6)
+    assert math.isclose(float(answers["dtheta"]), theta1, rel_tol=1e-6)
+    assert not math.isclose(theta1, -2 * math.pi * I1 / (I1 + I2), rel_tol=1e-2)
