@@ -85,7 +85,8 @@ def as_text(result: dict) -> str:
     lines.append("Answers:")
     width = max(len(n) for n in result["answers"])
     for name, a in result["answers"].items():
-        value = f" = {a['value']} {a['unit']}" if a["value"] is not None else f"  [{a['unit']}]"
+        unit = "" if a["unit"] in ("1", "") else f" {a['unit']}"
+        value = f" = {a['value']}{unit}" if a["value"] is not None else f"  [{a['unit']}]"
         lines.append(f"  {name:<{width}} = {a['expr']}{value}")
         lines.append(f"  {'':<{width}}   ({a['meaning']})")
     lines += ["", "Checks:"]

@@ -49,3 +49,26 @@ def test_spool_at_the_critical_angle_does_not_accelerate():
 def test_tightrope_walker_growth_rate():
     answers, _ = solve("tightrope_walker", m=70, h=1.1, I=300)
     assert close(answers["a"], mpmath.sqrt(70 * mpmath.mpf("1.1") * mpmath.mpf("9.81") / 300))
+
+
+def test_incline_race_matches_equation_12_of_the_notes():
+    """gH = (1/2) V^2 (1 + I/(M R^2)): the speed depends only on the shape's I/(M R^2)."""
+    answers, result = solve("incline_race", H=2)
+    gH = 2 * mpmath.mpf("9.81")
+    for name, ratio in (("v_slide", 0), ("v_sphere", mpmath.mpf(2) / 5), ("v_cylinder", mpmath.mpf(1) / 2),
+                        ("v_hoop", 1)):
+        assert close(answers[name], mpmath.sqrt(2 * gH / (1 + ratio)))
+    assert answers["v_slide"] > answers["v_sphere"] > answers["v_cylinder"] > answers["v_hoop"]
+    assert result["checks"]["energy_vs_dynamics"]["passed"]
+
+
+def test_rolling_sphere_on_an_incline():
+    answers, _ = solve("rolling_incline", M=1.5, R=0.1, H=1.2, theta=0.6)
+    g, H, theta, M = mpmath.mpf("9.81"), mpmath.mpf("1.2"), mpmath.mpf("0.6"), mpmath.mpf("1.5")
+    a = g * mpmath.sin(theta) / (1 + mpmath.mpf(2) / 5)
+    assert close(answers["a"], a)
+    assert close(answers["v"], mpmath.sqrt(2 * a * H / mpmath.sin(theta)))
+    assert close(answers["t"], mpmath.sqrt(2 * (H / mpmath.sin(theta)) / a))
+    friction = M * g * mpmath.sin(theta) - M * a          # along the slope: M a = M g sin - f
+    assert close(answers["f"], friction)
+    assert close(answers["mu_min"], friction / (M * g * mpmath.cos(theta)))
