@@ -112,23 +112,67 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> 
 
 @main.command()
 @click.argument("shape")
-@click.option("--axis", default=None, help="Axis name (rod: center, end; ring, disk: symmetry, diameter).")
-@click.option("--set", "assignments", multiple=True, metavar="NAME=VALUE", help="Values for M, L or R (SI).")
-@click.option("--format", "fmt", type=FORMATS, default="text", show_default=True)
-@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True)
+@click.option("--axis", default=None, metavar="NAME|X,Y,Z",
+              help="An axis of the shape (see the table) or a direction such as 1,0,1. [default: the axis "
+                   "the shape turns about in a planar scene]")
+@click.option("--about", default=None, metavar="X,Y,Z",
+              help="A point the axis passes through (a named axis is moved parallel to itself), and the "
+                   "point --tensor is taken about; e.g. 0,0,h/2.")
+@click.option("--density", default=None, metavar="EXPR",
+              help="A density in the shape's coordinates instead of a uniform mass M, e.g. \"rho0*(r/R)^2\" "
+                   "(SI: kg/m, kg/m^2 or kg/m^3 for curves, surfaces, solids; must not be negative).")
+@click.option("--set", "assignments", multiple=True, metavar="NAME=VALUE",
+              help="A value: M in kg, sizes and --about names in m (or with a unit: \"R=5 cm\"), other "
+                   "names as SI numbers. Repeatable; each must be positive.")
+@click.option("--tensor", "show_tensor", is_flag=True, help="Also print the inertia tensor.")
+@click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
+@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True,
+              help="Significant digits of the value.")
 @reports_errors
-def inertia(shape: str, axis: str | None, assignments: tuple[str, ...], fmt: str, digits: int) -> None:
-    """Moment of inertia of a uniform SHAPE by integration.
+def inertia(shape: str, axis: str | None, about: str | None, density: str | None, assignments: tuple[str, ...],
+            show_tensor: bool, fmt: str, digits: int) -> None:
+    """Moment of inertia of a SHAPE by integrating rho d^2 over it.
 
-    Prints the integral set up, the mass from the same density, the result and the
-    result as a multiple of M times the size squared.
+    Prints the integral set up, the total mass from the same density, I exactly and
+    as a multiple of M size^2, the inertia tensor with --tensor (about the center of
+    mass, or about --about), and with --set a value of I. Expressions may use M, the
+    shape's size symbols, pi, sqrt, sin, ...; any other name is a parameter (positive)
+    that --set can give a value.
 
     \b
-    Example:  derive inertia disk --axis symmetry --set M=2 --set R=0.5
+    SHAPE                  axes                sizes (name symbol)               coordinates
+    point                  center              -                                 -
+    rod                    center, end         length L                          x
+    ring                   symmetry, diameter  radius R                          phi
+    disk                   symmetry, diameter  radius R                          r, phi
+    annulus                symmetry, diameter  inner_radius R1, outer_radius R2  r, phi
+    cylinder               symmetry, diameter  radius R, height h                z, r, phi
+    cylindrical_shell      symmetry, diameter  radius R, height h                z, phi
+    sphere                 symmetry            radius R                          r, theta, phi
+    spherical_shell        symmetry            radius R                          theta, phi
+    thick_spherical_shell  symmetry            inner_radius R1, outer_radius R2  r, theta, phi
+    plate                  symmetry, a, b      side_a a, side_b b                x, y
+    box                    symmetry, a, b, c   side_a a, side_b b, side_c c      x, y, z
+    cone                   symmetry, diameter  radius R, height h                z, r, phi
+
+    \b
+    Every shape lies centered on the origin, its center of mass (the cone's is h/4 above
+    its base): a rod along x, flat shapes in the xy plane, symmetry axes along z, a
+    diameter along x, a plate's or box's axis a, b, c along its sides. A density may
+    use the shape's coordinates and Cartesian x, y, z.
+
+    \b
+    Examples:
+      derive inertia rod --axis end --set M=2 --set L=3
+      derive inertia cone --axis diameter --tensor --format json
+      derive inertia cylinder --axis diameter --about 0,0,h/2
+      derive inertia box --axis 1,1,1 --set M=12 --set a=1 --set b=2 --set c=3
+      derive inertia disk --density "rho0*(r/R)^k" --set rho0=3 --set k=2 --set R=0.5
+      derive inertia point --axis 0,0,1 --about d,0,0
     """
     from derive import inertia_report
 
-    result = inertia_report.report(shape, axis, parse_assignments(assignments), digits)
+    result = inertia_report.report(shape, axis, parse_assignments(assignments), digits, about, density, show_tensor)
     click.echo(inertia_report.FORMATTERS[fmt](result))
 
 

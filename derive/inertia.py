@@ -88,11 +88,13 @@ def _limits(coordinates) -> list[tuple]:
 def _cone() -> Shape:
     """A solid cone along z, base radius R, height h, moved so its center of mass is the origin."""
     base_at_zero = ((z, 0, h), (r, 0, R * (1 - z / h)), AROUND)
-    z_cm = sp.integrate(z * r, *_limits(base_at_zero)) / sp.integrate(r, *_limits(base_at_zero))
-    def moved(limit):  # z becomes z + z_cm in the limits of the inner coordinates
+    z_cm = sp.integrate(z * r, *_limits(base_at_zero)) / sp.integrate(r, *_limits(base_at_zero))  # h/4
+
+    def moved(limit):  # the old z is the new z + z_cm
         return sp.simplify(sp.sympify(limit).subs(z, z + z_cm))
 
-    coordinates = tuple((v, lo - z_cm, hi - z_cm) if v == z else (v, moved(lo), moved(hi)) for v, lo, hi in base_at_zero)
+    coordinates = tuple((v, lo - z_cm, hi - z_cm) if v == z else (v, moved(lo), moved(hi))
+                        for v, lo, hi in base_at_zero)
     return Shape("cone", coordinates, r, (r * sp.cos(phi), r * sp.sin(phi), z), {"radius": R, "height": h}, R, ROUND)
 
 
@@ -198,7 +200,7 @@ def _squared_distance(position, axis) -> sp.Expr:
     point, direction = (sp.Matrix(v) for v in axis)
     offset = sp.Matrix(position) - point
     along = offset.dot(direction)
-    return sp.expand(offset.dot(offset) - along**2)
+    return sp.factor(sp.trigsimp(sp.expand(offset.dot(offset) - along**2)))
 
 
 def _integral(integrand: sp.Expr, shape: Shape) -> sp.Expr:
@@ -207,7 +209,9 @@ def _integral(integrand: sp.Expr, shape: Shape) -> sp.Expr:
 
 
 def _integrate(integrand: sp.Expr, shape: Shape) -> sp.Expr:
-    value = _integral(integrand, shape).doit()
+    """The integral over the shape, simplified; refused when sympy finds no closed form."""
+    # (r/R)**k as R**-k * r**k where valid: sympy integrates a power of one symbol much faster
+    value = _integral(sp.powsimp(sp.expand_power_base(integrand)), shape).doit()
     if value.has(sp.Integral):
         raise InputError(f"sympy finds no closed form for the integral of {integrand} over the {shape.name}")
     return sp.simplify(value)
@@ -243,9 +247,10 @@ def _distribution(shape_name: str, density: sp.Expr | None) -> tuple[sp.Expr, sp
     if density is None:
         return M / _integrate(shape.element, shape), M
     allowed = shape.density_symbols
-    stray = sorted(str(s) for s in density.free_symbols if s in COORDINATE_SYMBOLS.values() and s not in allowed.values())
+    stray = sorted(s.name for s in density.free_symbols if s.name in COORDINATE_SYMBOLS and allowed.get(s.name) != s)
     if stray:
-        raise InputError(f"density: a {shape_name} has coordinates {', '.join(allowed)}, not {', '.join(stray)}")
+        raise InputError(f"density: {', '.join(stray)} is not one of the {shape_name}'s coordinates "
+                         f"{', '.join(allowed)} (derive.inertia.COORDINATE_SYMBOLS)")
     rho = density.xreplace(dict(zip((x, y, z), shape.position)))
     _check_density(shape, rho)
     mass = _integrate(rho * shape.element, shape)
@@ -290,7 +295,7 @@ def _moment(shape_name: str, axis, density: sp.Expr | None) -> InertiaResult:
         mass=mass,
         I=inertia,
         ratio=sp.simplify(inertia / (mass * shape.scale**2)),
-        distance_from_center=sp.sqrt(sp.factor(_squared_distance(center_of_mass(shape_name, density), line))),
+        distance_from_center=sp.sqrt(_squared_distance(center_of_mass(shape_name, density), line)),
     )
 
 
