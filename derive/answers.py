@@ -11,6 +11,7 @@ L**2*m/3
 """
 from __future__ import annotations
 
+import functools
 import random
 from dataclasses import dataclass
 from functools import cached_property
@@ -91,13 +92,16 @@ class Solution:
         """Quantities of a body on a surface, from one route's accelerations and forces."""
         contact = self.scene.contact_of(body)
         surface = self.scene.surfaces[contact.surface]
-        forces = {k: derivation.solution[v] for k, v in joints.forces(contact).items()}
+        forces = joints.forces(contact)
         if detail == "normal_force":
-            return forces["normal"]
+            return derivation.solution[forces["normal"]]
         if detail == "friction":
-            return forces["friction"]
+            return derivation.solution[forces["friction"]]
         if detail == "min_friction_coefficient":
-            return self._magnitude(tidy(forces["friction"] / forces["normal"]), f"{body}.min_friction_coefficient")
+            ratio = tidy(derivation.solution[forces["friction"]] / derivation.solution[forces["normal"]])
+            return self._magnitude(ratio, f"{body}.min_friction_coefficient")
+        if detail == "min_release_height":
+            return self._release_height(body, derivation.route)[0]
         acceleration = sp.Matrix([derivation.solution[self.coordinates.of(body, k).a] for k in ("x", "y")])
         along = tidy(surface.down.dot(acceleration))
         if detail == "acceleration.down_incline":
@@ -109,6 +113,41 @@ class Solution:
         if detail == "speed_at_bottom":
             return root(2 * along * distance)
         return root(2 * distance / along)
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few bodies
+    def _release_height(self, body: str, route: str) -> tuple[sp.Expr, tuple[Step, ...]]:
+        """Lowest release height (of the center, above its lowest point) that keeps the body on a
+        loop: the normal force at the top (this route's dynamics) vanishes at the speed energy
+        conservation gives after the drop."""
+        derivation = self.derivations[route]
+        contact = self.scene.contact_of(body)
+        loop = self.scene.surfaces[contact.surface]
+        radius = self.scene.bodies[body].sizes.get("radius", sp.Integer(0))
+        top = loop.top(radius)
+        speed, drop = sp.symbols("s D", positive=True)
+        coords = self.coordinates
+        state = {coords.of(body, "x").q: top[0], coords.of(body, "y").q: top[1]}
+        state.update({c.q: 0 for c in coords.all if c.q not in state})
+        velocity = speed * loop.tangent_at(top, radius)
+        state.update({coords.of(body, "x").u: velocity[0], coords.of(body, "y").u: velocity[1]})
+        if self.scene.bodies[body].rotates:  # rolling: the contact point is at rest
+            rate = joints.velocity_conditions(contact, coords)[-1].xreplace(state)
+            state[coords.of(body, "theta").u] = sp.solve(rate, coords.of(body, "theta").u)[0]
+        normal = sp.simplify(derivation.solution.raw[joints.forces(contact)["normal"]].xreplace(state))
+        critical = [s for s in sp.solve(normal, speed) if s.is_positive is not False]
+        if len(critical) != 1:
+            raise self.problem.error("ask", f"the normal force at the top of the loop vanishes at {critical}")
+        balance = speed_after_drop(self.scene, body, drop)
+        (needed,) = sp.solve(sp.Eq(balance.speed**2, critical[0] ** 2), drop)
+        height = tidy(needed + top[1])
+        steps = (
+            Step(f"Normal force on the {body} at the top of the loop, at speed s", (sp.Eq(sp.Symbol("N"), normal),)),
+            Step("It stays on the track while N >= 0: the least speed at the top", (sp.Eq(speed, critical[0]),)),
+            *balance.steps,
+            Step("The least drop to the top, and the release height above the lowest point",
+                 (sp.Eq(drop, tidy(needed)), sp.Eq(sp.Symbol("h"), height))),
+        )
+        return height, steps
 
     @cached_property
     def energy_balances(self) -> dict[str, EnergyBalance]:
@@ -197,6 +236,8 @@ class Solution:
             result = self._event(ask.quantity, self.event_results["conservation"])
         else:
             result = self._route_expression(ask, "lagrange")
+        for size in ask.small:
+            result = tidy(sp.limit(result, size, 0, "+"))
         if ask.zero_for:
             result = self._zero_for(result, ask)
         if ask.magnitude:
@@ -225,13 +266,42 @@ class Solution:
             return {"orbit": self._orbit_steps()}
         if kinds <= {"event", "after"}:
             return {f"by {route}": list(r.steps) for route, r in self.event_results.items()}
-        result = {route: list(d.steps) for route, d in self.derivations.items()}
+        needed = self._needed_unknowns()
+        result = {route: [*d.steps, d.solving_step(u for u in d.unknowns if u in needed)]
+                  for route, d in self.derivations.items()}
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps
         for body, balance in self.energy_balances.items():
             result[f"energy of the {body}"] = list(balance.steps)
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind == "contact" and ask.quantity.detail == "min_release_height":
+                result[f"staying on the loop: the {ask.quantity.target}"] = list(
+                    self._release_height(ask.quantity.target, "lagrange")[1])
         return result
+
+    def _needed_unknowns(self) -> set[sp.Symbol]:
+        """The accelerations and forces the asked quantities are made of."""
+        needed = set()
+        for ask in self.problem.asks.values():
+            q = ask.quantity
+            if q.kind == "acceleration":
+                needed.add(self.coordinates.of(q.target, q.detail).a)
+            elif q.kind == "angular_acceleration":
+                needed.add(self.coordinates.of(q.target, "theta").a)
+            elif q.kind == "force":
+                needed.add(joints.forces(self.scene.constraint(q.target))[q.detail])
+            elif q.kind == "contact":
+                forces = joints.forces(self.scene.contact_of(q.target))
+                if q.detail in ("normal_force", "min_friction_coefficient"):
+                    needed.add(forces["normal"])
+                if q.detail in ("friction", "min_friction_coefficient"):
+                    needed.add(forces["friction"])
+                if q.detail in ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom"):
+                    needed |= {self.coordinates.of(q.target, k).a for k in ("x", "y")}
+            elif q.kind == "small_oscillation":
+                needed.add(self.oscillations["lagrange"].coordinate.a)
+        return needed
 
     def _orbit_steps(self) -> list[Step]:
         orbit = self.scene.orbit
@@ -315,22 +385,46 @@ class Solution:
         return Check("dimensions", True, "dimensional analysis", ", ".join(f"{k} [{v}]" for k, v in found.items()))
 
     def _routes_check(self) -> Check:
-        """Lagrange's method and Newton–Euler give the same accelerations, forces and answers."""
-        pairs = {}
+        """Lagrange's method and Newton–Euler give the same answers (symbolically) and the same
+        value of every acceleration and constraint force, at random states (numerically: simplifying
+        them all would cost far more than the question)."""
         lag, ne = self.derivations["lagrange"], self.derivations["newton_euler"]
-        for unknown in lag.unknowns:
-            pairs[str(unknown)] = (lag.solution[unknown], ne.solution[unknown])
-        for name, ask in self.problem.asks.items():
-            if ask.quantity.kind != "inertia":
-                pairs[name] = tuple(self._route_expression(ask, r) for r in ROUTES)
         methods = set()
-        for label, (a, b) in pairs.items():
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "inertia":
+                continue
+            a, b = (self._route_expression(ask, r) for r in ROUTES)
             method = agree(a, b)
             if method is None:
-                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {label}: {a} vs {b}")
+                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {name}: {a} vs {b}")
             methods.add(method)
-        method = "symbolic" if methods == {"symbolic"} else "symbolic and numeric"
-        return Check("lagrange_vs_newton_euler", True, method, f"{len(pairs)} quantities agree")
+        for state in self._states_on_constraints():
+            for unknown in lag.unknowns:
+                if agree(lag.solution.raw[unknown].xreplace(state), ne.solution.raw[unknown].xreplace(state),
+                         symbolic=False) is None:
+                    raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {unknown}")
+        asked = "symbolic" if methods <= {"symbolic"} else "symbolic or numeric"
+        return Check("lagrange_vs_newton_euler", True, f"answers {asked}, all unknowns numeric",
+                     f"answers and {len(lag.unknowns)} accelerations and forces agree")
+
+    def _states_on_constraints(self, count: int = 2) -> list[dict[sp.Symbol, sp.Expr]]:
+        """Motions the constraints allow: the reference configuration (where every gap vanishes)
+        with random velocities solving dg/dt = 0. Off the constraints the two routes' descriptions
+        of a curved contact differ, so only states on them are compared."""
+        coords = self.coordinates
+        rates = [coords.ddt(g) for c in self.scene.constraints for g in joints.gaps(c, coords)]
+        at_reference = {c.q: 0 for c in coords.all}
+        rng = random.Random(2)
+        states = []
+        for _ in range(count):
+            matrix, rhs = sp.linear_eq_to_matrix([r.xreplace(at_reference) for r in rates], [c.u for c in coords.all])
+            reduced, pivots = matrix.rref()
+            free = [c.u for i, c in enumerate(coords.all) if i not in pivots]
+            chosen = {u: sp.Rational(rng.randint(-90, 90), 37) for u in free}
+            solved = sp.solve([r.xreplace(at_reference).xreplace(chosen) for r in rates],
+                              [c.u for c in coords.all if c.u not in chosen], dict=True)
+            states.append({**at_reference, **chosen, **(solved[0] if solved else {})})
+        return states
 
     def _event_check(self) -> Check:
         """Conservation laws and per-body impulses give the same state after the event."""
@@ -422,10 +516,10 @@ def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[
     return points
 
 
-def agree(a: sp.Expr, b: sp.Expr, trials: int = 4) -> str | None:
+def agree(a: sp.Expr, b: sp.Expr, trials: int = 4, symbolic: bool = True) -> str | None:
     """'symbolic' when a - b simplifies to zero, 'numeric' when it vanishes at random points
-    (to 30 digits), None when they differ."""
-    difference = sp.simplify(a - b)
+    (to 30 digits), None when they differ. `symbolic=False` skips the simplification."""
+    difference = sp.simplify(a - b) if symbolic else a - b
     if difference == 0:
         return "symbolic"
     symbols = sorted(difference.free_symbols, key=str)

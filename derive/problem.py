@@ -22,8 +22,8 @@ import yaml
 
 from derive import expr, library, units
 from derive.errors import InputError
-from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Motion, Orbit,
-                          Path, Pin, Quantity, Scene, Stick, WoundString, parse_quantity)
+from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
+                          Orbit, Path, Pin, Quantity, Scene, Stick, WoundString, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -54,6 +54,7 @@ class Ask:
     sig_figs: int | None
     magnitude: bool = False
     zero_for: str | None = None
+    small: tuple[sp.Symbol, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -404,14 +405,20 @@ def _contact(reader: _Reader, body: Body, spec: dict, surfaces: dict[str, Inclin
     return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling")
 
 
-def _surfaces(reader: _Reader, raw) -> dict[str, Incline]:
+def _surfaces(reader: _Reader, raw) -> dict[str, Incline | Loop]:
     raw = reader.mapping(raw or {}, "scene.surfaces", free=True)
     result = {}
     for name, spec in raw.items():
         field = f"scene.surfaces.{name}"
         if not isinstance(name, str) or not name.isidentifier():
             raise reader.fail(field, "a surface name is letters, digits and _")
-        spec = reader.mapping(spec, field, required=("incline",))
+        spec = reader.mapping(spec, field, optional=("incline", "loop"))
+        if len(spec) != 1:
+            raise reader.fail(field, "expected one surface kind (incline, loop)")
+        if "loop" in spec:
+            loop = reader.mapping(spec["loop"], f"{field}.loop", required=("radius",))
+            result[name] = Loop(name, reader.positive(loop["radius"], f"{field}.loop.radius", "m", "a radius"))
+            continue
         incline = reader.mapping(spec["incline"] or {}, f"{field}.incline", optional=("angle", "height"))
         if "angle" in incline:
             angle = reader.dimensioned(incline["angle"], f"{field}.incline.angle", "rad", "an angle")
@@ -552,7 +559,7 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
-                              optional=("axis", "sig_figs", "magnitude", "zero_for"))
+                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small"))
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -569,8 +576,23 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
         result[name] = Ask(
             name, reader.text(spec["meaning"], f"{field}.meaning"), path, quantity,
             reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False), zero_for,
+            _small(reader, spec.get("small"), f"{field}.small", scene),
         )
     return result
+
+
+def _small(reader: _Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ...]:
+    """`small: ball.radius` (or a list): sizes taken to zero in the answer (the notes' r << R)."""
+    if raw is None:
+        return ()
+    result = []
+    for item in raw if isinstance(raw, list) else [raw]:
+        body, _, size = str(item).partition(".")
+        value = scene.bodies[body].sizes.get(size) if body in scene.bodies else None
+        if not isinstance(value, sp.Symbol):
+            raise reader.fail(field, f"{item!r} is not a size of a body (BODY.SIZE, e.g. ball.radius)")
+        result.append(value)
+    return tuple(result)
 
 
 def parse(text: str, path: Path) -> Problem:

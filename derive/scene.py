@@ -128,6 +128,55 @@ class Incline:
     def normal(self) -> sp.Matrix:
         return sp.Matrix([sp.sin(self.angle), sp.cos(self.angle)])
 
+    # The geometry a contact needs, for a body whose center is at `center`, radius `radius`:
+    def gap(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        """Height of the center above where it touches (zero in the reference configuration)."""
+        return self.normal.dot(center)
+
+    def normal_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        """Unit vector from the surface toward the body's center: the normal force's direction."""
+        return self.normal
+
+    def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        """Distance the center has travelled along the surface (down the slope)."""
+        return self.down.dot(center)
+
+    def tangent_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        return self.down
+
+
+@dataclass(frozen=True)
+class Loop:
+    """A vertical circular track of radius `radius`, ridden on its inside; its lowest point is
+    below the origin, where a body's center rests in the reference configuration."""
+
+    name: str
+    radius: sp.Expr
+
+    def center(self, radius: sp.Expr) -> sp.Matrix:
+        """Center of the circle the body's center moves on (radius `self.radius - radius`)."""
+        return sp.Matrix([0, self.radius - radius])
+
+    def gap(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        offset = center - self.center(radius)
+        return (self.radius - radius) - sp.sqrt(offset.dot(offset))
+
+    def normal_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        offset = self.center(radius) - center
+        return offset / sp.sqrt(offset.dot(offset))
+
+    def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        """(R - r) times the polar angle of the center about the loop's center, counter-clockwise."""
+        offset = center - self.center(radius)
+        return (self.radius - radius) * sp.atan2(offset[0], -offset[1])
+
+    def tangent_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        offset = center - self.center(radius)
+        return sp.Matrix([-offset[1], offset[0]]) / sp.sqrt(offset.dot(offset))
+
+    def top(self, radius: sp.Expr) -> sp.Matrix:
+        return self.center(radius) + sp.Matrix([0, self.radius - radius])
+
 
 @dataclass(frozen=True)
 class Contact:
@@ -245,7 +294,7 @@ class Scene:
     bodies: dict[str, Body]
     constraints: tuple[Constraint, ...] = ()
     gravity: Gravity | None = None
-    surfaces: dict[str, Incline] = field(default_factory=dict)
+    surfaces: dict[str, Incline | Loop] = field(default_factory=dict)
     pulls: tuple[HubPull, ...] = ()
     orbit: Orbit | None = None
     motions: dict[str, Motion] = field(default_factory=dict)
@@ -305,7 +354,8 @@ CONSTRAINT_FORCES = {Pin: ("reaction.x", "reaction.y"), WoundString: ("tension",
 
 #: What a body on a surface can be asked, besides what every body can.
 CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
-                      "speed_at_bottom", "time_to_bottom")
+                      "speed_at_bottom", "time_to_bottom", "min_release_height")
+INCLINE_ONLY = ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom")
 
 def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity:
     """Parse an answer path such as ``block.acceleration.y`` against a scene.
@@ -362,7 +412,12 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if contact and rest in CONTACT_QUANTITIES:
             if rest in ("friction", "min_friction_coefficient") and not contact.rolling:
                 raise ValueError(f"{head} slides without friction: it has no {rest}")
-            if rest in ("speed_at_bottom", "time_to_bottom") and scene.surfaces[contact.surface].height is None:
+            surface = scene.surfaces[contact.surface]
+            if rest in INCLINE_ONLY and not isinstance(surface, Incline):
+                raise ValueError(f"{rest} is for a body on an incline")
+            if rest == "min_release_height" and not isinstance(surface, Loop):
+                raise ValueError("min_release_height is for a body riding a loop")
+            if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
             return Quantity("contact", head, rest)
         known = "inertia, acceleration.x, acceleration.y, angular_acceleration"

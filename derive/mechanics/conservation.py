@@ -45,27 +45,8 @@ def speed_after_drop(scene: Scene, body: str, drop: sp.Expr) -> EnergyBalance:
     component = scene.component(body)
     coords = Coordinates(component)
     kinetic, potential = energies(component, coords)
-    try:
-        dependent = joints.solve_gaps(component, coords)
-    except ValueError as error:
-        raise ConservationError(str(error)) from None
-    free = [c for c in coords.all if c.q not in dependent]
-    if len(free) != 1:
-        raise ConservationError(f"energy alone fixes one unknown speed; {body}'s system has {len(free)} freedoms")
-    (coordinate,) = free
-    # Velocities of the dependent coordinates follow by differentiating their solutions.
-    velocity = {c.u: coords.ddt(dependent[c.q]) for c in coords.all if c.q in dependent}
-    kinetic_free = sp.expand(kinetic.xreplace(velocity).xreplace(dependent))
-    vx, vy = coords.of(body, "x").u, coords.of(body, "y").u
-    speed_squared = sp.expand((vx**2 + vy**2).xreplace(velocity).xreplace(dependent))
-    k = tidy(kinetic_free / speed_squared)
-    height = coords.of(body, "y").q
-    potential_free = potential.xreplace(dependent)
-    height_free = height.xreplace(dependent)
-    rate = tidy(sp.diff(potential_free, coordinate.q) / sp.diff(height_free, coordinate.q))
-    if k.free_symbols & coords.state or rate.free_symbols & coords.state:
-        raise ConservationError("the kinetic or potential energy is not linear in the body's motion")
-    potential_change = -rate * drop
+    k = _kinetic_per_speed_squared(component, coords, body, kinetic)
+    potential_change = _potential_change(component, coords, body, potential, drop)
     speed = root(-potential_change / k)
     v = sp.Symbol("v")
     steps = (
@@ -75,3 +56,45 @@ def speed_after_drop(scene: Scene, body: str, drop: sp.Expr) -> EnergyBalance:
              (sp.Eq(k * v**2, -potential_change), sp.Eq(v, speed))),
     )
     return EnergyBalance(speed, k, -potential_change, steps)
+
+
+def _kinetic_per_speed_squared(scene: Scene, coords: Coordinates, body: str, kinetic: sp.Expr) -> sp.Expr:
+    """T / v^2, with every velocity expressed through the body's by the constraints dg/dt = 0."""
+    rates = [coords.ddt(gap) for c in scene.constraints for gap in joints.gaps(c, coords)]
+    velocities = [c.u for c in coords.all]
+    if len(velocities) - len(rates) != 1:
+        raise ConservationError(f"energy alone fixes one unknown speed; {body}'s system has "
+                                f"{len(velocities) - len(rates)} freedoms")
+    vx, vy = coords.of(body, "x").u, coords.of(body, "y").u
+    for free in (vx, vy):
+        others = [u for u in velocities if u != free]
+        matrix, rhs = sp.linear_eq_to_matrix(rates, others)
+        if not matrix.det().equals(0):
+            solved = dict(zip(others, matrix.LUsolve(rhs)))
+            break
+    else:
+        raise ConservationError(f"the constraints do not fix the motion through {body}'s velocity")
+    # On the constraints (every gap vanishes in the reference configuration, q = 0): off them a
+    # curved track's expressions carry |p - c| terms that equal its radius only on the track.
+    on_track = {c.q: 0 for c in coords.all}
+    ratio = tidy((kinetic.xreplace(solved) / (vx**2 + vy**2).xreplace(solved)).xreplace(on_track))
+    if ratio.free_symbols & coords.state:
+        raise ConservationError("the kinetic energy is not proportional to the square of the body's speed")
+    return ratio
+
+
+def _potential_change(scene: Scene, coords: Coordinates, body: str, potential: sp.Expr, drop: sp.Expr) -> sp.Expr:
+    """V after minus V before when the body's center falls `drop`."""
+    if len(scene.bodies) == 1:
+        return -scene.bodies[body].mass * scene.gravity.g * drop
+    # Several bodies: the constraints, solved at position level, fix how the others move.
+    try:
+        dependent = joints.solve_gaps(scene, coords)
+    except ValueError as error:
+        raise ConservationError(str(error)) from None
+    (coordinate,) = [c for c in coords.all if c.q not in dependent]
+    rate = tidy(sp.diff(potential.xreplace(dependent), coordinate.q)
+                / sp.diff(coords.of(body, "y").q.xreplace(dependent), coordinate.q))
+    if rate.free_symbols & coords.state:
+        raise ConservationError("the potential energy is not linear in the body's height")
+    return -rate * drop

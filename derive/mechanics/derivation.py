@@ -2,11 +2,12 @@
 
 >>> import sympy as sp
 >>> a, T = sp.symbols("a T")
->>> solve_linear([sp.Eq(2*a, T - 2), sp.Eq(a, 1)], [a, T])
+>>> dict(solve_linear([sp.Eq(2*a, T - 2), sp.Eq(a, 1)], [a, T]))
 {a: 1, T: 4}
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -20,15 +21,42 @@ class Step:
     equations: tuple[sp.Eq, ...] = ()
 
 
+class Solved(Mapping):
+    """A solution whose values are put in compact form when first read: a question that asks
+    for one quantity does not pay for simplifying all of them. `raw` holds them unsimplified."""
+
+    def __init__(self, raw: dict[sp.Symbol, sp.Expr]):
+        self.raw = raw
+        self._tidy: dict[sp.Symbol, sp.Expr] = {}
+
+    def __getitem__(self, unknown: sp.Symbol) -> sp.Expr:
+        if unknown not in self._tidy:
+            self._tidy[unknown] = tidy(self.raw[unknown])
+        return self._tidy[unknown]
+
+    def __iter__(self):
+        return iter(self.raw)
+
+    def __len__(self) -> int:
+        return len(self.raw)
+
+
 @dataclass
 class Derivation:
-    """The equations of motion of one route, solved for accelerations and constraint forces."""
+    """The equations of motion of one route, solved for accelerations and constraint forces.
+
+    `steps` hold the derivation up to the equations; `solving_step` adds the solution for the
+    unknowns a question needs.
+    """
 
     route: str
     equations: list[sp.Eq]
     unknowns: list[sp.Symbol]
-    solution: dict[sp.Symbol, sp.Expr]
+    solution: Solved
     steps: list[Step] = field(default_factory=list)
+
+    def solving_step(self, unknowns) -> Step:
+        return Step("Solving", tuple(sp.Eq(u, self.solution[u]) for u in unknowns))
 
 
 def tidy(expr: sp.Expr) -> sp.Expr:
@@ -45,7 +73,7 @@ def root(expr: sp.Expr) -> sp.Expr:
     return sp.Pow(tidy(expr), sp.S.Half, evaluate=False)
 
 
-def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
+def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
     """Solve equations linear in the unknowns (accelerations and constraint forces).
 
     Raises ValueError when the system has no unique solution (an impossible or redundant
@@ -58,4 +86,4 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> dict[sp.S
             "equations: they are redundant or impossible"
         )
     values = matrix.LUsolve(rhs)
-    return {u: tidy(v) for u, v in zip(unknowns, values)}
+    return Solved(dict(zip(unknowns, values)))

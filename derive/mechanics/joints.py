@@ -63,11 +63,16 @@ def _(contact: Contact) -> dict[str, sp.Symbol]:
     return result
 
 
-def contact_offset(contact: Contact, coords: Coordinates) -> sp.Matrix:
-    """World offset from the body's center to the point touching the surface."""
+def _contact_geometry(contact: Contact, coords: Coordinates):
     surface = coords.scene.surfaces[contact.surface]
     radius = coords.scene.bodies[contact.body].sizes.get("radius", sp.Integer(0))
-    return -radius * surface.normal
+    return surface, coords.position(contact.body), radius
+
+
+def contact_offset(contact: Contact, coords: Coordinates) -> sp.Matrix:
+    """World offset from the body's center to the point touching the surface."""
+    surface, center, radius = _contact_geometry(contact, coords)
+    return -radius * surface.normal_at(center, radius)
 
 
 @singledispatch
@@ -98,13 +103,11 @@ def _(cord: WoundString, coords: Coordinates) -> list[sp.Expr]:
 @gaps.register
 def _(contact: Contact, coords: Coordinates) -> list[sp.Expr]:
     # Height above the surface (multiplier: the normal force) and, when rolling, the
-    # distance rolled down the slope plus R theta (multiplier: friction along the slope).
-    surface = coords.scene.surfaces[contact.surface]
-    center = coords.position(contact.body)
-    result = [surface.normal.dot(center)]
+    # distance rolled along it plus R theta (multiplier: friction along the surface).
+    surface, center, radius = _contact_geometry(contact, coords)
+    result = [surface.gap(center, radius)]
     if contact.rolling:
-        radius = coords.scene.bodies[contact.body].sizes["radius"]
-        result.append(surface.down.dot(center) + radius * coords.angle(contact.body))
+        result.append(surface.arc(center, radius) + radius * coords.angle(contact.body))
     return result
 
 
@@ -135,12 +138,13 @@ def _(cord: WoundString, coords: Coordinates) -> list[AppliedForce]:
 
 @applied_forces.register
 def _(contact: Contact, coords: Coordinates) -> list[AppliedForce]:
-    surface = coords.scene.surfaces[contact.surface]
+    surface, center, radius = _contact_geometry(contact, coords)
     f = forces(contact)
     offset = contact_offset(contact, coords)
-    result = [AppliedForce(contact.body, offset, f["normal"] * surface.normal, "normal force")]
+    result = [AppliedForce(contact.body, offset, f["normal"] * surface.normal_at(center, radius), "normal force")]
     if contact.rolling:
-        result.append(AppliedForce(contact.body, offset, f["friction"] * surface.down, "static friction"))
+        tangent = surface.tangent_at(center, radius)
+        result.append(AppliedForce(contact.body, offset, f["friction"] * tangent, "static friction"))
     return result
 
 
@@ -169,11 +173,11 @@ def _(cord: WoundString, coords: Coordinates) -> list[sp.Expr]:
 def _(contact: Contact, coords: Coordinates) -> list[sp.Expr]:
     # The material point touching the surface does not move into it, and when rolling
     # without slipping it does not move along it either.
-    surface = coords.scene.surfaces[contact.surface]
+    surface, center, radius = _contact_geometry(contact, coords)
     touching = coords.material_velocity(contact.body, contact_offset(contact, coords))
-    result = [touching.dot(surface.normal)]
+    result = [touching.dot(surface.normal_at(center, radius))]
     if contact.rolling:
-        result.append(touching.dot(surface.down))
+        result.append(touching.dot(surface.tangent_at(center, radius)))
     return result
 
 

@@ -78,6 +78,5 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     steps += [
         Step("Euler–Lagrange equations, d/dt(dL/dq') - dL/dq = Q + sum of multiplier times dg/dq", tuple(equations)),
         Step("Constraints at acceleration level", tuple(constraint_accelerations)),
-        Step("Solving", tuple(sp.Eq(u, solution[u]) for u in unknowns)),
     ]
     return Derivation("lagrange", equations, unknowns, solution, steps)

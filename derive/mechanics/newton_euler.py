@@ -67,5 +67,4 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         steps.append(Step("Kinematic constraints (velocities, then accelerations)", tuple(sp.Eq(v, 0) for v in conditions) + tuple(kinematic)))
     unknowns = coords.accelerations + [f for c in scene.constraints for f in joints.forces(c).values()]
     solution = solve_linear(equations, unknowns)
-    steps.append(Step("Solving", tuple(sp.Eq(u, solution[u]) for u in unknowns)))
     return Derivation("newton_euler", equations, unknowns, solution, steps)
