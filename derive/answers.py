@@ -28,6 +28,10 @@ from derive.problem import Ask, Problem, ProblemError
 from derive.scene import TIME
 
 ROUTES = ("lagrange", "newton_euler")
+#: Quantities that come out of the equations of motion (both routes).
+DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation"}
+#: Quantities of the bodies and their arrangement, with no motion.
+STATIC_KINDS = {"inertia", "mass", "position_cm", "system"}
 
 
 class CheckFailure(RuntimeError):
@@ -220,8 +224,57 @@ class Solution:
     def _inertia(self, ask: Ask) -> sp.Expr:
         body = self.scene.bodies[ask.quantity.target]
         if ask.quantity.detail is None:
-            return body.inertia
-        return inertia.moment_of_inertia(body.shape, ask.quantity.detail).substitute(body.mass, body.sizes)
+            return self._within_ranges(body.inertia)
+        axis = ask.quantity.detail
+        if ask.shift is not None:
+            point, direction = inertia.SHAPES[body.shape].axes[axis]
+            across = sp.Matrix(direction).cross(sp.Matrix([0, 0, 1]) if direction[2] == 0 else sp.Matrix([1, 0, 0]))
+            axis = (tuple(sp.Matrix(point) + ask.shift * across / across.norm()), direction)
+        return self._within_ranges(inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density)[1])
+
+    def _inertia_about(self, body, axis: str) -> sp.Expr:
+        return self._within_ranges(inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density)[1])
+
+    def _within_ranges(self, expr: sp.Expr) -> sp.Expr:
+        """Resolve what an integral left open, using the parameter ranges: the branch of a Piecewise
+        that holds over them, and 0**e where e > 0 over them (a density (r/R)**k with k > -2)."""
+        if not expr.has(sp.Piecewise) and not expr.has(sp.Pow):
+            return expr
+        points = sample_points(self.problem, expr)
+
+        def holds(condition) -> bool:
+            return all(bool(condition.xreplace(p)) for p in points)
+
+        def branch(piecewise):
+            for value, condition in piecewise.args:
+                if condition is sp.true or holds(condition):
+                    return value
+            raise self.problem.error("ask", f"no branch of {piecewise} holds over the parameter ranges")
+
+        expr = sp.piecewise_fold(expr).replace(lambda e: isinstance(e, sp.Piecewise), branch)
+        expr = expr.replace(lambda e: e.is_Pow and e.base == 0 and holds(e.exp > 0), lambda e: sp.Integer(0))
+        return tidy(expr)
+
+    def _position(self, body: str) -> sp.Matrix:
+        motion = self.scene.motions.get(body)
+        return sp.Matrix(motion.position) if motion else sp.zeros(2, 1)
+
+    def _center_of_mass(self) -> sp.Matrix:
+        total = sum((b.mass for b in self.scene.bodies.values()), sp.Integer(0))
+        return sum((b.mass * self._position(n) for n, b in self.scene.bodies.items()), sp.zeros(2, 1)) / total
+
+    def _system(self, detail: str, route: str) -> sp.Expr:
+        """The system's moment of inertia about its center of mass (normal to the plane), by the
+        scalar parallel-axis sum or by composing the bodies' tensors; or the reduced mass of two
+        bodies, from the kinetic energy of their relative motion with the center of mass at rest."""
+        if detail == "reduced_mass":
+            return _reduced_mass(*(b.mass for b in self.scene.bodies.values()))
+        center = self._center_of_mass()
+        if route == "sum":
+            return tidy(sum((b.inertia + b.mass * (self._position(n) - center).dot(self._position(n) - center)
+                             for n, b in self.scene.bodies.items()), sp.Integer(0)))
+        parts = [inertia.Part(b.shape, b.mass, b.sizes, (*self._position(n), 0)) for n, b in self.scene.bodies.items()]
+        return tidy(inertia.composite_tensor(parts, about=(*center, 0)).tensor[2, 2])
 
     def expression(self, name: str) -> sp.Expr:
         """The exact answer, in the parameter symbols, for SI values of the parameters."""
@@ -234,6 +287,13 @@ class Solution:
             result = self._orbit(ask.quantity.detail, "lagrange")
         elif ask.quantity.kind in ("event", "after"):
             result = self._event(ask.quantity, self.event_results["conservation"])
+        elif ask.quantity.kind == "mass":
+            result = self.scene.bodies[ask.quantity.target].mass
+        elif ask.quantity.kind == "position_cm":
+            offset = self._position(ask.quantity.target) - self._center_of_mass()
+            result = tidy(offset[0 if ask.quantity.detail == "x" else 1])
+        elif ask.quantity.kind == "system":
+            result = self._system(ask.quantity.detail, "sum")
         else:
             result = self._route_expression(ask, "lagrange")
         for size in ask.small:
@@ -258,8 +318,8 @@ class Solution:
     def steps(self) -> dict[str, list[Step]]:
         """The derivation steps a worked solution shows, by route."""
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
-        if kinds == {"inertia"}:
-            return {"integration": [self._inertia_steps(a) for a in self.problem.asks.values()]}
+        if kinds <= STATIC_KINDS:
+            return {"integration": [self._static_step(a) for a in self.problem.asks.values()]}
         if kinds == {"path"}:
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
@@ -332,10 +392,13 @@ class Solution:
             steps.append(Step(ask.meaning, (sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name]),)))
         return steps
 
-    def _inertia_steps(self, ask: Ask) -> Step:
+    def _static_step(self, ask: Ask) -> Step:
+        if ask.quantity.kind != "inertia" or ask.shift is not None or ask.quantity.detail is None:
+            return Step(ask.meaning, (sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name]),))
         body = self.scene.bodies[ask.quantity.target]
-        if ask.quantity.detail is None:
-            return Step(f"Moment of inertia of the {body.name}", (sp.Eq(sp.Symbol("I"), body.inertia),))
+        if body.density is not None:
+            return Step(f"Integrate the density {sp.sstr(body.density)} over the {body.shape}",
+                        (sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name]),))
         derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
         shape = inertia.SHAPES[body.shape]
         mapping = {inertia.M: body.mass, **{shape.sizes[k]: v for k, v in body.sizes.items()}}
@@ -354,7 +417,7 @@ class Solution:
         """Every independent check that applies: routes, parallel axes, dimensions."""
         result = [self._dimension_check()]
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
-        if kinds - {"inertia", "path", "orbit", "event", "after"}:
+        if kinds & DYNAMIC_KINDS:
             result.append(self._routes_check())
         if kinds & {"event", "after"}:
             result.append(self._event_check())
@@ -365,6 +428,8 @@ class Solution:
             result.append(self._polar_check())
         if self.energy_balances:
             result.append(self._energy_check())
+        if "system" in kinds:
+            result.append(self._system_check())
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
                 check = self._parallel_axis_check(ask)
@@ -391,7 +456,7 @@ class Solution:
         lag, ne = self.derivations["lagrange"], self.derivations["newton_euler"]
         methods = set()
         for name, ask in self.problem.asks.items():
-            if ask.quantity.kind == "inertia":
+            if ask.quantity.kind not in DYNAMIC_KINDS:
                 continue
             a, b = (self._route_expression(ask, r) for r in ROUTES)
             method = agree(a, b)
@@ -467,6 +532,21 @@ class Solution:
                                        f"{other} by sympy.physics.mechanics")
         return Check("polar_vs_rotating_frame", True, "symbolic", "acceleration components agree")
 
+    def _system_check(self) -> Check:
+        """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,
+        the inertia about the center of mass is mu d^2."""
+        total, composed = self._system("inertia", "sum"), self._system("inertia", "tensor")
+        if agree(total, composed) is None:
+            raise CheckFailure(f"{self.problem.id}: the system's inertia is {total} summed, {composed} composed")
+        detail = "parallel-axis sum equals the composed tensor"
+        bodies = list(self.scene.bodies.values())
+        if len(bodies) == 2 and all(b.shape == "point" for b in bodies):
+            gap = self._position(bodies[1].name) - self._position(bodies[0].name)
+            if agree(total, _reduced_mass(bodies[0].mass, bodies[1].mass) * gap.dot(gap)) is None:
+                raise CheckFailure(f"{self.problem.id}: I differs from mu d^2")
+            detail += "; I = mu d^2"
+        return Check("system_inertia", True, "symbolic", detail)
+
     def _energy_check(self) -> Check:
         """Energy conservation gives the same speeds as the accelerations integrated."""
         methods = set()
@@ -482,6 +562,13 @@ class Solution:
     def _parallel_axis_check(self, ask: Ask) -> Check | None:
         body = self.scene.bodies[ask.quantity.target]
         derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
+        if ask.shift is not None:  # the shifted axis, integrated directly, against I_cm + M h^2
+            theorem = inertia.parallel_axis(self._inertia_about(body, ask.quantity.detail), body.mass, ask.shift)
+            if agree(theorem, self.expressions[ask.name]) is None:
+                raise CheckFailure(f"{self.problem.id}: the shifted axis gives {self.expressions[ask.name]}, "
+                                   f"the parallel-axis theorem {theorem}")
+            return Check("parallel_axis", True, "symbolic",
+                         f"{ask.name}: integration about the shifted axis equals I_cm + M h^2")
         if derived.distance_from_center == 0:
             return None
         center_axis = inertia.PLANAR_AXIS[body.shape]
@@ -493,6 +580,15 @@ class Solution:
             "parallel_axis", True, "symbolic",
             f"{ask.name}: integration equals I_cm + M d^2 with d = {derived.distance_from_center}",
         )
+
+
+def _reduced_mass(m1: sp.Expr, m2: sp.Expr) -> sp.Expr:
+    """mu with T = mu rho'^2 / 2 for the separation rho of two masses whose center of mass is at rest."""
+    r1, r2, rho = sp.symbols("r_1 r_2 rho")
+    positions = sp.solve([sp.Eq(m1 * r1 + m2 * r2, 0), sp.Eq(r2 - r1, rho)], [r1, r2])
+    rate = sp.Symbol("rhodot")
+    kinetic = sum(m * (sp.diff(positions[r], rho) * rate) ** 2 / 2 for m, r in ((m1, r1), (m2, r2)))
+    return tidy(2 * kinetic / rate**2)
 
 
 def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:

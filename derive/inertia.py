@@ -459,3 +459,31 @@ def central_moment(shape_name: str, mass: sp.Expr, sizes: dict[str, sp.Expr]) ->
     0
     """
     return moment_of_inertia(shape_name, PLANAR_AXIS[shape_name]).substitute(mass, sizes)
+
+
+def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp.Expr],
+                density: sp.Expr | None = None) -> tuple[sp.Expr, sp.Expr]:
+    """(mass, moment of inertia) of a body of this shape and sizes about a named axis.
+
+    Uniform with the given mass; or with a `density` in the shape's coordinates: a profile
+    scaled to the given mass, or, with mass None, an absolute density whose integral is the
+    mass. A body's own symbols that happen to be this module's generic ones (R, M, ...) are
+    kept apart from them during the integration.
+
+    >>> body_moment("disk", "symmetry", None, {"radius": 2}, sp.Symbol("sigma", positive=True))
+    (4*pi*sigma, 8*pi*sigma)
+    """
+    shape = _shape(shape_name)
+    generic = {M, *shape.sizes.values()}
+    shield = {s: sp.Dummy(s.name, **s.assumptions0) for s in (density.free_symbols if density is not None else ())
+              if s in generic}
+    result = moment_of_inertia(shape_name, axis, None if density is None else density.xreplace(shield))
+    mapping = {shape.sizes[name]: value for name, value in sizes.items()}
+    restore = {d: s for s, d in shield.items()}
+    integrated_mass = result.mass.xreplace(mapping).xreplace(restore)
+    moment = result.I.xreplace(mapping).xreplace(restore)
+    if density is None:
+        return mass, moment.xreplace({M: mass})
+    if mass is None:
+        return integrated_mass, moment
+    return mass, sp.simplify(mass * moment / integrated_mass)

@@ -20,7 +20,7 @@ from pathlib import Path
 import sympy as sp
 import yaml
 
-from derive import expr, library, units
+from derive import expr, inertia, library, units
 from derive.errors import InputError
 from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
                           Orbit, Path, Pin, Quantity, Scene, Stick, WoundString, parse_quantity)
@@ -55,6 +55,7 @@ class Ask:
     magnitude: bool = False
     zero_for: str | None = None
     small: tuple[sp.Symbol, ...] = ()
+    shift: sp.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -251,13 +252,15 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
     field = f"scene.bodies.{name}"
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "inertia", "inertia_about", "joint", "on", "contact", "path", *MOTION_KEYS,
-                                    *all_sizes))
+                          optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "path",
+                                    *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
     if "mass" in spec:
         mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
+    elif "density" in spec:
+        mass = None  # from the density, once the sizes are known
     else:
         mass = reader.unspecified(f"m_{name}", "kg")
     sizes = {}
@@ -280,12 +283,15 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
             raise reader.fail(f"{field}.inertia", "a moment of inertia cannot be negative")
     elif "inertia" in spec:
         raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
+    density = None
+    if "density" in spec:
+        density, mass = _density(reader, spec["density"], f"{field}.density", shape, sizes, mass)
     path = None
     if "path" in spec:
         if shape != "point" or "joint" in spec or "on" in spec:
             raise reader.fail(f"{field}.path", "a prescribed path is for a free point mass")
         path = _path(reader, spec["path"], f"{field}.path", name)
-    body = Body(name, shape, mass, sizes, given, path)
+    body = Body(name, shape, mass, sizes, given, path, density)
     pin = _joint(reader, body, spec.get("joint"), f"{field}.joint")
     about = spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and (given is None or pin is None or pin.name != "pivot"):
@@ -295,6 +301,39 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
         distance = pin.offset[0] ** 2 + pin.offset[1] ** 2
         body = Body(name, shape, mass, sizes, given - mass * distance)
     return body, pin
+
+
+COORDINATE_UNITS = {"x": "m", "y": "m", "z": "m", "r": "m", "phi": "rad", "theta": "rad"}
+
+
+def _density(reader: _Reader, raw, field: str, shape: str, sizes: dict, mass: sp.Expr | None):
+    """A body's density in its shape's coordinates: with a mass, a profile scaled to that mass
+    (dimensionless); without, an absolute density whose integral gives the mass."""
+    if shape not in inertia.SHAPES or shape == "point":
+        raise reader.fail(field, f"a {shape} has no density to give")
+    coordinates = inertia.SHAPES[shape].density_symbols
+    clash = sorted(set(coordinates) & set(reader.symbols))
+    if clash:
+        raise reader.fail(field, f"the parameter {clash[0]} has the name of a {shape} coordinate: rename it")
+    density = reader.expression(raw, field, {**reader.symbols, **coordinates})
+    units_here = {**reader.symbol_units, **{s: COORDINATE_UNITS[n] for n, s in coordinates.items()}}
+    try:
+        found = units.expression_dimension(density, units_here)
+    except units.UnitError as error:
+        raise reader.fail(field, str(error)) from None
+    if mass is not None:
+        if found:
+            raise reader.fail(field, f"with a mass given, the density is a profile without dimension; it has "
+                                     f"{_describe(found)}")
+        return density, mass
+    try:
+        derived, _ = inertia.body_moment(shape, inertia.PLANAR_AXIS[shape], None, sizes, density)
+        found = units.expression_dimension(derived, units_here)
+    except (units.UnitError, InputError) as error:
+        raise reader.fail(field, str(error)) from None
+    if not units.same_dimension(found, units.dimension(units.parse_unit("kg"))):
+        raise reader.fail(field, f"the density integrates to {_describe(found)}, not to a mass")
+    return density, derived
 
 
 MOTION_KEYS = ("at", "velocity", "spin", "hits")
@@ -523,8 +562,10 @@ def _scene(reader: _Reader, raw) -> Scene:
         ))
     motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
     events = _events(reader, raw.get("events") or [], bodies)
-    if motions and not events:
-        raise reader.fail("scene.events", "velocities and spins describe the state before an event: add the event")
+    moving = [n for n, spec in bodies_raw.items() if any(k in spec for k in ("velocity", "spin", "hits"))]
+    if moving and not events:
+        raise reader.fail(f"scene.bodies.{moving[0]}", "velocities and spins describe the state before an event: "
+                          "add the event")
     return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events)
 
 
@@ -559,7 +600,7 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
-                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small"))
+                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift"))
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -577,8 +618,18 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
             name, reader.text(spec["meaning"], f"{field}.meaning"), path, quantity,
             reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False), zero_for,
             _small(reader, spec.get("small"), f"{field}.small", scene),
+            _shift(reader, spec.get("shift"), f"{field}.shift", quantity),
         )
     return result
+
+
+def _shift(reader: _Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
+    """`shift: h`: the asked axis moved parallel to itself by the distance h."""
+    if raw is None:
+        return None
+    if quantity.kind != "inertia" or quantity.detail is None:
+        raise reader.fail(field, "a shift moves a named inertia axis (give axis: too)")
+    return reader.positive(raw, field, "m", "a shift")
 
 
 def _small(reader: _Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ...]:

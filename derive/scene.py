@@ -68,6 +68,7 @@ class Body:
     sizes: dict[str, sp.Expr]
     given_inertia: sp.Expr | None = None
     path: Path | None = None
+    density: sp.Expr | None = None
 
     @property
     def rotates(self) -> bool:
@@ -78,6 +79,9 @@ class Body:
     def inertia(self) -> sp.Expr:
         if self.given_inertia is not None:
             return self.given_inertia
+        if self.density is not None:
+            return inertia.body_moment(self.shape, inertia.PLANAR_AXIS[self.shape], self.mass, self.sizes,
+                                       self.density)[1]
         return inertia.central_moment(self.shape, self.mass, self.sizes)
 
 
@@ -341,6 +345,8 @@ class Quantity:
     "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
     prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "event"
     (one of EVENT_QUANTITIES), "after" (a body's state after the event; AFTER_QUANTITIES),
+    "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
+    "system" (inertia about the center of mass, reduced_mass of two bodies),
     "small_oscillation" (omega, period, growth_rate).
     """
 
@@ -368,6 +374,14 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     Quantity(kind='acceleration', target='ball', detail='y')
     """
     head, _, rest = path.partition(".")
+    if head == "system":
+        if rest not in ("inertia", "reduced_mass"):
+            raise ValueError("the system has inertia (about its center of mass) and reduced_mass")
+        if rest == "reduced_mass" and len(scene.bodies) != 2:
+            raise ValueError("a reduced mass is for a system of two bodies")
+        return Quantity("system", None, rest)
+    if head in scene.bodies and rest in ("mass", "position_cm.x", "position_cm.y"):
+        return Quantity(rest.partition(".")[0], head, rest.partition(".")[2] or None)
     if head == "event":
         if not scene.events:
             raise ValueError("the scene has no event")
