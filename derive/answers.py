@@ -25,7 +25,7 @@ from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import Oscillation, OscillationError, small_oscillation
 from derive.problem import Ask, Problem, ProblemError
-from derive.scene import TIME
+from derive.scene import TIME, Quantity
 
 ROUTES = ("lagrange", "newton_euler")
 #: Quantities that come out of the equations of motion (both routes).
@@ -221,19 +221,25 @@ class Solution:
         body = self.scene.bodies[ask.quantity.target]
         return paths.quantity(body.path, body.mass, ask.quantity.detail)
 
-    def _inertia(self, ask: Ask) -> sp.Expr:
+    def _inertia(self, ask: Ask, route: str = "integral") -> sp.Expr:
         body = self.scene.bodies[ask.quantity.target]
-        if ask.quantity.detail is None:
+        if ask.quantity.detail is None and route == "integral":
             return self._within_ranges(body.inertia)
+        if ask.quantity.detail is None:
+            if body.shape not in inertia.SHAPES:
+                return None  # a custom body's inertia is given, not derived
+            ask = Ask(ask.name, ask.meaning, ask.path, Quantity("inertia", body.name, inertia.PLANAR_AXIS[body.shape]),
+                      ask.unit, ask.sig_figs, shift=ask.shift)
         axis = ask.quantity.detail
         if ask.shift is not None:
             point, direction = inertia.SHAPES[body.shape].axes[axis]
             across = sp.Matrix(direction).cross(sp.Matrix([0, 0, 1]) if direction[2] == 0 else sp.Matrix([1, 0, 0]))
             axis = (tuple(sp.Matrix(point) + ask.shift * across / across.norm()), direction)
-        return self._within_ranges(inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density)[1])
+        return self._inertia_about(body, axis, route)
 
-    def _inertia_about(self, body, axis: str) -> sp.Expr:
-        return self._within_ranges(inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density)[1])
+    def _inertia_about(self, body, axis, route: str = "integral") -> sp.Expr:
+        moment = inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density, route)[1]
+        return self._within_ranges(moment)
 
     def _within_ranges(self, expr: sp.Expr) -> sp.Expr:
         """Resolve what an integral left open, using the parameter ranges: the branch of a Piecewise
@@ -423,13 +429,14 @@ class Solution:
             result.append(self._event_check())
         if "orbit" in kinds:
             result.append(self._orbit_check())
-        if any(a.quantity.detail in ("acceleration.radial", "acceleration.tangential")
-               for a in self.problem.asks.values() if a.quantity.kind == "path"):
-            result.append(self._polar_check())
         if self.energy_balances:
             result.append(self._energy_check())
         if "system" in kinds:
             result.append(self._system_check())
+        if "inertia" in kinds:
+            result.append(self._tensor_check())
+        if "path" in kinds:
+            result.append(self._path_check())
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
                 check = self._parallel_axis_check(ask)
@@ -520,17 +527,31 @@ class Solution:
             detail += "; energy equal at periapsis and apoapsis"
         return Check("lagrange_vs_newton_euler", True, "symbolic", detail)
 
-    def _polar_check(self) -> Check:
-        """Polar components from the Cartesian position equal sympy.physics.mechanics' (rotating frame)."""
-        for ask in self.problem.asks.values():
-            if ask.quantity.kind == "path" and ask.quantity.detail.startswith("acceleration."):
+    def _tensor_check(self) -> Check:
+        """Each moment of inertia again as n^T I n from the inertia tensor (a different integral)."""
+        compared = []
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind != "inertia":
+                continue
+            other = self._inertia(ask, "tensor")
+            if other is None:
+                continue
+            if agree(other, self.expressions[name]) is None:
+                raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} integrated, {other} "
+                                   "from the tensor")
+            compared.append(name)
+        return Check("tensor_vs_integral", True, "symbolic", ", ".join(compared) or "no derived moment")
+
+    def _path_check(self) -> Check:
+        """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "path":
                 body = self.scene.bodies[ask.quantity.target]
-                radial, tangential = paths.check_polar(body.path)
-                other = {"acceleration.radial": radial, "acceleration.tangential": tangential}.get(ask.quantity.detail)
-                if other is not None and agree(other, self.expressions[ask.name]) is None:
-                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {self.expressions[ask.name]} by projection, "
+                other = paths.by_mechanics(body.path, body.mass, ask.quantity.detail)
+                if agree(other, self.expressions[name]) is None:
+                    raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} by projection, "
                                        f"{other} by sympy.physics.mechanics")
-        return Check("polar_vs_rotating_frame", True, "symbolic", "acceleration components agree")
+        return Check("path_vs_mechanics", True, "symbolic", "every path quantity agrees")
 
     def _system_check(self) -> Check:
         """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,

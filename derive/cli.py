@@ -85,6 +85,7 @@ def main() -> None:
       derive solve problems/torque/compound_pendulum.yaml --format json
       derive inertia rod --axis end
       derive sheet demo --variants 5 --seed 7 --out build/demo
+      derive check
     """
 
 
@@ -193,6 +194,30 @@ def list_problems(topic: str | None) -> None:
     width = max(len(r[0]) for r in rows)
     for problem_id, problem_topic, title in rows:
         click.echo(f"{problem_id:<{width}}  {problem_topic:<8}  {title}")
+
+
+@main.command()
+@click.argument("problems", nargs=-1)
+@reports_errors
+def check(problems: tuple[str, ...]) -> None:
+    """Run every cross-check over the library (or the PROBLEMS given) and print a table.
+
+    For each problem: the independent routes of derivation (Lagrange and Newton–Euler,
+    energy, conservation and impulses, integration and the parallel-axis theorem, ...),
+    the dimensions of every answer, and a numerical simulation where the scene moves.
+    Exit status 1 if any check fails.
+
+    \b
+    Examples:
+      derive check
+      derive check tugged_spool compound_pendulum
+    """
+    from derive import audit
+
+    rows = audit.audit(list(problems), progress=lambda message: click.echo(message, err=True))
+    click.echo(audit.table(rows))
+    if not all(r.passed for r in rows):
+        sys.exit(1)
 
 
 @main.command()

@@ -462,13 +462,14 @@ def central_moment(shape_name: str, mass: sp.Expr, sizes: dict[str, sp.Expr]) ->
 
 
 def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp.Expr],
-                density: sp.Expr | None = None) -> tuple[sp.Expr, sp.Expr]:
+                density: sp.Expr | None = None, route: str = "integral") -> tuple[sp.Expr, sp.Expr]:
     """(mass, moment of inertia) of a body of this shape and sizes about a named axis.
 
     Uniform with the given mass; or with a `density` in the shape's coordinates: a profile
     scaled to the given mass, or, with mass None, an absolute density whose integral is the
     mass. A body's own symbols that happen to be this module's generic ones (R, M, ...) are
-    kept apart from them during the integration.
+    kept apart from them during the integration. `route="tensor"` takes n^T I n from the
+    inertia tensor about a point of the axis instead of integrating d^2: a second route.
 
     >>> body_moment("disk", "symmetry", None, {"radius": 2}, sp.Symbol("sigma", positive=True))
     (4*pi*sigma, 8*pi*sigma)
@@ -477,11 +478,17 @@ def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp
     generic = {M, *shape.sizes.values()}
     shield = {s: sp.Dummy(s.name, **s.assumptions0) for s in (density.free_symbols if density is not None else ())
               if s in generic}
-    result = moment_of_inertia(shape_name, axis, None if density is None else density.xreplace(shield))
+    shielded = None if density is None else density.xreplace(shield)
+    result = moment_of_inertia(shape_name, axis, shielded)
+    moment = result.I
+    if route == "tensor":
+        point, direction = shape.axes[axis] if isinstance(axis, str) else axis
+        n = sp.Matrix(direction) / sp.Matrix(direction).norm()
+        moment = sp.simplify((n.T * tensor(shape_name, about=tuple(point), density=shielded) * n)[0, 0])
     mapping = {shape.sizes[name]: value for name, value in sizes.items()}
     restore = {d: s for s, d in shield.items()}
     integrated_mass = result.mass.xreplace(mapping).xreplace(restore)
-    moment = result.I.xreplace(mapping).xreplace(restore)
+    moment = moment.xreplace(mapping).xreplace(restore)
     if density is None:
         return mass, moment.xreplace({M: mass})
     if mass is None:

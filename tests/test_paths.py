@@ -1,9 +1,10 @@
 """Prescribed paths: polar acceleration, angular momentum, areal velocity — and the notes' eq. (1)."""
 import mpmath
+import pytest
 import sympy as sp
 
 from derive import problem, report
-from derive.mechanics.paths import check_polar, quantity
+from derive.mechanics.paths import by_mechanics, quantity
 from derive.scene import TIME, Path
 
 r = sp.Function("r")(TIME)
@@ -16,7 +17,8 @@ def test_polar_acceleration_from_the_cartesian_position():
     tangential = quantity(general, 1, "acceleration.tangential")
     assert sp.simplify(radial - (r.diff(TIME, 2) - r * theta.diff(TIME) ** 2)) == 0
     assert sp.simplify(tangential - (2 * r.diff(TIME) * theta.diff(TIME) + r * theta.diff(TIME, 2))) == 0
-    assert check_polar(general) == (radial, tangential)
+    assert by_mechanics(general, 1, "acceleration.radial") == radial
+    assert by_mechanics(general, 1, "acceleration.tangential") == tangential
 
 
 def test_notes_equation_1_sign_is_wrong():
@@ -50,5 +52,12 @@ def test_library_path_problems():
     passing = report.solve(problem.load("impact_parameter"), {"m": "2", "b": "0.5", "v": "3"}, 15)
     assert passing["answers"]["L"]["value"] == "-3.00000000000000"
     polar = report.solve(problem.load("polar_acceleration"), {}, 15)
-    assert polar["checks"]["polar_vs_rotating_frame"]["passed"] and polar["answers"]["a_r"]["value"] is None
+    assert polar["checks"]["path_vs_mechanics"]["passed"] and polar["answers"]["a_r"]["value"] is None
     assert problem.load("polar_acceleration").corrections[0]["where"].startswith("§1")
+
+
+@pytest.mark.parametrize("name", ["velocity.x", "velocity.y", "speed", "acceleration.x", "acceleration.y",
+                                  "angular_momentum", "areal_velocity"])
+def test_every_path_quantity_by_sympy_mechanics(name):
+    m = sp.Symbol("m", positive=True)
+    assert sp.simplify(quantity(general, m, name) - by_mechanics(general, m, name)) == 0

@@ -2,7 +2,7 @@
 
 Everything is derived from the Cartesian position (x(t), y(t)) by differentiation and
 projection onto r-hat and theta-hat — the polar acceleration a_r = r'' - r theta'^2,
-a_theta = 2 r' theta' + r theta'' comes out, it is not typed in. `check_polar` derives
+a_theta = 2 r' theta' + r theta'' comes out, it is not typed in. `by_mechanics` derives
 the same components independently with sympy.physics.mechanics (a rotating frame).
 
 >>> import sympy as sp
@@ -46,9 +46,10 @@ def quantity(path: Path, mass: sp.Expr, name: str) -> sp.Expr:
     return _simplify(values[name]())
 
 
-def check_polar(path: Path) -> tuple[sp.Expr, sp.Expr]:
-    """Radial and tangential acceleration by sympy.physics.mechanics, for the cross-check."""
-    from sympy.physics.mechanics import Point, ReferenceFrame
+def by_mechanics(path: Path, mass: sp.Expr, name: str) -> sp.Expr:
+    """The same quantity by sympy.physics.mechanics: a Point located in a frame turning with
+    the polar angle, a Particle for the angular momentum (the cross-check route)."""
+    from sympy.physics.mechanics import Particle, Point, ReferenceFrame
 
     r, theta = path.radius_and_angle
     inertial = ReferenceFrame("N")
@@ -56,5 +57,16 @@ def check_polar(path: Path) -> tuple[sp.Expr, sp.Expr]:
     origin = Point("O")
     origin.set_vel(inertial, 0)
     point = origin.locatenew("P", r * turning.x)
-    components = point.acc(inertial).express(turning).to_matrix(turning)
-    return _simplify(components[0]), _simplify(components[1])
+    velocity, acceleration = point.vel(inertial), point.acc(inertial)
+    values = {
+        "velocity.x": lambda: velocity.dot(inertial.x),
+        "velocity.y": lambda: velocity.dot(inertial.y),
+        "speed": lambda: velocity.magnitude(),
+        "acceleration.x": lambda: acceleration.dot(inertial.x),
+        "acceleration.y": lambda: acceleration.dot(inertial.y),
+        "acceleration.radial": lambda: acceleration.dot(turning.x),
+        "acceleration.tangential": lambda: acceleration.dot(turning.y),
+        "angular_momentum": lambda: Particle("p", point, mass).angular_momentum(origin, inertial).dot(inertial.z),
+        "areal_velocity": lambda: point.pos_from(origin).cross(velocity).dot(inertial.z) / 2,
+    }
+    return _simplify(values[name]())

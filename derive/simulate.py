@@ -1,0 +1,139 @@
+"""Numerical simulation of a scene's equations of motion, to check the closed forms.
+
+The solved accelerations (Lagrange's route) are integrated with scipy's DOP853 from a state
+the constraints allow, at the middle of the parameter ranges. The trajectory must keep every
+constraint gap at zero, conserve T + V when every force is conservative, and agree with the
+asked answers: a constant acceleration with the change of velocity over the run, a
+small-oscillation period with the time between zero crossings.
+
+>>> from derive.problem import load
+>>> from derive.answers import Solution
+>>> report = check(Solution(load("string_wrapped_disk")))
+>>> report.passed, report.compared
+(True, ['a', 'alpha'])
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import sympy as sp
+from scipy.integrate import solve_ivp
+
+from derive.answers import Solution, sample_points
+from derive.mechanics import joints
+from derive.mechanics.lagrange import energies
+
+TOLERANCE = 1e-7
+
+
+@dataclass
+class SimulationReport:
+    passed: bool = True
+    compared: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+    def fail(self, message: str) -> None:
+        self.passed = False
+        self.notes.append(message)
+
+
+def _values(solution: Solution) -> dict[sp.Symbol, sp.Expr]:
+    """Parameter values (SI) at the middle of their ranges, open sizes at sample values."""
+    symbols = set()
+    for d in solution.derivations.values():
+        for expr in d.solution.raw.values():
+            symbols |= expr.free_symbols
+    symbols -= solution.coordinates.state | set(solution.coordinates.accelerations)
+    point = sample_points(solution.problem, sp.Add(*symbols), count=1)[0] if symbols else {}
+    return point
+
+
+def _rhs(solution: Solution, values):
+    coords = solution.coordinates
+    lagrange = solution.derivations["lagrange"]
+    state = [c.q for c in coords.all] + [c.u for c in coords.all]
+    accelerations = [lagrange.solution.raw[c.a].xreplace(values) for c in coords.all]
+    function = sp.lambdify(state, accelerations, "numpy")
+    n = len(coords.all)
+
+    def rhs(t, y):
+        return np.concatenate([y[n:], np.asarray(function(*y), dtype=float).ravel()])
+    return rhs, state
+
+
+def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
+    """Integrate the scene and compare the trajectory with the answers it can test."""
+    report = SimulationReport()
+    coords = solution.coordinates
+    values = _values(solution)
+    rhs, state = _rhs(solution, values)
+    n = len(coords.all)
+    gaps = [g.xreplace(values) for c in solution.scene.constraints for g in joints.gaps(c, coords)]
+    gap_function = sp.lambdify(state[:n], gaps or [0], "numpy")
+    kinetic, potential = energies(solution.scene, coords)
+    energy = sp.lambdify(state, (kinetic + potential).xreplace(values), "numpy")
+
+    start = np.zeros(2 * n)  # the reference configuration, at rest: every gap vanishes there
+    run = solve_ivp(rhs, (0, duration), start, method="DOP853", rtol=1e-11, atol=1e-13, dense_output=True)
+    if not run.success:
+        report.fail(f"integration failed: {run.message}")
+        return report
+    drift = max(float(np.max(np.abs(gap_function(*run.y[:n, i])))) for i in range(run.y.shape[1]))
+    scale = 1 + float(np.max(np.abs(run.y[:n])))
+    if drift > TOLERANCE * scale:
+        report.fail(f"constraints drift by {drift:.2e}")
+    if not solution.scene.pulls:
+        energies_along = [energy(*run.y[:, i]) for i in range(run.y.shape[1])]
+        spread = max(energies_along) - min(energies_along)
+        if spread > TOLERANCE * (1 + max(abs(e) for e in energies_along)):
+            report.fail(f"energy changes by {spread:.2e} with only conservative forces")
+    def mean_acceleration(body: str, kind: str) -> float:
+        index = coords.all.index(coords.of(body, kind))
+        return (run.y[n + index, -1] - run.y[n + index, 0]) / duration
+
+    for name, ask in solution.problem.asks.items():
+        q = ask.quantity
+        if ask.zero_for or ask.magnitude or ask.small:
+            continue  # a transformed quantity (a critical value, a magnitude, a limit)
+        if q.kind in ("acceleration", "angular_acceleration"):
+            simulated = mean_acceleration(q.target, q.detail if q.kind == "acceleration" else "theta")
+            _compare(report, name, simulated, solution.expressions[name], values)
+        elif q.kind == "contact" and q.detail == "acceleration.down_incline":
+            down = solution.scene.surfaces[solution.scene.contact_of(q.target).surface].down.xreplace(values)
+            simulated = float(down[0]) * mean_acceleration(q.target, "x") + float(down[1]) * mean_acceleration(q.target, "y")
+            _compare(report, name, simulated, solution.expressions[name], values)
+        elif q.kind == "small_oscillation" and q.detail == "period":
+            _compare(report, name, _period(solution, rhs, values), solution.expressions[name], values)
+    return report
+
+
+def _compare(report: SimulationReport, name: str, simulated: float, exact: sp.Expr, values) -> None:
+    expected = float(sp.N(exact.xreplace(values), 20))
+    if abs(simulated - expected) > 1e-6 * (abs(expected) + 1e-12):
+        report.fail(f"{name}: simulation {simulated:.10g}, closed form {expected:.10g}")
+    report.compared.append(name)
+
+
+def _period(solution: Solution, rhs, values) -> float:
+    """Time between upward zero crossings of the free coordinate, from a tiny displacement."""
+    linear = solution.oscillations["lagrange"]
+    coords = solution.coordinates
+    n = len(coords.all)
+    dependent = joints.solve_gaps(solution.scene, coords)
+    amplitude = 1e-5
+    position = {linear.coordinate.q: amplitude}
+    start = np.zeros(2 * n)
+    for i, c in enumerate(coords.all):
+        expr = dependent.get(c.q, c.q).xreplace(values)
+        start[i] = float(sp.N(expr.xreplace({linear.coordinate.q: amplitude, **{k: 0 for k in coords.state}})
+                              if c.q in dependent else position.get(c.q, 0)))
+    index = coords.all.index(linear.coordinate)
+    expected = float(sp.N(linear.quantity("period").xreplace(values)))
+
+    def crossing(t, y):
+        return y[index]
+    crossing.direction = 1
+    run = solve_ivp(rhs, (0, 2.5 * expected), start, method="DOP853", rtol=1e-12, atol=1e-16, events=crossing)
+    times = run.t_events[0]
+    return float(times[1] - times[0]) if len(times) >= 2 else float("nan")

@@ -1,0 +1,38 @@
+"""`derive check` and the simulation check: they pass on the library and catch what is wrong."""
+import sympy as sp
+
+from conftest import copy_library, run_derive
+from derive import simulate
+from derive.answers import Solution
+from derive.problem import load
+
+
+def test_simulation_agrees_with_the_closed_forms():
+    report = simulate.check(Solution(load("compound_pendulum")))
+    assert report.passed and report.compared == ["T"]
+
+
+def test_simulation_catches_a_wrong_closed_form():
+    solution = Solution(load("string_wrapped_disk"))
+    solution.expressions["a"] = solution.expressions["a"] * sp.Rational(101, 100)  # 1% off
+    report = simulate.check(solution)
+    assert not report.passed and "a: simulation" in report.notes[0]
+
+
+def test_check_command_prints_a_table_and_passes(derive):
+    done = derive("check", "string_wrapped_disk", "rod_endpoint", "beetle_lazy_susan", "circular_motion_L")
+    assert done.returncode == 0, done.stdout + done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0].split()[:2] == ["problem", "independent"]
+    assert "lagrange_vs_newton_euler" in done.stdout and "ok: a, alpha" in done.stdout
+    assert "conservation_vs_impulses" in done.stdout and "path_vs_mechanics" in done.stdout
+    assert "4 passed, 0 failed" in done.stdout
+
+
+def test_check_command_fails_with_exit_1(tmp_path):
+    library = copy_library(tmp_path)
+    disk = library / "torque" / "string_wrapped_disk.yaml"
+    disk.write_text(disk.read_text().replace("unit: m/s^2}", "unit: m/s}"))
+    done = run_derive("check", "string_wrapped_disk", library=library)
+    assert done.returncode == 1
+    assert "0 passed, 1 failed" in done.stdout and "FAILED string_wrapped_disk" in done.stdout
