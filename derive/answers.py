@@ -19,7 +19,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import inertia, units
-from derive.mechanics import events, joints, lagrange, newton_euler, orbits, paths
+from derive.mechanics import events, joints, lagrange, newton_euler, orbits, paths, top
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
@@ -261,6 +261,27 @@ class Solution:
         expr = expr.replace(lambda e: e.is_Pow and e.base == 0 and holds(e.exp > 0), lambda e: sp.Integer(0))
         return tidy(expr)
 
+    def _top_arguments(self) -> tuple:
+        t = self.scene.top
+        return (t.mass, self.scene.gravity.g, t.pivot_distance, t.transverse_inertia, t.spin_inertia, t.spin, t.tilt)
+
+    def _top(self, detail: str, route: str = "lagrange") -> sp.Expr:
+        if detail == "precession.fast_top":
+            return top.fast_top_limit(*self._top_arguments())
+        slow, fast = top.roots(*self._top_arguments(), route)
+        return slow if detail == "precession.slow" else fast
+
+    def conditions(self) -> list[tuple[sp.Expr, str]]:
+        """Expressions that must not be negative for the answers to exist, with what they mean."""
+        result = []
+        if any(a.quantity.kind == "top" and a.quantity.detail != "precession.fast_top" for a in self.problem.asks.values()):
+            t = self.scene.top
+            result.append((tidy(t.spin_inertia**2 * t.spin**2
+                                - 4 * t.transverse_inertia * t.mass * self.scene.gravity.g * t.pivot_distance
+                                * sp.cos(t.tilt)),
+                           "no steady precession: the spin is too slow (I3^2 w^2 < 4 I1 m g R cos(theta))"))
+        return result
+
     def _position(self, body: str) -> sp.Matrix:
         motion = self.scene.motions.get(body)
         return sp.Matrix(motion.position) if motion else sp.zeros(2, 1)
@@ -300,6 +321,8 @@ class Solution:
             result = tidy(offset[0 if ask.quantity.detail == "x" else 1])
         elif ask.quantity.kind == "system":
             result = self._system(ask.quantity.detail, "sum")
+        elif ask.quantity.kind == "top":
+            result = self._top(ask.quantity.detail)
         else:
             result = self._route_expression(ask, "lagrange")
         for size in ask.small:
@@ -437,6 +460,8 @@ class Solution:
             result.append(self._tensor_check())
         if "path" in kinds:
             result.append(self._path_check())
+        if "top" in kinds:
+            result.append(self._top_check())
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
                 check = self._parallel_axis_check(ask)
@@ -541,6 +566,17 @@ class Solution:
                                    "from the tensor")
             compared.append(name)
         return Check("tensor_vs_integral", True, "symbolic", ", ".join(compared) or "no derived moment")
+
+    def _top_check(self) -> Check:
+        """Lagrange's and Newton–Euler's (dH/dt = torque) precession conditions agree; the fast-top
+        rate's relative error against the slow root is reported."""
+        conditions = [top.precession_condition(*self._top_arguments(), route) for route in ROUTES]
+        if agree(*conditions) is None:
+            raise CheckFailure(f"{self.problem.id}: the precession conditions differ: {conditions}")
+        slow = self._top("precession.slow")
+        error = tidy(self._top("precession.fast_top") / slow - 1)
+        return Check("lagrange_vs_newton_euler", True, "symbolic",
+                     f"precession conditions agree; fast-top rate / slow root - 1 = {sp.sstr(error)}")
 
     def _path_check(self) -> Check:
         """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""

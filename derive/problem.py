@@ -23,7 +23,7 @@ import yaml
 from derive import expr, inertia, library, units
 from derive.errors import InputError
 from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
-                          Orbit, Path, Pin, Quantity, Scene, Stick, WoundString, parse_quantity)
+                          Orbit, Path, Pin, Quantity, Scene, Stick, Top, WoundString, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -512,12 +512,13 @@ def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> W
 
 
 def _scene(reader: _Reader, raw) -> Scene:
-    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit", "events"))
+    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit", "events", "top"))
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
+    top = _top(reader, raw["top"]) if "top" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
-    if not bodies_raw and orbit is None:
-        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit)")
+    if not bodies_raw and orbit is None and top is None:
+        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, or a top)")
     bodies, pins = {}, []
     for name, spec in bodies_raw.items():
         if not isinstance(name, str) or not name.isidentifier():
@@ -566,7 +567,24 @@ def _scene(reader: _Reader, raw) -> Scene:
     if moving and not events:
         raise reader.fail(f"scene.bodies.{moving[0]}", "velocities and spins describe the state before an event: "
                           "add the event")
-    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events)
+    if top is not None and gravity is None:
+        raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
+    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events, top)
+
+
+def _top(reader: _Reader, raw) -> Top:
+    field = "scene.top"
+    raw = reader.mapping(raw, field, required=("mass", "pivot_distance", "spin_inertia", "spin"),
+                         optional=("transverse_inertia", "tilt"))
+    transverse = (reader.positive(raw["transverse_inertia"], f"{field}.transverse_inertia", "kg*m^2", "a moment of inertia")
+                  if "transverse_inertia" in raw else reader.unspecified("I_transverse", "kg*m^2"))
+    tilt = (reader.dimensioned(raw["tilt"], f"{field}.tilt", "rad", "a tilt") if "tilt" in raw
+            else reader.unspecified("tilt", "rad"))
+    return Top(reader.positive(raw["mass"], f"{field}.mass", "kg", "a mass"),
+               reader.positive(raw["pivot_distance"], f"{field}.pivot_distance", "m", "a distance"),
+               reader.positive(raw["spin_inertia"], f"{field}.spin_inertia", "kg*m^2", "a moment of inertia"),
+               transverse, tilt,
+               reader.positive(raw["spin"], f"{field}.spin", "rad/s", "a spin"))
 
 
 def _orbit(reader: _Reader, raw) -> Orbit:

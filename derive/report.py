@@ -39,6 +39,10 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         }
         for name, p in problem.parameters.items()
     }
+    for condition, message in solution.conditions():
+        value = numeric.evaluate(condition, values, 15)
+        if value is not None and float(value) < 0:
+            raise problem.error("parameters", message)
     answers = {}
     for name, ask in problem.asks.items():
         expression = solution.expression(name)

@@ -275,6 +275,22 @@ Event = Stick | InternalTurn
 
 
 @dataclass(frozen=True)
+class Top:
+    """A symmetric top spinning on a fixed tip: mass, tip-to-center distance, moment about the
+    symmetry axis, moment about a transverse axis through the tip, tilt from the vertical, spin."""
+
+    mass: sp.Expr
+    pivot_distance: sp.Expr
+    spin_inertia: sp.Expr
+    transverse_inertia: sp.Expr
+    tilt: sp.Expr
+    spin: sp.Expr
+
+
+TOP_QUANTITIES = ("precession.slow", "precession.fast", "precession.fast_top")
+
+
+@dataclass(frozen=True)
 class Gravity:
     """A uniform gravitational field of strength `g` along -y."""
 
@@ -303,6 +319,7 @@ class Scene:
     orbit: Orbit | None = None
     motions: dict[str, Motion] = field(default_factory=dict)
     events: tuple[Event, ...] = ()
+    top: Top | None = None
 
     def constraint(self, name: str) -> Constraint:
         for c in self.constraints:
@@ -346,7 +363,7 @@ class Quantity:
     prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "event"
     (one of EVENT_QUANTITIES), "after" (a body's state after the event; AFTER_QUANTITIES),
     "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
-    "system" (inertia about the center of mass, reduced_mass of two bodies),
+    "system" (inertia about the center of mass, reduced_mass of two bodies), "top" (TOP_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate).
     """
 
@@ -374,6 +391,10 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     Quantity(kind='acceleration', target='ball', detail='y')
     """
     head, _, rest = path.partition(".")
+    if head == "top":
+        if scene.top is None or rest not in TOP_QUANTITIES:
+            raise ValueError(f"a scene's top has {', '.join(TOP_QUANTITIES)}")
+        return Quantity("top", None, rest)
     if head == "system":
         if rest not in ("inertia", "reduced_mass"):
             raise ValueError("the system has inertia (about its center of mass) and reduced_mass")
