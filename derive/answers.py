@@ -23,13 +23,13 @@ from derive.mechanics import events, joints, lagrange, newton_euler, orbits, pat
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.oscillation import Oscillation, OscillationError, small_oscillation
+from derive.mechanics.oscillation import Oscillation, OscillationError, exact_period, small_oscillation
 from derive.problem import Ask, Problem, ProblemError
 from derive.scene import TIME, Quantity
 
 ROUTES = ("lagrange", "newton_euler")
 #: Quantities that come out of the equations of motion (both routes).
-DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation"}
+DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation"}
 #: Quantities of the bodies and their arrangement, with no motion.
 STATIC_KINDS = {"inertia", "mass", "position_cm", "system"}
 
@@ -67,6 +67,13 @@ class Solution:
         except ValueError as error:
             raise self.problem.error("scene", str(error)) from None
 
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
+    def _exact_period(self, amplitude: sp.Expr, route: str):
+        try:
+            return exact_period(self.scene, self.derivations[route], amplitude)
+        except OscillationError as error:
+            raise self.problem.error("ask", str(error)) from None
+
     @cached_property
     def oscillations(self) -> dict[str, Oscillation]:
         try:
@@ -81,6 +88,8 @@ class Solution:
                 return self.oscillations[route].quantity(q.detail)
             except OscillationError as error:
                 raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
+        if q.kind == "oscillation":
+            return self._exact_period(ask.amplitude, route)[0]
         derivation = self.derivations[route]
         if q.kind == "acceleration":
             return derivation.solution[self.coordinates.of(q.target, q.detail).a]
@@ -361,6 +370,10 @@ class Solution:
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind == "oscillation":
+                for route in result:
+                    result[route] += self._exact_period(ask.amplitude, route)[1]
         for body, balance in self.energy_balances.items():
             result[f"energy of the {body}"] = list(balance.steps)
         for ask in self.problem.asks.values():
@@ -388,7 +401,7 @@ class Solution:
                     needed.add(forces["friction"])
                 if q.detail in ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom"):
                     needed |= {self.coordinates.of(q.target, k).a for k in ("x", "y")}
-            elif q.kind == "small_oscillation":
+            elif q.kind in ("small_oscillation", "oscillation"):
                 needed.add(self.oscillations["lagrange"].coordinate.a)
         return needed
 

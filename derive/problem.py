@@ -56,6 +56,7 @@ class Ask:
     zero_for: str | None = None
     small: tuple[sp.Symbol, ...] = ()
     shift: sp.Expr | None = None
+    amplitude: sp.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -618,7 +619,7 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
-                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift"))
+                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift", "amplitude"))
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -637,6 +638,7 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
             reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False), zero_for,
             _small(reader, spec.get("small"), f"{field}.small", scene),
             _shift(reader, spec.get("shift"), f"{field}.shift", quantity),
+            _amplitude(reader, spec.get("amplitude"), f"{field}.amplitude", quantity),
         )
     return result
 
@@ -648,6 +650,12 @@ def _shift(reader: _Reader, raw, field: str, quantity: Quantity) -> sp.Expr | No
     if quantity.kind != "inertia" or quantity.detail is None:
         raise reader.fail(field, "a shift moves a named inertia axis (give axis: too)")
     return reader.positive(raw, field, "m", "a shift")
+
+
+def _amplitude(reader: _Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
+    if (raw is None) != (quantity.kind != "oscillation"):
+        raise reader.fail(field, "oscillation.period needs an amplitude, and only it takes one")
+    return None if raw is None else reader.positive(raw, field, "rad", "an amplitude")
 
 
 def _small(reader: _Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ...]:

@@ -364,6 +364,7 @@ class Quantity:
     (one of EVENT_QUANTITIES), "after" (a body's state after the event; AFTER_QUANTITIES),
     "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
     "system" (inertia about the center of mass, reduced_mass of two bodies), "top" (TOP_QUANTITIES),
+    "oscillation" (period at the ask's amplitude),
     "small_oscillation" (omega, period, growth_rate).
     """
 
@@ -421,6 +422,10 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if getattr(scene.orbit, ORBIT_QUANTITIES[rest]) is None:
             raise ValueError(f"orbit.{rest} needs the orbit's {ORBIT_QUANTITIES[rest].replace('_', ' ')}")
         return Quantity("orbit", None, rest)
+    if head == "oscillation":
+        if rest != "period":
+            raise ValueError("an oscillation at a given amplitude has period (give amplitude:)")
+        return Quantity("oscillation", None, "period")
     if head == "small_oscillation":
         if rest not in ("omega", "period", "growth_rate"):
             raise ValueError("small_oscillation has omega, period and growth_rate (about an unstable equilibrium)")

@@ -72,3 +72,15 @@ def test_rolling_sphere_on_an_incline():
     friction = M * g * mpmath.sin(theta) - M * a          # along the slope: M a = M g sin - f
     assert close(answers["f"], friction)
     assert close(answers["mu_min"], friction / (M * g * mpmath.cos(theta)))
+
+
+def test_large_amplitude_period_against_the_series_and_a_near_inverted_swing():
+    small = mpmath.mpf("0.05")
+    answers, _ = solve("compound_pendulum_large", M=2, Rcm=0.3, I_cm=0.05, theta0=small)
+    series = answers["T_small"] * (1 + small**2 / 16 + 11 * small**4 / 3072)
+    assert abs(answers["T"] / series - 1) < mpmath.mpf("1e-9")   # next term ~ theta0^6
+    from derive import simulate
+    from derive.answers import Solution
+    wide = problem.load("compound_pendulum_large")
+    report = simulate.check(Solution(wide))
+    assert report.passed and "T" in report.compared

@@ -80,3 +80,31 @@ def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
         steps = (linear, Step("Unstable: the deviation grows as exp(a t) with growth rate",
                               (sp.Eq(sp.Symbol("a"), root(-stiffness)),)))
     return Oscillation(coordinate, stiffness, steps)
+
+
+def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tuple[sp.Expr, tuple[Step, ...]]:
+    """The period at any amplitude of a pendulum-like scene, q'' = -w0^2 sin(q).
+
+    Energy conservation from the turning point gives dt = dq / sqrt(2 w0^2 (cos q - cos A));
+    with sin(q/2) = k sin(chi), k = sin(A/2), the quarter period is K(k^2)/w0 (sympy's
+    elliptic_k takes the parameter m = k^2).
+    """
+    linear = small_oscillation(scene, derivation)
+    coords = Coordinates(scene)
+    dependent = joints.solve_gaps(scene, coords)
+    q = linear.coordinate.q
+    acceleration = derivation.solution[linear.coordinate.a].xreplace(dependent).xreplace({c.u: 0 for c in coords.all})
+    ratio = tidy(acceleration / sp.sin(q))
+    if q in ratio.free_symbols or not linear.stable:
+        raise OscillationError("the exact period is for pendulum-like motion, q'' = -w0^2 sin(q)")
+    rate = root(-ratio)
+    period = 4 * sp.elliptic_k(sp.sin(amplitude / 2) ** 2) / rate
+    chi, k = sp.symbols("chi k", positive=True)
+    steps = (
+        Step("The equation of motion has the pendulum form", (sp.Eq(linear.coordinate.a, ratio * sp.sin(q)),)),
+        Step("Energy from the turning point, and the substitution sin(q/2) = k sin(chi), k = sin(A/2)",
+             (sp.Eq(sp.Symbol("T"), 4 * sp.Integral(1 / (rate * sp.sqrt(1 - k**2 * sp.sin(chi) ** 2)),
+                                                     (chi, 0, sp.pi / 2))),)),
+        Step("The complete elliptic integral of the first kind", (sp.Eq(sp.Symbol("T"), period),)),
+    )
+    return period, steps
