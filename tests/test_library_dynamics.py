@@ -74,7 +74,7 @@ def test_rolling_sphere_on_an_incline():
     assert close(answers["mu_min"], friction / (M * g * mpmath.cos(theta)))
 
 
-def test_large_amplitude_period_against_the_series_and_a_near_inverted_swing():
+def test_large_amplitude_period_against_the_series_and_a_simulated_wide_swing():
     small = mpmath.mpf("0.05")
     answers, _ = solve("compound_pendulum_large", M=2, Rcm=0.3, I_cm=0.05, theta0=small)
     series = answers["T_small"] * (1 + small**2 / 16 + 11 * small**4 / 3072)
