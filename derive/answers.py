@@ -19,7 +19,8 @@ from functools import cached_property
 import sympy as sp
 
 from derive import inertia, units
-from derive.mechanics import events, joints, lagrange, newton_euler, orbits, paths, top
+from derive.mechanics import (events, gyroscope, joints, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
+                              rigid_rotation, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
@@ -270,6 +271,30 @@ class Solution:
         expr = expr.replace(lambda e: e.is_Pow and e.base == 0 and holds(e.exp > 0), lambda e: sp.Integer(0))
         return tidy(expr)
 
+    def _second_routes(self, q) -> tuple[sp.Expr, sp.Expr, str]:
+        """(answer, the same by a second route, the routes' names) for the small systems."""
+        if q.kind == "standing_wave":
+            w = self.scene.wave
+            if q.detail == "momentum":
+                value = quantum.momentum(w.planck, w.radius, w.wavelengths)
+                return value, quantum.angular_momentum(w.planck, w.radius, w.wavelengths, "operator") / w.radius, \
+                    "wave_vs_operator"
+            return (*(quantum.angular_momentum(w.planck, w.radius, w.wavelengths, r) for r in ("wave", "operator")),
+                    "wave_vs_operator")
+        if q.kind == "internal_forces":
+            count = self.scene.internal_forces
+            return (*(many_bodies.internal_torque(count, r) for r in ("direct", "pairs")), "direct_vs_pairs")
+        body = self.scene.bodies[q.target]
+        turn = self.scene.rotations[q.target]
+        arguments = (body.shape, body.mass, body.sizes, turn.rate, turn.tilt)
+        if q.detail == "angle_L_omega":
+            integral = rigid_rotation.angular_momentum(*arguments, "integral")
+            other = sp.acos(sp.refine(tidy(integral[2] / sp.sqrt(integral.dot(integral))), sp.Q.positive(sp.sin(turn.tilt))))
+            return rigid_rotation.angle_to_spin(*arguments), other, "tensor_vs_integral"
+        index = 0 if q.detail.endswith("x") else 2
+        return (*(rigid_rotation.angular_momentum(*arguments, r)[index] for r in ("tensor", "integral")),
+                "tensor_vs_integral")
+
     def _top_arguments(self) -> tuple:
         t = self.scene.top
         return (t.mass, self.scene.gravity.g, t.pivot_distance, t.transverse_inertia, t.spin_inertia, t.spin, t.tilt)
@@ -332,6 +357,13 @@ class Solution:
             result = self._system(ask.quantity.detail, "sum")
         elif ask.quantity.kind == "top":
             result = self._top(ask.quantity.detail)
+        elif ask.quantity.kind in ("standing_wave", "internal_forces", "rotation"):
+            result = self._second_routes(ask.quantity)[0]
+        elif ask.quantity.kind == "wheel":
+            w = self.scene.wheel
+            arguments = (w.torque, w.duration, w.inertia, w.spin)
+            result = (gyroscope.axis_turn(*arguments, "vector") if ask.quantity.detail == "axis_turn"
+                      else gyroscope.small_angle(*arguments))
         else:
             result = self._route_expression(ask, "lagrange")
         for size in ask.small:
@@ -475,6 +507,16 @@ class Solution:
             result.append(self._path_check())
         if "top" in kinds:
             result.append(self._top_check())
+        if "wheel" in kinds:
+            result.append(self._wheel_check())
+        agreed: dict[str, list[str]] = {}
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind in ("standing_wave", "internal_forces", "rotation"):
+                first, second, name = self._second_routes(ask.quantity)
+                if agree(first, second) is None:
+                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {first} one way, {second} the other")
+                agreed.setdefault(name, []).append(ask.name)
+        result += [Check(name, True, "symbolic", f"{', '.join(asks)} agree") for name, asks in agreed.items()]
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
                 check = self._parallel_axis_check(ask)
@@ -485,6 +527,9 @@ class Solution:
     def _dimension_check(self) -> Check:
         found = {}
         for name, ask in self.problem.asks.items():
+            if self.expressions[name] == 0:  # zero has every dimension
+                found[name] = ask.unit
+                continue
             dimension = units.expression_dimension(self.expressions[name], self.problem.symbol_units)
             wanted = units.dimension(units.parse_unit(ask.unit))
             if not units.same_dimension(dimension, wanted):
@@ -579,6 +624,17 @@ class Solution:
                                    "from the tensor")
             compared.append(name)
         return Check("tensor_vs_integral", True, "symbolic", ", ".join(compared) or "no derived moment")
+
+    def _wheel_check(self) -> Check:
+        """The vector route (L0 + tau dt) and the rate route (dphi/dt = tau_perp / |L|) agree; the
+        small-angle formula's relative error is reported."""
+        w = self.scene.wheel
+        arguments = (w.torque, w.duration, w.inertia, w.spin)
+        exact = gyroscope.axis_turn(*arguments, "vector")
+        if agree(exact, gyroscope.axis_turn(*arguments, "rate")) is None:
+            raise CheckFailure(f"{self.problem.id}: the two routes to the axis turn differ")
+        error = tidy(gyroscope.small_angle(*arguments) / exact - 1)
+        return Check("vector_vs_rate", True, "numeric", f"exact turns agree; small-angle / exact - 1 = {sp.sstr(error)}")
 
     def _top_check(self) -> Check:
         """Lagrange's and Newton–Euler's (dH/dt = torque) precession conditions agree; the fast-top

@@ -23,7 +23,8 @@ import yaml
 from derive import expr, inertia, library, units
 from derive.errors import InputError
 from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
-                          Orbit, Path, Pin, Quantity, Scene, Stick, Top, WoundString, parse_quantity)
+                          Orbit, Path, Pin, Quantity, Rotation, Scene, SpinningWheel, StandingWave, Stick,
+                          Top, WoundString, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -254,7 +255,7 @@ def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
                           optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "path",
-                                    *MOTION_KEYS, *all_sizes))
+                                    "rotation", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
@@ -513,13 +514,17 @@ def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> W
 
 
 def _scene(reader: _Reader, raw) -> Scene:
-    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit", "events", "top"))
+    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit", "events", "top",
+                                                 "spinning_wheel", "standing_wave", "internal_forces"))
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     top = _top(reader, raw["top"]) if "top" in raw else None
+    wheel = _wheel(reader, raw["spinning_wheel"]) if "spinning_wheel" in raw else None
+    wave = _wave(reader, raw["standing_wave"]) if "standing_wave" in raw else None
+    internal = _internal_forces(reader, raw["internal_forces"]) if "internal_forces" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
-    if not bodies_raw and orbit is None and top is None:
-        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, or a top)")
+    if not bodies_raw and all(s is None for s in (orbit, top, wheel, wave, internal)):
+        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a top, a spinning_wheel)")
     bodies, pins = {}, []
     for name, spec in bodies_raw.items():
         if not isinstance(name, str) or not name.isidentifier():
@@ -570,7 +575,44 @@ def _scene(reader: _Reader, raw) -> Scene:
                           "add the event")
     if top is not None and gravity is None:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
-    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events, top)
+    rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
+                 for n, spec in bodies_raw.items() if "rotation" in spec}
+    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events, top, wheel, wave,
+                 internal, rotations)
+
+
+def _wave(reader: _Reader, raw) -> StandingWave:
+    field = "scene.standing_wave"
+    raw = reader.mapping(raw, field, required=("radius", "planck"), optional=("wavelengths",))
+    n = reader.expression(raw.get("wavelengths", 1), f"{field}.wavelengths", {})
+    if not (n.is_integer and n.is_positive):
+        raise reader.fail(f"{field}.wavelengths", "a whole number of wavelengths, 1 or more")
+    return StandingWave(reader.positive(raw["radius"], f"{field}.radius", "m", "a radius"),
+                        reader.positive(raw["planck"], f"{field}.planck", "J*s", "Planck's constant"), n)
+
+
+def _internal_forces(reader: _Reader, raw) -> int:
+    raw = reader.mapping(raw, "scene.internal_forces", required=("bodies",))
+    if not isinstance(raw["bodies"], int) or not 2 <= raw["bodies"] <= 5:
+        raise reader.fail("scene.internal_forces.bodies", "a whole number of bodies from 2 to 5")
+    return raw["bodies"]
+
+
+def _rotation(reader: _Reader, raw, field: str, body: Body) -> Rotation:
+    if body.shape not in ("rod", "cylinder", "cone", "disk", "ring", "cylindrical_shell") or body.density is not None:
+        raise reader.fail(field, "a turning body is a uniform rod, or a body with a symmetry axis")
+    raw = reader.mapping(raw, field, required=("rate", "tilt"))
+    return Rotation(reader.positive(raw["rate"], f"{field}.rate", "rad/s", "a rotation rate"),
+                    reader.dimensioned(raw["tilt"], f"{field}.tilt", "rad", "a tilt"))
+
+
+def _wheel(reader: _Reader, raw) -> SpinningWheel:
+    field = "scene.spinning_wheel"
+    raw = reader.mapping(raw, field, required=("inertia", "spin", "torque", "duration"))
+    return SpinningWheel(reader.positive(raw["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia"),
+                         reader.positive(raw["spin"], f"{field}.spin", "rad/s", "a spin"),
+                         reader.positive(raw["torque"], f"{field}.torque", "N*m", "a torque"),
+                         reader.positive(raw["duration"], f"{field}.duration", "s", "a duration"))
 
 
 def _top(reader: _Reader, raw) -> Top:

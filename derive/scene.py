@@ -291,6 +291,46 @@ TOP_QUANTITIES = ("precession.slow", "precession.fast", "precession.fast_top")
 
 
 @dataclass(frozen=True)
+class SpinningWheel:
+    """A wheel spinning at `spin` (moment `inertia` about its axle) under a torque `torque`,
+    perpendicular to the spin axis and fixed in direction, for a time `duration`."""
+
+    inertia: sp.Expr
+    spin: sp.Expr
+    torque: sp.Expr
+    duration: sp.Expr
+
+
+WHEEL_QUANTITIES = ("axis_turn", "axis_turn_small_angle")
+
+
+@dataclass(frozen=True)
+class StandingWave:
+    """A particle whose de Broglie wavelength fits `wavelengths` times around a circle (§8)."""
+
+    radius: sp.Expr
+    planck: sp.Expr
+    wavelengths: sp.Expr
+
+
+@dataclass(frozen=True)
+class Rotation:
+    """A body turning at `rate` about the fixed z axis through its center of mass, its long
+    (or symmetry) axis tilted by `tilt` from z."""
+
+    rate: sp.Expr
+    tilt: sp.Expr
+
+
+#: Scene-level systems and what each can be asked: (scene attribute, quantities).
+SYSTEMS = {
+    "standing_wave": ("wave", ("momentum", "angular_momentum")),
+    "internal_forces": ("internal_forces", ("torque",)),
+}
+ROTATION_QUANTITIES = ("angular_momentum.x", "angular_momentum.z", "angle_L_omega")
+
+
+@dataclass(frozen=True)
 class Gravity:
     """A uniform gravitational field of strength `g` along -y."""
 
@@ -320,6 +360,10 @@ class Scene:
     motions: dict[str, Motion] = field(default_factory=dict)
     events: tuple[Event, ...] = ()
     top: Top | None = None
+    wheel: SpinningWheel | None = None
+    wave: StandingWave | None = None
+    internal_forces: int | None = None
+    rotations: dict[str, Rotation] = field(default_factory=dict)
 
     def constraint(self, name: str) -> Constraint:
         for c in self.constraints:
@@ -364,7 +408,8 @@ class Quantity:
     (one of EVENT_QUANTITIES), "after" (a body's state after the event; AFTER_QUANTITIES),
     "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
     "system" (inertia about the center of mass, reduced_mass of two bodies), "top" (TOP_QUANTITIES),
-    "oscillation" (period at the ask's amplitude),
+    "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
+    ("standing_wave", "internal_forces"), "rotation" (a turning body; ROTATION_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate).
     """
 
@@ -392,6 +437,19 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     Quantity(kind='acceleration', target='ball', detail='y')
     """
     head, _, rest = path.partition(".")
+    if head in SYSTEMS:
+        attribute, allowed = SYSTEMS[head]
+        if getattr(scene, attribute) is None or rest not in allowed:
+            raise ValueError(f"a scene's {head} has {', '.join(allowed)}")
+        return Quantity(head, None, rest)
+    if head in scene.rotations:
+        if rest not in ROTATION_QUANTITIES:
+            raise ValueError(f"a turning body has {', '.join(ROTATION_QUANTITIES)}")
+        return Quantity("rotation", head, rest)
+    if head == "spinning_wheel":
+        if scene.wheel is None or rest not in WHEEL_QUANTITIES:
+            raise ValueError(f"a scene's spinning_wheel has {', '.join(WHEEL_QUANTITIES)}")
+        return Quantity("wheel", None, rest)
     if head == "top":
         if scene.top is None or rest not in TOP_QUANTITIES:
             raise ValueError(f"a scene's top has {', '.join(TOP_QUANTITIES)}")
