@@ -114,7 +114,12 @@ class _ProblemVariants:
             for name, p in self.problem.parameters.items()
         }
 
-    def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str]:
+    def shown(self, name: str, value: str | None) -> str:
+        """LaTeX of an answer: its number, or its expression when it has none (a general result)."""
+        return number_latex(value) if value is not None else sp.latex(self.solution.expressions[name])
+
+    def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
+        """Each answer's value to its significant figures; None for a general (symbolic) result."""
         values = self.si_values(draw)
         result = {}
         for name, ask in self.problem.asks.items():
@@ -169,7 +174,7 @@ def _solutions_context(item: _ProblemVariants) -> dict:
             "number": number,
             "given": [f"${sp.latex(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
                       for n, p in problem.parameters.items()],
-            "results": [{"symbol": sp.latex(sp.Symbol(n)), "value": number_latex(results[n]),
+            "results": [{"symbol": sp.latex(sp.Symbol(n)), "value": item.shown(n, results[n]),
                          "unit": units.latex_unit(a.unit)} for n, a in problem.asks.items()],
         })
     checks = [f"{c.name.replace('_', ' ')}: {c.detail} ({c.method})" for c in solution.checks()]
@@ -187,12 +192,13 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
             entry["problems"][item.problem.id] = {
                 "parameters": {n: {"value": numeric.significant(values[n], p.sig_figs), "unit": p.unit}
                                for n, p in item.problem.parameters.items()},
-                "answers": {n: {"value": answers[n], "unit": a.unit, "meaning": a.meaning}
-                            for n, a in item.problem.asks.items()},
+                "answers": {n: {"value": answers[n], "expr": sp.sstr(item.solution.expressions[n]), "unit": a.unit,
+                                "meaning": a.meaning} for n, a in item.problem.asks.items()},
             }
             for n, a in item.problem.asks.items():
-                rows.append({"variant": number, "problem": item.problem.id, "answer": n, "value": answers[n],
-                             "unit": a.unit, "meaning": a.meaning})
+                rows.append({"variant": number, "problem": item.problem.id, "answer": n,
+                             "value": answers[n] if answers[n] is not None else sp.sstr(item.solution.expressions[n]),
+                             "unit": a.unit, "meaning": a.meaning, "latex": item.shown(n, answers[n])})
         key["variants"].append(entry)
     return rows, key
 
@@ -218,7 +224,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
         for n in range(1, variants + 1)
     ]
     rows, key = _keys(problem_set, prepared, variants, seed)
-    key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${number_latex(r['value'])}$",
+    key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
     out.parent.mkdir(parents=True, exist_ok=True)
@@ -234,7 +240,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
         ]
         buffer = io.StringIO()
         writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "unit", "meaning"],
-                                lineterminator="\n")
+                                lineterminator="\n", extrasaction="ignore")
         writer.writeheader()
         writer.writerows(rows)
         products = texs + [_write(staging, "key.csv", buffer.getvalue()),

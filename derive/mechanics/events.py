@@ -60,8 +60,9 @@ class _Event:
             raise EventError("pins at different points")
         self.unknown = {}
         for name, body in scene.bodies.items():
-            vx, vy = sp.symbols(f"vx'_{name} vy'_{name}", real=True)
-            omega = sp.Symbol(f"omega'_{name}", real=True) if body.rotates else sp.Integer(0)
+            # "prime": sympy typesets these as v'_x ... and omega'; the names stay readable as text.
+            vx, vy = sp.symbols(f"vxprime_{name} vyprime_{name}", real=True)
+            omega = sp.Symbol(f"omegaprime_{name}", real=True) if body.rotates else sp.Integer(0)
             self.unknown[name] = (vx, vy, omega)
 
     def position(self, name: str) -> sp.Matrix:
