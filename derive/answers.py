@@ -493,6 +493,7 @@ class Solution:
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
         if kinds & DYNAMIC_KINDS:
             result.append(self._routes_check())
+            result.append(self._work_energy_check())
         if kinds & {"event", "after"}:
             result.append(self._event_check())
         if "orbit" in kinds:
@@ -561,6 +562,34 @@ class Solution:
         asked = "symbolic" if methods <= {"symbolic"} else "symbolic or numeric"
         return Check("lagrange_vs_newton_euler", True, f"answers {asked}, all unknowns numeric",
                      f"answers and {len(lag.unknowns)} accelerations and forces agree")
+
+    def energy_ledger(self) -> dict[str, sp.Expr]:
+        """Kinetic energy (translational, rotational), potential energy and the power of the
+        non-conservative applied forces, in the coordinates of the scene."""
+        coords = self.coordinates
+        translational = sum((b.mass * (coords.of(n, "x").u ** 2 + coords.of(n, "y").u ** 2) / 2
+                             for n, b in self.scene.bodies.items()), sp.Integer(0))
+        rotational = sum((b.inertia * coords.angular_velocity(n) ** 2 / 2
+                          for n, b in self.scene.bodies.items() if b.rotates), sp.Integer(0))
+        _, potential = lagrange.energies(self.scene, coords)
+        power = sp.trigsimp(sp.expand(sum(((p.force * p.direction).dot(coords.material_velocity(p.body, p.offset))
+                                           for p in self.scene.pulls), sp.Integer(0))))
+        return {"kinetic_translational": translational, "kinetic_rotational": rotational,
+                "potential": potential, "power_nonconservative": power}
+
+    def _work_energy_check(self) -> Check:
+        """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,
+        on motions the constraints allow: the constraint forces do no work."""
+        ledger = self.energy_ledger()
+        coords = self.coordinates
+        rate = coords.ddt(ledger["kinetic_translational"] + ledger["kinetic_rotational"] + ledger["potential"])
+        solved = self.derivations["lagrange"].solution.raw
+        for state in self._states_on_constraints():
+            left = rate.xreplace({c.a: solved[c.a] for c in coords.all}).xreplace(state)
+            if agree(left, ledger["power_nonconservative"].xreplace(state), symbolic=False) is None:
+                raise CheckFailure(f"{self.problem.id}: the work-energy theorem fails")
+        kind = "conserved" if ledger["power_nonconservative"] == 0 else "changes by the work of the applied forces"
+        return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work")
 
     def _states_on_constraints(self, count: int = 2) -> list[dict[sp.Symbol, sp.Expr]]:
         """Motions the constraints allow: the reference configuration (where every gap vanishes)

@@ -12,7 +12,7 @@ import json
 import sympy as sp
 
 from derive import numeric, units
-from derive.answers import Solution
+from derive.answers import DYNAMIC_KINDS, Solution
 from derive.problem import Problem
 
 _ROUTE_TITLES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler", "integration": "Integration"}
@@ -61,6 +61,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         if route in ("lagrange", "newton_euler")
     }
     checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
+    kinds = {a.quantity.kind for a in problem.asks.values()}
+    energy = ({k: sp.sstr(v) for k, v in solution.energy_ledger().items()} if kinds & DYNAMIC_KINDS else {})
     return {
         "id": problem.id,
         "title": problem.title,
@@ -69,6 +71,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         "answers": answers,
         "equations_of_motion": equations,
         "checks": checks,
+        "energy": energy,
         "steps": {
             route: [{"text": s.text, "latex": [sp.latex(e) for e in s.equations]} for s in route_steps]
             for route, route_steps in steps.items()
@@ -93,6 +96,9 @@ def as_text(result: dict) -> str:
         value = f" = {a['value']}{unit}" if a["value"] is not None else f"  [{a['unit']}]"
         lines.append(f"  {name:<{width}} = {a['expr']}{value}")
         lines.append(f"  {'':<{width}}   ({a['meaning']})")
+    if result["energy"]:
+        lines += ["", "Energy:"]
+        lines += [f"  {k.replace('_', ' ')}: {v}" for k, v in result["energy"].items()]
     lines += ["", "Checks:"]
     for name, c in result["checks"].items():
         mark = "ok" if c["passed"] else "FAILED"

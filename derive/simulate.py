@@ -1,10 +1,11 @@
 """Numerical simulation of a scene's equations of motion, to check the closed forms.
 
-The solved accelerations (Lagrange's route) are integrated with scipy's DOP853 from a state
-the constraints allow, at the middle of the parameter ranges. The trajectory must keep every
-constraint gap at zero, conserve T + V when every force is conservative, and agree with the
-asked answers: a constant acceleration with the change of velocity over the run, a
-small-oscillation period with the time between zero crossings.
+The solved accelerations (Lagrange's route) are integrated with scipy's DOP853 from a random
+state the constraints allow, at the middle of the parameter ranges. The trajectory must keep
+every constraint gap at zero, obey the work-energy theorem (T + V changes by the work of the
+applied pulls, the ideal constraints doing none), and agree with the asked answers: a
+constant acceleration with the change of velocity over the run, a period with the time
+between zero crossings.
 
 >>> from derive.problem import load
 >>> from derive.answers import Solution
@@ -51,16 +52,23 @@ def _values(solution: Solution) -> dict[sp.Symbol, sp.Expr]:
     return point
 
 
+def _power(solution: Solution) -> sp.Expr:
+    """Power of the non-conservative applied forces (the pulls): sum of F . v at their points."""
+    coords = solution.coordinates
+    return sum((p.force * p.direction).dot(coords.material_velocity(p.body, p.offset)) for p in solution.scene.pulls)
+
+
 def _rhs(solution: Solution, values):
+    """d/dt of (q, u, W): velocities, the solved accelerations, and the power of the pulls."""
     coords = solution.coordinates
     lagrange = solution.derivations["lagrange"]
     state = [c.q for c in coords.all] + [c.u for c in coords.all]
-    accelerations = [lagrange.solution.raw[c.a].xreplace(values) for c in coords.all]
-    function = sp.lambdify(state, accelerations, "numpy")
+    rates = [lagrange.solution.raw[c.a].xreplace(values) for c in coords.all] + [sp.sympify(_power(solution)).xreplace(values)]
+    function = sp.lambdify(state, rates, "numpy")
     n = len(coords.all)
 
     def rhs(t, y):
-        return np.concatenate([y[n:], np.asarray(function(*y), dtype=float).ravel()])
+        return np.concatenate([y[n:2 * n], np.asarray(function(*y[:2 * n]), dtype=float).ravel()])
     return rhs, state
 
 
@@ -76,7 +84,10 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
     kinetic, potential = energies(solution.scene, coords)
     energy = sp.lambdify(state, (kinetic + potential).xreplace(values), "numpy")
 
-    start = np.zeros(2 * n)  # the reference configuration, at rest: every gap vanishes there
+    # The reference configuration (every gap vanishes there), moving with random velocities the
+    # constraints allow; the last entry accumulates the work of the pulls.
+    admissible = solution._states_on_constraints(count=1)[0]
+    start = np.array([0.0] * n + [float(sp.N(admissible[c.u].xreplace(values))) / 4 for c in coords.all] + [0.0])
     run = solve_ivp(rhs, (0, duration), start, method="DOP853", rtol=1e-11, atol=1e-13, dense_output=True)
     if not run.success:
         report.fail(f"integration failed: {run.message}")
@@ -85,11 +96,11 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
     scale = 1 + float(np.max(np.abs(run.y[:n])))
     if drift > TOLERANCE * scale:
         report.fail(f"constraints drift by {drift:.2e}")
-    if not solution.scene.pulls:
-        energies_along = [energy(*run.y[:, i]) for i in range(run.y.shape[1])]
-        spread = max(energies_along) - min(energies_along)
-        if spread > TOLERANCE * (1 + max(abs(e) for e in energies_along)):
-            report.fail(f"energy changes by {spread:.2e} with only conservative forces")
+    # The work-energy theorem: T + V changes by the work of the pulls (the constraints do none).
+    change = [energy(*run.y[:2 * n, i]) - energy(*run.y[:2 * n, 0]) - run.y[2 * n, i] for i in range(run.y.shape[1])]
+    size = 1 + max(abs(energy(*run.y[:2 * n, i])) for i in range(run.y.shape[1]))
+    if max(abs(c) for c in change) > TOLERANCE * size:
+        report.fail(f"the work-energy theorem fails by {max(abs(c) for c in change):.2e}")
     def mean_acceleration(body: str, kind: str) -> float:
         index = coords.all.index(coords.of(body, kind))
         return (run.y[n + index, -1] - run.y[n + index, 0]) / duration
@@ -127,7 +138,7 @@ def _period(solution: Solution, rhs, values, amplitude: float) -> float:
     n = len(coords.all)
     dependent = joints.solve_gaps(solution.scene, coords)
     position = {linear.coordinate.q: amplitude}
-    start = np.zeros(2 * n)
+    start = np.zeros(2 * n + 1)
     for i, c in enumerate(coords.all):
         expr = dependent.get(c.q, c.q).xreplace(values)
         start[i] = float(sp.N(expr.xreplace({linear.coordinate.q: amplitude, **{k: 0 for k in coords.state}})

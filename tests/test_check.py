@@ -3,7 +3,7 @@ import sympy as sp
 
 from conftest import copy_library, run_derive
 from derive import simulate
-from derive.answers import Solution
+from derive.answers import CheckFailure, Solution
 from derive.problem import load
 
 
@@ -36,3 +36,24 @@ def test_check_command_fails_with_exit_1(tmp_path):
     done = run_derive("check", "string_wrapped_disk", library=library)
     assert done.returncode == 1
     assert "0 passed, 1 failed" in done.stdout and "FAILED string_wrapped_disk" in done.stdout
+
+
+def test_the_work_energy_theorem_is_checked(monkeypatch):
+    solution = Solution(load("tugged_spool"))
+    assert any(c.name == "work_energy" for c in solution.checks())
+    ledger = solution.energy_ledger()
+    assert ledger["power_nonconservative"] != 0
+    wrong = {**ledger, "power_nonconservative": ledger["power_nonconservative"] * 2}
+    monkeypatch.setattr(Solution, "energy_ledger", lambda self: wrong)
+    try:
+        Solution(load("tugged_spool"))._work_energy_check()
+    except CheckFailure as failure:
+        assert "work-energy" in str(failure)
+    else:
+        raise AssertionError("a wrong power passed the work-energy check")
+
+
+def test_simulation_checks_the_work_of_the_pull(monkeypatch):
+    monkeypatch.setattr(simulate, "_power", lambda solution: sp.Integer(0))  # pretend the pull does no work
+    report = simulate.check(Solution(load("tugged_spool")))
+    assert not report.passed and "work-energy" in report.notes[0]
