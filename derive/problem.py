@@ -24,7 +24,7 @@ from derive import expr, inertia, library, units
 from derive.errors import InputError
 from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
                           Orbit, Path, Pin, Quantity, Rotation, Scene, SpinningWheel, StandingWave, Stick,
-                          Top, WoundString, parse_quantity)
+                          Top, WoundString, Bounce, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -385,17 +385,24 @@ def _events(reader: _Reader, raw, bodies: dict[str, Body]) -> tuple:
     result = []
     for i, spec in enumerate(raw):
         field = f"scene.events[{i}]"
-        spec = reader.mapping(spec, field, optional=("stick", "internal_turn"))
+        spec = reader.mapping(spec, field, optional=("stick", "internal_turn", "bounce"))
         if len(spec) != 1:
-            raise reader.fail(field, "expected one event kind (stick, internal_turn)")
+            raise reader.fail(field, "expected one event kind (stick, bounce, internal_turn)")
         (kind, detail), = spec.items()
-        keys = ("body", "to") if kind == "stick" else ("body", "relative_to", "angle")
+        keys = {"stick": ("body", "to"), "bounce": ("body", "off", "restitution"),
+                "internal_turn": ("body", "relative_to", "angle")}[kind]
         detail = reader.mapping(detail, f"{field}.{kind}", required=keys)
         for key in keys[:2]:
             if detail[key] not in bodies:
                 raise reader.fail(f"{field}.{kind}.{key}", f"no body {detail[key]!r} (bodies: {', '.join(bodies)})")
         if kind == "stick":
             result.append(Stick(f"event{i}", detail["body"], detail["to"]))
+        elif kind == "bounce":
+            e = reader.dimensioned(detail["restitution"], f"{field}.bounce.restitution", "1", "a restitution")
+            bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]
+            if e.is_negative or (not e.free_symbols and e > 1) or any(b[0] < 0 or b[1] > 1 for b in bounds):
+                raise reader.fail(f"{field}.bounce.restitution", "a coefficient of restitution lies in [0, 1]")
+            result.append(Bounce(f"event{i}", detail["body"], detail["off"], e))
         else:
             angle = reader.dimensioned(detail["angle"], f"{field}.{kind}.angle", "rad", "an angle")
             result.append(InternalTurn(f"event{i}", detail["body"], detail["relative_to"], angle))

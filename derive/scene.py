@@ -271,7 +271,19 @@ class InternalTurn:
     angle: sp.Expr
 
 
-Event = Stick | InternalTurn
+@dataclass(frozen=True)
+class Bounce:
+    """A point mass `body` strikes `off` at a smooth contact: the impulse is along the contact
+    normal (radial on a round body, across a rod), and the normal relative velocity reverses,
+    scaled by the coefficient of restitution (1 elastic, 0 they move together along the normal)."""
+
+    name: str
+    body: str
+    off: str
+    restitution: sp.Expr
+
+
+Event = Stick | InternalTurn | Bounce
 
 
 @dataclass(frozen=True)

@@ -90,3 +90,33 @@ def test_notes_6_5_elroy_numerator_is_I2():
     assert math.isclose(theta1, -2 * math.pi * I2 / (I1 + I2), rel_tol=1e-6)
     assert math.isclose(float(answers["dtheta"]), theta1, rel_tol=1e-6)
     assert not math.isclose(theta1, -2 * math.pi * I1 / (I1 + I2), rel_tol=1e-2)
+
+
+def test_bounce_off_a_rod_against_the_effective_mass_formula():
+    m, M, L, d, v = (mpmath.mpf(x) for x in ("0.2", "1.1", "0.9", "0.2", "3"))
+    for e in ("0", "0.6", "1"):
+        answers, result = solve("restitution_rod", m="0.2", M="1.1", L="0.9", d="0.2", v="3", e=e)
+        ee = mpmath.mpf(e)
+        inertia = M * L**2 / 12
+        impulse = (1 + ee) * v / (1 / m + 1 / M + d**2 / inertia)   # along +y on the rod... on the ball
+        assert close(answers["V"], -impulse / M)
+        assert close(answers["omega"], -impulse * d / inertia)
+        assert close(answers["v_after"], -v + impulse / m)
+        reduced = 1 / (1 / m + 1 / M + d**2 / inertia)
+        if ee == 1:
+            assert answers["dE"] == 0            # elastic: exactly no loss, no cancellation
+        else:
+            assert close(answers["dE"], -(1 - ee**2) * reduced * v**2 / 2, 14)
+        assert result["checks"]["conservation_vs_impulses"]["passed"]
+    # e = 0: the ball and the struck point of the rod leave with the same normal velocity.
+    answers, _ = solve("restitution_rod", m="0.2", M="1.1", L="0.9", d="0.2", v="3", e="0")
+    assert close(answers["v_after"], answers["V"] + answers["omega"] * d, 14)
+
+
+def test_restitution_outside_0_1_is_refused(tmp_path):
+    from conftest import copy_library, run_derive
+    library = copy_library(tmp_path)
+    path = library / "conservation" / "restitution_rod.yaml"
+    path.write_text(path.read_text().replace("range: [0, 1], sig_figs: 2}", "range: [0, 1.5], sig_figs: 2}"))
+    done = run_derive("solve", "restitution_rod", library=library)
+    assert done.returncode == 2 and "coefficient of restitution lies in [0, 1]" in done.stderr

@@ -1,8 +1,10 @@
-"""Events: a point mass sticking to a body, and a body turning on a shared axle.
+"""Events: a point mass sticking to or bouncing off a body, and a body turning on a shared axle.
 
-A sticky event is solved twice. By conservation: the total momentum in the directions no
-pin acts, and the angular momentum about the pin (or the origin), with the bodies moving
-rigidly together afterwards. By impulse and momentum per body (Newton–Euler): the contact
+An impact is solved twice. By conservation: the total momentum in the directions no pin acts,
+and the angular momentum about the pin (or the origin), with the bodies moving rigidly
+together afterwards (sticking), or with the normal relative velocity reversed and scaled by
+the coefficient of restitution and the tangential velocity of the point unchanged (a smooth
+bounce). By impulse and momentum per body (Newton–Euler): the contact
 impulse and the pin impulses are unknowns, m dv = J and I d(omega) = r x J for each body.
 An internal turn (Elroy's beanie) is solved by conservation of angular momentum about the
 axle, and by torque balance with an unknown internal torque, integrated from rest.
@@ -23,7 +25,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics.derivation import Step, solve_linear, tidy
-from derive.scene import InternalTurn, Motion, Pin, Scene, Stick
+from derive.scene import Bounce, InternalTurn, Motion, Pin, Scene, Stick
 
 
 class EventError(ValueError):
@@ -48,12 +50,12 @@ class _Event:
     """The bodies' states before, unknown velocities after, and the kinematics of sticking."""
 
     def __init__(self, scene: Scene):
-        sticks = [e for e in scene.events if isinstance(e, Stick)]
-        if len(sticks) != 1 or len(scene.events) != 1:
-            raise EventError("one sticky event at a time")
-        self.scene, self.stick = scene, sticks[0]
-        if scene.bodies[self.stick.body].rotates:
-            raise EventError("the body that sticks is a point mass")
+        impacts = [e for e in scene.events if isinstance(e, (Stick, Bounce))]
+        if len(impacts) != 1 or len(scene.events) != 1:
+            raise EventError("one impact at a time")
+        self.scene, self.impact = scene, impacts[0]
+        if scene.bodies[self.impact.body].rotates:
+            raise EventError("the striking body is a point mass")
         self.before = {name: scene.motions.get(name, Motion()) for name in scene.bodies}
         self.pins = [c for c in scene.constraints if isinstance(c, Pin)]
         if len({tuple(self._pin_point(p)) for p in self.pins}) > 1:
@@ -80,12 +82,39 @@ class _Event:
         r = point - self.position(name)
         return sp.Matrix([vx - omega * r[1], vy + omega * r[0]])
 
+    @property
+    def target(self) -> str:
+        return self.impact.to if isinstance(self.impact, Stick) else self.impact.off
+
+    def normal(self) -> sp.Matrix:
+        """Unit normal of a smooth contact: radial on a round body, across a rod (along y)."""
+        body = self.scene.bodies[self.target]
+        if "radius" in body.sizes:
+            out = self.position(self.impact.body) - self.position(self.target)
+            return out / sp.sqrt(out.dot(out))
+        if body.shape == "rod":
+            return sp.Matrix([0, 1])
+        raise EventError(f"a bounce off a {body.shape}: the contact normal is defined for round bodies and rods")
+
+    def relative_velocity(self, velocities, point: sp.Matrix) -> sp.Matrix:
+        """Velocity of the point mass relative to the target's material point where they touch."""
+        vx, vy, omega = velocities[self.target]
+        r = point - self.position(self.target)
+        target = sp.Matrix([vx - omega * r[1], vy + omega * r[0]])
+        return sp.Matrix(velocities[self.impact.body][:2]) - target
+
     def after_conditions(self) -> list[sp.Eq]:
-        """Sticking: the point moves with the body's material point there; pins stay still."""
-        point = self.position(self.stick.body)
-        stuck = self.velocity_after(self.stick.to, point) - sp.Matrix(self.unknown[self.stick.body][:2])
+        """Sticking: the point moves with the body's material point there. Bouncing: the normal
+        relative velocity reverses, scaled by e. Pins stay still."""
+        point = self.position(self.impact.body)
+        if isinstance(self.impact, Stick):
+            conditions = list(self.velocity_after(self.impact.to, point) - sp.Matrix(self.unknown[self.impact.body][:2]))
+        else:
+            n = self.normal()
+            before = self.relative_velocity(self.states_before(), point).dot(n)
+            conditions = [self.relative_velocity(self.unknown, point).dot(n) + self.impact.restitution * before]
         pinned = [v for p in self.pins for v in self.velocity_after(p.body, self._pin_point(p))]
-        return [sp.Eq(e, 0) for e in [*stuck, *pinned]]
+        return [sp.Eq(e, 0) for e in [*conditions, *pinned]]
 
     def momentum(self, velocities) -> sp.Matrix:
         return sum((self.scene.bodies[n].mass * sp.Matrix(v[:2]) for n, v in velocities.items()), sp.zeros(2, 1))
@@ -117,6 +146,11 @@ def by_conservation(scene: Scene) -> EventResult:
     event = _Event(scene)
     before, after = event.states_before(), event.unknown
     equations = event.after_conditions()
+    if isinstance(event.impact, Bounce):  # a smooth contact: the point keeps its tangential velocity
+        n = event.normal()
+        tangent = sp.Matrix([-n[1], n[0]])
+        point = event.impact.body
+        equations.append(sp.Eq(sp.Matrix(after[point][:2]).dot(tangent), sp.Matrix(before[point][:2]).dot(tangent)))
     if not event.pins:
         equations += [sp.Eq(a, b) for a, b in zip(event.momentum(before), event.momentum(after))]
     equations.append(sp.Eq(event.angular_momentum(before, event.pivot), event.angular_momentum(after, event.pivot)))
@@ -128,12 +162,17 @@ def by_impulses(scene: Scene) -> EventResult:
     if any(isinstance(e, InternalTurn) for e in scene.events):
         return _turn(scene, "torques")
     event = _Event(scene)
-    J = sp.Matrix(sp.symbols("J_x J_y", real=True))
+    if isinstance(event.impact, Stick):
+        J = sp.Matrix(sp.symbols("J_x J_y", real=True))
+        extra = list(J)
+    else:  # a smooth contact: the impulse is along the normal
+        size = sp.Symbol("J", real=True)
+        J = size * event.normal()
+        extra = [size]
     impulses = {n: [] for n in scene.bodies}  # (point of application, impulse)
-    point = event.position(event.stick.body)
-    impulses[event.stick.body].append((point, J))
-    impulses[event.stick.to].append((point, -J))
-    extra = list(J)
+    point = event.position(event.impact.body)
+    impulses[event.impact.body].append((point, J))
+    impulses[event.target].append((point, -J))
     for pin in event.pins:
         P = sp.Matrix(sp.symbols(f"P_x^{pin.name} P_y^{pin.name}", real=True))
         impulses[pin.body].append((event._pin_point(pin), P))
