@@ -24,7 +24,7 @@ from derive import expr, inertia, library, units
 from derive.errors import InputError
 from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
                           Orbit, Path, Pin, Quantity, Rotation, Scene, SpinningWheel, StandingWave, Stick,
-                          Top, WoundString, Bounce, parse_quantity)
+                          Top, WoundString, Bounce, Skid, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
@@ -385,18 +385,21 @@ def _events(reader: _Reader, raw, bodies: dict[str, Body]) -> tuple:
     result = []
     for i, spec in enumerate(raw):
         field = f"scene.events[{i}]"
-        spec = reader.mapping(spec, field, optional=("stick", "internal_turn", "bounce"))
+        spec = reader.mapping(spec, field, optional=("stick", "internal_turn", "bounce", "skid"))
         if len(spec) != 1:
-            raise reader.fail(field, "expected one event kind (stick, bounce, internal_turn)")
+            raise reader.fail(field, "expected one event kind (stick, bounce, internal_turn, skid)")
         (kind, detail), = spec.items()
-        keys = {"stick": ("body", "to"), "bounce": ("body", "off", "restitution"),
+        keys = {"stick": ("body", "to"), "bounce": ("body", "off", "restitution"), "skid": ("body", "friction"),
                 "internal_turn": ("body", "relative_to", "angle")}[kind]
         detail = reader.mapping(detail, f"{field}.{kind}", required=keys)
-        for key in keys[:2]:
+        for key in keys[:1] if kind == "skid" else keys[:2]:
             if detail[key] not in bodies:
                 raise reader.fail(f"{field}.{kind}.{key}", f"no body {detail[key]!r} (bodies: {', '.join(bodies)})")
         if kind == "stick":
             result.append(Stick(f"event{i}", detail["body"], detail["to"]))
+        elif kind == "skid":
+            mu = reader.positive(detail["friction"], f"{field}.skid.friction", "1", "a coefficient of friction")
+            result.append(Skid(f"event{i}", detail["body"], mu))
         elif kind == "bounce":
             e = reader.dimensioned(detail["restitution"], f"{field}.bounce.restitution", "1", "a restitution")
             bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]

@@ -231,7 +231,7 @@ class Orbit:
 
 #: What an event can be asked: the change of kinetic energy, the velocity of the center of mass
 #: of the bodies after it, and (an internal turn) how far the other body turned.
-EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn")
+EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn", "duration", "distance")
 AFTER_QUANTITIES = ("velocity.x", "velocity.y", "angular_velocity")
 
 #: What an orbit can be asked, and what each needs of the orbit's description.
@@ -283,7 +283,17 @@ class Bounce:
     restitution: sp.Expr
 
 
-Event = Stick | InternalTurn | Bounce
+@dataclass(frozen=True)
+class Skid:
+    """A round `body` on a level floor, launched with a velocity and spin that do not roll, slides
+    under kinetic friction `friction` (a coefficient) until it rolls without slipping."""
+
+    name: str
+    body: str
+    friction: sp.Expr
+
+
+Event = Stick | InternalTurn | Bounce | Skid
 
 
 @dataclass(frozen=True)

@@ -120,3 +120,26 @@ def test_restitution_outside_0_1_is_refused(tmp_path):
     path.write_text(path.read_text().replace("range: [0, 1], sig_figs: 2}", "range: [0, 1.5], sig_figs: 2}"))
     done = run_derive("solve", "restitution_rod", library=library)
     assert done.returncode == 2 and "coefficient of restitution lies in [0, 1]" in done.stderr
+
+
+def test_skid_to_roll_against_a_simulation_of_the_slipping_phase():
+    M, R, v0, mu, g = 6.0, 0.11, 8.0, 0.2, 9.81
+    answers, result = solve("skid_to_roll", M="6", R="0.11", v0="8", mu="0.2")
+    inertia = 2 / 5 * M * R**2
+
+    def rhs(t, y):  # x, V, omega; kinetic friction opposes the slip V + omega R
+        friction = -mu * M * g
+        return [y[1], friction / M, friction * R / inertia]
+
+    def rolls(t, y):
+        return y[1] + y[2] * R
+    rolls.terminal = True
+    run = solve_ivp(rhs, (0, 10), [0.0, v0, 0.0], rtol=1e-12, atol=1e-14, events=rolls)
+    t_roll = run.t_events[0][0]
+    x, V, omega = run.y[:, -1]
+    assert math.isclose(float(answers["t"]), t_roll, rel_tol=1e-9)
+    assert math.isclose(float(answers["d"]), x, rel_tol=1e-9)
+    assert math.isclose(float(answers["V"]), V, rel_tol=1e-9)
+    kinetic_after = M * V**2 / 2 + inertia * omega**2 / 2
+    assert math.isclose(float(answers["dE"]), kinetic_after - M * v0**2 / 2, rel_tol=1e-9)
+    assert result["checks"]["conservation_vs_impulses"]["passed"]
