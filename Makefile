@@ -20,6 +20,7 @@ sheet: setup
 	$(BIN)/derive sheet demo --out build/demo
 
 test: setup
+	$(BIN)/python -m pyflakes derive tests benchmarks
 	$(BIN)/pytest -q
 
 clean:

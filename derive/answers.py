@@ -25,7 +25,7 @@ from derive.mechanics.conservation import ConservationError, EnergyBalance, spee
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import Oscillation, OscillationError, exact_period, small_oscillation
-from derive.problem import Ask, Problem, ProblemError
+from derive.problem import Ask, Problem
 from derive.scene import TIME, Quantity
 
 ROUTES = ("lagrange", "newton_euler")
@@ -444,7 +444,7 @@ class Solution:
     def _orbit_steps(self) -> list[Step]:
         orbit = self.scene.orbit
         l = orbit.angular_momentum if orbit.angular_momentum is not None else sp.Symbol("l", positive=True)
-        r, f = orbits.r, orbits.f
+        f = orbits.f
         rr = sp.Symbol("rddot")
         conic, e = orbits.conic(orbit.GM, l)
         steps = [

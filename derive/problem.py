@@ -22,8 +22,9 @@ import yaml
 
 from derive import expr, inertia, library, units
 from derive.errors import InputError
+from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
 from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
-                          Orbit, Path, Pin, Quantity, Rotation, Scene, SpinningWheel, StandingWave, Stick,
+                          Orbit, Pin, Quantity, Rotation, Scene, SpinningWheel, StandingWave, Stick,
                           Top, WoundString, Bounce, Skid, parse_quantity)
 
 DEFAULT_SIG_FIGS = 3
@@ -415,7 +416,7 @@ def _events(reader: _Reader, raw, bodies: dict[str, Body]) -> tuple:
 PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
 
 
-def _path(reader: _Reader, raw, field: str, body: str) -> Path:
+def _path(reader: _Reader, raw, field: str, body: str) -> MotionPath:
     """`{polar: {r: EXPR, theta: EXPR}}` or `{cartesian: {x: ..., y: ...}}` in the parameters and
     the time t; `any` leaves a coordinate an arbitrary function of time."""
     raw = reader.mapping(raw, field, optional=tuple(PATH_COORDINATES))
@@ -436,7 +437,7 @@ def _path(reader: _Reader, raw, field: str, body: str) -> Path:
             functions.append(function)
         else:
             functions.append(reader.dimensioned(spec[name], f"{field}.{kind}.{name}", unit, f"a path's {name}", allowed))
-    return Path(kind, tuple(functions))
+    return MotionPath(kind, tuple(functions))
 
 
 def _contact(reader: _Reader, body: Body, spec: dict, surfaces: dict[str, Incline], field: str) -> Contact | None:

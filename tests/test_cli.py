@@ -6,15 +6,12 @@ import sys
 import mpmath
 import pytest
 
-from conftest import ROOT
-
-mpmath.mp.dps = 50
+from conftest import ROOT, close
 
 
 def close_to_digits(value: str, reference, digits: int = 15) -> bool:
     """A decimal string is correct to `digits` significant digits: within half a unit of the last."""
-    reference = mpmath.mpf(reference)
-    return abs(mpmath.mpf(value) - reference) <= abs(reference) * mpmath.mpf(10) ** (1 - digits) / 2
+    return close(mpmath.mpf(value), mpmath.mpf(reference), digits)
 
 
 def solve_json(derive, problem, *assignments, digits=15):

@@ -2,18 +2,8 @@
 import mpmath
 import pytest
 
-from derive import problem, report
-
-mpmath.mp.dps = 50
-
-
-def solve(problem_id, **values):
-    result = report.solve(problem.load(problem_id), {k: str(v) for k, v in values.items()}, 15)
-    return {n: mpmath.mpf(a["value"]) for n, a in result["answers"].items()}, result
-
-
-def close(value, reference, digits=15):
-    return abs(value - reference) <= abs(reference) * mpmath.mpf(10) ** (1 - digits) / 2
+from derive import problem
+from conftest import close, solve
 
 
 def test_solid_cylinder_by_quadrature():

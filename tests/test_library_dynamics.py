@@ -1,20 +1,9 @@
 """Library problems of the dynamics slice against independent routes (the notes' own method
 where it is sound, computed here at 50 digits), through the same code path as `derive solve`."""
 import mpmath
-import pytest
 
 from derive import problem, report
-
-mpmath.mp.dps = 50
-
-
-def solve(problem_id, **values):
-    result = report.solve(problem.load(problem_id), {k: str(v) for k, v in values.items()}, 15)
-    return {name: mpmath.mpf(a["value"]) for name, a in result["answers"].items()}, result
-
-
-def close(value, reference, digits=15):
-    return abs(value - reference) <= abs(reference) * mpmath.mpf(10) ** (1 - digits) / 2
+from conftest import close, solve
 
 
 def test_tugged_spool_against_torque_about_the_contact_point():

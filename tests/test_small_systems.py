@@ -2,19 +2,11 @@
 import math
 
 import mpmath
-import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derive import problem, report
 from derive.mechanics import many_bodies
-
-mpmath.mp.dps = 50
-
-
-def solve(problem_id, **values):
-    result = report.solve(problem.load(problem_id), {k: str(v) for k, v in values.items()}, 15)
-    return {n: mpmath.mpf(a["value"]) for n, a in result["answers"].items()}, result
+from conftest import solve
 
 
 def test_tilting_wheel_against_a_simulation_of_dL_dt():

@@ -1,5 +1,4 @@
 """Tests for derive.units."""
-import shutil
 import subprocess
 import time
 

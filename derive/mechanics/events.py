@@ -141,12 +141,20 @@ class _Event:
         return EventResult(route, after, None, steps)
 
 
+def _not_an_impact(scene: Scene, by_conservation: bool) -> EventResult | None:
+    """Internal turns and skids have routes of their own; None for an impact."""
+    if any(isinstance(e, InternalTurn) for e in scene.events):
+        return _turn(scene, "conservation" if by_conservation else "torques")
+    if any(isinstance(e, Skid) for e in scene.events):
+        return _skid(scene, "conservation" if by_conservation else "newton_euler")
+    return None
+
+
 def by_conservation(scene: Scene) -> EventResult:
     """Momentum (where no pin acts) and angular momentum about the pivot, before = after."""
-    if any(isinstance(e, InternalTurn) for e in scene.events):
-        return _turn(scene, "conservation")
-    if any(isinstance(e, Skid) for e in scene.events):
-        return _skid(scene, "conservation")
+    other = _not_an_impact(scene, by_conservation=True)
+    if other is not None:
+        return other
     event = _Event(scene)
     before, after = event.states_before(), event.unknown
     equations = event.after_conditions()
@@ -163,10 +171,9 @@ def by_conservation(scene: Scene) -> EventResult:
 
 def by_impulses(scene: Scene) -> EventResult:
     """Impulse and momentum for each body, with the contact and pin impulses unknown."""
-    if any(isinstance(e, InternalTurn) for e in scene.events):
-        return _turn(scene, "torques")
-    if any(isinstance(e, Skid) for e in scene.events):
-        return _skid(scene, "newton_euler")
+    other = _not_an_impact(scene, by_conservation=False)
+    if other is not None:
+        return other
     event = _Event(scene)
     if isinstance(event.impact, Stick):
         J = sp.Matrix(sp.symbols("J_x J_y", real=True))
