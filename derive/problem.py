@@ -103,6 +103,10 @@ class Problem:
                 result[p.symbol] = units.to_unit(number, unit, p.unit) * units.si_factor(units.parse_unit(p.unit))
             except (units.UnitError, expr.ExprError) as error:
                 raise ProblemError(f"--set {name}={text}: {error}") from None
+            if p.symbol.is_positive and not result[p.symbol] > 0:
+                # The derivation assumed it positive (its range is): a value of the other sign is invalid.
+                raise ProblemError(f"--set {name}={text}: {name} must be positive (its range is "
+                                   f"{p.range[0] if p.range else p.value} to {p.range[1] if p.range else p.value})")
         return result
 
 

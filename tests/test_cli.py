@@ -99,6 +99,7 @@ def test_list(derive):
     (["solve", "string_wrapped_disk", "--set", "m=2 m"], "m=2 m"),
     (["solve", "string_wrapped_disk", "--set", "m=__import__('os')"], "m="),
     (["solve", "missing/file.yaml"], "no such problem file"),
+    (["solve", "beetle_lazy_susan", "--set", "v=-0.15"], "v must be positive"),
 ])
 def test_bad_command_line_input_exits_2_with_one_line(derive, args, fragment):
     done = derive(*args)
