@@ -1,9 +1,16 @@
 """Numeric values of exact answers, correct to the significant digits they show.
 
-Parameter values are exact rationals; an answer is evaluated by sympy's arbitrary-
-precision evalf with strict accuracy (it raises rather than return digits it cannot
-vouch for), with guard digits, then rounded half-to-even on that decimal value, never
-on a float's repr.
+Parameter values are exact rationals. Four backends evaluate an answer:
+
+- ``float``: float64 through lambdify (math); fast, not guaranteed (cancellation, extremes);
+- ``mpmath``: mpmath at a fixed precision (``digits + 10``) through lambdify;
+- ``exact``: sympy's evalf on the exact inputs with strict accuracy (it raises rather than
+  return digits it cannot vouch for);
+- ``auto`` (the default): mpmath at two precisions; when they agree to two digits beyond the
+  ones shown, the higher one is rounded, else the exact backend decides. Agreement of two
+  precisions catches cancellation, which is where a fixed precision loses digits.
+
+Rounding is half-to-even on the high-precision decimal value, never on a float's repr.
 
 >>> import sympy as sp
 >>> m, M, g = sp.symbols("m M g", positive=True)
@@ -16,18 +23,16 @@ on a float's repr.
 from __future__ import annotations
 
 from decimal import ROUND_HALF_EVEN, Decimal
+from functools import lru_cache
 
+import mpmath
 import sympy as sp
 
 GUARD_DIGITS = 10
+BACKENDS = ("auto", "float", "mpmath", "exact")
 
 
-def significant(value: sp.Expr, digits: int) -> str:
-    """An exact (or exactly evaluable) number as a decimal string with `digits` significant digits."""
-    approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
-    if not approx.is_real:
-        raise ValueError(f"{value} is not a real number")
-    exact = Decimal(str(approx)) if approx != 0 else Decimal(0)
+def _round(exact: Decimal, digits: int) -> str:
     if exact == 0:
         return "0"
     quantum = Decimal(1).scaleb(exact.adjusted() - digits + 1)
@@ -37,12 +42,68 @@ def significant(value: sp.Expr, digits: int) -> str:
     exponent = rounded.adjusted()
     if -5 <= exponent < digits:
         return f"{rounded:f}"
-    mantissa = rounded.scaleb(-exponent)
-    return f"{mantissa:f}e{exponent:+03d}"
+    return f"{rounded.scaleb(-exponent):f}e{exponent:+03d}"
 
 
-def evaluate(expression: sp.Expr, values: dict[sp.Symbol, sp.Expr], digits: int) -> str | None:
+def significant(value: sp.Expr, digits: int) -> str:
+    """An exact (or exactly evaluable) number as a decimal string with `digits` significant digits."""
+    approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
+    if not approx.is_real:
+        raise ValueError(f"{value} is not a real number")
+    return _round(Decimal(str(approx)) if approx != 0 else Decimal(0), digits)
+
+
+class Evaluator:
+    """One answer, compiled once for the float and mpmath backends."""
+
+    def __init__(self, expression: sp.Expr):
+        self.expression = expression
+        self.symbols = sorted(expression.free_symbols, key=str)
+        self._float = sp.lambdify(self.symbols, expression, "math")
+        self._mpmath = sp.lambdify(self.symbols, expression, "mpmath")
+
+    def _at(self, values, precision: int):
+        with mpmath.workdps(precision):
+            exact = (sp.sympify(values[s]) for s in self.symbols)
+            arguments = [mpmath.mpf(v.p) / v.q if v.is_Rational else mpmath.mpmathify(sp.N(v, precision + 5))
+                         for v in exact]
+            result = self._mpmath(*arguments)
+            if isinstance(result, mpmath.mpc):
+                if abs(result.imag) > abs(result) * mpmath.mpf(10) ** (5 - precision):
+                    raise ValueError(f"{self.expression} is not real at these values")
+                result = result.real
+            return mpmath.mpf(result), Decimal(mpmath.nstr(result, precision, min_fixed=-1, max_fixed=-1)
+                                                .replace("e", "E")) if result != 0 else Decimal(0)
+
+    def value(self, values: dict[sp.Symbol, sp.Expr], digits: int, backend: str = "auto") -> str | None:
+        """The answer to `digits` significant digits, or None when a symbol has no value."""
+        if any(s not in values for s in self.symbols):
+            return None
+        if backend == "exact":
+            return significant(self.expression.xreplace(values), digits)
+        if backend == "float":
+            number = float(self._float(*(float(values[s]) for s in self.symbols)))
+            return _round(Decimal(repr(number)), digits) if number == number else "nan"
+        low = digits + GUARD_DIGITS
+        first, first_decimal = self._at(values, low)
+        if backend == "mpmath":
+            return _round(first_decimal, digits)
+        second, second_decimal = self._at(values, 2 * low + 10)
+        if second == 0 and first == 0 or second != 0 and abs(first - second) <= abs(second) * mpmath.mpf(10) ** -(digits + 2):
+            return _round(second_decimal, digits)
+        return significant(self.expression.xreplace(values), digits)  # cancellation: let evalf decide
+
+
+@lru_cache(maxsize=4096)
+def evaluator(expression: sp.Expr) -> Evaluator:
+    """The compiled evaluator of an answer (compiled once per answer, however many variants)."""
+    return Evaluator(expression)
+
+
+def evaluate(expression: sp.Expr, values: dict[sp.Symbol, sp.Expr], digits: int, backend: str = "auto") -> str | None:
     """The value of an answer to `digits` significant digits, or None if a symbol has no value."""
     if expression.free_symbols - set(values):
         return None
-    return significant(expression.xreplace(values), digits)
+    if not expression.free_symbols:
+        return significant(expression, digits)
+    return evaluator(expression).value(values, digits, backend)

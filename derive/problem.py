@@ -100,8 +100,14 @@ class Problem:
             p = self.parameters[name]
             try:
                 number, unit = units.parse_quantity(text, p.unit)
+            except units.UnitError as error:
+                try:  # an exact number written as an expression, in the parameter's unit: acos(1/3), pi/4
+                    number, unit = expr.parse(text, {}), p.unit
+                except expr.ExprError:
+                    raise ProblemError(f"--set {name}={text}: {error}") from None
+            try:
                 result[p.symbol] = units.to_unit(number, unit, p.unit) * units.si_factor(units.parse_unit(p.unit))
-            except (units.UnitError, expr.ExprError) as error:
+            except units.UnitError as error:
                 raise ProblemError(f"--set {name}={text}: {error}") from None
             if p.symbol.is_positive and not result[p.symbol] > 0:
                 # The derivation assumed it positive (its range is): a value of the other sign is invalid.
