@@ -309,6 +309,7 @@ class Solution:
         slow, fast = top.roots(*self._top_arguments(), route)
         return slow if detail == "precession.slow" else fast
 
+    @cached_property
     def conditions(self) -> list[tuple[sp.Expr, str]]:
         """Expressions that must not be negative for the answers to exist, with what they mean."""
         result = []

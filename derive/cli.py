@@ -86,6 +86,7 @@ def main() -> None:
       derive inertia rod --axis end
       derive sheet demo --variants 5 --seed 7 --out build/demo
       derive check
+      derive bench --quick
     """
 
 
@@ -218,6 +219,23 @@ def check(problems: tuple[str, ...]) -> None:
     click.echo(audit.table(rows))
     if not all(r.passed for r in rows):
         sys.exit(1)
+
+
+@main.command()
+@click.option("--quick", is_flag=True, help="A shorter run (under a minute): fewer problems, samples and variants.")
+@reports_errors
+def bench(quick: bool) -> None:
+    """Measure speed against accuracy and print the figures.
+
+    CLI start-up; derivation per problem, cold and cached; time per answer and the worst
+    relative error of each evaluation backend (float, mpmath, auto, exact) against a
+    50-digit reference, at typical and extreme parameters; a 30-problem x 300-variant
+    answer key; sympy.physics.mechanics alone on the same systems; a work-precision table
+    of scipy's integrators and a symplectic one. Figures, not pass/fail.
+    """
+    from derive import bench as benchmarks
+
+    benchmarks.run(lambda line: click.echo(line), quick=quick)
 
 
 @main.command()

@@ -6,9 +6,10 @@ Parameter values are exact rationals. Four backends evaluate an answer:
 - ``mpmath``: mpmath at a fixed precision (``digits + 10``) through lambdify;
 - ``exact``: sympy's evalf on the exact inputs with strict accuracy (it raises rather than
   return digits it cannot vouch for);
-- ``auto`` (the default): mpmath at two precisions; when they agree to two digits beyond the
-  ones shown, the higher one is rounded, else the exact backend decides. Agreement of two
-  precisions catches cancellation, which is where a fixed precision loses digits.
+- ``auto`` (the default): float64 and mpmath at ``digits + 20``; when they agree to two digits
+  beyond the ones shown (possible for up to 12 digits) the mpmath value is rounded; else mpmath
+  again at twice the precision, and when that disagrees too the exact backend decides.
+  Disagreement between precisions is what cancellation looks like.
 
 Rounding is half-to-even on the high-precision decimal value, never on a float's repr.
 
@@ -23,7 +24,7 @@ Rounding is half-to-even on the high-precision decimal value, never on a float's
 from __future__ import annotations
 
 from decimal import ROUND_HALF_EVEN, Decimal
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import mpmath
 import sympy as sp
@@ -32,7 +33,12 @@ GUARD_DIGITS = 10
 BACKENDS = ("auto", "float", "mpmath", "exact")
 
 
-def _round(exact: Decimal, digits: int) -> str:
+def round_decimal(exact: Decimal, digits: int) -> str:
+    """A decimal rounded half-to-even to `digits` significant digits, as a string.
+
+    >>> round_decimal(Decimal("0.125"), 2)
+    '0.12'
+    """
     if exact == 0:
         return "0"
     quantum = Decimal(1).scaleb(exact.adjusted() - digits + 1)
@@ -50,7 +56,11 @@ def significant(value: sp.Expr, digits: int) -> str:
     approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
     if not approx.is_real:
         raise ValueError(f"{value} is not a real number")
-    return _round(Decimal(str(approx)) if approx != 0 else Decimal(0), digits)
+    return round_decimal(Decimal(str(approx)) if approx != 0 else Decimal(0), digits)
+
+
+def _agree(a, b, digits: int) -> bool:
+    return a == b or b != 0 and abs(a - b) <= abs(b) * mpmath.mpf(10) ** -digits
 
 
 class Evaluator:
@@ -59,8 +69,14 @@ class Evaluator:
     def __init__(self, expression: sp.Expr):
         self.expression = expression
         self.symbols = sorted(expression.free_symbols, key=str)
-        self._float = sp.lambdify(self.symbols, expression, "math")
-        self._mpmath = sp.lambdify(self.symbols, expression, "mpmath")
+
+    @cached_property
+    def _float(self):  # compiled on first use: a general answer (with derivatives) never is
+        return sp.lambdify(self.symbols, self.expression, ["math", "mpmath"])  # mpmath: elliptic_k and the like
+
+    @cached_property
+    def _mpmath(self):
+        return sp.lambdify(self.symbols, self.expression, "mpmath")
 
     def _at(self, values, precision: int):
         with mpmath.workdps(precision):
@@ -79,18 +95,24 @@ class Evaluator:
         """The answer to `digits` significant digits, or None when a symbol has no value."""
         if any(s not in values for s in self.symbols):
             return None
-        if backend == "exact":
+        if not self.symbols or backend == "exact":
             return significant(self.expression.xreplace(values), digits)
         if backend == "float":
             number = float(self._float(*(float(values[s]) for s in self.symbols)))
-            return _round(Decimal(repr(number)), digits) if number == number else "nan"
-        low = digits + GUARD_DIGITS
-        first, first_decimal = self._at(values, low)
+            return round_decimal(Decimal(repr(number)), digits) if number == number else "nan"
         if backend == "mpmath":
-            return _round(first_decimal, digits)
-        second, second_decimal = self._at(values, 2 * low + 10)
-        if second == 0 and first == 0 or second != 0 and abs(first - second) <= abs(second) * mpmath.mpf(10) ** -(digits + 2):
-            return _round(second_decimal, digits)
+            return round_decimal(self._at(values, digits + GUARD_DIGITS)[1], digits)
+        high, high_decimal = self._at(values, digits + 2 * GUARD_DIGITS)
+        if digits + 2 <= 14:  # float64 can vouch for this many digits when it agrees
+            try:
+                fast = mpmath.mpf(float(self._float(*(float(values[s]) for s in self.symbols))))
+            except (ValueError, ZeroDivisionError, OverflowError):
+                fast = None
+            if fast is not None and _agree(fast, high, digits + 2):
+                return round_decimal(high_decimal, digits)
+        higher, higher_decimal = self._at(values, 2 * (digits + 2 * GUARD_DIGITS))
+        if _agree(high, higher, digits + 2):
+            return round_decimal(higher_decimal, digits)
         return significant(self.expression.xreplace(values), digits)  # cancellation: let evalf decide
 
 
@@ -102,8 +124,4 @@ def evaluator(expression: sp.Expr) -> Evaluator:
 
 def evaluate(expression: sp.Expr, values: dict[sp.Symbol, sp.Expr], digits: int, backend: str = "auto") -> str | None:
     """The value of an answer to `digits` significant digits, or None if a symbol has no value."""
-    if expression.free_symbols - set(values):
-        return None
-    if not expression.free_symbols:
-        return significant(expression, digits)
     return evaluator(expression).value(values, digits, backend)

@@ -39,7 +39,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         }
         for name, p in problem.parameters.items()
     }
-    for condition, message in solution.conditions():
+    for condition, message in solution.conditions:
         value = numeric.evaluate(condition, values, 15)
         if value is not None and float(value) < 0:
             raise problem.error("parameters", message)

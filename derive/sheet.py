@@ -18,6 +18,8 @@ import os
 import random
 import shutil
 from dataclasses import dataclass
+from decimal import Decimal
+from functools import cached_property
 from pathlib import Path
 from typing import Callable
 
@@ -82,10 +84,26 @@ def draw(problem: Problem, rng: random.Random) -> dict[str, sp.Expr]:
         if p.range is None:
             values[name] = p.value
             continue
-        low, high = p.range
-        sample = low + (high - low) * sp.Rational(rng.random())
-        values[name] = sp.Rational(numeric.significant(sample, p.sig_figs))
+        low, high = (float(v) for v in p.range)
+        sample = low + (high - low) * rng.random()  # a random draw: a float is as good as any
+        values[name] = sp.Rational(numeric.round_decimal(Decimal(repr(sample)), p.sig_figs))
     return values
+
+
+MAX_DRAWS = 200
+
+
+def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict[str, sp.Expr]:
+    """A draw that meets every condition the answers need (a fast enough top, say): redrawn,
+    at most MAX_DRAWS times, else an error naming the problem."""
+    conditions = solution.conditions
+    for _ in range(MAX_DRAWS):
+        values = draw(problem, rng)
+        si = {p.symbol: values[n] * units.si_factor(units.parse_unit(p.unit)) for n, p in problem.parameters.items()}
+        if all(float(numeric.evaluate(c, si, 6, backend="mpmath")) >= 0 for c, _ in conditions):  # a sign
+            return values
+    raise InputError(f"{problem.path}: parameters: no draw in {MAX_DRAWS} meets the problem's conditions "
+                     f"({'; '.join(m for _, m in conditions)}): narrow the ranges")
 
 
 def number_latex(text: str) -> str:
@@ -118,14 +136,17 @@ class _ProblemVariants:
         """LaTeX of an answer: its number, or its expression when it has none (a general result)."""
         return number_latex(value) if value is not None else sp.latex(self.solution.expressions[name])
 
+    @cached_property
+    def in_declared_units(self) -> dict[str, sp.Expr]:
+        """Each answer divided by its unit's SI factor, built once for every variant."""
+        return {name: self.solution.expressions[name] / units.si_factor(units.parse_unit(ask.unit))
+                for name, ask in self.problem.asks.items()}
+
     def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each answer's value to its significant figures; None for a general (symbolic) result."""
         values = self.si_values(draw)
-        result = {}
-        for name, ask in self.problem.asks.items():
-            expression = self.solution.expressions[name] / units.si_factor(units.parse_unit(ask.unit))
-            result[name] = numeric.evaluate(expression, values, ask.sig_figs or DEFAULT_SIG_FIGS)
-        return result
+        return {name: numeric.evaluate(self.in_declared_units[name], values, ask.sig_figs or DEFAULT_SIG_FIGS)
+                for name, ask in self.problem.asks.items()}
 
     def question(self, draw: dict[str, sp.Expr]) -> str:
         shown = {
@@ -146,7 +167,7 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress) -> lis
         solution = Solution(problem)
         solution.expressions  # derive once, for every variant
         solution.checks()
-        draws = [draw(problem, random.Random(f"{seed}/{problem.id}/{n}")) for n in range(1, variants + 1)]
+        draws = [valid_draw(problem, solution, random.Random(f"{seed}/{problem.id}/{n}")) for n in range(1, variants + 1)]
         prepared.append(_ProblemVariants(problem, solution, draws))
     return prepared
 

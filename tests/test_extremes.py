@@ -10,27 +10,10 @@ import sympy as sp
 
 from conftest import close
 from derive import numeric, problem, report
+from derive.bench import EXTREME_CASES
 from derive.answers import Solution
 
-CRITICAL = mpmath.nstr(mpmath.acos(mpmath.mpf(1) / 3) + mpmath.mpf("1e-10"), 45)
-
-EXTREMES = [
-    ("string_wrapped_disk", {"m": "1e-12", "M": "1", "R": "0.2"}),
-    ("string_wrapped_disk", {"m": "1e12", "M": "1", "R": "0.2"}),
-    ("rolling_incline", {"M": "1", "R": "0.1", "H": "1", "theta": "1e-8"}),
-    ("rolling_incline", {"M": "1", "R": "0.1", "H": "1", "theta": mpmath.nstr(mpmath.pi / 2 - mpmath.mpf("1e-9"), 45)}),
-    ("kepler_orbit", {"a": "1.496e11", "e": "0.999999999999"}),
-    ("kepler_orbit", {"a": "1.496e11", "e": "1e-12"}),
-    ("beetle_lazy_susan", {"m": "0.004", "R": "0.25", "I": "0.001", "omega0": "0.6", "v": "0.6000000000006"}),
-    ("tugged_spool", {"F": "5", "M": "1", "R": "0.06", "r": "0.02", "I_cm": "0.001", "theta": CRITICAL}),
-    ("loop_the_loop_ball", {"R": "1", "r": "0.999999999999"}),
-    ("sticky_impact_free", {"m": "1e-14", "M": "1", "R": "0.3", "v": "5"}),
-    ("rod_endpoint", {"m": "1e30", "L": "1e-15"}),
-    ("diatomic_molecule", {"m1": "1.674e-27", "m2": "1e-30", "d": "1e-10"}),
-    ("top_precession_exact", {"m": "0.2", "Rcm": "0.05", "I3": "5e-5", "I1": "5e-4", "theta": "1e-8",
-                              "omega": "1e6"}),
-    ("compound_pendulum_large", {"M": "2", "Rcm": "0.3", "I_cm": "0.05", "theta0": "3.14159"}),
-]
+EXTREMES = EXTREME_CASES
 
 
 @pytest.mark.parametrize("problem_id, overrides", EXTREMES, ids=[f"{p}-{i}" for i, (p, _) in enumerate(EXTREMES)])

@@ -1,0 +1,235 @@
+"""`derive bench`: the speed-for-accuracy trade, measured and printed (never asserted).
+
+Figures: CLI start-up; derivation per problem, cold and cached; time per answer and the
+largest relative error of each evaluation backend against a 50-digit reference, at typical
+and extreme parameters; an answer key of 30 problems x 300 variants; the same derivations
+with sympy.physics.mechanics alone; a work-precision table of scipy's integrators and a
+symplectic one on a large-amplitude pendulum.
+
+>>> lines = []
+>>> startup(lines.append, runs=1)
+>>> lines[0].startswith("derive --help")
+True
+"""
+from __future__ import annotations
+
+import random
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from derive import library, numeric, problem, sheet
+from derive.answers import Solution
+
+
+_CRITICAL = mpmath.nstr(mpmath.acos(mpmath.mpf(1) / 3) + mpmath.mpf("1e-10"), 45)
+
+#: Parameters at the edges: mass ratios of 1e-12 and 1e12, angles of 1e-8 rad and pi/2 - 1e-9,
+#: eccentricities near 0 and 1, near-cancellations (a beetle whose momentum nearly cancels the
+#: lazy Susan's, a spool 1e-10 rad from its critical angle, a ball nearly filling the loop), a
+#: collision with mass ratio 1e-14, huge and tiny magnitudes.
+EXTREME_CASES = [
+    ("string_wrapped_disk", {"m": "1e-12", "M": "1", "R": "0.2"}),
+    ("string_wrapped_disk", {"m": "1e12", "M": "1", "R": "0.2"}),
+    ("rolling_incline", {"M": "1", "R": "0.1", "H": "1", "theta": "1e-8"}),
+    ("rolling_incline", {"M": "1", "R": "0.1", "H": "1", "theta": mpmath.nstr(mpmath.pi / 2 - mpmath.mpf("1e-9"), 45)}),
+    ("kepler_orbit", {"a": "1.496e11", "e": "0.999999999999"}),
+    ("kepler_orbit", {"a": "1.496e11", "e": "1e-12"}),
+    ("beetle_lazy_susan", {"m": "0.004", "R": "0.25", "I": "0.001", "omega0": "0.6", "v": "0.6000000000006"}),
+    ("tugged_spool", {"F": "5", "M": "1", "R": "0.06", "r": "0.02", "I_cm": "0.001", "theta": _CRITICAL}),
+    ("loop_the_loop_ball", {"R": "1", "r": "0.999999999999"}),
+    ("sticky_impact_free", {"m": "1e-14", "M": "1", "R": "0.3", "v": "5"}),
+    ("rod_endpoint", {"m": "1e30", "L": "1e-15"}),
+    ("diatomic_molecule", {"m1": "1.674e-27", "m2": "1e-30", "d": "1e-10"}),
+    ("top_precession_exact", {"m": "0.2", "Rcm": "0.05", "I3": "5e-5", "I1": "5e-4", "theta": "1e-8", "omega": "1e6"}),
+    ("compound_pendulum_large", {"M": "2", "Rcm": "0.3", "I_cm": "0.05", "theta0": "3.14159"}),
+]
+
+
+def _timed(function, *args):
+    start = time.perf_counter()
+    result = function(*args)
+    return result, time.perf_counter() - start
+
+
+def startup(say, runs: int = 10) -> None:
+    script = Path(sys.executable).parent / "derive"
+    command = [str(script)] if script.exists() else [sys.executable, "-m", "derive.cli"]
+    times = [_timed(lambda: subprocess.run([*command, "--help"], capture_output=True, check=True))[1]
+             for _ in range(runs)]
+    say(f"derive --help: median {statistics.median(times):.3f} s over {runs} runs (target 0.3 s)")
+
+
+def derivations(say, ids: list[str]) -> dict[str, Solution]:
+    say("\nDerivation per problem (answers and every cross-check), cold and cached:")
+    solutions = {}
+    for problem_id in ids:
+        p = problem.load(problem_id)
+        solution = Solution(p)
+        _, cold = _timed(lambda: (solution.expressions, solution.checks()))
+        _, warm = _timed(lambda: solution.expressions)
+        solutions[problem_id] = solution
+        say(f"  {problem_id:<30} cold {cold:6.2f} s   cached {warm * 1e6:6.1f} us")
+    return solutions
+
+
+def _typical(solution: Solution, rng: random.Random) -> dict:
+    """Parameter values (SI) drawn inside the ranges."""
+    p = solution.problem
+    return p.values({n: repr(float(q.range[0] + (q.range[1] - q.range[0]) * sp.Rational(rng.random())))
+                     for n, q in p.parameters.items() if q.range is not None})
+
+
+def _cases(pairs) -> list:
+    """(expression, values, 50-digit reference) for every numeric answer of (solution, values) pairs."""
+    cases = []
+    for solution, values in pairs:
+        for expression in solution.expressions.values():
+            if expression.free_symbols and expression.free_symbols <= set(values):
+                exact = expression.xreplace(values)
+                reference = mpmath.mpf(str(sp.N(exact, 50))) if exact != 0 else mpmath.mpf(0)
+                cases.append((expression, values, reference))
+                numeric.evaluator(expression)  # compile before anything is timed
+    return cases
+
+
+def backends(say, solutions: dict[str, Solution], samples: int) -> None:
+    say("\nEvaluation backends, over every numeric answer (15 digits asked):")
+    say(f"  {'backend':<8} {'parameters':<10} {'answers':>8} {'us/answer':>10} {'worst relative error':>22}")
+    rng = random.Random(6)
+    typical = _cases((s, _typical(s, rng)) for s in solutions.values() for _ in range(samples))
+    extreme = _cases((Solution(problem.load(p)), problem.load(p).values(o)) for p, o in EXTREME_CASES)
+    for kind, cases in (("typical", typical), ("extreme", extreme)):
+        for backend in ("float", "mpmath", "auto", "exact"):
+            worst, start = mpmath.mpf(0), time.perf_counter()
+            for expression, values, reference in cases:
+                try:
+                    value = mpmath.mpf(numeric.evaluate(expression, values, 15, backend))
+                except (ValueError, ZeroDivisionError):
+                    value = mpmath.mpf("inf")
+                if reference != 0:
+                    worst = max(worst, abs(value - reference) / abs(reference))
+            elapsed = (time.perf_counter() - start) / max(len(cases), 1)
+            say(f"  {backend:<8} {kind:<10} {len(cases):>8} {elapsed * 1e6:>10.1f} {mpmath.nstr(worst, 3):>22}")
+    say("  (15 digits are correct when the relative error is below 5e-15)")
+
+
+def answer_key(say, solutions: dict[str, Solution], variants: int) -> None:
+    chosen = [s for s in solutions.values() if all(not e.has(sp.Derivative) for e in s.expressions.values())][:30]
+    start = time.perf_counter()
+    count = 0
+    for solution in chosen:
+        draws = [sheet.valid_draw(solution.problem, solution, random.Random(f"bench/{n}")) for n in range(variants)]
+        item = sheet._ProblemVariants(solution.problem, solution, draws)
+        for draw in item.draws:
+            count += sum(v is not None for v in item.answers(draw).values())
+    elapsed = time.perf_counter() - start
+    say(f"\nAnswer key: {len(chosen)} problems x {variants} variants = {count} values in {elapsed:.2f} s "
+        f"({count / elapsed:.0f} values/s, each correct to its digits; target under 10 s for 30 x 300)")
+
+
+def mechanics_alone(say) -> None:
+    """The disk and block, the pendulum and the top by sympy.physics.mechanics' LagrangesMethod."""
+    from sympy.physics.mechanics import LagrangesMethod, Lagrangian, Point, ReferenceFrame, RigidBody
+    from sympy.physics.mechanics import dynamicsymbols, inertia
+
+    say("\nThe same derivations with sympy.physics.mechanics alone (LagrangesMethod, minimal coordinates):")
+    m, M, R, g, d, I1, I3 = sp.symbols("m M R g d I_1 I_3", positive=True)
+
+    def disk():
+        th = dynamicsymbols("theta")
+        N = ReferenceFrame("N")
+        lag = M * R**2 / 4 * th.diff() ** 2 + m * (R * th.diff()) ** 2 / 2 - m * g * R * th
+        method = LagrangesMethod(lag, [th])
+        method.form_lagranges_equations()
+        return sp.simplify(method.rhs()[1]), N
+
+    def pendulum():
+        th = dynamicsymbols("theta")
+        N = ReferenceFrame("N")
+        A = N.orientnew("A", "Axis", [th, N.z])
+        O = Point("O")
+        O.set_vel(N, 0)
+        C = O.locatenew("C", -d * A.y)
+        C.v2pt_theory(O, N, A)
+        body = RigidBody("b", C, A, M, (inertia(A, 0, 0, I3), C))
+        body.potential_energy = M * g * C.pos_from(O).dot(N.y)
+        method = LagrangesMethod(Lagrangian(N, body), [th])
+        method.form_lagranges_equations()
+        return sp.simplify(method.rhs()[1]), N
+
+    def top():
+        q = dynamicsymbols("phi theta psi")
+        N = ReferenceFrame("N")
+        B = N.orientnew("B", "Body", q, "313")
+        O = Point("O")
+        O.set_vel(N, 0)
+        C = O.locatenew("C", d * B.z)
+        C.v2pt_theory(O, N, B)
+        body = RigidBody("top", C, B, M, (inertia(B, I1, I1, I3), O))
+        body.potential_energy = M * g * d * sp.cos(q[1])
+        method = LagrangesMethod(Lagrangian(N, body), q)
+        method.form_lagranges_equations()
+        return method.mass_matrix.shape, N
+
+    for name, build in (("disk and block", disk), ("compound pendulum", pendulum), ("top (Euler angles)", top)):
+        _, elapsed = _timed(build)
+        say(f"  {name:<22} {elapsed:6.2f} s")
+
+
+def work_precision(say) -> None:
+    """A pendulum at amplitude 2.5 rad over 20 periods: error of the final angle against the
+    elliptic-integral period (it returns to the amplitude), and the energy drift."""
+    from scipy.integrate import solve_ivp
+
+    w0, amplitude, periods = 1.0, 2.5, 20
+    period = float(4 * mpmath.ellipk(mpmath.sin(amplitude / 2) ** 2) / w0)
+    end = periods * period
+
+    def energy(y):
+        return 0.5 * y[1] ** 2 - w0**2 * np.cos(y[0])
+
+    say(f"\nWork-precision, pendulum at amplitude {amplitude} rad over {periods} periods:")
+    say(f"  {'method':<10} {'tolerance':>10} {'angle error':>12} {'energy drift':>13} {'time (ms)':>10}")
+    meeting = []  # (time, method, tolerance) of the settings whose angle error is below 1e-6
+    for method in ("RK45", "DOP853", "Radau", "LSODA"):
+        for tolerance in (1e-4, 1e-7, 1e-10):
+            run, elapsed = _timed(lambda: solve_ivp(lambda t, y: [y[1], -w0**2 * np.sin(y[0])], (0, end),
+                                                    [amplitude, 0.0], method=method, rtol=tolerance, atol=tolerance * 1e-2))
+            error = abs(run.y[0, -1] - amplitude)
+            drift = abs(energy(run.y[:, -1]) - energy([amplitude, 0.0]))
+            say(f"  {method:<10} {tolerance:>10.0e} {error:>12.2e} {drift:>13.2e} {elapsed * 1e3:>10.1f}")
+            if error < 1e-6:
+                meeting.append((elapsed, method, tolerance))
+    for steps_per_period in (100, 1000):
+        h = period / steps_per_period
+        start = time.perf_counter()
+        theta, omega = amplitude, 0.0
+        for _ in range(periods * steps_per_period):  # Stormer-Verlet (leapfrog): symplectic
+            omega -= 0.5 * h * w0**2 * np.sin(theta)
+            theta += h * omega
+            omega -= 0.5 * h * w0**2 * np.sin(theta)
+        elapsed = time.perf_counter() - start
+        drift = abs(energy([theta, omega]) - energy([amplitude, 0.0]))
+        say(f"  {'Verlet':<10} {'h=T/' + str(steps_per_period):>10} {abs(theta - amplitude):>12.2e} {drift:>13.2e}"
+            f" {elapsed * 1e3:>10.1f}")
+    fastest = min(meeting)
+    say(f"  cheapest scipy setting with the angle right to 1e-6: {fastest[1]} at rtol {fastest[2]:.0e} "
+        f"({fastest[0] * 1e3:.1f} ms); the simulation check uses DOP853 at rtol 1e-11 for runs of one second")
+
+
+def run(say, quick: bool = False) -> None:
+    ids = [p.stem for p in library.problem_files()]
+    startup(say, runs=3 if quick else 10)
+    solutions = derivations(say, ids[:8] if quick else ids)
+    backends(say, solutions, samples=1 if quick else 3)
+    answer_key(say, solutions, variants=30 if quick else 300)
+    if not quick:
+        mechanics_alone(say)
+    work_precision(say)
