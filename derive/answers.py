@@ -18,7 +18,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from derive import inertia, units
+from derive import inertia, numeric, units
 from derive.mechanics import (events, gyroscope, joints, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
@@ -310,16 +310,29 @@ class Solution:
         return slow if detail == "precession.slow" else fast
 
     @cached_property
-    def conditions(self) -> list[tuple[sp.Expr, str]]:
-        """Expressions that must not be negative for the answers to exist, with what they mean."""
+    def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
+        """(expression, strict, meaning): each expression must be positive (strict) or not
+        negative for the answers to exist."""
         result = []
+        orbit = self.scene.orbit
+        if orbit is not None and orbit.eccentricity is not None:
+            result.append((1 - orbit.eccentricity, True, "e >= 1 is not an ellipse but a parabola or a hyperbola"))
+            result.append((orbit.eccentricity, False, "an eccentricity cannot be negative"))
         if any(a.quantity.kind == "top" and a.quantity.detail != "precession.fast_top" for a in self.problem.asks.values()):
             t = self.scene.top
             result.append((tidy(t.spin_inertia**2 * t.spin**2
                                 - 4 * t.transverse_inertia * t.mass * self.scene.gravity.g * t.pivot_distance
-                                * sp.cos(t.tilt)),
+                                * sp.cos(t.tilt)), False,
                            "no steady precession: the spin is too slow (I3^2 w^2 < 4 I1 m g R cos(theta))"))
         return result
+
+    def violated(self, values: dict[sp.Symbol, sp.Expr], backend: str = "auto") -> str | None:
+        """The meaning of the first condition these values break, or None."""
+        for condition, strict, meaning in self.conditions:
+            value = numeric.evaluate(condition, values, 15 if backend == "auto" else 6, backend)
+            if value is not None and (float(value) < 0 or strict and float(value) == 0):
+                return meaning
+        return None
 
     def _position(self, body: str) -> sp.Matrix:
         motion = self.scene.motions.get(body)

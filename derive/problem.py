@@ -59,6 +59,7 @@ class Ask:
     small: tuple[sp.Symbol, ...] = ()
     shift: sp.Expr | None = None
     amplitude: sp.Expr | None = None
+    exact: str | None = None  # this ask approximates that one
 
 
 @dataclass(frozen=True)
@@ -682,7 +683,8 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
-                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift", "amplitude"))
+                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift", "amplitude",
+                                        "exact"))
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -702,7 +704,11 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
             _small(reader, spec.get("small"), f"{field}.small", scene),
             _shift(reader, spec.get("shift"), f"{field}.shift", quantity),
             _amplitude(reader, spec.get("amplitude"), f"{field}.amplitude", quantity),
+            spec.get("exact"),
         )
+    for name, ask in result.items():
+        if ask.exact is not None and (ask.exact not in result or ask.exact == name):
+            raise reader.fail(f"ask.{name}.exact", f"expected another ask of this problem (asks: {', '.join(result)})")
     return result
 
 

@@ -39,14 +39,16 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         }
         for name, p in problem.parameters.items()
     }
-    for condition, message in solution.conditions:
-        value = numeric.evaluate(condition, values, 15)
-        if value is not None and float(value) < 0:
-            raise problem.error("parameters", message)
+    broken = solution.violated(values)
+    if broken:
+        raise problem.error("parameters", broken)
     answers = {}
     for name, ask in problem.asks.items():
         expression = solution.expression(name)
-        value = numeric.evaluate(_in_unit(expression, ask.unit), values, digits)
+        try:
+            value = numeric.evaluate(_in_unit(expression, ask.unit), values, digits)
+        except (ValueError, ZeroDivisionError) as error:  # outside where the answer exists
+            raise problem.error(f"ask.{name}", f"no real value at these parameters ({error})") from None
         answers[name] = {
             "meaning": ask.meaning,
             "expr": sp.sstr(expression),
@@ -54,6 +56,14 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
             "unit": ask.unit,
             "value": value,
         }
+    for name, ask in problem.asks.items():
+        if ask.exact is not None:  # an approximation: its relative error at these parameters
+            approximate, exact = answers[name]["value"], answers[ask.exact]["value"]
+            error = None
+            if approximate is not None and exact is not None and float(exact) != 0:
+                ratio = numeric.evaluate(solution.expression(name) / solution.expression(ask.exact) - 1, values, 3)
+                error = ratio
+            answers[name]["approximation"] = {"exact": ask.exact, "relative_error": error}
     steps = solution.steps()
     equations = {
         route: [sp.sstr(e) for e in solution.derivations[route].equations]
@@ -96,6 +106,9 @@ def as_text(result: dict) -> str:
         value = f" = {a['value']}{unit}" if a["value"] is not None else f"  [{a['unit']}]"
         lines.append(f"  {name:<{width}} = {a['expr']}{value}")
         lines.append(f"  {'':<{width}}   ({a['meaning']})")
+        if a.get("approximation") and a["approximation"]["relative_error"] is not None:
+            lines.append(f"  {'':<{width}}   approximates {a['approximation']['exact']}: relative error "
+                         f"{a['approximation']['relative_error']}")
     if result["energy"]:
         lines += ["", "Energy:"]
         lines += [f"  {k.replace('_', ' ')}: {v}" for k, v in result["energy"].items()]

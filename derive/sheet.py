@@ -96,14 +96,13 @@ MAX_DRAWS = 200
 def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict[str, sp.Expr]:
     """A draw that meets every condition the answers need (a fast enough top, say): redrawn,
     at most MAX_DRAWS times, else an error naming the problem."""
-    conditions = solution.conditions
     for _ in range(MAX_DRAWS):
         values = draw(problem, rng)
         si = {p.symbol: values[n] * units.si_factor(units.parse_unit(p.unit)) for n, p in problem.parameters.items()}
-        if all(float(numeric.evaluate(c, si, 6, backend="mpmath")) >= 0 for c, _ in conditions):  # a sign
+        if solution.violated(si, backend="mpmath") is None:  # a sign: one precision will do
             return values
     raise InputError(f"{problem.path}: parameters: no draw in {MAX_DRAWS} meets the problem's conditions "
-                     f"({'; '.join(m for _, m in conditions)}): narrow the ranges")
+                     f"({'; '.join(m for _, _, m in solution.conditions)}): narrow the ranges")
 
 
 def number_latex(text: str) -> str:

@@ -21,7 +21,7 @@ def test_bench_sections_print_figures():
 def test_sampler_redraws_until_the_top_can_precess():
     p = problem.load("top_precession_exact")
     solution = Solution(p)
-    (condition, _), = solution.conditions
+    (condition, _, _), = solution.conditions
     for n in range(20):
         values = sheet.valid_draw(p, solution, random.Random(n))
         si = p.values({k: str(v) for k, v in values.items()})
