@@ -70,6 +70,11 @@ class Evaluator:
         self.expression = expression
         self.symbols = sorted(expression.free_symbols, key=str)
 
+    def compile(self) -> "Evaluator":
+        """Compile both numeric backends now (a benchmark times evaluation, not compilation)."""
+        self._float, self._mpmath  # noqa: B018 - cached_property access compiles
+        return self
+
     @cached_property
     def _float(self):  # compiled on first use: a general answer (with derivatives) never is
         return sp.lambdify(self.symbols, self.expression, ["math", "mpmath"])  # mpmath: elliptic_k and the like

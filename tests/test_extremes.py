@@ -51,3 +51,23 @@ def test_spool_at_exactly_the_critical_angle_does_not_accelerate():
     result = report.solve(problem.load("tugged_spool"), {"F": "5", "M": "1", "R": "0.06", "r": "0.02",
                                                          "I_cm": "0.001", "theta": "acos(1/3)"}, 15)
     assert result["answers"]["a"]["value"] == "0"
+
+
+def test_approximations_report_their_relative_error():
+    """Small-angle period: T0/T - 1 ~ -theta0^2/16; small-angle turn: x/atan(x) - 1 ~ x^2/3."""
+    pendulum = report.solve(problem.load("compound_pendulum_large"),
+                            {"M": "2", "Rcm": "0.3", "I_cm": "0.05", "theta0": "0.1"}, 15)
+    error = float(pendulum["answers"]["T_small"]["approximation"]["relative_error"])
+    assert abs(error - (-0.1**2 / 16)) < 1e-5
+    wheel = report.solve(problem.load("tilting_wheel"), {"tau": "1", "dt": "0.2", "I": "0.1", "omega": "30"}, 15)
+    x = 1 * 0.2 / (0.1 * 30)
+    assert abs(float(wheel["answers"]["dphi"]["approximation"]["relative_error"]) - x**2 / 3) < 1e-4
+    assert wheel["answers"]["dphi"]["approximation"]["exact"] == "dphi_exact"
+
+
+def test_bad_regions_are_clear_errors(derive):
+    open_orbit = derive("solve", "kepler_orbit", "--set", "a=1e11", "--set", "e=1")
+    assert open_orbit.returncode == 2 and "parabola or a hyperbola" in open_orbit.stderr
+    slow_top = derive("solve", "top_precession_exact", "--set", "m=0.2", "--set", "Rcm=0.05", "--set", "I3=5e-5",
+                      "--set", "I1=5e-4", "--set", "theta=0.5", "--set", "omega=30")
+    assert slow_top.returncode == 2 and "no steady precession" in slow_top.stderr
