@@ -14,7 +14,9 @@ import time
 from dataclasses import dataclass
 
 from derive import library, problem, simulate
-from derive.answers import DYNAMIC_KINDS, CheckFailure, Solution
+from derive.answers import Solution
+from derive.crosschecks import CheckFailure
+from derive.scene import DYNAMIC_KINDS
 from derive.errors import InputError
 
 

@@ -12,27 +12,20 @@ message names the file and the field.
 """
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
-from decimal import Decimal
 from pathlib import Path
 
 import sympy as sp
 import yaml
 
-from derive import expr, inertia, library, units
-from derive.errors import InputError
-from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (SHAPE_SIZES, TIME, Body, Contact, Gravity, HubPull, Incline, InternalTurn, Loop, Motion,
-                          Orbit, Pin, Quantity, Rotation, Scene, SpinningWheel, StandingWave, Stick,
-                          Top, WoundString, Bounce, Skid, parse_quantity)
+from derive import expr, library, units
+from derive.errors import ProblemError
+from derive.reader import Loader, Reader
+from derive.scene import Quantity, Scene, parse_quantity
+from derive.scene_file import read_scene
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
-
-
-class ProblemError(InputError):
-    """Bad input in a problem file or on the command line: 'FILE: FIELD: reason'."""
 
 
 @dataclass(frozen=True)
@@ -117,115 +110,8 @@ class Problem:
         return result
 
 
-class _Loader(yaml.SafeLoader):
-    """Safe YAML that keeps decimals exact (as Decimal), refuses duplicate keys, and reads
-    only true/false as booleans (YAML 1.2), so that `on:` and `no` stay words."""
 
-
-_Loader.yaml_implicit_resolvers = {
-    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
-    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
-}
-_Loader.add_implicit_resolver("tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
-                              list("tTfF"))
-
-
-def _decimal(loader: yaml.SafeLoader, node: yaml.Node) -> Decimal:
-    return Decimal(loader.construct_scalar(node).replace("_", ""))
-
-
-def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> dict:
-    seen = set()
-    for key_node, _ in node.value:
-        key = loader.construct_object(key_node)
-        if key in seen:
-            raise yaml.constructor.ConstructorError(None, None, f"duplicate key {key!r}", key_node.start_mark)
-        seen.add(key)
-    return loader.construct_mapping(node, deep=True)
-
-
-_Loader.add_constructor("tag:yaml.org,2002:float", _decimal)
-_Loader.add_constructor("tag:yaml.org,2002:map", _mapping)
-
-
-class _Reader:
-    """Reads one problem file, naming the file and the field in every error."""
-
-    def __init__(self, path: Path):
-        self.path = path
-        self.symbols: dict[str, sp.Symbol] = {}
-        self.symbol_units: dict[sp.Symbol, str] = {}
-        self.parameters: dict[str, Parameter] = {}
-
-    def fail(self, field: str, message: str) -> ProblemError:
-        return ProblemError(f"{self.path}: {field}: {message}")
-
-    def mapping(self, value, field: str, required=(), optional=(), free: bool = False) -> dict:
-        """A mapping with the given keys; `free` allows any keys (names of parameters, bodies, ...)."""
-        if not isinstance(value, dict):
-            raise self.fail(field, f"expected a mapping, got {type(value).__name__}")
-        unknown = [] if free else [k for k in value if k not in required and k not in optional]
-        if unknown:
-            allowed = ", ".join(sorted({*required, *optional}))
-            raise self.fail(f"{field}.{unknown[0]}" if field else str(unknown[0]), f"unknown key (allowed: {allowed})")
-        for key in required:
-            if key not in value:
-                raise self.fail(f"{field}.{key}" if field else key, "missing")
-        return value
-
-    def text(self, value, field: str) -> str:
-        if not isinstance(value, str) or not value.strip():
-            raise self.fail(field, "expected non-empty text")
-        return value
-
-    def expression(self, value, field: str, allowed=None) -> sp.Expr:
-        try:
-            return expr.parse(value, self.symbols if allowed is None else allowed)
-        except expr.ExprError as error:
-            raise self.fail(field, str(error)) from None
-        except TypeError:
-            raise self.fail(field, f"expected an expression, got {type(value).__name__}") from None
-
-    def unit(self, value, field: str) -> str:
-        text = self.text(value, field) if not isinstance(value, (int, Decimal)) else str(value)
-        try:
-            units.parse_unit(text)
-        except units.UnitError as error:
-            raise self.fail(field, str(error)) from None
-        return text
-
-    def dimensioned(self, value, field: str, unit: str, what: str, allowed=None) -> sp.Expr:
-        """An expression of declared (or `allowed`) symbols that must have the dimension of `unit`."""
-        result = self.expression(value, field, allowed)
-        if result == 0:  # zero has every dimension
-            return result
-        try:
-            found = units.expression_dimension(result, self.symbol_units)
-        except units.UnitError as error:
-            raise self.fail(field, str(error)) from None
-        wanted = units.dimension(units.parse_unit(unit))
-        if not units.same_dimension(found, wanted):
-            raise self.fail(field, f"{what} must have the dimension of {unit}, but {result} has {_describe(found)}")
-        return result
-
-    def unspecified(self, name: str, unit: str) -> sp.Symbol:
-        """A positive symbol for a size the problem leaves open; answers must not depend on it."""
-        symbol = sp.Symbol(name, positive=True)
-        self.symbol_units[symbol] = unit
-        return symbol
-
-    def positive(self, value, field: str, unit: str, what: str) -> sp.Expr:
-        result = self.dimensioned(value, field, unit, what)
-        if result.is_positive is not True:
-            raise self.fail(field, f"{what} must be positive for every allowed parameter value (got {result})")
-        return result
-
-
-def _describe(dimension: dict) -> str:
-    return " ".join(f"{k}^{v}" if v != 1 else k for k, v in sorted(dimension.items())) or "no dimension"
-
-
-def _parameters(reader: _Reader, raw) -> dict[str, Parameter]:
+def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
     raw = reader.mapping(raw, "parameters", free=True)
     result = {}
     for name, spec in raw.items():
@@ -262,416 +148,8 @@ def _parameters(reader: _Reader, raw) -> dict[str, Parameter]:
     return result
 
 
-def _body(reader: _Reader, name: str, spec) -> tuple[Body, Pin | None]:
-    field = f"scene.bodies.{name}"
-    all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
-    spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "path",
-                                    "rotation", *MOTION_KEYS, *all_sizes))
-    shape = spec["shape"]
-    if shape not in SHAPE_SIZES:
-        raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
-    if "mass" in spec:
-        mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
-    elif "density" in spec:
-        mass = None  # from the density, once the sizes are known
-    else:
-        mass = reader.unspecified(f"m_{name}", "kg")
-    sizes = {}
-    for size in all_sizes:
-        if shape == "custom" and size == "radius" and size in spec:  # a custom body may roll
-            sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", "a radius")
-        elif size in SHAPE_SIZES[shape]:
-            if size in spec:
-                sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", f"a {size}")
-            else:
-                sizes[size] = reader.unspecified(f"{size}_{name}", "m")
-        elif size in spec:
-            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
-    given = None
-    if shape == "custom":
-        if "inertia" not in spec:
-            raise reader.fail(f"{field}.inertia", "a custom body needs its moment of inertia about its center of mass")
-        given = reader.dimensioned(spec["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia")
-        if given.is_nonnegative is not True:
-            raise reader.fail(f"{field}.inertia", "a moment of inertia cannot be negative")
-    elif "inertia" in spec:
-        raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
-    density = None
-    if "density" in spec:
-        density, mass = _density(reader, spec["density"], f"{field}.density", shape, sizes, mass)
-    path = None
-    if "path" in spec:
-        if shape != "point" or "joint" in spec or "on" in spec:
-            raise reader.fail(f"{field}.path", "a prescribed path is for a free point mass")
-        path = _path(reader, spec["path"], f"{field}.path", name)
-    body = Body(name, shape, mass, sizes, given, path, density)
-    pin = _joint(reader, body, spec.get("joint"), f"{field}.joint")
-    about = spec.get("inertia_about", "center")
-    if about not in ("center", "pivot") or about == "pivot" and (given is None or pin is None or pin.name != "pivot"):
-        raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body on a pivot joint")
-    if about == "pivot":
-        # Given about the pivot: the center-of-mass moment follows from the parallel-axis theorem.
-        distance = pin.offset[0] ** 2 + pin.offset[1] ** 2
-        body = Body(name, shape, mass, sizes, given - mass * distance)
-    return body, pin
 
-
-COORDINATE_UNITS = {"x": "m", "y": "m", "z": "m", "r": "m", "phi": "rad", "theta": "rad"}
-
-
-def _density(reader: _Reader, raw, field: str, shape: str, sizes: dict, mass: sp.Expr | None):
-    """A body's density in its shape's coordinates: with a mass, a profile scaled to that mass
-    (dimensionless); without, an absolute density whose integral gives the mass."""
-    if shape not in inertia.SHAPES or shape == "point":
-        raise reader.fail(field, f"a {shape} has no density to give")
-    coordinates = inertia.SHAPES[shape].density_symbols
-    clash = sorted(set(coordinates) & set(reader.symbols))
-    if clash:
-        raise reader.fail(field, f"the parameter {clash[0]} has the name of a {shape} coordinate: rename it")
-    density = reader.expression(raw, field, {**reader.symbols, **coordinates})
-    units_here = {**reader.symbol_units, **{s: COORDINATE_UNITS[n] for n, s in coordinates.items()}}
-    try:
-        found = units.expression_dimension(density, units_here)
-    except units.UnitError as error:
-        raise reader.fail(field, str(error)) from None
-    if mass is not None:
-        if found:
-            raise reader.fail(field, f"with a mass given, the density is a profile without dimension; it has "
-                                     f"{_describe(found)}")
-        return density, mass
-    try:
-        derived, _ = inertia.body_moment(shape, inertia.PLANAR_AXIS[shape], None, sizes, density)
-        found = units.expression_dimension(derived, units_here)
-    except (units.UnitError, InputError) as error:
-        raise reader.fail(field, str(error)) from None
-    if not units.same_dimension(found, units.dimension(units.parse_unit("kg"))):
-        raise reader.fail(field, f"the density integrates to {_describe(found)}, not to a mass")
-    return density, derived
-
-
-MOTION_KEYS = ("at", "velocity", "spin", "hits")
-
-
-def _vector(reader: _Reader, value, field: str, unit: str, what: str) -> tuple[sp.Expr, sp.Expr]:
-    if not isinstance(value, list) or len(value) != 2:
-        raise reader.fail(field, "expected [x, y]")
-    return tuple(reader.dimensioned(v, field, unit, what) for v in value)
-
-
-def _motion(reader: _Reader, name: str, spec: dict, bodies: dict[str, Body]) -> Motion | None:
-    """The state of a body just before an event: at, velocity, spin — or `hits`, which places a
-    projectile where its line of motion first meets the rim of a round body."""
-    field = f"scene.bodies.{name}"
-    if not any(k in spec for k in MOTION_KEYS):
-        return None
-    velocity = _vector(reader, spec["velocity"], f"{field}.velocity", "m/s", "a velocity") if "velocity" in spec \
-        else (sp.Integer(0), sp.Integer(0))
-    spin = reader.dimensioned(spec["spin"], f"{field}.spin", "rad/s", "a spin") if "spin" in spec else sp.Integer(0)
-    position = _vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec \
-        else (sp.Integer(0), sp.Integer(0))
-    if "hits" in spec:
-        if "at" in spec:
-            raise reader.fail(f"{field}.hits", "give at or hits, not both")
-        hits = reader.mapping(spec["hits"], f"{field}.hits", required=("body",), optional=("impact_parameter",))
-        target = bodies.get(hits["body"])
-        if target is None or "radius" not in target.sizes:
-            raise reader.fail(f"{field}.hits.body", "expected a round body of the scene")
-        radius = target.sizes["radius"]
-        b = reader.dimensioned(hits.get("impact_parameter", 0), f"{field}.hits.impact_parameter", "m",
-                               "an impact parameter")
-        speed = sp.sqrt(velocity[0] ** 2 + velocity[1] ** 2)
-        if speed == 0:
-            raise reader.fail(f"{field}.velocity", "a projectile needs a velocity")
-        along = sp.Matrix(velocity) / speed
-        left = sp.Matrix([-along[1], along[0]])
-        # The first point of the circle on the line at distance b (to the left of the motion).
-        point = -sp.sqrt(radius**2 - b**2) * along + b * left
-        position = (sp.simplify(point[0]), sp.simplify(point[1]))
-    return Motion(position, velocity, spin)
-
-
-def _events(reader: _Reader, raw, bodies: dict[str, Body]) -> tuple:
-    if not isinstance(raw, list):
-        raise reader.fail("scene.events", "expected a list")
-    result = []
-    for i, spec in enumerate(raw):
-        field = f"scene.events[{i}]"
-        spec = reader.mapping(spec, field, optional=("stick", "internal_turn", "bounce", "skid"))
-        if len(spec) != 1:
-            raise reader.fail(field, "expected one event kind (stick, bounce, internal_turn, skid)")
-        (kind, detail), = spec.items()
-        keys = {"stick": ("body", "to"), "bounce": ("body", "off", "restitution"), "skid": ("body", "friction"),
-                "internal_turn": ("body", "relative_to", "angle")}[kind]
-        detail = reader.mapping(detail, f"{field}.{kind}", required=keys)
-        for key in keys[:1] if kind == "skid" else keys[:2]:
-            if detail[key] not in bodies:
-                raise reader.fail(f"{field}.{kind}.{key}", f"no body {detail[key]!r} (bodies: {', '.join(bodies)})")
-        if kind == "stick":
-            result.append(Stick(f"event{i}", detail["body"], detail["to"]))
-        elif kind == "skid":
-            mu = reader.positive(detail["friction"], f"{field}.skid.friction", "1", "a coefficient of friction")
-            result.append(Skid(f"event{i}", detail["body"], mu))
-        elif kind == "bounce":
-            e = reader.dimensioned(detail["restitution"], f"{field}.bounce.restitution", "1", "a restitution")
-            bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]
-            if e.is_negative or (not e.free_symbols and e > 1) or any(b[0] < 0 or b[1] > 1 for b in bounds):
-                raise reader.fail(f"{field}.bounce.restitution", "a coefficient of restitution lies in [0, 1]")
-            result.append(Bounce(f"event{i}", detail["body"], detail["off"], e))
-        else:
-            angle = reader.dimensioned(detail["angle"], f"{field}.{kind}.angle", "rad", "an angle")
-            result.append(InternalTurn(f"event{i}", detail["body"], detail["relative_to"], angle))
-    return tuple(result)
-
-
-PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
-
-
-def _path(reader: _Reader, raw, field: str, body: str) -> MotionPath:
-    """`{polar: {r: EXPR, theta: EXPR}}` or `{cartesian: {x: ..., y: ...}}` in the parameters and
-    the time t; `any` leaves a coordinate an arbitrary function of time."""
-    raw = reader.mapping(raw, field, optional=tuple(PATH_COORDINATES))
-    if len(raw) != 1:
-        raise reader.fail(field, "expected polar or cartesian")
-    (kind, spec), = raw.items()
-    names = PATH_COORDINATES[kind]
-    spec = reader.mapping(spec, f"{field}.{kind}", required=tuple(n for n, _ in names))
-    if "t" in reader.symbols:
-        raise reader.fail(f"{field}.{kind}", "t is the time in a path: rename the parameter t")
-    reader.symbol_units.setdefault(TIME, "s")
-    allowed = {**reader.symbols, "t": TIME}
-    functions = []
-    for name, unit in names:
-        if spec[name] == "any":
-            function = sp.Function(name)(TIME)
-            reader.symbol_units[function] = unit
-            functions.append(function)
-        else:
-            functions.append(reader.dimensioned(spec[name], f"{field}.{kind}.{name}", unit, f"a path's {name}", allowed))
-    return MotionPath(kind, tuple(functions))
-
-
-def _contact(reader: _Reader, body: Body, spec: dict, surfaces: dict[str, Incline], field: str) -> Contact | None:
-    if "on" not in spec:
-        if "contact" in spec:
-            raise reader.fail(f"{field}.contact", "a contact needs a surface: on: SURFACE")
-        return None
-    if spec["on"] not in surfaces:
-        raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(surfaces) or 'none'})")
-    if spec.get("joint") is not None:
-        raise reader.fail(f"{field}.on", "a body on a surface cannot also turn on a joint")
-    kind = spec.get("contact", "rolling" if "radius" in body.sizes else "sliding")
-    if kind not in ("rolling", "sliding"):
-        raise reader.fail(f"{field}.contact", "expected rolling or sliding")
-    if kind == "rolling" and "radius" not in body.sizes:
-        raise reader.fail(f"{field}.contact", f"a {body.shape} has no radius to roll on")
-    return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling")
-
-
-def _surfaces(reader: _Reader, raw) -> dict[str, Incline | Loop]:
-    raw = reader.mapping(raw or {}, "scene.surfaces", free=True)
-    result = {}
-    for name, spec in raw.items():
-        field = f"scene.surfaces.{name}"
-        if not isinstance(name, str) or not name.isidentifier():
-            raise reader.fail(field, "a surface name is letters, digits and _")
-        spec = reader.mapping(spec, field, optional=("incline", "loop"))
-        if len(spec) != 1:
-            raise reader.fail(field, "expected one surface kind (incline, loop)")
-        if "loop" in spec:
-            loop = reader.mapping(spec["loop"], f"{field}.loop", required=("radius",))
-            result[name] = Loop(name, reader.positive(loop["radius"], f"{field}.loop.radius", "m", "a radius"))
-            continue
-        incline = reader.mapping(spec["incline"] or {}, f"{field}.incline", optional=("angle", "height"))
-        if "angle" in incline:
-            angle = reader.dimensioned(incline["angle"], f"{field}.incline.angle", "rad", "an angle")
-            if not (angle.is_nonnegative and (sp.pi / 2 - angle).is_positive) and not angle.free_symbols:
-                raise reader.fail(f"{field}.incline.angle", "an incline's angle lies in [0, pi/2)")
-        else:
-            angle = reader.unspecified(f"angle_{name}", "rad")
-        height = None
-        if "height" in incline:
-            height = reader.positive(incline["height"], f"{field}.incline.height", "m", "a height")
-        result[name] = Incline(name, angle, height)
-    return result
-
-
-def _joint(reader: _Reader, body: Body, spec, field: str) -> Pin | None:
-    if spec is None:
-        return None
-    if not body.rotates:
-        raise reader.fail(field, "a point mass has no joint")
-    if spec == "fixed_axle":
-        return Pin("axle", body.name, (0, 0))
-    spec = reader.mapping(spec, field, optional=("pivot",))
-    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",), optional=("side",))
-    distance = reader.positive(pivot["distance"], f"{field}.pivot.distance", "m", "a pivot distance")
-    side = pivot.get("side", "above")
-    if side not in ("above", "below"):
-        raise reader.fail(f"{field}.pivot.side", "above (the body hangs) or below (the body stands on it)")
-    return Pin("pivot", body.name, (0, distance if side == "above" else -distance))
-
-
-def _constraint(reader: _Reader, index: int, spec, bodies: dict[str, Body]) -> WoundString:
-    field = f"scene.constraints[{index}]"
-    spec = reader.mapping(spec, field, optional=("string",))
-    if len(spec) != 1:
-        raise reader.fail(field, "expected one constraint kind (string)")
-    cord = reader.mapping(spec["string"], f"{field}.string", required=("wound_on", "hangs"), optional=("side", "name"))
-    for key in ("wound_on", "hangs"):
-        if cord[key] not in bodies:
-            raise reader.fail(f"{field}.string.{key}", f"no body {cord[key]!r} (bodies: {', '.join(bodies)})")
-    reel = bodies[cord["wound_on"]]
-    if "radius" not in reel.sizes:
-        raise reader.fail(f"{field}.string.wound_on", f"a cord winds on a disk or a ring, not a {reel.shape}")
-    if cord["hangs"] == cord["wound_on"]:
-        raise reader.fail(f"{field}.string.hangs", "a cord cannot hang from the body it is wound on")
-    side = cord.get("side", "right")
-    if side not in ("right", "left"):
-        raise reader.fail(f"{field}.string.side", "expected right or left")
-    name = cord.get("name", "string")
-    if not isinstance(name, str) or not name.isidentifier():
-        raise reader.fail(f"{field}.string.name", "expected a name of letters, digits and _")
-    return WoundString(name, reel.name, cord["hangs"], 1 if side == "right" else -1)
-
-
-def _scene(reader: _Reader, raw) -> Scene:
-    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit", "events", "top",
-                                                 "spinning_wheel", "standing_wave", "internal_forces"))
-    orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
-    top = _top(reader, raw["top"]) if "top" in raw else None
-    wheel = _wheel(reader, raw["spinning_wheel"]) if "spinning_wheel" in raw else None
-    wave = _wave(reader, raw["standing_wave"]) if "standing_wave" in raw else None
-    internal = _internal_forces(reader, raw["internal_forces"]) if "internal_forces" in raw else None
-    surfaces = _surfaces(reader, raw.get("surfaces"))
-    bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
-    if not bodies_raw and all(s is None for s in (orbit, top, wheel, wave, internal)):
-        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a top, a spinning_wheel)")
-    bodies, pins = {}, []
-    for name, spec in bodies_raw.items():
-        if not isinstance(name, str) or not name.isidentifier():
-            raise reader.fail(f"scene.bodies.{name}", "a body name is letters, digits and _")
-        body, pin = _body(reader, name, spec)
-        bodies[name] = body
-        pins += [pin] if pin else []
-        contact = _contact(reader, body, spec, surfaces, f"scene.bodies.{name}")
-        pins += [contact] if contact else []
-    # A joint is named "axle" or "pivot"; with several of a kind, "<body>_axle".
-    kinds = [p.name for p in pins]
-    pins = [p if kinds.count(p.name) == 1 or not isinstance(p, Pin) else Pin(f"{p.body}_{p.name}", p.body, p.offset)
-            for p in pins]
-    constraints_raw = raw.get("constraints") or []
-    if not isinstance(constraints_raw, list):
-        raise reader.fail("scene.constraints", "expected a list")
-    constraints = tuple(pins) + tuple(_constraint(reader, i, c, bodies) for i, c in enumerate(constraints_raw))
-    names = [c.name for c in constraints]
-    duplicate = next((n for n in names if names.count(n) > 1 or n in bodies), None)
-    if duplicate:
-        raise reader.fail("scene.constraints", f"the name {duplicate!r} is used twice")
-    gravity, pulls = None, []
-    loads = raw.get("loads") or []
-    if not isinstance(loads, list):
-        raise reader.fail("scene.loads", "expected a list")
-    for i, load in enumerate(loads):
-        field = f"scene.loads[{i}]"
-        load = reader.mapping(load, field, optional=("gravity", "pull"))
-        if len(load) != 1:
-            raise reader.fail(field, "expected one load kind (gravity, pull)")
-        if "gravity" in load:
-            gravity = Gravity(reader.positive(load["gravity"], f"{field}.gravity", "m/s^2", "a gravitational field"))
-            continue
-        pull = reader.mapping(load["pull"], f"{field}.pull", required=("on", "force", "angle", "hub_radius"))
-        if pull["on"] not in bodies or not bodies[pull["on"]].rotates:
-            raise reader.fail(f"{field}.pull.on", f"no turning body {pull['on']!r} (bodies: {', '.join(bodies)})")
-        pulls.append(HubPull(
-            f"pull{i}", pull["on"],
-            reader.positive(pull["force"], f"{field}.pull.force", "N", "a pulling force"),
-            reader.dimensioned(pull["angle"], f"{field}.pull.angle", "rad", "an angle"),
-            reader.positive(pull["hub_radius"], f"{field}.pull.hub_radius", "m", "a hub radius"),
-        ))
-    motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
-    events = _events(reader, raw.get("events") or [], bodies)
-    moving = [n for n, spec in bodies_raw.items() if any(k in spec for k in ("velocity", "spin", "hits"))]
-    if moving and not events:
-        raise reader.fail(f"scene.bodies.{moving[0]}", "velocities and spins describe the state before an event: "
-                          "add the event")
-    if top is not None and gravity is None:
-        raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
-    rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
-                 for n, spec in bodies_raw.items() if "rotation" in spec}
-    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events, top, wheel, wave,
-                 internal, rotations)
-
-
-def _wave(reader: _Reader, raw) -> StandingWave:
-    field = "scene.standing_wave"
-    raw = reader.mapping(raw, field, required=("radius", "planck"), optional=("wavelengths",))
-    n = reader.expression(raw.get("wavelengths", 1), f"{field}.wavelengths", {})
-    if not (n.is_integer and n.is_positive):
-        raise reader.fail(f"{field}.wavelengths", "a whole number of wavelengths, 1 or more")
-    return StandingWave(reader.positive(raw["radius"], f"{field}.radius", "m", "a radius"),
-                        reader.positive(raw["planck"], f"{field}.planck", "J*s", "Planck's constant"), n)
-
-
-def _internal_forces(reader: _Reader, raw) -> int:
-    raw = reader.mapping(raw, "scene.internal_forces", required=("bodies",))
-    if not isinstance(raw["bodies"], int) or not 2 <= raw["bodies"] <= 5:
-        raise reader.fail("scene.internal_forces.bodies", "a whole number of bodies from 2 to 5")
-    return raw["bodies"]
-
-
-def _rotation(reader: _Reader, raw, field: str, body: Body) -> Rotation:
-    if body.shape not in ("rod", "cylinder", "cone", "disk", "ring", "cylindrical_shell") or body.density is not None:
-        raise reader.fail(field, "a turning body is a uniform rod, or a body with a symmetry axis")
-    raw = reader.mapping(raw, field, required=("rate", "tilt"))
-    return Rotation(reader.positive(raw["rate"], f"{field}.rate", "rad/s", "a rotation rate"),
-                    reader.dimensioned(raw["tilt"], f"{field}.tilt", "rad", "a tilt"))
-
-
-def _wheel(reader: _Reader, raw) -> SpinningWheel:
-    field = "scene.spinning_wheel"
-    raw = reader.mapping(raw, field, required=("inertia", "spin", "torque", "duration"))
-    return SpinningWheel(reader.positive(raw["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia"),
-                         reader.positive(raw["spin"], f"{field}.spin", "rad/s", "a spin"),
-                         reader.positive(raw["torque"], f"{field}.torque", "N*m", "a torque"),
-                         reader.positive(raw["duration"], f"{field}.duration", "s", "a duration"))
-
-
-def _top(reader: _Reader, raw) -> Top:
-    field = "scene.top"
-    raw = reader.mapping(raw, field, required=("mass", "pivot_distance", "spin_inertia", "spin"),
-                         optional=("transverse_inertia", "tilt"))
-    transverse = (reader.positive(raw["transverse_inertia"], f"{field}.transverse_inertia", "kg*m^2", "a moment of inertia")
-                  if "transverse_inertia" in raw else reader.unspecified("I_transverse", "kg*m^2"))
-    tilt = (reader.dimensioned(raw["tilt"], f"{field}.tilt", "rad", "a tilt") if "tilt" in raw
-            else reader.unspecified("tilt", "rad"))
-    return Top(reader.positive(raw["mass"], f"{field}.mass", "kg", "a mass"),
-               reader.positive(raw["pivot_distance"], f"{field}.pivot_distance", "m", "a distance"),
-               reader.positive(raw["spin_inertia"], f"{field}.spin_inertia", "kg*m^2", "a moment of inertia"),
-               transverse, tilt,
-               reader.positive(raw["spin"], f"{field}.spin", "rad/s", "a spin"))
-
-
-def _orbit(reader: _Reader, raw) -> Orbit:
-    field = "scene.orbit"
-    raw = reader.mapping(raw, field, required=("GM",), optional=("angular_momentum", "semi_major_axis", "eccentricity"))
-    GM = reader.positive(raw["GM"], f"{field}.GM", "m^3/s^2", "GM")
-    l = None
-    if "angular_momentum" in raw:
-        l = reader.positive(raw["angular_momentum"], f"{field}.angular_momentum", "m^2/s", "an angular momentum per unit mass")
-    a = e = None
-    if ("semi_major_axis" in raw) != ("eccentricity" in raw):
-        raise reader.fail(field, "an ellipse needs both semi_major_axis and eccentricity")
-    if "semi_major_axis" in raw:
-        a = reader.positive(raw["semi_major_axis"], f"{field}.semi_major_axis", "m", "a semi-major axis")
-        e = reader.dimensioned(raw["eccentricity"], f"{field}.eccentricity", "1", "an eccentricity")
-        bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]
-        if e.is_negative or not e.free_symbols and not e < 1 or any(b[0] < 0 or b[1] >= 1 for b in bounds):
-            raise reader.fail(f"{field}.eccentricity", "an ellipse has 0 <= e < 1 (e >= 1 is a parabola or hyperbola)")
-    return Orbit(GM, l, a, e)
-
-
-def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:
+def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:
     raw = reader.mapping(raw, "ask", free=True)
     if not raw:
         raise reader.fail("ask", "a problem asks for at least one quantity")
@@ -712,7 +190,7 @@ def _asks(reader: _Reader, raw, scene: Scene, parameters: dict[str, Parameter]) 
     return result
 
 
-def _shift(reader: _Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
+def _shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
     """`shift: h`: the asked axis moved parallel to itself by the distance h."""
     if raw is None:
         return None
@@ -721,13 +199,13 @@ def _shift(reader: _Reader, raw, field: str, quantity: Quantity) -> sp.Expr | No
     return reader.positive(raw, field, "m", "a shift")
 
 
-def _amplitude(reader: _Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
+def _amplitude(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
     if (raw is None) != (quantity.kind != "oscillation"):
         raise reader.fail(field, "oscillation.period needs an amplitude, and only it takes one")
     return None if raw is None else reader.positive(raw, field, "rad", "an amplitude")
 
 
-def _small(reader: _Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ...]:
+def _small(reader: Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ...]:
     """`small: ball.radius` (or a list): sizes taken to zero in the answer (the notes' r << R)."""
     if raw is None:
         return ()
@@ -743,9 +221,9 @@ def _small(reader: _Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, .
 
 def parse(text: str, path: Path) -> Problem:
     """Validate the text of a problem file; `path` names it in errors."""
-    reader = _Reader(path)
+    reader = Reader(path)
     try:
-        raw = yaml.load(text, Loader=_Loader)  # noqa: S506 - _Loader is a SafeLoader
+        raw = yaml.load(text, Loader=Loader)  # noqa: S506 - Loader is a SafeLoader
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None) or getattr(error, "context_mark", None)
         where = f"line {mark.line + 1}" if mark else "yaml"
@@ -756,7 +234,7 @@ def parse(text: str, path: Path) -> Problem:
     if not library.ID_PATTERN.fullmatch(problem_id):
         raise reader.fail("id", "an id is letters, digits and _, starting with a letter")
     parameters = _parameters(reader, raw["parameters"])
-    scene = _scene(reader, raw["scene"])
+    scene = read_scene(reader, raw["scene"])
     asks = _asks(reader, raw["ask"], scene, parameters)
     corrections = raw.get("corrections") or []
     if not isinstance(corrections, list):

@@ -12,7 +12,8 @@ import json
 import sympy as sp
 
 from derive import numeric, units
-from derive.answers import DYNAMIC_KINDS, Solution
+from derive.answers import Solution
+from derive.scene import DYNAMIC_KINDS
 from derive.problem import Problem
 
 _ROUTE_TITLES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler", "integration": "Integration"}

@@ -419,6 +419,12 @@ class Scene:
         return next((c for c in self.constraints if isinstance(c, Contact) and c.body == body), None)
 
 
+#: Quantities that come out of the equations of motion (both routes).
+DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation"}
+#: Quantities of the bodies and their arrangement, with no motion.
+STATIC_KINDS = {"inertia", "mass", "position_cm", "system"}
+
+
 @dataclass(frozen=True)
 class Quantity:
     """A quantity a problem may ask of its scene, parsed from a dotted path.

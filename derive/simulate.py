@@ -21,7 +21,8 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derive.answers import Solution, sample_points
+from derive.answers import Solution
+from derive.crosschecks import sample_points
 from derive.mechanics import joints
 from derive.mechanics.lagrange import energies
 

@@ -3,7 +3,8 @@ import sympy as sp
 
 from conftest import copy_library, run_derive
 from derive import simulate
-from derive.answers import CheckFailure, Solution
+from derive.answers import Solution
+from derive.crosschecks import CheckFailure
 from derive.problem import load
 
 

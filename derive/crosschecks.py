@@ -1,0 +1,329 @@
+"""The independent checks of a Solution: every answer again by a second route.
+
+Lagrange against Newton–Euler (answers symbolically, every acceleration and force at random
+states the constraints allow), the work-energy theorem, energy against dynamics, conservation
+laws against impulses, both routes of orbits, the top, the wheel and the small systems,
+integration against the tensor and the parallel-axis theorem, projections against
+sympy.physics.mechanics, and the dimensions of every answer. `CrossChecks` is a mixin of
+`derive.answers.Solution`, whose derivations it reads.
+
+>>> import sympy as sp
+>>> agree(sp.sin(sp.Symbol("x"))**2 + sp.cos(sp.Symbol("x"))**2, sp.Integer(1))
+'symbolic'
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive import inertia, units
+from derive.mechanics import gyroscope, joints, lagrange, many_bodies, orbits, paths, top
+from derive.mechanics.derivation import tidy
+from derive.problem import Ask, Problem
+from derive.scene import DYNAMIC_KINDS
+
+ROUTES = ("lagrange", "newton_euler")
+
+
+class CheckFailure(RuntimeError):
+    """Two routes of derivation disagree: a bug in the engine, never bad input."""
+
+
+@dataclass(frozen=True)
+class Check:
+    name: str
+    passed: bool
+    method: str
+    detail: str
+
+
+class CrossChecks:
+    """Checks of a Solution's answers by independent routes (mixed into Solution)."""
+
+    def checks(self) -> list[Check]:
+        """Every independent check that applies: routes, parallel axes, dimensions."""
+        result = [self._dimension_check()]
+        kinds = {a.quantity.kind for a in self.problem.asks.values()}
+        if kinds & DYNAMIC_KINDS:
+            result.append(self._routes_check())
+            result.append(self._work_energy_check())
+        if kinds & {"event", "after"}:
+            result.append(self._event_check())
+        if "orbit" in kinds:
+            result.append(self._orbit_check())
+        if self.energy_balances:
+            result.append(self._energy_check())
+        if "system" in kinds:
+            result.append(self._system_check())
+        if "inertia" in kinds:
+            result.append(self._tensor_check())
+        if "path" in kinds:
+            result.append(self._path_check())
+        if "top" in kinds:
+            result.append(self._top_check())
+        if "wheel" in kinds:
+            result.append(self._wheel_check())
+        agreed: dict[str, list[str]] = {}
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind in ("standing_wave", "internal_forces", "rotation"):
+                first, second, name = self._second_routes(ask.quantity)
+                if agree(first, second) is None:
+                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {first} one way, {second} the other")
+                agreed.setdefault(name, []).append(ask.name)
+        result += [Check(name, True, "symbolic", f"{', '.join(asks)} agree") for name, asks in agreed.items()]
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
+                check = self._parallel_axis_check(ask)
+                if check:
+                    result.append(check)
+        return result
+
+    def _dimension_check(self) -> Check:
+        found = {}
+        for name, ask in self.problem.asks.items():
+            if self.expressions[name] == 0:  # zero has every dimension
+                found[name] = ask.unit
+                continue
+            dimension = units.expression_dimension(self.expressions[name], self.problem.symbol_units)
+            wanted = units.dimension(units.parse_unit(ask.unit))
+            if not units.same_dimension(dimension, wanted):
+                raise self.problem.error(
+                    f"ask.{name}.unit", f"declared {ask.unit}, but the derived answer has dimension {dimension or 'none'}"
+                )
+            found[name] = ask.unit
+        return Check("dimensions", True, "dimensional analysis", ", ".join(f"{k} [{v}]" for k, v in found.items()))
+
+    def _routes_check(self) -> Check:
+        """Lagrange's method and Newton–Euler give the same answers (symbolically) and the same
+        value of every acceleration and constraint force, at random states (numerically: simplifying
+        them all would cost far more than the question)."""
+        lag, ne = self.derivations["lagrange"], self.derivations["newton_euler"]
+        methods = set()
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind not in DYNAMIC_KINDS:
+                continue
+            a, b = (self._route_expression(ask, r) for r in ROUTES)
+            method = agree(a, b)
+            if method is None:
+                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {name}: {a} vs {b}")
+            methods.add(method)
+        for state in self._states_on_constraints():
+            for unknown in lag.unknowns:
+                if agree(lag.solution.raw[unknown].xreplace(state), ne.solution.raw[unknown].xreplace(state),
+                         symbolic=False) is None:
+                    raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {unknown}")
+        asked = "symbolic" if methods <= {"symbolic"} else "symbolic or numeric"
+        return Check("lagrange_vs_newton_euler", True, f"answers {asked}, all unknowns numeric",
+                     f"answers and {len(lag.unknowns)} accelerations and forces agree")
+
+    def energy_ledger(self) -> dict[str, sp.Expr]:
+        """Kinetic energy (translational, rotational), potential energy and the power of the
+        non-conservative applied forces, in the coordinates of the scene."""
+        coords = self.coordinates
+        translational = sum((b.mass * (coords.of(n, "x").u ** 2 + coords.of(n, "y").u ** 2) / 2
+                             for n, b in self.scene.bodies.items()), sp.Integer(0))
+        rotational = sum((b.inertia * coords.angular_velocity(n) ** 2 / 2
+                          for n, b in self.scene.bodies.items() if b.rotates), sp.Integer(0))
+        _, potential = lagrange.energies(self.scene, coords)
+        power = sp.trigsimp(sp.expand(sum(((p.force * p.direction).dot(coords.material_velocity(p.body, p.offset))
+                                           for p in self.scene.pulls), sp.Integer(0))))
+        return {"kinetic_translational": translational, "kinetic_rotational": rotational,
+                "potential": potential, "power_nonconservative": power}
+
+    def _work_energy_check(self) -> Check:
+        """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,
+        on motions the constraints allow: the constraint forces do no work."""
+        ledger = self.energy_ledger()
+        coords = self.coordinates
+        rate = coords.ddt(ledger["kinetic_translational"] + ledger["kinetic_rotational"] + ledger["potential"])
+        solved = self.derivations["lagrange"].solution.raw
+        for state in self._states_on_constraints():
+            left = rate.xreplace({c.a: solved[c.a] for c in coords.all}).xreplace(state)
+            if agree(left, ledger["power_nonconservative"].xreplace(state), symbolic=False) is None:
+                raise CheckFailure(f"{self.problem.id}: the work-energy theorem fails")
+        kind = "conserved" if ledger["power_nonconservative"] == 0 else "changes by the work of the applied forces"
+        return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work")
+
+    def _states_on_constraints(self, count: int = 2) -> list[dict[sp.Symbol, sp.Expr]]:
+        """Motions the constraints allow: the reference configuration (where every gap vanishes)
+        with random velocities solving dg/dt = 0. Off the constraints the two routes' descriptions
+        of a curved contact differ, so only states on them are compared."""
+        coords = self.coordinates
+        rates = [coords.ddt(g) for c in self.scene.constraints for g in joints.gaps(c, coords)]
+        at_reference = {c.q: 0 for c in coords.all}
+        rng = random.Random(2)
+        states = []
+        for _ in range(count):
+            matrix, rhs = sp.linear_eq_to_matrix([r.xreplace(at_reference) for r in rates], [c.u for c in coords.all])
+            reduced, pivots = matrix.rref()
+            free = [c.u for i, c in enumerate(coords.all) if i not in pivots]
+            chosen = {u: sp.Rational(rng.randint(-90, 90), 37) for u in free}
+            solved = sp.solve([r.xreplace(at_reference).xreplace(chosen) for r in rates],
+                              [c.u for c in coords.all if c.u not in chosen], dict=True)
+            states.append({**at_reference, **chosen, **(solved[0] if solved else {})})
+        return states
+
+    def _event_check(self) -> Check:
+        """Conservation laws and per-body impulses give the same state after the event."""
+        conservation, impulses = self.event_results["conservation"], self.event_results["impulses"]
+        compared = 0
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind in ("event", "after"):
+                a, b = self._event(ask.quantity, conservation), self._event(ask.quantity, impulses)
+                if agree(a, b) is None:
+                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {a} by conservation, {b} by impulses")
+                compared += 1
+        return Check("conservation_vs_impulses", True, "symbolic", f"{compared} quantities agree")
+
+    def _orbit_check(self) -> Check:
+        """Lagrange's and Newton's radial equations agree; for an ellipse, the energy is the same
+        at both turning points (where the velocity is l / r)."""
+        orbit = self.scene.orbit
+        l = sp.Symbol("l", positive=True)
+        routes = [orbits.radial_acceleration(orbit.GM, l, route) for route in ROUTES]
+        if agree(*routes) is None:
+            raise CheckFailure(f"{self.problem.id}: the radial equations differ: {routes}")
+        detail = "radial equations agree"
+        if orbit.semi_major_axis is not None:
+            k = orbits.kepler(orbit.GM, orbit.semi_major_axis, orbit.eccentricity)
+            at = [(k["angular_momentum"] / d) ** 2 / 2 - orbit.GM / d for d in (k["periapsis"], k["apoapsis"])]
+            if agree(*at) is None or agree(at[0], k["energy"]) is None:
+                raise CheckFailure(f"{self.problem.id}: the energy differs at periapsis and apoapsis")
+            detail += "; energy equal at periapsis and apoapsis"
+        return Check("lagrange_vs_newton_euler", True, "symbolic", detail)
+
+    def _tensor_check(self) -> Check:
+        """Each moment of inertia again as n^T I n from the inertia tensor (a different integral)."""
+        compared = []
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind != "inertia":
+                continue
+            other = self._inertia(ask, "tensor")
+            if other is None:
+                continue
+            if agree(other, self.expressions[name]) is None:
+                raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} integrated, {other} "
+                                   "from the tensor")
+            compared.append(name)
+        return Check("tensor_vs_integral", True, "symbolic", ", ".join(compared) or "no derived moment")
+
+    def _wheel_check(self) -> Check:
+        """The vector route (L0 + tau dt) and the rate route (dphi/dt = tau_perp / |L|) agree; the
+        small-angle formula's relative error is reported."""
+        w = self.scene.wheel
+        arguments = (w.torque, w.duration, w.inertia, w.spin)
+        exact = gyroscope.axis_turn(*arguments, "vector")
+        if agree(exact, gyroscope.axis_turn(*arguments, "rate")) is None:
+            raise CheckFailure(f"{self.problem.id}: the two routes to the axis turn differ")
+        error = tidy(gyroscope.small_angle(*arguments) / exact - 1)
+        return Check("vector_vs_rate", True, "numeric", f"exact turns agree; small-angle / exact - 1 = {sp.sstr(error)}")
+
+    def _top_check(self) -> Check:
+        """Lagrange's and Newton–Euler's (dH/dt = torque) precession conditions agree; the fast-top
+        rate's relative error against the slow root is reported."""
+        conditions = [top.precession_condition(*self._top_arguments(), route) for route in ROUTES]
+        if agree(*conditions) is None:
+            raise CheckFailure(f"{self.problem.id}: the precession conditions differ: {conditions}")
+        slow = self._top("precession.slow")
+        error = tidy(self._top("precession.fast_top") / slow - 1)
+        return Check("lagrange_vs_newton_euler", True, "symbolic",
+                     f"precession conditions agree; fast-top rate / slow root - 1 = {sp.sstr(error)}")
+
+    def _path_check(self) -> Check:
+        """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "path":
+                body = self.scene.bodies[ask.quantity.target]
+                other = paths.by_mechanics(body.path, body.mass, ask.quantity.detail)
+                if agree(other, self.expressions[name]) is None:
+                    raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} by projection, "
+                                       f"{other} by sympy.physics.mechanics")
+        return Check("path_vs_mechanics", True, "symbolic", "every path quantity agrees")
+
+    def _system_check(self) -> Check:
+        """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,
+        the inertia about the center of mass is mu d^2."""
+        total, composed = self._system("inertia", "sum"), self._system("inertia", "tensor")
+        if agree(total, composed) is None:
+            raise CheckFailure(f"{self.problem.id}: the system's inertia is {total} summed, {composed} composed")
+        detail = "parallel-axis sum equals the composed tensor"
+        bodies = list(self.scene.bodies.values())
+        if len(bodies) == 2 and all(b.shape == "point" for b in bodies):
+            gap = self._position(bodies[1].name) - self._position(bodies[0].name)
+            if agree(total, many_bodies.reduced_mass(bodies[0].mass, bodies[1].mass) * gap.dot(gap)) is None:
+                raise CheckFailure(f"{self.problem.id}: I differs from mu d^2")
+            detail += "; I = mu d^2"
+        return Check("system_inertia", True, "symbolic", detail)
+
+    def _energy_check(self) -> Check:
+        """Energy conservation gives the same speeds as the accelerations integrated."""
+        methods = set()
+        for body, balance in self.energy_balances.items():
+            dynamics = self._contact_expression(body, "speed_at_bottom", self.derivations["lagrange"])
+            method = agree(balance.speed, dynamics)
+            if method is None:
+                raise CheckFailure(f"{self.problem.id}: energy gives {balance.speed}, dynamics {dynamics} for {body}")
+            methods.add(method)
+        return Check("energy_vs_dynamics", True, "symbolic" if methods == {"symbolic"} else "numeric",
+                     f"speeds of {', '.join(self.energy_balances)} agree")
+
+    def _parallel_axis_check(self, ask: Ask) -> Check | None:
+        body = self.scene.bodies[ask.quantity.target]
+        derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
+        if ask.shift is not None:  # the shifted axis, integrated directly, against I_cm + M h^2
+            theorem = inertia.parallel_axis(self._inertia_about(body, ask.quantity.detail), body.mass, ask.shift)
+            if agree(theorem, self.expressions[ask.name]) is None:
+                raise CheckFailure(f"{self.problem.id}: the shifted axis gives {self.expressions[ask.name]}, "
+                                   f"the parallel-axis theorem {theorem}")
+            return Check("parallel_axis", True, "symbolic",
+                         f"{ask.name}: integration about the shifted axis equals I_cm + M h^2")
+        if derived.distance_from_center == 0:
+            return None
+        center_axis = inertia.PLANAR_AXIS[body.shape]
+        central = inertia.moment_of_inertia(body.shape, center_axis).I
+        theorem = inertia.parallel_axis(central, inertia.M, derived.distance_from_center)
+        if agree(theorem, derived.I) is None:
+            raise CheckFailure(f"{self.problem.id}: the parallel-axis theorem gives {theorem}, integration {derived.I}")
+        return Check(
+            "parallel_axis", True, "symbolic",
+            f"{ask.name}: integration equals I_cm + M d^2 with d = {derived.distance_from_center}",
+        )
+
+
+def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:
+    """Points where `expr` can be evaluated: parameters inside their ranges (the middle, then
+    random draws), sizes the problem leaves open at positive values, open angles in (0, pi/2)."""
+    rng = random.Random(1)
+    by_symbol = {p.symbol: p for p in problem.parameters.values()}
+    points = []
+    for i in range(count):
+        point = {}
+        for s in expr.free_symbols:
+            p = by_symbol.get(s)
+            if p is not None and p.range is not None:
+                fraction = sp.Rational(1, 2) if i == 0 else sp.Rational(rng.randint(1, 99), 100)
+                point[s] = p.range[0] + fraction * (p.range[1] - p.range[0])
+            elif p is not None and p.value is not None:
+                point[s] = p.value
+            else:
+                point[s] = sp.Rational(rng.randint(5, 145), 100)  # open sizes; below pi/2 for angles
+        points.append(point)
+    return points
+
+
+def agree(a: sp.Expr, b: sp.Expr, trials: int = 4, symbolic: bool = True) -> str | None:
+    """'symbolic' when a - b simplifies to zero, 'numeric' when it vanishes at random points
+    (to 30 digits), None when they differ. `symbolic=False` skips the simplification."""
+    difference = sp.simplify(a - b) if symbolic else a - b
+    if difference == 0:
+        return "symbolic"
+    symbols = sorted(difference.free_symbols, key=str)
+    rng = random.Random(0)
+    for _ in range(trials):
+        point = {s: sp.Rational(rng.randint(11, 99), 37) for s in symbols}
+        scale = abs(sp.N(a.xreplace(point), 30)) + 1
+        if abs(sp.N(difference.xreplace(point), 30)) > scale * sp.Float("1e-25"):
+            return None
+    return "numeric"

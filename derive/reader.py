@@ -1,0 +1,129 @@
+"""Reading a problem file's fields: safe YAML, and one-line errors naming the file and field.
+
+The YAML loader keeps decimals exact, refuses duplicate keys and reads only true/false as
+booleans. The Reader checks mappings, texts, expressions (through `derive.expr`), units and
+dimensions, and names `FILE: FIELD` in every error.
+
+>>> import yaml
+>>> yaml.load("m: 0.1", Loader=Loader)["m"]
+Decimal('0.1')
+"""
+from __future__ import annotations
+
+import re
+from decimal import Decimal
+from pathlib import Path
+
+import sympy as sp
+import yaml
+
+from derive import expr, units
+from derive.errors import ProblemError
+
+class Loader(yaml.SafeLoader):
+    """Safe YAML that keeps decimals exact (as Decimal), refuses duplicate keys, and reads
+    only true/false as booleans (YAML 1.2), so that `on:` and `no` stay words."""
+
+
+Loader.yaml_implicit_resolvers = {
+    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
+    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
+}
+Loader.add_implicit_resolver("tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
+                              list("tTfF"))
+
+
+def _decimal(loader: yaml.SafeLoader, node: yaml.Node) -> Decimal:
+    return Decimal(loader.construct_scalar(node).replace("_", ""))
+
+
+def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> dict:
+    seen = set()
+    for key_node, _ in node.value:
+        key = loader.construct_object(key_node)
+        if key in seen:
+            raise yaml.constructor.ConstructorError(None, None, f"duplicate key {key!r}", key_node.start_mark)
+        seen.add(key)
+    return loader.construct_mapping(node, deep=True)
+
+
+Loader.add_constructor("tag:yaml.org,2002:float", _decimal)
+Loader.add_constructor("tag:yaml.org,2002:map", _mapping)
+
+
+class Reader:
+    """Reads one problem file, naming the file and the field in every error."""
+
+    def __init__(self, path: Path):
+        self.path = path
+        self.symbols: dict[str, sp.Symbol] = {}
+        self.symbol_units: dict[sp.Symbol, str] = {}
+        self.parameters: dict = {}  # name -> derive.problem.Parameter, as they are read
+
+    def fail(self, field: str, message: str) -> ProblemError:
+        return ProblemError(f"{self.path}: {field}: {message}")
+
+    def mapping(self, value, field: str, required=(), optional=(), free: bool = False) -> dict:
+        """A mapping with the given keys; `free` allows any keys (names of parameters, bodies, ...)."""
+        if not isinstance(value, dict):
+            raise self.fail(field, f"expected a mapping, got {type(value).__name__}")
+        unknown = [] if free else [k for k in value if k not in required and k not in optional]
+        if unknown:
+            allowed = ", ".join(sorted({*required, *optional}))
+            raise self.fail(f"{field}.{unknown[0]}" if field else str(unknown[0]), f"unknown key (allowed: {allowed})")
+        for key in required:
+            if key not in value:
+                raise self.fail(f"{field}.{key}" if field else key, "missing")
+        return value
+
+    def text(self, value, field: str) -> str:
+        if not isinstance(value, str) or not value.strip():
+            raise self.fail(field, "expected non-empty text")
+        return value
+
+    def expression(self, value, field: str, allowed=None) -> sp.Expr:
+        try:
+            return expr.parse(value, self.symbols if allowed is None else allowed)
+        except expr.ExprError as error:
+            raise self.fail(field, str(error)) from None
+        except TypeError:
+            raise self.fail(field, f"expected an expression, got {type(value).__name__}") from None
+
+    def unit(self, value, field: str) -> str:
+        text = self.text(value, field) if not isinstance(value, (int, Decimal)) else str(value)
+        try:
+            units.parse_unit(text)
+        except units.UnitError as error:
+            raise self.fail(field, str(error)) from None
+        return text
+
+    def dimensioned(self, value, field: str, unit: str, what: str, allowed=None) -> sp.Expr:
+        """An expression of declared (or `allowed`) symbols that must have the dimension of `unit`."""
+        result = self.expression(value, field, allowed)
+        if result == 0:  # zero has every dimension
+            return result
+        try:
+            found = units.expression_dimension(result, self.symbol_units)
+        except units.UnitError as error:
+            raise self.fail(field, str(error)) from None
+        wanted = units.dimension(units.parse_unit(unit))
+        if not units.same_dimension(found, wanted):
+            raise self.fail(field, f"{what} must have the dimension of {unit}, but {result} has {describe(found)}")
+        return result
+
+    def unspecified(self, name: str, unit: str) -> sp.Symbol:
+        """A positive symbol for a size the problem leaves open; answers must not depend on it."""
+        symbol = sp.Symbol(name, positive=True)
+        self.symbol_units[symbol] = unit
+        return symbol
+
+    def positive(self, value, field: str, unit: str, what: str) -> sp.Expr:
+        result = self.dimensioned(value, field, unit, what)
+        if result.is_positive is not True:
+            raise self.fail(field, f"{what} must be positive for every allowed parameter value (got {result})")
+        return result
+
+
+def describe(dimension: dict) -> str:
+    return " ".join(f"{k}^{v}" if v != 1 else k for k, v in sorted(dimension.items())) or "no dimension"
+
