@@ -91,7 +91,7 @@ def _cone() -> Shape:
     z_cm = sp.integrate(z * r, *_limits(base_at_zero)) / sp.integrate(r, *_limits(base_at_zero))  # h/4
 
     def moved(limit):  # the old z is the new z + z_cm
-        return sp.simplify(sp.sympify(limit).subs(z, z + z_cm))
+        return sp.simplify(sp.sympify(limit).subs(z, z + z_cm))  # safe: the module's own limits, not text
 
     coordinates = tuple((v, lo - z_cm, hi - z_cm) if v == z else (v, moved(lo), moved(hi))
                         for v, lo, hi in base_at_zero)
@@ -169,7 +169,7 @@ def _shape(name: str) -> Shape:
 def _exact(value, what: str) -> sp.Expr:
     """A sympy object from a number or an expression; text is refused, never parsed."""
     try:
-        return sp.sympify(value, strict=True)
+        return sp.sympify(value, strict=True)  # safe: strict=True refuses text (tested: it is never parsed)
     except sp.SympifyError:
         raise InputError(f"{what}: expected a number or a sympy expression, got {value!r}") from None
 
@@ -233,7 +233,8 @@ def _check_density(shape: Shape, rho: sp.Expr) -> None:
     for value in (sp.Rational(1, 3), 1, 3):
         points = [{**sizes, **{p: value for p in parameters}}]
         for coordinate, lo, hi in shape.coordinates:
-            points = [{**p, coordinate: sp.sympify(lo + t * (hi - lo)).xreplace(p)} for p in points for t in fractions]
+            points = [{**p, coordinate: sp.sympify(lo + t * (hi - lo)).xreplace(p)}  # safe: numbers, not text
+                      for p in points for t in fractions]
         for point in points:
             if rho.xreplace(point).evalf().is_extended_negative:
                 where = ", ".join(f"{s}={v}" for s, v in point.items())

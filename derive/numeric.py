@@ -85,7 +85,7 @@ class Evaluator:
 
     def _at(self, values, precision: int):
         with mpmath.workdps(precision):
-            exact = (sp.sympify(values[s]) for s in self.symbols)
+            exact = (sp.sympify(values[s]) for s in self.symbols)  # safe: derive's own numbers, never text
             arguments = [mpmath.mpf(v.p) / v.q if v.is_Rational else mpmath.mpmathify(sp.N(v, precision + 5))
                          for v in exact]
             result = self._mpmath(*arguments)

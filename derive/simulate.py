@@ -56,7 +56,8 @@ def _values(solution: Solution) -> dict[sp.Symbol, sp.Expr]:
 def _power(solution: Solution) -> sp.Expr:
     """Power of the non-conservative applied forces (the pulls): sum of F . v at their points."""
     coords = solution.coordinates
-    return sum((p.force * p.direction).dot(coords.material_velocity(p.body, p.offset)) for p in solution.scene.pulls)
+    return sum(((p.force * p.direction).dot(coords.material_velocity(p.body, p.offset)) for p in solution.scene.pulls),
+               sp.Integer(0))
 
 
 def _rhs(solution: Solution, values):
@@ -64,7 +65,7 @@ def _rhs(solution: Solution, values):
     coords = solution.coordinates
     lagrange = solution.derivations["lagrange"]
     state = [c.q for c in coords.all] + [c.u for c in coords.all]
-    rates = [lagrange.solution.raw[c.a].xreplace(values) for c in coords.all] + [sp.sympify(_power(solution)).xreplace(values)]
+    rates = [lagrange.solution.raw[c.a].xreplace(values) for c in coords.all] + [_power(solution).xreplace(values)]
     function = sp.lambdify(state, rates, "numpy")
     n = len(coords.all)
 

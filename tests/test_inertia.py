@@ -382,3 +382,11 @@ def test_results_are_cached_for_300_variants():
         assert variant is first
         assert variant.I.xreplace({rho0: 1, k: 2, R: sp.Integer(1 + n)}) == sp.pi * (1 + n)**4 / 3
     assert inertia.tensor("cone", about=(0, 0, h)) is inertia.tensor("cone", about=(0, 0, h))
+
+
+def test_text_is_never_parsed_by_the_inertia_api():
+    import pytest
+
+    from derive.errors import InputError
+    with pytest.raises(InputError):
+        inertia.moment_of_inertia("disk", "symmetry", density="__import__('os')")
