@@ -136,7 +136,8 @@ class _Event:
     def result(self, route: str, equations: list[sp.Eq], extra: list[sp.Symbol], text: str) -> EventResult:
         unknowns = [u for v in self.unknown.values() for u in v if isinstance(u, sp.Symbol)] + extra
         solution = solve_linear(equations, unknowns)
-        after = {n: tuple(tidy(sp.sympify(u).xreplace(solution)) for u in v) for n, v in self.unknown.items()}
+        after = {n: tuple(tidy(sp.sympify(u).xreplace(solution)) for u in v)  # safe: our symbols or 0
+                 for n, v in self.unknown.items()}
         steps = (Step(text, tuple(equations)), Step("Solving", tuple(sp.Eq(u, solution[u]) for u in unknowns)))
         return EventResult(route, after, None, steps)
 
