@@ -395,7 +395,9 @@ class Solution(CrossChecks):
         if kinds <= {"event", "after"}:
             return {f"by {route}": list(r.steps) for route, r in self.event_results.items()}
         needed = self._needed_unknowns()
-        result = {route: [*d.steps, d.solving_step(u for u in d.unknowns if u in needed)]
+        # The general equations only when an asked quantity is read from them (a release height
+        # needs the normal force at one point of the loop, shown in its own steps).
+        result = {route: [*d.steps, d.solving_step(u for u in d.unknowns if u in needed)] if needed else []
                   for route, d in self.derivations.items()}
         if "small_oscillation" in kinds:
             for route in result:
@@ -410,7 +412,7 @@ class Solution(CrossChecks):
             if ask.quantity.kind == "contact" and ask.quantity.detail == "min_release_height":
                 result[f"staying on the loop: the {ask.quantity.target}"] = list(
                     self._release_height(ask.quantity.target, "lagrange")[1])
-        return result
+        return {route: steps for route, steps in result.items() if steps}
 
     def _needed_unknowns(self) -> set[sp.Symbol]:
         """The accelerations and forces the asked quantities are made of."""

@@ -66,13 +66,10 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
                 error = ratio
             answers[name]["approximation"] = {"exact": ask.exact, "relative_error": error}
     steps = solution.steps()
-    equations = {
-        route: [sp.sstr(e) for e in solution.derivations[route].equations]
-        for route in steps
-        if route in ("lagrange", "newton_euler")
-    }
-    checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
     kinds = {a.quantity.kind for a in problem.asks.values()}
+    equations = ({route: [sp.sstr(e) for e in d.equations] for route, d in solution.derivations.items()}
+                 if kinds & DYNAMIC_KINDS else {})
+    checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
     energy = ({k: sp.sstr(v) for k, v in solution.energy_ledger().items()} if kinds & DYNAMIC_KINDS else {})
     return {
         "id": problem.id,

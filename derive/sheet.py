@@ -105,6 +105,18 @@ def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict
                      f"({'; '.join(m for _, _, m in solution.conditions)}): narrow the ranges")
 
 
+LONGEST_EQUATION = 700  # characters of LaTeX; longer would overflow the page
+
+
+def typeset(equation: sp.Eq) -> str:
+    """An equation for an align environment; one too long to typeset becomes a short note."""
+    text = render.latex_of(equation)
+    if len(text) > LONGEST_EQUATION:
+        return (render.latex_of(equation.lhs) + r" &= \text{(too long to typeset here: see derive solve "
+                r"--format latex)}")
+    return text.replace("=", "&=", 1)
+
+
 def number_latex(text: str) -> str:
     """A decimal string for LaTeX math: 1.23e-05 as 1.23\\times10^{-5}."""
     mantissa, _, exponent = text.partition("e")
@@ -177,7 +189,7 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         {
             "title": route_title(route),
             "steps": [
-                {"text": s.text, "equations": [render.latex_of(e).replace("=", "&=", 1) for e in s.equations]}
+                {"text": s.text, "equations": [typeset(e) for e in s.equations]}
                 for s in steps
             ],
         }
