@@ -17,6 +17,7 @@ from derive import __version__
 from derive.errors import InputError
 
 FORMATS = click.Choice(["text", "latex", "json"])
+FORMATS_OUT = ("pdf", "html", "md", "docx", "moodle", "qti")
 
 
 class BadInput(click.ClickException):
@@ -245,7 +246,7 @@ def bench(quick: bool) -> None:
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
               help="Output folder (default: build/<set id>).")
 @click.option("--to", "formats", default="pdf,html", show_default=True,
-              help="Outputs besides .tex and the keys: any of pdf, html.")
+              help="Outputs besides .tex and the keys (CSV, JSON): any of pdf, html, md, docx, moodle, qti.")
 @reports_errors
 def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str | None, formats: str) -> None:
     """Build a problem set: worksheet, worked solutions and answer key.
@@ -253,14 +254,15 @@ def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str
     SET is a set file or the id of one in problems/sets/. Each variant draws the
     parameters from their declared ranges (reproducibly from the seed) and rounds them
     to their significant figures. Writes .tex files, PDFs (latexmk), HTML (pandoc) and
-    the answer key as CSV and JSON.
+    the answer key as CSV and JSON; with --to also Markdown and DOCX (pandoc), Moodle XML
+    (a cloze question per problem and variant) and a QTI 1.2 zip for Canvas.
     """
     from derive import sheet as sheets
 
     wanted = {f.strip() for f in formats.split(",") if f.strip()}
-    unknown = wanted - {"pdf", "html"}
+    unknown = wanted - set(FORMATS_OUT)
     if unknown:
-        raise BadInput(f"--to: unknown format {sorted(unknown)[0]!r} (formats: pdf, html)")
+        raise BadInput(f"--to: unknown format {sorted(unknown)[0]!r} (formats: {', '.join(FORMATS_OUT)})")
     built = sheets.build(problem_set, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
                          progress=lambda message: click.echo(message, err=True))
     for path in built:

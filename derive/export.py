@@ -68,14 +68,25 @@ def pdfs(texs: list[Path]) -> list[Path]:
         return list(pool.map(pdf, texs))
 
 
-def html(tex: Path, title: str) -> Path:
-    """Convert a .tex document to standalone HTML with MathML (no network needed to view it)."""
+#: pandoc targets: (writer, file suffix, extra arguments). Math stays math in each: MathML in
+#: HTML, $...$ in Markdown, Word equations in DOCX. No filters, and nothing from a problem file
+#: reaches pandoc's options.
+PANDOC_TARGETS = {
+    "html": ("html5", ".html", ["--standalone", "--mathml"]),
+    "md": ("markdown", ".md", ["--standalone"]),
+    "docx": ("docx", ".docx", []),
+}
+
+
+def convert(tex: Path, target: str, title: str) -> Path:
+    """Convert a .tex document with pandoc to html, md or docx (see PANDOC_TARGETS)."""
     import pypandoc
 
-    out = tex.with_suffix(".html")
+    writer, suffix, extra = PANDOC_TARGETS[target]
+    out = tex.with_suffix(suffix)
     try:
-        pypandoc.convert_file(str(tex), "html5", format="latex", outputfile=str(out),
-                              extra_args=["--standalone", "--mathml", f"--metadata=title:{title}"])
+        pypandoc.convert_file(str(tex), writer, format="latex", outputfile=str(out),
+                              extra_args=[*extra, f"--metadata=title:{title}"])
     except (RuntimeError, OSError) as error:
         raise BuildError(f"pandoc could not convert {tex.name}: {str(error).strip().splitlines()[-1]}") from None
     return out

@@ -26,7 +26,7 @@ from typing import Callable
 import sympy as sp
 import yaml
 
-from derive import export, library, numeric, render, units
+from derive import export, library, lms, numeric, render, units
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
@@ -235,6 +235,19 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
     return rows, key
 
 
+def _lms_items(prepared: list[_ProblemVariants], variants: int) -> list[lms.Item]:
+    """Every numeric answer of every variant, with its question, for the LMS exports."""
+    items = []
+    for number in range(1, variants + 1):
+        for item in prepared:
+            values = item.draws[number - 1]
+            answers = item.answers(values)
+            question = item.question(values)
+            items += [lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning, answers[name],
+                               ask.unit) for name, ask in item.problem.asks.items() if answers[name] is not None]
+    return items
+
+
 def _write(folder: Path, name: str, text: str) -> Path:
     path = folder / name
     path.write_text(text, encoding="utf-8")
@@ -280,9 +293,17 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
         if "pdf" in formats:
             progress(f"compiling {len(texs)} PDFs")
             products += export.pdfs(texs)
-        if "html" in formats:
-            progress("converting the worksheet to HTML")
-            products.append(export.html(texs[0], problem_set.title))
+        for target in ("html", "md", "docx"):
+            if target in formats:
+                progress(f"converting the worksheet to {target}")
+                products.append(export.convert(texs[0], target, problem_set.title))
+        items = _lms_items(prepared, variants)
+        if "moodle" in formats:
+            products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id)))
+        if "qti" in formats:
+            path = staging / "canvas-qti.zip"
+            path.write_bytes(lms.qti(items, problem_set.title))
+            products.append(path)
         _replace(staging, out, products)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
