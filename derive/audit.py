@@ -71,3 +71,61 @@ def table(rows: list[Row]) -> str:
     lines.append(f"{len(rows) - len(failed)} passed, {len(failed)} failed")
     lines += [f"FAILED {r.id}: {r.failure}" for r in failed]
     return "\n".join(lines)
+
+
+@dataclass
+class Spread:
+    """How one answer varies over the seeds: its range, and how often a draw sat on a bound."""
+
+    problem: str
+    answer: str
+    low: float
+    high: float
+    on_bound: int
+    seeds: int
+
+
+def stress(references: list[str] | None, seeds: int, progress=lambda message: None) -> tuple[list[Spread], list[str]]:
+    """Draw each problem's parameters with `seeds` seeds: every draw must meet the problem's
+    conditions and give a key equal to `derive solve` at those parameters."""
+    import random
+
+    from derive import report, sheet
+
+    references = references or [str(p) for p in library.problem_files()]
+    spreads, failures = [], []
+    for reference in references:
+        p = problem.load(reference)
+        progress(f"stress-testing {p.id} over {seeds} seeds")
+        solution = Solution(p)
+        values: dict[str, list[float]] = {name: [] for name in p.asks}
+        on_bound = 0
+        for seed in range(seeds):
+            try:
+                draw = sheet.valid_draw(p, solution, random.Random(f"{seed}/{p.id}/1"))
+            except InputError as error:
+                failures.append(str(error))
+                break
+            on_bound += any(q.range is not None and draw[n] in q.range for n, q in p.parameters.items())
+            item = sheet._ProblemVariants(p, solution, [draw])
+            key = item.answers(draw)
+            given = p.values({n: str(draw[n]) for n, q in p.parameters.items() if q.range is not None})
+            full = report.answer_values(solution, given, 15)
+            for name, ask in p.asks.items():
+                if key[name] is None:
+                    continue
+                again = report.answer_values(solution, given, ask.sig_figs or 3)[name]
+                if again != key[name]:
+                    failures.append(f"{p.id} seed {seed}: key {name} = {key[name]}, derive solve gives {again}")
+                values[name].append(float(full[name]))
+        spreads += [Spread(p.id, name, min(v), max(v), on_bound, seeds) for name, v in values.items() if v]
+    return spreads, failures
+
+
+def spread_table(spreads: list[Spread], failures: list[str]) -> str:
+    lines = [f"{'problem':<28} {'answer':<14} {'lowest':>12} {'highest':>12}  draws on a range bound"]
+    lines += [f"{s.problem:<28} {s.answer:<14} {s.low:>12.4g} {s.high:>12.4g}  {s.on_bound}/{s.seeds}" for s in spreads]
+    lines.append("")
+    lines.append(f"{len(failures)} failed" if failures else "every seed: conditions met, key equal to derive solve")
+    lines += [f"FAILED {f}" for f in failures]
+    return "\n".join(lines)

@@ -200,8 +200,11 @@ def list_problems(topic: str | None) -> None:
 
 @main.command()
 @click.argument("problems", nargs=-1)
+@click.option("--seeds", type=click.IntRange(1, 10000), default=None,
+              help="Instead: draw each problem's parameters with N seeds and check every draw (conditions "
+                   "met, key equal to derive solve); print each answer's range.")
 @reports_errors
-def check(problems: tuple[str, ...]) -> None:
+def check(problems: tuple[str, ...], seeds: int | None) -> None:
     """Run every cross-check over the library (or the PROBLEMS given) and print a table.
 
     For each problem: the independent routes of derivation (Lagrange and Newton–Euler,
@@ -213,9 +216,14 @@ def check(problems: tuple[str, ...]) -> None:
     Examples:
       derive check
       derive check tugged_spool compound_pendulum
+      derive check --seeds 50 top_precession_exact
     """
     from derive import audit
 
+    if seeds is not None:
+        spreads, failures = audit.stress(list(problems), seeds, progress=lambda message: click.echo(message, err=True))
+        click.echo(audit.spread_table(spreads, failures))
+        sys.exit(1 if failures else 0)
     rows = audit.audit(list(problems), progress=lambda message: click.echo(message, err=True))
     click.echo(audit.table(rows))
     if not all(r.passed for r in rows):
@@ -237,6 +245,26 @@ def bench(quick: bool) -> None:
     from derive import bench as benchmarks
 
     benchmarks.run(lambda line: click.echo(line), quick=quick)
+
+
+@main.command()
+@click.argument("problem")
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              help="Output folder (default: build/handouts/<id>).")
+@reports_errors
+def handout(problem: str, out_dir: str | None) -> None:
+    """A step-by-step handout of one problem's derivation, in LaTeX and PDF.
+
+    Setup, each step of each route of derivation, the result with a worked example at the
+    middle of the parameter ranges, the independent checks, and any correction to the notes.
+
+    \b
+    Example:  derive handout tugged_spool --out build/spool
+    """
+    from derive import sheet as sheets
+
+    for path in sheets.handout(problem, out_dir, progress=lambda message: click.echo(message, err=True)):
+        click.echo(str(path))
 
 
 @main.command()

@@ -13,6 +13,7 @@ sympy.physics.mechanics, and the dimensions of every answer. `CrossChecks` is a 
 """
 from __future__ import annotations
 
+import functools
 import random
 from dataclasses import dataclass
 
@@ -42,6 +43,7 @@ class Check:
 class CrossChecks:
     """Checks of a Solution's answers by independent routes (mixed into Solution)."""
 
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem; the checks do not change
     def checks(self) -> list[Check]:
         """Every independent check that applies: routes, parallel axes, dimensions."""
         result = [self._dimension_check()]

@@ -28,9 +28,27 @@ def _in_unit(value_si: sp.Expr, unit: str) -> sp.Expr:
     return value_si / units.si_factor(units.parse_unit(unit))
 
 
-def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int = 15) -> dict:
-    """The JSON contract of `derive solve`: parameters, answers, equations of motion, checks."""
-    solution = Solution(problem)
+def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: int) -> dict[str, str | None]:
+    """Each answer's value in its declared unit, to `digits` significant digits (the numbers of
+    `derive solve`), after the problem's conditions are checked at these values."""
+    problem = solution.problem
+    broken = solution.violated(values)
+    if broken:
+        raise problem.error("parameters", broken)
+    result = {}
+    for name, ask in problem.asks.items():
+        try:
+            result[name] = numeric.evaluate(_in_unit(solution.expression(name), ask.unit), values, digits)
+        except (ValueError, ZeroDivisionError) as error:  # outside where the answer exists
+            raise problem.error(f"ask.{name}", f"no real value at these parameters ({error})") from None
+    return result
+
+
+def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int = 15,
+          solution: Solution | None = None) -> dict:
+    """The JSON contract of `derive solve`: parameters, answers, equations of motion, checks.
+    A Solution already derived for the problem may be passed in (it is the same derivation)."""
+    solution = solution or Solution(problem)
     values = problem.values(overrides)
     parameters = {
         name: {
@@ -40,22 +58,16 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         }
         for name, p in problem.parameters.items()
     }
-    broken = solution.violated(values)
-    if broken:
-        raise problem.error("parameters", broken)
+    numbers = answer_values(solution, values, digits)
     answers = {}
     for name, ask in problem.asks.items():
         expression = solution.expression(name)
-        try:
-            value = numeric.evaluate(_in_unit(expression, ask.unit), values, digits)
-        except (ValueError, ZeroDivisionError) as error:  # outside where the answer exists
-            raise problem.error(f"ask.{name}", f"no real value at these parameters ({error})") from None
         answers[name] = {
             "meaning": ask.meaning,
             "expr": sp.sstr(expression),
             "latex": sp.latex(expression),
             "unit": ask.unit,
-            "value": value,
+            "value": numbers[name],
         }
     for name, ask in problem.asks.items():
         if ask.exact is not None:  # an approximation: its relative error at these parameters

@@ -323,3 +323,31 @@ def _replace(staging: Path, out: Path, products: list[Path]) -> None:
         shutil.rmtree(old, ignore_errors=True)
     else:
         final.rename(out)
+
+
+def handout(reference: str, out_dir: str | None = None, progress: Callable[[str], None] = lambda m: None) -> list[Path]:
+    """One problem's derivation as a handout (LaTeX and PDF): setup, each step of each route,
+    the result with a worked example at the middle of the parameter ranges, the checks, and
+    the corrections to the notes."""
+    problem = load(reference)
+    progress(f"deriving {problem.id}")
+    solution = Solution(problem)
+    middle = {name: (p.value if p.range is None else sp.Rational(numeric.round_decimal(
+                  Decimal(repr(float((p.range[0] + p.range[1]) / 2))), p.sig_figs)))
+              for name, p in problem.parameters.items()}
+    item = _ProblemVariants(problem, solution, [middle])
+    context = _solutions_context(item)
+    out = Path(out_dir or Path("build") / "handouts" / problem.id)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    staging = out.parent / f".{out.name}.partial-{os.getpid()}"
+    shutil.rmtree(staging, ignore_errors=True)
+    staging.mkdir()
+    try:
+        tex = _write(staging, f"{problem.id}.tex", render.render("handout.tex.j2", problem=context,
+                                                                   question=item.question(middle)))
+        progress("compiling the PDF")
+        products = [tex, export.pdf(tex)]
+        _replace(staging, out, products)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+    return [out / p.name for p in products]
