@@ -14,6 +14,7 @@ True
 from __future__ import annotations
 
 import random
+import shutil
 import statistics
 import subprocess
 import sys
@@ -224,12 +225,47 @@ def work_precision(say) -> None:
         f"({fastest[0] * 1e3:.1f} ms); the simulation check uses DOP853 at rtol 1e-11 for runs of one second")
 
 
+def sheet_build(say, with_pdfs: bool) -> None:
+    """A 10-problem set with 30 variants: LaTeX only, and with PDFs (pages per second)."""
+    import os
+    import tempfile
+
+    ids = [p.stem for p in library.problem_files()][:10]
+    with tempfile.TemporaryDirectory() as folder:
+        sets = Path(folder) / "library"
+        shutil.copytree(library.problems_dir(), sets)
+        (sets / "sets" / "bench.yaml").write_text(f"title: Bench\nproblems: [{', '.join(ids)}]\nvariants: 30\n")
+        previous = os.environ.get("DERIVE_LIBRARY")
+        os.environ["DERIVE_LIBRARY"] = str(sets)
+        try:
+            say("\nA 10-problem set with 30 variants:")
+            latex_only = None
+            for formats, label in ((set(), "LaTeX, keys"), ({"pdf"}, "with the 3 PDFs")):
+                if formats and not with_pdfs:
+                    continue
+                built, elapsed = _timed(lambda: sheet.build("bench", out_dir=str(Path(folder) / "out"), formats=formats))
+                line = f"  {label:<16} {elapsed:6.1f} s"
+                if formats:
+                    pages = sum(int(subprocess.run(["pdfinfo", str(p)], capture_output=True, text=True).stdout
+                                    .split("Pages:")[1].split()[0]) for p in built if p.suffix == ".pdf")
+                    step = max(elapsed - latex_only, 1e-3)
+                    line += f"  ({pages} pages; the PDF step {step:.1f} s, {pages / step:.0f} pages/s, in parallel)"
+                latex_only = elapsed
+                say(line)
+        finally:
+            if previous is None:
+                os.environ.pop("DERIVE_LIBRARY")
+            else:
+                os.environ["DERIVE_LIBRARY"] = previous
+
+
 def run(say, quick: bool = False) -> None:
     ids = [p.stem for p in library.problem_files()]
     startup(say, runs=3 if quick else 10)
     solutions = derivations(say, ids[:8] if quick else ids)
     backends(say, solutions, samples=1 if quick else 3)
     answer_key(say, solutions, variants=30 if quick else 300)
+    sheet_build(say, with_pdfs=not quick)
     if not quick:
         mechanics_alone(say)
     work_precision(say)

@@ -215,7 +215,10 @@ def _solutions_context(item: _ProblemVariants) -> dict:
 
 
 def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int):
-    rows, key = [], {"set": problem_set.id, "title": problem_set.title, "seed": seed, "variants": []}
+    rows, key = [], {"set": problem_set.id, "title": problem_set.title, "seed": seed,
+                     "conventions": "SI units; angles in radians (rad is dimensionless); y up; counter-clockwise "
+                                    "positive; values to the significant figures shown",
+                     "variants": []}
     for number in range(1, variants + 1):
         entry = {"variant": number, "problems": {}}
         for item in prepared:
