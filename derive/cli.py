@@ -17,7 +17,7 @@ from derive import __version__
 from derive.errors import InputError
 
 FORMATS = click.Choice(["text", "latex", "json"])
-FORMATS_OUT = ("pdf", "html", "md", "docx", "moodle", "qti")
+FORMATS_OUT = ("pdf", "html", "md", "docx", "moodle", "qti", "distractors")
 
 
 class BadInput(click.ClickException):
@@ -274,7 +274,8 @@ def handout(problem: str, out_dir: str | None) -> None:
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
               help="Output folder (default: build/<set id>).")
 @click.option("--to", "formats", default="pdf,html", show_default=True,
-              help="Outputs besides .tex and the keys (CSV, JSON): any of pdf, html, md, docx, moodle, qti.")
+              help="Outputs besides .tex and the keys (CSV, JSON): any of pdf, html, md, docx, moodle, qti; "
+                   "distractors adds wrong answers from common mistakes to key.json.")
 @reports_errors
 def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str | None, formats: str) -> None:
     """Build a problem set: worksheet, worked solutions and answer key.

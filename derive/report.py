@@ -28,15 +28,18 @@ def _in_unit(value_si: sp.Expr, unit: str) -> sp.Expr:
     return value_si / units.si_factor(units.parse_unit(unit))
 
 
-def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: int) -> dict[str, str | None]:
-    """Each answer's value in its declared unit, to `digits` significant digits (the numbers of
-    `derive solve`), after the problem's conditions are checked at these values."""
+def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: int,
+                  names: list[str] | None = None) -> dict[str, str | None]:
+    """Each answer's value (or those `names`) in its declared unit, to `digits` significant
+    digits (the numbers of `derive solve`), after the problem's conditions are checked."""
     problem = solution.problem
     broken = solution.violated(values)
     if broken:
         raise problem.error("parameters", broken)
     result = {}
     for name, ask in problem.asks.items():
+        if names is not None and name not in names:
+            continue
         try:
             result[name] = numeric.evaluate(_in_unit(solution.expression(name), ask.unit), values, digits)
         except (ValueError, ZeroDivisionError) as error:  # outside where the answer exists

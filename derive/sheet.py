@@ -26,7 +26,7 @@ from typing import Callable
 import sympy as sp
 import yaml
 
-from derive import export, library, lms, numeric, render, units
+from derive import distractors, export, library, lms, numeric, render, units
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
@@ -214,7 +214,8 @@ def _solutions_context(item: _ProblemVariants) -> dict:
             "variants": variants, "checks": checks, "corrections": list(problem.corrections)}
 
 
-def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int):
+def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int,
+          with_distractors: bool = False):
     rows, key = [], {"set": problem_set.id, "title": problem_set.title, "seed": seed,
                      "conventions": "SI units; angles in radians (rad is dimensionless); y up; counter-clockwise "
                                     "positive; values to the significant figures shown",
@@ -230,6 +231,11 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
                 "answers": {n: {"value": answers[n], "expr": sp.sstr(item.solution.expressions[n]), "unit": a.unit,
                                 "meaning": a.meaning} for n, a in item.problem.asks.items()},
             }
+            if with_distractors:  # wrong answers for multiple choice, from mistaken set-ups
+                si = item.si_values(values)
+                for n, a in item.problem.asks.items():
+                    entry["problems"][item.problem.id]["answers"][n]["distractors"] = distractors.distractors(
+                        item.problem, n, si, a.sig_figs or DEFAULT_SIG_FIGS)
             for n, a in item.problem.asks.items():
                 rows.append({"variant": number, "problem": item.problem.id, "answer": n,
                              "value": answers[n] if answers[n] is not None else sp.sstr(item.solution.expressions[n]),
@@ -271,7 +277,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                                    for item in prepared]}
         for n in range(1, variants + 1)
     ]
-    rows, key = _keys(problem_set, prepared, variants, seed)
+    rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats)
     key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
