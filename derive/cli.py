@@ -50,6 +50,9 @@ def reports_errors(command):
         except KeyboardInterrupt:
             click.echo("derive: interrupted", err=True)
             sys.exit(130)
+        except BrokenPipeError:  # the reader stopped (derive list | head): stop quietly
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            sys.exit(0)
         except Exception as error:  # an engine bug: say so, exit 1
             if os.environ.get("DERIVE_DEBUG"):
                 traceback.print_exc()

@@ -120,3 +120,9 @@ def test_help_does_not_import_sympy():
             "print('sympy' in sys.modules, 'yaml' in sys.modules)")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.stdout.strip().splitlines()[-1] == "False False"
+
+
+def test_output_into_a_closed_pipe_stops_quietly():
+    from conftest import DERIVE
+    done = subprocess.run(f"{DERIVE} list | head -1", shell=True, capture_output=True, text=True)
+    assert done.stdout.count("\n") == 1 and "Error" not in done.stderr and "error" not in done.stderr
