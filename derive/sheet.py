@@ -17,7 +17,7 @@ import json
 import os
 import random
 import shutil
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
 from pathlib import Path
@@ -136,6 +136,9 @@ class _ProblemVariants:
     problem: Problem
     solution: Solution
     draws: list[dict[str, sp.Expr]]
+    # A build reads each variant's answers for the solutions, the key and the LMS exports:
+    # evaluated once per draw (keyed by the draw, which self.draws keeps alive).
+    _answers: dict[int, dict[str, str | None]] = field(default_factory=dict, repr=False)
 
     def si_values(self, draw: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
         return {
@@ -155,9 +158,14 @@ class _ProblemVariants:
 
     def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each answer's value to its significant figures; None for a general (symbolic) result."""
+        if id(draw) in self._answers:
+            return self._answers[id(draw)]
         values = self.si_values(draw)
-        return {name: numeric.evaluate(self.in_declared_units[name], values, ask.sig_figs or DEFAULT_SIG_FIGS)
-                for name, ask in self.problem.asks.items()}
+        result = {name: numeric.evaluate(self.in_declared_units[name], values, ask.sig_figs or DEFAULT_SIG_FIGS)
+                  for name, ask in self.problem.asks.items()}
+        if any(d is draw for d in self.draws):  # only draws this object keeps alive: their ids stay theirs
+            self._answers[id(draw)] = result
+        return result
 
     def question(self, draw: dict[str, sp.Expr]) -> str:
         shown = {
