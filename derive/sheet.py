@@ -163,9 +163,13 @@ class _ProblemVariants:
         values = self.si_values(draw)
         result = {name: numeric.evaluate(self.in_declared_units[name], values, ask.sig_figs or DEFAULT_SIG_FIGS)
                   for name, ask in self.problem.asks.items()}
-        if any(d is draw for d in self.draws):  # only draws this object keeps alive: their ids stay theirs
+        if id(draw) in self._own_draws:  # only draws this object keeps alive: their ids stay theirs
             self._answers[id(draw)] = result
         return result
+
+    @cached_property
+    def _own_draws(self) -> set[int]:
+        return {id(d) for d in self.draws}
 
     def question(self, draw: dict[str, sp.Expr]) -> str:
         shown = {
