@@ -304,6 +304,10 @@ class Solution(CrossChecks):
                                 - 4 * t.transverse_inertia * t.mass * self.scene.gravity.g * t.pivot_distance
                                 * sp.cos(t.tilt)), False,
                            "no steady precession: the spin is too slow (I3^2 w^2 < 4 I1 m g R cos(theta))"))
+        for declared in self.problem.conditions:  # the problem file's own, answers substituted
+            answers = {d: self.expression(name) for d, name in declared.answers.items()}
+            result += [(difference.xreplace(answers), strict, f"{declared.text} does not hold: {declared.because}")
+                       for difference, strict in declared.parts]
         return result
 
     def violated(self, values: dict[sp.Symbol, sp.Expr], backend: str = "auto") -> str | None:

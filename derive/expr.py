@@ -21,7 +21,7 @@ import sympy
 
 from derive.errors import InputError
 
-__all__ = ["ExprError", "FUNCTIONS", "RESERVED", "parse"]
+__all__ = ["ExprError", "FUNCTIONS", "RESERVED", "parse", "parse_condition"]
 
 
 class ExprError(InputError):
@@ -190,6 +190,11 @@ def parse(text: str | int | float | decimal.Decimal, symbols: Mapping[str, sympy
         return _rational(str(text))
     if not isinstance(text, str):
         raise ExprError(f"expected an expression, got {type(text).__name__}")
+    return _build(*_syntax_tree(text, max_length), _resolver(symbols), FUNCTIONS)
+
+
+def _resolver(symbols: Mapping[str, sympy.Symbol]) -> Callable[[str], sympy.Expr]:
+    """Names to the declared symbols (and pi); anything else is an ExprError."""
     clash = sorted(RESERVED & set(symbols))
     if clash:
         raise ExprError(f"symbol name {clash[0]!r} is reserved")
@@ -202,4 +207,36 @@ def parse(text: str | int | float | decimal.Decimal, symbols: Mapping[str, sympy
             raise ExprError(f"unknown symbol '{name}' (declared: {declared})")
         return symbols[name]
 
-    return _build(*_syntax_tree(text, max_length), resolve, FUNCTIONS)
+    return resolve
+
+
+_COMPARISONS = {ast.Lt: (1, True), ast.LtE: (1, False), ast.Gt: (-1, True), ast.GtE: (-1, False)}
+
+
+def parse_condition(text: str, symbols: Mapping[str, sympy.Symbol], *,
+                    max_length: int = 1000) -> list[tuple[sympy.Expr, bool]]:
+    """Parse an inequality such as ``r < R`` or ``0 <= e < 1`` (chains allowed) into
+    (expression, strict) pairs: each expression must be positive (strict) or not negative.
+
+    >>> import sympy
+    >>> r, R = sympy.symbols("r R")
+    >>> parse_condition("r < R", {"r": r, "R": R})
+    [(R - r, True)]
+    """
+    if not isinstance(text, str):
+        raise ExprError(f"expected an inequality such as 'r < R', got {type(text).__name__}")
+    tree, source = _syntax_tree(text, max_length)
+    if not isinstance(tree.body, ast.Compare):
+        raise ExprError("expected an inequality such as 'r < R' (with <, <=, > or >=)")
+    resolve = _resolver(symbols)
+    sides = [_build(ast.Expression(body=node), source, resolve, FUNCTIONS)
+             for node in (tree.body.left, *tree.body.comparators)]
+    result = []
+    for (left, right), op in zip(zip(sides, sides[1:]), tree.body.ops):
+        if type(op) not in _COMPARISONS:
+            shown = {ast.Eq: "==", ast.NotEq: "!=", ast.Is: "is", ast.IsNot: "is not", ast.In: "in",
+                     ast.NotIn: "not in"}.get(type(op), type(op).__name__)
+            raise ExprError(f"comparison '{shown}' is not allowed (use <, <=, > or >=)")
+        sign, strict = _COMPARISONS[type(op)]
+        result.append((sign * (right - left), strict))
+    return result

@@ -25,7 +25,7 @@ from derive.scene import Quantity, Scene, parse_quantity
 from derive.scene_file import read_scene
 
 DEFAULT_SIG_FIGS = 3
-TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections"}
+TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections", "conditions"}
 
 
 @dataclass(frozen=True)
@@ -56,6 +56,18 @@ class Ask:
 
 
 @dataclass(frozen=True)
+class Condition:
+    """A declared condition for the answers to make physical sense (`holds: r < R`), as
+    (expression, strict) pairs: each expression, in SI units, must be positive (strict) or
+    not negative. `answers` maps the placeholders of asked quantities to their names."""
+
+    text: str
+    because: str
+    parts: tuple[tuple[sp.Expr, bool], ...]
+    answers: dict[sp.Symbol, str]
+
+
+@dataclass(frozen=True)
 class Problem:
     id: str
     title: str
@@ -68,6 +80,7 @@ class Problem:
     question: str
     corrections: tuple[dict[str, str], ...]
     scene_units: dict[sp.Symbol, str]
+    conditions: tuple[Condition, ...] = ()
 
     def error(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -219,6 +232,35 @@ def _small(reader: Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ..
     return tuple(result)
 
 
+def _conditions(reader: Reader, raw, asks: dict[str, Ask]) -> tuple[Condition, ...]:
+    """`conditions: [{holds: "b <= R", because: the ball hits the disk}]`: inequalities among
+    parameters and asked quantities, compared in SI units, that each draw must meet."""
+    if raw is None:
+        return ()
+    if not isinstance(raw, list):
+        raise reader.fail("conditions", "expected a list of {holds: INEQUALITY, because: TEXT}")
+    placeholders = {name: sp.Dummy(name, real=True) for name in asks}
+    symbol_units = {**reader.symbol_units, **{placeholders[n]: a.unit for n, a in asks.items()}}
+    result = []
+    for i, spec in enumerate(raw):
+        field = f"conditions[{i}]"
+        spec = reader.mapping(spec, field, required=("holds", "because"))
+        try:
+            parts = expr.parse_condition(spec["holds"], {**reader.symbols, **placeholders})
+        except expr.ExprError as error:
+            raise reader.fail(f"{field}.holds", str(error)) from None
+        for difference, _ in parts:
+            try:
+                units.expression_dimension(difference, symbol_units)
+            except units.UnitError as error:
+                raise reader.fail(f"{field}.holds", f"compares quantities of different dimensions ({error}); "
+                                  "numbers stand only for dimensionless quantities") from None
+        used = {d for difference, _ in parts for d in difference.free_symbols}
+        result.append(Condition(spec["holds"], reader.text(spec["because"], f"{field}.because"), tuple(parts),
+                                {d: n for n, d in placeholders.items() if d in used}))
+    return tuple(result)
+
+
 def parse(text: str, path: Path) -> Problem:
     """Validate the text of a problem file; `path` names it in errors."""
     reader = Reader(path)
@@ -253,6 +295,7 @@ def parse(text: str, path: Path) -> Problem:
         question=reader.text(raw["question"], "question"),
         corrections=tuple({k: str(v) for k, v in c.items()} for c in corrections),
         scene_units=dict(reader.symbol_units),
+        conditions=_conditions(reader, raw.get("conditions"), asks),
     )
 
 
