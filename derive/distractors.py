@@ -61,7 +61,9 @@ _DERIVED: dict[int, tuple[Problem, list[tuple[str, Problem, Solution]], Solution
 
 def _derived(problem: Problem) -> tuple[list[tuple[str, Problem, Solution]], Solution]:
     if id(problem) not in _DERIVED:
-        mistakes = [(label, mistaken, Solution(mistaken)) for label, mistaken in perturbations(problem)]
+        # The declared conditions belong to the right set-up (mu_s >= mu_min means nothing when sliding).
+        mistakes = [(label, mistaken, Solution(dataclasses.replace(mistaken, conditions=())))
+                    for label, mistaken in perturbations(problem)]
         _DERIVED[id(problem)] = (problem, mistakes, Solution(problem))
     _, mistakes, solution = _DERIVED[id(problem)]
     return mistakes, solution
