@@ -26,7 +26,7 @@ from typing import Callable
 import sympy as sp
 import yaml
 
-from derive import distractors, export, library, lms, numeric, render, units
+from derive import distractors, export, figure, library, lms, numeric, render, units
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
@@ -223,7 +223,8 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         })
     checks = [f"{c.name.replace('_', ' ')}: {c.detail} ({c.method})" for c in solution.checks()]
     return {"title": problem.title, "source": problem.source, "routes": routes, "answers": answers,
-            "variants": variants, "checks": checks, "corrections": list(problem.corrections)}
+            "variants": variants, "checks": checks, "corrections": list(problem.corrections),
+            "figure": figure.tikz(problem)}
 
 
 def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int,
@@ -284,9 +285,10 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
     out = Path(out_dir or Path("build") / problem_set.id)
     prepared = _prepare(problem_set, variants, seed, progress)
     header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
+    figures = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
     worksheet_variants = [
-        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1])}
-                                   for item in prepared]}
+        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1]),
+                                    "figure": drawn} for item, drawn in zip(prepared, figures)]}
         for n in range(1, variants + 1)
     ]
     rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats)
