@@ -282,7 +282,7 @@ def _top(fig: _Figure) -> None:
     fig.add(f"\\draw[line width=1.5pt] {_pt(cm)} -- {_pt(_add(tip, axis, 3.3))};")
     fig.line(tip, cm, "thin, dashed")
     fig.add(f"\\fill {_pt(cm)} circle (0.05); \\fill {_pt(tip)} circle (0.05);")
-    fig.label(_add(_add(tip, axis, 1.1), across, 0.1), across, f"${fig.tex(top.pivot_distance)}$"
+    fig.label(_add(_add(tip, axis, 1.0), across, -0.08), (-across[0], -across[1]), f"${fig.tex(top.pivot_distance)}$"
               if fig.tex(top.pivot_distance) else None)
     fig.arc(tip, 2.5, axis_degrees, 90, fig.tex(top.tilt), label_radius=2.55)
     fig.gravity_arrow(cm, Body("top", "custom", top.mass, {}), 1.1, toward=(1, 0))
@@ -313,23 +313,19 @@ def _wheel(fig: _Figure) -> None:
 
 
 def _wave(fig: _Figure) -> None:
-    """A standing wave of n wavelengths around a circle of radius r, with L out of the page."""
+    """A standing wave of n wavelengths around a circle of radius r (its two extremes), with L."""
     wave = fig.scene.wave
-    n = int(fig.num(wave.wavelengths, 1))
-    radius = 1.4
-    fig.add(f"\\draw[dashed, gray] (0,0) circle ({_f(radius)});")
-    amplitude = 0.22
-    points = []
-    for k in range(73):
-        phi = TAU * k / 72
-        rho = radius + amplitude * math.sin(n * phi + math.pi / 2 * (n == 1))
-        points.append(_pt((rho * math.cos(phi), rho * math.sin(phi))))
-    fig.add(f"\\draw[thick, blue!70!black] plot[smooth cycle] coordinates {{{' '.join(points[:-1])}}};")
+    n, radius, amplitude = int(fig.num(wave.wavelengths, 1)), 1.4, 0.22
+    fig.add(f"\\draw[gray!60] (0,0) circle ({_f(radius)});")
+    for sign, style in ((1, "thick, blue!70!black"), (-1, "thick, dashed, blue!70!black")):
+        points = [_add((0, 0), _unit(5 * k), radius + sign * amplitude * math.sin(n * math.radians(5 * k)))
+                  for k in range(72)]
+        fig.add(f"\\draw[{style}] plot[smooth cycle] coordinates {{{' '.join(_pt(p) for p in points)}}};")
     fig.add("\\fill (0,0) circle (0.04);")
-    fig.line((0, 0), _add((0, 0), _unit(-40), radius), "")
+    fig.line((0, 0), _add((0, 0), _unit(-40), radius))
     fig.label(_add((0, 0), _unit(-40), radius / 2), (1, 1), f"${fig.tex(wave.radius)}$")
     fig.out_of_page((-0.45, 0.35), r"\vec L")
-    at = _add((0, 0), _unit(130), radius + amplitude * 0.4)
+    at = _add((0, 0), _unit(130), radius)
     fig.add(f"\\fill {_pt(at)} circle (0.07);")
     fig.arrow(at, _add((0, 0), _unit(40), 0.8), "velocity", "$p$")
     wavelengths = fig.tex(wave.wavelengths)
@@ -524,8 +520,8 @@ def _on_surface(fig: _Figure) -> None:
         fig.dimension((0, 0), (0, height), fig.tex(surface.height), side=1, gap=0.3)
     down, normal = (math.cos(angle), -math.sin(angle)), (math.sin(angle), math.cos(angle))
     reference = _reference_size(fig, surface.height, height)
-    along = 0.5
     several = len(contacts) > 1
+    along = 0.5 if several else 1.0
     for contact in contacts:
         body = scene.bodies[contact.body]
         r = _drawn_radius(fig, body, reference)
@@ -585,8 +581,8 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
                 fig.arrow((x - 0.05, 0.08), (-1.0 * v[0] / n, 0), "force", f"${text}$" if text else None,
                           toward=(-v[0] / n, 1))
         if "radius" in body.sizes and fig.tex(body.sizes["radius"]) and not pull:
-            fig.line(center, _add(center, _unit(-30), r), "thin")
-            fig.label(_add(center, _unit(-30), r * 0.55), (1, 1), f"${fig.tex(body.sizes['radius'])}$")
+            fig.line(center, _add(center, _unit(150), r), "thin")
+            fig.label(_add(center, _unit(150), r * 0.55), (0, 1), f"${fig.tex(body.sizes['radius'])}$")
         x += 2 * r + 1.2
 
 
@@ -740,29 +736,27 @@ def _pendulum(fig: _Figure, body: Body, pin: Pin, at) -> None:
     hanging = offset > 0
     swing = math.radians(22 if hanging else 12)
     length = 2.0
-    if hanging:
-        axis = (math.sin(swing), -math.cos(swing))
-    else:
-        axis = (-math.sin(swing), math.cos(swing))
+    axis = (math.sin(swing), -math.cos(swing) if hanging else math.cos(swing))
     cm = _add(at, axis, length)
     angle = math.degrees(math.atan2(axis[1], axis[0]))
     if "radius" in body.sizes or body.shape != "custom":
         fig.body(body, cm, 0.7, angle)
     else:
-        fig.add(f"\\draw[body, rotate around={{{_f(angle)}:{_pt(cm)}}}] {_pt(_add(cm, axis, -0.45))} ellipse "
-                f"(1.6 and 0.55);")
+        blob = _pt(_add(cm, axis, -0.45))  # a body of no particular shape, reaching to its pivot
+        fig.add(f"\\draw[body, rotate around={{{_f(angle)}:{blob}}}] {blob} ellipse (1.6 and 0.55);")
     fig.support(at, hanging)
     fig.add(f"\\draw[axis] {_pt(at)} -- {_pt(_add(at, (0, -2.5 if hanging else 2.5)))};")
     fig.line(at, cm, "thin")
     fig.add(f"\\fill {_pt(cm)} circle (0.06);")
     away = (math.cos(swing), math.sin(swing) * (1 if hanging else -1))  # the side away from the vertical
-    fig.label(_add(_add(at, axis, length * 0.5), away, 0.05), away, f"${fig.tex(abs(pin.offset[1]))}$")
+    fig.label(_add(_add(at, axis, length * (0.5 if hanging else 0.3)), away, 0.05), away,
+              f"${fig.tex(abs(pin.offset[1]))}$")
     amplitude = next((a.amplitude for a in fig.problem.asks.values() if a.amplitude is not None), None)
     vertical = -90 if hanging else 90
     fig.arc(at, 1.1, min(vertical, angle), max(vertical, angle), fig.tex(amplitude) if amplitude else None,
             label_radius=1.15)
     if fig.scene.gravity is not None:
-        fig.gravity_arrow(cm, body, toward=(1, 0) if hanging else (-1, 0))
+        fig.gravity_arrow(cm, body, toward=(1, 0))
 
 
 def _axles(fig: _Figure, bodies: list[Body], at) -> None:
@@ -778,8 +772,8 @@ def _axles(fig: _Figure, bodies: list[Body], at) -> None:
             fig.body(body, at, radii[k])
     for k, body in enumerate(ordered):  # each moment of inertia inside its own ring
         if len(ordered) > 1 and fig.tex(body.inertia):
-            inner = radii[k + 1] * aspect if k + 1 < len(radii) else 0.3
-            fig.label(_add(at, (0, (radii[k] * aspect + inner) / 2)), (0, 0), f"${fig.tex(body.inertia)}$")
+            where = (-(radii[k] + radii[k + 1]) / 2, 0) if k + 1 < len(radii) else (0, radii[k] * aspect * 0.5)
+            fig.label(_add(at, where), (0, 0), f"${fig.tex(body.inertia)}$")
     fig.axle(at)
     reel, r = ordered[0], radii[0]
     for turn in (e for e in scene.events if isinstance(e, InternalTurn)):
@@ -810,7 +804,7 @@ def _string(fig: _Figure, cord: WoundString, center, radius: float) -> None:
     fig.body(load, block, half, block=load.shape == "point")
     _label_mass(fig, load, _add(block, (side * (half + 0.05), 0)), (side, 0))
     tension = fig.ask_symbol("force", cord.name, "tension") or "T"
-    fig.arrow(_add(block, (0, half)), (0, 0.8), "force", f"${tension}$")
+    fig.arrow(_add(block, (0, half)), (0, 0.8), "force", f"${tension}$", toward=(side, 0))
     if scene.gravity is not None:
         fig.gravity_arrow(_add(block, (0, -half)), load, 0.8)
 
