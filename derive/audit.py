@@ -18,6 +18,7 @@ from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.scene import DYNAMIC_KINDS
 from derive.errors import InputError
+from derive.progress import Reporter
 
 
 @dataclass
@@ -31,31 +32,37 @@ class Row:
     failure: str = ""
 
 
-def audit(references: list[str] | None = None, progress=lambda message: None) -> list[Row]:
+def audit(references: list[str] | None = None, progress: Reporter = Reporter()) -> list[Row]:
     """Check the given problems (ids or paths), or the whole library."""
     references = references or [str(p) for p in library.problem_files()]
     rows = []
-    for reference in references:
-        start = time.perf_counter()
-        p = problem.load(reference)
-        progress(f"checking {p.id}")
-        row = Row(p.id, "-", "-", "-", 0.0, True)
-        try:
-            solution = Solution(p)
-            solution.expressions
-            checks = solution.checks()
-            row.dimensions = "ok"
-            row.routes = ", ".join(c.name for c in checks if c.name != "dimensions") or "-"
-            if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS:
-                report = simulate.check(solution)
-                row.simulation = ("ok: " + ", ".join(report.compared)) if report.passed else "FAILED"
-                if not report.passed:
-                    row.passed, row.failure = False, "; ".join(report.notes)
-        except (CheckFailure, InputError) as error:
-            row.passed, row.failure = False, str(error)
-        row.seconds = time.perf_counter() - start
-        rows.append(row)
+    with progress.task("checking", len(references)) as begin:
+        for reference in references:
+            rows.append(_audit_one(reference, begin))
     return rows
+
+
+def _audit_one(reference: str, begin) -> Row:
+    """One problem's routes, dimensions and simulation, timed."""
+    start = time.perf_counter()
+    p = problem.load(reference)
+    begin(p.id)
+    row = Row(p.id, "-", "-", "-", 0.0, True)
+    try:
+        solution = Solution(p)
+        solution.expressions
+        checks = solution.checks()
+        row.dimensions = "ok"
+        row.routes = ", ".join(c.name for c in checks if c.name != "dimensions") or "-"
+        if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS:
+            report = simulate.check(solution)
+            row.simulation = ("ok: " + ", ".join(report.compared)) if report.passed else "FAILED"
+            if not report.passed:
+                row.passed, row.failure = False, "; ".join(report.notes)
+    except (CheckFailure, InputError) as error:
+        row.passed, row.failure = False, str(error)
+    row.seconds = time.perf_counter() - start
+    return row
 
 
 def table(rows: list[Row]) -> str:
@@ -85,7 +92,7 @@ class Spread:
     seeds: int
 
 
-def stress(references: list[str] | None, seeds: int, progress=lambda message: None) -> tuple[list[Spread], list[str]]:
+def stress(references: list[str] | None, seeds: int, progress: Reporter = Reporter()) -> tuple[list[Spread], list[str]]:
     """Draw each problem's parameters with `seeds` seeds: every draw must meet the problem's
     conditions and give a key equal to `derive solve` at those parameters."""
     import random

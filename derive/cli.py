@@ -17,7 +17,6 @@ from derive import __version__
 from derive.errors import InputError
 
 FORMATS = click.Choice(["text", "latex", "json"])
-FORMATS_OUT = ("pdf", "html", "md", "docx", "moodle", "qti", "distractors")
 
 
 class BadInput(click.ClickException):
@@ -27,6 +26,21 @@ class BadInput(click.ClickException):
 
     def show(self, file=None) -> None:
         click.echo(f"derive: error: {self.format_message()}", err=True)
+
+
+def progress_option(command):
+    """`--progress auto|bar|lines|none`, handed to the command as a derive.progress.Reporter."""
+
+    @click.option("--progress", "progress_mode", type=click.Choice(["auto", "bar", "lines", "none"]),
+                  default="auto", show_default=True,
+                  help="Progress on stderr: a bar on a terminal and lines otherwise (auto), or as chosen.")
+    @functools.wraps(command)
+    def wrapper(*args, progress_mode: str, **kwargs):
+        from derive.progress import Reporter  # light: no sympy
+
+        return command(*args, progress=Reporter(progress_mode), **kwargs)
+
+    return wrapper
 
 
 def reports_errors(command):
@@ -75,7 +89,10 @@ def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
 @click.version_option(__version__, prog_name="derive")
-def main() -> None:
+@click.option("--time-limit", type=click.FloatRange(min=0), default=None, metavar="SECONDS",
+              help="Give up a symbolic step (an integral, a simplification, a derivation) after SECONDS, "
+                   "with exit status 2. [default: $DERIVE_TIME_LIMIT, else 60; 0: no limit]")
+def main(time_limit: float | None) -> None:
     """Derive the mechanics of rotating bodies, and build problem sets from it.
 
     A problem file describes a scene (bodies, pivots, strings, gravity) and the
@@ -92,6 +109,10 @@ def main() -> None:
       derive check
       derive bench --quick
     """
+    if time_limit is not None:
+        from derive import limits  # light: no sympy
+
+        limits.configure(time_limit)
 
 
 @main.command()
@@ -206,8 +227,9 @@ def list_problems(topic: str | None) -> None:
 @click.option("--seeds", type=click.IntRange(1, 10000), default=None,
               help="Instead: draw each problem's parameters with N seeds and check every draw (conditions "
                    "met, key equal to derive solve); print each answer's range.")
+@progress_option
 @reports_errors
-def check(problems: tuple[str, ...], seeds: int | None) -> None:
+def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
     """Run every cross-check over the library (or the PROBLEMS given) and print a table.
 
     For each problem: the independent routes of derivation (Lagrange and Newton–Euler,
@@ -224,10 +246,10 @@ def check(problems: tuple[str, ...], seeds: int | None) -> None:
     from derive import audit
 
     if seeds is not None:
-        spreads, failures = audit.stress(list(problems), seeds, progress=lambda message: click.echo(message, err=True))
+        spreads, failures = audit.stress(list(problems), seeds, progress=progress)
         click.echo(audit.spread_table(spreads, failures))
         sys.exit(1 if failures else 0)
-    rows = audit.audit(list(problems), progress=lambda message: click.echo(message, err=True))
+    rows = audit.audit(list(problems), progress=progress)
     click.echo(audit.table(rows))
     if not all(r.passed for r in rows):
         sys.exit(1)
@@ -254,8 +276,9 @@ def bench(quick: bool) -> None:
 @click.argument("problem")
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
               help="Output folder (default: build/handouts/<id>).")
+@progress_option
 @reports_errors
-def handout(problem: str, out_dir: str | None) -> None:
+def handout(problem: str, out_dir: str | None, progress) -> None:
     """A step-by-step handout of one problem's derivation, in LaTeX and PDF.
 
     Setup, each step of each route of derivation, the result with a worked example at the
@@ -266,7 +289,7 @@ def handout(problem: str, out_dir: str | None) -> None:
     """
     from derive import sheet as sheets
 
-    for path in sheets.handout(problem, out_dir, progress=lambda message: click.echo(message, err=True)):
+    for path in sheets.handout(problem, out_dir, progress=progress):
         click.echo(str(path))
 
 
@@ -276,11 +299,17 @@ def handout(problem: str, out_dir: str | None) -> None:
 @click.option("--seed", type=int, default=None, help="Seed of the parameter draws (default: the set's).")
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
               help="Output folder (default: build/<set id>).")
-@click.option("--to", "formats", default="pdf,html", show_default=True,
-              help="Outputs besides .tex and the keys (CSV, JSON): any of pdf, html, md, docx, moodle, qti; "
-                   "distractors adds wrong answers from common mistakes to key.json.")
+@click.option("--to", "formats", default=None, metavar="LIST",
+              help="Outputs besides .tex and the keys (CSV, JSON), comma-separated: any of pdf, html, md, docx, "
+                   "moodle, qti; distractors adds wrong answers from common mistakes to key.json. "
+                   "[default: the set's outputs, else pdf,html]")
+@click.option("--questions", type=click.Choice(["numerical", "choice"]), default=None,
+              help="How the Moodle and Canvas exports ask: a number with a tolerance, or multiple choice "
+                   "among wrong answers derived from common mistakes. [default: the set's, else numerical]")
+@progress_option
 @reports_errors
-def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str | None, formats: str) -> None:
+def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str | None, formats: str | None,
+          questions: str | None, progress) -> None:
     """Build a problem set: worksheet, worked solutions and answer key.
 
     SET is a set file or the id of one in problems/sets/. Each variant draws the
@@ -288,15 +317,19 @@ def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str
     to their significant figures. Writes .tex files, PDFs (latexmk), HTML (pandoc) and
     the answer key as CSV and JSON; with --to also Markdown and DOCX (pandoc), Moodle XML
     (a cloze question per problem and variant) and a QTI 1.2 zip for Canvas.
+
+    \b
+    A set file needs a title and its problems; the rest has defaults:
+      title: Rotation, week 3
+      problems: [rod_endpoint, problems/torque/tugged_spool.yaml, {topic: rolling, count: 2}]
+      course: PHY141            due: 2026-12-01        variants: 30      seed: 141
+      outputs: [pdf, moodle]    questions: choice      (options given here override it)
     """
     from derive import sheet as sheets
 
-    wanted = {f.strip() for f in formats.split(",") if f.strip()}
-    unknown = wanted - set(FORMATS_OUT)
-    if unknown:
-        raise BadInput(f"--to: unknown format {sorted(unknown)[0]!r} (formats: {', '.join(FORMATS_OUT)})")
+    wanted = None if formats is None else sheets.outputs(formats, "--to")
     built = sheets.build(problem_set, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
-                         progress=lambda message: click.echo(message, err=True))
+                         questions=questions, progress=progress)
     for path in built:
         click.echo(str(path))
 

@@ -13,6 +13,7 @@ message names the file and the field.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from decimal import Decimal, InvalidOperation
 from pathlib import Path
 
 import sympy as sp
@@ -53,6 +54,7 @@ class Ask:
     shift: sp.Expr | None = None
     amplitude: sp.Expr | None = None
     exact: str | None = None  # this ask approximates that one
+    tolerance: str | None = None  # "2%" or an absolute amount in `unit`; None: the last digit shown
 
 
 @dataclass(frozen=True)
@@ -175,7 +177,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
                               optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift", "amplitude",
-                                        "exact"))
+                                        "exact", "tolerance"))
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -196,11 +198,30 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
             _shift(reader, spec.get("shift"), f"{field}.shift", quantity),
             _amplitude(reader, spec.get("amplitude"), f"{field}.amplitude", quantity),
             spec.get("exact"),
+            _tolerance(reader, spec.get("tolerance"), f"{field}.tolerance"),
         )
     for name, ask in result.items():
         if ask.exact is not None and (ask.exact not in result or ask.exact == name):
             raise reader.fail(f"ask.{name}.exact", f"expected another ask of this problem (asks: {', '.join(result)})")
     return result
+
+
+def _tolerance(reader: Reader, raw, field: str) -> str | None:
+    """`tolerance: 2%` (of the answer) or `tolerance: 0.05` (in the answer's unit): what an
+    LMS accepts around the answer; by default one unit in the last significant digit shown."""
+    if raw is None:
+        return None
+    text = str(raw).strip()
+    amount = text[:-1].strip() if text.endswith("%") else text
+    try:
+        number = Decimal(amount)
+    except InvalidOperation:
+        number = None
+    if isinstance(raw, bool) or number is None or not number.is_finite() or number <= 0:
+        raise reader.fail(field, f"expected a percentage such as 2% or a positive amount in the answer's unit, got {text!r}")
+    if text.endswith("%") and number >= 100:
+        raise reader.fail(field, f"{text} of the answer would accept zero and the wrong sign")
+    return f"{number.normalize():f}%" if text.endswith("%") else f"{number.normalize():f}"
 
 
 def _shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:

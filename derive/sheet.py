@@ -21,7 +21,6 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
 from pathlib import Path
-from typing import Callable
 
 import sympy as sp
 import yaml
@@ -30,10 +29,16 @@ from derive import distractors, export, figure, library, lms, numeric, render, u
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
+from derive.progress import Reporter
 from derive.report import route_title
 
 SET_REQUIRED = ("title", "problems")
-SET_OPTIONAL = ("course", "due", "variants", "seed")
+SET_OPTIONAL = ("course", "due", "variants", "seed", "outputs", "questions")
+#: What `derive sheet --to` (or a set's `outputs:`) can add to the .tex files and the keys.
+OUTPUTS = ("pdf", "html", "md", "docx", "moodle", "qti", "distractors")
+DEFAULT_OUTPUTS = frozenset({"pdf", "html"})
+#: How the LMS exports ask: a number with a tolerance, or a choice among distractors.
+QUESTIONS = ("numerical", "choice")
 
 
 @dataclass(frozen=True)
@@ -42,10 +47,43 @@ class ProblemSet:
     title: str
     course: str
     due: str
-    problems: tuple[str, ...]
+    problems: tuple[str, ...]  # library ids or problem files, topics resolved
     variants: int
     seed: int
     path: Path
+    outputs: frozenset[str] = DEFAULT_OUTPUTS
+    questions: str = "numerical"
+
+
+def outputs(text: str, where: str) -> frozenset[str]:
+    """A comma-separated list of outputs, checked against OUTPUTS.
+
+    >>> sorted(outputs("pdf, moodle", "--to"))
+    ['moodle', 'pdf']
+    """
+    wanted = frozenset(f.strip() for f in text.split(",") if f.strip())
+    unknown = sorted(wanted - set(OUTPUTS))
+    if unknown:
+        raise InputError(f"{where}: unknown output {unknown[0]!r} (outputs: {', '.join(OUTPUTS)})")
+    return wanted
+
+
+def _topic(path: Path, index: int, entry: dict, seed: int) -> list[str]:
+    """`{topic: rolling}` (every library problem of that topic, by id) or `{topic: rolling,
+    count: 2}` (that many of them, picked by the set's seed)."""
+    field = f"problems[{index}]"
+    unknown = sorted(set(entry) - {"topic", "count"})
+    if unknown or "topic" not in entry:
+        raise InputError(f"{path}: {field}: expected a library id, a problem file or {{topic: TOPIC, count: N}}")
+    found = sorted((p.id, str(p.path)) for p in map(load, library.problem_files()) if p.topic == entry["topic"])
+    if not found:
+        topics = sorted({p.topic for p in map(load, library.problem_files())})
+        raise InputError(f"{path}: {field}.topic: no problem of topic {entry['topic']!r} (topics: {', '.join(topics)})")
+    count = entry.get("count", len(found))
+    if not isinstance(count, int) or isinstance(count, bool) or not 1 <= count <= len(found):
+        raise InputError(f"{path}: {field}.count: expected a whole number from 1 to {len(found)}")
+    chosen = sorted(random.Random(f"{seed}/{entry['topic']}").sample(found, count))
+    return [reference for _, reference in chosen]
 
 
 def load_set(reference: str) -> ProblemSet:
@@ -63,16 +101,27 @@ def load_set(reference: str) -> ProblemSet:
     for key in SET_REQUIRED:
         if key not in raw:
             raise InputError(f"{path}: {key}: missing")
-    problems = raw["problems"]
-    if not isinstance(problems, list) or not problems or not all(isinstance(p, str) for p in problems):
-        raise InputError(f"{path}: problems: expected a list of problem ids or files")
     for key, default in (("variants", 1), ("seed", 0)):
         value = raw.get(key, default)
         if not isinstance(value, int) or isinstance(value, bool) or value < (1 if key == "variants" else 0):
             raise InputError(f"{path}: {key}: expected a whole number")
+    entries = raw["problems"]
+    if not isinstance(entries, list) or not entries or not all(isinstance(p, (str, dict)) for p in entries):
+        raise InputError(f"{path}: problems: expected a list of problem ids, files or {{topic: TOPIC}}")
+    problems = [reference for i, entry in enumerate(entries)
+                for reference in ([entry] if isinstance(entry, str) else _topic(path, i, entry, raw.get("seed", 0)))]
+    listed = raw.get("outputs", ",".join(sorted(DEFAULT_OUTPUTS)))
+    if isinstance(listed, list) and all(isinstance(o, str) for o in listed):
+        listed = ",".join(listed)
+    if not isinstance(listed, str):
+        raise InputError(f"{path}: outputs: expected a list of outputs ({', '.join(OUTPUTS)})")
+    questions = raw.get("questions", "numerical")
+    if questions not in QUESTIONS:
+        raise InputError(f"{path}: questions: expected one of {', '.join(QUESTIONS)}")
     return ProblemSet(
         id=path.stem, title=str(raw["title"]), course=str(raw.get("course", "")), due=str(raw.get("due", "")),
-        problems=tuple(problems), variants=raw.get("variants", 1), seed=raw.get("seed", 0), path=path,
+        problems=tuple(dict.fromkeys(problems)), variants=raw.get("variants", 1), seed=raw.get("seed", 0), path=path,
+        outputs=outputs(listed, f"{path}: outputs"), questions=questions,
     )
 
 
@@ -139,6 +188,7 @@ class _ProblemVariants:
     # A build reads each variant's answers for the solutions, the key and the LMS exports:
     # evaluated once per draw (keyed by the draw, which self.draws keeps alive).
     _answers: dict[int, dict[str, str | None]] = field(default_factory=dict, repr=False)
+    _wrong: dict[int, dict[str, list[dict[str, str]]]] = field(default_factory=dict, repr=False)
 
     def si_values(self, draw: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
         return {
@@ -167,6 +217,22 @@ class _ProblemVariants:
             self._answers[id(draw)] = result
         return result
 
+    def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
+        """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
+        return {name: None if value is None else lms.tolerance(value, self.problem.asks[name].tolerance)
+                for name, value in self.answers(draw).items()}
+
+    def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
+        """Each answer's distractors (value, mistake) for multiple choice, once per draw."""
+        if id(draw) in self._wrong:
+            return self._wrong[id(draw)]
+        si = self.si_values(draw)
+        result = {n: distractors.distractors(self.problem, n, si, a.sig_figs or DEFAULT_SIG_FIGS)
+                  for n, a in self.problem.asks.items()}
+        if id(draw) in self._own_draws:
+            self._wrong[id(draw)] = result
+        return result
+
     @cached_property
     def _own_draws(self) -> set[int]:
         return {id(d) for d in self.draws}
@@ -182,16 +248,18 @@ class _ProblemVariants:
             raise self.problem.error("question", f"{type(error).__name__}: {error}") from None
 
 
-def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress) -> list[_ProblemVariants]:
+def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Reporter) -> list[_ProblemVariants]:
     prepared = []
-    for reference in problem_set.problems:
-        problem = load(reference)
-        progress(f"deriving {problem.id}")
-        solution = Solution(problem)
-        solution.expressions  # derive once, for every variant
-        solution.checks()
-        draws = [valid_draw(problem, solution, random.Random(f"{seed}/{problem.id}/{n}")) for n in range(1, variants + 1)]
-        prepared.append(_ProblemVariants(problem, solution, draws))
+    with progress.task("deriving", len(problem_set.problems)) as begin:
+        for reference in problem_set.problems:
+            problem = load(reference)
+            begin(problem.id)
+            solution = Solution(problem)
+            solution.expressions  # derive once, for every variant
+            solution.checks()
+            draws = [valid_draw(problem, solution, random.Random(f"{seed}/{problem.id}/{n}"))
+                     for n in range(1, variants + 1)]
+            prepared.append(_ProblemVariants(problem, solution, draws))
     return prepared
 
 
@@ -237,36 +305,43 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
         entry = {"variant": number, "problems": {}}
         for item in prepared:
             values = item.draws[number - 1]
-            answers = item.answers(values)
+            answers, tolerances = item.answers(values), item.tolerances(values)
             entry["problems"][item.problem.id] = {
                 "parameters": {n: {"value": numeric.significant(values[n], p.sig_figs), "unit": p.unit}
                                for n, p in item.problem.parameters.items()},
-                "answers": {n: {"value": answers[n], "expr": sp.sstr(item.solution.expressions[n]), "unit": a.unit,
+                "answers": {n: {"value": answers[n], "tolerance": tolerances[n],
+                                "expr": sp.sstr(item.solution.expressions[n]), "unit": a.unit,
                                 "meaning": a.meaning} for n, a in item.problem.asks.items()},
             }
             if with_distractors:  # wrong answers for multiple choice, from mistaken set-ups
-                si = item.si_values(values)
-                for n, a in item.problem.asks.items():
-                    entry["problems"][item.problem.id]["answers"][n]["distractors"] = distractors.distractors(
-                        item.problem, n, si, a.sig_figs or DEFAULT_SIG_FIGS)
+                for n, wrong in item.wrong(values).items():
+                    entry["problems"][item.problem.id]["answers"][n]["distractors"] = wrong
             for n, a in item.problem.asks.items():
                 rows.append({"variant": number, "problem": item.problem.id, "answer": n,
                              "value": answers[n] if answers[n] is not None else sp.sstr(item.solution.expressions[n]),
-                             "unit": a.unit, "meaning": a.meaning, "latex": item.shown(n, answers[n])})
+                             "tolerance": tolerances[n] or "", "unit": a.unit, "meaning": a.meaning,
+                             "latex": item.shown(n, answers[n])})
         key["variants"].append(entry)
     return rows, key
 
 
-def _lms_items(prepared: list[_ProblemVariants], variants: int) -> list[lms.Item]:
-    """Every numeric answer of every variant, with its question, for the LMS exports."""
+def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool) -> list[lms.Item]:
+    """Every numeric answer of every variant, with its question and tolerance, for the LMS
+    exports; with `choice`, with its distractors too (an answer with fewer than two stays
+    numerical)."""
     items = []
     for number in range(1, variants + 1):
         for item in prepared:
             values = item.draws[number - 1]
-            answers = item.answers(values)
+            answers, tolerances = item.answers(values), item.tolerances(values)
+            wrong = item.wrong(values) if choice else {}
             question = item.question(values)
-            items += [lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning, answers[name],
-                               ask.unit) for name, ask in item.problem.asks.items() if answers[name] is not None]
+            for name, ask in item.problem.asks.items():
+                if answers[name] is None:
+                    continue
+                choices = tuple(d["value"] for d in wrong.get(name, ()))
+                items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
+                                      answers[name], ask.unit, tolerances[name], choices if len(choices) >= 2 else ()))
     return items
 
 
@@ -277,11 +352,15 @@ def _write(folder: Path, name: str, text: str) -> Path:
 
 
 def build(reference: str, *, variants: int | None = None, seed: int | None = None, out_dir: str | None = None,
-          formats: set[str] = frozenset({"pdf", "html"}), progress: Callable[[str], None] = lambda m: None) -> list[Path]:
-    """Build a set into its output folder; return the files written."""
+          formats: frozenset[str] | None = None, questions: str | None = None,
+          progress: Reporter = Reporter()) -> list[Path]:
+    """Build a set into its output folder; return the files written. Arguments left None
+    take the set file's values (`variants`, `seed`, `outputs`, `questions`)."""
     problem_set = load_set(reference)
     variants = variants or problem_set.variants
     seed = problem_set.seed if seed is None else seed
+    formats = problem_set.outputs if formats is None else formats
+    choice = (questions or problem_set.questions) == "choice"
     out = Path(out_dir or Path("build") / problem_set.id)
     prepared = _prepare(problem_set, variants, seed, progress)
     header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
@@ -291,7 +370,10 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                                     "figure": drawn} for item, drawn in zip(prepared, figures)]}
         for n in range(1, variants + 1)
     ]
-    rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats)
+    rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats or choice)
+    items = _lms_items(prepared, variants, choice) if formats & {"moodle", "qti"} else []
+    for target in sorted(formats & {"moodle", "qti"}):
+        lms.check(items, target)  # before anything is written
     key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
@@ -300,33 +382,38 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
     shutil.rmtree(staging, ignore_errors=True)
     staging.mkdir()
     try:
-        texs = [
-            _write(staging, "worksheet.tex", render.render("worksheet.tex.j2", set=header, variants=worksheet_variants)),
-            _write(staging, "solutions.tex", render.render(
-                "solutions.tex.j2", set=header, problems=[_solutions_context(i) for i in prepared])),
-            _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
-        ]
-        buffer = io.StringIO()
-        writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "unit", "meaning"],
-                                lineterminator="\n", extrasaction="ignore")
-        writer.writeheader()
-        writer.writerows(rows)
-        products = texs + [_write(staging, "key.csv", buffer.getvalue()),
-                           _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
-        if "pdf" in formats:
-            progress(f"compiling {len(texs)} PDFs")
-            products += export.pdfs(texs)
-        for target in ("html", "md", "docx"):
-            if target in formats:
-                progress(f"converting the worksheet to {target}")
-                products.append(export.convert(texs[0], target, problem_set.title))
-        items = _lms_items(prepared, variants)
-        if "moodle" in formats:
-            products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id)))
-        if "qti" in formats:
-            path = staging / "canvas-qti.zip"
-            path.write_bytes(lms.qti(items, problem_set.title))
-            products.append(path)
+        steps = 1 + len(formats & {"pdf", "html", "md", "docx", "moodle", "qti"})
+        with progress.task("writing", steps) as begin:
+            begin("LaTeX and the keys")
+            texs = [
+                _write(staging, "worksheet.tex", render.render("worksheet.tex.j2", set=header,
+                                                               variants=worksheet_variants)),
+                _write(staging, "solutions.tex", render.render(
+                    "solutions.tex.j2", set=header, problems=[_solutions_context(i) for i in prepared])),
+                _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
+            ]
+            buffer = io.StringIO()
+            writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
+                                                        "meaning"], lineterminator="\n", extrasaction="ignore")
+            writer.writeheader()
+            writer.writerows(rows)
+            products = texs + [_write(staging, "key.csv", buffer.getvalue()),
+                               _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
+            if "pdf" in formats:
+                begin(f"{len(texs)} PDFs (latexmk, in parallel)")
+                products += export.pdfs(texs)
+            for target in ("html", "md", "docx"):
+                if target in formats:
+                    begin(f"the worksheet as {target} (pandoc)")
+                    products.append(export.convert(texs[0], target, problem_set.title))
+            if "moodle" in formats:
+                begin("Moodle XML")
+                products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id)))
+            if "qti" in formats:
+                begin("the Canvas QTI zip")
+                path = staging / "canvas-qti.zip"
+                path.write_bytes(lms.qti(items, problem_set.title))
+                products.append(path)
         _replace(staging, out, products)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
@@ -348,7 +435,7 @@ def _replace(staging: Path, out: Path, products: list[Path]) -> None:
         final.rename(out)
 
 
-def handout(reference: str, out_dir: str | None = None, progress: Callable[[str], None] = lambda m: None) -> list[Path]:
+def handout(reference: str, out_dir: str | None = None, progress: Reporter = Reporter()) -> list[Path]:
     """One problem's derivation as a handout (LaTeX and PDF): setup, each step of each route,
     the result with a worked example at the middle of the parameter ranges, the checks, and
     the corrections to the notes."""

@@ -1,4 +1,5 @@
 """The exports instructors import: Markdown, DOCX, Moodle XML and a QTI zip for Canvas."""
+import csv
 import json
 import re
 import xml.etree.ElementTree as ET
@@ -7,8 +8,12 @@ from decimal import Decimal
 
 import pytest
 
-from conftest import run_derive
-from derive import lms
+from pathlib import Path
+
+from conftest import copy_library, run_derive
+from derive import lms, sheet
+from derive.errors import InputError, ProblemError
+from derive.problem import load, parse
 
 
 @pytest.fixture(scope="module")
@@ -58,7 +63,115 @@ def test_exports_are_deterministic(exported, tmp_path):
         assert (again / name).read_bytes() == (exported / name).read_bytes()
 
 
-def test_small_answers_are_scaled_for_canvas_and_tolerances_follow_the_digits():
-    assert lms.scaled("0.0000123", "m") == ("12.3", "10^-6 m")
-    assert lms.scaled("0.5", "m") == ("0.5", "m")
+def test_small_margins_are_scaled_for_canvas_and_tolerances_follow_the_policy():
+    assert lms.scaled("0.0000123", "1e-7", "m") == ("0.0123", "0.0001", "10^-3 m")
+    assert lms.scaled("0.00123", "0.00001", "m") == ("1.23", "0.01", "10^-3 m")  # 4 places would keep 0.0012
+    assert lms.scaled("0.5", "0.1", "m") == ("0.5", "0.1", "m")
     assert lms.tolerance("9.81") == "0.01" and lms.tolerance("1.20e+3") == "10"
+    assert lms.tolerance("-250", "2%") == "5" and lms.tolerance("3.3", "0.05") == "0.05"
+
+
+def _item(value, tolerance, unit="m"):
+    return lms.Item("p", "P", 1, "q", "x", "a length", value, unit, tolerance)
+
+
+def test_tolerances_are_held_to_each_lms_limits(monkeypatch):
+    for target in ("moodle", "qti"):
+        with pytest.raises(InputError, match=r"p variant 1: ask\.x\.tolerance: .*accepts zero and the wrong sign"):
+            lms.check([_item("2.5", "3")], target)
+        lms.check([_item("2.5", "0.1"), _item("0", "0")], target)
+    with pytest.raises(InputError, match="finer than Moodle can compare"):
+        lms.check([_item("2.5", "1e-15")], "moodle")
+    lms.check([_item("0.00123", "0.00001")], "qti")  # scaled: survives
+    monkeypatch.setattr(lms, "scaled", lambda value, margin, unit: (value, margin, unit))
+    with pytest.raises(InputError, match="Canvas needs a margin of at least 1e-4"):
+        lms.check([_item("0.00123", "0.00001")], "qti")
+
+
+@pytest.mark.parametrize("tolerance, reason", [
+    ("150%", "150% of the answer would accept zero"), ("-1", "expected a percentage"), ("abc", "expected a percentage"),
+    ("true", "expected a percentage"), ("0%", "expected a percentage"),
+])
+def test_bad_tolerance_policies_name_the_field(tolerance, reason, tmp_path):
+    text = load("rod_endpoint").path.read_text().replace("unit: kg*m^2}", f"unit: kg*m^2, tolerance: {tolerance}}}")
+    with pytest.raises(ProblemError, match=rf"p\.yaml: ask\.I\.tolerance: {reason}"):
+        parse(text, tmp_path / "p.yaml")
+
+
+def _set(tmp_path, body: str) -> Path:
+    path = tmp_path / "week.yaml"
+    path.write_text(body)
+    return path
+
+
+def test_a_declared_tolerance_reaches_the_key_and_both_lms(tmp_path):
+    library = copy_library(tmp_path)
+    rod = library / "inertia" / "rod_endpoint.yaml"
+    rod.write_text(rod.read_text().replace("unit: kg*m^2}", "unit: kg*m^2, tolerance: 5%}"))
+    week = _set(tmp_path, "title: T\nproblems: [rod_endpoint]\nvariants: 2\noutputs: [moodle, qti]\n")
+    done = run_derive("sheet", str(week), "--out", str(tmp_path / "out"), library=library)
+    assert done.returncode == 0, done.stderr
+    rows = list(csv.DictReader((tmp_path / "out" / "key.csv").open()))
+    assert len(rows) == 2 and not (tmp_path / "out" / "worksheet.pdf").exists()  # outputs: from the set
+    for row in rows:
+        assert Decimal(row["tolerance"]) == abs(Decimal(row["value"])) * Decimal("0.05")
+    moodle = (tmp_path / "out" / "moodle.xml").read_text()
+    assert sorted(re.findall(r"NUMERICAL:=([^:]+):([^}]+)\}", moodle)) == sorted((r["value"], r["tolerance"]) for r in rows)
+
+
+def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistakes(tmp_path):
+    week = _set(tmp_path, "title: T\nproblems: [rolling_incline]\nvariants: 2\nseed: 5\nquestions: choice\n")
+    out = tmp_path / "out"
+    done = run_derive("sheet", str(week), "--to", "moodle,qti", "--out", str(out))
+    assert done.returncode == 0, done.stderr
+    key = json.loads((out / "key.json").read_text())
+    answers = [(a["value"], a["unit"], a["distractors"]) for v in key["variants"]
+               for a in v["problems"]["rolling_incline"]["answers"].values()]
+    fields = re.findall(r"\{1:MULTICHOICE_V:([^}]*)\}", (out / "moodle.xml").read_text())
+    assert len(fields) == len(answers) == 2 * 5
+    for field, (value, unit, wrong) in zip(fields, answers):
+        options = field.split("~")
+        assert [o for o in options if o.startswith("=")] == [f"={value} {unit}".replace("/", "\\/")]
+        assert sorted(o[3:] for o in options if o.startswith("%0%")) == sorted(
+            f"{w['value']} {unit}".replace("/", "\\/") for w in wrong)
+        assert len(options) >= 3
+    assert any(not f.split("~")[0].startswith("=") for f in fields)  # the right answer is not always first
+    with zipfile.ZipFile(out / "canvas-qti.zip") as archive:
+        assessment = ET.fromstring(archive.read("assessment/assessment.xml"))
+    for item, (value, unit, _) in zip((e for e in assessment.iter() if e.tag.endswith("}item")), answers):
+        kinds = [e.text for e in item.iter() if e.tag.endswith("fieldentry")]
+        assert kinds == ["multiple_choice_question"]
+        right = next(e.text for e in item.iter() if e.tag.endswith("varequal"))
+        label = next(e for e in item.iter() if e.tag.endswith("response_label") and e.get("ident") == right)
+        assert "".join(label.itertext()) == f"{value} {unit}"
+    again = tmp_path / "again"
+    assert run_derive("sheet", str(week), "--to", "moodle,qti", "--out", str(again)).returncode == 0
+    assert (again / "moodle.xml").read_bytes() == (out / "moodle.xml").read_bytes()
+
+
+def test_set_files_pick_problems_by_topic_and_the_command_line_overrides_outputs(tmp_path):
+    week = _set(tmp_path, "title: T\nproblems: [{topic: rolling, count: 2}, rod_endpoint]\noutputs: [pdf]\n"
+                          "questions: numerical\n")
+    chosen = sheet.load_set(str(week))
+    assert len(chosen.problems) == 3 and chosen.problems[-1] == "rod_endpoint"
+    assert all(load(p).topic == "rolling" for p in chosen.problems[:2])
+    assert chosen.outputs == {"pdf"}
+    everything = sheet.load_set(str(_set(tmp_path, "title: T\nproblems: [{topic: orbits}]\n")))
+    assert sorted(load(p).id for p in everything.problems) == ["effective_potential", "kepler_orbit"]
+    assert everything.outputs == {"pdf", "html"} and everything.questions == "numerical"
+    done = run_derive("sheet", str(_set(tmp_path, "title: T\nproblems: [rod_endpoint]\noutputs: [pdf]\n")),
+                      "--to", "md", "--out", str(tmp_path / "out"))
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "out" / "worksheet.md").exists() and not (tmp_path / "out" / "worksheet.pdf").exists()
+
+
+@pytest.mark.parametrize("body, message", [
+    ("problems: [{topic: cooking}]", "week.yaml: problems[0].topic: no problem of topic 'cooking' (topics: "),
+    ("problems: [{topic: orbits, count: 3}]", "week.yaml: problems[0].count: expected a whole number from 1 to 2"),
+    ("problems: [{subject: orbits}]", "week.yaml: problems[0]: expected a library id"),
+    ("problems: [rod_endpoint]\noutputs: [pdf, fax]", "week.yaml: outputs: unknown output 'fax'"),
+    ("problems: [rod_endpoint]\nquestions: essay", "week.yaml: questions: expected one of numerical, choice"),
+])
+def test_bad_set_files_name_the_field(body, message, tmp_path):
+    done = run_derive("sheet", str(_set(tmp_path, "title: T\n" + body + "\n")), "--out", str(tmp_path / "o"))
+    assert done.returncode == 2 and message in done.stderr and done.stderr.count("\n") == 1

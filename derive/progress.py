@@ -1,0 +1,67 @@
+"""Progress of long commands on stderr: a rich progress bar on a terminal, one line per step
+otherwise (logs, CI, pipes), nothing when silent.
+
+A command reports single steps (`report("compiling the PDF")`) and counted tasks:
+
+>>> report = Reporter("lines")
+>>> with report.task("deriving", total=2) as begin:
+...     begin("rod_endpoint")
+...     begin("tugged_spool")
+"""
+from __future__ import annotations
+
+import sys
+from contextlib import contextmanager
+from typing import Callable, Iterator
+
+MODES = ("auto", "bar", "lines", "none")
+
+
+class Reporter:
+    """Where progress goes: `mode` is bar (rich), lines (stderr), none, or auto (a bar when
+    stderr is a terminal, else lines)."""
+
+    def __init__(self, mode: str = "none"):
+        if mode == "auto":
+            mode = "bar" if sys.stderr.isatty() else "lines"
+        self.mode = mode
+        self._bar = None
+
+    def __call__(self, message: str) -> None:
+        """One step: a line, or the bar's current description."""
+        if self.mode == "bar" and self._bar is not None:
+            self._bar.update(self._task, description=message)
+        elif self.mode != "none":
+            print(message, file=sys.stderr, flush=True)
+
+    @contextmanager
+    def task(self, description: str, total: int) -> Iterator[Callable[[str], None]]:
+        """A task of `total` steps; the context yields `begin(detail)`, called as each step starts
+        (a line names it; the bar counts the steps finished)."""
+        started = 0
+        if self.mode != "bar":
+            def begin(detail: str) -> None:
+                nonlocal started
+                started += 1
+                self(f"{description} {detail} ({started}/{total})")
+
+            yield begin
+            return
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+        with Progress(TextColumn("{task.description:<40}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                      console=Console(stderr=True), transient=True) as bar:
+            task = bar.add_task(description, total=total)
+            self._bar, self._task = bar, task
+
+            def begin(detail: str) -> None:
+                nonlocal started
+                bar.update(task, completed=started, description=f"{description} {detail}")
+                started += 1
+
+            try:
+                yield begin
+                bar.update(task, completed=total)
+            finally:
+                self._bar = None
