@@ -62,9 +62,14 @@ def pdf(tex: Path) -> Path:
     return tex.with_suffix(".pdf")
 
 
+def workers() -> int:
+    """How many latexmk runs at once: the cores this process may use."""
+    return max(1, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1)
+
+
 def pdfs(texs: list[Path]) -> list[Path]:
-    """Compile several documents in parallel."""
-    with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
+    """Compile several documents in parallel, one per available core."""
+    with ThreadPoolExecutor(max_workers=workers()) as pool:
         return list(pool.map(pdf, texs))
 
 

@@ -392,6 +392,10 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                     "solutions.tex.j2", set=header, problems=[_solutions_context(i) for i in prepared])),
                 _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
             ]
+            if variants > 1:  # each student's own worksheet, besides the whole set for printing
+                width = len(str(variants))
+                texs += [_write(staging, f"worksheet-{v['number']:0{width}d}.tex", render.render(
+                    "worksheet.tex.j2", set=header, variants=[v])) for v in worksheet_variants]
             buffer = io.StringIO()
             writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
                                                         "meaning"], lineterminator="\n", extrasaction="ignore")
@@ -400,7 +404,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
             products = texs + [_write(staging, "key.csv", buffer.getvalue()),
                                _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
             if "pdf" in formats:
-                begin(f"{len(texs)} PDFs (latexmk, in parallel)")
+                begin(f"{len(texs)} PDFs (latexmk, {export.workers()} in parallel)")
                 products += export.pdfs(texs)
             for target in ("html", "md", "docx"):
                 if target in formats:

@@ -20,7 +20,7 @@ def test_documents_exist(demo):
         assert (demo / f"{name}.tex").stat().st_size > 0
         assert (demo / f"{name}.pdf").read_bytes().startswith(b"%PDF")
     assert "<math" in (demo / "worksheet.html").read_text()
-    assert (demo / "key.csv").read_text().startswith("variant,problem,answer,value,unit,meaning")
+    assert (demo / "key.csv").read_text().startswith("variant,problem,answer,value,tolerance,unit,meaning")
 
 
 def pdf_text(path):
@@ -43,6 +43,17 @@ def test_worksheet_pdf_shows_each_variants_numbers(demo):
     for variant in key["variants"]:
         m = variant["problems"]["string_wrapped_disk"]["parameters"]["m"]["value"]
         assert f"{m} kg" in text
+
+
+def test_each_student_gets_a_worksheet_of_their_own_variant(demo):
+    key = json.loads((demo / "key.json").read_text())
+    for variant in key["variants"]:
+        text = pdf_text(demo / f"worksheet-{variant['variant']}.pdf")
+        assert f"Variant {variant['variant']}" in text
+        for other in key["variants"]:
+            m = other["problems"]["string_wrapped_disk"]["parameters"]["m"]["value"]
+            assert (f"{m} kg" in text) == (other is variant) or m == variant["problems"]["string_wrapped_disk"][
+                "parameters"]["m"]["value"]
 
 
 def test_solutions_show_both_routes_and_the_numbers(demo):
