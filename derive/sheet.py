@@ -25,7 +25,7 @@ from pathlib import Path
 import sympy as sp
 import yaml
 
-from derive import distractors, export, figure, library, lms, numeric, render, units
+from derive import distractors, export, figure, library, limiting_cases, lms, numeric, render, units
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
@@ -439,10 +439,22 @@ def _replace(staging: Path, out: Path, products: list[Path]) -> None:
         final.rename(out)
 
 
+def _limits_context(problem: Problem, solution: Solution, progress: Reporter) -> list[dict[str, str]]:
+    """Each answer's limiting cases as parameters with a range go to 0 (or infinity), for the handout."""
+    progress("limiting cases")
+    varying = {p.symbol: p.unit for p in problem.parameters.values() if p.range is not None}
+    meanings = {p.symbol: p.meaning for p in problem.parameters.values()}
+    point = {0: "0", sp.oo: r"\infty"}
+    return [{"equation": rf"\lim_{{{sp.latex(c.symbol)} \to {point[c.point]}}} {sp.latex(sp.Symbol(name))} "
+                         rf"&= {sp.latex(c.value)}", "meaning": meanings[c.symbol]}
+            for name in problem.asks
+            for c in limiting_cases.limiting_cases(solution.expression(name), varying)]
+
+
 def handout(reference: str, out_dir: str | None = None, progress: Reporter = Reporter()) -> list[Path]:
     """One problem's derivation as a handout (LaTeX and PDF): setup, each step of each route,
-    the result with a worked example at the middle of the parameter ranges, the checks, and
-    the corrections to the notes."""
+    the result with a worked example at the middle of the parameter ranges, its limiting
+    cases, the checks, and the corrections to the notes."""
     problem = load(reference)
     progress(f"deriving {problem.id}")
     solution = Solution(problem)
@@ -450,7 +462,7 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
                   Decimal(repr(float((p.range[0] + p.range[1]) / 2))), p.sig_figs)))
               for name, p in problem.parameters.items()}
     item = _ProblemVariants(problem, solution, [middle])
-    context = _solutions_context(item)
+    context = {**_solutions_context(item), "limits": _limits_context(problem, solution, progress)}
     out = Path(out_dir or Path("build") / "handouts" / problem.id)
     out.parent.mkdir(parents=True, exist_ok=True)
     staging = out.parent / f".{out.name}.partial-{os.getpid()}"
