@@ -108,6 +108,11 @@ class _Figure:
             return None
         return sp.latex(expression)
 
+    def m(self, expression) -> str | None:
+        """The expression as inline math for a label, or None."""
+        text = self.tex(expression)
+        return f"${text}$" if text else None
+
     def product(self, *factors) -> str | None:
         """LaTeX of a product in the order given (m g, not g m); None if a factor is open."""
         parts = [self.tex(f) for f in factors]
@@ -124,6 +129,9 @@ class _Figure:
     # drawing
     def add(self, line: str) -> None:
         self.lines.append(line)
+
+    def dot(self, point, radius: float = 0.05, style: str = "") -> None:
+        self.add(f"\\fill{f'[{style}]' if style else ''} {_pt(point)} circle ({_f(radius)});")
 
     def label(self, point, direction, text: str | None, options: str = "") -> None:
         if text:
@@ -282,15 +290,14 @@ def _top(fig: _Figure) -> None:
     fig.add(f"\\draw[line width=1.5pt] {_pt(cm)} -- {_pt(_add(tip, axis, 3.3))};")
     fig.line(tip, cm, "thin, dashed")
     fig.add(f"\\fill {_pt(cm)} circle (0.05); \\fill {_pt(tip)} circle (0.05);")
-    fig.label(_add(_add(tip, axis, 1.0), across, -0.08), (-across[0], -across[1]), f"${fig.tex(top.pivot_distance)}$"
-              if fig.tex(top.pivot_distance) else None)
+    fig.label(_add(_add(tip, axis, 1.0), across, -0.08), (-across[0], -across[1]), fig.m(top.pivot_distance))
     fig.arc(tip, 2.5, axis_degrees, 90, fig.tex(top.tilt), label_radius=2.55)
     fig.gravity_arrow(cm, Body("top", "custom", top.mass, {}), 1.1, toward=(1, 0))
     # the spin about the axis near the top of the stem, and the precession about the vertical
     spin_at = _add(tip, axis, 3.0)
     fig.add(f"\\draw[->, thick, rotate around={{{_f(axis_degrees)}:{_pt(spin_at)}}}] "
             f"{_pt(_add(spin_at, (0, -0.3)))} arc[start angle=-90, end angle=200, x radius=0.1, y radius=0.3];")
-    fig.label(_add(spin_at, across, 0.35), across, f"${fig.tex(top.spin)}$" if fig.tex(top.spin) else None)
+    fig.label(_add(spin_at, across, 0.35), across, fig.m(top.spin))
     fig.add("\\draw[->, thick] (0.45,3.2) arc[start angle=0, end angle=300, x radius=0.45, y radius=0.13];")
     precession = fig.ask_symbol("top") or r"\Omega"
     fig.label((-0.5, 3.2), (-1, 0), f"${precession}$")
@@ -302,7 +309,7 @@ def _wheel(fig: _Figure) -> None:
     fig.add("\\draw[body] (0,0) ellipse (0.35 and 1.1);")
     fig.line((-0.7, 0), (0, 0), "line width=1.5pt")
     fig.add("\\draw[->, thick] (-0.25,-0.85) arc[start angle=-120, end angle=120, x radius=0.3, y radius=1];")
-    fig.label((-0.35, 1.0), (-1, 1), f"${fig.tex(wheel.spin)}$")
+    fig.label((-0.35, 1.0), (-1, 1), fig.m(wheel.spin))
     length = 3.0
     fig.arrow((0, 0), (length, 0), "very thick, ->", f"$\\vec L = {fig.product(wheel.inertia, wheel.spin)}$")
     change = 0.9
@@ -323,10 +330,10 @@ def _wave(fig: _Figure) -> None:
         fig.add(f"\\draw[{style}] plot[smooth cycle] coordinates {{{' '.join(_pt(p) for p in points)}}};")
     fig.add("\\fill (0,0) circle (0.04);")
     fig.line((0, 0), _add((0, 0), _unit(-40), radius))
-    fig.label(_add((0, 0), _unit(-40), radius / 2), (1, 1), f"${fig.tex(wave.radius)}$")
+    fig.label(_add((0, 0), _unit(-40), radius / 2), (1, 1), fig.m(wave.radius))
     fig.out_of_page((-0.45, 0.35), r"\vec L")
     at = _add((0, 0), _unit(130), radius)
-    fig.add(f"\\fill {_pt(at)} circle (0.07);")
+    fig.dot(at, 0.07)
     fig.arrow(at, _add((0, 0), _unit(40), 0.8), "velocity", "$p$")
     wavelengths = fig.tex(wave.wavelengths)
     count = "" if wavelengths == "1" else f"{wavelengths}\\,"
@@ -344,13 +351,13 @@ def _orbit(fig: _Figure) -> None:
     center = (-a * e, 0.0)
     fig.add(f"\\draw[thick] {_pt(center)} ellipse ({_f(a)} and {_f(b)});")
     fig.add("\\fill (0,0) circle (0.09);")
-    fig.label((0.05, -0.12), (1, -1), f"${fig.tex(orbit.GM)}$" if fig.tex(orbit.GM) else None)
+    fig.label((0.05, -0.12), (1, -1), fig.m(orbit.GM))
     nu = 115.0
     r = a * (1 - e * e) / (1 + e * math.cos(math.radians(nu)))
     planet = _add((0, 0), _unit(nu), r)
     fig.line((0, 0), planet, "thin")
     fig.label(_add((0, 0), _unit(nu), r / 2), _unit(nu - 90), "$r$")
-    fig.add(f"\\fill {_pt(planet)} circle (0.06);")
+    fig.dot(planet, 0.06)
     # velocity along the tangent: d/dnu of the position on the ellipse
     dr = a * (1 - e * e) * e * math.sin(math.radians(nu)) / (1 + e * math.cos(math.radians(nu))) ** 2
     tangent = (dr * math.cos(math.radians(nu)) - r * math.sin(math.radians(nu)),
@@ -359,7 +366,7 @@ def _orbit(fig: _Figure) -> None:
     fig.arrow(planet, (0.7 * tangent[0] / norm, 0.7 * tangent[1] / norm), "velocity", "$v$")
     if given:
         fig.dimension((center[0] - a, -b), (center[0] + a, -b), fig.tex(2 * orbit.semi_major_axis), side=-1, gap=0.25)
-        fig.add(f"\\fill {_pt(center)} circle (0.03);")
+        fig.dot(center, 0.03)
         if e > 0.1:
             fig.dimension(center, (0, 0), fig.tex(orbit.semi_major_axis * orbit.eccentricity), side=1, gap=0.3)
         return
@@ -387,7 +394,7 @@ def _internal(fig: _Figure) -> None:
     fig.add(f"\\fill {_pt(origin)} circle (0.05) node[below left] {{$O$}};")
     for k, p in enumerate(points, start=1):
         fig.add(f"\\draw[dashed, gray, ->] {_pt(origin)} -- {_pt(p)};")
-        fig.add(f"\\fill {_pt(p)} circle (0.09);")
+        fig.dot(p, 0.09)
         outward = (p[0] - centre[0], p[1] - centre[1])
         fig.label(_add(p, outward, 0.12), outward, f"$m_{{{k}}}$")
     for i in range(n):
@@ -406,7 +413,7 @@ def _rotation(fig: _Figure) -> None:
     tilt = _clamp(fig.num(rotation.tilt, 0.6), 0.25, 1.35)
     fig.add("\\draw[axis, ->] (0,-2) -- (0,2.2);")
     fig.add("\\draw[->, thick] (0.35,1.75) arc[start angle=0, end angle=300, x radius=0.35, y radius=0.1];")
-    fig.label((0.45, 1.8), (1, 0), f"${fig.tex(rotation.rate)}$")
+    fig.label((0.45, 1.8), (1, 0), fig.m(rotation.rate))
     direction = 90 - math.degrees(tilt)
     fig.body(body, (0, 0), 1.6, direction)
     fig.arc((0, 0), 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
@@ -439,10 +446,10 @@ def _circle_path(fig: _Figure, path, body: Body) -> None:
     at = 40.0
     point = _add((0, 0), _unit(at), size)
     fig.line((0, 0), point)
-    fig.label(_add((0, 0), _unit(at), size / 2), _unit(at + 90), f"${fig.tex(radius)}$")
+    fig.label(_add((0, 0), _unit(at), size / 2), _unit(at + 90), fig.m(radius))
     fig.arc((0, 0), 0.5, 0, at, fig.tex(theta), label_radius=0.55)
     fig.line((0, 0), (size + 0.3, 0), "thin, gray")
-    fig.add(f"\\fill {_pt(point)} circle (0.08);")
+    fig.dot(point, 0.08)
     _label_mass(fig, body, _add(point, _unit(at), 0.12), _unit(at))
     sign = 1 if fig.num(sp.diff(theta, sp.Symbol("t")), 1) >= 0 else -1
     fig.arrow(point, _add((0, 0), _unit(at + 90 * sign), 0.8), "velocity", "$v$")
@@ -462,10 +469,10 @@ def _line_path(fig: _Figure, path, body: Body) -> None:
     foot = _add((0, 0), left, -1.2 if fig.num(distance_expr, 1) >= 0 else 1.2)
     fig.line(_add(foot, along, -2.2), _add(foot, along, 1.6), "dashed")
     at = _add(foot, along, -1.4)
-    fig.add(f"\\fill {_pt(at)} circle (0.08);")
+    fig.dot(at, 0.08)
     _label_mass(fig, body, _add(at, left, 0.12), left)
     fig.arrow(at, (0.9 * along[0], 0.9 * along[1]), "velocity",
-              f"${fig.tex(sp.simplify(sp.sqrt(velocity[0] ** 2 + velocity[1] ** 2)))}$", toward=left)
+              fig.m(sp.simplify(sp.sqrt(velocity[0] ** 2 + velocity[1] ** 2))), toward=left)
     fig.dimension((0, 0), foot, fig.tex(sp.simplify(abs(distance_expr))), side=1, gap=0.3)
 
 
@@ -488,7 +495,7 @@ def _curve_path(fig: _Figure, path, body: Body) -> None:
     angle = math.degrees(math.atan2(p[1], p[0]))
     fig.label(_add((0, 0), p, 0.5), _unit(angle - 90), "$r$")
     fig.arc((0, 0), 0.55, 0, angle, r"\theta", label_radius=0.6)
-    fig.add(f"\\fill {_pt(p)} circle (0.08);")
+    fig.dot(p, 0.08)
     _label_mass(fig, body, _add(p, (0.1, -0.1)), (1, -1))
     radial = _unit(angle)
     fig.arrow(p, (0.6 * radial[0], 0.6 * radial[1]), "->, thick", r"$\hat r$")
@@ -568,13 +575,13 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
         if pull:
             _spool(fig, body, pull, center, r)
         if scene.gravity is not None:
-            fig.gravity_arrow(center, body, r * 0.8, toward=(-1, 0.3) if pull else (1, 0))
+            fig.gravity_arrow(center, body, r * 0.55, toward=(-1, 0) if pull else (1, 0))
         motion = scene.motions.get(body.name)
         if motion is not None and any(v != 0 for v in motion.velocity):
             v = (fig.num(motion.velocity[0], 1), fig.num(motion.velocity[1], 0))
             n = math.hypot(*v) or 1.0
             fig.arrow(_add(center, (0, r + 0.25)), (1.2 * v[0] / n, 1.2 * v[1] / n), "velocity",
-                      f"${fig.tex(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2))}$")
+                      fig.m(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2)))
             skid = next((e for e in scene.events if isinstance(e, Skid) and e.body == body.name), None)
             if skid is not None:
                 text = fig.product(skid.friction, body.mass, scene.gravity.g) if scene.gravity else fig.tex(skid.friction)
@@ -582,7 +589,7 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
                           toward=(-v[0] / n, 1))
         if "radius" in body.sizes and fig.tex(body.sizes["radius"]) and not pull:
             fig.line(center, _add(center, _unit(150), r), "thin")
-            fig.label(_add(center, _unit(150), r * 0.55), (0, 1), f"${fig.tex(body.sizes['radius'])}$")
+            fig.label(_add(center, _unit(150), r * 0.55), (0, 1), fig.m(body.sizes['radius']))
         x += 2 * r + 1.2
 
 
@@ -596,16 +603,15 @@ def _spool(fig: _Figure, body: Body, pull: HubPull, center, r: float) -> None:
     direction = (math.cos(angle), math.sin(angle))
     fig.line(start, _add(start, direction, 1.4), "thick")
     fig.arrow(_add(start, direction, 1.4), (0.9 * direction[0], 0.9 * direction[1]), "force",
-              f"${fig.tex(pull.force)}$" if fig.tex(pull.force) else None)
+              fig.m(pull.force))
     corner = _add(start, direction, 1.0)
     fig.line(corner, _add(corner, (1.0, 0)), "thin, dashed")
     fig.arc(corner, 0.7, 0, math.degrees(angle), fig.tex(pull.angle), label_radius=0.75)
     fig.line(center, _add(center, _unit(120), r), "thin")
-    fig.label(_add(center, _unit(120), r * 0.7), _unit(210), f"${fig.tex(body.sizes.get('radius'))}$"
+    fig.label(_add(center, _unit(120), r * 0.7), _unit(210), fig.m(body.sizes.get('radius'))
               if fig.tex(body.sizes.get("radius")) else None)
     fig.line(center, _add(center, _unit(200), hub), "thin")
-    fig.label(_add(center, _unit(200), hub + 0.02), (-1, 0), f"${fig.tex(pull.hub_radius)}$"
-              if fig.tex(pull.hub_radius) else None)
+    fig.label(_add(center, _unit(200), hub + 0.02), (-1, 0), fig.m(pull.hub_radius))
 
 
 def _loop(fig: _Figure, loop: Loop, contacts: list[Contact]) -> None:
@@ -619,9 +625,8 @@ def _loop(fig: _Figure, loop: Loop, contacts: list[Contact]) -> None:
     fig.add(f"\\draw[thick] {_pt(center)} circle ({_f(radius)});")
     fig.ground(-2.8, 2.7, 0.0)
     fig.line(center, _add(center, _unit(30), radius), "thin")
-    fig.label(_add(center, _unit(30), radius / 2), (-0.5, 1), f"${fig.tex(loop.radius)}$"
-              if fig.tex(loop.radius) else None)
-    fig.add(f"\\fill {_pt(center)} circle (0.04);")
+    fig.label(_add(center, _unit(30), radius / 2), (-0.5, 1), fig.m(loop.radius))
+    fig.dot(center, 0.04)
     reference = (fig.num(loop.radius, 0.0), radius)
     u = 0.0
     for contact in contacts:
@@ -690,11 +695,11 @@ def _impact(fig: _Figure) -> None:
     back = 1.4 if target.shape == "rod" else 1.9
     incoming = _add(hit, along, -back)
     fig.line(incoming, hit, "dashed, gray")
-    fig.add(f"\\fill {_pt(incoming)} circle (0.09);")
+    fig.dot(incoming, 0.09)
     left = (-along[1], along[0])
     _label_mass(fig, mover, _add(incoming, left, -0.12), (along[1], -along[0]))
     fig.arrow(_add(incoming, along, 0.15), (0.85 * along[0], 0.85 * along[1]), "velocity",
-              f"${fig.tex(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2))}$", toward=left)
+              fig.m(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2)), toward=left)
     fig.add(f"\\fill[red!70!black] {_pt(hit)} circle (0.04);")
     x, y = motion.position
     distance = sp.simplify(abs(x * motion.velocity[1] - y * motion.velocity[0])
@@ -747,10 +752,10 @@ def _pendulum(fig: _Figure, body: Body, pin: Pin, at) -> None:
     fig.support(at, hanging)
     fig.add(f"\\draw[axis] {_pt(at)} -- {_pt(_add(at, (0, -2.5 if hanging else 2.5)))};")
     fig.line(at, cm, "thin")
-    fig.add(f"\\fill {_pt(cm)} circle (0.06);")
+    fig.dot(cm, 0.06)
     away = (math.cos(swing), math.sin(swing) * (1 if hanging else -1))  # the side away from the vertical
     fig.label(_add(_add(at, axis, length * (0.5 if hanging else 0.3)), away, 0.05), away,
-              f"${fig.tex(abs(pin.offset[1]))}$")
+              fig.m(abs(pin.offset[1])))
     amplitude = next((a.amplitude for a in fig.problem.asks.values() if a.amplitude is not None), None)
     vertical = -90 if hanging else 90
     fig.arc(at, 1.1, min(vertical, angle), max(vertical, angle), fig.tex(amplitude) if amplitude else None,
@@ -772,8 +777,8 @@ def _axles(fig: _Figure, bodies: list[Body], at) -> None:
             fig.body(body, at, radii[k])
     for k, body in enumerate(ordered):  # each moment of inertia inside its own ring
         if len(ordered) > 1 and fig.tex(body.inertia):
-            where = (-(radii[k] + radii[k + 1]) / 2, 0) if k + 1 < len(radii) else (0, radii[k] * aspect * 0.5)
-            fig.label(_add(at, where), (0, 0), f"${fig.tex(body.inertia)}$")
+            where = (-(radii[k] + radii[k + 1]) / 2, 0) if k + 1 < len(radii) else (-radii[k] * 0.55, 0)
+            fig.label(_add(at, where), (0, 0), fig.m(body.inertia))
     fig.axle(at)
     reel, r = ordered[0], radii[0]
     for turn in (e for e in scene.events if isinstance(e, InternalTurn)):
@@ -785,7 +790,7 @@ def _axles(fig: _Figure, bodies: list[Body], at) -> None:
     if fig.tex(reel.sizes.get("radius")):
         angle = 135 if strings and strings[0].side > 0 else 45
         fig.line(at, _add(at, _unit(angle), r), "thin")
-        fig.label(_add(at, _unit(angle), r * 0.55), _unit(angle + 90), f"${fig.tex(reel.sizes['radius'])}$")
+        fig.label(_add(at, _unit(angle), r * 0.55), _unit(angle + 90), fig.m(reel.sizes['radius']))
     if len(ordered) == 1:
         _label_mass(fig, reel, _add(at, (0.12, -0.12)), (1, -1))
     if scene.gravity is not None and not strings:
@@ -879,9 +884,9 @@ def _specimen(fig: _Figure, body: Body, center, slot: float) -> None:
         size = body.sizes.get("radius", body.sizes.get("outer_radius"))
         if fig.tex(size):
             fig.line(center, _add(center, _unit(35), half), "thin")
-            fig.label(_add(center, _unit(35), half * 0.5), (-0.5, 1), f"${fig.tex(size)}$")
+            fig.label(_add(center, _unit(35), half * 0.5), (-0.5, 1), fig.m(size))
     if body.shape == "rod":
-        _label_mass(fig, body, _add(center, (-half, 0.12)), (1, 1))
+        _label_mass(fig, body, _add(center, (-half / 2, 0.12)), (0, 1))
     else:
         _label_mass(fig, body, _add(center, (0, -0.12)), (0, -1))
     for point, direction, shift in _asked_axes(fig, body):
@@ -910,7 +915,7 @@ def _cylinder_side(fig: _Figure, body: Body, center) -> None:
     fig.add(f"\\draw[dashed, gray] {_pt(_add(bottom, (radius, 0)))} arc[start angle=0, end angle=180, "
             f"x radius={_f(radius)}, y radius=0.3];")
     fig.line(top, _add(top, (radius, 0)), "thin")
-    fig.label(_add(top, (radius / 2, -0.02)), (0, -1), f"${fig.tex(body.sizes['radius'])}$"
+    fig.label(_add(top, (radius / 2, -0.02)), (0, -1), fig.m(body.sizes['radius'])
               if fig.tex(body.sizes.get("radius")) else None)
     fig.dimension(_add(bottom, (radius, 0)), _add(top, (radius, 0)), fig.tex(body.sizes["height"]), side=-1, gap=0.3)
     for point, direction, shift in _asked_axes(fig, body):
