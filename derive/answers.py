@@ -16,7 +16,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from derive import inertia, numeric
+from derive import inertia, limits, numeric
 from derive.mechanics import (events, gyroscope, joints, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
@@ -41,12 +41,15 @@ class Solution(CrossChecks):
     @cached_property
     def derivations(self) -> dict[str, Derivation]:
         try:
-            return {
-                "lagrange": lagrange.derive(self.scene, self.coordinates),
-                "newton_euler": newton_euler.derive(self.scene, self.coordinates),
-            }
+            with limits.time_limit("the derivation by Lagrange"):
+                by_lagrange = lagrange.derive(self.scene, self.coordinates)
+            with limits.time_limit("the derivation by Newton-Euler"):
+                by_newton_euler = newton_euler.derive(self.scene, self.coordinates)
+        except limits.TimeLimitError:
+            raise
         except ValueError as error:
             raise self.problem.error("scene", str(error)) from None
+        return {"lagrange": by_lagrange, "newton_euler": by_newton_euler}
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
     def _exact_period(self, amplitude: sp.Expr, route: str):
@@ -340,7 +343,12 @@ class Solution(CrossChecks):
         return tidy(inertia.composite_tensor(parts, about=(*center, 0)).tensor[2, 2])
 
     def expression(self, name: str) -> sp.Expr:
-        """The exact answer, in the parameter symbols, for SI values of the parameters."""
+        """The exact answer, in the parameter symbols, for SI values of the parameters
+        (within the time limit of derive.limits: a runaway integral is an input error)."""
+        with limits.time_limit(f"{self.problem.path}: ask.{name}"):
+            return self._expression(name)
+
+    def _expression(self, name: str) -> sp.Expr:
         ask = self.problem.asks[name]
         if ask.quantity.kind == "inertia":
             result = self._inertia(ask)
@@ -389,6 +397,10 @@ class Solution(CrossChecks):
 
     def steps(self) -> dict[str, list[Step]]:
         """The derivation steps a worked solution shows, by route."""
+        with limits.time_limit(f"{self.problem.path}: the worked solution"):
+            return self._steps()
+
+    def _steps(self) -> dict[str, list[Step]]:
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
         if kinds <= STATIC_KINDS:
             return {"integration": [self._static_step(a) for a in self.problem.asks.values()]}

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive import inertia, units
+from derive import inertia, limits, units
 from derive.mechanics import gyroscope, joints, lagrange, many_bodies, orbits, paths, top
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
@@ -45,7 +45,12 @@ class CrossChecks:
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem; the checks do not change
     def checks(self) -> list[Check]:
-        """Every independent check that applies: routes, parallel axes, dimensions."""
+        """Every independent check that applies: routes, parallel axes, dimensions (within the
+        time limit of derive.limits)."""
+        with limits.time_limit(f"{self.problem.path}: checks"):
+            return self._checks()
+
+    def _checks(self) -> list[Check]:
         result = [self._dimension_check()]
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
         if kinds & DYNAMIC_KINDS:

@@ -2,11 +2,20 @@
 
 >>> issubclass(InputError, ValueError)
 True
+>>> str(InputError("f.yaml: a\\nb: unknown key"))
+'f.yaml: a\\\\nb: unknown key'
 """
 
 
 class InputError(ValueError):
-    """Bad input: a problem file, a set file or a command-line value. One line, naming where."""
+    """Bad input: a problem file, a set file or a command-line value. One line, naming where
+    (line breaks and other control characters a file put in a name are shown escaped)."""
+
+    def __str__(self) -> str:
+        text = super().__str__()
+        if text.isprintable():
+            return text
+        return "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
 
 
 class ProblemError(InputError):

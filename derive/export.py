@@ -75,7 +75,9 @@ def pdfs(texs: list[Path]) -> list[Path]:
 
 #: pandoc targets: (writer, file suffix, extra arguments). Math stays math in each: MathML in
 #: HTML, $...$ in Markdown, Word equations in DOCX. No filters, and nothing from a problem file
-#: reaches pandoc's options.
+#: reaches pandoc's options: the title is one `--metadata=title:...` argument; and pandoc runs
+#: with --sandbox, so an \input or \includegraphics in the LaTeX reads no file.
+PANDOC_SAFETY = ["--sandbox"]
 PANDOC_TARGETS = {
     "html": ("html5", ".html", ["--standalone", "--mathml"]),
     "md": ("markdown", ".md", ["--standalone"]),
@@ -91,7 +93,7 @@ def convert(tex: Path, target: str, title: str) -> Path:
     out = tex.with_suffix(suffix)
     try:
         pypandoc.convert_file(str(tex), writer, format="latex", outputfile=str(out),
-                              extra_args=[*extra, f"--metadata=title:{title}"])
+                              extra_args=[*extra, *PANDOC_SAFETY, f"--metadata=title:{title}"])
     except (RuntimeError, OSError) as error:
         raise BuildError(f"pandoc could not convert {tex.name}: {str(error).strip().splitlines()[-1]}") from None
     return out

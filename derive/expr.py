@@ -38,6 +38,8 @@ RESERVED: frozenset[str] = frozenset(FUNCTIONS) | {"pi"}
 
 MAX_DEPTH = 60
 MAX_LOG10 = 1000  # numbers beyond 10**±1000 are refused
+MAX_DEGREE = 100  # (x + 1)**100 at most (a power of one symbol may be higher): (x + 1)**1000 would
+# make expansions hang later
 _OP_TEXT = {ast.FloorDiv: "//", ast.Mod: "%", ast.MatMult: "@", ast.LShift: "<<",
             ast.RShift: ">>", ast.BitOr: "|", ast.BitAnd: "&", ast.Not: "not", ast.Invert: "~"}
 _NOT_ALLOWED = {ast.Attribute: "attribute access is", ast.Subscript: "subscripts are",
@@ -57,6 +59,11 @@ _LIMIT = 10**MAX_LOG10
 def _check_numbers(expr: sympy.Expr) -> sympy.Expr:
     if any(abs(r.p) > _LIMIT or r.q > _LIMIT for r in expr.atoms(sympy.Rational)):
         raise ExprError(f"number out of range (limit 10**{MAX_LOG10})")
+    for power in expr.atoms(sympy.Pow):  # also x**60*x**60 and (x**20)**20, which sympy combines
+        if isinstance(power.exp, sympy.Number) and abs(power.exp) > MAX_DEGREE and not (
+                power.base.is_Number or power.base.is_Symbol):  # x**100000 alone is harmless
+            raise ExprError(f"power {power.exp} of {power.base} is too high (limit {MAX_DEGREE} but for a "
+                            "single symbol)")
     return expr
 
 
@@ -85,6 +92,25 @@ def _power(base: sympy.Expr, expo: sympy.Expr) -> sympy.Expr:
             if r and abs(expo) * abs(math.log10(abs(r.p)) - math.log10(r.q)) > MAX_LOG10:
                 raise ExprError(f"power out of range (limit 10**{MAX_LOG10})")
     return sympy.Pow(base, expo)
+
+
+_BIG = sympy.Float(f"1e{MAX_LOG10}")
+_GROWING = ("exp", "sinh", "cosh")  # exp(10**999) is a number of 10**998 digits: refuse its argument
+
+
+def _bounded(value: sympy.Expr, what: str = "number") -> sympy.Expr:
+    """A constant that is not a plain number (pi**2000, exp(900)*exp(900), log(-1)) must
+    evaluate within 10**±MAX_LOG10; expressions of symbols pass (nothing to evaluate)."""
+    if value.free_symbols or isinstance(value, sympy.Rational) or value.has(sympy.zoo, sympy.nan, sympy.oo):
+        return value
+    try:
+        parts = value.evalf(3).as_real_imag()
+        large = any(part.is_Float and abs(part) > _BIG for part in parts)
+    except (ArithmeticError, ValueError, TypeError, RecursionError):
+        large = True
+    if large:
+        raise ExprError(f"{what} out of range (limit 10**{MAX_LOG10})")
+    return value
 
 
 _OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
@@ -127,7 +153,7 @@ def _build(tree: ast.Expression, source: str, resolve: Callable[[str], sympy.Exp
             a, b = build(node.left), build(node.right)
             if isinstance(node.op, ast.Div) and b.is_zero:
                 raise ExprError("division by zero")
-            return _check_numbers(_OPS[type(node.op)](a, b))
+            return _bounded(_check_numbers(_OPS[type(node.op)](a, b)))
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
             v = build(node.operand)
             return -v if isinstance(node.op, ast.USub) else v
@@ -158,7 +184,15 @@ def _build(tree: ast.Expression, source: str, resolve: Callable[[str], sympy.Exp
                 raise ExprError(f"keyword arguments are not allowed (in {name}(...))")
             if len(node.args) != 1:
                 raise ExprError(f"{name}() takes exactly 1 argument ({len(node.args)} given)")
-            return functions[name](build(node.args[0]))
+            argument = build(node.args[0])
+            if name in _GROWING and not argument.free_symbols:
+                try:
+                    too_large = abs(sympy.re(argument).evalf(3)) > MAX_LOG10 * math.log(10)
+                except (ArithmeticError, ValueError, TypeError):
+                    too_large = True
+                if too_large:
+                    raise ExprError(f"{name}() of a number that large is out of range (limit 10**{MAX_LOG10})")
+            return _bounded(functions[name](argument))
         what = _NOT_ALLOWED.get(type(node), f"'{type(node).__name__}' syntax is")
         raise ExprError(f"{what} not allowed")
 

@@ -28,6 +28,7 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
+from derive import limits
 from derive.errors import InputError
 
 # The generic symbols a shape is integrated with; a body substitutes its own.
@@ -211,10 +212,12 @@ def _integral(integrand: sp.Expr, shape: Shape) -> sp.Expr:
 def _integrate(integrand: sp.Expr, shape: Shape) -> sp.Expr:
     """The integral over the shape, simplified; refused when sympy finds no closed form."""
     # (r/R)**k as R**-k * r**k where valid: sympy integrates a power of one symbol much faster
-    value = _integral(sp.powsimp(sp.expand_power_base(integrand)), shape).doit()
+    with limits.time_limit(f"integrating over the {shape.name}"):
+        value = _integral(sp.powsimp(sp.expand_power_base(integrand)), shape).doit()
     if value.has(sp.Integral):
         raise InputError(f"sympy finds no closed form for the integral of {integrand} over the {shape.name}")
-    return sp.simplify(value)
+    with limits.time_limit(f"simplifying the integral over the {shape.name}"):
+        return sp.simplify(value)
 
 
 def _check_density(shape: Shape, rho: sp.Expr) -> None:

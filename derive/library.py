@@ -15,7 +15,8 @@ from pathlib import Path
 from derive.errors import InputError
 
 _PACKAGE = Path(__file__).resolve().parent
-ID_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+ID_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")  # problem ids: file names and LaTeX labels
+SET_ID_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
 
 
 class LibraryError(InputError):
@@ -63,5 +64,10 @@ def find_problem(reference: str) -> Path:
 
 
 def find_set(reference: str) -> Path:
-    """A set file path, or the set of that id in problems/sets/."""
-    return _find(reference, sorted((problems_dir() / "sets").glob("*.yaml")), "set")
+    """A set file path, or the set of that id in problems/sets/. The set's id is the file's
+    stem, and names the output folder (build/<id>): it must match SET_ID_PATTERN."""
+    path = _find(reference, sorted((problems_dir() / "sets").glob("*.yaml")), "set")
+    if not SET_ID_PATTERN.fullmatch(path.stem):
+        raise LibraryError(f"{reference}: a set's id is its file name, {path.stem!r}: use letters, digits, _ and -, "
+                           "starting with a letter")
+    return path

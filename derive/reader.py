@@ -17,12 +17,49 @@ from pathlib import Path
 import sympy as sp
 import yaml
 
-from derive import expr, units
+from derive import expr, latex_safety, units
 from derive.errors import ProblemError
+
+MAX_CHARACTERS = 200_000  # a library problem file is a few thousand
+MAX_NESTING = 40  # a problem file nests 4 or 5 levels deep
+
 
 class Loader(yaml.SafeLoader):
     """Safe YAML that keeps decimals exact (as Decimal), refuses duplicate keys, and reads
-    only true/false as booleans (YAML 1.2), so that `on:` and `no` stay words."""
+    only true/false as booleans (YAML 1.2), so that `on:` and `no` stay words.
+
+    Hostile input fails fast with a yaml.YAMLError: a text over MAX_CHARACTERS, nesting deeper
+    than MAX_NESTING, any alias (`*name`: no billion laughs), a value no constructor can make
+    (`.inf`, `!!timestamp junk`, an integer of 5000 digits).
+    """
+
+    def __init__(self, stream):
+        if isinstance(stream, (str, bytes)) and len(stream) > MAX_CHARACTERS:
+            raise yaml.YAMLError(f"the file has {len(stream)} characters (limit {MAX_CHARACTERS})")
+        super().__init__(stream)
+        self._nesting = 0
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            raise yaml.composer.ComposerError(None, None, "aliases (*name) are not allowed",
+                                              self.peek_event().start_mark)
+        self._nesting += 1
+        try:
+            if self._nesting > MAX_NESTING:
+                raise yaml.composer.ComposerError(None, None, f"nested deeper than {MAX_NESTING} levels",
+                                                  self.peek_event().start_mark)
+            return super().compose_node(parent, index)
+        finally:
+            self._nesting -= 1
+
+    def get_single_data(self):
+        try:
+            return super().get_single_data()
+        except yaml.YAMLError:
+            raise
+        except (ValueError, TypeError, AttributeError, ArithmeticError, RecursionError, MemoryError) as error:
+            reason = str(error).splitlines()[0] if str(error) else type(error).__name__
+            raise yaml.constructor.ConstructorError(None, None, f"cannot read a value: {reason}") from None
 
 
 Loader.yaml_implicit_resolvers = {
@@ -34,13 +71,23 @@ Loader.add_implicit_resolver("tag:yaml.org,2002:bool", re.compile(r"^(?:true|Tru
 
 
 def _decimal(loader: yaml.SafeLoader, node: yaml.Node) -> Decimal:
-    return Decimal(loader.construct_scalar(node).replace("_", ""))
+    text = loader.construct_scalar(node)
+    try:
+        value = Decimal(text.replace("_", ""))
+    except ArithmeticError:  # .inf, .nan: YAML floats that are no decimals
+        value = None
+    if value is None or not value.is_finite():
+        raise yaml.constructor.ConstructorError(None, None, f"{text!r} is not a finite number", node.start_mark)
+    return value
 
 
 def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> dict:
     seen = set()
     for key_node, _ in node.value:
         key = loader.construct_object(key_node)
+        if not isinstance(key, (str, int, Decimal)) or isinstance(key, bool):
+            raise yaml.constructor.ConstructorError(None, None, f"a key must be a name, not {type(key).__name__}",
+                                                    key_node.start_mark)
         if key in seen:
             raise yaml.constructor.ConstructorError(None, None, f"duplicate key {key!r}", key_node.start_mark)
         seen.add(key)
@@ -49,6 +96,11 @@ def _mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> dict:
 
 Loader.add_constructor("tag:yaml.org,2002:float", _decimal)
 Loader.add_constructor("tag:yaml.org,2002:map", _mapping)
+
+
+#: Keys whose values are names (of shapes, bodies, parameters, asks, sides): text, never a list.
+NAME_KEYS = frozenset({"shape", "zero_for", "exact", "on", "contact", "wound_on", "hangs", "side", "body", "to",
+                       "off", "relative_to", "of", "holds"})
 
 
 class Reader:
@@ -74,20 +126,32 @@ class Reader:
         for key in required:
             if key not in value:
                 raise self.fail(f"{field}.{key}" if field else key, "missing")
+        for key in () if free else NAME_KEYS.intersection(value):  # looked up in tables: no lists
+            if not isinstance(value[key], str):
+                raise self.fail(f"{field}.{key}" if field else key, f"expected a name, got {type(value[key]).__name__}")
         return value
 
     def text(self, value, field: str) -> str:
+        """Non-empty text that TeX may safely see (derive.latex_safety); the `question` field
+        is checked as LaTeX with `{{ NAME }}` placeholders of the parameters read so far."""
         if not isinstance(value, str) or not value.strip():
             raise self.fail(field, "expected non-empty text")
+        try:
+            latex_safety.check(value, question=field == "question", placeholders=tuple(self.parameters))
+        except latex_safety.LatexError as error:
+            raise self.fail(field, str(error)) from None
         return value
 
     def expression(self, value, field: str, allowed=None) -> sp.Expr:
         try:
-            return expr.parse(value, self.symbols if allowed is None else allowed)
+            result = expr.parse(value, self.symbols if allowed is None else allowed)
         except expr.ExprError as error:
             raise self.fail(field, str(error)) from None
         except TypeError:
             raise self.fail(field, f"expected an expression, got {type(value).__name__}") from None
+        if not result.free_symbols and result.is_extended_real is not True:  # sqrt(-1), log(-1)
+            raise self.fail(field, f"{result} is not a real number")
+        return result
 
     def unit(self, value, field: str) -> str:
         text = self.text(value, field) if not isinstance(value, (int, Decimal)) else str(value)

@@ -15,7 +15,7 @@ import jinja2
 import sympy as sp
 from jinja2.sandbox import SandboxedEnvironment
 
-from derive import library
+from derive import latex_safety, library
 
 LATEX_SPECIALS = {
     "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
@@ -57,10 +57,12 @@ def _questions() -> SandboxedEnvironment:
 def question(text: str, values: dict[str, str]) -> str:
     """Render a problem's question text, `{{ name }}` standing for a parameter's value and unit.
 
-    Raises jinja2 errors (UndefinedError, TemplateSyntaxError) for names or syntax the
-    problem does not declare.
+    Raises jinja2 errors (UndefinedError, TemplateSyntaxError, SecurityError) for names or
+    syntax the problem does not declare. The result is made safe for LaTeX by
+    `latex_safety.question_latex`: math kept, specials outside it escaped, LatexError for
+    what could misuse TeX.
     """
-    return _questions().from_string(text).render(**values)
+    return latex_safety.question_latex(_questions().from_string(text).render(**values))
 
 
 def render(template: str, **context) -> str:

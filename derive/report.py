@@ -40,8 +40,9 @@ def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: 
     for name, ask in problem.asks.items():
         if names is not None and name not in names:
             continue
+        expression = solution.expression(name)  # its errors (a time limit) say what they are
         try:
-            result[name] = numeric.evaluate(_in_unit(solution.expression(name), ask.unit), values, digits)
+            result[name] = numeric.evaluate(_in_unit(expression, ask.unit), values, digits)
         except (ValueError, ZeroDivisionError) as error:  # outside where the answer exists
             raise problem.error(f"ask.{name}", f"no real value at these parameters ({error})") from None
     return result

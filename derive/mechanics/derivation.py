@@ -12,6 +12,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from derive import limits
+
 
 @dataclass(frozen=True)
 class Step:
@@ -61,10 +63,11 @@ class Derivation:
 
 def tidy(expr: sp.Expr) -> sp.Expr:
     """A compact form of a solved expression: rational functions cancelled, then factored."""
-    expr = sp.cancel(sp.together(expr))
-    if expr.has(sp.sin, sp.cos):
-        expr = sp.trigsimp(expr)
-    return sp.factor_terms(sp.factor(expr))
+    with limits.time_limit("simplifying"):
+        expr = sp.cancel(sp.together(expr))
+        if expr.has(sp.sin, sp.cos):
+            expr = sp.trigsimp(expr)
+        return sp.factor_terms(sp.factor(expr))
 
 
 def root(expr: sp.Expr) -> sp.Expr:
