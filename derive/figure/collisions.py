@@ -1,0 +1,64 @@
+"""A collision: the struck body, the incoming one on its line with its velocity, the impact parameter."""
+from __future__ import annotations
+
+import math
+
+import sympy as sp
+
+from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt
+from derive.scene import Bounce, Pin, Stick
+
+
+def _impact(fig: _Figure) -> None:
+    """A collision: the struck body at the origin, the incoming body on its line of motion with its
+    velocity, and the impact parameter (the line's distance from the struck body's center)."""
+    scene = fig.scene
+    event = next(e for e in scene.events if isinstance(e, (Stick, Bounce)))
+    target_name = event.to if isinstance(event, Stick) else event.off
+    target, mover = scene.bodies[target_name], scene.bodies[event.body]
+    motion = scene.motions[event.body]
+    # the drawing scale: the struck body (or the farthest contact point) is about 1.3 cm
+    position = [fig.num(p, 0) for p in motion.position]
+    reach = max(math.hypot(*position), fig.size(target, "radius", 0), fig.size(target, "length", 0) / 2, 1e-9)
+    scale = (2.4 if target.shape == "rod" else 1.3) / reach
+    size = target.sizes.get("radius") or (target.sizes.get("length", 0) / 2)
+    drawn = fig.num(size, 0) * scale or 1.3
+    pin = next((c for c in scene.constraints if isinstance(c, Pin) and c.body == target_name), None)
+    if target.shape == "custom" and "radius" not in target.sizes:
+        fig.add(f"\\draw[body] (0,0) circle ({_f(drawn)}); \\fill (0,0) circle (0.04);")
+    else:
+        fig.body(target, (0, 0), drawn)
+    if target.shape == "rod" and fig.tex(target.sizes.get("length")):
+        fig.dimension((-drawn, 0), (drawn, 0), fig.tex(target.sizes["length"]), side=-1, gap=0.3)
+    if pin is not None:
+        fig.axle((0, 0))
+    spin = scene.motions.get(target_name)
+    if spin is not None and spin.spin != 0:
+        sign = 1 if fig.num(spin.spin, 1) > 0 else -1
+        fig.spin((0, 0), drawn + 0.25, sign, fig.tex(sp.Abs(spin.spin)), at=135)
+    if target.shape == "rod":
+        _label_mass(fig, target, (-drawn, 0.12), (1, 1))
+    else:
+        _label_mass(fig, target, (-0.15, -0.15), (-1, -1))
+    v = (fig.num(motion.velocity[0], 1), fig.num(motion.velocity[1], 0))
+    speed = math.hypot(*v) or 1.0
+    along = (v[0] / speed, v[1] / speed)
+    hit = (position[0] * scale, position[1] * scale)
+    back = 1.4 if target.shape == "rod" else 1.9
+    incoming = _add(hit, along, -back)
+    fig.line(incoming, hit, "dashed, gray")
+    fig.dot(incoming, 0.09)
+    left = (-along[1], along[0])
+    _label_mass(fig, mover, _add(incoming, left, -0.12), (along[1], -along[0]))
+    fig.arrow(_add(incoming, along, 0.15), (0.85 * along[0], 0.85 * along[1]), "velocity",
+              fig.m(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2)), toward=left)
+    fig.add(f"\\fill[red!70!black] {_pt(hit)} circle (0.04);")
+    x, y = motion.position
+    distance = sp.simplify(abs(x * motion.velocity[1] - y * motion.velocity[0])
+                           / sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2))
+    foot_length = hit[0] * (-along[1]) + hit[1] * along[0]
+    foot = (-along[1] * foot_length, along[0] * foot_length)
+    if abs(foot_length) > 0.05:
+        side = 1 if (foot[0] * along[1] - foot[1] * along[0]) < 0 else -1
+        fig.dimension((0, 0), foot, fig.tex(distance), side=side * (1 if target.shape == "rod" else -1),
+                      gap=0.2 if target.shape == "rod" else drawn + 0.35)

@@ -1,0 +1,161 @@
+"""Bodies on a surface: an incline, a level floor (with a pulled spool or a skid), a loop-the-loop."""
+from __future__ import annotations
+
+import math
+
+import sympy as sp
+
+from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit
+from derive.render import tex_escape
+from derive.scene import Body, Contact, HubPull, Loop, Skid
+
+
+def _on_surface(fig: _Figure) -> None:
+    """Bodies on an incline or a level floor: the surface, each body touching it, gravity,
+    pulls, velocities and a skid's friction."""
+    scene = fig.scene
+    contacts = [c for c in scene.constraints if isinstance(c, Contact)]
+    surface = scene.surfaces[contacts[0].surface]
+    if isinstance(surface, Loop):
+        _loop(fig, surface, contacts)
+        return
+    angle = fig.num(surface.angle, 0.5)
+    if angle <= 1e-9:
+        _floor(fig, contacts)
+        return
+    angle = _clamp(angle, 0.3, 0.8)
+    slope = 5.2
+    width, height = slope * math.cos(angle), slope * math.sin(angle)
+    fig.add(f"\\draw[fill=gray!10] (0,0) -- {_pt((width, 0))} -- {_pt((0, height))} -- cycle;")
+    fig.add(f"\\fill[pattern=north east lines] (-0.2,-0.15) rectangle {_pt((width + 0.3, 0))};")
+    fig.arc((width, 0), 0.9, 180 - math.degrees(angle), 180, fig.tex(surface.angle), label_radius=1.0)
+    if surface.height is not None:
+        fig.dimension((0, 0), (0, height), fig.tex(surface.height), side=1, gap=0.3)
+    down, normal = (math.cos(angle), -math.sin(angle)), (math.sin(angle), math.cos(angle))
+    reference = _reference_size(fig, surface.height, height)
+    several = len(contacts) > 1
+    along = 0.5 if several else 1.0
+    for contact in contacts:
+        body = scene.bodies[contact.body]
+        r = _drawn_radius(fig, body, reference)
+        along += r
+        foot = _add((0, height), down, along)
+        center = _add(foot, normal, r)
+        fig.body(body, center, r, -math.degrees(angle), block=body.shape == "point")
+        if several:
+            fig.label(_add(center, normal, r + 0.05), normal, f"\\scriptsize {tex_escape(body.name)}")
+        elif scene.gravity is not None:
+            fig.gravity_arrow(center, body)
+        along += r + 0.4
+    if several and scene.gravity is not None:
+        fig.arrow((width - 0.3, height - 0.3), (0, -0.7), "force", "$\\vec g$")
+
+
+def _reference_size(fig: _Figure, size_expr, drawn: float):
+    """(metres, cm) of a scene size that body sizes are drawn in proportion to."""
+    return (fig.num(size_expr, 0.0), drawn)
+
+
+def _drawn_radius(fig: _Figure, body: Body, reference, low: float = 0.18, high: float = 0.5,
+                  default: float = 0.3) -> float:
+    if body.shape == "point":
+        return 0.17
+    size = body.sizes.get("radius", body.sizes.get("outer_radius"))
+    metres, drawn = reference
+    if size is None or metres <= 0 or fig.num(size, 0.0) <= 0:
+        return default
+    return _clamp(fig.num(size, 0.0) / metres * drawn, low, high)
+
+
+def _floor(fig: _Figure, contacts: list[Contact]) -> None:
+    """A level floor: each body on it, with its pulls, launch velocity and a skid's friction."""
+    scene = fig.scene
+    fig.ground(-0.4, 5.4)
+    x = 1.4
+    for contact in contacts:
+        body = scene.bodies[contact.body]
+        pull = next((p for p in scene.pulls if p.body == body.name), None)
+        r = 1.0 if pull else 0.7
+        center = (x, r)
+        fig.body(body, center, r, block=body.shape == "point")
+        if pull:
+            _spool(fig, body, pull, center, r)
+        if scene.gravity is not None:
+            fig.gravity_arrow(center, body, r * 0.55, toward=(-1, 0) if pull else (1, 0))
+        motion = scene.motions.get(body.name)
+        if motion is not None and any(v != 0 for v in motion.velocity):
+            v = (fig.num(motion.velocity[0], 1), fig.num(motion.velocity[1], 0))
+            n = math.hypot(*v) or 1.0
+            fig.arrow(_add(center, (0, r + 0.25)), (1.2 * v[0] / n, 1.2 * v[1] / n), "velocity",
+                      fig.m(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2)))
+            skid = next((e for e in scene.events if isinstance(e, Skid) and e.body == body.name), None)
+            if skid is not None:
+                text = fig.product(skid.friction, body.mass, scene.gravity.g) if scene.gravity else fig.tex(skid.friction)
+                fig.arrow((x - 0.05, 0.08), (-1.0 * v[0] / n, 0), "force", f"${text}$" if text else None,
+                          toward=(-v[0] / n, 1))
+        if "radius" in body.sizes and fig.tex(body.sizes["radius"]) and not pull:
+            fig.line(center, _add(center, _unit(150), r), "thin")
+            fig.label(_add(center, _unit(150), r * 0.55), (0, 1), fig.m(body.sizes['radius']))
+        x += 2 * r + 1.2
+
+
+def _spool(fig: _Figure, body: Body, pull: HubPull, center, r: float) -> None:
+    """A spool: its hub, the cord leaving the hub's underside at the pull's angle, the radii."""
+    ratio = _clamp(fig.num(pull.hub_radius, 1) / fig.size(body, "radius", 2), 0.25, 0.7)
+    hub = r * ratio
+    fig.add(f"\\draw[fill=gray!35] {_pt(center)} circle ({_f(hub)}); \\fill {_pt(center)} circle (0.04);")
+    angle = _clamp(fig.num(pull.angle, 0.5), 0.15, 1.2)
+    start = _add(center, (math.sin(angle), -math.cos(angle)), hub)
+    direction = (math.cos(angle), math.sin(angle))
+    fig.line(start, _add(start, direction, 1.4), "thick")
+    fig.arrow(_add(start, direction, 1.4), (0.9 * direction[0], 0.9 * direction[1]), "force",
+              fig.m(pull.force))
+    corner = _add(start, direction, 1.0)
+    fig.line(corner, _add(corner, (1.0, 0)), "thin, dashed")
+    fig.arc(corner, 0.7, 0, math.degrees(angle), fig.tex(pull.angle), label_radius=0.75)
+    fig.line(center, _add(center, _unit(120), r), "thin")
+    fig.label(_add(center, _unit(120), r * 0.7), _unit(210), fig.m(body.sizes.get('radius'))
+              if fig.tex(body.sizes.get("radius")) else None)
+    fig.line(center, _add(center, _unit(200), hub), "thin")
+    fig.label(_add(center, _unit(200), hub + 0.02), (-1, 0), fig.m(pull.hub_radius))
+
+
+def _loop(fig: _Figure, loop: Loop, contacts: list[Contact]) -> None:
+    """A loop-the-loop: a ramp from the release height into a circular track, the bodies at the
+    top of the ramp, the loop's radius and the release height."""
+    scene = fig.scene
+    radius = 1.15
+    center = (1.2, radius)
+    start, c1, c2, end = (-2.6, 3.3), (-1.8, 0.1), (-0.6, 0.0), (1.2, 0.0)
+    fig.add(f"\\draw[thick] {_pt(start)} .. controls {_pt(c1)} and {_pt(c2)} .. {_pt(end)};")
+    fig.add(f"\\draw[thick] {_pt(center)} circle ({_f(radius)});")
+    fig.ground(-2.8, 2.7, 0.0)
+    fig.line(center, _add(center, _unit(30), radius), "thin")
+    fig.label(_add(center, _unit(30), radius / 2), (-0.5, 1), fig.m(loop.radius))
+    fig.dot(center, 0.04)
+    reference = (fig.num(loop.radius, 0.0), radius)
+    u = 0.0
+    for contact in contacts:
+        body = scene.bodies[contact.body]
+        r = _drawn_radius(fig, body, reference, 0.13, 0.3, 0.2)
+        point, tangent = _bezier(start, c1, c2, end, u)
+        normal = (-tangent[1], tangent[0])
+        centre = _add(point, normal, r)
+        fig.body(body, centre, r, block=body.shape == "point")
+        if len(contacts) > 1:
+            fig.label(_add(centre, normal, r + 0.05), (1, 0.4), f"\\scriptsize {tex_escape(body.name)}")
+        u += 0.16
+    first, _ = _bezier(start, c1, c2, end, 0.0)
+    fig.dimension((-3.0, 0), (-3.0, first[1]), "h", side=-1, gap=0.0)
+    if scene.gravity is not None:
+        fig.arrow((2.9, 2.6), (0, -0.7), "force", "$\\vec g$")
+
+
+def _bezier(p0, p1, p2, p3, u: float):
+    """Point and unit tangent of a cubic Bezier curve at parameter u."""
+    w = (1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u**3
+    point = tuple(sum(wi * p[i] for wi, p in zip(w, (p0, p1, p2, p3))) for i in range(2))
+    d = 3 * (1 - u) ** 2, 6 * u * (1 - u), 3 * u * u
+    tangent = tuple(sum(di * (q[i] - p[i]) for di, p, q in zip(d, (p0, p1, p2), (p1, p2, p3))) for i in range(2))
+    norm = math.hypot(*tangent) or 1.0
+    return point, (tangent[0] / norm, tangent[1] / norm)

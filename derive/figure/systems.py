@@ -1,0 +1,109 @@
+"""Scene-level systems: a top, a spinning wheel, a standing wave, internal forces, a turning body."""
+from __future__ import annotations
+
+import math
+
+from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit
+from derive.scene import Body
+
+
+def _top(fig: _Figure) -> None:
+    """A top on its tip: the tilted axis, the body around the center of mass, mg, spin and precession."""
+    top = fig.scene.top
+    tilt = _clamp(fig.num(top.tilt, 0.5), 0.4, 1.0)
+    axis = (math.sin(tilt), math.cos(tilt))
+    across = (axis[1], -axis[0])
+    axis_degrees = math.degrees(math.atan2(axis[1], axis[0]))
+    tip = (0.0, 0.0)
+    cm = _add(tip, axis, 2.0)
+    fig.ground(-1.2, 1.6)
+    fig.add(f"\\draw[axis] {_pt(tip)} -- {_pt((0, 3.4))};")
+    fig.add(f"\\draw[body] {_pt(tip)} -- {_pt(_add(cm, across, 0.75))} -- {_pt(_add(cm, across, -0.75))} -- cycle;")
+    fig.add(f"\\draw[body, rotate around={{{_f(axis_degrees)}:{_pt(cm)}}}] {_pt(cm)} ellipse (0.22 and 0.75);")
+    fig.add(f"\\draw[line width=1.5pt] {_pt(cm)} -- {_pt(_add(tip, axis, 3.3))};")
+    fig.line(tip, cm, "thin, dashed")
+    fig.add(f"\\fill {_pt(cm)} circle (0.05); \\fill {_pt(tip)} circle (0.05);")
+    fig.label(_add(_add(tip, axis, 1.0), across, -0.08), (-across[0], -across[1]), fig.m(top.pivot_distance))
+    fig.arc(tip, 2.5, axis_degrees, 90, fig.tex(top.tilt), label_radius=2.55)
+    fig.gravity_arrow(cm, Body("top", "custom", top.mass, {}), 1.1, toward=(1, 0))
+    # the spin about the axis near the top of the stem, and the precession about the vertical
+    spin_at = _add(tip, axis, 3.0)
+    fig.add(f"\\draw[->, thick, rotate around={{{_f(axis_degrees)}:{_pt(spin_at)}}}] "
+            f"{_pt(_add(spin_at, (0, -0.3)))} arc[start angle=-90, end angle=200, x radius=0.1, y radius=0.3];")
+    fig.label(_add(spin_at, across, 0.35), across, fig.m(top.spin))
+    fig.add("\\draw[->, thick] (0.45,3.2) arc[start angle=0, end angle=300, x radius=0.45, y radius=0.13];")
+    precession = fig.ask_symbol("top") or r"\Omega"
+    fig.label((-0.5, 3.2), (-1, 0), f"${precession}$")
+
+
+def _wheel(fig: _Figure) -> None:
+    """A spinning wheel: its angular momentum along the axle, the torque's change of it, the turn."""
+    wheel = fig.scene.wheel
+    fig.add("\\draw[body] (0,0) ellipse (0.35 and 1.1);")
+    fig.line((-0.7, 0), (0, 0), "line width=1.5pt")
+    fig.add("\\draw[->, thick] (-0.25,-0.85) arc[start angle=-120, end angle=120, x radius=0.3, y radius=1];")
+    fig.label((-0.35, 1.0), (-1, 1), fig.m(wheel.spin))
+    length = 3.0
+    fig.arrow((0, 0), (length, 0), "very thick, ->", f"$\\vec L = {fig.product(wheel.inertia, wheel.spin)}$")
+    change = 0.9
+    fig.arrow((length, 0), (0, change), "force", f"$\\Delta L = {fig.product(wheel.torque, wheel.duration)}$")
+    fig.arrow((0, 0), (length, change), "thick, dashed, ->")
+    angle = math.degrees(math.atan2(change, length))
+    fig.arc((0, 0), 1.8, 0, angle, r"\Delta\phi", label_radius=1.85)
+
+
+def _wave(fig: _Figure) -> None:
+    """A standing wave of n wavelengths around a circle of radius r (its two extremes), with L."""
+    wave = fig.scene.wave
+    n, radius, amplitude = int(fig.num(wave.wavelengths, 1)), 1.4, 0.22
+    fig.add(f"\\draw[gray!60] (0,0) circle ({_f(radius)});")
+    for sign, style in ((1, "thick, blue!70!black"), (-1, "thick, dashed, blue!70!black")):
+        points = [_add((0, 0), _unit(5 * k), radius + sign * amplitude * math.sin(n * math.radians(5 * k)))
+                  for k in range(72)]
+        fig.add(f"\\draw[{style}] plot[smooth cycle] coordinates {{{' '.join(_pt(p) for p in points)}}};")
+    fig.add("\\fill (0,0) circle (0.04);")
+    fig.line((0, 0), _add((0, 0), _unit(-40), radius))
+    fig.label(_add((0, 0), _unit(-40), radius / 2), (1, 1), fig.m(wave.radius))
+    fig.out_of_page((-0.45, 0.35), r"\vec L")
+    at = _add((0, 0), _unit(130), radius)
+    fig.dot(at, 0.07)
+    fig.arrow(at, _add((0, 0), _unit(40), 0.8), "velocity", "$p$")
+    wavelengths = fig.tex(wave.wavelengths)
+    count = "" if wavelengths == "1" else f"{wavelengths}\\,"
+    fig.label((1.7, -1.3), (1, 0), f"${count}\\lambda = 2\\pi {fig.tex(wave.radius)}$")
+
+
+def _internal(fig: _Figure) -> None:
+    """N point masses with equal and opposite forces along the lines between them, r from O."""
+    n = fig.scene.internal_forces
+    centre, radius = (1.2, 0.9), 1.2
+    points = [_add(centre, _unit(90 + 360 * k / n + 15), radius) for k in range(n)]
+    origin = (-1.6, -0.6)
+    fig.add(f"\\fill {_pt(origin)} circle (0.05) node[below left] {{$O$}};")
+    for k, p in enumerate(points, start=1):
+        fig.add(f"\\draw[dashed, gray, ->] {_pt(origin)} -- {_pt(p)};")
+        fig.dot(p, 0.09)
+        outward = (p[0] - centre[0], p[1] - centre[1])
+        fig.label(_add(p, outward, 0.12), outward, f"$m_{{{k}}}$")
+    for i in range(n):
+        for j in range(n):
+            if i != j:
+                d = (points[j][0] - points[i][0], points[j][1] - points[i][1])
+                length = math.hypot(*d)
+                text = f"$\\vec F_{{{i + 1}{j + 1}}}$" if (i, j) in ((0, 1), (1, 0)) else None
+                fig.arrow(points[i], (0.55 * d[0] / length, 0.55 * d[1] / length), "force", text)
+
+
+def _rotation(fig: _Figure) -> None:
+    """A body turning about the vertical axis through its center, tilted from it; L for a rod."""
+    name, rotation = next(iter(fig.scene.rotations.items()))
+    body = fig.scene.bodies[name]
+    tilt = _clamp(fig.num(rotation.tilt, 0.6), 0.25, 1.35)
+    fig.add("\\draw[axis, ->] (0,-2) -- (0,2.2);")
+    fig.add("\\draw[->, thick] (0.35,1.75) arc[start angle=0, end angle=300, x radius=0.35, y radius=0.1];")
+    fig.label((0.45, 1.8), (1, 0), fig.m(rotation.rate))
+    direction = 90 - math.degrees(tilt)
+    fig.body(body, (0, 0), 1.6, direction)
+    fig.arc((0, 0), 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
+    if body.shape == "rod":  # a thin rod's L is normal to it, in the plane of the rod and the axis
+        fig.arrow((0, 0), _unit(direction + 90), "very thick, ->, green!40!black", r"$\vec L$")
