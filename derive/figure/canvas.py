@@ -18,7 +18,6 @@ STYLES = (r"font=\small, >={Stealth[length=2mm]}, "
 #: TikZ libraries the figures use (the preamble loads them).
 LIBRARIES = ("arrows.meta", "patterns")
 WIDTH = 6.0  # cm, the figure's overall width
-TAU = 2 * math.pi
 
 
 def _f(x: float) -> str:
