@@ -17,10 +17,14 @@ import json
 import os
 import random
 import shutil
+import signal
+import threading
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
 from pathlib import Path
+from typing import Iterator
 
 import sympy as sp
 import yaml
@@ -30,6 +34,7 @@ from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
 from derive.progress import Reporter
+from derive.reader import Loader
 from derive.report import route_title
 
 SET_REQUIRED = ("title", "problems")
@@ -90,7 +95,7 @@ def load_set(reference: str) -> ProblemSet:
     """A set file by path or id; only `title` and `problems` are required."""
     path = library.find_set(reference)
     try:
-        raw = yaml.safe_load(path.read_text(encoding="utf-8"))
+        raw = yaml.load(path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a hardened SafeLoader
     except (OSError, yaml.YAMLError) as error:
         raise InputError(f"{path}: invalid set file: {str(error).splitlines()[0]}") from None
     if not isinstance(raw, dict):
@@ -377,11 +382,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
     key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
-    out.parent.mkdir(parents=True, exist_ok=True)
-    staging = out.parent / f".{out.name}.partial-{os.getpid()}"
-    shutil.rmtree(staging, ignore_errors=True)
-    staging.mkdir()
-    try:
+    with _staged(out) as staging:
         steps = 1 + len(formats & {"pdf", "html", "md", "docx", "moodle", "qti"})
         with progress.task("writing", steps) as begin:
             begin("LaTeX and the keys")
@@ -419,24 +420,50 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                 path.write_bytes(lms.qti(items, problem_set.title))
                 products.append(path)
         _replace(staging, out, products)
-    finally:
-        shutil.rmtree(staging, ignore_errors=True)
     return [out / p.name for p in products]
 
 
+@contextmanager
+def _staged(out: Path) -> Iterator[Path]:
+    """A hidden staging folder beside `out`, removed (with its -final twin) however the build ends."""
+    out.parent.mkdir(parents=True, exist_ok=True)
+    staging = out.parent / f".{out.name}.partial-{os.getpid()}"
+    shutil.rmtree(staging, ignore_errors=True)
+    staging.mkdir()
+    try:
+        yield staging
+    finally:
+        for folder in (staging, staging.with_name(staging.name + "-final")):
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+@contextmanager
+def _uninterrupted() -> Iterator[None]:
+    """Ctrl-C and SIGTERM wait until the enclosed renames are done (then arrive as usual)."""
+    signals = {signal.SIGINT, signal.SIGTERM}
+    if threading.current_thread() is not threading.main_thread():  # only the main thread gets them
+        yield
+        return
+    signal.pthread_sigmask(signal.SIG_BLOCK, signals)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, signals)
+
+
 def _replace(staging: Path, out: Path, products: list[Path]) -> None:
-    """Move the finished products into `out`, replacing the previous build at once."""
+    """Move the finished products into `out`, replacing the previous build at once: an
+    interruption leaves either the old build or the new one in place, never neither."""
     final = staging.with_name(staging.name + "-final")
     final.mkdir()
     for p in products:
         p.rename(final / p.name)
-    if out.exists():
-        old = out.with_name(f".{out.name}.old-{os.getpid()}")
-        out.rename(old)
+    old = out.with_name(f".{out.name}.old-{os.getpid()}")
+    with _uninterrupted():
+        if out.exists():
+            out.rename(old)
         final.rename(out)
         shutil.rmtree(old, ignore_errors=True)
-    else:
-        final.rename(out)
 
 
 def _limits_context(problem: Problem, solution: Solution, progress: Reporter) -> list[dict[str, str]]:
@@ -464,16 +491,10 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
     item = _ProblemVariants(problem, solution, [middle])
     context = {**_solutions_context(item), "limits": _limits_context(problem, solution, progress)}
     out = Path(out_dir or Path("build") / "handouts" / problem.id)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    staging = out.parent / f".{out.name}.partial-{os.getpid()}"
-    shutil.rmtree(staging, ignore_errors=True)
-    staging.mkdir()
-    try:
+    with _staged(out) as staging:
         tex = _write(staging, f"{problem.id}.tex", render.render("handout.tex.j2", problem=context,
                                                                    question=item.question(middle)))
         progress("compiling the PDF")
         products = [tex, export.pdf(tex)]
         _replace(staging, out, products)
-    finally:
-        shutil.rmtree(staging, ignore_errors=True)
     return [out / p.name for p in products]

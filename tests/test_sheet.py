@@ -85,3 +85,30 @@ def test_a_failed_build_leaves_the_previous_one_intact(tmp_path):
     assert done.returncode == 2 and "compound_pendulum.yaml: scene.bodies.pendulum.mass" in done.stderr
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []
+
+
+def test_ctrl_c_during_the_swap_waits_until_the_new_build_is_in_place(tmp_path, monkeypatch):
+    import os
+    import signal
+    from pathlib import Path
+
+    from derive import sheet
+
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "key.csv").write_text("old")
+    staging = tmp_path / ".out.partial-1"
+    staging.mkdir()
+    (staging / "key.csv").write_text("new")
+    rename = Path.rename
+
+    def interrupted_rename(self, target):
+        if self == out:
+            os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C between moving the old build away and the new in
+        return rename(self, target)
+
+    monkeypatch.setattr(Path, "rename", interrupted_rename)
+    with pytest.raises(KeyboardInterrupt):
+        sheet._replace(staging, out, [staging / "key.csv"])
+    assert (out / "key.csv").read_text() == "new"
+    assert sorted(p.name for p in tmp_path.iterdir()) == [".out.partial-1", "out"]  # no old build left behind
