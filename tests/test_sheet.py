@@ -112,3 +112,13 @@ def test_ctrl_c_during_the_swap_waits_until_the_new_build_is_in_place(tmp_path, 
         sheet._replace(staging, out, [staging / "key.csv"])
     assert (out / "key.csv").read_text() == "new"
     assert sorted(p.name for p in tmp_path.iterdir()) == [".out.partial-1", "out"]  # no old build left behind
+
+
+def test_the_same_build_twice_gives_the_same_pdfs(demo, tmp_path):
+    again = tmp_path / "again"
+    done = run_derive("sheet", "demo", "--variants", "3", "--seed", "5", "--out", str(again))
+    assert done.returncode == 0, done.stderr
+    pdfs = sorted(p.name for p in demo.glob("*.pdf"))
+    assert len(pdfs) == 3 + 3  # the whole worksheet, the solutions, the key, and each variant's worksheet
+    for name in pdfs:
+        assert (again / name).read_bytes() == (demo / name).read_bytes(), name
