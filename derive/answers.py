@@ -18,14 +18,14 @@ import sympy as sp
 
 from derive import inertia, limits, numeric
 from derive.mechanics import (events, gyroscope, joints, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
-                              rigid_rotation, top)
+                              rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import Oscillation, OscillationError, exact_period, small_oscillation
 from derive.crosschecks import CrossChecks, sample_points
 from derive.problem import Ask, Problem
-from derive.scene import STATIC_KINDS, TIME, Quantity
+from derive.scene import SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
 class Solution(CrossChecks):
     """Everything derived for one problem, computed on first use."""
@@ -268,6 +268,9 @@ class Solution(CrossChecks):
                     "wave_vs_operator"
             return (*(quantum.angular_momentum(w.planck, w.radius, w.wavelengths, r) for r in ("wave", "operator")),
                     "wave_vs_operator")
+        if q.kind == "rolling":
+            return (*(rolling.rolling(self.scene, q.target, route)[0][q.detail] for route in rolling.ROUTES),
+                    "center_of_mass_vs_contact_point")
         if q.kind == "internal_forces":
             count = self.scene.internal_forces
             return (*(many_bodies.internal_torque(count, r) for r in ("direct", "pairs")), "direct_vs_pairs")
@@ -367,7 +370,7 @@ class Solution(CrossChecks):
             result = self._system(ask.quantity.detail, "sum")
         elif ask.quantity.kind == "top":
             result = self._top(ask.quantity.detail)
-        elif ask.quantity.kind in ("standing_wave", "internal_forces", "rotation"):
+        elif ask.quantity.kind in SECOND_ROUTE_KINDS:
             result = self._second_routes(ask.quantity)[0]
         elif ask.quantity.kind == "wheel":
             w = self.scene.wheel
@@ -408,6 +411,9 @@ class Solution(CrossChecks):
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
             return {"orbit": self._orbit_steps()}
+        if kinds == {"rolling"}:
+            (body,) = {a.quantity.target for a in self.problem.asks.values()}
+            return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}
         if kinds <= {"event", "after"}:
             return {f"by {route}": list(r.steps) for route, r in self.event_results.items()}
         needed = self._needed_unknowns()

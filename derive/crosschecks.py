@@ -23,7 +23,7 @@ from derive import inertia, limits, units
 from derive.mechanics import gyroscope, joints, lagrange, many_bodies, orbits, paths, top
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
-from derive.scene import DYNAMIC_KINDS
+from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
 
 ROUTES = ("lagrange", "newton_euler")
 
@@ -74,7 +74,7 @@ class CrossChecks:
             result.append(self._wheel_check())
         agreed: dict[str, list[str]] = {}
         for ask in self.problem.asks.values():
-            if ask.quantity.kind in ("standing_wave", "internal_forces", "rotation"):
+            if ask.quantity.kind in SECOND_ROUTE_KINDS:
                 first, second, name = self._second_routes(ask.quantity)
                 if agree(first, second) is None:
                     raise CheckFailure(f"{self.problem.id}: {ask.name} is {first} one way, {second} the other")

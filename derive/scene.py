@@ -421,6 +421,8 @@ class Scene:
 
 #: Quantities that come out of the equations of motion (both routes).
 DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation"}
+#: Answered by a small system of derive.mechanics, with a second route of its own.
+SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rotation", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
 STATIC_KINDS = {"inertia", "mass", "position_cm", "system"}
 
@@ -452,6 +454,9 @@ CONSTRAINT_FORCES = {Pin: ("reaction.x", "reaction.y"), WoundString: ("tension",
 #: What a body on a surface can be asked, besides what every body can.
 CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
                       "speed_at_bottom", "time_to_bottom", "min_release_height")
+#: Of a body rolling without slipping at its given velocity (derive.mechanics.rolling).
+ROLLING_QUANTITIES = ("angular_velocity", "distance_per_turn", "kinetic_energy", "translational_energy",
+                      "rotational_energy", "rotational_fraction")
 INCLINE_ONLY = ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom")
 
 def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity:
@@ -535,6 +540,13 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if rest == "angular_acceleration" and body.rotates:
             return Quantity("angular_acceleration", head, None)
         contact = scene.contact_of(head)
+        if rest.startswith("rolling."):
+            if rest[len("rolling."):] not in ROLLING_QUANTITIES:
+                raise ValueError(f"a rolling body has {', '.join('rolling.' + q for q in ROLLING_QUANTITIES)}")
+            if contact is None or not contact.rolling or head not in scene.motions or "radius" not in body.sizes:
+                raise ValueError(f"{head}.rolling needs a round body rolling on a surface (on:, contact: rolling) "
+                                 "with a velocity")
+            return Quantity("rolling", head, rest[len("rolling."):])
         if contact and rest in CONTACT_QUANTITIES:
             if rest in ("friction", "min_friction_coefficient") and not contact.rolling:
                 raise ValueError(f"{head} slides without friction: it has no {rest}")

@@ -349,7 +349,10 @@ def read_scene(reader: Reader, raw) -> Scene:
         ))
     motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
     events = _events(reader, raw.get("events") or [], bodies)
-    moving = [n for n, spec in bodies_raw.items() if any(k in spec for k in ("velocity", "spin", "hits"))]
+    # A velocity is the state before an event, or the speed of a body rolling without slipping.
+    rolling_at = {c.body for c in constraints if isinstance(c, Contact) and c.rolling}
+    moving = [n for n, spec in bodies_raw.items() if any(k in spec for k in ("velocity", "spin", "hits"))
+              and not (n in rolling_at and set(spec) & {"spin", "hits"} == set())]
     if moving and not events:
         raise reader.fail(f"scene.bodies.{moving[0]}", "velocities and spins describe the state before an event: "
                           "add the event")

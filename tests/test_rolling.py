@@ -1,77 +1,56 @@
-"""Rolling without slipping and sliding on an incline: both routes, energy, simulation."""
-import math
-
-import numpy as np
+"""Rolling without slipping at a given speed (notes §2, §2.1): the rotation rate, the distance
+per turn and the kinetic-energy split, by the center of mass and by the contact point."""
 import pytest
 import sympy as sp
-from scipy.integrate import solve_ivp
 
-from derive.mechanics import lagrange, newton_euler
-from derive.mechanics.conservation import speed_after_drop
-from derive.scene import Body, Contact, Gravity, Incline, Scene
-
-M, R, g, H, alpha = sp.symbols("M R g H alpha", positive=True)
-
-
-def ramp_scene(shape, rolling=True):
-    sizes = {"radius": R} if shape != "point" else {}
-    return Scene({"b": Body("b", shape, M, sizes)}, (Contact("b_contact", "b", "ramp", rolling),), Gravity(g),
-                 {"ramp": Incline("ramp", alpha, H)})
+from derive.answers import Solution
+from derive.crosschecks import CheckFailure
+from derive.errors import ProblemError
+from derive.mechanics import rolling
+from derive.problem import load, parse
 
 
-def sym(name):
-    return sp.Symbol(name, real=True)
+def _as(shape: str, tmp_path):
+    text = load("rolling_kinetic_energy").path.read_text().replace("shape: disk", f"shape: {shape}")
+    return parse(text, tmp_path / f"{shape}.yaml")
 
 
-@pytest.mark.parametrize("shape, ratio", [("ring", 1), ("disk", sp.Rational(1, 2))])
-def test_rolling_acceleration_friction_and_normal_force(shape, ratio):
-    for route in (lagrange, newton_euler):
-        s = route.derive(ramp_scene(shape)).solution
-        along = sp.cos(alpha) * s[sym("xddot_b")] - sp.sin(alpha) * s[sym("yddot_b")]
-        assert sp.simplify(along - g * sp.sin(alpha) / (1 + ratio)) == 0
-        assert sp.simplify(s[sym("N^b")] - M * g * sp.cos(alpha)) == 0
-        # Static friction points up the slope and supplies the torque I alpha / R.
-        assert sp.simplify(s[sym("f^b")] + ratio * M * g * sp.sin(alpha) / (1 + ratio)) == 0
-        # Rolling: the center's speed is omega R, turning clockwise as it goes down.
-        assert sp.simplify(s[sym("thetaddot_b")] * R + along) == 0
+@pytest.mark.parametrize("shape, share", [("disk", sp.Rational(1, 3)), ("sphere", sp.Rational(2, 7)),
+                                          ("ring", sp.Rational(1, 2)), ("spherical_shell", sp.Rational(2, 5))])
+def test_the_share_of_rotation_follows_the_shape(shape, share, tmp_path):
+    solution = Solution(_as(shape, tmp_path))
+    assert solution.expression("share") == share
+    assert any(c.name == "center_of_mass_vs_contact_point" for c in solution.checks())
 
 
-def test_frictionless_block_slides_with_g_sin_alpha():
-    s = newton_euler.derive(ramp_scene("point", rolling=False)).solution
-    assert sp.simplify(sp.cos(alpha) * s[sym("xddot_b")] - sp.sin(alpha) * s[sym("yddot_b")] - g * sp.sin(alpha)) == 0
+def test_omega_is_v_over_r_clockwise_and_one_turn_covers_the_circumference():
+    """Notes §2, eq. (10): omega = V_cm / R; a full revolution travels 2 pi R."""
+    p = load("rolling_kinetic_energy")
+    solution = Solution(p)
+    V, R, M = (p.parameters[n].symbol for n in ("V", "R", "M"))
+    assert solution.expression("omega") == -V / R  # moving in +x, the disk turns clockwise
+    assert solution.expression("d") == 2 * sp.pi * R
+    assert solution.expression("K") == sp.Rational(3, 4) * M * V**2  # eq. (11) with I = M R^2 / 2
 
 
-@pytest.mark.parametrize("shape, rolling, expected", [
-    ("point", False, sp.sqrt(2 * g * H)),
-    ("ring", True, sp.sqrt(g * H)),
-    ("disk", True, sp.sqrt(sp.Rational(4, 3) * g * H)),
-])
-def test_energy_conservation_speeds(shape, rolling, expected):
-    assert sp.simplify(speed_after_drop(ramp_scene(shape, rolling), "b", H).speed - expected) == 0
+def test_a_forgotten_parallel_axis_term_is_caught(monkeypatch):
+    real = rolling.rolling
+
+    def forgetful(scene, body, route):
+        values, steps = real(scene, body, route)
+        if route == "contact point":  # K = I_cm omega^2 / 2: the M R^2 left out
+            values = {**values, "kinetic_energy": values["rotational_energy"]}
+        return values, steps
+
+    monkeypatch.setattr(rolling, "rolling", forgetful)
+    with pytest.raises(CheckFailure, match="K is"):
+        Solution(load("rolling_kinetic_energy")).checks()
 
 
-def test_simulated_roll_matches_energy_and_time():
-    """Integrate the Newton–Euler equations in (x, y, theta) from rest until the center drops H."""
-    scene = ramp_scene("disk")
-    values = {M: 2, R: sp.Rational(1, 5), g: sp.Rational(981, 100), H: sp.Rational(3, 2), alpha: sp.Rational(1, 2)}
-    solution = newton_euler.derive(scene).solution
-    accel = [float(solution[sym(f"{k}ddot_b")].subs(values)) for k in ("x", "y", "theta")]
-
-    def rhs(t, y):
-        return [y[3], y[4], y[5], *accel]
-
-    def bottom(t, y):
-        return y[1] + 1.5
-    bottom.terminal = True
-
-    run = solve_ivp(rhs, (0, 10), [0, 0, 0, 0, 0, 0], rtol=1e-12, atol=1e-14, events=bottom)
-    x, y, theta, vx, vy, omega = run.y[:, -1]
-    speed = math.hypot(vx, vy)
-    assert math.isclose(speed, math.sqrt(4 / 3 * 9.81 * 1.5), rel_tol=1e-9)
-    # Energy is conserved along the path, and the contact point does not slip.
-    kinetic = 0.5 * 2 * speed**2 + 0.5 * (0.5 * 2 * 0.2**2) * omega**2
-    assert math.isclose(kinetic, 2 * 9.81 * 1.5, rel_tol=1e-9)
-    assert math.isclose(speed, -omega * 0.2, rel_tol=1e-9)
-    # Time to the bottom: s = H / sin(alpha) at a = (2/3) g sin(alpha).
-    a = 2 / 3 * 9.81 * math.sin(0.5)
-    assert np.isclose(run.t_events[0][0], math.sqrt(2 * (1.5 / math.sin(0.5)) / a), rtol=1e-9)
+def test_rolling_quantities_need_a_rolling_body_with_a_velocity(tmp_path):
+    text = load("rolling_kinetic_energy").path.read_text().replace(", velocity: [V, 0]", "")
+    with pytest.raises(ProblemError, match=r"ask\.omega\.of: wheel\.rolling needs a round body rolling"):
+        parse(text, tmp_path / "p.yaml")
+    text = load("rolling_kinetic_energy").path.read_text().replace("rolling.rotational_fraction", "rolling.spin")
+    with pytest.raises(ProblemError, match=r"ask\.share\.of: a rolling body has rolling\.angular_velocity"):
+        parse(text, tmp_path / "p.yaml")

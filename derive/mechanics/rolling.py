@@ -1,0 +1,80 @@
+"""A round body rolling without slipping at a given speed (lecture notes §2, §2.1): its rotation
+rate, the distance it covers per turn, and its kinetic energy split between translation and
+rotation, each by two routes that share only the scene:
+
+- "center of mass": the material point touching the surface is at rest, v_cm + omega x r = 0
+  (rigid-body kinematics); K = M v^2 / 2 + I_cm omega^2 / 2 (the notes' eq. 11);
+- "contact point": the rolling constraint's gap (distance rolled + R theta) has zero rate;
+  K = I_P omega^2 / 2, the body turning about the contact point with I_P = I_cm + M R^2.
+
+>>> import sympy as sp
+>>> from derive.problem import load
+>>> problem = load("rolling_kinetic_energy")
+>>> rolling(problem.scene, "wheel", "center of mass")[0]["rotational_fraction"]
+1/3
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.mechanics import joints
+from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.kinematics import Coordinates
+from derive.scene import Scene
+
+ROUTES = ("center of mass", "contact point")
+QUANTITIES = ("angular_velocity", "distance_per_turn", "kinetic_energy", "translational_energy",
+              "rotational_energy", "rotational_fraction")
+
+
+def rolling(scene: Scene, body: str, route: str) -> tuple[dict[str, sp.Expr], tuple[Step, ...]]:
+    """Every rolling quantity of `body` (moving at its given velocity) by one route, with the steps."""
+    coords = Coordinates(scene)
+    contact = scene.contact_of(body)
+    rigid = scene.bodies[body]
+    radius = rigid.sizes["radius"]
+    velocity = scene.motions[body].velocity
+    # In the reference configuration, moving at the given velocity (the unknown: the spin rate).
+    state = {c.q: 0 for c in coords.all}
+    state.update({coords.of(body, "x").u: velocity[0], coords.of(body, "y").u: velocity[1]})
+    spin = coords.of(body, "theta").u
+    if route == "center of mass":
+        condition = joints.velocity_conditions(contact, coords)[-1]
+        reason = "The point touching the surface is at rest: (v_cm + omega z x r) along the surface = 0"
+    else:
+        condition = coords.ddt(joints.gaps(contact, coords)[-1])
+        reason = "The rolling constraint's rate vanishes: d/dt (distance rolled + R theta) = 0"
+    (omega,) = sp.solve(condition.xreplace(state), spin)
+    omega = tidy(omega)
+    speed = tidy(sp.sqrt(velocity[0] ** 2 + velocity[1] ** 2))
+    w = sp.Symbol("omega")
+    rotational = tidy(rigid.inertia * omega**2 / 2)
+    if route == "center of mass":
+        translational = tidy(rigid.mass * speed**2 / 2)
+        total = tidy(translational + rotational)
+        energy = Step("Kinetic energy: translation of the center plus rotation about it",
+                      (sp.Eq(sp.Symbol("K"), sp.Symbol("M") * sp.Symbol("v") ** 2 / 2 + sp.Symbol("I_cm") * w**2 / 2),
+                       sp.Eq(sp.Symbol("K"), total)))
+    else:
+        about_contact = tidy(rigid.inertia + rigid.mass * radius**2)
+        total = tidy(about_contact * omega**2 / 2)
+        translational = tidy(total - rotational)
+        energy = Step("Kinetic energy: rotation about the contact point, I_P = I_cm + M R^2 (parallel axes)",
+                      (sp.Eq(sp.Symbol("I_P"), about_contact), sp.Eq(sp.Symbol("K"), total)))
+    values = {
+        "angular_velocity": omega,
+        "distance_per_turn": tidy(2 * sp.pi * speed / sp.Abs(omega)),
+        "kinetic_energy": total,
+        "translational_energy": translational,
+        "rotational_energy": rotational,
+        "rotational_fraction": tidy(rotational / total),
+    }
+    steps = (
+        Step(reason, (sp.Eq(condition.xreplace(state), 0), sp.Eq(w, omega))),
+        Step("One turn takes 2 pi / |omega|, in which the center covers", (
+            sp.Eq(sp.Symbol("d"), values["distance_per_turn"]),)),
+        energy,
+        Step("The share of the kinetic energy in rotation", (
+            sp.Eq(sp.Symbol("K_rot") / sp.Symbol("K"), values["rotational_fraction"]),)),
+    )
+    return values, steps
