@@ -440,15 +440,21 @@ def _staged(out: Path) -> Iterator[Path]:
 @contextmanager
 def _uninterrupted() -> Iterator[None]:
     """Ctrl-C and SIGTERM wait until the enclosed renames are done (then arrive as usual)."""
-    signals = {signal.SIGINT, signal.SIGTERM}
-    if threading.current_thread() is not threading.main_thread():  # only the main thread gets them
+    if threading.current_thread() is not threading.main_thread():  # only the main thread handles them
         yield
         return
-    signal.pthread_sigmask(signal.SIG_BLOCK, signals)
+    # Held by handlers, not by a signal mask: a signal masked in this thread would reach another
+    # thread (latexmk's pool) and still interrupt this one.
+    received: list[int] = []
+    previous = {s: signal.signal(s, lambda signum, frame: received.append(signum))
+                for s in (signal.SIGINT, signal.SIGTERM)}
     try:
         yield
     finally:
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, signals)
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+        for s in received:
+            signal.raise_signal(s)
 
 
 def _replace(staging: Path, out: Path, products: list[Path]) -> None:
