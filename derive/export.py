@@ -62,6 +62,24 @@ def pdf(tex: Path) -> Path:
     return tex.with_suffix(".pdf")
 
 
+def variant_pages(tex: Path) -> dict[str, int]:
+    """The absolute page of each \\markvariant{NAME} of a compiled worksheet, from its .aux."""
+    aux = tex.with_suffix(".aux").read_text(encoding="utf-8", errors="replace")
+    return {name: int(page) for name, page in re.findall(r"\\variantpage\{([^}]+)\}\{(\d+)\}", aux)}
+
+
+def extract_pages(pdf_path: Path, first: int, last: int, out: Path) -> Path:
+    """Pages first..last of a PDF as a PDF of their own (pikepdf, i.e. qpdf: a split costs
+    milliseconds where compiling the pages again would cost a LaTeX run), with an /ID derived
+    from the content so that the same pages give the same bytes."""
+    import pikepdf
+
+    with pikepdf.open(pdf_path) as whole, pikepdf.new() as part:
+        part.pages.extend(whole.pages[first - 1:last])
+        part.save(out, deterministic_id=True)
+    return out
+
+
 def workers() -> int:
     """How many latexmk runs at once: the cores this process may use."""
     return max(1, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1)

@@ -393,10 +393,6 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                     "solutions.tex.j2", set=header, problems=[_solutions_context(i) for i in prepared])),
                 _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
             ]
-            if variants > 1:  # each student's own worksheet, besides the whole set for printing
-                width = len(str(variants))
-                texs += [_write(staging, f"worksheet-{v['number']:0{width}d}.tex", render.render(
-                    "worksheet.tex.j2", set=header, variants=[v])) for v in worksheet_variants]
             buffer = io.StringIO()
             writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
                                                         "meaning"], lineterminator="\n", extrasaction="ignore")
@@ -407,6 +403,8 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
             if "pdf" in formats:
                 begin(f"{len(texs)} PDFs (latexmk, {export.workers()} in parallel)")
                 products += export.pdfs(texs)
+                if variants > 1:  # each student's own worksheet: the whole set's pages, split
+                    products += _per_variant(texs[0], variants)
             for target in ("html", "md", "docx"):
                 if target in formats:
                     begin(f"the worksheet as {target} (pandoc)")
@@ -421,6 +419,17 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                 products.append(path)
         _replace(staging, out, products)
     return [out / p.name for p in products]
+
+
+def _per_variant(worksheet: Path, variants: int) -> list[Path]:
+    """worksheet-NN.pdf for each variant, from the pages the whole worksheet labels as its own
+    (each variant starts a page with the set's header)."""
+    pages = export.variant_pages(worksheet)
+    starts = [pages[str(n)] for n in range(1, variants + 1)] + [pages["end"] + 1]
+    width = len(str(variants))
+    return [export.extract_pages(worksheet.with_suffix(".pdf"), starts[n - 1], starts[n] - 1,
+                                 worksheet.with_name(f"worksheet-{n:0{width}d}.pdf"))
+            for n in range(1, variants + 1)]
 
 
 @contextmanager

@@ -45,8 +45,14 @@ def test_worksheet_pdf_shows_each_variants_numbers(demo):
         assert f"{m} kg" in text
 
 
+def _pages(path) -> int:
+    info = subprocess.run(["pdfinfo", str(path)], capture_output=True, text=True, check=True).stdout
+    return int(next(line.split()[1] for line in info.splitlines() if line.startswith("Pages:")))
+
+
 def test_each_student_gets_a_worksheet_of_their_own_variant(demo):
     key = json.loads((demo / "key.json").read_text())
+    assert sum(_pages(demo / f"worksheet-{n}.pdf") for n in (1, 2, 3)) == _pages(demo / "worksheet.pdf")
     for variant in key["variants"]:
         text = pdf_text(demo / f"worksheet-{variant['variant']}.pdf")
         assert f"Variant {variant['variant']}" in text
