@@ -70,7 +70,7 @@ class _Figure:
         if expression is None:
             return default
         try:
-            value = sp.sympify(expression).subs(self.values)
+            value = sp.sympify(expression, strict=True).subs(self.values)  # safe: scene values, strict refuses text
             if value.free_symbols:
                 return default
             number = complex(sp.N(value))
@@ -84,7 +84,7 @@ class _Figure:
         """LaTeX of an expression in the problem's parameters; None for a size the problem leaves open."""
         if expression is None:
             return None
-        expression = sp.sympify(expression)
+        expression = sp.sympify(expression, strict=True)  # safe: scene values, strict refuses text
         if not expression.free_symbols <= self.parameters:
             return None
         return sp.latex(expression)
