@@ -32,8 +32,8 @@ def _asked_axes(fig: _Figure, body: Body):
             axis = q.detail or inertia.PLANAR_AXIS[body.shape]
             point, direction = shape.axes[axis]
             generic = {shape.sizes[n]: body.sizes[n] for n in shape.sizes if n in body.sizes}
-            # safe: the shape table's own coordinates; strict refuses text
-            yield (tuple(fig.num(sp.sympify(c, strict=True).subs(generic), 0) for c in point), direction, ask.shift)
+            coordinates = [sp.sympify(c, strict=True) for c in point]  # safe: the shape table's, never text
+            yield (tuple(fig.num(c.subs(generic), 0) for c in coordinates), direction, ask.shift)
 
 
 def _specimen(fig: _Figure, body: Body, center, slot: float) -> None:
