@@ -213,14 +213,11 @@ class _ProblemVariants:
 
     def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each answer's value to its significant figures; None for a general (symbolic) result."""
-        if id(draw) in self._answers:
-            return self._answers[id(draw)]
-        values = self.si_values(draw)
-        result = {name: numeric.evaluate(self.in_declared_units[name], values, ask.sig_figs or DEFAULT_SIG_FIGS)
-                  for name, ask in self.problem.asks.items()}
-        if id(draw) in self._own_draws:  # only draws this object keeps alive: their ids stay theirs
-            self._answers[id(draw)] = result
-        return result
+        def evaluate(values: dict[sp.Symbol, sp.Expr]) -> dict[str, str | None]:
+            return {name: numeric.evaluate(self.in_declared_units[name], values, ask.sig_figs or DEFAULT_SIG_FIGS)
+                    for name, ask in self.problem.asks.items()}
+
+        return self._once(self._answers, draw, evaluate)
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
@@ -228,14 +225,20 @@ class _ProblemVariants:
                 for name, value in self.answers(draw).items()}
 
     def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
-        """Each answer's distractors (value, mistake) for multiple choice, once per draw."""
-        if id(draw) in self._wrong:
-            return self._wrong[id(draw)]
-        si = self.si_values(draw)
-        result = {n: distractors.distractors(self.problem, n, si, a.sig_figs or DEFAULT_SIG_FIGS)
-                  for n, a in self.problem.asks.items()}
-        if id(draw) in self._own_draws:
-            self._wrong[id(draw)] = result
+        """Each answer's distractors (value, mistake) for multiple choice."""
+        def derive_wrong(values: dict[sp.Symbol, sp.Expr]) -> dict[str, list[dict[str, str]]]:
+            return {n: distractors.distractors(self.problem, n, values, a.sig_figs or DEFAULT_SIG_FIGS)
+                    for n, a in self.problem.asks.items()}
+
+        return self._once(self._wrong, draw, derive_wrong)
+
+    def _once(self, store: dict, draw: dict[str, sp.Expr], compute):
+        """compute(SI values of the draw), once per draw of this object's own."""
+        if id(draw) in store:
+            return store[id(draw)]
+        result = compute(self.si_values(draw))
+        if id(draw) in self._own_draws:  # only draws this object keeps alive: their ids stay theirs
+            store[id(draw)] = result
         return result
 
     @cached_property
