@@ -17,15 +17,9 @@ from jinja2.sandbox import SandboxedEnvironment
 
 from derive import latex_safety, library
 
-LATEX_SPECIALS = {
-    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
-    "%": r"\%", "_": r"\_", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
-}
-
-
 def tex_escape(text: str) -> str:
     """Plain text made safe to typeset: LaTeX's special characters escaped."""
-    return "".join(LATEX_SPECIALS.get(c, c) for c in str(text))
+    return "".join(latex_safety.SPECIALS.get(c, c) for c in str(text))
 
 
 def latex_of(expression) -> str:
