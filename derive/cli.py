@@ -87,7 +87,28 @@ def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:
     return result
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
+class DeriveGroup(click.Group):
+    """click's group with derive's errors: a usage error is one line on stderr (what is wrong and
+    where the help is), exit status 2, instead of click's usage block."""
+
+    def main(self, args=None, prog_name=None, **extra):
+        try:
+            status = super().main(args, prog_name or "derive", standalone_mode=False, **extra)
+        except click.UsageError as error:
+            command = error.ctx.command_path if error.ctx else "derive"
+            message = " ".join(error.format_message().split())
+            click.echo(f"{command}: error: {message} (see '{command} --help')", err=True)
+            sys.exit(2)
+        except click.ClickException as error:
+            error.show()
+            sys.exit(error.exit_code)
+        except click.Abort:
+            click.echo("derive: interrupted", err=True)
+            sys.exit(130)
+        sys.exit(status if isinstance(status, int) else 0)
+
+
+@click.group(cls=DeriveGroup, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
 @click.version_option(__version__, prog_name="derive")
 @click.option("--time-limit", type=click.FloatRange(min=0), default=None, metavar="SECONDS",
               help="Give up a symbolic step (an integral, a simplification, a derivation) after SECONDS, "
@@ -274,7 +295,7 @@ def bench(quick: bool) -> None:
 
 @main.command()
 @click.argument("problem")
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+@click.option("--out", "out_dir", default=None,
               help="Output folder (default: build/handouts/<id>).")
 @progress_option
 @reports_errors
@@ -297,7 +318,7 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
 @click.argument("problem_set", metavar="SET")
 @click.option("--variants", type=click.IntRange(1, 1000), default=None, help="Variants per problem (default: the set's).")
 @click.option("--seed", type=int, default=None, help="Seed of the parameter draws (default: the set's).")
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+@click.option("--out", "out_dir", default=None,
               help="Output folder (default: build/<set id>).")
 @click.option("--to", "formats", default=None, metavar="LIST",
               help="Outputs besides .tex and the keys (CSV, JSON), comma-separated: any of pdf, html, md, docx, "

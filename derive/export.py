@@ -9,16 +9,30 @@ in parallel on the available cores.
 """
 from __future__ import annotations
 
+import io
 import os
 import re
 import shutil
+import signal
 import subprocess
+import tempfile
+import threading
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-LATEXMK = ["latexmk", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error",
-           "-no-shell-escape", "-quiet"]
-LATEX_TIMEOUT = 300
+from derive.errors import InputError
+
+LATEXMK = ["latexmk", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "-no-shell-escape",
+           "-quiet"]
+#: latexmk's switch for each engine.
+ENGINES = {"pdflatex": "-pdf", "lualatex": "-lualatex"}
+#: Characters pdflatex typesets with the preamble's T1 Latin Modern (LaTeX's utf8 input): ASCII, the
+#: Latin-1 letters and the punctuation derive itself writes. A document with any other character
+#: (Greek or Cyrillic text, CJK) compiles with LuaLaTeX, whose fallback fonts cover those scripts
+#: (templates/preamble.tex.j2); pdflatex stays the default because it starts about five times faster.
+PDFLATEX_TEXT = frozenset(map(chr, range(32, 127))) | frozenset("\n\t") | frozenset(
+    chr(c) for c in range(0xC0, 0x100) if c not in (0xD7, 0xF7)) | frozenset("§–—‘’“”…±°")
+DEFAULT_TEX_TIME_LIMIT = 120.0  # seconds for one document's latexmk run, all passes
 # "! message" (TeX's own form) or "./file.tex:12: message" (with -file-line-error).
 ERROR_LINE = re.compile(r"^(! |\S+\.tex:\d+: )")
 
@@ -42,23 +56,102 @@ def missing_tool(name: str) -> str | None:
         return None
     return {
         "latexmk": "apt-get install -y --no-install-recommends texlive-latex-base texlive-latex-recommended "
-        "texlive-pictures texlive-science latexmk lmodern",
+        "texlive-pictures texlive-science texlive-luatex latexmk lmodern fonts-dejavu-core fonts-noto-cjk",
     }.get(name, f"install {name}")
 
 
+def engine(text: str) -> str:
+    """pdflatex for a document of Latin text (PDFLATEX_TEXT), else lualatex.
+
+    >>> engine("A disk of mass $m$, § 4"), engine("Диск массой $m$")
+    ('pdflatex', 'lualatex')
+    """
+    return "pdflatex" if set(text) <= PDFLATEX_TEXT else "lualatex"
+
+
+def tex_time_limit() -> float:
+    """Seconds one document may compile: DERIVE_TEX_TIME_LIMIT, else DEFAULT_TEX_TIME_LIMIT."""
+    text = os.environ.get("DERIVE_TEX_TIME_LIMIT", "").strip()
+    if not text:
+        return DEFAULT_TEX_TIME_LIMIT
+    try:
+        seconds = float(text)
+    except ValueError:
+        seconds = -1.0
+    if not 0 < seconds < float("inf"):
+        raise InputError(f"DERIVE_TEX_TIME_LIMIT={text}: expected a positive number of seconds")
+    return seconds
+
+
+_running: set[int] = set()  # process groups of the compiles under way
+_running_lock = threading.Lock()
+
+
+def _run_in_own_group(command: list[str], cwd: Path, env: dict, seconds: float) -> subprocess.CompletedProcess:
+    """Run a command in a process group of its own; past `seconds` (or on any interruption) the
+    whole group is killed, so that no TeX child outlives its latexmk."""
+    process = subprocess.Popen(command, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True, start_new_session=True)
+    with _running_lock:
+        _running.add(process.pid)
+    try:
+        stdout, stderr = process.communicate(timeout=seconds)
+    except BaseException:  # the time limit, Ctrl-C, anything: nothing of the group survives
+        _kill_group(process.pid)
+        process.communicate()
+        raise
+    finally:
+        _kill_group(process.pid)  # a child left behind, if any
+        with _running_lock:
+            _running.discard(process.pid)
+    return subprocess.CompletedProcess(command, process.returncode, stdout, stderr)
+
+
+def _kill_group(group: int) -> None:
+    try:
+        os.killpg(group, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
+def kill_compiles() -> None:
+    """Stop every compile under way (their whole process groups)."""
+    with _running_lock:
+        groups = list(_running)
+    for group in groups:
+        _kill_group(group)
+
+
 def pdf(tex: Path) -> Path:
-    """Compile one .tex file in its own folder; return the PDF."""
+    """Compile one .tex file; return its PDF, beside it (with its .aux, for variant_pages).
+
+    The compile runs in a scratch folder of its own that holds only a copy of the .tex (every
+    figure is inline TikZ), with TeX's paranoid file access (openin_any/openout_any = p: no
+    absolute paths, no `..`), so TeX can write nothing but its own scratch files; and with a
+    time limit (tex_time_limit), past which its whole process group is killed.
+    """
     install = missing_tool("latexmk")
     if install:
         raise BuildError(f"latexmk is not installed; as root run: {install}")
+    text = tex.read_text(encoding="utf-8")
     env = {**os.environ, "openin_any": "p", "openout_any": "p", "SOURCE_DATE_EPOCH": "0",
            "FORCE_SOURCE_DATE": "1"}
-    done = subprocess.run([*LATEXMK, tex.name], cwd=tex.parent, env=env, capture_output=True, text=True,
-                          timeout=LATEX_TIMEOUT, stdin=subprocess.DEVNULL)
-    if done.returncode != 0:
-        log = tex.with_suffix(".log")
-        text = log.read_text(errors="replace") if log.exists() else done.stdout + done.stderr
-        raise BuildError(f"{tex.name} did not compile: " + " | ".join(first_errors(text)))
+    seconds = tex_time_limit()
+    with tempfile.TemporaryDirectory(prefix="derive-tex-") as scratch:
+        folder = Path(scratch)
+        (folder / tex.name).write_text(text, encoding="utf-8")
+        command = [*LATEXMK, ENGINES[engine(text)], tex.name]
+        try:
+            done = _run_in_own_group(command, folder, env, seconds)
+        except subprocess.TimeoutExpired:
+            raise BuildError(f"{tex.name} did not compile within {seconds:g} s (DERIVE_TEX_TIME_LIMIT); "
+                             "TeX was stopped") from None
+        if done.returncode != 0:
+            log = folder / tex.with_suffix(".log").name
+            text = log.read_text(errors="replace") if log.exists() else done.stdout + done.stderr
+            raise BuildError(f"{tex.name} did not compile: " + " | ".join(first_errors(text)))
+        for suffix in (".aux", ".pdf"):
+            shutil.move(folder / tex.with_suffix(suffix).name, tex.with_suffix(suffix))
     return tex.with_suffix(".pdf")
 
 
@@ -71,12 +164,18 @@ def variant_pages(tex: Path) -> dict[str, int]:
 def extract_pages(pdf_path: Path, first: int, last: int, out: Path) -> Path:
     """Pages first..last of a PDF as a PDF of their own (pikepdf, i.e. qpdf: a split costs
     milliseconds where compiling the pages again would cost a LaTeX run), with an /ID derived
-    from the content so that the same pages give the same bytes."""
+    from the content so that the same pages give the same bytes.
+
+    qpdf saves into memory and Python writes the file: a write error inside qpdf (a full disk)
+    would abort the whole process, where Python raises an OSError.
+    """
     import pikepdf
 
+    buffer = io.BytesIO()
     with pikepdf.open(pdf_path) as whole, pikepdf.new() as part:
         part.pages.extend(whole.pages[first - 1:last])
-        part.save(out, deterministic_id=True)
+        part.save(buffer, deterministic_id=True)
+    out.write_bytes(buffer.getvalue())
     return out
 
 
@@ -86,9 +185,15 @@ def workers() -> int:
 
 
 def pdfs(texs: list[Path]) -> list[Path]:
-    """Compile several documents in parallel, one per available core."""
+    """Compile several documents in parallel, one per available core; an error or Ctrl-C in
+    this thread stops every compile (none keeps running in the pool)."""
     with ThreadPoolExecutor(max_workers=workers()) as pool:
-        return list(pool.map(pdf, texs))
+        try:
+            return list(pool.map(pdf, texs))
+        except BaseException:
+            pool.shutdown(wait=False, cancel_futures=True)
+            kill_compiles()
+            raise
 
 
 #: pandoc targets: (writer, file suffix, extra arguments). Math stays math in each: MathML in

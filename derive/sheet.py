@@ -14,22 +14,16 @@ from __future__ import annotations
 import csv
 import io
 import json
-import os
 import random
-import shutil
-import signal
-import threading
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
 from pathlib import Path
-from typing import Iterator
 
 import sympy as sp
 import yaml
 
-from derive import distractors, export, figure, library, limiting_cases, lms, numeric, render, units
+from derive import distractors, export, figure, library, limiting_cases, lms, numeric, output_folder, render, units
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
@@ -369,7 +363,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
     seed = problem_set.seed if seed is None else seed
     formats = problem_set.outputs if formats is None else formats
     choice = (questions or problem_set.questions) == "choice"
-    out = Path(out_dir or Path("build") / problem_set.id)
+    out = output_folder.claim(out_dir or Path("build") / problem_set.id)
     prepared = _prepare(problem_set, variants, seed, progress)
     header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
     figures = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
@@ -385,10 +379,10 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
     key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
-    with _staged(out) as staging:
+    with output_folder.staged(out) as staging:
         steps = 1 + len(formats & {"pdf", "html", "md", "docx", "moodle", "qti"})
         with progress.task("writing", steps) as begin:
-            begin("LaTeX and the keys")
+            begin("LaTeX")
             texs = [
                 _write(staging, "worksheet.tex", render.render("worksheet.tex.j2", set=header,
                                                                variants=worksheet_variants)),
@@ -396,14 +390,8 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                     "solutions.tex.j2", set=header, problems=[_solutions_context(i) for i in prepared])),
                 _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
             ]
-            buffer = io.StringIO()
-            writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
-                                                        "meaning"], lineterminator="\n", extrasaction="ignore")
-            writer.writeheader()
-            writer.writerows(rows)
-            products = texs + [_write(staging, "key.csv", buffer.getvalue()),
-                               _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
-            if "pdf" in formats:
+            products = list(texs)
+            if "pdf" in formats:  # each in a scratch folder of its own (export.pdf)
                 begin(f"{len(texs)} PDFs (latexmk, {export.workers()} in parallel)")
                 products += export.pdfs(texs)
                 if variants > 1:  # each student's own worksheet: the whole set's pages, split
@@ -412,6 +400,15 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                 if target in formats:
                     begin(f"the worksheet as {target} (pandoc)")
                     products.append(export.convert(texs[0], target, problem_set.title))
+            # The keys and the LMS files are written by Python after every TeX run, so no TeX run
+            # could have touched them.
+            buffer = io.StringIO()
+            writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
+                                                        "meaning"], lineterminator="\n", extrasaction="ignore")
+            writer.writeheader()
+            writer.writerows(rows)
+            products += [_write(staging, "key.csv", buffer.getvalue()),
+                         _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
             if "moodle" in formats:
                 begin("Moodle XML")
                 products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id)))
@@ -420,8 +417,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                 path = staging / "canvas-qti.zip"
                 path.write_bytes(lms.qti(items, problem_set.title))
                 products.append(path)
-        _replace(staging, out, products)
-    return [out / p.name for p in products]
+        return output_folder.commit(staging, out, products)
 
 
 def _per_variant(worksheet: Path, variants: int) -> list[Path]:
@@ -433,55 +429,6 @@ def _per_variant(worksheet: Path, variants: int) -> list[Path]:
     return [export.extract_pages(worksheet.with_suffix(".pdf"), starts[n - 1], starts[n] - 1,
                                  worksheet.with_name(f"worksheet-{n:0{width}d}.pdf"))
             for n in range(1, variants + 1)]
-
-
-@contextmanager
-def _staged(out: Path) -> Iterator[Path]:
-    """A hidden staging folder beside `out`, removed (with its -final twin) however the build ends."""
-    out.parent.mkdir(parents=True, exist_ok=True)
-    staging = out.parent / f".{out.name}.partial-{os.getpid()}"
-    shutil.rmtree(staging, ignore_errors=True)
-    staging.mkdir()
-    try:
-        yield staging
-    finally:
-        for folder in (staging, staging.with_name(staging.name + "-final")):
-            shutil.rmtree(folder, ignore_errors=True)
-
-
-@contextmanager
-def _uninterrupted() -> Iterator[None]:
-    """Ctrl-C and SIGTERM wait until the enclosed renames are done (then arrive as usual)."""
-    if threading.current_thread() is not threading.main_thread():  # only the main thread handles them
-        yield
-        return
-    # Held by handlers, not by a signal mask: a signal masked in this thread would reach another
-    # thread (latexmk's pool) and still interrupt this one.
-    received: list[int] = []
-    previous = {s: signal.signal(s, lambda signum, frame: received.append(signum))
-                for s in (signal.SIGINT, signal.SIGTERM)}
-    try:
-        yield
-    finally:
-        for s, handler in previous.items():
-            signal.signal(s, handler)
-        for s in received:
-            signal.raise_signal(s)
-
-
-def _replace(staging: Path, out: Path, products: list[Path]) -> None:
-    """Move the finished products into `out`, replacing the previous build at once: an
-    interruption leaves either the old build or the new one in place, never neither."""
-    final = staging.with_name(staging.name + "-final")
-    final.mkdir()
-    for p in products:
-        p.rename(final / p.name)
-    old = out.with_name(f".{out.name}.old-{os.getpid()}")
-    with _uninterrupted():
-        if out.exists():
-            out.rename(old)
-        final.rename(out)
-        shutil.rmtree(old, ignore_errors=True)
 
 
 def _limits_context(problem: Problem, solution: Solution, progress: Reporter) -> list[dict[str, str]]:
@@ -508,11 +455,9 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
               for name, p in problem.parameters.items()}
     item = _ProblemVariants(problem, solution, [middle])
     context = {**_solutions_context(item), "limits": _limits_context(problem, solution, progress)}
-    out = Path(out_dir or Path("build") / "handouts" / problem.id)
-    with _staged(out) as staging:
+    out = output_folder.claim(out_dir or Path("build") / "handouts" / problem.id)
+    with output_folder.staged(out) as staging:
         tex = _write(staging, f"{problem.id}.tex", render.render("handout.tex.j2", problem=context,
                                                                    question=item.question(middle)))
         progress("compiling the PDF")
-        products = [tex, export.pdf(tex)]
-        _replace(staging, out, products)
-    return [out / p.name for p in products]
+        return output_folder.commit(staging, out, [tex, export.pdf(tex)])

@@ -233,17 +233,40 @@ def test_specials_in_titles_and_meanings_are_escaped_and_compile(tmp_path):
 def test_latexmk_runs_without_shell_escape_and_with_paranoid_files(monkeypatch, tmp_path):
     seen = {}
 
-    def fake_run(args, cwd, env, **kwargs):
-        seen.update(args=args, env=env)
+    def fake_run(command, cwd, env, seconds):
+        seen.update(args=command, env=env, files=sorted(p.name for p in cwd.iterdir()), cwd=cwd)
+        raise export.subprocess.TimeoutExpired(command, seconds)
 
-        class Done:
-            returncode = 0
-        return Done()
-
-    monkeypatch.setattr(export.subprocess, "run", fake_run)
-    export.pdf(tmp_path / "x.tex")
+    monkeypatch.setattr(export, "_run_in_own_group", fake_run)
+    (tmp_path / "x.tex").write_text("\\documentclass{article}")
+    (tmp_path / "key.csv").write_text("the key")
+    with pytest.raises(export.BuildError, match="did not compile within"):
+        export.pdf(tmp_path / "x.tex")
     assert "-no-shell-escape" in seen["args"] and not any("shell-escape" in a and "no" not in a for a in seen["args"])
     assert seen["env"]["openin_any"] == "p" and seen["env"]["openout_any"] == "p"
+    assert seen["files"] == ["x.tex"] and seen["cwd"] != tmp_path  # a scratch folder with the .tex alone
+
+
+WRITER = r"""\documentclass{article}
+\begin{document}
+\immediate\openout1=key.csv \immediate\write1{I = 42}\immediate\closeout1
+\immediate\openout2=../key.tex \immediate\write2{forged}\immediate\closeout2
+Hello.
+\end{document}
+"""
+
+
+def test_tex_cannot_write_beside_its_document(tmp_path):
+    """A TeX run that writes files (as a forged key once did) writes only in its scratch folder."""
+    (tmp_path / "key.csv").write_text("the key")
+    (tmp_path / "w.tex").write_text(WRITER)
+    try:
+        export.pdf(tmp_path / "w.tex")
+    except export.BuildError:
+        pass  # TeX may refuse ../key.tex outright
+    assert (tmp_path / "key.csv").read_text() == "the key"
+    assert not (tmp_path / "key.tex").exists() and not (tmp_path.parent / "key.tex").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) in (["key.csv", "w.tex"], ["key.csv", "w.aux", "w.pdf", "w.tex"])
 
 
 # --- the template sandbox ----------------------------------------------------------------------
@@ -401,3 +424,51 @@ def test_pandoc_reads_no_file_from_raw_latex(tmp_path):
     html = export.convert(tex, "html", "t").read_text()
     assert "SECRETTEXT" not in html and "Hello" in html
     assert os.path.exists(secret)
+
+
+def test_a_compile_past_its_time_limit_is_stopped_with_its_whole_process_group(tmp_path, monkeypatch):
+    """TeX looping forever: after the limit every process of the compile is gone (latexmk's
+    pdflatex child once kept spinning, re-parented, after latexmk was killed)."""
+    (tmp_path / "loop.tex").write_text("\\documentclass{article}\\def\\x{\\x}\\begin{document}\\x\\end{document}\n")
+    monkeypatch.setenv("DERIVE_TEX_TIME_LIMIT", "3")
+    groups = []
+    popen = export.subprocess.Popen
+
+    def recorded(*args, **kwargs):
+        process = popen(*args, **kwargs)
+        groups.append(process.pid)
+        return process
+
+    monkeypatch.setattr(export.subprocess, "Popen", recorded)
+    outcome = []
+
+    def compile_it():
+        try:
+            export.pdf(tmp_path / "loop.tex")
+        except export.BuildError as error:
+            outcome.append(str(error))
+
+    worker = threading.Thread(target=compile_it, daemon=True)  # a hang fails the test, not the suite
+    worker.start()
+    worker.join(timeout=60)
+    assert not worker.is_alive(), "the compile did not stop at its time limit"
+    assert outcome and "did not compile within 3 s" in outcome[0]
+    (group,) = groups
+    time.sleep(0.2)
+    alive = []  # processes of the compile's group not yet dead (a zombie is dead, waiting for its reaper)
+    for proc in Path("/proc").iterdir():
+        try:
+            fields = (proc / "stat").read_text().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        if int(fields[2]) == group and fields[0] != "Z":
+            alive.append(proc.name)
+    assert not alive
+
+
+def test_tex_time_limit_setting(monkeypatch):
+    monkeypatch.setenv("DERIVE_TEX_TIME_LIMIT", "soon")
+    with pytest.raises(InputError, match="DERIVE_TEX_TIME_LIMIT=soon"):
+        export.tex_time_limit()
+    monkeypatch.setenv("DERIVE_TEX_TIME_LIMIT", "45")
+    assert export.tex_time_limit() == 45

@@ -93,41 +93,6 @@ def test_a_failed_build_leaves_the_previous_one_intact(tmp_path):
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []
 
 
-def test_ctrl_c_during_the_swap_waits_until_the_new_build_is_in_place(tmp_path, monkeypatch):
-    import os
-    import signal
-    import threading
-    from pathlib import Path
-
-    from derive import sheet
-
-    out = tmp_path / "out"
-    out.mkdir()
-    (out / "key.csv").write_text("old")
-    staging = tmp_path / ".out.partial-1"
-    staging.mkdir()
-    (staging / "key.csv").write_text("new")
-    rename = Path.rename
-
-    def interrupted_rename(self, target):
-        if self == out:
-            os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C between moving the old build away and the new in
-        return rename(self, target)
-
-    monkeypatch.setattr(Path, "rename", interrupted_rename)
-    done = threading.Event()
-    other = threading.Thread(target=done.wait, args=(10,))  # as latexmk's pool: the signal may land there
-    other.start()
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            sheet._replace(staging, out, [staging / "key.csv"])
-    finally:
-        done.set()
-        other.join()
-    assert (out / "key.csv").read_text() == "new"
-    assert sorted(p.name for p in tmp_path.iterdir()) == [".out.partial-1", "out"]  # no old build left behind
-
-
 def test_the_same_build_twice_gives_the_same_pdfs(demo, tmp_path):
     again = tmp_path / "again"
     done = run_derive("sheet", "demo", "--variants", "3", "--seed", "5", "--out", str(again))
