@@ -13,7 +13,7 @@ import traceback
 
 import click
 
-from derive import __version__
+from derive import MAX_VARIANTS, __version__
 from derive.errors import InputError
 
 FORMATS = click.Choice(["text", "latex", "json"])
@@ -316,7 +316,7 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
 
 @main.command()
 @click.argument("problem_set", metavar="SET")
-@click.option("--variants", type=click.IntRange(1, 1000), default=None, help="Variants per problem (default: the set's).")
+@click.option("--variants", type=click.IntRange(1, MAX_VARIANTS), default=None, help="Variants per problem (default: the set's).")
 @click.option("--seed", type=int, default=None, help="Seed of the parameter draws (default: the set's).")
 @click.option("--out", "out_dir", default=None,
               help="Output folder (default: build/<set id>).")

@@ -19,6 +19,7 @@ from typing import Callable, Mapping
 
 import sympy
 
+from derive import names
 from derive.errors import InputError
 
 __all__ = ["ExprError", "FUNCTIONS", "RESERVED", "parse", "parse_condition"]
@@ -121,6 +122,10 @@ def _syntax_tree(text: str, max_length: int) -> tuple[ast.Expression, str]:
     """Length-check, parse and depth-check ``text``; return (tree, source) (package-internal)."""
     if len(text) > max_length:
         raise ExprError(f"expression too long ({len(text)} characters; limit {max_length})")
+    try:  # Python's parser would fold a fullwidth ｍ into m without a word
+        names.check(text, "an expression")
+    except ValueError as error:
+        raise ExprError(str(error)) from None
     text = text.strip().replace("^", "**")
     if not text:
         raise ExprError("empty expression")

@@ -8,6 +8,7 @@ wheel), or the folder named by the DERIVE_LIBRARY environment variable.
 """
 from __future__ import annotations
 
+import difflib
 import os
 import re
 from pathlib import Path
@@ -55,7 +56,9 @@ def _find(reference: str, candidates: list[Path], kind: str) -> Path:
     for candidate in candidates:
         if candidate.stem == reference:
             return candidate
-    raise LibraryError(f"no {kind} file or library id {reference!r} (see `derive list`)")
+    close = difflib.get_close_matches(reference, [c.stem for c in candidates], n=1)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    raise LibraryError(f"no {kind} file or library id {reference!r} (see `derive list`){hint}")
 
 
 def find_problem(reference: str) -> Path:

@@ -23,7 +23,7 @@ Rounding is half-to-even on the high-precision decimal value, never on a float's
 """
 from __future__ import annotations
 
-from decimal import ROUND_HALF_EVEN, Decimal
+from decimal import ROUND_HALF_EVEN, Decimal, localcontext
 from functools import cached_property, lru_cache
 
 import mpmath
@@ -33,22 +33,26 @@ GUARD_DIGITS = 10
 BACKENDS = ("auto", "float", "mpmath", "exact")
 
 
-def round_decimal(exact: Decimal, digits: int) -> str:
-    """A decimal rounded half-to-even to `digits` significant digits, as a string.
+def round_decimal(exact: Decimal, digits: int, rounding: str = ROUND_HALF_EVEN) -> str:
+    """A decimal rounded half-to-even (or by `rounding`) to `digits` significant digits, as a string.
 
     >>> round_decimal(Decimal("0.125"), 2)
     '0.12'
+    >>> round_decimal(Decimal("1.41421356237309504880168872420969807856967187537694e998"), 40)
+    '1.414213562373095048801688724209698078570e+998'
     """
     if exact == 0:
         return "0"
-    quantum = Decimal(1).scaleb(exact.adjusted() - digits + 1)
-    rounded = exact.quantize(quantum, rounding=ROUND_HALF_EVEN)
-    if rounded.adjusted() != exact.adjusted():  # 9.995 -> 10.0: one digit fewer after the point
-        rounded = rounded.quantize(quantum.scaleb(1), rounding=ROUND_HALF_EVEN)
-    exponent = rounded.adjusted()
-    if -5 <= exponent < digits:
-        return f"{rounded:f}"
-    return f"{rounded.scaleb(-exponent):f}e{exponent:+03d}"
+    with localcontext() as context:  # room for every digit asked (the default holds 28)
+        context.prec = max(context.prec, digits + 2)
+        quantum = Decimal(1).scaleb(exact.adjusted() - digits + 1)
+        rounded = exact.quantize(quantum, rounding=rounding)
+        if rounded.adjusted() != exact.adjusted():  # 9.995 -> 10.0: one digit fewer after the point
+            rounded = rounded.quantize(quantum.scaleb(1), rounding=rounding)
+        exponent = rounded.adjusted()
+        if -5 <= exponent < digits:
+            return f"{rounded:f}"
+        return f"{rounded.scaleb(-exponent):f}e{exponent:+03d}"
 
 
 def significant(value: sp.Expr, digits: int) -> str:

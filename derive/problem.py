@@ -13,13 +13,13 @@ message names the file and the field.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from decimal import Decimal, InvalidOperation
+from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, InvalidOperation, localcontext
 from pathlib import Path
 
 import sympy as sp
 import yaml
 
-from derive import expr, library, units
+from derive import expr, library, numeric, units
 from derive.errors import ProblemError
 from derive.reader import Loader, Reader
 from derive.scene import Quantity, Scene, parse_quantity
@@ -27,6 +27,19 @@ from derive.scene_file import read_scene
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections", "conditions"}
+
+
+def exact_decimal(value: sp.Expr) -> Decimal:
+    """A number of a problem file as a decimal: exact for a decimal literal, 60 digits otherwise.
+
+    >>> exact_decimal(sp.Rational(3, 10**330)), exact_decimal(sp.pi / 4)
+    (Decimal('3E-330'), Decimal('0.785398163397448309615660845819875721049292349843776455243736'))
+    """
+    with localcontext() as context:
+        context.prec = 60
+        if value.is_Rational:
+            return Decimal(value.p) / Decimal(value.q)
+        return Decimal(str(sp.N(value, 60)))
 
 
 @dataclass(frozen=True)
@@ -38,6 +51,27 @@ class Parameter:
     value: sp.Expr | None
     range: tuple[sp.Expr, sp.Expr] | None
     sig_figs: int
+
+    def bounds(self) -> tuple[Decimal, Decimal]:
+        """The range's ends rounded inward to the significant figures: every draw lies between
+        them (a range that holds no such value is refused when the file is read)."""
+        low, high = (exact_decimal(v) for v in self.range)
+        return (Decimal(numeric.round_decimal(low, self.sig_figs, ROUND_CEILING)),
+                Decimal(numeric.round_decimal(high, self.sig_figs, ROUND_FLOOR)))
+
+    def at(self, fraction: Decimal) -> sp.Rational:
+        """The value this fraction (0 to 1) of the way through the range, rounded to the
+        significant figures: exact decimals throughout, never a float, so any range the file
+        may give (1e-320 kg, 1e400 kg) is drawn inside itself."""
+        low, high = self.bounds()
+        with localcontext() as context:
+            context.prec = 60
+            value = Decimal(numeric.round_decimal(low + (high - low) * fraction, self.sig_figs))
+        return sp.Rational(*min(max(value, low), high).as_integer_ratio())
+
+    def draw(self, rng) -> sp.Rational:
+        """A value drawn uniformly from the range by `rng` (a random.Random)."""
+        return self.at(Decimal(rng.getrandbits(64)) / Decimal(2**64))
 
 
 @dataclass(frozen=True)
@@ -131,8 +165,7 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
     result = {}
     for name, spec in raw.items():
         field = f"parameters.{name}"
-        if not isinstance(name, str) or not name.isidentifier() or name.startswith("_"):
-            raise reader.fail(field, "a parameter name is a letter followed by letters, digits or _")
+        reader.name(name, field, "a parameter name")
         if name in expr.RESERVED:
             raise reader.fail(field, f"{name!r} is reserved for a function or constant")
         spec = reader.mapping(spec, field, required=("meaning", "unit"), optional=("value", "range", "sig_figs"))
@@ -151,6 +184,11 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         sig_figs = spec.get("sig_figs", DEFAULT_SIG_FIGS)
         if not isinstance(sig_figs, int) or isinstance(sig_figs, bool) or not 1 <= sig_figs <= 15:
             raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
+        if bounds is not None:
+            low, high = Parameter(name, None, "", "", None, bounds, sig_figs).bounds()
+            if low > high:
+                raise reader.fail(f"{field}.range", f"[{bounds[0]}, {bounds[1]}] holds no value of {sig_figs} "
+                                  "significant figures: widen the range or give more sig_figs")
         lowest = bounds[0] if bounds else value
         if value is not None:
             lowest = min(lowest, value)
@@ -171,8 +209,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
     result = {}
     for name, spec in raw.items():
         field = f"ask.{name}"
-        if not isinstance(name, str) or not name.isidentifier():
-            raise reader.fail(field, "an answer name is letters, digits and _")
+        reader.name(name, field, "an answer name")
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),

@@ -17,7 +17,7 @@ from pathlib import Path
 import sympy as sp
 import yaml
 
-from derive import expr, latex_safety, units
+from derive import expr, latex_safety, names, units
 from derive.errors import ProblemError
 
 MAX_CHARACTERS = 200_000  # a library problem file is a few thousand
@@ -103,6 +103,9 @@ NAME_KEYS = frozenset({"shape", "zero_for", "exact", "on", "contact", "wound_on"
                        "off", "relative_to", "of", "holds"})
 
 
+NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
 class Reader:
     """Reads one problem file, naming the file and the field in every error."""
 
@@ -129,6 +132,18 @@ class Reader:
         for key in () if free else NAME_KEYS.intersection(value):  # looked up in tables: no lists
             if not isinstance(value[key], str):
                 raise self.fail(f"{field}.{key}" if field else key, f"expected a name, got {type(value[key]).__name__}")
+        return value
+
+    def name(self, value, field: str, what: str) -> str:
+        """A name the file declares (a parameter, an ask, a body, ...): ASCII letters, digits and
+        _, starting with a letter; a look-alike such as a fullwidth `ｍ` is refused (derive.names)."""
+        if isinstance(value, str):
+            try:
+                names.check(value, what)
+            except ValueError as error:
+                raise self.fail(field, str(error)) from None
+        if not isinstance(value, str) or not NAME.fullmatch(value):
+            raise self.fail(field, f"{what} is a letter followed by letters, digits or _")
         return value
 
     def text(self, value, field: str) -> str:

@@ -230,8 +230,7 @@ def _surfaces(reader: Reader, raw) -> dict[str, Incline | Loop]:
     result = {}
     for name, spec in raw.items():
         field = f"scene.surfaces.{name}"
-        if not isinstance(name, str) or not name.isidentifier():
-            raise reader.fail(field, "a surface name is letters, digits and _")
+        reader.name(name, field, "a surface name")
         spec = reader.mapping(spec, field, optional=("incline", "loop"))
         if len(spec) != 1:
             raise reader.fail(field, "expected one surface kind (incline, loop)")
@@ -287,8 +286,7 @@ def _constraint(reader: Reader, index: int, spec, bodies: dict[str, Body]) -> Wo
     if side not in ("right", "left"):
         raise reader.fail(f"{field}.string.side", "expected right or left")
     name = cord.get("name", "string")
-    if not isinstance(name, str) or not name.isidentifier():
-        raise reader.fail(f"{field}.string.name", "expected a name of letters, digits and _")
+    reader.name(name, f"{field}.string.name", "a cord's name")
     return WoundString(name, reel.name, cord["hangs"], 1 if side == "right" else -1)
 
 
@@ -307,8 +305,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a top, a spinning_wheel)")
     bodies, pins = {}, []
     for name, spec in bodies_raw.items():
-        if not isinstance(name, str) or not name.isidentifier():
-            raise reader.fail(f"scene.bodies.{name}", "a body name is letters, digits and _")
+        reader.name(name, f"scene.bodies.{name}", "a body name")
         body, pin = _body(reader, name, spec)
         bodies[name] = body
         pins += [pin] if pin else []

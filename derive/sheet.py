@@ -23,7 +23,9 @@ from pathlib import Path
 import sympy as sp
 import yaml
 
-from derive import distractors, export, figure, library, limiting_cases, lms, numeric, output_folder, render, units
+from derive import MAX_VARIANTS
+from derive import (distractors, export, figure, latex_safety, library, limiting_cases, lms, numeric, output_folder,
+                    render, units)
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
@@ -47,6 +49,7 @@ class ProblemSet:
     course: str
     due: str
     problems: tuple[str, ...]  # library ids or problem files, topics resolved
+    fields: tuple[str, ...]  # where each problem comes from in the set file: "problems[2]"
     variants: int
     seed: int
     path: Path
@@ -85,12 +88,42 @@ def _topic(path: Path, index: int, entry: dict, seed: int) -> list[str]:
     return [reference for _, reference in chosen]
 
 
+#: Bounds of a set file, so that no file can ask for unbounded work: the same variant cap as
+#: `derive sheet --variants`, and lengths of its texts (a title is repeated on every page).
+MAX_PROBLEMS = 200
+MAX_SEED = 2**63 - 1
+TEXT_LIMITS = {"title": 200, "course": 200, "due": 100}
+
+
+def _set_text(path: Path, raw: dict, key: str) -> str:
+    """A text field of a set file: plain text within its length, passed by the LaTeX policy."""
+    value = raw.get(key, "")
+    if isinstance(value, (int, Decimal)) and not isinstance(value, bool) and key != "title":
+        value = str(value)  # `due: 2026` is a date the author meant as text
+    if not isinstance(value, str) or (key == "title" and not value.strip()):
+        raise InputError(f"{path}: {key}: expected {'non-empty ' if key == 'title' else ''}text")
+    if len(value) > TEXT_LIMITS[key]:
+        raise InputError(f"{path}: {key}: {len(value)} characters (limit {TEXT_LIMITS[key]})")
+    try:
+        latex_safety.check(value)
+    except latex_safety.LatexError as error:
+        raise InputError(f"{path}: {key}: {error}") from None
+    return value
+
+
+def _whole(path: Path, raw: dict, key: str, default: int, low: int, high: int) -> int:
+    value = raw.get(key, default)
+    if not isinstance(value, int) or isinstance(value, bool) or not low <= value <= high:
+        raise InputError(f"{path}: {key}: expected a whole number from {low} to {high}")
+    return value
+
+
 def load_set(reference: str) -> ProblemSet:
     """A set file by path or id; only `title` and `problems` are required."""
     path = library.find_set(reference)
     try:
         raw = yaml.load(path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a hardened SafeLoader
-    except (OSError, yaml.YAMLError) as error:
+    except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
         raise InputError(f"{path}: invalid set file: {str(error).splitlines()[0]}") from None
     if not isinstance(raw, dict):
         raise InputError(f"{path}: expected a mapping with {', '.join(SET_REQUIRED)}")
@@ -100,15 +133,29 @@ def load_set(reference: str) -> ProblemSet:
     for key in SET_REQUIRED:
         if key not in raw:
             raise InputError(f"{path}: {key}: missing")
-    for key, default in (("variants", 1), ("seed", 0)):
-        value = raw.get(key, default)
-        if not isinstance(value, int) or isinstance(value, bool) or value < (1 if key == "variants" else 0):
-            raise InputError(f"{path}: {key}: expected a whole number")
+    variants = _whole(path, raw, "variants", 1, 1, MAX_VARIANTS)
+    seed = _whole(path, raw, "seed", 0, 0, MAX_SEED)
     entries = raw["problems"]
     if not isinstance(entries, list) or not entries or not all(isinstance(p, (str, dict)) for p in entries):
         raise InputError(f"{path}: problems: expected a list of problem ids, files or {{topic: TOPIC}}")
-    problems = [reference for i, entry in enumerate(entries)
-                for reference in ([entry] if isinstance(entry, str) else _topic(path, i, entry, raw.get("seed", 0)))]
+    if len(entries) > MAX_PROBLEMS:
+        raise InputError(f"{path}: problems: {len(entries)} entries (limit {MAX_PROBLEMS})")
+    problems, fields, files = [], [], []
+    for i, entry in enumerate(entries):
+        for reference in [entry] if isinstance(entry, str) else _topic(path, i, entry, seed):
+            field = f"problems[{i}]" + (f" (topic {entry['topic']})" if isinstance(entry, dict) else "")
+            try:
+                file = library.find_problem(reference).resolve()
+            except library.LibraryError as error:
+                raise InputError(f"{path}: {field}: {error}") from None
+            if file in files:
+                raise InputError(f"{path}: {field}: {reference} is already {fields[files.index(file)]}; "
+                                 "a problem appears once in a set")
+            problems.append(reference)
+            fields.append(field)
+            files.append(file)
+    if len(problems) > MAX_PROBLEMS:
+        raise InputError(f"{path}: problems: {len(problems)} problems (limit {MAX_PROBLEMS})")
     listed = raw.get("outputs", ",".join(sorted(DEFAULT_OUTPUTS)))
     if isinstance(listed, list) and all(isinstance(o, str) for o in listed):
         listed = ",".join(listed)
@@ -118,23 +165,21 @@ def load_set(reference: str) -> ProblemSet:
     if questions not in QUESTIONS:
         raise InputError(f"{path}: questions: expected one of {', '.join(QUESTIONS)}")
     return ProblemSet(
-        id=path.stem, title=str(raw["title"]), course=str(raw.get("course", "")), due=str(raw.get("due", "")),
-        problems=tuple(dict.fromkeys(problems)), variants=raw.get("variants", 1), seed=raw.get("seed", 0), path=path,
-        outputs=outputs(listed, f"{path}: outputs"), questions=questions,
+        id=path.stem, title=_set_text(path, raw, "title"), course=_set_text(path, raw, "course"),
+        due=_set_text(path, raw, "due"), problems=tuple(problems), fields=tuple(fields), variants=variants, seed=seed,
+        path=path, outputs=outputs(listed, f"{path}: outputs"), questions=questions,
     )
 
 
 def draw(problem: Problem, rng: random.Random) -> dict[str, sp.Expr]:
     """Parameter values in their declared units: a range is sampled uniformly and rounded
-    to the parameter's significant figures (an exact decimal); a fixed value is kept."""
+    to the parameter's significant figures (exact decimals: Parameter.draw); a fixed value is kept."""
     values = {}
     for name, p in problem.parameters.items():
         if p.range is None:
             values[name] = p.value
             continue
-        low, high = (float(v) for v in p.range)
-        sample = low + (high - low) * rng.random()  # a random draw: a float is as good as any
-        values[name] = sp.Rational(numeric.round_decimal(Decimal(repr(sample)), p.sig_figs))
+        values[name] = p.draw(rng)
     return values
 
 
@@ -251,16 +296,23 @@ class _ProblemVariants:
 
 
 def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Reporter) -> list[_ProblemVariants]:
-    prepared = []
+    prepared, ids = [], {}
     with progress.task("deriving", len(problem_set.problems)) as begin:
-        for reference in problem_set.problems:
-            problem = load(reference)
-            begin(problem.id)
-            solution = Solution(problem)
-            solution.expressions  # derive once, for every variant
-            solution.checks()
-            draws = [valid_draw(problem, solution, random.Random(f"{seed}/{problem.id}/{n}"))
-                     for n in range(1, variants + 1)]
+        for reference, where in zip(problem_set.problems, problem_set.fields):
+            try:  # an error names the set file and the entry, then the problem file and its field
+                problem = load(reference)
+                if problem.id in ids:
+                    raise InputError(f"{problem.path}: id: {problem.id} is also the id of {ids[problem.id]}; "
+                                     "ids in a set must differ")
+                ids[problem.id] = f"{where} ({problem.path})"
+                begin(problem.id)
+                solution = Solution(problem)
+                solution.expressions  # derive once, for every variant
+                solution.checks()
+                draws = [valid_draw(problem, solution, random.Random(f"{seed}/{problem.id}/{n}"))
+                         for n in range(1, variants + 1)]
+            except InputError as error:
+                raise InputError(f"{problem_set.path}: {where}: {error}") from None
             prepared.append(_ProblemVariants(problem, solution, draws))
     return prepared
 
@@ -450,9 +502,7 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
     problem = load(reference)
     progress(f"deriving {problem.id}")
     solution = Solution(problem)
-    middle = {name: (p.value if p.range is None else sp.Rational(numeric.round_decimal(
-                  Decimal(repr(float((p.range[0] + p.range[1]) / 2))), p.sig_figs)))
-              for name, p in problem.parameters.items()}
+    middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
     item = _ProblemVariants(problem, solution, [middle])
     context = {**_solutions_context(item), "limits": _limits_context(problem, solution, progress)}
     out = output_folder.claim(out_dir or Path("build") / "handouts" / problem.id)

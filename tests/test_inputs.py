@@ -1,0 +1,166 @@
+"""Inputs are exact or refused: exact draws at any magnitude, every digit asked, ASCII names,
+bounded set files whose errors name the set file, the entry and the problem file."""
+import random
+import re
+from decimal import Decimal
+from pathlib import Path
+
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from conftest import run_derive
+from derive import names, problem, sheet
+from derive.errors import InputError, ProblemError
+
+
+def disk_problem(mass_range="[1, 2]", sig_figs=2, parameter="M", mass_expression="M", problem_id="plain_disk"):
+    return f"""\
+id: {problem_id}
+title: A disk
+topic: inertia
+parameters:
+  {parameter}: {{meaning: mass, unit: kg, range: {mass_range}, sig_figs: {sig_figs}}}
+  R: {{meaning: radius, unit: m, value: 0.5}}
+scene:
+  bodies:
+    disk: {{shape: disk, mass: {mass_expression}, radius: R}}
+ask:
+  I: {{meaning: inertia, of: disk.inertia, unit: kg*m^2}}
+question: |
+  A disk of radius {{{{ R }}}}.
+"""
+
+
+def one_line_exit_2(result):
+    assert result.returncode == 2, (result.returncode, result.stderr)
+    assert len(result.stderr.strip().splitlines()) == 1 and "Traceback" not in result.stderr, result.stderr
+    return result.stderr
+
+
+# --- draws -------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("low, high", [("1e-320", "2e-320"), ("1e400", "2e400"), ("2.5e-7", "7.5e-7"),
+                                       ("1e-300", "1e300")])
+def test_draws_lie_inside_any_range_the_parser_accepts(low, high):
+    """A float draw once turned a range below 1e-308 into 0 kg."""
+    parameter = problem.parse(disk_problem(f"[{low}, {high}]", 3),
+                              Path("d.yaml")).parameters["M"]
+    rng = random.Random(7)
+    draws = [parameter.draw(rng) for _ in range(200)]
+    assert all(sp.Rational(low) <= d <= sp.Rational(high) for d in draws)
+    assert len(set(draws)) > 10  # uniform, not stuck at an end
+    assert all(len(str(Decimal(d.p) / Decimal(d.q)).lstrip("-0.").replace(".", "").split("E")[0].rstrip("0")) <= 3
+               for d in draws)
+
+
+@settings(max_examples=300, derandomize=True, deadline=None)
+@given(st.decimals(min_value=Decimal("-1e30"), max_value=Decimal("1e30"), allow_nan=False, allow_infinity=False),
+       st.decimals(min_value=Decimal("1e-12"), max_value=Decimal("1e30"), allow_nan=False, allow_infinity=False),
+       st.integers(1, 6), st.integers(0, 2**32))
+def test_every_draw_is_inside_its_range_at_its_significant_figures(low, width, sig_figs, seed):
+    bounds = (sp.Rational(str(low)), sp.Rational(str(low + width)))
+    parameter = problem.Parameter("x", sp.Symbol("x"), "x", "1", None, bounds, sig_figs)
+    inner_low, inner_high = parameter.bounds()
+    if inner_low > inner_high:
+        return  # refused when the file is read (next test)
+    value = parameter.draw(random.Random(seed))
+    assert bounds[0] <= value <= bounds[1]
+    assert sp.Rational(str(Decimal(sheet.numeric.significant(value, sig_figs)))) == value
+
+
+def test_a_range_with_no_value_at_its_significant_figures_is_refused():
+    with pytest.raises(ProblemError, match=r"d.yaml: parameters.M.range: \[3/25, 13/100\] holds no value of 1 "
+                                           "significant figures"):
+        problem.parse(disk_problem("[0.12, 0.13]", 1), Path("d.yaml"))
+
+
+def test_fifty_digits_at_any_magnitude(tmp_path):
+    path = tmp_path / "big.yaml"
+    path.write_text(disk_problem("[1e400, 2e400]"))
+    result = run_derive("solve", str(path), "--set", "M=1e999", "--digits", "50", "--format", "json")
+    assert result.returncode == 0, result.stderr
+    assert '"value": "1.2500000000000000000000000000000000000000000000000e+998"' in result.stdout
+    result = run_derive("solve", "string_wrapped_disk", "--set", "m=1", "--set", "M=2", "--set", "R=0.2",
+                        "--digits", "50")
+    assert result.returncode == 0, result.stderr
+    assert "-24.525000000000000000000000000000000000000000000000 rad/s^2" in result.stdout
+
+
+# --- names -------------------------------------------------------------------------------------
+
+def test_a_fullwidth_letter_in_an_expression_is_refused_with_what_to_write():
+    """Python's parser folds `ｍ` into `m`: it once silently meant the parameter m."""
+    with pytest.raises(ProblemError, match=r"d.yaml: scene.bodies.disk.mass: an expression must be ASCII: 'ｍ' "
+                                           r"\(U\+FF4D FULLWIDTH LATIN SMALL LETTER M\): write 'M\*m'"):
+        problem.parse(disk_problem(mass_expression="M*ｍ"), Path("d.yaml"))
+
+
+@pytest.mark.parametrize("name, suggestion", [("μ", "mu"), ("ω0", "omega0"), ("Ω", "Omega"), ("ｍ", "m"),
+                                              ("é", "e")])
+def test_non_ascii_names_are_refused_with_a_suggestion(name, suggestion):
+    with pytest.raises(ProblemError, match=f"parameters.{name}: a parameter name must be ASCII: .*write "
+                                           f"'{suggestion}'"):
+        problem.parse(disk_problem(parameter=name, mass_expression="2"), Path("d.yaml"))
+
+
+def test_names_module_refuses_what_has_no_ascii_form():
+    with pytest.raises(ValueError, match="U\\+1F600 GRINNING FACE") as caught:
+        names.check("x😀", "a name")
+    assert "write" not in str(caught.value)
+
+
+def test_non_ascii_names_on_the_command_line(tmp_path):
+    path = tmp_path / "mu.yaml"
+    path.write_text(disk_problem(parameter="μ", mass_expression="2"))
+    assert "write 'mu'" in one_line_exit_2(run_derive("solve", str(path)))
+
+
+# --- set files ---------------------------------------------------------------------------------
+
+def set_file(tmp_path, text, name="week.yaml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize("text, message", [
+    ("title: t\nvariants: 1000000\nproblems: [rod_endpoint]\n", "variants: expected a whole number from 1 to 1000"),
+    ("title: t\nseed: -1\nproblems: [rod_endpoint]\n", "seed: expected a whole number from 0 to"),
+    (f"title: {'x' * 150_000}\nproblems: [rod_endpoint]\n", r"title: 150000 characters \(limit 200\)"),
+    ('title: "a\\x07b"\nproblems: [rod_endpoint]\n', r"title: control character '\\x07' is not allowed"),
+    ('title: t\ncourse: "\\x1b[31m"\nproblems: [rod_endpoint]\n', "course: control character"),
+    ("title: t\nproblems: [rod_endpoint, rod_endpoint]\n", r"problems\[1\]: rod_endpoint is already problems\[0\]"),
+    ("title: t\nproblems: [rod_endpiont]\n", r"problems\[0\]: no problem file or library id 'rod_endpiont' "
+                                             r"\(see `derive list`\); did you mean 'rod_endpoint'\?"),
+    ("title: t\nproblems: [rod_endpoint, {topic: inertia}]\n",
+     r"problems\[1\] \(topic inertia\): .*rod_endpoint.yaml is already problems\[0\]"),
+])
+def test_set_file_bounds_and_entries(tmp_path, text, message):
+    path = set_file(tmp_path, text)
+    stderr = one_line_exit_2(run_derive("sheet", str(path), "--out", str(tmp_path / "out"), "--to", "",
+                                        "--progress", "none"))
+    assert stderr.startswith(f"derive: error: {path}: ")
+    import re
+    assert re.search(message, stderr), stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_two_problems_with_one_id_are_refused(tmp_path):
+    """key.json kept one of them and Moodle merged them."""
+    twin = tmp_path / "twin.yaml"
+    twin.write_text((Path(problem.library.find_problem("rod_endpoint"))).read_text())
+    path = set_file(tmp_path, f"title: t\nproblems: [rod_endpoint, {twin}]\n")
+    with pytest.raises(InputError, match=rf"^{path}: problems\[1\]: {twin}: id: rod_endpoint is also the id of "
+                                         r"problems\[0\]"):
+        sheet.build(str(path), out_dir=str(tmp_path / "out"), formats=frozenset())
+
+
+def test_an_error_in_a_problem_names_the_set_file_the_entry_and_the_problem_file(tmp_path):
+    broken = tmp_path / "broken.yaml"
+    broken.write_text(disk_problem().replace("of: disk.inertia", "of: disk.nothing"))
+    path = set_file(tmp_path, f"title: t\nproblems: [rod_endpoint, {broken}]\n")
+    stderr = one_line_exit_2(run_derive("sheet", str(path), "--out", str(tmp_path / "out"), "--to", "",
+                                        "--progress", "none"))
+    assert stderr.startswith(f"derive: error: {path}: problems[1]: {broken}: ask.I.of: "), stderr
