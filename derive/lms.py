@@ -8,6 +8,11 @@ answer's policy: one unit in the last significant digit shown (the default), a p
 numeric answer and its margin, so a quantity whose margin would fall below 1e-4 is asked in a
 scaled unit (10^-k UNIT). `check` holds every exported tolerance to the LMS's limits.
 
+Every file is built by lxml's serializer, never by string formatting: titles, meanings and the
+question's HTML (its `<p>`s serialized too) are text content or attribute values, so no text from
+a problem or set file can end an element or an attribute. Moodle's cloze syntax is Moodle's own
+escaping inside that text (`_cloze_text`).
+
 >>> tolerance("-4.44")
 '0.01'
 >>> tolerance("250", "2%")
@@ -17,14 +22,15 @@ scaled unit (10^-k UNIT). `check` holds every exported tolerance to the LMS's li
 """
 from __future__ import annotations
 
-import html
 import io
 import random
 import re
 import zipfile
 from dataclasses import dataclass
 from decimal import Decimal
-from xml.sax.saxutils import escape
+
+from lxml import etree
+from lxml.builder import E, ElementMaker
 
 from derive.errors import InputError
 
@@ -108,22 +114,40 @@ def choices(item: Item) -> list[tuple[str, bool]]:
     return result
 
 
-def _html(text: str) -> str:
-    """Question text for an LMS: HTML-escaped, $...$ math as MathJax \\( ... \\)."""
-    return re.sub(r"\$([^$]+)\$", lambda m: r"\(" + m.group(1) + r"\)", html.escape(text, quote=False))
+def _mathjax(text: str) -> str:
+    """Question text for an LMS: $...$ math as MathJax \\( ... \\).
+
+    >>> _mathjax("A mass $m$ hangs.")
+    'A mass \\\\(m\\\\) hangs.'
+    """
+    return re.sub(r"\$([^$]+)\$", lambda m: r"\(" + m.group(1) + r"\)", text)
+
+
+def _paragraphs(*texts: str) -> str:
+    """HTML for an LMS's question text: one <p> per text, escaped by the serializer.
+
+    >>> _paragraphs("a < b", "c")
+    '<p>a &lt; b</p><p>c</p>'
+    """
+    return "".join(etree.tostring(E.p(text), encoding="unicode", method="html") for text in texts)
+
+
+def _xml(root: etree._Element) -> bytes:
+    """A whole XML document, UTF-8 with its declaration, indented (the same bytes every build)."""
+    return etree.tostring(root, encoding="UTF-8", xml_declaration=True, pretty_print=True)
 
 
 def _cloze(item: Item) -> str:
     """A cloze field: NUMERICAL with its tolerance, or MULTICHOICE with the unit on each choice."""
     if not item.wrong:
-        return f"{{1:NUMERICAL:={item.value}:{item.tolerance}}} {escape(item.unit)}"
+        return f"{{1:NUMERICAL:={item.value}:{item.tolerance}}} {item.unit}"
     options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(f'{v} {item.unit}')}" for v, right in choices(item))
     return f"{{1:MULTICHOICE_V:{options}}}"
 
 
 def _cloze_text(text: str) -> str:
     """Text inside a cloze field: Moodle's own specials (} # ~ / " \\) escaped with a backslash."""
-    return escape(re.sub(r'([}#~/"\\])', r"\\\1", text))
+    return re.sub(r'([}#~/"\\])', r"\\\1", text)
 
 
 def moodle(items: list[Item], category: str) -> str:
@@ -131,100 +155,74 @@ def moodle(items: list[Item], category: str) -> str:
     groups: dict[tuple[str, int], list[Item]] = {}
     for item in items:
         groups.setdefault((item.problem, item.variant), []).append(item)
-    parts = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>",
-             f'  <question type="category"><category><text>$course$/derive/{escape(category)}</text></category></question>']
+    quiz = E.quiz(E.question(E.category(E.text(f"$course$/derive/{category}")), type="category"))
     for (problem, variant), group in groups.items():
-        fields = "".join(f"<p>{escape(i.meaning)}: \\({escape(i.name)}\\) = {_cloze(i)}</p>" for i in group)
-        text = f"<p>{_html(group[0].question)}</p>{fields}"
-        parts += [
-            '  <question type="cloze">',
-            f"    <name><text>{escape(problem)} variant {variant}</text></name>",
-            f'    <questiontext format="html"><text><![CDATA[{text}]]></text></questiontext>',
-            "    <generalfeedback><text></text></generalfeedback>",
-            "  </question>",
-        ]
-    parts.append("</quiz>")
-    return "\n".join(parts) + "\n"
+        fields = [f"{i.meaning}: \\({i.name}\\) = {_cloze(i)}" for i in group]
+        quiz.append(E.question(
+            E.name(E.text(f"{problem} variant {variant}")),
+            E.questiontext(E.text(_paragraphs(_mathjax(group[0].question), *fields)), format="html"),
+            E.generalfeedback(E.text()),
+            type="cloze"))
+    return _xml(quiz).decode()
 
 
-def _metadata(kind: str) -> str:
-    return (f"<itemmetadata><qtimetadata><qtimetadatafield><fieldlabel>question_type</fieldlabel>\n"
-            f"        <fieldentry>{kind}</fieldentry></qtimetadatafield></qtimetadata></itemmetadata>")
+QTI_NAMESPACE = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
+MANIFEST_NAMESPACE = "http://www.imsglobal.org/xsd/imsccv1p1/imscp_v1p1"
+QTI = ElementMaker(namespace=QTI_NAMESPACE, nsmap={None: QTI_NAMESPACE})
+MANIFEST = ElementMaker(namespace=MANIFEST_NAMESPACE, nsmap={None: MANIFEST_NAMESPACE})
+ASSESSMENT = "assessment/assessment.xml"  # the zip's one resource, named in its manifest
 
 
-def _qti_item(item: Item, number: int) -> str:
-    if item.wrong:
-        return _qti_choice_item(item, number)
+def _numerical(item: Item) -> tuple[str, str, etree._Element, etree._Element]:
+    """(question type, prompt, response, correct condition): the answer, or within its margin."""
     value, margin, unit = scaled(item.value, item.tolerance, item.unit)
     low, high = Decimal(value) - Decimal(margin), Decimal(value) + Decimal(margin)
-    text = _html(item.question) + f"<p>{html.escape(item.meaning)} (in {html.escape(unit)}):</p>"
-    return f"""    <item ident="item{number}" title="{escape(item.problem)} v{item.variant} {escape(item.name)}">
-      {_metadata("numerical_question")}
-      <presentation>
-        <material><mattext texttype="text/html">{escape(text)}</mattext></material>
-        <response_str ident="response1" rcardinality="Single"><render_fib fibtype="Decimal">
-          <response_label ident="answer1"/></render_fib></response_str>
-      </presentation>
-      <resprocessing>
-        <outcomes><decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/></outcomes>
-        <respcondition continue="No"><conditionvar><or>
-          <varequal respident="response1">{value}</varequal>
-          <and><vargte respident="response1">{low}</vargte><varlte respident="response1">{high}</varlte></and>
-        </or></conditionvar><setvar action="Set" varname="SCORE">100</setvar></respcondition>
-      </resprocessing>
-    </item>"""
+    response = QTI.response_str(QTI.render_fib(QTI.response_label(ident="answer1"), fibtype="Decimal"),
+                                ident="response1", rcardinality="Single")
+    within = QTI("and", QTI.vargte(str(low), respident="response1"), QTI.varlte(str(high), respident="response1"))
+    condition = QTI("or", QTI.varequal(value, respident="response1"), within)
+    return "numerical_question", f"{item.meaning} (in {unit}):", response, condition
 
 
-def _qti_choice_item(item: Item, number: int) -> str:
+def _multiple_choice(item: Item) -> tuple[str, str, etree._Element, etree._Element]:
+    """(question type, prompt, response, correct condition): the right choice among the wrong."""
     options = choices(item)
-    labels = "\n".join(
-        f'          <response_label ident="choice{n}"><material><mattext texttype="text/plain">'
-        f"{escape(v)} {escape(item.unit)}</mattext></material></response_label>" for n, (v, _) in enumerate(options))
+    labels = (QTI.response_label(QTI.material(QTI.mattext(f"{v} {item.unit}", texttype="text/plain")), ident=f"choice{n}")
+              for n, (v, _) in enumerate(options))
+    response = QTI.response_lid(QTI.render_choice(*labels), ident="response1", rcardinality="Single")
     (right,) = [n for n, (_, is_right) in enumerate(options) if is_right]
-    text = _html(item.question) + f"<p>{html.escape(item.meaning)}:</p>"
-    return f"""    <item ident="item{number}" title="{escape(item.problem)} v{item.variant} {escape(item.name)}">
-      {_metadata("multiple_choice_question")}
-      <presentation>
-        <material><mattext texttype="text/html">{escape(text)}</mattext></material>
-        <response_lid ident="response1" rcardinality="Single"><render_choice>
-{labels}
-        </render_choice></response_lid>
-      </presentation>
-      <resprocessing>
-        <outcomes><decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/></outcomes>
-        <respcondition continue="No"><conditionvar><varequal respident="response1">choice{right}</varequal>
-        </conditionvar><setvar action="Set" varname="SCORE">100</setvar></respcondition>
-      </resprocessing>
-    </item>"""
+    return "multiple_choice_question", f"{item.meaning}:", response, QTI.varequal(f"choice{right}", respident="response1")
+
+
+def _qti_item(item: Item, number: int) -> etree._Element:
+    """A Canvas item: its question type, the question's HTML, the response and its scoring."""
+    kind, prompt, response, condition = (_multiple_choice if item.wrong else _numerical)(item)
+    text = _paragraphs(_mathjax(item.question), prompt)
+    return QTI.item(
+        QTI.itemmetadata(QTI.qtimetadata(QTI.qtimetadatafield(QTI.fieldlabel("question_type"), QTI.fieldentry(kind)))),
+        QTI.presentation(QTI.material(QTI.mattext(text, texttype="text/html")), response),
+        QTI.resprocessing(
+            QTI.outcomes(QTI.decvar(maxvalue="100", minvalue="0", varname="SCORE", vartype="Decimal")),
+            QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
+                              {"continue": "No"})),
+        ident=f"item{number}", title=f"{item.problem} v{item.variant} {item.name}")
 
 
 def qti(items: list[Item], title: str) -> bytes:
     """A QTI 1.2 zip for Canvas: imsmanifest.xml and one assessment of numerical or
     multiple-choice items."""
-    body = "\n".join(_qti_item(item, n) for n, item in enumerate(items, start=1))
-    assessment = f"""<?xml version="1.0" encoding="UTF-8"?>
-<questestinterop xmlns="http://www.imsglobal.org/xsd/ims_qtiasiv1p2">
-  <assessment ident="derive_assessment" title="{escape(title)}">
-    <section ident="root_section">
-{body}
-    </section>
-  </assessment>
-</questestinterop>
-"""
-    manifest = """<?xml version="1.0" encoding="UTF-8"?>
-<manifest identifier="derive_manifest" xmlns="http://www.imsglobal.org/xsd/imsccv1p1/imscp_v1p1">
-  <metadata><schema>IMS Content</schema><schemaversion>1.1.3</schemaversion></metadata>
-  <organizations/>
-  <resources>
-    <resource identifier="derive_assessment" type="imsqti_xmlv1p2" href="assessment/assessment.xml">
-      <file href="assessment/assessment.xml"/>
-    </resource>
-  </resources>
-</manifest>
-"""
+    assessment = QTI.questestinterop(QTI.assessment(
+        QTI.section(*(_qti_item(item, n) for n, item in enumerate(items, start=1)), ident="root_section"),
+        ident="derive_assessment", title=title))
+    manifest = MANIFEST.manifest(
+        MANIFEST.metadata(MANIFEST.schema("IMS Content"), MANIFEST.schemaversion("1.1.3")),
+        MANIFEST.organizations(),
+        MANIFEST.resources(MANIFEST.resource(MANIFEST.file(href=ASSESSMENT), identifier="derive_assessment",
+                                             type="imsqti_xmlv1p2", href=ASSESSMENT)),
+        identifier="derive_manifest")
     buffer = io.BytesIO()
-    with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
-        for name, text in (("imsmanifest.xml", manifest), ("assessment/assessment.xml", assessment)):
+    with zipfile.ZipFile(buffer, "w") as archive:  # stored, as ZipInfo entries are by default
+        for name, root in (("imsmanifest.xml", manifest), (ASSESSMENT, assessment)):
             info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))  # the same bytes every build
-            archive.writestr(info, text)
+            archive.writestr(info, _xml(root))
     return buffer.getvalue()

@@ -32,6 +32,7 @@ from derive.problem import DEFAULT_SIG_FIGS, Problem, load
 from derive.progress import Reporter
 from derive.reader import Loader
 from derive.report import route_title
+from derive.spreadsheet import safe_cell
 
 SET_REQUIRED = ("title", "problems")
 SET_OPTIONAL = ("course", "due", "variants", "seed", "outputs", "questions")
@@ -458,7 +459,7 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
             writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
                                                         "meaning"], lineterminator="\n", extrasaction="ignore")
             writer.writeheader()
-            writer.writerows(rows)
+            writer.writerows({k: safe_cell(v) for k, v in r.items()} for r in rows)  # no formulas
             products += [_write(staging, "key.csv", buffer.getvalue()),
                          _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
             if "moodle" in formats:
