@@ -142,7 +142,6 @@ def test_set_file_bounds_and_entries(tmp_path, text, message):
     stderr = one_line_exit_2(run_derive("sheet", str(path), "--out", str(tmp_path / "out"), "--to", "",
                                         "--progress", "none"))
     assert stderr.startswith(f"derive: error: {path}: ")
-    import re
     assert re.search(message, stderr), stderr
     assert not (tmp_path / "out").exists()
 
