@@ -57,10 +57,19 @@ def tolerance(value: str, policy: str | None = None) -> str:
     number = Decimal(value)
     if policy is None:
         digits = len(number.as_tuple().digits)
-        return format(Decimal(1).scaleb(number.adjusted() - digits + 1), "f") if number != 0 else "0"
+        return _plain(Decimal(1).scaleb(number.adjusted() - digits + 1)) if number != 0 else "0"
     if policy.endswith("%"):
-        return format((abs(number) * Decimal(policy[:-1]) / 100).normalize(), "f")
-    return format(Decimal(policy).normalize(), "f")
+        return _plain((abs(number) * Decimal(policy[:-1]) / 100).normalize())
+    return _plain(Decimal(policy).normalize())
+
+
+def _plain(number: Decimal) -> str:
+    """A decimal as positional digits, or with an exponent beyond 10^-6..10^15 (1e-320, not 320 zeros).
+
+    >>> _plain(Decimal("0.001")), _plain(Decimal("1E-321")), _plain(Decimal("1E+397"))
+    ('0.001', '1E-321', '1E+397')
+    """
+    return format(number, "f") if -6 <= number.adjusted() < 16 else str(number.normalize())
 
 
 CANVAS_PLACES = 4  # Canvas rounds a numeric answer and its margin to four decimal places
@@ -77,6 +86,8 @@ def scaled(value: str, margin: str, unit: str) -> tuple[str, str, str]:
     return format(number.scaleb(k), "f"), format(tol.scaleb(k).normalize(), "f"), f"10^-{k} {unit}"
 
 
+#: Magnitudes both LMSs store as numbers (double precision, with room for the tolerance).
+DOUBLE_RANGE = (Decimal("1e-300"), Decimal("1e300"))
 #: What each LMS can hold: Moodle compares in double precision; Canvas keeps 4 decimal places.
 LIMITS = {"moodle": "a tolerance of at least 1e-14 of the answer (double precision)",
           "qti": "a margin of at least 1e-4 after scaling (Canvas keeps four decimal places)"}
@@ -87,6 +98,9 @@ def check(items: list[Item], target: str) -> None:
     wrong sign: InputError naming the problem, the variant and the answer."""
     for item in items:
         value, tol = abs(Decimal(item.value)), Decimal(item.tolerance)
+        if value and not DOUBLE_RANGE[0] <= value <= DOUBLE_RANGE[1]:
+            raise InputError(f"{item.problem} variant {item.variant}: ask.{item.name}: {item.value} {item.unit} lies "
+                             f"outside what an LMS stores (double precision, 1e-300 to 1e300): ask it in another unit")
         where = f"{item.problem} variant {item.variant}: ask.{item.name}.tolerance"
         if value and tol >= value:
             raise InputError(f"{where}: ±{item.tolerance} {item.unit} accepts zero and the wrong sign "
@@ -150,6 +164,17 @@ def _cloze_text(text: str) -> str:
     return re.sub(r'([}#~/"\\])', r"\\\1", text)
 
 
+_BRACE = "\ue000"  # a literal { of a problem's text, until the question's HTML is serialized
+
+
+def _literal_braces(text: str) -> str:
+    """A problem's text with each `{` marked, to become the HTML entity &#123; in Moodle's question
+    text: Moodle's cloze parser reads `{1:NUMERICAL:=0}` in the raw HTML as an answer field, so a
+    meaning or question must not be able to write one; the browser shows &#123; as `{` (and
+    MathJax reads the decoded text)."""
+    return text.replace("{", _BRACE)
+
+
 def moodle(items: list[Item], category: str) -> str:
     """Moodle XML: a category and one cloze question per problem and variant."""
     groups: dict[tuple[str, int], list[Item]] = {}
@@ -157,10 +182,11 @@ def moodle(items: list[Item], category: str) -> str:
         groups.setdefault((item.problem, item.variant), []).append(item)
     quiz = E.quiz(E.question(E.category(E.text(f"$course$/derive/{category}")), type="category"))
     for (problem, variant), group in groups.items():
-        fields = [f"{i.meaning}: \\({i.name}\\) = {_cloze(i)}" for i in group]
+        fields = [f"{_literal_braces(i.meaning)}: \\({i.name}\\) = {_cloze(i)}" for i in group]
+        html = _paragraphs(_mathjax(_literal_braces(group[0].question)), *fields).replace(_BRACE, "&#123;")
         quiz.append(E.question(
             E.name(E.text(f"{problem} variant {variant}")),
-            E.questiontext(E.text(_paragraphs(_mathjax(group[0].question), *fields)), format="html"),
+            E.questiontext(E.text(html), format="html"),
             E.generalfeedback(E.text()),
             type="cloze"))
     return _xml(quiz).decode()

@@ -412,10 +412,6 @@ def test_pandoc_gets_no_filters_and_one_title_argument(monkeypatch, tmp_path):
 
 
 def test_pandoc_reads_no_file_from_raw_latex(tmp_path):
-    if shutil.which("pandoc") is None:
-        import pypandoc
-        if not pypandoc.get_pandoc_path():
-            pytest.skip("pandoc missing")
     secret = tmp_path / "secret.tex"
     secret.write_text("SECRETTEXT")
     tex = tmp_path / "w.tex"

@@ -176,3 +176,26 @@ def test_set_files_pick_problems_by_topic_and_the_command_line_overrides_outputs
 def test_bad_set_files_name_the_field(body, message, tmp_path):
     done = run_derive("sheet", str(_set(tmp_path, "title: T\n" + body + "\n")), "--out", str(tmp_path / "o"))
     assert done.returncode == 2 and message in done.stderr and done.stderr.count("\n") == 1
+
+
+#: Moodle's cloze parser (question/type/multianswer/questiontype.php, ANSWER_REGEX) finds an answer
+#: field wherever the raw question HTML holds `{` + optional weight + `:` + a question type.
+CLOZE_FIELD = re.compile(r"\{[0-9]*:(?:NUMERICAL|NM|SHORTANSWER|SA|MW|MULTICHOICE\w*|MC\w*)", re.I)
+
+
+def test_problem_text_cannot_add_a_cloze_field():
+    """A meaning or question holding cloze syntax once became an extra answer field in Moodle."""
+    item = lms.Item("p", "t", 1, r"Mass $\frac{1}{2}$ and {1:NUMERICAL:=0}", "a", "meaning {1:SA:=x}",
+                    "1.5", "m", "0.1")
+    (question,) = [q for q in ET.fromstring(lms.moodle([item], "cat").encode()) if q.get("type") == "cloze"]
+    html = question.find("questiontext/text").text
+    assert len(CLOZE_FIELD.findall(html)) == 1  # derive's own field only
+    assert r"\frac&#123;1}&#123;2}" in html and "{1:NUMERICAL:=1.5:0.1}" in html
+
+
+@pytest.mark.parametrize("value", ["1.5e+301", "-2.0e-301"])
+def test_values_an_lms_cannot_store_are_refused(value):
+    item = lms.Item("p", "t", 1, "q", "a", "m", value, "kg", lms.tolerance(value))
+    for target in ("moodle", "qti"):
+        with pytest.raises(InputError, match=r"p variant 1: ask.a: .* lies outside what an LMS stores"):
+            lms.check([item], target)
