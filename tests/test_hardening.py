@@ -1,7 +1,6 @@
 """Problem and set files treated as untrusted: time limits, LaTeX safety, the template sandbox,
 output names, interrupted builds, pandoc's arguments."""
 import os
-import shutil
 import threading
 import time
 from pathlib import Path
