@@ -17,7 +17,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import inertia, limits, numeric
-from derive.mechanics import (events, gyroscope, joints, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
+from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics.derivation import Derivation, Step, root, tidy
@@ -75,31 +75,38 @@ class Solution(CrossChecks):
         if q.kind == "oscillation":
             return self._exact_period(ask.amplitude, route)[0]
         derivation = self.derivations[route]
+        solved = self.at_reference(route)
         if q.kind == "acceleration":
-            return derivation.solution[self.coordinates.of(q.target, q.detail).a]
+            return solved[self.coordinates.of(q.target, q.detail).a]
         if q.kind == "angular_acceleration":
-            return derivation.solution[self.coordinates.of(q.target, "theta").a]
+            return solved[self.coordinates.of(q.target, "theta").a]
         if q.kind == "force":
-            return derivation.solution[joints.forces(self.scene.constraint(q.target))[q.detail]]
+            return solved[self.scene.constraint(q.target).unknowns()[q.detail]]
         if q.kind == "contact":
             return self._contact_expression(q.target, q.detail, derivation)
         raise AssertionError(q.kind)
 
+    def at_reference(self, route: str):
+        """One route's accelerations and forces in the reference configuration, at rest: where the
+        bodies are placed and released (every coordinate and velocity zero)."""
+        return self.derivations[route].at(self.coordinates.at_rest_in_reference())
+
     def _contact_expression(self, body: str, detail: str, derivation: Derivation) -> sp.Expr:
         """Quantities of a body on a surface, from one route's accelerations and forces."""
+        solved = self.at_reference(derivation.route)
         contact = self.scene.contact_of(body)
         surface = self.scene.surfaces[contact.surface]
-        forces = joints.forces(contact)
+        forces = contact.unknowns()
         if detail == "normal_force":
-            return derivation.solution[forces["normal"]]
+            return solved[forces["normal"]]
         if detail == "friction":
-            return derivation.solution[forces["friction"]]
+            return solved[forces["friction"]]
         if detail == "min_friction_coefficient":
-            ratio = tidy(derivation.solution[forces["friction"]] / derivation.solution[forces["normal"]])
+            ratio = tidy(solved[forces["friction"]] / solved[forces["normal"]])
             return self._magnitude(ratio, f"{body}.min_friction_coefficient")
         if detail == "min_release_height":
             return self._release_height(body, derivation.route)[0]
-        acceleration = sp.Matrix([derivation.solution[self.coordinates.of(body, k).a] for k in ("x", "y")])
+        acceleration = sp.Matrix([solved[self.coordinates.of(body, k).a] for k in ("x", "y")])
         along = tidy(surface.down.dot(acceleration))
         if detail == "acceleration.down_incline":
             return along
@@ -128,9 +135,9 @@ class Solution(CrossChecks):
         velocity = speed * loop.tangent_at(top, radius)
         state.update({coords.of(body, "x").u: velocity[0], coords.of(body, "y").u: velocity[1]})
         if self.scene.bodies[body].rotates:  # rolling: the contact point is at rest
-            rate = joints.velocity_conditions(contact, coords)[-1].xreplace(state)
+            rate = contact.conditions(coords)[-1].xreplace(state)
             state[coords.of(body, "theta").u] = sp.solve(rate, coords.of(body, "theta").u)[0]
-        normal = sp.simplify(derivation.solution.raw[joints.forces(contact)["normal"]].xreplace(state))
+        normal = sp.simplify(derivation.at(state).raw[contact.unknowns()["normal"]])
         critical = [s for s in sp.solve(normal, speed) if s.is_positive is not False]
         if len(critical) != 1:
             raise self.problem.error("ask", f"the normal force at the top of the loop vanishes at {critical}")
@@ -419,7 +426,9 @@ class Solution(CrossChecks):
         needed = self._needed_unknowns()
         # The general equations only when an asked quantity is read from them (a release height
         # needs the normal force at one point of the loop, shown in its own steps).
-        result = {route: [*d.steps, d.solving_step(u for u in d.unknowns if u in needed)] if needed else []
+        rest = self.coordinates.at_rest_in_reference()
+        result = {route: [*d.steps, d.solving_step([u for u in d.unknowns if u in needed], rest,
+                                                    "in the reference configuration, at rest")] if needed else []
                   for route, d in self.derivations.items()}
         if "small_oscillation" in kinds:
             for route in result:
@@ -446,9 +455,9 @@ class Solution(CrossChecks):
             elif q.kind == "angular_acceleration":
                 needed.add(self.coordinates.of(q.target, "theta").a)
             elif q.kind == "force":
-                needed.add(joints.forces(self.scene.constraint(q.target))[q.detail])
+                needed.add(self.scene.constraint(q.target).unknowns()[q.detail])
             elif q.kind == "contact":
-                forces = joints.forces(self.scene.contact_of(q.target))
+                forces = self.scene.contact_of(q.target).unknowns()
                 if q.detail in ("normal_force", "min_friction_coefficient"):
                     needed.add(forces["normal"])
                 if q.detail in ("friction", "min_friction_coefficient"):

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive import inertia, limits, units
-from derive.mechanics import gyroscope, joints, lagrange, many_bodies, orbits, paths, top
+from derive.mechanics import gyroscope, lagrange, many_bodies, orbits, paths, top
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
@@ -118,7 +118,7 @@ class CrossChecks:
             methods.add(method)
         for state in self._states_on_constraints():
             for unknown in lag.unknowns:
-                if agree(lag.solution.raw[unknown].xreplace(state), ne.solution.raw[unknown].xreplace(state),
+                if agree(lag.at(state).raw[unknown], ne.at(state).raw[unknown],
                          symbolic=False) is None:
                     raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {unknown}")
         asked = "symbolic" if methods <= {"symbolic"} else "symbolic or numeric"
@@ -134,8 +134,7 @@ class CrossChecks:
         rotational = sum((b.inertia * coords.angular_velocity(n) ** 2 / 2
                           for n, b in self.scene.bodies.items() if b.rotates), sp.Integer(0))
         _, potential = lagrange.energies(self.scene, coords)
-        power = sp.trigsimp(sp.expand(sum(((p.force * p.direction).dot(coords.material_velocity(p.body, p.offset))
-                                           for p in self.scene.pulls), sp.Integer(0))))
+        power = sp.trigsimp(sp.expand(lagrange.nonconservative_power(self.scene, coords)))
         return {"kinetic_translational": translational, "kinetic_rotational": rotational,
                 "potential": potential, "power_nonconservative": power}
 
@@ -145,10 +144,12 @@ class CrossChecks:
         ledger = self.energy_ledger()
         coords = self.coordinates
         rate = coords.ddt(ledger["kinetic_translational"] + ledger["kinetic_rotational"] + ledger["potential"])
-        solved = self.derivations["lagrange"].solution.raw
         for state in self._states_on_constraints():
-            left = rate.xreplace({c.a: solved[c.a] for c in coords.all}).xreplace(state)
-            if agree(left, ledger["power_nonconservative"].xreplace(state), symbolic=False) is None:
+            solved = self.derivations["lagrange"].at(state).raw
+            forces = {u: v for u, v in solved.items() if u not in coords.accelerations}
+            left = rate.xreplace(state).xreplace({c.a: solved[c.a] for c in coords.all})
+            right = ledger["power_nonconservative"].xreplace(state).xreplace(forces)
+            if agree(left, right, symbolic=False) is None:
                 raise CheckFailure(f"{self.problem.id}: the work-energy theorem fails")
         kind = "conserved" if ledger["power_nonconservative"] == 0 else "changes by the work of the applied forces"
         return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work")
@@ -158,7 +159,7 @@ class CrossChecks:
         with random velocities solving dg/dt = 0. Off the constraints the two routes' descriptions
         of a curved contact differ, so only states on them are compared."""
         coords = self.coordinates
-        rates = [coords.ddt(g) for c in self.scene.constraints for g in joints.gaps(c, coords)]
+        rates = [coords.ddt(g) for c in self.scene.constraints for g in c.gaps(coords)]
         at_reference = {c.q: 0 for c in coords.all}
         rng = random.Random(2)
         states = []

@@ -20,7 +20,7 @@ from derive import numeric
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import Problem
-from derive.scene import Contact
+from derive.parts.contact import Contact
 
 #: Round shapes whose moments students mix up (same size name: radius).
 ROUND = ("ring", "disk", "sphere", "spherical_shell", "cylinder", "cylindrical_shell")

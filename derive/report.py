@@ -13,6 +13,7 @@ import sympy as sp
 
 from derive import numeric, units
 from derive.answers import Solution
+from derive.mechanics.derivation import at_state
 from derive.scene import DYNAMIC_KINDS
 from derive.problem import Problem
 
@@ -83,7 +84,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
             answers[name]["approximation"] = {"exact": ask.exact, "relative_error": error}
     steps = solution.steps()
     kinds = {a.quantity.kind for a in problem.asks.values()}
-    equations = ({route: [sp.sstr(e) for e in d.equations] for route, d in solution.derivations.items()}
+    rest = solution.coordinates.at_rest_in_reference()
+    equations = ({route: [sp.sstr(at_state(e, rest)) for e in d.equations] for route, d in solution.derivations.items()}
                  if kinds & DYNAMIC_KINDS else {})
     checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
     energy = ({k: sp.sstr(v) for k, v in solution.energy_ledger().items()} if kinds & DYNAMIC_KINDS else {})
@@ -110,7 +112,7 @@ def as_json(result: dict) -> str:
 def as_text(result: dict) -> str:
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
     for route, equations in result["equations_of_motion"].items():
-        lines.append(f"Equations of motion, {route_title(route)}:")
+        lines.append(f"Equations of motion, {route_title(route)} (in the reference configuration, at rest):")
         lines += [f"  {e.replace('Eq(', '', 1)[:-1].replace(', ', ' = ', 1)}" for e in equations]
         lines.append("")
     lines.append("Answers:")

@@ -16,6 +16,10 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive import inertia
+from derive.parts import Part
+from derive.parts.contact import Contact
+from derive.parts.gravity import Gravity
+from derive.parts.surfaces import Circle, Plane, Surface
 
 #: Body shapes a scene may use, with the size names each needs (from the inertia module's shapes).
 SHAPE_SIZES: dict[str, tuple[str, ...]] = {
@@ -69,6 +73,8 @@ class Body:
     given_inertia: sp.Expr | None = None
     path: Path | None = None
     density: sp.Expr | None = None
+    at: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))  # the center of mass, reference configuration
+    angle: sp.Expr = sp.Integer(0)  # the body frame's angle from the world's axes there
 
     @property
     def rotates(self) -> bool:
@@ -83,139 +89,6 @@ class Body:
             return inertia.body_moment(self.shape, inertia.PLANAR_AXIS[self.shape], self.mass, self.sizes,
                                        self.density)[1]
         return inertia.central_moment(self.shape, self.mass, self.sizes)
-
-
-@dataclass(frozen=True)
-class Pin:
-    """A body turns about a point fixed in space (a fixed axle or a pivot).
-
-    `offset` is the pivot's position in the body's frame, from its center of mass, in the
-    reference configuration (all angles zero): (0, 0) is an axle through the center;
-    (0, d) a pivot a distance d above the center of mass, so the body hangs at angle 0.
-    """
-
-    name: str
-    body: str
-    offset: tuple[sp.Expr, sp.Expr]
-
-
-@dataclass(frozen=True)
-class WoundString:
-    """A light inextensible cord wound on the rim of `reel`, hanging vertically to `load`.
-
-    `side` is +1 when the cord leaves the rim on the right (x = +radius), -1 on the left.
-    """
-
-    name: str
-    reel: str
-    load: str
-    side: int = 1
-
-
-@dataclass(frozen=True)
-class Incline:
-    """A fixed plane surface descending to the right at `angle` (0 is a level floor).
-
-    Down-slope unit vector (cos angle, -sin angle), outward normal (sin angle, cos angle).
-    `height` is the drop from where bodies start (at rest) to the bottom, when given.
-    """
-
-    name: str
-    angle: sp.Expr
-    height: sp.Expr | None = None
-
-    @property
-    def down(self) -> sp.Matrix:
-        return sp.Matrix([sp.cos(self.angle), -sp.sin(self.angle)])
-
-    @property
-    def normal(self) -> sp.Matrix:
-        return sp.Matrix([sp.sin(self.angle), sp.cos(self.angle)])
-
-    # The geometry a contact needs, for a body whose center is at `center`, radius `radius`:
-    def gap(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
-        """Height of the center above where it touches (zero in the reference configuration)."""
-        return self.normal.dot(center)
-
-    def normal_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
-        """Unit vector from the surface toward the body's center: the normal force's direction."""
-        return self.normal
-
-    def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
-        """Distance the center has travelled along the surface (down the slope)."""
-        return self.down.dot(center)
-
-    def tangent_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
-        return self.down
-
-
-@dataclass(frozen=True)
-class Loop:
-    """A vertical circular track of radius `radius`, ridden on its inside; its lowest point is
-    below the origin, where a body's center rests in the reference configuration."""
-
-    name: str
-    radius: sp.Expr
-
-    def center(self, radius: sp.Expr) -> sp.Matrix:
-        """Center of the circle the body's center moves on (radius `self.radius - radius`)."""
-        return sp.Matrix([0, self.radius - radius])
-
-    def gap(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
-        offset = center - self.center(radius)
-        return (self.radius - radius) - sp.sqrt(offset.dot(offset))
-
-    def normal_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
-        offset = self.center(radius) - center
-        return offset / sp.sqrt(offset.dot(offset))
-
-    def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
-        """(R - r) times the polar angle of the center about the loop's center, counter-clockwise."""
-        offset = center - self.center(radius)
-        return (self.radius - radius) * sp.atan2(offset[0], -offset[1])
-
-    def tangent_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
-        offset = center - self.center(radius)
-        return sp.Matrix([-offset[1], offset[0]]) / sp.sqrt(offset.dot(offset))
-
-    def top(self, radius: sp.Expr) -> sp.Matrix:
-        return self.center(radius) + sp.Matrix([0, self.radius - radius])
-
-
-@dataclass(frozen=True)
-class Contact:
-    """A body resting on a surface: rolling without slipping (static friction and a normal
-    force) or sliding without friction (a normal force only). A round body touches the
-    surface a radius below its center; a point mass at its center."""
-
-    name: str
-    body: str
-    surface: str
-    rolling: bool
-
-
-@dataclass(frozen=True)
-class HubPull:
-    """A cord pulled with force `force` at `angle` above the horizontal, unwinding from the
-    underside of a hub of radius `hub_radius` on `body` (the tugged spool of the notes).
-
-    The cord leaves the hub at the tangent point r (sin angle, -cos angle) from the center,
-    fixed in space relative to the center while the hub turns under it.
-    """
-
-    name: str
-    body: str
-    force: sp.Expr
-    angle: sp.Expr
-    hub_radius: sp.Expr
-
-    @property
-    def direction(self) -> sp.Matrix:
-        return sp.Matrix([sp.cos(self.angle), sp.sin(self.angle)])
-
-    @property
-    def offset(self) -> sp.Matrix:
-        return self.hub_radius * sp.Matrix([sp.sin(self.angle), -sp.cos(self.angle)])
 
 
 @dataclass(frozen=True)
@@ -352,32 +225,22 @@ SYSTEMS = {
 ROTATION_QUANTITIES = ("angular_momentum.x", "angular_momentum.z", "angle_L_omega")
 
 
-@dataclass(frozen=True)
-class Gravity:
-    """A uniform gravitational field of strength `g` along -y."""
-
-    g: sp.Expr
-
-
-Constraint = Pin | WoundString | Contact
-
-
-def constraint_bodies(constraint: Constraint) -> tuple[str, ...]:
-    """The bodies a constraint couples."""
-    if isinstance(constraint, WoundString):
-        return (constraint.reel, constraint.load)
-    return (constraint.body,)
+def constraint_bodies(part: Part) -> tuple[str, ...]:
+    """The bodies a part couples."""
+    return part.bodies()
 
 
 @dataclass(frozen=True)
 class Scene:
-    """Bodies, constraints and loads; what `derive.mechanics` derives the motion of."""
+    """Bodies and parts: the constraints (parts with unknown forces: pins, sliders, welds, cords,
+    contacts), gravity and the other loads (forces, torques, springs, dampers, pulled cords);
+    what `derive.mechanics` derives the motion of."""
 
     bodies: dict[str, Body]
-    constraints: tuple[Constraint, ...] = ()
+    constraints: tuple[Part, ...] = ()
     gravity: Gravity | None = None
-    surfaces: dict[str, Incline | Loop] = field(default_factory=dict)
-    pulls: tuple[HubPull, ...] = ()
+    surfaces: dict[str, Surface] = field(default_factory=dict)
+    loads: tuple[Part, ...] = ()
     orbit: Orbit | None = None
     motions: dict[str, Motion] = field(default_factory=dict)
     events: tuple[Event, ...] = ()
@@ -387,7 +250,12 @@ class Scene:
     internal_forces: int | None = None
     rotations: dict[str, Rotation] = field(default_factory=dict)
 
-    def constraint(self, name: str) -> Constraint:
+    @property
+    def parts(self) -> tuple[Part, ...]:
+        """Every part that acts in the dynamics: the constraints, gravity, the other loads."""
+        return self.constraints + ((self.gravity,) if self.gravity is not None else ()) + self.loads
+
+    def constraint(self, name: str) -> Part:
         for c in self.constraints:
             if c.name == name:
                 return c
@@ -396,9 +264,7 @@ class Scene:
     def degrees_of_freedom(self) -> int:
         """Coordinates (x, y and, for rotating bodies, an angle) less the scalar constraints."""
         coordinates = sum(3 if b.rotates else 2 for b in self.bodies.values())
-        equations = sum(2 if isinstance(c, Pin) or isinstance(c, Contact) and c.rolling else 1
-                        for c in self.constraints)
-        return coordinates - equations
+        return coordinates - sum(len(c.unknowns()) for c in self.constraints)
 
     def component(self, body: str) -> "Scene":
         """The sub-scene of the bodies coupled to `body` through constraints."""
@@ -406,14 +272,14 @@ class Scene:
         while grew:
             grew = False
             for c in self.constraints:
-                coupled = set(constraint_bodies(c))
+                coupled = set(c.bodies())
                 if coupled & members and not coupled <= members:
                     members |= coupled
                     grew = True
-        constraints = tuple(c for c in self.constraints if set(constraint_bodies(c)) <= members)
+        constraints = tuple(c for c in self.constraints if set(c.bodies()) <= members)
         bodies = {name: b for name, b in self.bodies.items() if name in members}
-        pulls = tuple(p for p in self.pulls if p.body in members)
-        return Scene(bodies, constraints, self.gravity, self.surfaces, pulls)
+        loads = tuple(p for p in self.loads if set(p.bodies()) <= members)
+        return Scene(bodies, constraints, self.gravity, self.surfaces, loads)
 
     def contact_of(self, body: str) -> Contact | None:
         return next((c for c in self.constraints if isinstance(c, Contact) and c.body == body), None)
@@ -448,8 +314,6 @@ class Quantity:
     detail: str | None
 
 
-#: The forces each constraint kind exerts, as an answer path names them.
-CONSTRAINT_FORCES = {Pin: ("reaction.x", "reaction.y"), WoundString: ("tension",), Contact: ("normal", "friction")}
 
 #: What a body on a surface can be asked, besides what every body can.
 CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
@@ -551,9 +415,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             if rest in ("friction", "min_friction_coefficient") and not contact.rolling:
                 raise ValueError(f"{head} slides without friction: it has no {rest}")
             surface = scene.surfaces[contact.surface]
-            if rest in INCLINE_ONLY and not isinstance(surface, Incline):
+            if rest in INCLINE_ONLY and not isinstance(surface, Plane):
                 raise ValueError(f"{rest} is for a body on an incline")
-            if rest == "min_release_height" and not isinstance(surface, Loop):
+            if rest == "min_release_height" and not (isinstance(surface, Circle) and surface.side == "inside"):
                 raise ValueError("min_release_height is for a body riding a loop")
             if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
@@ -564,7 +428,7 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         raise ValueError(f"a body has {known}; not {rest!r}")
     names = {c.name: c for c in scene.constraints}
     if head in names:
-        allowed = CONSTRAINT_FORCES[type(names[head])]
+        allowed = tuple(names[head].unknowns())
         if rest not in allowed:
             raise ValueError(f"{head} has {', '.join(allowed)}; not {rest!r}")
         return Quantity("force", head, rest)

@@ -9,22 +9,37 @@ Every field goes through the `derive.reader.Reader`, so errors name the file and
 """
 from __future__ import annotations
 
+import dataclasses
+
 import sympy as sp
 
 from derive import inertia, units
 from derive.errors import InputError
+from derive.parts import cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
+from derive.parts.contact import Contact
+from derive.parts.cord import Attachment, Cord
+from derive.parts.pin import Pin
+from derive.parts.places import Places
+from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (SHAPE_SIZES, TIME, Body, Bounce, Contact, Gravity, HubPull, Incline, InternalTurn, Loop,
-                          Motion, Orbit, Pin, Rotation, Scene, Skid, SpinningWheel, StandingWave, Stick, Top,
-                          WoundString)
+from derive.scene import (SHAPE_SIZES, TIME, Body, Bounce, InternalTurn, Motion, Orbit, Rotation, Scene, Skid,
+                          SpinningWheel, StandingWave, Stick, Top)
+
+#: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
+JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read}
+LOADS = {"gravity": gravity.read, "force": force.read, "torque": torque.read, "spring": spring.read,
+         "torsional_spring": torsional_spring.read, "damper": damper.read}
+#: A body's keys that place it: its center of mass in the reference configuration, and its angle.
+PLACE_KEYS = ("at", "angle")
+
 
 def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     field = f"scene.bodies.{name}"
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "path",
-                                    "rotation", *MOTION_KEYS, *all_sizes))
+                          optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
+                                    "path", "rotation", "angle", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
@@ -62,16 +77,21 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         if shape != "point" or "joint" in spec or "on" in spec:
             raise reader.fail(f"{field}.path", "a prescribed path is for a free point mass")
         path = _path(reader, spec["path"], f"{field}.path", name)
-    body = Body(name, shape, mass, sizes, given, path, density)
-    pin = _joint(reader, body, spec.get("joint"), f"{field}.joint")
+    at = (_vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec
+          else (sp.Integer(0), sp.Integer(0)))
+    angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
+    if angle != 0 and shape == "point":
+        raise reader.fail(f"{field}.angle", "a point mass has no orientation")
+    body = Body(name, shape, mass, sizes, given, path, density, at, angle)
+    joint = _joint(reader, body, spec.get("joint"), f"{field}.joint")
     about = spec.get("inertia_about", "center")
-    if about not in ("center", "pivot") or about == "pivot" and (given is None or pin is None or pin.name != "pivot"):
+    if about not in ("center", "pivot") or about == "pivot" and (given is None or joint is None or joint.name != "pivot"):
         raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body on a pivot joint")
     if about == "pivot":
         # Given about the pivot: the center-of-mass moment follows from the parallel-axis theorem.
-        distance = pin.offset[0] ** 2 + pin.offset[1] ** 2
-        body = Body(name, shape, mass, sizes, given - mass * distance)
-    return body, pin
+        distance = joint.offset[0] ** 2 + joint.offset[1] ** 2
+        body = Body(name, shape, mass, sizes, given - mass * distance, at=at, angle=angle)
+    return body, joint
 
 
 COORDINATE_UNITS = {"x": "m", "y": "m", "z": "m", "r": "m", "phi": "rad", "theta": "rad"}
@@ -208,10 +228,13 @@ def _path(reader: Reader, raw, field: str, body: str) -> MotionPath:
     return MotionPath(kind, tuple(functions))
 
 
-def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict[str, Incline], field: str) -> Contact | None:
+def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str) -> Contact | None:
+    """`on: SURFACE` with `contact: rolling` (a round body's default) or `sliding`, and
+    `friction: {static: mu_s, kinetic: mu_k}` when the file gives the coefficients."""
     if "on" not in spec:
-        if "contact" in spec:
-            raise reader.fail(f"{field}.contact", "a contact needs a surface: on: SURFACE")
+        for key in ("contact", "friction"):
+            if key in spec:
+                raise reader.fail(f"{field}.{key}", "a contact needs a surface: on: SURFACE")
         return None
     if spec["on"] not in surfaces:
         raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(surfaces) or 'none'})")
@@ -222,33 +245,54 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict[str, Incline
         raise reader.fail(f"{field}.contact", "expected rolling or sliding")
     if kind == "rolling" and "radius" not in body.sizes:
         raise reader.fail(f"{field}.contact", f"a {body.shape} has no radius to roll on")
-    return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling")
+    static = kinetic = None
+    if "friction" in spec:
+        friction = reader.mapping(spec["friction"], f"{field}.friction", optional=("static", "kinetic"))
+        if not friction:
+            raise reader.fail(f"{field}.friction", "give static: mu_s, kinetic: mu_k or both")
+        static, kinetic = (reader.positive(friction[k], f"{field}.friction.{k}", "1", "a coefficient of friction")
+                           if k in friction else None for k in ("static", "kinetic"))
+        if kind == "rolling" and static is None:
+            raise reader.fail(f"{field}.friction", "a body rolls as long as static friction holds it: give static: "
+                                                   "mu_s (and kinetic: mu_k for when it slips)")
+    return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling", static, kinetic)
 
 
-def _surfaces(reader: Reader, raw) -> dict[str, Incline | Loop]:
+def _surfaces(reader: Reader, raw) -> dict:
+    """`plane: {angle, through, height}` (`incline` is the same), `circle: {radius, center, side}`
+    (`loop: {radius}` is a circle ridden inside)."""
     raw = reader.mapping(raw or {}, "scene.surfaces", free=True)
     result = {}
     for name, spec in raw.items():
         field = f"scene.surfaces.{name}"
         reader.name(name, field, "a surface name")
-        spec = reader.mapping(spec, field, optional=("incline", "loop"))
+        spec = reader.mapping(spec, field, optional=("plane", "incline", "circle", "loop"))
         if len(spec) != 1:
-            raise reader.fail(field, "expected one surface kind (incline, loop)")
-        if "loop" in spec:
-            loop = reader.mapping(spec["loop"], f"{field}.loop", required=("radius",))
-            result[name] = Loop(name, reader.positive(loop["radius"], f"{field}.loop.radius", "m", "a radius"))
+            raise reader.fail(field, "expected one surface kind (plane or incline, circle or loop)")
+        (kind, details), = spec.items()
+        where = f"{field}.{kind}"
+        if kind in ("circle", "loop"):
+            details = reader.mapping(details, where, required=("radius",),
+                                     optional=("center", "side") if kind == "circle" else ())
+            side = details.get("side", "inside")
+            if side not in ("inside", "outside"):
+                raise reader.fail(f"{where}.side", "inside (a bowl, a loop) or outside (a dome)")
+            center = _vector(reader, details["center"], f"{where}.center", "m", "a position") \
+                if "center" in details else None
+            result[name] = Circle(name, reader.positive(details["radius"], f"{where}.radius", "m", "a radius"),
+                                  center, side)
             continue
-        incline = reader.mapping(spec["incline"] or {}, f"{field}.incline", optional=("angle", "height"))
-        if "angle" in incline:
-            angle = reader.dimensioned(incline["angle"], f"{field}.incline.angle", "rad", "an angle")
+        details = reader.mapping(details or {}, where, optional=("angle", "height", "through"))
+        if "angle" in details:
+            angle = reader.dimensioned(details["angle"], f"{where}.angle", "rad", "an angle")
             if not (angle.is_nonnegative and (sp.pi / 2 - angle).is_positive) and not angle.free_symbols:
-                raise reader.fail(f"{field}.incline.angle", "an incline's angle lies in [0, pi/2)")
+                raise reader.fail(f"{where}.angle", "a plane's angle lies in [0, pi/2) (it descends to the right)")
         else:
             angle = reader.unspecified(f"angle_{name}", "rad")
-        height = None
-        if "height" in incline:
-            height = reader.positive(incline["height"], f"{field}.incline.height", "m", "a height")
-        result[name] = Incline(name, angle, height)
+        height = reader.positive(details["height"], f"{where}.height", "m", "a height") if "height" in details else None
+        through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
+            if "through" in details else (sp.Integer(0), sp.Integer(0))
+        result[name] = Plane(name, angle, height, through)
     return result
 
 
@@ -268,82 +312,187 @@ def _joint(reader: Reader, body: Body, spec, field: str) -> Pin | None:
     return Pin("pivot", body.name, (0, distance if side == "above" else -distance))
 
 
-def _constraint(reader: Reader, index: int, spec, bodies: dict[str, Body]) -> WoundString:
+def _string(reader: Reader, index: int, spec, bodies: dict[str, Body]) -> tuple[str, dict]:
+    """The shorthand `constraints: [{string: {wound_on: REEL, hangs: LOAD, side: right}}]`: a cord
+    wound on the reel's rim, its run straight down to the load's center. Returns the cord's name
+    and the cord in the general form (`cords:`), with where the load hangs when it has no `at`."""
     field = f"scene.constraints[{index}]"
     spec = reader.mapping(spec, field, optional=("string",))
     if len(spec) != 1:
-        raise reader.fail(field, "expected one constraint kind (string)")
-    cord = reader.mapping(spec["string"], f"{field}.string", required=("wound_on", "hangs"), optional=("side", "name"))
+        raise reader.fail(field, "expected one constraint kind (string); joints and cords have their own sections")
+    cord_spec = reader.mapping(spec["string"], f"{field}.string", required=("wound_on", "hangs"),
+                               optional=("side", "name"))
     for key in ("wound_on", "hangs"):
-        if cord[key] not in bodies:
-            raise reader.fail(f"{field}.string.{key}", f"no body {cord[key]!r} (bodies: {', '.join(bodies)})")
-    reel = bodies[cord["wound_on"]]
+        if cord_spec[key] not in bodies:
+            raise reader.fail(f"{field}.string.{key}", f"no body {cord_spec[key]!r} (bodies: {', '.join(bodies)})")
+    reel = bodies[cord_spec["wound_on"]]
     if "radius" not in reel.sizes:
         raise reader.fail(f"{field}.string.wound_on", f"a cord winds on a disk or a ring, not a {reel.shape}")
-    if cord["hangs"] == cord["wound_on"]:
+    if cord_spec["hangs"] == cord_spec["wound_on"]:
         raise reader.fail(f"{field}.string.hangs", "a cord cannot hang from the body it is wound on")
-    side = cord.get("side", "right")
+    side = cord_spec.get("side", "right")
     if side not in ("right", "left"):
         raise reader.fail(f"{field}.string.side", "expected right or left")
-    name = cord.get("name", "string")
+    name = cord_spec.get("name", "string")
     reader.name(name, f"{field}.string.name", "a cord's name")
-    return WoundString(name, reel.name, cord["hangs"], 1 if side == "right" else -1)
+    radius = reel.sizes["radius"]
+    below = sp.Matrix(reel.at) + sp.Matrix([radius if side == "right" else -radius, -3 * radius])
+    return name, {"path": [{"wound": reel.name, "side": side}, cord_spec["hangs"]], "field": f"{field}.string",
+                  "hangs": (cord_spec["hangs"], tuple(below))}
+
+
+def _placed(reader: Reader, bodies: dict[str, Body], specs: dict, surfaces: dict, hanging: dict) -> dict[str, Body]:
+    """Bodies without `at`, placed: on a surface, touching it where it passes its reference point;
+    hanging from a cord given in shorthand, below where the cord leaves the reel."""
+    result = dict(bodies)
+    for name, body in bodies.items():
+        if "at" in specs[name]:
+            continue
+        if "on" in specs[name] and specs[name]["on"] in surfaces:
+            radius = body.sizes.get("radius", sp.Integer(0))
+            result[name] = dataclasses.replace(body, at=tuple(surfaces[specs[name]["on"]].touching(radius)))
+        elif name in hanging:
+            result[name] = dataclasses.replace(body, at=hanging[name])
+    return result
+
+
+def _named(reader: Reader, raw, section: str) -> dict:
+    raw = reader.mapping(raw or {}, f"scene.{section}", free=True)
+    for name in raw:
+        reader.name(name, f"scene.{section}.{name}", f"a name in {section}")
+    return raw
+
+
+def _loads(reader: Reader, raw, places: Places) -> tuple[list, list]:
+    """`loads:` a list of `{KIND: SPEC}` (LOADS; `pull` is the shorthand of a cord wound on a hub
+    and pulled by a force). Returns (gravity, if any, in a list; the other loads)."""
+    if not isinstance(raw, list):
+        raise reader.fail("scene.loads", "expected a list")
+    found, others = [], []
+    counts: dict[str, int] = {}
+    for i, load in enumerate(raw):
+        field = f"scene.loads[{i}]"
+        load = reader.mapping(load, field, optional=(*LOADS, "pull"))
+        if len(load) != 1:
+            raise reader.fail(field, f"expected one load kind ({', '.join([*LOADS, 'pull'])})")
+        (kind, spec), = load.items()
+        counts[kind] = counts.get(kind, 0) + 1
+        name = spec.get("name") if isinstance(spec, dict) and "name" in spec else f"{kind}{counts[kind]}"
+        if kind == "pull":
+            others.append(_pull(reader, i, spec, places))
+        elif kind == "gravity":
+            if found:
+                raise reader.fail(field, "gravity is given twice")
+            found.append(LOADS[kind](reader, places, "gravity", spec, f"{field}.gravity"))
+        else:
+            reader.name(name, f"{field}.{kind}.name", "a load's name")
+            others.append(LOADS[kind](reader, places, name, spec, f"{field}.{kind}"))
+    return found, others
+
+
+def _pull(reader: Reader, index: int, spec, places: Places) -> Cord:
+    """The shorthand `pull: {on: SPOOL, force: F, angle: theta, hub_radius: r}`: a cord wound on a
+    hub of radius r, leaving it from below (the tugged spool of the notes), pulled with force F
+    toward theta above the horizontal."""
+    field = f"scene.loads[{index}].pull"
+    pull = reader.mapping(spec, field, required=("on", "force", "angle", "hub_radius"))
+    bodies = places.bodies
+    if pull["on"] not in bodies or not bodies[pull["on"]].rotates:
+        raise reader.fail(f"{field}.on", f"no turning body {pull['on']!r} (bodies: {', '.join(bodies)})")
+    force = reader.positive(pull["force"], f"{field}.force", "N", "a pulling force")
+    angle = reader.dimensioned(pull["angle"], f"{field}.angle", "rad", "an angle")
+    hub = reader.positive(pull["hub_radius"], f"{field}.hub_radius", "m", "a hub radius")
+    # Leaving the hub's underside toward the pull, the cord goes around it counter-clockwise.
+    return Cord(f"pull{index}", (Attachment("wound", pull["on"], radius=hub, turn=1, grips=True),
+                                 Attachment("pulled", force=force, angle=angle)))
+
+
+def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
+    """Before anything is derived: each body on a surface touches it, and no cord pulls it
+    straight off or into its surface (a body resting on a surface does not hang from a cord)."""
+    from derive.mechanics.kinematics import Coordinates
+
+    coords = Coordinates(scene)
+    rest = coords.at_rest_in_reference()
+    for c in scene.constraints:
+        if not isinstance(c, Contact):
+            continue
+        surface, body = scene.surfaces[c.surface], scene.bodies[c.body]
+        radius = body.sizes.get("radius", sp.Integer(0))
+        off = places.sample(surface.gap(sp.Matrix(body.at), radius))
+        scale = 1 + max(abs(places.sample(v)) for v in body.at)
+        if abs(off) > 1e-9 * scale:
+            raise reader.fail(f"scene.bodies.{c.body}.at", f"the {c.body} does not touch {c.surface} there (it is "
+                                                           f"{off:.4g} m {'above' if off > 0 else 'inside'} it)")
+        normal = surface.normal_at(coords.position(c.body), radius).xreplace(rest)
+        for part in scene.constraints + scene.loads:
+            if not isinstance(part, Cord):
+                continue
+            for segment in part.segments():
+                for r in segment.runs(coords):
+                    if c.body in (r.start.body, r.end.body):
+                        direction = r.direction.xreplace(rest)
+                        across = places.sample(direction[0] * normal[1] - direction[1] * normal[0])
+                        if abs(across) < 1e-9:
+                            raise reader.fail(f"scene.cords.{part.name}", f"the cord pulls the {c.body} straight "
+                                              f"along the normal of {c.surface}: a body resting on a surface does not "
+                                              "hang from a cord (place the pulley so that the run is along the "
+                                              "surface)")
 
 
 def read_scene(reader: Reader, raw) -> Scene:
     """The scene section, validated, as a Scene."""
-    raw = reader.mapping(raw, "scene", optional=("bodies", "surfaces", "constraints", "loads", "orbit", "events", "top",
-                                                 "spinning_wheel", "standing_wave", "internal_forces"))
+    raw = reader.mapping(raw, "scene", optional=("bodies", "points", "surfaces", "joints", "cords", "constraints",
+                                                 "loads", "orbit", "events", "top", "spinning_wheel", "standing_wave",
+                                                 "internal_forces"))
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     top = _top(reader, raw["top"]) if "top" in raw else None
     wheel = _wheel(reader, raw["spinning_wheel"]) if "spinning_wheel" in raw else None
     wave = _wave(reader, raw["standing_wave"]) if "standing_wave" in raw else None
     internal = _internal_forces(reader, raw["internal_forces"]) if "internal_forces" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
+    ground = {name: _vector(reader, v, f"scene.points.{name}", "m", "a position")
+              for name, v in _named(reader, raw.get("points"), "points").items()}
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
     if not bodies_raw and all(s is None for s in (orbit, top, wheel, wave, internal)):
         raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a top, a spinning_wheel)")
     bodies, pins = {}, []
     for name, spec in bodies_raw.items():
         reader.name(name, f"scene.bodies.{name}", "a body name")
-        body, pin = _body(reader, name, spec)
+        if name in ground or name == "ground":
+            raise reader.fail(f"scene.bodies.{name}", "the name is also a point of the ground")
+        body, joint = _body(reader, name, spec)
         bodies[name] = body
-        pins += [pin] if pin else []
-        contact = _contact(reader, body, spec, surfaces, f"scene.bodies.{name}")
-        pins += [contact] if contact else []
-    # A joint is named "axle" or "pivot"; with several of a kind, "<body>_axle".
-    kinds = [p.name for p in pins]
-    pins = [p if kinds.count(p.name) == 1 or not isinstance(p, Pin) else Pin(f"{p.body}_{p.name}", p.body, p.offset)
-            for p in pins]
+        pins += [joint] if joint else []
     constraints_raw = raw.get("constraints") or []
     if not isinstance(constraints_raw, list):
         raise reader.fail("scene.constraints", "expected a list")
-    constraints = tuple(pins) + tuple(_constraint(reader, i, c, bodies) for i, c in enumerate(constraints_raw))
-    names = [c.name for c in constraints]
+    strings = [_string(reader, i, c, bodies) for i, c in enumerate(constraints_raw)]
+    hanging = {cord["hangs"][0]: cord["hangs"][1] for _, cord in strings}
+    bodies = _placed(reader, bodies, bodies_raw, surfaces, hanging)
+    places = Places(reader, bodies, ground)
+    contacts = [c for n, spec in bodies_raw.items()
+                if (c := _contact(reader, bodies[n], spec, surfaces, f"scene.bodies.{n}")) is not None]
+    # A joint given with its body is named "axle" or "pivot"; with several of a kind, "<body>_axle".
+    kinds = [p.name for p in pins]
+    pins = [p if kinds.count(p.name) == 1 else Pin(f"{p.body}_{p.name}", p.body, p.offset) for p in pins]
+    joints = []
+    for name, spec in _named(reader, raw.get("joints"), "joints").items():
+        field = f"scene.joints.{name}"
+        kind = [k for k in JOINTS if isinstance(spec, dict) and k in spec]
+        if len(kind) != 1:
+            raise reader.fail(field, f"expected one joint kind ({', '.join(JOINTS)})")
+        joints.append(JOINTS[kind[0]](reader, places, name, spec, field))
+    cords = [cord.read(reader, places, name, spec["path"], spec["field"]) for name, spec in strings]
+    cords += [cord.read(reader, places, name, path, f"scene.cords.{name}")
+              for name, path in _named(reader, raw.get("cords"), "cords").items()]
+    found, loads = _loads(reader, raw.get("loads") or [], places)
+    constraints = [*pins, *contacts, *joints, *(c for c in cords if c.unknowns())]
+    loads = [*(c for c in cords if not c.unknowns()), *loads]
+    names = [p.name for p in constraints + loads]
     duplicate = next((n for n in names if names.count(n) > 1 or n in bodies), None)
     if duplicate:
-        raise reader.fail("scene.constraints", f"the name {duplicate!r} is used twice")
-    gravity, pulls = None, []
-    loads = raw.get("loads") or []
-    if not isinstance(loads, list):
-        raise reader.fail("scene.loads", "expected a list")
-    for i, load in enumerate(loads):
-        field = f"scene.loads[{i}]"
-        load = reader.mapping(load, field, optional=("gravity", "pull"))
-        if len(load) != 1:
-            raise reader.fail(field, "expected one load kind (gravity, pull)")
-        if "gravity" in load:
-            gravity = Gravity(reader.positive(load["gravity"], f"{field}.gravity", "m/s^2", "a gravitational field"))
-            continue
-        pull = reader.mapping(load["pull"], f"{field}.pull", required=("on", "force", "angle", "hub_radius"))
-        if pull["on"] not in bodies or not bodies[pull["on"]].rotates:
-            raise reader.fail(f"{field}.pull.on", f"no turning body {pull['on']!r} (bodies: {', '.join(bodies)})")
-        pulls.append(HubPull(
-            f"pull{i}", pull["on"],
-            reader.positive(pull["force"], f"{field}.pull.force", "N", "a pulling force"),
-            reader.dimensioned(pull["angle"], f"{field}.pull.angle", "rad", "an angle"),
-            reader.positive(pull["hub_radius"], f"{field}.pull.hub_radius", "m", "a hub radius"),
-        ))
+        raise reader.fail("scene", f"the name {duplicate!r} is used twice (bodies, joints, cords and loads)")
     motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
     events = _events(reader, raw.get("events") or [], bodies)
     # A velocity is the state before an event, or the speed of a body rolling without slipping.
@@ -353,12 +502,15 @@ def read_scene(reader: Reader, raw) -> Scene:
     if moving and not events:
         raise reader.fail(f"scene.bodies.{moving[0]}", "velocities and spins describe the state before an event: "
                           "add the event")
-    if top is not None and gravity is None:
+    gravity_part = found[0] if found else None
+    if top is not None and gravity_part is None:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
     rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
                  for n, spec in bodies_raw.items() if "rotation" in spec}
-    return Scene(bodies, constraints, gravity, surfaces, tuple(pulls), orbit, motions, events, top, wheel, wave,
-                 internal, rotations)
+    scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, events, top, wheel,
+                  wave, internal, rotations)
+    _check_geometry(reader, places, scene)
+    return scene
 
 
 def _wave(reader: Reader, raw) -> StandingWave:

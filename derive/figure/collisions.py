@@ -6,7 +6,8 @@ import math
 import sympy as sp
 
 from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt
-from derive.scene import Bounce, Pin, Stick
+from derive.parts.pin import Pin
+from derive.scene import Bounce, Stick
 
 
 def _impact(fig: _Figure) -> None:

@@ -4,7 +4,9 @@ from __future__ import annotations
 import math
 
 from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt, _unit
-from derive.scene import Body, InternalTurn, Pin, WoundString
+from derive.parts.cord import Cord
+from derive.parts.pin import Pin
+from derive.scene import Body, InternalTurn
 
 
 def _pinned(fig: _Figure) -> None:
@@ -71,11 +73,12 @@ def _axles(fig: _Figure, bodies: list[Body], at) -> None:
     for turn in (e for e in scene.events if isinstance(e, InternalTurn)):
         k = next((i for i, b in enumerate(ordered) if b.name == turn.body), 0)
         fig.spin(at, radii[k] * aspect * 0.75, 1, fig.tex(turn.angle), at=-90)
-    strings = [c for c in scene.constraints if isinstance(c, WoundString)]
+    strings = [c for c in scene.constraints if isinstance(c, Cord) and c.path[0].kind == "wound"
+               and c.path[-1].kind == "point" and len(c.path) == 2]
     for cord in strings:
         _string(fig, cord, at, r)
     if fig.tex(reel.sizes.get("radius")):
-        angle = 135 if strings and strings[0].side > 0 else 45
+        angle = 135 if strings and -strings[0].path[0].turn > 0 else 45
         fig.line(at, _add(at, _unit(angle), r), "thin")
         fig.label(_add(at, _unit(angle), r * 0.55), _unit(angle + 90), fig.m(reel.sizes['radius']))
     if len(ordered) == 1:
@@ -84,12 +87,12 @@ def _axles(fig: _Figure, bodies: list[Body], at) -> None:
         fig.gravity_arrow(at, reel)
 
 
-def _string(fig: _Figure, cord: WoundString, center, radius: float) -> None:
+def _string(fig: _Figure, cord: Cord, center, radius: float) -> None:
     """The cord from the rim (tangent, vertical) down to its load, with tension and gravity."""
     scene = fig.scene
-    side = cord.side
+    side = -cord.path[0].turn  # wound clockwise: it leaves the rim on the right
     top = _add(center, (side * radius, 0))
-    load = scene.bodies[cord.load]
+    load = scene.bodies[cord.path[-1].body]
     half = 0.3
     block = _add(top, (0, -2.4))
     fig.line(top, _add(block, (0, half)), "thick")

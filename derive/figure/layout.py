@@ -9,7 +9,9 @@ from derive.figure.orbits import _orbit
 from derive.figure.paths import _paths
 from derive.figure.surfaces import _on_surface
 from derive.figure.systems import _internal, _rotation, _top, _wave, _wheel
-from derive.scene import Bounce, Contact, Pin, Stick
+from derive.parts.contact import Contact
+from derive.parts.pin import Pin
+from derive.scene import Bounce, Stick
 
 
 def _has(kind):

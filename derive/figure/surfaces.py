@@ -7,7 +7,10 @@ import sympy as sp
 
 from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit
 from derive.render import tex_escape
-from derive.scene import Body, Contact, HubPull, Loop, Skid
+from derive.parts.contact import Contact
+from derive.parts.cord import Cord
+from derive.parts.surfaces import Circle
+from derive.scene import Body, Skid
 
 
 def _on_surface(fig: _Figure) -> None:
@@ -16,7 +19,7 @@ def _on_surface(fig: _Figure) -> None:
     scene = fig.scene
     contacts = [c for c in scene.constraints if isinstance(c, Contact)]
     surface = scene.surfaces[contacts[0].surface]
-    if isinstance(surface, Loop):
+    if isinstance(surface, Circle):
         _loop(fig, surface, contacts)
         return
     angle = fig.num(surface.angle, 0.5)
@@ -74,7 +77,8 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
     x = 1.4
     for contact in contacts:
         body = scene.bodies[contact.body]
-        pull = next((p for p in scene.pulls if p.body == body.name), None)
+        pull = next((p for p in scene.loads if isinstance(p, Cord) and p.path[0].body == body.name
+                     and p.path[-1].kind == "pulled"), None)
         r = 1.0 if pull else 0.7
         center = (x, r)
         fig.body(body, center, r, block=body.shape == "point")
@@ -99,9 +103,10 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
         x += 2 * r + 1.2
 
 
-def _spool(fig: _Figure, body: Body, pull: HubPull, center, r: float) -> None:
+def _spool(fig: _Figure, body: Body, cord: Cord, center, r: float) -> None:
     """A spool: its hub, the cord leaving the hub's underside at the pull's angle, the radii."""
-    ratio = _clamp(fig.num(pull.hub_radius, 1) / fig.size(body, "radius", 2), 0.25, 0.7)
+    hub_radius, pull = cord.path[0].radius, cord.path[-1]
+    ratio = _clamp(fig.num(hub_radius, 1) / fig.size(body, "radius", 2), 0.25, 0.7)
     hub = r * ratio
     fig.add(f"\\draw[fill=gray!35] {_pt(center)} circle ({_f(hub)}); \\fill {_pt(center)} circle (0.04);")
     angle = _clamp(fig.num(pull.angle, 0.5), 0.15, 1.2)
@@ -117,10 +122,10 @@ def _spool(fig: _Figure, body: Body, pull: HubPull, center, r: float) -> None:
     fig.label(_add(center, _unit(120), r * 0.7), _unit(210), fig.m(body.sizes.get('radius'))
               if fig.tex(body.sizes.get("radius")) else None)
     fig.line(center, _add(center, _unit(200), hub), "thin")
-    fig.label(_add(center, _unit(200), hub + 0.02), (-1, 0), fig.m(pull.hub_radius))
+    fig.label(_add(center, _unit(200), hub + 0.02), (-1, 0), fig.m(hub_radius))
 
 
-def _loop(fig: _Figure, loop: Loop, contacts: list[Contact]) -> None:
+def _loop(fig: _Figure, loop: Circle, contacts: list[Contact]) -> None:
     """A loop-the-loop: a ramp from the release height into a circular track, the bodies at the
     top of the ramp, the loop's radius and the release height."""
     scene = fig.scene

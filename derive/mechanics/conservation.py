@@ -8,10 +8,13 @@ Constraints that do no work (rolling without slipping, frictionless contacts, pi
 cords) are what make this valid: the scenes here have no others.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Contact, Gravity, Incline, Scene
+>>> from derive.parts.contact import Contact
+>>> from derive.parts.gravity import Gravity
+>>> from derive.parts.surfaces import Plane
+>>> from derive.scene import Body, Scene
 >>> M, R, g, H, a = sp.symbols("M R g H alpha", positive=True)
 >>> scene = Scene({"hoop": Body("hoop", "ring", M, {"radius": R})},
-...               (Contact("c", "hoop", "ramp", True),), Gravity(g), {"ramp": Incline("ramp", a, H)})
+...               (Contact("c", "hoop", "ramp", True),), Gravity(g), {"ramp": Plane("ramp", a, H)})
 >>> speed_after_drop(scene, "hoop", H).speed
 sqrt(H*g)
 """
@@ -21,9 +24,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics import joints
 from derive.mechanics.derivation import Step, root, tidy
-from derive.mechanics.kinematics import Coordinates
+from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies
 from derive.scene import Scene
 
@@ -60,7 +62,7 @@ def speed_after_drop(scene: Scene, body: str, drop: sp.Expr) -> EnergyBalance:
 
 def _kinetic_per_speed_squared(scene: Scene, coords: Coordinates, body: str, kinetic: sp.Expr) -> sp.Expr:
     """T / v^2, with every velocity expressed through the body's by the constraints dg/dt = 0."""
-    rates = [coords.ddt(gap) for c in scene.constraints for gap in joints.gaps(c, coords)]
+    rates = [coords.ddt(gap) for c in scene.constraints for gap in c.gaps(coords)]
     velocities = [c.u for c in coords.all]
     if len(velocities) - len(rates) != 1:
         raise ConservationError(f"energy alone fixes one unknown speed; {body}'s system has "
@@ -89,7 +91,7 @@ def _potential_change(scene: Scene, coords: Coordinates, body: str, potential: s
         return -scene.bodies[body].mass * scene.gravity.g * drop
     # Several bodies: the constraints, solved at position level, fix how the others move.
     try:
-        dependent = joints.solve_gaps(scene, coords)
+        dependent = solve_gaps(scene, coords)
     except ValueError as error:
         raise ConservationError(str(error)) from None
     (coordinate,) = [c for c in coords.all if c.q not in dependent]

@@ -48,18 +48,50 @@ class Solved(Mapping):
 class Derivation:
     """The equations of motion of one route, solved for accelerations and constraint forces.
 
-    `steps` hold the derivation up to the equations; `solving_step` adds the solution for the
-    unknowns a question needs.
+    `solution` solves them in general (every coordinate and velocity a symbol), on first use;
+    `at(state)` solves them with some coordinates and velocities given (the reference
+    configuration at rest, a state of the motion): with the state put in first, the linear system
+    is far smaller than the general one. `steps` hold the derivation up to the equations;
+    `solving_step` adds the solution for the unknowns a question needs.
     """
 
     route: str
     equations: list[sp.Eq]
     unknowns: list[sp.Symbol]
-    solution: Solved
     steps: list[Step] = field(default_factory=list)
+    _states: dict = field(default_factory=dict, repr=False)
 
-    def solving_step(self, unknowns) -> Step:
-        return Step("Solving", tuple(sp.Eq(u, self.solution[u]) for u in unknowns))
+    @property
+    def solution(self) -> Solved:
+        return self.at({})
+
+    def at(self, state: dict[sp.Symbol, sp.Expr]) -> Solved:
+        """The solution with `state` (coordinates and velocities, some or all) put in."""
+        key = tuple(sorted(state.items(), key=lambda item: str(item[0])))
+        if key not in self._states:
+            with limits.time_limit(f"solving the equations of {self.route.replace('_', '-')}"):
+                self._states[key] = solve_linear([e.xreplace(state) for e in self.equations], self.unknowns)
+        return self._states[key]
+
+    def solving_step(self, unknowns, state: dict[sp.Symbol, sp.Expr], where: str) -> Step:
+        solved = self.at(state)
+        return Step(f"Solving {where}", tuple(sp.Eq(u, solved[u]) for u in unknowns))
+
+
+def simplest(expr: sp.Expr) -> sp.Expr:
+    """Expanded, with sin^2 + cos^2 folded where the directions of surfaces put it."""
+    expr = sp.expand(expr)
+    return sp.expand(sp.trigsimp(expr)) if expr.has(sp.sin, sp.cos) else expr
+
+
+def at_state(equation: sp.Eq, state: dict) -> sp.Eq:
+    """An equation with a state put in, each side in its simplest form (for the steps)."""
+    return sp.Eq(simplest(equation.lhs.xreplace(state)), simplest(equation.rhs.xreplace(state)))
+
+
+def rest_positions(coords) -> dict[sp.Symbol, sp.Expr]:
+    """The reference configuration: every coordinate zero, the velocities left free."""
+    return {c.q: 0 for c in coords.all}
 
 
 def tidy(expr: sp.Expr) -> sp.Expr:
@@ -88,7 +120,13 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
     Raises ValueError when the system has no unique solution (an impossible or redundant
     set of constraints).
     """
-    matrix, rhs = sp.linear_eq_to_matrix([e.lhs - e.rhs for e in equations], unknowns)
+    # Linear in the unknowns: the matrix is the Jacobian and the rest is what is left at zero (no
+    # expansion of the general equations, which a cord's exact geometry makes long).
+    residuals = sp.Matrix([e.lhs - e.rhs for e in equations])
+    matrix = residuals.jacobian(unknowns)
+    rhs = -residuals.xreplace({u: 0 for u in unknowns})
+    if matrix.free_symbols & set(unknowns):
+        raise ValueError("the equations are not linear in the accelerations and forces")
     if matrix.shape[0] != matrix.shape[1]:
         raise ValueError(f"the constraints leave {len(unknowns)} unknowns in {len(equations)} equations: "
                          "they are redundant or impossible")

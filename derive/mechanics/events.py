@@ -10,7 +10,8 @@ An internal turn (Elroy's beanie) is solved by conservation of angular momentum 
 axle, and by torque balance with an unknown internal torque, integrated from rest.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Motion, Pin, Scene, Stick
+>>> from derive.parts.pin import Pin
+>>> from derive.scene import Body, Motion, Scene, Stick
 >>> m, M, R, I, v = sp.symbols("m M R I v", positive=True)
 >>> scene = Scene({"disk": Body("disk", "custom", M, {}, I), "bug": Body("bug", "point", m, {})},
 ...               (Pin("axle", "disk", (0, 0)),), motions={"bug": Motion((R, 0), (0, v))},
@@ -26,7 +27,8 @@ import sympy as sp
 
 from derive.mechanics.derivation import Step, solve_linear, tidy
 from derive.mechanics import skid
-from derive.scene import Bounce, InternalTurn, Motion, Pin, Scene, Skid, Stick
+from derive.parts.pin import Pin
+from derive.scene import Bounce, InternalTurn, Motion, Scene, Skid, Stick
 
 
 class EventError(ValueError):

@@ -72,16 +72,33 @@ class Coordinates:
             sp.Integer(0),
         )
 
+    def orientation(self, body: str) -> sp.Expr:
+        """The body's angle from the world's axes: its reference angle plus its turn."""
+        return self.scene.bodies[body].angle + self.angle(body)
+
     def rotated(self, body: str, offset) -> sp.Matrix:
-        """A body-frame offset turned into the world frame by the body's angle."""
-        th = self.angle(body)
+        """A body-frame offset turned into the world frame by the body's orientation."""
+        th = self.orientation(body)
+        if th == 0:
+            return sp.Matrix(offset)
         rotation = sp.Matrix([[sp.cos(th), -sp.sin(th)], [sp.sin(th), sp.cos(th)]])
         return rotation * sp.Matrix(offset)
 
-    def position(self, body: str, offset=(0, 0)) -> sp.Matrix:
-        """World position of the material point at a body-frame offset from the center of mass."""
-        center = sp.Matrix([self.of(body, "x").q, self.of(body, "y").q])
+    def position(self, body: str | None, offset=(0, 0)) -> sp.Matrix:
+        """World position of the material point at a body-frame offset from the center of mass
+        (coordinates are displacements from the reference configuration, where the center is at
+        the body's `at`); with no body, `offset` is a point of the ground."""
+        if body is None:
+            return sp.Matrix(offset)
+        at = self.scene.bodies[body].at
+        center = sp.Matrix([at[0] + self.of(body, "x").q, at[1] + self.of(body, "y").q])
         return center + self.rotated(body, offset)
+
+    def velocity(self, body: str | None, world_offset) -> sp.Matrix:
+        """Velocity of a body's material point at a world offset from its center (zero on the ground)."""
+        if body is None:
+            return sp.zeros(2, 1)
+        return self.material_velocity(body, sp.Matrix(world_offset))
 
     def material_velocity(self, body: str, world_offset: sp.Matrix) -> sp.Matrix:
         """Rigid-body velocity v = v_cm + omega z x r of the material point at a world offset r."""
@@ -104,3 +121,27 @@ class Coordinates:
     @property
     def state(self) -> set[sp.Symbol]:
         return {s for c in self.all for s in (c.q, c.u)}
+
+
+def solve_gaps(scene: Scene, coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
+    """Solve every constraint gap for one coordinate, preferring translations to angles;
+    the coordinates left over are the free ones.
+
+    Raises ValueError when a gap cannot be solved for any remaining coordinate.
+    """
+    order = sorted(coords.all, key=lambda c: c.kind == "theta")
+    solved: dict[sp.Symbol, sp.Expr] = {}
+    for c in scene.constraints:
+        for gap in c.gaps(coords):
+            gap = gap.xreplace(solved)
+            for candidate in order:
+                if candidate.q in solved or not gap.has(candidate.q):
+                    continue
+                roots = sp.solve(gap, candidate.q)
+                if len(roots) == 1:
+                    solved = {q: v.xreplace({candidate.q: roots[0]}) for q, v in solved.items()}
+                    solved[candidate.q] = roots[0]
+                    break
+            else:
+                raise ValueError(f"the constraint {c.name} could not be solved for any coordinate")
+    return solved

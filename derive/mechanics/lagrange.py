@@ -1,11 +1,12 @@
 """Lagrange's method with multipliers, in the planar coordinates of every body.
 
-L = T - V with T = sum(1/2 m v_cm^2 + 1/2 I_cm omega^2) and V = sum(m g y); each
-constraint g(q) = 0 enters with a multiplier that is the force it names (see
-`derive.mechanics.joints`), and is also imposed at acceleration level, d^2 g/dt^2 = 0.
+L = T - V with T = sum(1/2 m v_cm^2 + 1/2 I_cm omega^2) and V from the parts (gravity,
+springs); each constraint g(q) = 0 enters with a multiplier that is the force it names (see
+`derive.parts`), and is also imposed at acceleration level, d^2 g/dt^2 = 0.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Gravity, Scene
+>>> from derive.parts.gravity import Gravity
+>>> from derive.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
 >>> d = derive(Scene({"ball": Body("ball", "point", m, {})}, gravity=Gravity(g)))
 >>> d.solution[sp.Symbol("yddot_ball", real=True)]
@@ -15,34 +16,36 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics import joints
-from derive.mechanics.derivation import Derivation, Step, solve_linear
+from derive.mechanics.derivation import Derivation, Step, at_state, rest_positions, simplest
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 
 
 def energies(scene: Scene, coords: Coordinates) -> tuple[sp.Expr, sp.Expr]:
-    """Kinetic and potential energy of the scene, in the coordinate symbols."""
+    """Kinetic energy of the bodies and potential energy of the parts (gravity, springs), in the
+    coordinate symbols."""
     kinetic = sp.Integer(0)
-    potential = sp.Integer(0)
     for body in scene.bodies.values():
         vx, vy = coords.of(body.name, "x").u, coords.of(body.name, "y").u
         kinetic += body.mass * (vx**2 + vy**2) / 2
         if body.rotates:
             kinetic += body.inertia * coords.angular_velocity(body.name) ** 2 / 2
-        if scene.gravity is not None:
-            potential += body.mass * scene.gravity.g * coords.of(body.name, "y").q
+    potential = sum((part.potential(coords) for part in scene.parts), sp.Integer(0))
     return kinetic, potential
 
 
 def generalized_forces(scene: Scene, coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
-    """Q_j = sum F . dv_P/du_j over the non-conservative applied forces (virtual work)."""
-    result = {c.q: sp.Integer(0) for c in coords.all}
-    for pull in scene.pulls:
-        velocity = coords.material_velocity(pull.body, pull.offset)
-        for c in coords.all:
-            result[c.q] += (pull.force * pull.direction).dot(velocity.diff(c.u))
-    return result
+    """Q_j = dP/du_j - dD/du_j: the power P of the non-conservative forces (virtual work) and
+    Rayleigh's dissipation function D of the viscous ones."""
+    power = sum((part.power(coords) for part in scene.parts), sp.Integer(0))
+    dissipation = sum((part.dissipation(coords) for part in scene.parts), sp.Integer(0))
+    return {c.q: sp.diff(power, c.u) - sp.diff(dissipation, c.u) for c in coords.all}
+
+
+def nonconservative_power(scene: Scene, coords: Coordinates) -> sp.Expr:
+    """The power of the non-conservative forces: P - 2D (it may hold unknown forces: kinetic
+    friction is mu_k N)."""
+    return sum((part.power(coords) - 2 * part.dissipation(coords) for part in scene.parts), sp.Integer(0))
 
 
 def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
@@ -50,33 +53,30 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     coords = coords or Coordinates(scene)
     kinetic, potential = energies(scene, coords)
     lagrangian = kinetic - potential
-    pairs = [
-        (gap, force)
-        for c in scene.constraints
-        for gap, force in zip(joints.gaps(c, coords), joints.forces(c).values())
-    ]
+    pairs = [(gap, force) for c in scene.constraints for gap, force in zip(c.gaps(coords), c.unknowns().values())]
     applied = generalized_forces(scene, coords)
     equations = []
     for c in coords.all:
         lhs = coords.ddt(sp.diff(lagrangian, c.u)) - sp.diff(lagrangian, c.q)
         rhs = applied[c.q] + sum((force * sp.diff(gap, c.q) for gap, force in pairs), sp.Integer(0))
-        equations.append(sp.Eq(sp.expand(lhs), sp.expand(rhs)))
-    constraint_accelerations = [sp.Eq(sp.expand(coords.ddt(coords.ddt(gap))), 0) for gap, _ in pairs]
+        equations.append(sp.Eq(lhs, rhs))
+    constraint_accelerations = [sp.Eq(coords.ddt(coords.ddt(gap)), 0) for gap, _ in pairs]
     unknowns = coords.accelerations + [force for _, force in pairs]
-    solution = solve_linear(equations + constraint_accelerations, unknowns)
+    # The equations stay general (unexpanded: a cord's exact geometry makes them long); the steps
+    # show them where the answers are read, in the reference configuration at rest.
+    rest = coords.at_rest_in_reference()
     steps = [
         Step("Kinetic and potential energy", (sp.Eq(sp.Symbol("T"), kinetic), sp.Eq(sp.Symbol("V"), potential))),
         Step("The Lagrangian", (sp.Eq(sp.Symbol("L"), lagrangian),)),
     ]
     if pairs:
-        steps.append(
-            Step(
-                "Constraints g = 0, each with a multiplier equal to the force it exerts",
-                tuple(sp.Eq(gap, 0) for gap, _ in pairs),
-            )
-        )
+        steps.append(Step("Constraints g = 0, each with a multiplier equal to the force it exerts (their rates, "
+                          "in the reference configuration)",
+                          tuple(sp.Eq(simplest(coords.ddt(gap).xreplace(rest_positions(coords))), 0)
+                                for gap, _ in pairs)))
     steps += [
-        Step("Euler–Lagrange equations, d/dt(dL/dq') - dL/dq = Q + sum of multiplier times dg/dq", tuple(equations)),
-        Step("Constraints at acceleration level", tuple(constraint_accelerations)),
+        Step("Euler–Lagrange equations, d/dt(dL/dq') - dL/dq = Q + sum of multiplier times dg/dq (in the reference "
+             "configuration, at rest)", tuple(at_state(e, rest) for e in equations)),
+        Step("Constraints at acceleration level", tuple(at_state(e, rest) for e in constraint_accelerations)),
     ]
-    return Derivation("lagrange", equations, unknowns, solution, steps)
+    return Derivation("lagrange", equations + constraint_accelerations, unknowns, steps)

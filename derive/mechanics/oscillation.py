@@ -5,7 +5,9 @@ the solved acceleration of the free coordinate is expanded to first order about 
 reference configuration at rest, and q'' = -omega^2 q gives the angular frequency.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Gravity, Pin, Scene
+>>> from derive.parts.gravity import Gravity
+>>> from derive.parts.pin import Pin
+>>> from derive.scene import Body, Scene
 >>> M, g, d, I = sp.symbols("M g d I", positive=True)
 >>> scene = Scene({"bob": Body("bob", "custom", M, {}, I)}, (Pin("pivot", "bob", (0, d)),), Gravity(g))
 >>> from derive.mechanics import lagrange
@@ -18,9 +20,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics import joints
 from derive.mechanics.derivation import Derivation, Step, root, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates
+from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.scene import Scene
 
 
@@ -55,7 +56,7 @@ def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
     """Angular frequency and period of small oscillations about the reference configuration."""
     coords = Coordinates(scene)
     try:
-        dependent = joints.solve_gaps(scene, coords)
+        dependent = solve_gaps(scene, coords)
     except ValueError as error:
         raise OscillationError(str(error)) from None
     free = [c for c in coords.all if c.q not in dependent]
@@ -63,7 +64,7 @@ def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
         raise OscillationError(f"small oscillations need one degree of freedom; the scene has {len(free)}")
     (coordinate,) = free
     at_rest = {c.u: 0 for c in coords.all}
-    acceleration = derivation.solution[coordinate.a].xreplace(dependent).xreplace(at_rest)
+    acceleration = derivation.at({**at_rest, **dependent})[coordinate.a]
     reference = {coordinate.q: 0}
     if not sp.simplify(acceleration.xreplace(reference)).equals(0):
         raise OscillationError("the reference configuration (every angle zero) is not an equilibrium")
@@ -91,9 +92,9 @@ def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tu
     """
     linear = small_oscillation(scene, derivation)
     coords = Coordinates(scene)
-    dependent = joints.solve_gaps(scene, coords)
+    dependent = solve_gaps(scene, coords)
     q = linear.coordinate.q
-    acceleration = derivation.solution[linear.coordinate.a].xreplace(dependent).xreplace({c.u: 0 for c in coords.all})
+    acceleration = derivation.at({**{c.u: 0 for c in coords.all}, **dependent})[linear.coordinate.a]
     ratio = tidy(acceleration / sp.sin(q))
     if q in ratio.free_symbols or not linear.stable:
         raise OscillationError("the exact period is for pendulum-like motion, q'' = -w0^2 sin(q)")

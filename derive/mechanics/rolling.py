@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics import joints
 from derive.mechanics.derivation import Step, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
@@ -39,10 +38,10 @@ def rolling(scene: Scene, body: str, route: str) -> tuple[dict[str, sp.Expr], tu
     state.update({coords.of(body, "x").u: velocity[0], coords.of(body, "y").u: velocity[1]})
     spin = coords.of(body, "theta").u
     if route == "center of mass":
-        condition = joints.velocity_conditions(contact, coords)[-1]
+        condition = contact.conditions(coords)[-1]
         reason = "The point touching the surface is at rest: (v_cm + omega z x r) along the surface = 0"
     else:
-        condition = coords.ddt(joints.gaps(contact, coords)[-1])
+        condition = coords.ddt(contact.gaps(coords)[-1])
         reason = "The rolling constraint's rate vanishes: d/dt (distance rolled + R theta) = 0"
     (omega,) = sp.solve(condition.xreplace(state), spin)
     omega = tidy(omega)

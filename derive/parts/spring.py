@@ -1,0 +1,74 @@
+"""A linear spring between two points (of bodies or of the ground), with a rest length.
+
+Lagrange: V = k (l - l0)^2 / 2 with l the distance between the points. Newton–Euler: the force
+k (l - l0) at each end, pulling it toward the other (pushing when compressed).
+
+>>> import sympy as sp
+>>> from derive.scene import Body, Scene
+>>> from derive.mechanics.kinematics import Coordinates
+>>> k, m = sp.symbols("k m", positive=True)
+>>> scene = Scene({"block": Body("block", "point", m, {}, at=(sp.Integer(1), sp.Integer(0)))})
+>>> Spring("s", ("block", None), ((0, 0), (0, 0)), k, sp.Integer(1)).potential(Coordinates(scene))
+k*(sqrt((x_block + 1)**2) - 1)**2/2
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.parts import AppliedForce, Part
+
+
+@dataclass(frozen=True)
+class Spring(Part):
+    """A spring of `stiffness` and `rest_length` between `ends` (two bodies, None for the ground)
+    at `offsets` (body frame from the center of mass, or points of the ground)."""
+
+    name: str
+    ends: tuple[str | None, str | None]
+    offsets: tuple[tuple, tuple]
+    stiffness: sp.Expr
+    rest_length: sp.Expr
+
+    def bodies(self) -> tuple[str, ...]:
+        return tuple(b for b in self.ends if b is not None)
+
+    def _points(self, coords) -> list[sp.Matrix]:
+        return [coords.position(b, o) for b, o in zip(self.ends, self.offsets)]
+
+    def length(self, coords) -> sp.Expr:
+        first, second = self._points(coords)
+        return sp.sqrt((second - first).dot(second - first))
+
+    def tension(self, coords) -> sp.Expr:
+        """The force the spring pulls its ends together with (negative: it pushes them apart)."""
+        return self.stiffness * (self.length(coords) - self.rest_length)
+
+    def potential(self, coords) -> sp.Expr:
+        return self.stiffness * (self.length(coords) - self.rest_length) ** 2 / 2
+
+    def loads(self, coords) -> list[AppliedForce]:
+        first, second = self._points(coords)
+        along = (second - first) / self.length(coords)
+        pull = self.tension(coords) * along
+        result = []
+        for body, offset, force in ((self.ends[0], self.offsets[0], pull), (self.ends[1], self.offsets[1], -pull)):
+            if body is not None:
+                result.append(AppliedForce(body, coords.rotated(body, offset), force, f"spring {self.name}"))
+        return result
+
+
+def read(reader, places, name: str, spec: dict, field: str) -> Spring:
+    """`{between: [POINT, POINT], stiffness: k, rest_length: L0}` (rest length by default the
+    distance between the points in the reference configuration: unstretched there)."""
+    spec = reader.mapping(spec, field, required=("between", "stiffness"), optional=("rest_length", "name"))
+    ends = places.two_points(spec["between"], f"{field}.between")
+    stiffness = reader.positive(spec["stiffness"], f"{field}.stiffness", "N/m", "a stiffness")
+    first, second = (places.world(b, o) for b, o in ends)
+    if "rest_length" in spec:
+        rest = reader.dimensioned(spec["rest_length"], f"{field}.rest_length", "m", "a length")
+    else:
+        rest = sp.sqrt((second - first).dot(second - first))
+    return Spring(name, (ends[0][0], ends[1][0]), (ends[0][1], ends[1][1]), stiffness, rest)
+

@@ -1,0 +1,111 @@
+"""Fixed surfaces a body can rest on: a plane at any angle, and a circle seen from inside (a bowl,
+a loop, a cylinder) or from outside (a dome).
+
+Each gives, for a round body of radius r whose center is at C: `gap` (how far the body stands off
+the surface; zero when it touches), `normal_at` (the unit vector from the surface toward the
+center: the normal force's direction), `tangent_at` (t = (n_y, -n_x): down a plane that descends
+to the right, counter-clockwise inside a circle) and `arc` (the distance the center has travelled
+along t: its rate is t . v). A point mass is a body of radius 0.
+
+>>> import sympy as sp
+>>> Plane("ramp", sp.pi / 6).normal_at(sp.Matrix([0, 1]), 1).T
+Matrix([[1/2, sqrt(3)/2]])
+>>> Circle("bowl", sp.Integer(2)).gap(sp.Matrix([0, 1]), 1)
+0
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class Plane:
+    """A fixed plane through `through`, descending to the right at `angle` (0 is a level floor).
+    Down-slope unit vector (cos angle, -sin angle), normal (sin angle, cos angle). `height` is the
+    drop from where bodies start to the bottom, when given."""
+
+    name: str
+    angle: sp.Expr
+    height: sp.Expr | None = None
+    through: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+
+    @property
+    def down(self) -> sp.Matrix:
+        return sp.Matrix([sp.cos(self.angle), -sp.sin(self.angle)])
+
+    @property
+    def normal(self) -> sp.Matrix:
+        return sp.Matrix([sp.sin(self.angle), sp.cos(self.angle)])
+
+    def touching(self, radius: sp.Expr) -> sp.Matrix:
+        """Where a body of this radius has its center when it touches the plane at `through`."""
+        return sp.Matrix(self.through) + radius * self.normal
+
+    def gap(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        return self.normal.dot(center - sp.Matrix(self.through)) - radius
+
+    def normal_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        return self.normal
+
+    def tangent_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        return self.down
+
+    def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        return self.down.dot(center - sp.Matrix(self.through))
+
+
+@dataclass(frozen=True)
+class Circle:
+    """A fixed circle of `radius` about `center`, ridden on its `side`: "inside" (a bowl, a loop;
+    by default its lowest point is at the origin) or "outside" (a dome; by default its highest
+    point is at the origin)."""
+
+    name: str
+    radius: sp.Expr
+    center: tuple[sp.Expr, sp.Expr] | None = None
+    side: str = "inside"
+
+    @property
+    def middle(self) -> sp.Matrix:
+        if self.center is not None:
+            return sp.Matrix(self.center)
+        return sp.Matrix([0, self.radius if self.side == "inside" else -self.radius])
+
+    @property
+    def _sign(self) -> int:
+        return 1 if self.side == "inside" else -1
+
+    def path_radius(self, radius: sp.Expr) -> sp.Expr:
+        """The radius of the circle a body's center moves on."""
+        return self.radius - self._sign * radius
+
+    def touching(self, radius: sp.Expr) -> sp.Matrix:
+        """The center of a body touching the lowest point (inside) or the highest (outside)."""
+        return self.middle - self._sign * sp.Matrix([0, self.path_radius(radius)])
+
+    def gap(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        offset = center - self.middle
+        return self._sign * (self.path_radius(radius) - sp.sqrt(offset.dot(offset)))
+
+    def normal_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        offset = self.middle - center
+        return self._sign * offset / sp.sqrt(offset.dot(offset))
+
+    def tangent_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
+        normal = self.normal_at(center, radius)
+        return sp.Matrix([normal[1], -normal[0]])
+
+    def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
+        """The path radius times the center's polar angle about the circle's center, measured from
+        the touching point, counter-clockwise inside and clockwise outside."""
+        offset = center - self.middle
+        return self.path_radius(radius) * sp.atan2(offset[0], -self._sign * offset[1])
+
+    def top(self, radius: sp.Expr) -> sp.Matrix:
+        """The highest point of the circle a body inside rides on."""
+        return self.middle + sp.Matrix([0, self.path_radius(radius)])
+
+
+Surface = Plane | Circle

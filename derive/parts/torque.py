@@ -1,0 +1,44 @@
+"""A given torque on a body (a motor, a brake's couple): constant, or a function of the time t.
+
+Lagrange: its power tau omega. Newton–Euler: the couple in the body's torque balance.
+
+>>> import sympy as sp
+>>> Torque("motor", "wheel", sp.Symbol("tau")).bodies()
+('wheel',)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.parts import AppliedTorque, Part
+
+
+@dataclass(frozen=True)
+class Torque(Part):
+    """A couple `torque` (counter-clockwise positive) on `body`."""
+
+    name: str
+    body: str
+    torque: sp.Expr
+
+    def bodies(self) -> tuple[str, ...]:
+        return (self.body,)
+
+    def power(self, coords) -> sp.Expr:
+        return self.torque * coords.angular_velocity(self.body)
+
+    def loads(self, coords) -> list[AppliedTorque]:
+        return [AppliedTorque(self.body, self.torque, f"torque {self.name}")]
+
+
+def read(reader, places, name: str, spec: dict, field: str) -> Torque:
+    """`{on: BODY, magnitude: EXPR}`: a couple (counter-clockwise positive), constant or a
+    function of the time t."""
+    spec = reader.mapping(spec, field, required=("on", "magnitude"), optional=("name",))
+    body, offset = places.point(spec["on"], f"{field}.on", ground=False)
+    if any(offset) or not places.bodies[body].rotates:
+        raise reader.fail(f"{field}.on", "a torque acts on a turning body as a whole: name the body")
+    return Torque(name, body, reader.dimensioned(spec["magnitude"], f"{field}.magnitude", "N*m", "a torque",
+                                                 places.with_time()))
