@@ -103,10 +103,11 @@ MATH_COMMANDS = {
 }
 #: Math accents: alone in a group (or a math alphabet), TeX takes one out, scripts and all.
 MATH_ACCENTS = frozenset({"hat", "bar", "vec", "dot", "ddot", "tilde", "widehat", "widetilde"})
+#: Math alphabets: their argument is a group of the list they stand in.
 MATH_ALPHABETS = frozenset({"mathrm", "mathbf", "mathit", "mathsf", "mathtt", "mathcal"})
 #: Commands with arguments that may follow ^ or _ without braces (K_\mathrm{rot}): TeX reads
 #: their expansion as a group.
-SCRIPT_COMMANDS = frozenset({"mathrm", "mathbf", "mathit", "mathsf", "mathtt", "mathcal", "text"})
+SCRIPT_COMMANDS = MATH_ALPHABETS | {"text"}
 #: Control symbols of math: spacing and escaped specials.
 MATH_CONTROL_SYMBOLS = frozenset(",;:! {}|%$&#_")
 #: Delimiters after \left, \middle and \right: characters, control symbols and words.

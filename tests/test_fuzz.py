@@ -296,7 +296,8 @@ def _accepts(call, *args) -> bool:
     return True
 
 
-REFUSED_ALWAYS = re.compile(r"\^\^|\\(iow|tl|cs|use|ExplSyntax|NewDocumentCommand|csname|catcode|input|write|def)|[\x00\t\x7f\u202e\u200d\ue000😀ع]")
+REFUSED_ALWAYS = re.compile(r"\^\^|\\(iow_|tl_|cs_|use:|ExplSyntax|NewDocumentCommand|csname|catcode|input|write|def(?![A-Za-z]))"
+                            "|[\x00\t\x7f\u202e\u200d\ue000😀ع]")
 
 
 @pytest.fixture(scope="module")
