@@ -547,6 +547,8 @@ def test_hostile_files_on_the_command_line(tmp_path):
     files = {
         "sandbox.yaml": problem_text(question="{{ ''.__class__.__mro__ }} {{ config }}"),
         "tex.yaml": problem_text(question=r"\input{/etc/passwd}"),
+        "expl3.yaml": problem_text(question=r"$\ExplSyntaxOn \iow_new:N \g_k_iow \iow_open:Nn \g_k_iow {key.csv} "
+                                            r"\iow_now:Nn \g_k_iow {forged} \ExplSyntaxOff$"),
         "tower.yaml": problem_text().replace("value: 0.5", "value: 10**10**10**10"),
         "bomb.yaml": "a: &a [x, x, x, x, x, x, x, x]\nb: &b [*a, *a, *a, *a, *a, *a, *a, *a]\nid: *b\n",
         "junk.yaml": "\x00\x01 not yaml at all: [",
