@@ -1,213 +1,629 @@
-"""What LaTeX from a problem file may reach the typesetter (and pandoc).
+r"""What text from a problem file may reach the typesetter: an allowlist, read the way TeX reads.
 
-The policy, for every text field of a problem file (title, topic, meanings, question):
+Every text field goes through one of two checks, each with a length bound (`*_LIMIT`):
 
-- Refused everywhere, in text and inside math: commands that read or write files, run
-  programs or change how TeX reads its input (`FORBIDDEN`, and any command whose name
-  contains input, include, write, open, read, catcode, csname, lua, shell, or starts with
-  pdf), TeX's `^^` character escapes (`^^5c` is a backslash), and control characters.
-- Titles and meanings are plain text: the templates' `tex` filter escapes them whole.
-- The question is LaTeX-flavoured. `$...$` is math and passes as written (its braces must
-  balance, a `%` must be `\\%`, an environment must be a math one such as pmatrix or cases).
-  Outside math, LaTeX's specials are escaped (% $ & # _ { } ~ ^ \\) except the small
-  whitelist `TEXT_COMMANDS` (\\emph{...}, \\textbf{...}, \\ldots, \\% ...); another command
-  outside math is refused when the file is read (it would print as written). `{{ NAME }}`
-  placeholders of declared parameters are the only jinja allowed, and outside math (each
-  becomes `$value$`).
+- **Plain text** (titles, topics, meanings, sources, corrections; set files' titles):
+  `check_plain`. The templates' `tex` filter escapes it whole, so LaTeX there would print as
+  written: a control word (`\emph`, `\input`) is refused, and so are `^^` escapes.
+- **The question**: `check_question` when the file is read, `question_latex` when it is
+  typeset. It is LaTeX-flavoured, read token by token as TeX reads it with the standard
+  catcodes (a control word is `\` and letters, a control symbol `\` and one other character;
+  problem text can never change catcodes). Only the commands of the tables below may appear,
+  each with its mandatory arguments in braces. `$...$` is math: `MATH_SYMBOLS`, `MATH_WORDS`,
+  `MATH_COMMANDS`, `\left`/`\middle`/`\right` with `DELIMITERS`, the `MATH_ENVIRONMENTS` (the
+  only places for `&` and `\\`); `^` and `_` take an argument, once each per atom; braces
+  balance. Between the math is text: `TEXT_COMMANDS` (with an argument), `TEXT_WORDS`,
+  `TEXT_SYMBOLS`, `ACCENTS`, LaTeX's other specials escaped (`50%` prints 50%, a lone `{` a
+  brace). `{{ NAME }}` stands for a parameter's value (NAME must be a parameter: text only,
+  not in math); every other `{{`, `{%` or `{#` is literal text. One paragraph (a blank line
+  may start another; `\\` and `\par` may not), groups at most `MAX_DEPTH` deep. Text so read
+  compiles: tests/test_fuzz.py compiles every text it accepts.
+- **Characters**, everywhere: ASCII, and beyond it only letters, digits, punctuation, symbols
+  and spaces of `SUPPORTED` (Latin, Greek, Cyrillic, Han, kana, Hangul) and `SYMBOLS`, which
+  the preamble's fonts all have. Control characters (but newlines in the question), format
+  characters (bidi overrides, zero-width joiners), combining marks, private-use, unassigned
+  and surrogate code points are refused, and so is any other script. Math is ASCII.
 
-`check` runs when a file is read (derive.reader: an error naming the file and the field);
-`question_latex` runs again on the rendered question (derive.render), so text that did not
-come through the reader is escaped and checked too.
+Every refusal is a LatexError with a one-line reason.
 
->>> question_latex("50% of $\\\\omega_0$ & \\\\emph{more}_x")
-'50\\\\% of $\\\\omega_0$ \\\\& \\\\emph{more}\\\\_x'
->>> forbidden("csname"), forbidden("pdffiledump"), forbidden("omega")
-(True, True, False)
+The tokenizer is written here rather than taken from pylatexenc (2.11, evaluated): its
+control words are TeX's (`\iow_open:Nn` is `\iow` then text) and it gives the arguments of
+macros it is told about, but it reads `^` and `_` as plain characters (`$I^$` parses, and
+double superscripts pass), accepts `&` and `\\` anywhere, knows nothing of `^^` escapes or
+primes, and cannot parse `$` inside `\text{}`; the checks need TeX's view of every token, so
+the tokenizer is one regular expression and the parser a short recursive descent.
+
+>>> question_latex("50% of {{ m }}, $\\omega_0^2$ & \\emph{more}_x", {"m": "$2\\,\\mathrm{kg}$"})
+'50\\% of $2\\,\\mathrm{kg}$, $\\omega_0^2$ \\& \\emph{more}\\_x'
+>>> check_question("$I^$", ())
+Traceback (most recent call last):
+...
+derive.latex_safety.LatexError: `^` at '$I^$' needs an argument: a character, a symbol such as \alpha, or {...}
 """
 from __future__ import annotations
 
 import re
+import unicodedata
+from contextlib import contextmanager
+from functools import lru_cache
+from typing import Mapping
 
 from derive.errors import InputError
 
-FORBIDDEN = frozenset({
-    "input", "include", "includeonly", "InputIfFileExists", "IfFileExists", "endinput", "openin", "openout",
-    "read", "readline", "write", "immediate", "newwrite", "newread", "closein", "closeout",
-    "catcode", "lccode", "uccode", "sfcode", "mathcode", "delcode", "csname", "endcsname", "expandafter",
-    "noexpand", "def", "edef", "gdef", "xdef", "let", "futurelet", "global", "newcommand", "renewcommand",
-    "providecommand", "DeclareRobustCommand", "newenvironment", "renewenvironment", "usepackage",
-    "RequirePackage", "documentclass", "special", "directlua", "latelua", "ShellEscape", "scantokens",
-    "makeatletter", "makeatother", "everypar", "everymath", "everydisplay", "everyeof", "everyjob",
-    "output", "loop", "afterassignment", "aftergroup", "verbatiminput", "lstinputlisting", "inputminted",
-    "import", "subimport", "subfile", "includegraphics", "href", "url", "jobname", "string", "detokenize",
-    "uppercase", "lowercase", "begingroup", "endgroup", "batchmode", "nonstopmode", "scrollmode",
-    "errorstopmode",
-})
-_FORBIDDEN_PART = re.compile(r"input|include|write|open|read|catcode|csname|lua|shell|^pdf", re.IGNORECASE)
+# --- length bounds (characters) ----------------------------------------------------------------
+TITLE_LIMIT = 200
+TOPIC_LIMIT = 60
+NAME_LIMIT = 100  # ids, units, the path an ask is `of`
+MEANING_LIMIT = 300  # meanings of parameters and asks, the `because` of a condition
+SOURCE_LIMIT = 300
+CORRECTION_LIMIT = 1000
+QUESTION_LIMIT = 5000
+MAX_DEPTH = 10  # groups, arguments, environments and \left...\right inside one another
 
-#: Commands allowed outside math: with one argument in braces, or alone.
+# --- the question's vocabulary -----------------------------------------------------------------
+#: Text commands with one argument, itself text.
 TEXT_COMMANDS = frozenset({"emph", "textbf", "textit", "texttt", "underline"})
-TEXT_WORDS = frozenset({"ldots", "dots", "quad", "qquad", "S", "P", "textdegree", "newline", "par"})
-#: Escaped specials, spacing and accents allowed outside math (a backslash and one character).
+#: Text commands without arguments (written with {} after them, so the next space stays).
+TEXT_WORDS = frozenset({"ldots", "dots", "quad", "qquad", "S", "P", "textdegree"})
+#: Control symbols of text: escaped specials and spacing.
+TEXT_SYMBOLS = frozenset("%$&#_{}" + ",;:! ")
+#: Accents of text, on one letter: \'e or \'{e}.
 ACCENTS = frozenset("'`\"^~=.")
-TEXT_SYMBOLS = frozenset("%$&#_{}" + ",;:! ") | ACCENTS
-MATH_ENVIRONMENTS = frozenset({"matrix", "pmatrix", "bmatrix", "Bmatrix", "vmatrix", "Vmatrix", "smallmatrix",
-                               "cases", "aligned", "gathered", "split", "array"})
 
+#: Math commands that are one math character to TeX (a \mathchar or \delimiter): `x^\alpha`
+#: needs no braces.
+MATH_SYMBOLS = frozenset("""
+    alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa lambda mu nu xi
+    pi varpi rho varrho sigma varsigma tau upsilon phi varphi chi psi omega
+    Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega
+    leq geq le ge approx sim simeq propto equiv ll gg perp parallel mid in subset subseteq supset
+    supseteq to gets rightarrow leftarrow leftrightarrow Rightarrow Leftarrow Leftrightarrow uparrow
+    downarrow cdot times pm mp div ast star circ bullet cap cup wedge vee oplus otimes dagger
+    infty partial nabla ell prime emptyset forall exists neg Re Im
+    langle rangle lfloor rfloor lceil rceil vert Vert backslash
+""".split())
+#: Math commands without arguments that are macros: in a script they need braces (x^{\hbar}).
+MATH_WORDS = frozenset("""
+    hbar neq ne cong notin mapsto longrightarrow implies iff angle
+    int iint iiint oint sum prod lim max min sup inf det dim arg deg gcd exp ln log
+    sin cos tan cot sec csc arcsin arccos arctan sinh cosh tanh coth
+    ldots cdots vdots ddots dots quad qquad
+""".split())
+#: Math commands with arguments: the kind of each mandatory argument, always in braces: "math",
+#: "text" (read as text: \text{if $x > 0$}) or "name" (letters: \operatorname{sgn}). \sqrt may
+#: also take an index, \sqrt[3]{x}.
+MATH_COMMANDS = {
+    "frac": ("math", "math"), "dfrac": ("math", "math"), "tfrac": ("math", "math"), "binom": ("math", "math"),
+    "overset": ("math", "math"), "underset": ("math", "math"), "sqrt": ("math",),
+    "hat": ("math",), "bar": ("math",), "vec": ("math",), "dot": ("math",), "ddot": ("math",),
+    "tilde": ("math",), "widehat": ("math",), "widetilde": ("math",), "overline": ("math",),
+    "underline": ("math",), "overrightarrow": ("math",), "boldsymbol": ("math",),
+    "mathrm": ("math",), "mathbf": ("math",), "mathit": ("math",), "mathsf": ("math",), "mathtt": ("math",),
+    "mathcal": ("math",), "text": ("text",), "operatorname": ("name",),
+}
+#: Math accents: alone in a group (or a math alphabet), TeX takes one out, scripts and all.
+MATH_ACCENTS = frozenset({"hat", "bar", "vec", "dot", "ddot", "tilde", "widehat", "widetilde"})
+#: Math alphabets: their argument is a group of the list they stand in.
+MATH_ALPHABETS = frozenset({"mathrm", "mathbf", "mathit", "mathsf", "mathtt", "mathcal"})
+#: Commands with arguments that may follow ^ or _ without braces (K_\mathrm{rot}): TeX reads
+#: their expansion as a group.
+SCRIPT_COMMANDS = MATH_ALPHABETS | {"text"}
+#: Control symbols of math: spacing and escaped specials.
+MATH_CONTROL_SYMBOLS = frozenset(",;:! {}|%$&#_")
+#: Delimiters after \left, \middle and \right: characters, control symbols and words.
+DELIMITERS = frozenset({"(", ")", "[", "]", "|", "/", ".", r"\{", r"\}", r"\|"}) | frozenset(
+    "\\" + name for name in ("langle", "rangle", "lfloor", "rfloor", "lceil", "rceil", "vert", "Vert",
+                             "uparrow", "downarrow", "backslash"))
+#: Math environments and the columns a row of each may have (None: any number; each `&` starts
+#: a column); rows end with \\.
+MATH_ENVIRONMENTS = {"matrix": 10, "pmatrix": 10, "bmatrix": 10, "Bmatrix": 10, "vmatrix": 10, "Vmatrix": 10,
+                     "smallmatrix": 10, "cases": 2, "aligned": None, "gathered": 1}
+#: Environments whose \begin{...} takes an optional [position]: a `[` after it would be read so.
+POSITIONED = frozenset({"aligned", "gathered"})
+#: Characters of math besides letters and digits (~ is a tie; ' a prime).
+MATH_CHARACTERS = frozenset("+-*/=<>()[]|,.;:!?'\"@`~ \n")
+#: Characters that may follow ^ or _ alone (x^2, x_i, x^-).
+SCRIPT_CHARACTERS = frozenset("+-*/=<>|,.;:!?") | frozenset(
+    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789")
+
+#: LaTeX's special characters and what prints each in text.
 SPECIALS = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
             "%": r"\%", "_": r"\_", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
 
-_TOKEN = re.compile(r"\\(?:[A-Za-z]+|.)|.", re.S)
-_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
-_PLACEHOLDER = re.compile(r"\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}")
-_JINJA = re.compile(r"\{\{|\{%|\{#|\}\}|%\}|#\}")
+# --- characters --------------------------------------------------------------------------------
+#: Where text may go beyond ASCII: ranges of code points (inclusive) whose letters, digits,
+#: punctuation, symbols and spaces the preamble's fonts (Latin Modern, then DejaVu Serif and
+#: Noto Serif CJK) all have; tests/test_hardening.py typesets every one (Han and Hangul: samples).
+SUPPORTED = (
+    ("Latin-1", 0x00A0, 0x00FF), ("Latin", 0x0100, 0x024F), ("Latin", 0x1E00, 0x1EF9),
+    ("Greek", 0x0370, 0x03E1), ("Greek", 0x03F0, 0x03FF), ("Greek", 0x1F00, 0x1FFE),
+    ("Cyrillic", 0x0400, 0x045F), ("Cyrillic", 0x0490, 0x0491),
+    ("punctuation", 0x2010, 0x2027), ("punctuation", 0x2030, 0x203E), ("superscripts", 0x2070, 0x208E),
+    ("number forms", 0x2150, 0x2185), ("arrows", 0x2190, 0x21FF),
+    ("CJK punctuation", 0x3000, 0x303F), ("Hiragana", 0x3041, 0x309F), ("Katakana", 0x30A0, 0x30FF),
+    ("Hangul", 0x3131, 0x318E), ("Han", 0x4E00, 0x9FEA), ("Hangul", 0xAC00, 0xD7A3),
+    ("fullwidth forms", 0xFF01, 0xFF9F), ("fullwidth forms", 0xFFE0, 0xFFE6),
+)
+#: Common signs outside those ranges: currency, letterlike and mathematical.
+SYMBOLS = frozenset("€₩₴₹₽℃℉ℏℓ№™Ω∀∂∃∅∆∇∈∉∏∑−∓∗∘∙√∝∞∠∣∥∧∨∩∪∫∬∮∴∵∼≃≅≈≠≡≤≥≪≫⊂⊃⊆⊇⊕⊗⊥⋅")
+SUPPORTED_TEXT = ("Latin, Greek, Cyrillic, Chinese, Japanese and Korean letters, digits, and common "
+                  "punctuation and symbols")
+_CATEGORY_REASONS = {
+    "Cc": "a control character", "Cf": "an invisible format character (a bidi override, a zero-width joiner...)",
+    "Co": "a private-use character", "Cn": "an unassigned code point", "Cs": "a lone surrogate",
+    "Zl": "a line separator", "Zp": "a paragraph separator",
+    "Mn": "a combining mark: write the accented letter itself", "Mc": "a combining mark", "Me": "a combining mark",
+}
+#: What to write in math for some non-ASCII characters (Greek letters: their command).
+MATH_UNICODE = {"×": r"\times", "·": r"\cdot", "⋅": r"\cdot", "±": r"\pm", "∓": r"\mp", "°": r"^\circ",
+                "→": r"\to", "←": r"\leftarrow", "≤": r"\leq", "≥": r"\geq", "≠": r"\neq", "≈": r"\approx",
+                "∞": r"\infty", "∂": r"\partial", "∇": r"\nabla", "−": "-", "′": "'", "∝": r"\propto",
+                "∫": r"\int", "∑": r"\sum", "√": r"\sqrt{...}", "ℏ": r"\hbar", "ℓ": r"\ell", "…": r"\ldots",
+                "÷": r"\div", "²": "^2", "³": "^3", "–": "-", "—": "-"}
 
 
 class LatexError(InputError):
-    """LaTeX in a problem file that derive will not typeset."""
+    """Text from a problem file that derive will not typeset."""
 
 
-def forbidden(name: str) -> bool:
-    """Whether a control word (its name, without the backslash) is refused."""
-    return name in FORBIDDEN or bool(_FORBIDDEN_PART.search(name))
+def describe(character: str) -> str:
+    """A character as U+XXXX and its Unicode name.
+
+    >>> describe("😀"), describe("\\t")
+    ('U+1F600 GRINNING FACE', 'U+0009')
+    """
+    name = unicodedata.name(character, "")
+    return f"U+{ord(character):04X}" + (f" {name}" if name else "")
 
 
-def _refuse_everywhere(text: str) -> None:
+@lru_cache(maxsize=4096)
+def refusal(character: str) -> str | None:
+    """Why a character may not be typeset (None: it may). ASCII's printable characters may,
+    and newlines where a caller allows them."""
+    if " " <= character <= "~":
+        return None
+    category = unicodedata.category(character)
+    if category in _CATEGORY_REASONS:
+        return _CATEGORY_REASONS[category]
+    code = ord(character)
+    if character in SYMBOLS or any(first <= code <= last for _, first, last in SUPPORTED):
+        return None
+    return f"not in a script the fonts cover (supported: {SUPPORTED_TEXT})"
+
+
+def check_characters(text: str, newlines: bool = False) -> None:
+    """Refuse the first character that may not be typeset (see `refusal`)."""
+    for character in text:
+        if character == "\n":
+            if not newlines:
+                raise LatexError("U+000A is not allowed: a line break (this text is one line)")
+            continue
+        reason = refusal(character)
+        if reason:
+            raise LatexError(f"{describe(character)} is not allowed: {reason}")
+
+
+def _check_length(text: str, limit: int) -> None:
+    if len(text) > limit:
+        raise LatexError(f"{len(text)} characters: at most {limit}")
+
+
+def _check_escapes(text: str) -> None:
     if "^^" in text:
         raise LatexError("'^^' is not allowed (TeX reads ^^5c as a backslash): write ^{} or \\^{}")
-    control = _CONTROL.search(text)
-    if control:
-        raise LatexError(f"control character {control.group()!r} is not allowed")
-    for match in re.finditer(r"\\(?:[A-Za-z]+|.)", text, re.S):
-        name = match.group()[1:]
-        if name.isalpha() and forbidden(name):
-            raise LatexError(f"\\{name} is not allowed (it could read or write files, or change how TeX "
-                             "reads its input)")
 
 
-def _split(text: str) -> list[tuple[bool, str]]:
-    """(is_math, piece) in order: $...$ pieces and the text between. A \\$ is text; an unpaired
-    $ and an empty $$ (display math) are text too."""
-    tokens = _TOKEN.findall(text)
-    dollars = [i for i, token in enumerate(tokens) if token == "$"]
-    math = {}
-    k = 0
-    while k + 1 < len(dollars):
-        first, second = dollars[k], dollars[k + 1]
-        if second == first + 1:  # $$: not math
-            k += 1
-            continue
-        math[first] = second
-        k += 2
-    pieces, i, text_start = [], 0, 0
-    while i < len(tokens):
-        if i in math:
-            if i > text_start:
-                pieces.append((False, "".join(tokens[text_start:i])))
-            pieces.append((True, "".join(tokens[i:math[i] + 1])))
-            i = text_start = math[i] + 1
-        else:
-            i += 1
-    if text_start < len(tokens):
-        pieces.append((False, "".join(tokens[text_start:])))
-    return pieces
+def check_plain(text: str, limit: int) -> None:
+    """Refuse plain text (escaped whole when typeset) that is too long, holds a character that
+    may not be typeset, a LaTeX command (it would print as written) or a `^^` escape.
 
-
-def _check_math(math: str) -> None:
-    depth = 0
-    for token in _TOKEN.findall(math):
-        if token == "%":
-            raise LatexError(f"'%' in math {math[:40]!r} starts a comment: write \\%")
-        depth += (token == "{") - (token == "}")
-        if depth < 0:
-            raise LatexError(f"unbalanced braces in math {math[:40]!r}")
-    if depth:
-        raise LatexError(f"unbalanced braces in math {math[:40]!r}")
-    for name in re.findall(r"\\(?:begin|end)\s*\{([^}]*)\}", math):
-        if name.strip().rstrip("*") not in MATH_ENVIRONMENTS:
-            raise LatexError(f"environment {name!r} is not allowed in math (allowed: {', '.join(sorted(MATH_ENVIRONMENTS))})")
-
-
-def _check_text(text: str) -> None:
-    for match in re.finditer(r"\\(?:[A-Za-z]+|.)?", text, re.S):
-        token = match.group()
-        name = token[1:]
-        if name in TEXT_COMMANDS and text.startswith("{", match.end()):
-            continue
-        if name in TEXT_WORDS or (len(name) == 1 and name in TEXT_SYMBOLS) or token == "\\\\":
-            continue
-        allowed = ", ".join(f"\\{c}{{...}}" for c in sorted(TEXT_COMMANDS))
-        hint = " (math goes between $...$)" if name.isalpha() else ""
-        raise LatexError(f"LaTeX command {token!r} is not allowed outside math{hint}; allowed: {allowed}, "
-                         f"{', '.join(chr(92) + w for w in sorted(TEXT_WORDS))} and \\% \\$ \\& \\# \\_ \\{{ \\}}")
-
-
-def check(text: str, question: bool = False, placeholders=()) -> None:
-    """Refuse text that could misuse TeX (see the module's policy); raise LatexError.
-
-    With `question`, the text is the question: its math is checked, commands outside math
-    must be whitelisted, and `{{ NAME }}` (NAME one of `placeholders`) is the only jinja.
+    >>> check_plain("Rolling 50% & more, § 4 — Ω", TITLE_LIMIT)
+    >>> check_plain("\\\\iow_open:Nn", TITLE_LIMIT)
+    Traceback (most recent call last):
+    ...
+    derive.latex_safety.LatexError: \\iow_open:Nn: this text is plain, not LaTeX (it would print as written)
     """
-    _refuse_everywhere(text)
-    if not question:
-        return
-    for is_math, piece in _split(text):
-        if is_math:
-            if _JINJA.search(piece):
-                raise LatexError("a {{ placeholder }} becomes $value$: put it outside $...$")
-            _check_math(piece)
-            continue
-        for name in _PLACEHOLDER.findall(piece):
-            if name not in placeholders:
-                raise LatexError(f"{{{{ {name} }}}}: not a parameter (parameters: {', '.join(placeholders) or 'none'})")
-        rest = _PLACEHOLDER.sub("", piece)
-        jinja = _JINJA.search(rest)
-        if jinja:
-            snippet = rest[max(0, jinja.start() - 10): jinja.end() + 30].strip()
-            raise LatexError(f"only {{{{ NAME }}}} placeholders of parameters are allowed, not {snippet!r}")
-        _check_text(rest)
+    _check_length(text, limit)
+    check_characters(text)
+    _check_escapes(text)
+    command = re.search(r"\\[A-Za-z]", text)
+    if command:
+        raise LatexError(f"{_shown(text, command.start())}: this text is plain, not LaTeX (it would print as written)")
 
 
-def _escape_text(text: str) -> str:
-    """Text outside math: specials escaped, the whitelisted commands kept."""
-    out, braces, argument = [], [], False
-    tokens = _TOKEN.findall(text)
-    for i, token in enumerate(tokens):
-        following = tokens[i + 1] if i + 1 < len(tokens) else ""
-        if argument:  # the "{" of a command just kept
-            out.append("{")
-            braces.append("argument")
-            argument = False
-        elif token.startswith("\\") and len(token) > 1:
-            name = token[1:]
-            if (name in TEXT_COMMANDS or name in ACCENTS) and following == "{":
-                out.append(token)
-                argument = True
-            elif name in TEXT_WORDS:
-                out.append(token + "{}")
-            elif name in TEXT_SYMBOLS or name == "\\":
-                out.append(token)
+def check_question(text: str, parameters, limit: int = QUESTION_LIMIT) -> None:
+    """Refuse a question that `question_latex` would not typeset; `{{ NAME }}` may name any of
+    `parameters`.
+
+    >>> check_question("A mass {{ m }} on $\\\\frac{1}{2}$ of a \\\\emph{rope}.", ["m"])
+    >>> check_question("$\\\\use:c {in put}$", [])
+    Traceback (most recent call last):
+    ...
+    derive.latex_safety.LatexError: \\use:c is not allowed in math
+    """
+    _Parser(text, dict.fromkeys(parameters), limit).question()
+
+
+def question_latex(text: str, values: Mapping[str, str], limit: int = QUESTION_LIMIT) -> str:
+    """The question as LaTeX: refused as `check_question` would (LatexError), math kept, text
+    escaped but for the allowed commands, each `{{ NAME }}` replaced by values[NAME] (itself
+    read as question text, without placeholders). No template engine: nothing is evaluated.
+
+    >>> question_latex("{{ ''.__class__ }} costs {{ m }}", {"m": "$2$"})
+    "\\\\{\\\\{ ''.\\\\_\\\\_class\\\\_\\\\_ \\\\}\\\\} costs $2$"
+    """
+    return _Parser(text, values, limit).question()
+
+
+# --- the parser --------------------------------------------------------------------------------
+_TOKEN = re.compile(r"""
+    (?P<placeholder>\{\{\s*(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*\}\})
+  | (?P<par>\n[ ]*\n[ \n]*)            # a blank line: a new paragraph
+  | \\[A-Za-z]+ | \\. | .              # a control word, a control symbol, a character
+""", re.S | re.X)
+_SHOWN = re.compile(r"\\[A-Za-z@_:]+|\\.?", re.S)  # a command as a person reads it: \iow_open:Nn
+_SPACE = (" ", "\n")
+_LETTER = re.compile("[A-Za-z]")
+_MATH_NAMES = MATH_SYMBOLS | MATH_WORDS | set(MATH_COMMANDS)
+_PAR = "\n\n"  # the kind of a blank-line token
+
+
+def _shown(text: str, at: int) -> str:
+    """The command at `at` as a person reads it: \\iow_open:Nn, not TeX's \\iow."""
+    shown = _SHOWN.match(text, at).group()
+    return "\\ at the end of a line" if shown == "\\\n" else shown
+
+
+def math_hint(character: str) -> str:
+    """What to write in math instead of a non-ASCII character.
+
+    >>> math_hint("μ"), math_hint("Ω"), math_hint("×")
+    ('write \\\\mu', 'write \\\\Omega', 'write \\\\times')
+    """
+    if character in MATH_UNICODE:
+        return f"write {MATH_UNICODE[character]}"
+    words = unicodedata.name(character, "").split()
+    if len(words) == 4 and words[0] == "GREEK" and words[2] == "LETTER":
+        letter = words[3].lower().replace("lamda", "lambda")
+        command = letter.capitalize() if words[1] == "CAPITAL" else letter
+        if command in MATH_SYMBOLS:
+            return f"write \\{command}"
+    return "math is ASCII: write a command such as \\alpha, or words in \\text{...}"
+
+
+class _Parser:
+    """One pass over a question: checks it and builds its LaTeX (see the module's policy)."""
+
+    def __init__(self, text: str, values: Mapping[str, str | None], limit: int):
+        _check_length(text, limit)
+        check_characters(text, newlines=True)
+        _check_escapes(text)
+        self.source = text
+        self.values = values
+        self.limit = limit
+        self.tokens = []  # (kind, text, offset): kind is the token, _PAR, or "{{" with text the name
+        for match in _TOKEN.finditer(text):
+            if match.group("placeholder"):
+                self.tokens.append(("{{", match.group("name"), match.start()))
+            elif match.group("par"):
+                self.tokens.append((_PAR, match.group(), match.start()))
             else:
-                out.append(SPECIALS["\\"] + "".join(SPECIALS.get(c, c) for c in name))
-        elif token == "{":
-            braces.append("literal")
-            out.append(r"\{")
-        elif token == "}":
-            out.append("}" if (braces.pop() if braces else "literal") == "argument" else r"\}")
-        else:
-            out.append(SPECIALS.get(token, token))
-    return "".join(out) + "}" * braces.count("argument")
+                self.tokens.append((match.group(), match.group(), match.start()))
+        self.i = 0
+        self.depth = 0
+        self.lone_accent = None  # see math_mode
 
+    # tokens
+    def peek(self, ahead: int = 0) -> str | None:
+        """The kind of the next token (or the one `ahead` of it); None at the end."""
+        i = self.i + ahead
+        return self.tokens[i][0] if i < len(self.tokens) else None
 
-def question_latex(rendered: str) -> str:
-    """The rendered question made safe: refused as `check` would (LatexError), math kept,
-    the text between escaped but for the whitelisted commands."""
-    _refuse_everywhere(rendered)
-    parts = []
-    for is_math, piece in _split(rendered):
-        if is_math:
-            _check_math(piece)
-            parts.append(piece)
-        else:
-            parts.append(_escape_text(piece))
-    return "".join(parts)
+    def take(self) -> tuple[str, str, int]:
+        token = self.tokens[self.i]
+        self.i += 1
+        return token
+
+    def spaces(self) -> str:
+        """Skip spaces and single line breaks (TeX skips them before an argument); return them."""
+        start = self.i
+        while self.peek() in _SPACE:
+            self.i += 1
+        return "".join(text for _, text, _ in self.tokens[start:self.i])
+
+    def at(self, offset: int) -> str:
+        """A snippet of the source around an offset, on one line, to name a place in an error."""
+        return "'" + self.source[max(0, offset - 10):offset + 8].replace("\n", " ").strip() + "'"
+
+    @contextmanager
+    def nested(self, offset: int):
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise LatexError(f"groups nested more than {MAX_DEPTH} deep at {self.at(offset)}")
+        try:
+            yield
+        finally:
+            self.depth -= 1
+
+    def question(self) -> str:
+        return self.text_mode(None)
+
+    # text
+    def text_mode(self, command: str | None) -> str:
+        """Text up to the end, or (inside `command`'s argument) to the `}` that closes it."""
+        out, braces = [], 0
+        while True:
+            if self.peek() is None:
+                if command:
+                    raise LatexError(f"{command}{{...}} is not closed: a '}}' is missing")
+                return "".join(out)
+            kind, text, offset = self.take()
+            if kind == "}" and command and not braces:
+                return "".join(out)
+            if kind in ("{", "}"):
+                braces += 1 if kind == "{" else -(braces > 0)
+                out.append(SPECIALS[kind])
+            elif kind == "$":
+                out.append(self.math_piece(offset))
+            elif kind == "{{":
+                out.append(self.placeholder(text))
+            elif kind == _PAR:
+                if command:
+                    raise LatexError(f"a blank line inside {command}{{...}} at {self.at(offset)}")
+                out.append(text)
+            elif kind.startswith("\\"):
+                out.append(self.text_command(kind, offset))
+            else:
+                out.append(SPECIALS.get(kind, kind))
+
+    def placeholder(self, name: str) -> str:
+        if name not in self.values:
+            raise LatexError(f"{{{{ {name} }}}}: not a parameter (parameters: {', '.join(self.values) or 'none'})")
+        value = self.values[name]
+        return "" if value is None else question_latex(value, {}, self.limit)
+
+    def text_command(self, token: str, offset: int) -> str:
+        name = token[1:]
+        if name in TEXT_COMMANDS:
+            return token + self.spaces() + self.argument(token, offset, "text")
+        if name in TEXT_WORDS:
+            if self.peek() == "{" and self.peek(1) == "}":
+                self.i += 2  # \ldots{}: the usual way to keep the space after it
+            return token + "{}"
+        if name in TEXT_SYMBOLS:
+            return token
+        if name in ACCENTS:
+            return token + self.accent(token, offset)
+        if token == "\\\\":
+            raise LatexError("\\\\ (a line break) is not allowed outside a math environment: the question "
+                             "is one paragraph (a blank line may start another)")
+        shown = _shown(self.source, offset)
+        hint = " (math goes between $...$)" if name in _MATH_NAMES else ""
+        allowed = ", ".join(f"\\{c}{{...}}" for c in sorted(TEXT_COMMANDS))
+        words = ", ".join("\\" + w for w in sorted(TEXT_WORDS))
+        raise LatexError(f"{shown} is not allowed outside math{hint}; allowed: {allowed}, {words}, accents "
+                         "and \\% \\$ \\& \\# \\_ \\{ \\}")
+
+    def accent(self, token: str, offset: int) -> str:
+        """The letter of an accent: \\'e or \\'{e}, written {e}."""
+        braced = self.peek() == "{"
+        letter = self.peek(braced) or ""
+        if not (_LETTER.fullmatch(letter) and (not braced or self.peek(2) == "}")):
+            raise LatexError(f"the accent {token} at {self.at(offset)} goes on one letter: {token}e or {token}{{e}}")
+        self.i += 3 if braced else 1
+        return "{" + letter + "}"
+
+    def argument(self, command: str, offset: int, kind: str) -> str:
+        """A mandatory argument in braces: text, math or a name (letters)."""
+        if self.peek() != "{":
+            raise LatexError(f"{command} at {self.at(offset)} needs its argument in braces")
+        _, _, start = self.take()
+        with self.nested(start):
+            if kind == "text":
+                return "{" + self.text_mode(command) + "}"
+            if kind == "name":
+                name = self.letters()
+                if not name or self.peek() != "}":
+                    raise LatexError(f"{command}{{...}} at {self.at(offset)} takes letters only")
+                self.i += 1
+                return "{" + name + "}"
+            return "{" + self.math_mode("}", start) + "}"
+
+    def letters(self) -> str:
+        start = self.i
+        while _LETTER.fullmatch(self.peek() or ""):
+            self.i += 1
+        return "".join(kind for kind, _, _ in self.tokens[start:self.i])
+
+    # math
+    def math_piece(self, offset: int) -> str:
+        if self.peek() == "$":
+            raise LatexError(f"$$ (display math) at {self.at(offset)} is not allowed: write $...$")
+        with self.nested(offset):
+            return "$" + self.math_mode("$", offset) + "$"
+
+    def math_mode(self, end: str, opened: int, environment: str | None = None, index: bool = False) -> str:
+        """Math up to `end`: "$", "}" (a group), "]" (the index of \\sqrt), "\\right" or "\\end"
+        (an `environment`'s body). `index`: inside \\sqrt[...], where TeX ends the index at the
+        first `]` outside braces. Sets self.lone_accent: the scripts of the list's only atom if that
+        is an accent, which TeX hoists out of a group ({\\bar{x}_b}_a is a double subscript)."""
+        out = []
+        sup = sub = None  # the atom's superscript and subscript: None, "prime" (a ' sequence going on), "done"
+        tabs = items = 0  # the row's & so far; the atoms and glue of the list so far
+        accent = False  # whether the last atom is an accent (one TeX would hoist out of a group)
+        while True:
+            if self.peek() is None or (self.peek() == "$" and end != "$"):
+                raise LatexError(self.unclosed(end, opened, environment))
+            kind, text, offset = self.take()
+            if sup == "prime" and kind not in ("'", "^"):
+                sup = "done"  # LaTeX's ' merges only with a ' or ^ right after it
+            if kind in _SPACE:
+                out.append(text)
+                continue
+            if kind in ("^", "_", "'"):
+                taken = sup if kind != "_" else sub
+                if taken == "done":
+                    raise LatexError(f"double {'sub' if kind == '_' else 'super'}script at {self.at(offset)}: "
+                                     "put both in one group, x^{ab}")
+                if kind == "'":
+                    sup = "prime"
+                    out.append(text)
+                    continue
+                if kind == "^":
+                    sup = "done"
+                else:
+                    sub = "done"
+                out.append(text + self.script(kind, offset, index))
+                continue
+            atom, sup, sub = (sup, sub), None, None  # anything else is a new atom (or glue, after which TeX starts one)
+            if kind == end:
+                self.lone_accent = atom if items == 1 and accent else None
+                return "".join(out)
+            items, accent, hoisted = items + 1, False, None
+            if kind == "]" and index:
+                raise LatexError(f"a ']' inside \\sqrt[...] at {self.at(offset)} ends the index: put it in braces")
+            if kind == "&":
+                if environment is None:
+                    raise LatexError(f"'&' at {self.at(offset)} outside a math environment ({self.environments()})")
+                tabs += 1
+                most = MATH_ENVIRONMENTS[environment]
+                if most is not None and tabs >= most:
+                    raise LatexError(f"a row of {environment} has at most {most} columns ({most - 1} '&') at "
+                                     f"{self.at(offset)}")
+                out.append(text)
+            elif kind == "\\\\":
+                if environment is None:
+                    raise LatexError(f"\\\\ at {self.at(offset)} outside a math environment ({self.environments()})")
+                tabs = 0
+                out.append(text + self.after_row(offset))
+            elif kind.startswith("\\"):
+                out.append(self.math_command(kind, offset, index, end))
+                hoisted = self.lone_accent if kind[1:] in MATH_ALPHABETS else None
+                accent = kind[1:] in MATH_ACCENTS or hoisted is not None
+            elif kind == "{":
+                with self.nested(offset):
+                    out.append("{" + self.math_mode("}", offset) + "}")
+                hoisted = self.lone_accent
+                accent = hoisted is not None
+            else:
+                out.append(self.math_character(kind, offset))
+            if hoisted:  # TeX took the group's lone accent out of it, with its scripts
+                sup, sub = hoisted
+
+    def unclosed(self, end: str, opened: int, environment: str | None) -> str:
+        what = {"$": "unpaired '$' (write \\$ for a dollar sign)", "}": "unbalanced braces: a '{' is not closed",
+                "]": "\\sqrt[ is not closed by ]", "\\right": "\\left is not closed by \\right",
+                "\\end": f"\\begin{{{environment}}} is not closed by \\end{{{environment}}}"}[end]
+        return f"{what} at {self.at(opened)}"
+
+    def math_character(self, kind: str, offset: int) -> str:
+        if kind.isascii() and (kind.isalnum() or kind in MATH_CHARACTERS):
+            return kind
+        if kind == "}":
+            raise LatexError(f"unbalanced braces: '}}' at {self.at(offset)} closes no group")
+        if kind == "%":
+            raise LatexError(f"'%' in math at {self.at(offset)} starts a comment: write \\%")
+        if kind == "{{":
+            raise LatexError("a {{ placeholder }} becomes $value$: put it outside $...$")
+        if kind == _PAR:
+            raise LatexError(f"a blank line inside math at {self.at(offset)}")
+        if not kind.isascii():
+            raise LatexError(f"{kind!r} ({describe(kind)}) in math: {math_hint(kind)}")
+        raise LatexError(f"{kind!r} is not allowed in math at {self.at(offset)}")
+
+    @staticmethod
+    def environments() -> str:
+        return "only in " + ", ".join(sorted(MATH_ENVIRONMENTS))
+
+    def script(self, kind: str, offset: int, index: bool) -> str:
+        """The argument of ^ or _: a character, a math symbol, a SCRIPT_COMMANDS command or a group."""
+        spaces = self.spaces()
+        token = self.peek()
+        if token == "{":
+            _, _, start = self.take()
+            with self.nested(start):
+                return spaces + "{" + self.math_mode("}", start) + "}"
+        if token is not None and token in SCRIPT_CHARACTERS:
+            self.i += 1
+            return spaces + token
+        if token is not None and token.startswith("\\") and token[1:] in MATH_SYMBOLS:
+            self.i += 1
+            return spaces + token
+        if token is not None and token.startswith("\\") and token[1:] in SCRIPT_COMMANDS:
+            _, _, start = self.take()
+            return spaces + self.math_command(token, start, index, None)
+        raise LatexError(f"`{kind}` at {self.at(offset)} needs an argument: a character, a symbol such as \\alpha, "
+                         "or {...}")
+
+    def after_row(self, offset: int) -> str:
+        """The spaces after a \\\\ of an environment: a [ or * next would be read as its option."""
+        spaces = self.spaces()
+        if self.peek() in ("[", "*"):
+            raise LatexError(f"{self.peek()!r} after \\\\ at {self.at(offset)} would be read as its option: "
+                             "write {[} or {*}")
+        return spaces
+
+    def delimiter(self, command: str, offset: int, index: bool) -> str:
+        spaces = self.spaces()
+        token = self.peek()
+        if token not in DELIMITERS:
+            raise LatexError(f"{command} at {self.at(offset)} needs a delimiter: one of "
+                             f"{' '.join(sorted(DELIMITERS))}")
+        if token == "]" and index:
+            raise LatexError(f"a ']' inside \\sqrt[...] at {self.at(offset)} ends the index: put it in braces")
+        self.i += 1
+        return spaces + token
+
+    def math_command(self, token: str, offset: int, index: bool, end: str | None) -> str:
+        name = token[1:]
+        if name in MATH_CONTROL_SYMBOLS or name in MATH_SYMBOLS or name in MATH_WORDS:
+            return token
+        if name == "sqrt":
+            spaces = self.spaces()
+            if self.peek() == "[":
+                if index:  # TeX would end the outer index at this one's ]
+                    raise LatexError(f"a \\sqrt[...] inside the index of another at {self.at(offset)}: put it in braces")
+                _, _, start = self.take()
+                with self.nested(start):
+                    spaces += "[" + self.math_mode("]", start, index=True) + "]"
+            return token + spaces + self.spaces() + self.argument(token, offset, "math")
+        if name in MATH_COMMANDS:
+            return token + "".join(self.spaces() + self.argument(token, offset, kind) for kind in MATH_COMMANDS[name])
+        if name == "left":
+            with self.nested(offset):
+                opening = self.delimiter(token, offset, index)
+                body = self.math_mode("\\right", offset, index=index)
+                return token + opening + body + "\\right" + self.delimiter("\\right", offset, index)
+        if name == "middle" and end == "\\right":
+            return token + self.delimiter(token, offset, index)
+        if name == "begin":
+            return self.environment(offset, index)
+        if name in ("right", "middle", "end"):
+            opening = "\\begin" if name == "end" else "\\left"
+            raise LatexError(f"{token} at {self.at(offset)} without a {opening}")
+        hint = " (it is text: write it outside $...$)" if name in TEXT_COMMANDS | TEXT_WORDS else ""
+        raise LatexError(f"{_shown(self.source, offset)} is not allowed in math{hint}")
+
+    def environment_name(self, command: str, offset: int) -> str:
+        if self.peek() != "{":
+            raise LatexError(f"\\{command} at {self.at(offset)} needs an environment name in braces")
+        self.i += 1
+        name = self.letters()
+        if self.peek() != "}" or name not in MATH_ENVIRONMENTS:
+            raise LatexError(f"\\{command}{{{name}...}} at {self.at(offset)}: the math environments are "
+                             f"{', '.join(sorted(MATH_ENVIRONMENTS))}")
+        self.i += 1
+        return name
+
+    def environment(self, offset: int, index: bool) -> str:
+        name = self.environment_name("begin", offset)
+        with self.nested(offset):
+            spaces = self.spaces()
+            if name in POSITIONED and self.peek() == "[":
+                raise LatexError(f"'[' right after \\begin{{{name}}} at {self.at(offset)} would be read as its "
+                                 "position: write {[}")
+            body = spaces + self.math_mode("\\end", offset, environment=name, index=index)
+            closing = self.environment_name("end", offset)
+            if closing != name:
+                raise LatexError(f"\\begin{{{name}}} at {self.at(offset)} is closed by \\end{{{closing}}}")
+        return f"\\begin{{{name}}}{body}\\end{{{name}}}"

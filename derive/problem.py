@@ -20,6 +20,8 @@ import sympy as sp
 import yaml
 
 from derive import expr, library, numeric, units
+from derive.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT,
+                                 TITLE_LIMIT, TOPIC_LIMIT)
 from derive.errors import ProblemError
 from derive.reader import Loader, Reader
 from derive.scene import Quantity, Scene, parse_quantity
@@ -196,7 +198,8 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         unit = reader.unit(spec["unit"], f"{field}.unit")
         reader.symbols[name] = symbol
         reader.symbol_units[symbol] = unit
-        result[name] = Parameter(name, symbol, reader.text(spec["meaning"], f"{field}.meaning"), unit, value, bounds, sig_figs)
+        result[name] = Parameter(name, symbol, reader.text(spec["meaning"], f"{field}.meaning", MEANING_LIMIT), unit, value, bounds,
+                                 sig_figs)
         reader.parameters[name] = result[name]
     return result
 
@@ -220,7 +223,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
         if not isinstance(spec.get("magnitude", False), bool):
             raise reader.fail(f"{field}.magnitude", "expected true or false")
-        path = reader.text(spec["of"], f"{field}.of")
+        path = reader.text(spec["of"], f"{field}.of", NAME_LIMIT)
         try:
             quantity = parse_quantity(scene, path, spec.get("axis"))
         except ValueError as error:
@@ -229,7 +232,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
         if sig_figs is not None and (not isinstance(sig_figs, int) or not 1 <= sig_figs <= 15):
             raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
         result[name] = Ask(
-            name, reader.text(spec["meaning"], f"{field}.meaning"), path, quantity,
+            name, reader.text(spec["meaning"], f"{field}.meaning", MEANING_LIMIT), path, quantity,
             reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False), zero_for,
             _small(reader, spec.get("small"), f"{field}.small", scene),
             _shift(reader, spec.get("shift"), f"{field}.shift", quantity),
@@ -314,7 +317,7 @@ def _conditions(reader: Reader, raw, asks: dict[str, Ask]) -> tuple[Condition, .
                 raise reader.fail(f"{field}.holds", f"compares quantities of different dimensions ({error}); "
                                   "numbers stand only for dimensionless quantities") from None
         used = {d for difference, _ in parts for d in difference.free_symbols}
-        result.append(Condition(spec["holds"], reader.text(spec["because"], f"{field}.because"), tuple(parts),
+        result.append(Condition(spec["holds"], reader.text(spec["because"], f"{field}.because", MEANING_LIMIT), tuple(parts),
                                 {d: n for n, d in placeholders.items() if d in used}))
     return tuple(result)
 
@@ -330,7 +333,7 @@ def parse(text: str, path: Path) -> Problem:
         reason = getattr(error, "problem", None) or str(error).splitlines()[0]
         raise ProblemError(f"{path}: {where}: invalid YAML: {reason}") from None
     raw = reader.mapping(raw, "", required=("id", "title", "parameters", "scene", "ask", "question"), optional=TOP_LEVEL)
-    problem_id = reader.text(raw["id"], "id")
+    problem_id = reader.text(raw["id"], "id", NAME_LIMIT)
     if not library.ID_PATTERN.fullmatch(problem_id):
         raise reader.fail("id", "an id is letters, digits and _, starting with a letter")
     parameters = _parameters(reader, raw["parameters"])
@@ -339,19 +342,21 @@ def parse(text: str, path: Path) -> Problem:
     corrections = raw.get("corrections") or []
     if not isinstance(corrections, list):
         raise reader.fail("corrections", "expected a list")
-    for i, c in enumerate(corrections):
-        reader.mapping(c, f"corrections[{i}]", required=("where", "notes", "derived"), optional=("proof",))
+    corrections = tuple(
+        {key: reader.text(text, f"corrections[{i}].{key}", CORRECTION_LIMIT) for key, text in
+         reader.mapping(c, f"corrections[{i}]", required=("where", "notes", "derived"), optional=("proof",)).items()}
+        for i, c in enumerate(corrections))
     return Problem(
         id=problem_id,
-        title=reader.text(raw["title"], "title"),
-        topic=reader.text(raw.get("topic", "general"), "topic"),
-        source=str(raw.get("source", "")),
+        title=reader.text(raw["title"], "title", TITLE_LIMIT),
+        topic=reader.text(raw.get("topic", "general"), "topic", TOPIC_LIMIT),
+        source=reader.text(raw["source"], "source", SOURCE_LIMIT) if "source" in raw else "",
         path=path,
         parameters=parameters,
         scene=scene,
         asks=asks,
-        question=reader.text(raw["question"], "question"),
-        corrections=tuple({k: str(v) for k, v in c.items()} for c in corrections),
+        question=reader.text(raw["question"], "question", QUESTION_LIMIT),
+        corrections=corrections,
         scene_units=dict(reader.symbol_units),
         conditions=_conditions(reader, raw.get("conditions"), asks),
     )

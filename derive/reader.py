@@ -146,13 +146,17 @@ class Reader:
             raise self.fail(field, f"{what} is a letter followed by letters, digits or _")
         return value
 
-    def text(self, value, field: str) -> str:
-        """Non-empty text that TeX may safely see (derive.latex_safety); the `question` field
-        is checked as LaTeX with `{{ NAME }}` placeholders of the parameters read so far."""
+    def text(self, value, field: str, limit: int) -> str:
+        """Non-empty text of at most `limit` characters that TeX may safely see
+        (derive.latex_safety): plain text, but for the `question` field, checked as LaTeX with
+        `{{ NAME }}` placeholders of the parameters read so far."""
         if not isinstance(value, str) or not value.strip():
             raise self.fail(field, "expected non-empty text")
         try:
-            latex_safety.check(value, question=field == "question", placeholders=tuple(self.parameters))
+            if field == "question":
+                latex_safety.check_question(value, self.parameters, limit)
+            else:
+                latex_safety.check_plain(value, limit)
         except latex_safety.LatexError as error:
             raise self.fail(field, str(error)) from None
         return value
@@ -169,7 +173,7 @@ class Reader:
         return result
 
     def unit(self, value, field: str) -> str:
-        text = self.text(value, field) if not isinstance(value, (int, Decimal)) else str(value)
+        text = self.text(value, field, latex_safety.NAME_LIMIT) if not isinstance(value, (int, Decimal)) else str(value)
         try:
             units.parse_unit(text)
         except units.UnitError as error:

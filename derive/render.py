@@ -1,8 +1,9 @@
-"""The jinja environments: LaTeX templates from templates/, and problem question text.
+"""LaTeX templates from templates/ (jinja), and problem question text (no template engine).
 
 Templates use LaTeX-friendly delimiters (\\VAR{...}, \\BLOCK{...}, \\#{...}) so braces stay
-LaTeX's; both environments are sandboxed and strict (an undefined name is an error, not
-blank text), because question text comes from problem files.
+LaTeX's; the environment is sandboxed and strict (an undefined name is an error, not blank
+text). Question text comes from problem files: its `{{ NAME }}` placeholders are replaced by
+`derive.latex_safety.question_latex`, which reads it as TeX would and evaluates nothing.
 
 >>> question("A mass {{ m }} hangs.", {"m": "$2\\\\,\\\\mathrm{kg}$"})
 'A mass $2\\\\,\\\\mathrm{kg}$ hangs.'
@@ -43,20 +44,10 @@ def templates() -> SandboxedEnvironment:
     return env
 
 
-@lru_cache(maxsize=1)
-def _questions() -> SandboxedEnvironment:
-    return SandboxedEnvironment(undefined=jinja2.StrictUndefined, autoescape=False)
-
-
 def question(text: str, values: dict[str, str]) -> str:
-    """Render a problem's question text, `{{ name }}` standing for a parameter's value and unit.
-
-    Raises jinja2 errors (UndefinedError, TemplateSyntaxError, SecurityError) for names or
-    syntax the problem does not declare. The result is made safe for LaTeX by
-    `latex_safety.question_latex`: math kept, specials outside it escaped, LatexError for
-    what could misuse TeX.
-    """
-    return latex_safety.question_latex(_questions().from_string(text).render(**values))
+    """A problem's question as LaTeX, `{{ name }}` standing for a parameter's value and unit:
+    `latex_safety.question_latex` (a LatexError for text it refuses, values included)."""
+    return latex_safety.question_latex(text, values)
 
 
 def render(template: str, **context) -> str:

@@ -103,10 +103,8 @@ def _set_text(path: Path, raw: dict, key: str) -> str:
         value = str(value)  # `due: 2026` is a date the author meant as text
     if not isinstance(value, str) or (key == "title" and not value.strip()):
         raise InputError(f"{path}: {key}: expected {'non-empty ' if key == 'title' else ''}text")
-    if len(value) > TEXT_LIMITS[key]:
-        raise InputError(f"{path}: {key}: {len(value)} characters (limit {TEXT_LIMITS[key]})")
     try:
-        latex_safety.check(value)
+        latex_safety.check_plain(value, TEXT_LIMITS[key])
     except latex_safety.LatexError as error:
         raise InputError(f"{path}: {key}: {error}") from None
     return value

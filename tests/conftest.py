@@ -3,7 +3,9 @@ import os
 import shutil
 import subprocess
 import sys
+from contextlib import contextmanager
 from pathlib import Path
+from types import SimpleNamespace
 
 import mpmath
 import pytest
@@ -43,3 +45,31 @@ def solve(problem_id: str, **values) -> tuple[dict, dict]:
 def close(value, reference, digits: int = 15) -> bool:
     """Within half a unit of the last of `digits` significant digits of the reference."""
     return abs(value - reference) <= abs(reference) * mpmath.mpf(10) ** (1 - digits) / 2
+
+
+@contextmanager
+def kept_scratch(folder: Path):
+    """export.pdf compiling in `folder`, kept afterwards (export deletes its scratch folder): a
+    test reads TeX's log there and lists what TeX wrote."""
+    from derive import export
+
+    @contextmanager
+    def scratch(prefix=""):
+        folder.mkdir(parents=True)
+        yield str(folder)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(export, "tempfile", SimpleNamespace(TemporaryDirectory=scratch))
+        yield folder
+
+
+#: What TeX and latexmk write beside a document.tex in their scratch folder (the .aux and .pdf
+#: are moved out by export.pdf).
+TEX_OWN_FILES = {".tex", ".aux", ".log", ".pdf", ".fls", ".fdb_latexmk"}
+
+
+def document(body: str) -> str:
+    """A document in derive's real preamble (templates/preamble.tex.j2)."""
+    from derive import render
+
+    return render.render("preamble.tex.j2") + "\\begin{document}\n" + body + "\n\\end{document}\n"

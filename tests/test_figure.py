@@ -114,7 +114,7 @@ SPECIAL = """\
 id: special_names
 title: Names with LaTeX specials
 parameters:
-  H: {meaning: "height & width: 100% of #1, $5 {a_b} ~x^2 \\\\relax", unit: m, range: [0.5, 3]}
+  H: {meaning: "height & width: 100% of #1, $5 {a_b} ~x^2 \\\\ relax", unit: m, range: [0.5, 3]}
   g: {meaning: "gravity % \\\\ & $", unit: m/s^2, value: 9.81}
 scene:
   surfaces:

@@ -1,11 +1,14 @@
 """Significant figures, LaTeX escaping, strict sandboxed templates, LaTeX errors reported."""
 
+import tempfile
+from pathlib import Path
+
 import jinja2
 import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
-from derive import numeric, render
+from derive import latex_safety, numeric, render
 
 
 @pytest.mark.parametrize("value, digits, text", [
@@ -34,10 +37,10 @@ def test_tex_escape():
 
 
 def test_templates_are_strict_and_sandboxed():
-    with pytest.raises(jinja2.UndefinedError):
+    with pytest.raises(latex_safety.LatexError, match=r"\{\{ q \}\}: not a parameter"):
         render.question("mass {{ q }}", {"m": "1"})
-    with pytest.raises(jinja2.exceptions.SecurityError):
-        render.question("{{ ''.__class__.__mro__[1].__subclasses__() }}", {})
+    text = "{{ ''.__class__.__mro__[1].__subclasses__() }}"  # questions are no templates: literal text
+    assert render.question(text, {}) == render.tex_escape(text)
     env = render.templates()
     assert env.variable_start_string == r"\VAR{" and env.undefined is jinja2.StrictUndefined
     with pytest.raises(jinja2.UndefinedError):
@@ -59,11 +62,14 @@ def test_undeclared_name_in_question_is_bad_input(tmp_path):
     assert done.returncode == 2 and "rod_midpoint.yaml: question: {{ mass }}: not a parameter" in done.stderr
 
 
-def test_latex_error_prints_the_log_lines_of_the_error(tmp_path):
+def test_latex_error_prints_the_log_lines_of_the_error(tmp_path, monkeypatch):
+    """A TeX error (no problem text causes one now: derive.latex_safety; here a broken TikZ library
+    that TeX finds first on TEXINPUTS) is reported with the lines of its log."""
     library = one_problem_library(tmp_path)
-    rod = library / "inertia" / "rod_midpoint.yaml"
-    rod.write_text(rod.read_text().replace("Find its moment", r"$\nosuchmacro$ Find its moment"))  # math passes as written
-    done = run_derive("sheet", "one", "--to", "pdf", "--out", str(tmp_path / "out"), library=library)
+    with tempfile.TemporaryDirectory(dir="/tmp") as packages:  # a short path: TeX's log wraps long lines
+        (Path(packages) / "tikzlibraryarrows.meta.code.tex").write_text("\\nosuchmacro\n")
+        monkeypatch.setenv("TEXINPUTS", f"{packages}:")
+        done = run_derive("sheet", "one", "--to", "pdf", "--out", str(tmp_path / "out"), library=library)
     assert done.returncode == 1
     assert "worksheet.tex did not compile" in done.stderr and "Undefined control sequence" in done.stderr
     assert "internal error" not in done.stderr
