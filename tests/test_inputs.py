@@ -128,7 +128,7 @@ def set_file(tmp_path, text, name="week.yaml"):
 @pytest.mark.parametrize("text, message", [
     ("title: t\nvariants: 1000000\nproblems: [rod_endpoint]\n", "variants: expected a whole number from 1 to 1000"),
     ("title: t\nseed: -1\nproblems: [rod_endpoint]\n", "seed: expected a whole number from 0 to"),
-    (f"title: {'x' * 150_000}\nproblems: [rod_endpoint]\n", r"title: 150000 characters \(limit 200\)"),
+    (f"title: {'x' * 150_000}\nproblems: [rod_endpoint]\n", r"title: 150000 characters: at most 200"),
     ('title: "a\\x07b"\nproblems: [rod_endpoint]\n', r"title: control character '\\x07' is not allowed"),
     ('title: t\ncourse: "\\x1b[31m"\nproblems: [rod_endpoint]\n', "course: control character"),
     ("title: t\nproblems: [rod_endpoint, rod_endpoint]\n", r"problems\[1\]: rod_endpoint is already problems\[0\]"),
