@@ -471,6 +471,27 @@ def test_specials_in_titles_and_meanings_are_escaped_and_compile(tmp_path):
     assert (out / "worksheet.pdf").stat().st_size > 0 and (out / "solutions.pdf").stat().st_size > 0
 
 
+def test_a_sheet_in_any_script_builds_every_format(tmp_path):
+    """Titles, meanings and questions in Greek, accented Latin, Cyrillic and CJK: the whole
+    build (LuaLaTeX chosen for the PDFs) exits 0 and every text reaches the PDF, HTML and DOCX."""
+    path = tmp_path / "scripts.yaml"
+    path.write_text(problem_text(title="Диск — μ, ω, é", meaning="masse du disque", ask_meaning="慣性モーメント",
+                                 question="Ein Rad (Ж, 日本) der Masse {{ M }} dreht sich."), encoding="utf-8")
+    (tmp_path / "scripts_set.yaml").write_text(f"title: 'Übung 7 — Вращение 回転'\nproblems: [{path}]\n",
+                                               encoding="utf-8")
+    out = tmp_path / "out"
+    result = run_derive("sheet", str(tmp_path / "scripts_set.yaml"), "--out", str(out), "--to", "pdf,html,docx")
+    assert result.returncode == 0, result.stderr
+    assert export.engine((out / "worksheet.tex").read_text(encoding="utf-8")) == "lualatex"
+    worksheet, solutions = pdf_text(out / "worksheet.pdf"), pdf_text(out / "solutions.pdf")
+    for text in ("Диск — μ, ω, é", "Übung 7 — Вращение 回転", "Ein Rad (Ж, 日本) der Masse"):
+        assert text in worksheet, text
+    assert "慣性モーメント" in solutions
+    html = (out / "worksheet.html").read_text(encoding="utf-8")
+    assert "Вращение 回転" in html and "Ж, 日本" in html
+    assert (out / "worksheet.docx").stat().st_size > 0
+
+
 def test_latexmk_runs_without_shell_escape_and_with_paranoid_files(monkeypatch, tmp_path):
     seen = {}
 
