@@ -129,8 +129,8 @@ def set_file(tmp_path, text, name="week.yaml"):
     ("title: t\nvariants: 1000000\nproblems: [rod_endpoint]\n", "variants: expected a whole number from 1 to 1000"),
     ("title: t\nseed: -1\nproblems: [rod_endpoint]\n", "seed: expected a whole number from 0 to"),
     (f"title: {'x' * 150_000}\nproblems: [rod_endpoint]\n", r"title: 150000 characters: at most 200"),
-    ('title: "a\\x07b"\nproblems: [rod_endpoint]\n', r"title: control character '\\x07' is not allowed"),
-    ('title: t\ncourse: "\\x1b[31m"\nproblems: [rod_endpoint]\n', "course: control character"),
+    ('title: "a\\x07b"\nproblems: [rod_endpoint]\n', r"title: U\+0007 is not allowed: a control character"),
+    ('title: t\ncourse: "\\x1b[31m"\nproblems: [rod_endpoint]\n', "course: U\\+001B is not allowed: a control character"),
     ("title: t\nproblems: [rod_endpoint, rod_endpoint]\n", r"problems\[1\]: rod_endpoint is already problems\[0\]"),
     ("title: t\nproblems: [rod_endpiont]\n", r"problems\[0\]: no problem file or library id 'rod_endpiont' "
                                              r"\(see `derive list`\); did you mean 'rod_endpoint'\?"),
