@@ -20,12 +20,13 @@ from derive import inertia, limits, numeric
 from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
-from derive.mechanics.derivation import Derivation, Step, root, tidy
+from derive.mechanics import friction
+from derive.mechanics.derivation import Derivation, Solved, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import Oscillation, OscillationError, exact_period, small_oscillation
 from derive.crosschecks import CrossChecks, sample_points
 from derive.problem import Ask, Problem
-from derive.scene import SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
+from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
 class Solution(CrossChecks):
     """Everything derived for one problem, computed on first use."""
@@ -39,17 +40,43 @@ class Solution(CrossChecks):
         return Coordinates(self.scene)
 
     @cached_property
+    def regimes(self) -> list[friction.Regime]:
+        """The scene in each friction regime (derive.mechanics.friction), the stuck one first;
+        one regime, the scene itself, where no contact gives friction coefficients."""
+        try:
+            contact = friction.frictional(self.scene)
+        except ValueError as error:
+            raise self.problem.limit(str(error)) from None
+        return [friction.Regime("", self.scene)] if contact is None else friction.regimes(self.scene, contact)
+
+    @property
+    def dynamics_scene(self):
+        """The scene the derivations describe: stuck at a contact with friction coefficients."""
+        return self.regimes[0].scene
+
+    @cached_property
     def derivations(self) -> dict[str, Derivation]:
+        return self._regime_derivations(0)
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, three regimes at most
+    def _regime_derivations(self, index: int) -> dict[str, Derivation]:
+        scene = self.regimes[index].scene
         try:
             with limits.time_limit("the derivation by Lagrange"):
-                by_lagrange = lagrange.derive(self.scene, self.coordinates)
+                by_lagrange = lagrange.derive(scene, self.coordinates)
             with limits.time_limit("the derivation by Newton-Euler"):
-                by_newton_euler = newton_euler.derive(self.scene, self.coordinates)
+                by_newton_euler = newton_euler.derive(scene, self.coordinates)
         except limits.TimeLimitError:
             raise
         except ValueError as error:
             raise self.problem.error("scene", str(error)) from None
         return {"lagrange": by_lagrange, "newton_euler": by_newton_euler}
+
+    def _grip(self, route: str) -> tuple[sp.Expr, sp.Expr]:
+        """(normal force, friction) the stuck contact needs, in the reference configuration at rest."""
+        stuck = self.derivations[route].at(self.coordinates.at_rest_in_reference())
+        forces = self.dynamics_scene.constraint(friction.frictional(self.scene).name).unknowns()
+        return stuck.raw[forces["normal"]], stuck.raw[forces["friction"]]
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
     def _exact_period(self, amplitude: sp.Expr, route: str):
@@ -61,7 +88,7 @@ class Solution(CrossChecks):
     @cached_property
     def oscillations(self) -> dict[str, Oscillation]:
         try:
-            return {route: small_oscillation(self.scene, d) for route, d in self.derivations.items()}
+            return {route: small_oscillation(self.dynamics_scene, d, self._sample) for route, d in self.derivations.items()}
         except OscillationError as error:
             raise self.problem.error("ask", str(error)) from None
 
@@ -81,28 +108,74 @@ class Solution(CrossChecks):
         if q.kind == "angular_acceleration":
             return solved[self.coordinates.of(q.target, "theta").a]
         if q.kind == "force":
-            return solved[self.scene.constraint(q.target).unknowns()[q.detail]]
+            return solved[self.dynamics_scene.constraint(q.target).unknowns()[q.detail]]
         if q.kind == "contact":
             return self._contact_expression(q.target, q.detail, derivation)
         raise AssertionError(q.kind)
 
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes
     def at_reference(self, route: str):
         """One route's accelerations and forces in the reference configuration, at rest: where the
-        bodies are placed and released (every coordinate and velocity zero)."""
-        return self.derivations[route].at(self.coordinates.at_rest_in_reference())
+        bodies are placed and released (every coordinate and velocity zero). With a contact that
+        may slip, each is a Piecewise over the regimes: stuck where mu_s N >= |f|, else slipping
+        with kinetic friction the way f points."""
+        rest = self.coordinates.at_rest_in_reference()
+        stuck = self.derivations[route].at(rest)
+        if len(self.regimes) == 1:
+            return stuck
+        contact = self.dynamics_scene.constraint(friction.frictional(self.scene).name)
+        forces = contact.unknowns()
+        pieces = [stuck.raw]
+        for index, regime in enumerate(self.regimes[1:], start=1):
+            solved = dict(self._regime_derivations(index)[route].at(rest).raw)
+            solved[forces["friction"]] = regime.direction * contact.kinetic * solved[forces["normal"]]
+            pieces.append(solved)
+        where = self.regime_conditions(route)
+        return Solved({u: sp.Piecewise(*((values[u], w) for values, w in zip(pieces, where))) for u in stuck.raw})
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes
+    def regime_conditions(self, route: str = "lagrange") -> list:
+        """Where each regime holds, in the order of `regimes` (each where those before do not):
+        stuck while mu_s >= |f/N| (N > 0 is a sign condition of every problem), then slipping
+        the way f points."""
+        if len(self.regimes) == 1:
+            return [sp.true]
+        normal, grip = self._grip(route)
+        ratio = tidy(grip / normal)
+        contact = friction.frictional(self.scene)
+        return [sp.Ge(friction.static_coefficient(contact), sp.Abs(ratio)),
+                *(ratio > 0 if regime.direction > 0 else sp.true for regime in self.regimes[1:])]
+
+    def regime_index(self, values: dict[sp.Symbol, sp.Expr]) -> int | None:
+        """The index in `regimes` of the regime these parameter values give (None when a
+        parameter it depends on has no value)."""
+        for index, where in enumerate(self.regime_conditions()):
+            decided = where.xreplace(values)
+            if decided not in (sp.true, sp.false):
+                return None
+            if decided == sp.true:
+                return index
+        raise AssertionError("the last regime holds wherever the others do not")
+
+    def regime_at(self, values: dict[sp.Symbol, sp.Expr]) -> str | None:
+        """What the body does at these parameter values (rolls, stays, slips); None without a
+        contact with friction coefficients, or when a parameter has no value."""
+        index = self.regime_index(values)
+        return None if index is None else self.regimes[index].name or None
 
     def _contact_expression(self, body: str, detail: str, derivation: Derivation) -> sp.Expr:
         """Quantities of a body on a surface, from one route's accelerations and forces."""
         solved = self.at_reference(derivation.route)
-        contact = self.scene.contact_of(body)
+        contact = self.dynamics_scene.contact_of(body)
         surface = self.scene.surfaces[contact.surface]
         forces = contact.unknowns()
         if detail == "normal_force":
             return solved[forces["normal"]]
         if detail == "friction":
             return solved[forces["friction"]]
-        if detail == "min_friction_coefficient":
-            ratio = tidy(solved[forces["friction"]] / solved[forces["normal"]])
+        if detail == "min_friction_coefficient":  # of the grip, whatever the regime
+            stuck = derivation.at(self.coordinates.at_rest_in_reference())
+            ratio = tidy(stuck[forces["friction"]] / stuck[forces["normal"]])
             return self._magnitude(ratio, f"{body}.min_friction_coefficient")
         if detail == "min_release_height":
             return self._release_height(body, derivation.route)[0]
@@ -317,10 +390,43 @@ class Solution(CrossChecks):
                                 - 4 * t.transverse_inertia * t.mass * self.scene.gravity.g * t.pivot_distance
                                 * sp.cos(t.tilt)), False,
                            "no steady precession: the spin is too slow (I3^2 w^2 < 4 I1 m g R cos(theta))"))
+        if {a.quantity.kind for a in self.problem.asks.values()} & DYNAMIC_KINDS:
+            result += self._sign_conditions()
+        if any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()):
+            oscillation = self.oscillations["lagrange"]
+            if not oscillation.proven:  # its sign was read at the middle of the ranges
+                result.append((oscillation.stiffness if oscillation.stable else -oscillation.stiffness, True,
+                               f"the equilibrium is {'un' if oscillation.stable else ''}stable at these parameters "
+                               f"(q'' = {sp.sstr(-oscillation.stiffness)} q)"))
         for declared in self.problem.conditions:  # the problem file's own, answers substituted
             answers = {d: self.expression(name) for d, name in declared.answers.items()}
             result += [(difference.xreplace(answers), strict, f"{declared.text} does not hold: {declared.because}")
                        for difference, strict in declared.parts]
+        return result
+
+    def _sample(self, expr: sp.Expr) -> float:
+        """The value of an expression at the middle of the parameter ranges (SI)."""
+        point = sample_points(self.problem, expr, count=1)[0]
+        return float(sp.N(expr.xreplace(point), 30))
+
+    def _sign_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
+        """The signs the parts' forces must keep in the reference configuration at rest (a taut
+        cord, a body pressing on its surface), and a grip that must hold where the file gives no
+        mu_k to derive the slipping."""
+        solved = self.at_reference("lagrange").raw
+        scene = self.dynamics_scene
+        result = [(sign.expression.xreplace(solved), False, sign.meaning)
+                  for part in (*scene.constraints, *scene.loads) for sign in part.signs()]
+        contact = friction.frictional(self.scene)
+        if contact is not None:
+            normal, grip = self._grip("lagrange")
+            if contact.kinetic is None:
+                result.append((friction.grip_margin(contact, normal, grip), False,
+                               f"the {contact.body} slips: it needs mu_s >= {sp.sstr(friction.least_coefficient(normal, grip))}"
+                               f" (give friction.kinetic: mu_k to derive the slipping)"))
+            elif contact.static is not None:
+                result.append((contact.static - contact.kinetic, False,
+                               "mu_k > mu_s: kinetic friction cannot exceed static friction"))
         return result
 
     def violated(self, values: dict[sp.Symbol, sp.Expr], backend: str = "auto") -> str | None:
@@ -386,6 +492,10 @@ class Solution(CrossChecks):
                       else gyroscope.small_angle(*arguments))
         else:
             result = self._route_expression(ask, "lagrange")
+        if result.has(sp.Piecewise):  # regimes: one case per regime, each in its simplest form
+            result = sp.piecewise_fold(result)
+            result = sp.Piecewise(*((tidy(value), where) for value, where in result.args)) \
+                if isinstance(result, sp.Piecewise) else result
         for size in ask.small:
             result = tidy(sp.limit(result, size, 0, "+"))
         if ask.zero_for:
@@ -455,9 +565,9 @@ class Solution(CrossChecks):
             elif q.kind == "angular_acceleration":
                 needed.add(self.coordinates.of(q.target, "theta").a)
             elif q.kind == "force":
-                needed.add(self.scene.constraint(q.target).unknowns()[q.detail])
+                needed.add(self.dynamics_scene.constraint(q.target).unknowns()[q.detail])
             elif q.kind == "contact":
-                forces = self.scene.contact_of(q.target).unknowns()
+                forces = self.dynamics_scene.contact_of(q.target).unknowns()
                 if q.detail in ("normal_force", "min_friction_coefficient"):
                     needed.add(forces["normal"])
                 if q.detail in ("friction", "min_friction_coefficient"):

@@ -14,7 +14,7 @@ import traceback
 import click
 
 from derive import MAX_VARIANTS, __version__
-from derive.errors import InputError
+from derive.errors import EngineLimit, InputError
 
 FORMATS = click.Choice(["text", "latex", "json"])
 
@@ -57,7 +57,7 @@ def reports_errors(command):
         except RuntimeError as error:
             from derive.export import BuildError
 
-            if not isinstance(error, BuildError):
+            if not isinstance(error, (BuildError, EngineLimit)):
                 raise
             click.echo(f"derive: error: {error}", err=True)
             sys.exit(1)

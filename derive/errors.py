@@ -20,3 +20,15 @@ class InputError(ValueError):
 
 class ProblemError(InputError):
     """Bad input in a problem file or on the command line: 'FILE: FIELD: reason'."""
+
+
+class EngineLimit(RuntimeError):
+    """A setup the file states correctly but derive cannot yet derive: exit status 1, one line
+    that begins "derive cannot yet", so that the file is not blamed.
+
+    >>> str(EngineLimit("f.yaml", "decide the friction regimes of two contacts at once"))
+    'f.yaml: derive cannot yet decide the friction regimes of two contacts at once'
+    """
+
+    def __init__(self, where: str, what: str):
+        super().__init__(f"{where}: derive cannot yet {what}")

@@ -12,6 +12,7 @@ message names the file and the field.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, InvalidOperation, localcontext
 from pathlib import Path
@@ -22,9 +23,10 @@ import yaml
 from derive import expr, library, numeric, units
 from derive.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT,
                                  TITLE_LIMIT, TOPIC_LIMIT)
-from derive.errors import ProblemError
+from derive.errors import EngineLimit, ProblemError
 from derive.reader import Loader, Reader
-from derive.scene import Quantity, Scene, parse_quantity
+from derive.parts.contact import Contact
+from derive.scene import DYNAMIC_KINDS, Quantity, Scene, parse_quantity
 from derive.scene_file import read_scene
 
 DEFAULT_SIG_FIGS = 3
@@ -122,6 +124,10 @@ class Problem:
 
     def error(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
+
+    def limit(self, what: str) -> EngineLimit:
+        """An engine limit met by this problem: "FILE: derive cannot yet WHAT" (exit 1)."""
+        return EngineLimit(str(self.path), what)
 
     @property
     def symbol_units(self) -> dict[sp.Symbol, str]:
@@ -337,8 +343,11 @@ def parse(text: str, path: Path) -> Problem:
     if not library.ID_PATTERN.fullmatch(problem_id):
         raise reader.fail("id", "an id is letters, digits and _, starting with a letter")
     parameters = _parameters(reader, raw["parameters"])
+    reader.used = set()
     scene = read_scene(reader, raw["scene"])
     asks = _asks(reader, raw["ask"], scene, parameters)
+    conditions = _conditions(reader, raw.get("conditions"), asks)
+    _check_used(reader, raw, scene, asks, parameters, conditions)
     corrections = raw.get("corrections") or []
     if not isinstance(corrections, list):
         raise reader.fail("corrections", "expected a list")
@@ -358,8 +367,28 @@ def parse(text: str, path: Path) -> Problem:
         question=reader.text(raw["question"], "question", QUESTION_LIMIT),
         corrections=corrections,
         scene_units=dict(reader.symbol_units),
-        conditions=_conditions(reader, raw.get("conditions"), asks),
+        conditions=conditions,
     )
+
+
+def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters: dict, conditions) -> None:
+    """Every key is used or refused by name: a parameter that neither the scene, the asks, the
+    conditions nor the question names; events no ask reads; friction coefficients where
+    nothing asked depends on the motion."""
+    used = reader.used | {s for c in conditions for difference, _ in c.parts for s in difference.free_symbols}
+    shown = set(re.findall(r"\{\{\s*([A-Za-z][A-Za-z0-9_]*)\s*\}\}", str(raw["question"])))
+    for name, p in parameters.items():
+        if p.symbol not in used and name not in shown:
+            raise reader.fail(f"parameters.{name}", "no part of the scene, no ask, condition or the question uses it")
+    kinds = {a.quantity.kind for a in asks.values()}
+    if scene.events and not kinds & {"event", "after"}:
+        raise reader.fail("scene.events", "no ask reads the event (event.QUANTITY or BODY.after.QUANTITY): "
+                                          "remove it, or ask what it changes")
+    if not kinds & DYNAMIC_KINDS:
+        for c in scene.constraints:
+            if isinstance(c, Contact) and c.has_friction:
+                raise reader.fail(f"scene.bodies.{c.body}.friction", "nothing asked depends on the motion, so no "
+                                                                     "friction coefficient is used")
 
 
 def load(reference: str | Path) -> Problem:

@@ -114,6 +114,7 @@ class Reader:
         self.symbols: dict[str, sp.Symbol] = {}
         self.symbol_units: dict[sp.Symbol, str] = {}
         self.parameters: dict = {}  # name -> derive.problem.Parameter, as they are read
+        self.used: set[sp.Symbol] = set()  # the symbols the expressions read so far name
 
     def fail(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -170,6 +171,7 @@ class Reader:
             raise self.fail(field, f"expected an expression, got {type(value).__name__}") from None
         if not result.free_symbols and result.is_extended_real is not True:  # sqrt(-1), log(-1)
             raise self.fail(field, f"{result} is not a real number")
+        self.used |= result.free_symbols
         return result
 
     def unit(self, value, field: str) -> str:

@@ -89,12 +89,18 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
                  if kinds & DYNAMIC_KINDS else {})
     checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
     energy = ({k: sp.sstr(v) for k, v in solution.energy_ledger().items()} if kinds & DYNAMIC_KINDS else {})
+    regimes = {}
+    if kinds & DYNAMIC_KINDS and solution.regimes[0].name:
+        regimes = {"cases": [{"regime": r.name, "where": sp.sstr(w)}
+                             for r, w in zip(solution.regimes, solution.regime_conditions())],
+                   "applies": solution.regime_at(values)}
     return {
         "id": problem.id,
         "title": problem.title,
         "source": problem.source,
         "parameters": parameters,
         "answers": answers,
+        "regimes": regimes,
         "equations_of_motion": equations,
         "checks": checks,
         "energy": energy,
@@ -125,6 +131,11 @@ def as_text(result: dict) -> str:
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:
             lines.append(f"  {'':<{width}}   approximates {a['approximation']['exact']}: relative error "
                          f"{a['approximation']['relative_error']}")
+    if result.get("regimes"):
+        lines += ["", "Friction regimes (each where those above do not hold):"]
+        lines += [f"  {c['regime']}: where {c['where']}" for c in result["regimes"]["cases"]]
+        if result["regimes"]["applies"]:
+            lines.append(f"  at these parameters the body {result['regimes']['applies']}")
     if result["energy"]:
         lines += ["", "Energy:"]
         lines += [f"  {k.replace('_', ' ')}: {v}" for k, v in result["energy"].items()]

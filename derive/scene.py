@@ -412,7 +412,7 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
                                  "with a velocity")
             return Quantity("rolling", head, rest[len("rolling."):])
         if contact and rest in CONTACT_QUANTITIES:
-            if rest in ("friction", "min_friction_coefficient") and not contact.rolling:
+            if rest in ("friction", "min_friction_coefficient") and not contact.rolling and not contact.has_friction:
                 raise ValueError(f"{head} slides without friction: it has no {rest}")
             surface = scene.surfaces[contact.surface]
             if rest in INCLINE_ONLY and not isinstance(surface, Plane):
@@ -429,6 +429,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     names = {c.name: c for c in scene.constraints}
     if head in names:
         allowed = tuple(names[head].unknowns())
+        if isinstance(names[head], Contact) and names[head].has_friction and "friction" not in allowed:
+            allowed += ("friction",)
         if rest not in allowed:
             raise ValueError(f"{head} has {', '.join(allowed)}; not {rest!r}")
         return Quantity("force", head, rest)

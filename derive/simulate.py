@@ -56,19 +56,20 @@ def _values(solution: Solution) -> dict[sp.Symbol, sp.Expr]:
     return point
 
 
-def _rhs(solution: Solution, values):
+def _rhs(solution: Solution, values, regime: int):
     """d/dt of (q, u, W): velocities, the accelerations and the power of the non-conservative
-    forces. Lagrange's equations are linear in the accelerations and forces: they are solved
-    numerically at each step (numpy), not symbolically once: with cords the general symbolic
-    solution is large."""
+    forces, in one friction regime. Lagrange's equations are linear in the accelerations and
+    forces: they are solved numerically at each step (numpy), not symbolically once: with
+    cords the general symbolic solution is large."""
     coords = solution.coordinates
-    lagrange = solution.derivations["lagrange"]
+    lagrange = solution._regime_derivations(regime)["lagrange"]
+    scene = solution.regimes[regime].scene
     state = [c.q for c in coords.all] + [c.u for c in coords.all]
     matrix, rhs_vector = sp.linear_eq_to_matrix([(e.lhs - e.rhs).xreplace(values) for e in lagrange.equations],
                                                 lagrange.unknowns)
     system = sp.lambdify(state, [matrix, rhs_vector], "numpy")
     power = sp.lambdify(state + lagrange.unknowns,
-                        nonconservative_power(solution.scene, coords).xreplace(values), "numpy")
+                        nonconservative_power(scene, coords).xreplace(values), "numpy")
     n = len(coords.all)
 
     def rhs(t, y):
@@ -83,16 +84,18 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
     report = SimulationReport()
     coords = solution.coordinates
     values = _values(solution)
-    rhs, state = _rhs(solution, values)
+    regime = solution.regime_index(values)  # the friction regime at these values: the one simulated
+    scene = solution.regimes[regime].scene
+    rhs, state = _rhs(solution, values, regime)
     n = len(coords.all)
-    gaps = [g.xreplace(values) for c in solution.scene.constraints for g in c.gaps(coords)]
+    gaps = [g.xreplace(values) for c in scene.constraints for g in c.gaps(coords)]
     gap_function = sp.lambdify(state[:n], gaps or [0], "numpy")
-    kinetic, potential = energies(solution.scene, coords)
+    kinetic, potential = energies(scene, coords)
     energy = sp.lambdify(state, (kinetic + potential).xreplace(values), "numpy")
 
     # The reference configuration (every gap vanishes there), moving with random velocities the
     # constraints allow; the last entry accumulates the work of the non-conservative forces.
-    admissible = solution._states_on_constraints(count=1)[0]
+    admissible = solution._states_on_constraints(count=1, scene=scene)[0]
     start = np.array([0.0] * n + [float(sp.N(admissible[c.u].xreplace(values))) / 4 for c in coords.all] + [0.0])
     run = solve_ivp(rhs, (0, duration), start, method=METHOD, rtol=RTOL, atol=RTOL * 1e-2, dense_output=True)
     if not run.success:
@@ -133,8 +136,10 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
             down = solution.scene.surfaces[solution.scene.contact_of(q.target).surface].down.xreplace(values)
             simulated = float(down[0]) * mean_acceleration(q.target, "x") + float(down[1]) * mean_acceleration(q.target, "y")
             _compare(report, name, simulated, solution.expressions[name], values)
-        elif q.kind == "small_oscillation" and q.detail == "period":
-            _compare(report, name, _period(solution, rhs, values, 1e-5), solution.expressions[name], values)
+        elif q.kind == "small_oscillation" and q.detail in ("period", "omega"):
+            period = _small_period(solution, rhs, values)
+            _compare(report, name, period if q.detail == "period" else 2 * np.pi / period, solution.expressions[name],
+                     values)
         elif q.kind == "oscillation":
             amplitude = float(sp.N(ask.amplitude.xreplace(values)))
             _compare(report, name, _period(solution, rhs, values, amplitude), solution.expressions[name], values)
@@ -146,6 +151,27 @@ def _compare(report: SimulationReport, name: str, simulated: float, exact: sp.Ex
     if abs(simulated - expected) > 1e-6 * (abs(expected) + 1e-12):
         report.fail(f"{name}: simulation {simulated:.10g}, closed form {expected:.10g}")
     report.compared.append(name)
+
+
+def _small_period(solution: Solution, rhs, values, amplitude: float = 1e-5) -> float:
+    """Time between downward zero crossings of the free coordinate, started in the reference
+    configuration with a small velocity along the free direction (on the constraints to first
+    order, however curved they are)."""
+    linear = solution.oscillations["lagrange"]
+    coords = solution.coordinates
+    n = len(coords.all)
+    expected = float(sp.N(linear.quantity("period").xreplace(values)))
+    speed = amplitude * 2 * np.pi / expected
+    start = np.zeros(2 * n + 1)
+    start[n:2 * n] = [speed * float(sp.N(v.xreplace(values))) for v in linear.direction]
+    index = coords.all.index(linear.coordinate)
+
+    def crossing(t, y):
+        return y[index]
+    crossing.direction = -1
+    run = solve_ivp(rhs, (0, 2 * expected), start, method=METHOD, rtol=RTOL, atol=RTOL * 1e-6, events=crossing)
+    times = run.t_events[0]
+    return float(times[1] - times[0]) if len(times) >= 2 else float("nan")
 
 
 def _period(solution: Solution, rhs, values, amplitude: float) -> float:

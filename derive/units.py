@@ -219,6 +219,16 @@ def expression_dimension(expr: sympy.Expr, symbol_units: Mapping[sympy.Symbol, s
             return out
         if isinstance(e, sympy.Abs):
             return walk(e.args[0])
+        if isinstance(e, sympy.Piecewise):  # each branch the same; each condition consistent
+            found = [walk(value) for value, _ in e.args if value != 0]  # zero has every dimension
+            first, *rest = found or [{}]
+            for d in rest:
+                if d != first:
+                    raise UnitError(f"one case has {_describe(first)}, another {_describe(d)}")
+            for _, condition in e.args:
+                for relation in condition.atoms(sympy.core.relational.Relational):
+                    walk(relation.lhs - relation.rhs)
+            return first
         if isinstance(e, sympy.Function) and not isinstance(e, AppliedUndef):  # sin, exp, log, ...
             for d in map(walk, e.args):
                 if d:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, root, tidy
+from derive.mechanics.derivation import Derivation, Step, root, solve_linear, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.scene import Scene
 
@@ -36,10 +36,12 @@ class Oscillation:
     coordinate: Coordinate
     stiffness: sp.Expr
     steps: tuple[Step, ...]
-
-    @property
-    def stable(self) -> bool:
-        return bool(self.stiffness.is_positive)
+    stable: bool
+    #: The free direction of the coordinates at the reference, its own coordinate's entry 1.
+    direction: tuple = ()
+    #: True when the sign of the stiffness holds for every value of the symbols; otherwise it
+    #: was read at sample parameters, and every variant must check it (Solution.conditions).
+    proven: bool = True
 
     def quantity(self, name: str) -> sp.Expr:
         """omega or period (stable), growth_rate (unstable)."""
@@ -52,35 +54,67 @@ class Oscillation:
         return root(self.stiffness) if name == "omega" else 2 * sp.pi * root(1 / self.stiffness)
 
 
-def small_oscillation(scene: Scene, derivation: Derivation) -> Oscillation:
-    """Angular frequency and period of small oscillations about the reference configuration."""
+def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Oscillation:
+    """Angular frequency and period of small oscillations about the reference configuration.
+
+    The constraints are linearized, not solved: their Jacobian at the reference configuration
+    has one free direction v (one degree of freedom), the coordinate q_k with the largest say in
+    it (an angle first) measures the motion, q = v q_k to first order. The accelerations and
+    forces z solve A(q) z = b(q) at rest; along q = v s, z = z0 + s z1 + O(s^2) with z0 their
+    values at the reference (an equilibrium: every acceleration zero) and z1 from
+    d/ds (A z - b) = 0 at s = 0, one linear solve with A at the reference. Curved contacts (a
+    ball in a bowl), cords and linkages need no closed-form solution of their constraints.
+    Where the sign of q''/q is not decided by the symbols' assumptions, `sample` (a function of
+    an expression giving its float value at sample parameters) decides it, and the Oscillation
+    says so (`proven` False).
+    """
     coords = Coordinates(scene)
-    try:
-        dependent = solve_gaps(scene, coords)
-    except ValueError as error:
-        raise OscillationError(str(error)) from None
-    free = [c for c in coords.all if c.q not in dependent]
+    positions = [c.q for c in coords.all]
+    reference = {q: 0 for q in positions}
+    at_rest = {c.u: 0 for c in coords.all}
+    gaps = [g for c in scene.constraints for g in c.gaps(coords)]
+    jacobian = sp.Matrix(gaps).jacobian(positions).xreplace(reference) if gaps else sp.zeros(0, len(positions))
+    free = [tidy(x) for x in jacobian.nullspace(simplify=True)] if gaps else [
+        sp.Matrix([1 if i == j else 0 for j in range(len(positions))]) for i in range(len(positions))]
     if len(free) != 1:
         raise OscillationError(f"small oscillations need one degree of freedom; the scene has {len(free)}")
-    (coordinate,) = free
-    at_rest = {c.u: 0 for c in coords.all}
-    acceleration = derivation.at({**at_rest, **dependent})[coordinate.a]
-    reference = {coordinate.q: 0}
-    if not sp.simplify(acceleration.xreplace(reference)).equals(0):
-        raise OscillationError("the reference configuration (every angle zero) is not an equilibrium")
-    stiffness = tidy(-sp.diff(acceleration, coordinate.q).xreplace(reference))
-    if stiffness.is_positive is not True and stiffness.is_negative is not True:
+    (direction,) = free
+    order = sorted(range(len(positions)), key=lambda i: (coords.all[i].kind != "theta", i))
+    k = next(i for i in order if direction[i] != 0)
+    direction = (direction / direction[k]).applyfunc(tidy)
+    coordinate = coords.all[k]
+    equilibrium = derivation.at({**reference, **at_rest}).raw
+    moving = [c.a for c in coords.all if not sp.simplify(equilibrium[c.a]).equals(0)]
+    if moving:
+        raise OscillationError("the reference configuration is not an equilibrium (released there at rest, "
+                               f"{moving[0]} is not zero): place the bodies at an equilibrium with at: and angle:")
+    s = sp.Dummy("s")
+    first = {u: sp.Dummy(f"d{u}") for u in derivation.unknowns}
+    along = {q: direction[i] * s for i, q in enumerate(positions)}
+    linear_equations = []
+    for e in derivation.equations:
+        residual = (e.lhs - e.rhs).xreplace(at_rest).xreplace(along)
+        residual = residual.xreplace({u: equilibrium[u] + s * first[u] for u in derivation.unknowns})
+        linear_equations.append(sp.Eq(sp.diff(residual, s).xreplace({s: 0}), 0))
+    slope = solve_linear(linear_equations, list(first.values())).raw[first[coordinate.a]]
+    stiffness = tidy(-slope)
+    proven = stiffness.is_positive is True or stiffness.is_negative is True
+    if proven:
+        stable = bool(stiffness.is_positive)
+    elif sample is None or sample(stiffness) == 0:
         raise OscillationError(f"cannot decide whether q'' = {sp.sstr(-stiffness)} q is stable for all parameters")
+    else:
+        stable = sample(stiffness) > 0
     q = coordinate.q
     linear = Step(f"Linearize about {q} = 0 at rest", (sp.Eq(coordinate.a, -stiffness * q),))
-    if stiffness.is_positive:
+    if stable:
         omega = root(stiffness)
         steps = (linear, Step("Angular frequency and period of small oscillations",
                               (sp.Eq(sp.Symbol("omega"), omega), sp.Eq(sp.Symbol("T"), 2 * sp.pi * root(1 / stiffness)))))
     else:
         steps = (linear, Step("Unstable: the deviation grows as exp(a t) with growth rate",
                               (sp.Eq(sp.Symbol("a"), root(-stiffness)),)))
-    return Oscillation(coordinate, stiffness, steps)
+    return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven)
 
 
 def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tuple[sp.Expr, tuple[Step, ...]]:

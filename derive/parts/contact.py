@@ -42,6 +42,11 @@ class Contact(Part):
         return (self.body,)
 
     @property
+    def has_friction(self) -> bool:
+        """The file gives a coefficient: derive.mechanics.friction decides the regime."""
+        return self.static is not None or self.kinetic is not None
+
+    @property
     def regime(self) -> str:
         if self.rolling:
             return "rolling"

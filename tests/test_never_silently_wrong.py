@@ -1,0 +1,246 @@
+"""Issue 11's rules: friction regimes decided by the engine, physical signs checked over the
+parameters, every key used or refused, engine limits reported as such, and small
+oscillations about equilibria on curved surfaces. Closed forms are from the texts cited."""
+import math
+
+import pytest
+import sympy as sp
+
+from conftest import run_derive
+from derive import simulate
+from derive.answers import Solution
+from derive.problem import load
+
+G = 9.81
+
+SPHERE = """\
+id: steep_sphere
+title: A sphere on an incline
+topic: rolling
+parameters:
+  M: {meaning: mass of the sphere, unit: kg, range: [0.2, 5], sig_figs: 2}
+  R: {meaning: radius of the sphere, unit: m, range: [0.02, 0.2], sig_figs: 2}
+  theta: {meaning: angle of the incline, unit: rad, range: [0.1, 1.2], sig_figs: 2}
+  mu_s: {meaning: static friction coefficient, unit: "1", range: [0.2, 0.4], sig_figs: 2}
+  mu_k: {meaning: kinetic friction coefficient, unit: "1", range: [0.1, 0.2], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    ramp: {incline: {angle: theta}}
+  bodies:
+    ball: {shape: sphere, mass: M, radius: R, on: ramp, contact: rolling, FRICTION}
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration down the incline, of: ball.acceleration.down_incline, unit: m/s^2}
+  alpha: {meaning: angular acceleration, of: ball.angular_acceleration, unit: rad/s^2}
+  f: {meaning: friction, of: ball.friction, unit: N}
+question: |
+  A sphere of mass {{ M }} on an incline at {{ theta }}.
+"""
+
+
+def write(tmp_path, text, name="problem.yaml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def values(problem, **given):
+    return {problem.parameters[k].symbol: sp.nsimplify(v) for k, v in given.items()} | problem.values()
+
+
+def number(solution, name, at):
+    return float(sp.N(solution.expression(name).xreplace(at), 20))
+
+
+def test_a_sphere_rolls_or_slips_as_its_friction_allows(tmp_path):
+    """Rolling: a = 5/7 g sin(theta) while mu_s >= 2/7 tan(theta); slipping: a = g (sin - mu_k
+    cos), alpha = 5 mu_k g cos / (2 R) (Kleppner & Kolenkow, An Introduction to Mechanics, 2nd
+    ed., ch. 7, a ball on an incline; the slipping case is Newton's second law with kinetic
+    friction and the torque mu_k N R about the center)."""
+    problem = load(write(tmp_path, SPHERE.replace("FRICTION", "friction: {static: mu_s, kinetic: mu_k}")))
+    solution = Solution(problem)
+    gentle = values(problem, M=1, R="0.1", theta="0.3", mu_s="0.3", mu_k="0.1")
+    assert solution.regime_at(gentle) == "rolls"
+    assert number(solution, "a", gentle) == pytest.approx(5 / 7 * G * math.sin(0.3), rel=1e-12)
+    assert number(solution, "f", gentle) == pytest.approx(-2 / 7 * G * math.sin(0.3), rel=1e-12)
+    steep = values(problem, M=1, R="0.1", theta="1.2", mu_s="0.2", mu_k="0.1")
+    assert solution.regime_at(steep) == "slips"
+    assert number(solution, "a", steep) == pytest.approx(G * (math.sin(1.2) - 0.1 * math.cos(1.2)), rel=1e-12)
+    assert abs(number(solution, "alpha", steep)) == pytest.approx(5 * 0.1 * G * math.cos(1.2) / (2 * 0.1), rel=1e-12)
+    assert abs(number(solution, "f", steep)) == pytest.approx(0.1 * G * math.cos(1.2), rel=1e-12)
+    # The boundary between the regimes is stated: mu_s = 2/7 tan(theta).
+    boundary = values(problem, M=1, R="0.1", theta="1.0", mu_s=sp.Rational(2, 7) * sp.tan(1), mu_k="0.1")
+    assert solution.regime_at(boundary) == "rolls"
+    result = run_derive("solve", str(tmp_path / "problem.yaml"), "--set", "theta=1.2", "--set", "mu_s=0.2",
+                        "--set", "mu_k=0.1", "--set", "M=1", "--set", "R=0.1")
+    assert result.returncode == 0, result.stderr
+    assert "rolls: where mu_s >= 2*Abs(tan(theta))/7" in result.stdout
+    assert "at these parameters the body slips" in result.stdout
+
+
+def test_the_simulation_follows_the_regime_that_applies(tmp_path):
+    problem = load(write(tmp_path, SPHERE.replace("FRICTION", "friction: {static: mu_s, kinetic: mu_k}")
+                         .replace("range: [0.1, 1.2]", "range: [1.1, 1.2]")))
+    report = simulate.check(Solution(problem))
+    assert report.passed, report.notes
+    assert "a" in report.compared
+
+
+def test_without_mu_k_a_slipping_variant_is_refused(tmp_path):
+    write(tmp_path, SPHERE.replace("FRICTION", "friction: {static: mu_s}").replace(
+        "  mu_k: {meaning: kinetic friction coefficient, unit: \"1\", range: [0.1, 0.2], sig_figs: 2}\n", ""))
+    result = run_derive("solve", str(tmp_path / "problem.yaml"), "--set", "theta=1.2", "--set", "mu_s=0.2",
+                        "--set", "M=1", "--set", "R=0.1")
+    assert result.returncode == 2
+    assert "the ball slips: it needs mu_s >= 2*Abs(tan(theta))/7" in result.stderr
+
+
+BLOCK = """\
+id: block_kinetic
+title: A block on an incline with friction
+topic: dynamics
+parameters:
+  m: {meaning: mass, unit: kg, range: [1, 2], sig_figs: 2}
+  theta: {meaning: angle of the incline, unit: rad, range: [0.1, 1.2], sig_figs: 2}
+  mu_k: {meaning: kinetic friction coefficient, unit: "1", range: [0.1, 0.3], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    ramp: {incline: {angle: theta}}
+  bodies:
+    block: {shape: point, mass: m, on: ramp, contact: sliding, friction: {kinetic: mu_k}}
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration down the incline, of: block.acceleration.down_incline, unit: m/s^2}
+  f: {meaning: friction, of: block.friction, unit: N}
+question: |
+  A block of mass {{ m }} on an incline at {{ theta }}.
+"""
+
+
+def test_a_block_stays_or_slides_with_kinetic_friction(tmp_path):
+    """a = g (sin(theta) - mu_k cos(theta)) once it slides; it stays while tan(theta) <= mu
+    (Halliday, Resnick & Walker, Fundamentals of Physics, ch. 6, friction on an incline)."""
+    problem = load(write(tmp_path, BLOCK))
+    solution = Solution(problem)
+    stays = values(problem, m=1, theta="0.05", mu_k="0.2")
+    assert solution.regime_at(stays) == "stays" and number(solution, "a", stays) == 0
+    assert number(solution, "f", stays) == pytest.approx(-G * math.sin(0.05), rel=1e-12)
+    slides = values(problem, m=1, theta="0.9", mu_k="0.2")
+    assert solution.regime_at(slides) == "slips"
+    assert number(solution, "a", slides) == pytest.approx(G * (math.sin(0.9) - 0.2 * math.cos(0.9)), rel=1e-12)
+
+
+SLACK = """\
+id: slack_cord
+title: A block on a cord, pushed up
+topic: dynamics
+parameters:
+  m: {meaning: mass, unit: kg, range: [1, 2], sig_figs: 2}
+  F: {meaning: upward push, unit: N, range: [1, 30], sig_figs: 2}
+  L: {meaning: length of the cord, unit: m, value: 1}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    hook: [0, L]
+  bodies:
+    block: {shape: point, mass: m, at: [0, 0]}
+  cords:
+    rope: [hook, block]
+  loads:
+    - gravity: g
+    - force: {on: block, magnitude: F, angle: pi/2}
+ask:
+  T: {meaning: tension, of: rope.tension, unit: N}
+question: |
+  A block of mass {{ m }} hangs from a cord of length {{ L }} and is pushed up by {{ F }}.
+"""
+
+
+def test_a_cord_that_would_push_is_refused(tmp_path):
+    write(tmp_path, SLACK)
+    taut = run_derive("solve", str(tmp_path / "problem.yaml"), "--set", "m=1", "--set", "F=5")
+    assert taut.returncode == 0 and "= 4.81000000000000 N" in taut.stdout
+    slack = run_derive("solve", str(tmp_path / "problem.yaml"), "--set", "m=1", "--set", "F=20")
+    assert slack.returncode == 2
+    assert slack.stderr.strip().endswith("parameters: the cord rope goes slack (its tension would be negative)")
+
+
+@pytest.mark.parametrize("change, field", [
+    (lambda t: t.replace("  g: {meaning: grav", "  H: {meaning: height, unit: m, value: 1}\n  g: {meaning: grav"),
+     "parameters.H: no part of the scene"),
+    (lambda t: t.replace("ask:", "  events:\n    - skid: {body: ball, friction: mu_k}\nask:"), "scene.events: no ask"),
+    (lambda t: t.split("ask:")[0] + "ask:\n  I: {meaning: inertia, of: ball.inertia, unit: kg*m^2}\n"
+     "question: |\n  A sphere of mass {{ M }}, {{ R }}, {{ theta }}, {{ mu_s }}, {{ mu_k }}.\n",
+     "scene.bodies.ball.friction: nothing asked depends on the motion"),
+], ids=["parameter", "event", "friction"])
+def test_a_key_nothing_uses_is_refused(tmp_path, change, field):
+    write(tmp_path, change(SPHERE.replace("FRICTION", "friction: {static: mu_s, kinetic: mu_k}")))
+    result = run_derive("solve", str(tmp_path / "problem.yaml"))
+    assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert field in result.stderr
+
+
+def test_kinetic_friction_above_static_is_refused(tmp_path):
+    write(tmp_path, SPHERE.replace("FRICTION", "friction: {static: mu_s, kinetic: mu_k}"))
+    result = run_derive("solve", str(tmp_path / "problem.yaml"), "--set", "mu_s=0.2", "--set", "mu_k=0.3",
+                        "--set", "theta=0.3", "--set", "M=1", "--set", "R=0.1")
+    assert result.returncode == 2 and "mu_k > mu_s" in result.stderr
+
+
+def test_an_engine_limit_is_exit_1_and_not_blamed_on_the_file(tmp_path):
+    text = SPHERE.replace("FRICTION", "friction: {static: mu_s, kinetic: mu_k}").replace(
+        "    ball: {", "    box: {shape: point, mass: M, on: ramp, contact: sliding, at: [4*R, -4*R*tan(theta)],"
+                      " friction: {kinetic: mu_k}}\n    ball: {")
+    write(tmp_path, text)
+    result = run_derive("solve", str(tmp_path / "problem.yaml"))
+    assert result.returncode == 1, result.stderr
+    assert "derive cannot yet decide the friction regimes of two contacts at once" in result.stderr
+    assert "internal error" not in result.stderr and len(result.stderr.strip().splitlines()) == 1
+
+
+BOWL = """\
+id: ball_in_bowl
+title: A ball rolling in a bowl
+topic: oscillations
+parameters:
+  m: {meaning: mass of the ball, unit: kg, range: [0.1, 1], sig_figs: 2}
+  r: {meaning: radius of the ball, unit: m, range: [0.01, 0.05], sig_figs: 2}
+  R: {meaning: radius of the bowl, unit: m, range: [0.3, 1], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    bowl: {circle: {radius: R, center: [0, R], side: SIDE}}
+  bodies:
+    ball: {shape: sphere, mass: m, radius: r, on: bowl, contact: rolling}
+  loads:
+    - gravity: g
+ask:
+  omega: {meaning: angular frequency, of: small_oscillation.omega, unit: rad/s}
+question: |
+  A ball of mass {{ m }} and radius {{ r }} rolls in a bowl of radius {{ R }}.
+"""
+
+
+def test_small_oscillations_on_a_curved_surface(tmp_path):
+    """omega = sqrt(5 g / (7 (R - r))) for a solid ball rolling at the bottom of a bowl
+    (Kleppner & Kolenkow, An Introduction to Mechanics, 2nd ed., ch. 7 problems; Taylor,
+    Classical Mechanics, ch. 7). The simulation's period agrees."""
+    problem = load(write(tmp_path, BOWL.replace("SIDE", "inside")))
+    solution = Solution(problem)
+    at = values(problem, m="0.5", r="0.02", R="0.5")
+    assert number(solution, "omega", at) == pytest.approx(math.sqrt(5 * G / (7 * 0.48)), rel=1e-12)
+    report = simulate.check(solution)
+    assert report.passed and "omega" in report.compared, report.notes
+
+
+def test_on_top_of_a_dome_it_is_unstable(tmp_path):
+    """On top of a dome the same motion grows: growth rate sqrt(5 g / (7 (R + r)))."""
+    text = BOWL.replace("SIDE", "outside").replace("center: [0, R]", "center: [0, -R]").replace(
+        "of: small_oscillation.omega, unit: rad/s", "of: small_oscillation.growth_rate, unit: 1/s")
+    problem = load(write(tmp_path, text))
+    at = values(problem, m="0.5", r="0.02", R="0.5")
+    assert number(Solution(problem), "omega", at) == pytest.approx(math.sqrt(5 * G / (7 * 0.52)), rel=1e-12)
