@@ -540,6 +540,8 @@ class Solution(CrossChecks):
         result = {route: [*d.steps, d.solving_step([u for u in d.unknowns if u in needed], rest,
                                                     "in the reference configuration, at rest")] if needed else []
                   for route, d in self.derivations.items()}
+        if needed and len(self.regimes) > 1:
+            result.update(self._regime_steps(needed, rest))
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps
@@ -554,6 +556,30 @@ class Solution(CrossChecks):
                 result[f"staying on the loop: the {ask.quantity.target}"] = list(
                     self._release_height(ask.quantity.target, "lagrange")[1])
         return {route: steps for route, steps in result.items() if steps}
+
+    def _regime_steps(self, needed: set, rest: dict) -> dict[str, list[Step]]:
+        """The grip that decides the regime, and each slipping regime that some parameters of the
+        ranges reach, derived by both routes."""
+        contact = friction.frictional(self.scene)
+        normal, grip = self._grip("lagrange")
+        least = friction.least_coefficient(normal, grip)
+        held = self.regimes[0].name
+        result = {f"which regime: {held} or slips": [Step(
+            f"Held without slip, the {contact.body} needs the friction f and the normal force N found above; it "
+            f"{held} while mu_s N >= |f|, that is while mu_s is at least", (sp.Eq(sp.Symbol("mu_min"), least),)),
+            Step("Otherwise it slips, and kinetic friction mu_k N acts the way f would: against the slip")]}
+        ratio = grip / normal
+        points = sample_points(self.problem, ratio + friction.static_coefficient(contact), count=20)
+        for index, regime in enumerate(self.regimes[1:], start=1):
+            if not any(self.regime_conditions()[0].xreplace(p) == sp.false
+                       and bool(ratio.xreplace(p) > 0) == (regime.direction > 0) for p in points):
+                continue  # not reached inside the ranges' samples; its answers remain in the Piecewise
+            way = "+" if regime.direction > 0 else "-"
+            for route, d in self._regime_derivations(index).items():
+                result[f"{route.replace('_', '-')}, where the {contact.body} slips (friction along {way}t)"] = [
+                    *d.steps, d.solving_step([u for u in d.unknowns if u in needed], rest,
+                                             "in the reference configuration, at rest")]
+        return result
 
     def _needed_unknowns(self) -> set[sp.Symbol]:
         """The accelerations and forces the asked quantities are made of."""

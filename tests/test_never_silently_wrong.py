@@ -70,6 +70,11 @@ def test_a_sphere_rolls_or_slips_as_its_friction_allows(tmp_path):
     assert number(solution, "a", steep) == pytest.approx(G * (math.sin(1.2) - 0.1 * math.cos(1.2)), rel=1e-12)
     assert abs(number(solution, "alpha", steep)) == pytest.approx(5 * 0.1 * G * math.cos(1.2) / (2 * 0.1), rel=1e-12)
     assert abs(number(solution, "f", steep)) == pytest.approx(0.1 * G * math.cos(1.2), rel=1e-12)
+    # The worked solution derives the slipping too, by both routes, after the grip that decides.
+    steps = solution.steps()
+    assert "which regime: rolls or slips" in steps
+    assert {"lagrange, where the ball slips (friction along -t)",
+            "newton-euler, where the ball slips (friction along -t)"} <= set(steps)
     # The boundary between the regimes is stated: mu_s = 2/7 tan(theta).
     boundary = values(problem, M=1, R="0.1", theta="1.0", mu_s=sp.Rational(2, 7) * sp.tan(1), mu_k="0.1")
     assert solution.regime_at(boundary) == "rolls"
