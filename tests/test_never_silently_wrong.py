@@ -249,3 +249,64 @@ def test_on_top_of_a_dome_it_is_unstable(tmp_path):
     problem = load(write(tmp_path, text))
     at = values(problem, m="0.5", r="0.02", R="0.5")
     assert number(Solution(problem), "omega", at) == pytest.approx(math.sqrt(5 * G / (7 * 0.52)), rel=1e-12)
+
+
+ON_TABLE_AND_HANGING = """\
+id: both
+title: A block on a table hanging from a cord
+topic: dynamics
+parameters:
+  m: {meaning: mass, unit: kg, range: [1, 2], sig_figs: 2}
+  L: {meaning: length, unit: m, value: 1}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    hook: [0, L]
+  surfaces:
+    table: {plane: {angle: 0}}
+  bodies:
+    block: {shape: point, mass: m, on: table, contact: sliding}
+  cords:
+    rope: [hook, block]
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration, of: block.acceleration.x, unit: m/s^2}
+question: |
+  A block of mass {{ m }} on a table hangs from a cord of length {{ L }}.
+"""
+PIN_OFF_THE_ROD = """\
+id: both
+title: A block on a table hanging from a cord
+topic: dynamics
+parameters:
+  m: {meaning: mass, unit: kg, range: [1, 2], sig_figs: 2}
+  L: {meaning: length, unit: m, value: 1}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    hook: [0, L]
+  bodies:
+    block: {shape: rod, mass: m, length: L, at: [0, 0]}
+  cords:
+    rope: [hook, block]
+  joints:
+    p: {pin: {block: [L, 0]}}
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration, of: block.acceleration.x, unit: m/s^2}
+question: |
+  A block of mass {{ m }} on a table hangs from a cord of length {{ L }}.
+"""
+
+
+@pytest.mark.parametrize("text, message", [
+    (ON_TABLE_AND_HANGING, "scene.cords.rope: the cord pulls the block straight along the normal of table"),
+    (PIN_OFF_THE_ROD, "scene.joints.p.pin: the point lies L from the block's center, outside the rod"),
+], ids=["on-a-table-and-hanging", "pin-off-the-body"])
+def test_geometry_that_does_not_fit_is_refused(tmp_path, text, message):
+    write(tmp_path, text)
+    result = run_derive("solve", str(tmp_path / "problem.yaml"))
+    assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert message in result.stderr
