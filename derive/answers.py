@@ -23,7 +23,8 @@ from derive.mechanics.conservation import ConservationError, EnergyBalance, spee
 from derive.mechanics import friction
 from derive.mechanics.derivation import Derivation, Solved, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.oscillation import Oscillation, OscillationError, exact_period, small_oscillation
+from derive.mechanics.oscillation import (Oscillation, OscillationError, OscillationLimit, exact_period,
+                                         small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
@@ -89,6 +90,8 @@ class Solution(CrossChecks):
     def oscillations(self) -> dict[str, Oscillation]:
         try:
             return {route: small_oscillation(self.dynamics_scene, d, self._sample) for route, d in self.derivations.items()}
+        except OscillationLimit as error:
+            raise self.problem.limit(str(error)) from None
         except OscillationError as error:
             raise self.problem.error("ask", str(error)) from None
 

@@ -310,3 +310,39 @@ def test_geometry_that_does_not_fit_is_refused(tmp_path, text, message):
     result = run_derive("solve", str(tmp_path / "problem.yaml"))
     assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert message in result.stderr
+
+
+SPRING_AWAY_FROM_EQUILIBRIUM = """\
+id: spring_incline
+title: A block on a spring on an incline
+topic: oscillations
+parameters:
+  m: {meaning: mass, unit: kg, range: [0.5, 2], sig_figs: 2}
+  k: {meaning: spring constant, unit: N/m, range: [50, 200], sig_figs: 2}
+  theta: {meaning: angle of the incline, unit: rad, range: [0.2, 0.8], sig_figs: 2}
+  L: {meaning: distance from the wall, unit: m, value: 0.5}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    wall: [-L*cos(theta), L*sin(theta)]
+  surfaces:
+    ramp: {incline: {angle: theta}}
+  bodies:
+    block: {shape: point, mass: m, on: ramp, contact: sliding}
+  loads:
+    - gravity: g
+    - spring: {between: [wall, block], stiffness: k}
+ask:
+  omega: {meaning: angular frequency, of: small_oscillation.omega, unit: rad/s}
+question: |
+  A block of mass {{ m }} on an incline at {{ theta }} hangs on a spring of constant {{ k }} from a point {{ L }} up the incline.
+"""
+
+
+def test_an_oscillation_away_from_the_equilibrium_is_an_engine_limit(tmp_path):
+    """The spring is unstretched where the block is placed: the equilibrium lies elsewhere, and
+    derive says it cannot yet find it (exit 1), rather than blaming the file or answering."""
+    write(tmp_path, SPRING_AWAY_FROM_EQUILIBRIUM)
+    result = run_derive("solve", str(tmp_path / "problem.yaml"))
+    assert result.returncode == 1 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert "derive cannot yet find the equilibrium of a scene placed away from it" in result.stderr

@@ -54,6 +54,10 @@ class Oscillation:
         return root(self.stiffness) if name == "omega" else 2 * sp.pi * root(1 / self.stiffness)
 
 
+class OscillationLimit(OscillationError):
+    """A scene whose oscillation derive cannot yet find (an engine limit, not the file's fault)."""
+
+
 def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Oscillation:
     """Angular frequency and period of small oscillations about the reference configuration.
 
@@ -86,8 +90,8 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
     equilibrium = derivation.at({**reference, **at_rest}).raw
     moving = [c.a for c in coords.all if not sp.simplify(equilibrium[c.a]).equals(0)]
     if moving:
-        raise OscillationError("the reference configuration is not an equilibrium (released there at rest, "
-                               f"{moving[0]} is not zero): place the bodies at an equilibrium with at: and angle:")
+        raise OscillationLimit(f"find the equilibrium of a scene placed away from it (released at rest, {moving[0]} "
+                               "is not zero): place the bodies at the equilibrium with at: and angle:")
     s = sp.Dummy("s")
     first = {u: sp.Dummy(f"d{u}") for u in derivation.unknowns}
     along = {q: direction[i] * s for i, q in enumerate(positions)}
