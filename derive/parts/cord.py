@@ -274,7 +274,7 @@ def read(reader, places, name: str, path, field: str) -> Cord:
     attachments = []
     for i, e in enumerate(elements):
         where = f"{field}[{i}]"
-        if e["kind"] in ("around", "wound"):
+        if "side" in e:  # a peg (a point in between) has no size: no side to go round
             before = centers[i - 1] if i > 0 else centers[i]
             after = centers[i + 1] if i + 1 < len(centers) else centers[i]
             travel = after - before
