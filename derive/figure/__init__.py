@@ -19,16 +19,20 @@ from __future__ import annotations
 
 from derive.figure.canvas import LIBRARIES, STYLES, WIDTH, _Figure
 from derive.figure.layout import _LAYOUTS
+from derive.figure.parts import Undrawable
 
 __all__ = ["LIBRARIES", "STYLES", "WIDTH", "tikz"]
 
 
 def tikz(problem) -> str | None:
-    """The problem's scene as a ``tikzpicture`` environment, or None when it has nothing to draw."""
+    """The problem's scene as a ``tikzpicture`` environment, or None when it has nothing to draw
+    (or a part it cannot draw truthfully: the documents then go without a figure)."""
     figure = _Figure(problem)
-    scene = problem.scene
     for applies, draw in _LAYOUTS:
-        if applies(scene):
-            draw(figure)
+        if applies(problem):
+            try:
+                draw(figure)
+            except Undrawable:
+                return None
             return figure.text() if figure.lines else None
     return None

@@ -246,3 +246,19 @@ def _label_mass(fig: _Figure, body: Body, at, direction) -> None:
     """The body's mass beside it (a custom body of open mass: its moment of inertia)."""
     text = fig.tex(body.mass) or fig.tex(body.given_inertia)
     fig.label(at, direction, f"${text}$" if text else None)
+
+
+def regime_text(fig: _Figure, contact, skid=None) -> str:
+    """What a textbook writes at a contact: "no slip" (rolling without slipping, with mu_s when
+    given), "smooth" (sliding without friction), "rough, mu_k" (kinetic friction); a body that
+    skids before it rolls (a Skid event), "rough" with the skid's coefficient."""
+    static, kinetic = fig.tex(contact.static), fig.tex(contact.kinetic)
+    if skid is not None:
+        words = ["rough"] + [f"${t}$" for t in (fig.tex(skid.friction),) if t]
+    elif contact.rolling:
+        words = ["no slip"] + [f"${t}$" for t in (static, kinetic) if t]
+    elif contact.kinetic is not None:
+        words = ["rough"] + [f"${t}$" for t in (kinetic,) if t]
+    else:
+        words = ["smooth"]
+    return "\\scriptsize " + ", ".join(words)

@@ -5,7 +5,7 @@ import math
 
 import sympy as sp
 
-from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit
+from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit, regime_text
 from derive.render import tex_escape
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
@@ -37,21 +37,34 @@ def _on_surface(fig: _Figure) -> None:
     down, normal = (math.cos(angle), -math.sin(angle)), (math.sin(angle), math.cos(angle))
     reference = _reference_size(fig, surface.height, height)
     several = len(contacts) > 1
-    along = 0.5 if several else 1.0
+    along = 0.45 if several else 1.0
+    previous = None  # the foot of the body before, when several: their regimes, along the slope, must not meet
     for contact in contacts:
         body = scene.bodies[contact.body]
         r = _drawn_radius(fig, body, reference)
         along += r
+        if previous is not None:
+            along = max(along, previous + 1.08)
         foot = _add((0, height), down, along)
         center = _add(foot, normal, r)
         fig.body(body, center, r, -math.degrees(angle), block=body.shape == "point")
-        if several:
+        regime = regime_text(fig, contact, _skid(scene, body))
+        if several:  # each body's name above it, its regime along the slope under it
             fig.label(_add(center, normal, r + 0.05), normal, f"\\scriptsize {tex_escape(body.name)}")
-        elif scene.gravity is not None:
-            fig.gravity_arrow(center, body)
+            fig.label(_add(foot, normal, -0.03), (0, -1), regime, f"rotate={_f(-math.degrees(angle))}")
+        else:
+            fig.label(_add(_add(foot, down, r + 0.12), normal, 0.02), _add(normal, down), regime)
+            if scene.gravity is not None:
+                fig.gravity_arrow(center, body)
+        previous = along
         along += r + 0.4
     if several and scene.gravity is not None:
-        fig.arrow((width - 0.3, height - 0.3), (0, -0.7), "force", "$\\vec g$")
+        fig.arrow((width, 0.85 * height), (0, -0.7), "force", "$\\vec g$")
+
+
+def _skid(scene, body: Body):
+    """The body's skid (it slides before it rolls), if the scene has one."""
+    return next((e for e in scene.events if isinstance(e, Skid) and e.body == body.name), None)
 
 
 def _reference_size(fig: _Figure, size_expr, drawn: float):
@@ -82,6 +95,7 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
         r = 1.0 if pull else 0.7
         center = (x, r)
         fig.body(body, center, r, block=body.shape == "point")
+        fig.label((x + r + 0.12, 0.02), (1, 1), regime_text(fig, contact, _skid(scene, body)))
         if pull:
             _spool(fig, body, pull, center, r)
         if scene.gravity is not None:
@@ -147,8 +161,10 @@ def _loop(fig: _Figure, loop: Circle, contacts: list[Contact]) -> None:
         normal = (-tangent[1], tangent[0])
         centre = _add(point, normal, r)
         fig.body(body, centre, r, block=body.shape == "point")
+        regime = regime_text(fig, contact, _skid(scene, body))
         if len(contacts) > 1:
-            fig.label(_add(centre, normal, r + 0.05), (1, 0.4), f"\\scriptsize {tex_escape(body.name)}")
+            regime = regime.replace("scriptsize ", f"scriptsize {tex_escape(body.name)}: ")
+        fig.label(_add(centre, normal, r + 0.05), (1, 0.4), regime)
         u += 0.16
     first, _ = _bezier(start, c1, c2, end, 0.0)
     fig.dimension((-3.0, 0), (-3.0, first[1]), "h", side=-1, gap=0.0)
