@@ -103,10 +103,14 @@ def test_sizes_follow_the_parameters(tmp_path):
 
 
 def test_same_problem_same_bytes_in_any_process(problems, figures):
+    """The library's figures and the scenes of parts in tests/figures."""
     assert {p.id: figure.tikz(p) for p in problems} == figures
-    digest = hashlib.sha256("".join(figures[p.id] for p in problems).encode()).hexdigest()
-    code = ("import hashlib; from derive import figure, library, problem; print(hashlib.sha256(''.join("
-            "figure.tikz(problem.load(p)) for p in library.problem_files()).encode()).hexdigest())")
+    scenes = sorted((ROOT / "tests" / "figures").glob("*.yaml"))
+    drawn = [figures[p.id] for p in problems] + [figure.tikz(problem.parse(p.read_text(), p)) for p in scenes]
+    digest = hashlib.sha256("".join(drawn).encode()).hexdigest()
+    code = ("import hashlib, pathlib; from derive import figure, library, problem; print(hashlib.sha256(''.join("
+            "[figure.tikz(problem.load(p)) for p in library.problem_files()] + [figure.tikz(problem.parse("
+            "p.read_text(), p)) for p in sorted(pathlib.Path('tests/figures').glob('*.yaml'))]).encode()).hexdigest())")
     for seed in ("1", "2"):
         done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
                               env={**os.environ, "PYTHONHASHSEED": seed}, timeout=120)
@@ -416,7 +420,7 @@ def test_a_peg_of_no_size_holds_the_cord_where_its_runs_meet(drawn_scenes):
 
     from derive.parts.cord import Cord
 
-    p, drawn, at = drawn_scenes["reel_peg"]
+    p, _, _ = drawn_scenes["reel_peg"]
     _, number = reference(p)
     R = number(p.parameters["R"].symbol)
     cord = next(c for c in p.scene.constraints if isinstance(c, Cord))
@@ -424,8 +428,12 @@ def test_a_peg_of_no_size_holds_the_cord_where_its_runs_meet(drawn_scenes):
     scene = dataclasses.replace(p.scene, constraints=tuple(
         dataclasses.replace(cord, path=(cord.path[0], peg, cord.path[2])) if c is cord else c
         for c in p.scene.constraints))
-    drawn = figure.tikz(SimpleNamespace(scene=scene, parameters=p.parameters, asks=p.asks))
-    point = at((3 * R, R))  # the same scale: the peg is inside the scene's extent either way
+    from derive.figure.canvas import _Figure
+    from derive.figure.parts import _Layout
+
+    pegged = SimpleNamespace(scene=scene, parameters=p.parameters, asks=p.asks)
+    drawn = figure.tikz(pegged)
+    point = _Layout(_Figure(pegged)).view.at((3 * R, R))
     assert f"\\draw[fill=white] {_pt(point)} circle (0.07);" in drawn
     assert re.search(rf"\\draw\[fill=gray!30\] {re.escape(_pt(point))} -- ", drawn)  # its support
     runs = lines(drawn, "thick")

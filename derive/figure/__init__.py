@@ -8,7 +8,12 @@ a floor or a loop, and forces (gravity, pulls, tension), velocities and spins as
 each labelled with the problem's own symbols (``sp.latex``). Relative sizes come from the
 middle of each parameter's range (or its value), clamped so that the figure stays legible.
 The scene-level systems (orbit, top, spinning wheel, standing wave, internal forces,
-a turning body, prescribed paths) have schematics of their own. Same problem, same bytes.
+a turning body, prescribed paths) have schematics of their own; so do the classic scenes whose
+every part a schematic draws (an incline, a floor, a loop, a pendulum, bodies on one axle, a
+collision). Any other scene of parts is drawn in its reference configuration to scale, every part
+from its own geometry (`derive.figure.parts`); a part it cannot draw leaves the figure out (None)
+rather than draw it wrong. Each contact is marked with its regime: no slip, smooth or rough.
+Same problem, same bytes.
 
 >>> from derive.problem import load
 >>> figure = tikz(load("rolling_incline"))

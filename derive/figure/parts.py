@@ -12,12 +12,16 @@ What each part looks like:
   things below its level (a pulley at a table's edge); a circle a thick track hatched on the solid
   side (outside a bowl or a loop, inside a dome), with its radius;
 - bodies by shape (a point mass a block when it rests on a plane or ends a cord, a spring or a
-  dashpot, else a small ball), labelled with their mass (or name);
-- pin to the ground: a hatched support (a bracket past the rim for an axle), with the pin a small
+  dashpot, else a small ball), labelled with their mass (or name). A point mass touches its
+  surface at its point, where its cords and springs attach: a surface only point masses rest on
+  is drawn half a block (a ball's radius) below their points, so that each block, centered on its
+  point, sits on it and its cord leaves its side, as in a textbook;
+- pin to the ground: a hatched support on the clearest side, toward the ground's own lines when
+  near (a pulley's bracket to its table; a bracket past the rim for an axle), with the pin a small
   circle (an axle a circled dot); a pin between bodies a small circle; a slider a hatched rail
   through its point, with a collar (a block for a guide that keeps the body from turning); a weld
-  to the ground a hatched wall against the body with a filled weld mark, between bodies a thick
-  bar with filled marks;
+  to the ground a hatched wall against the body (a side first: a shelf) with the filled triangle
+  of a weld, between bodies that triangle between their centers (on a thick bar when apart);
 - a cord: its runs, the arcs where it wraps a pulley or leaves a reel, a hub drawn where its
   radius is not the body's, a smooth peg a small circle on a support, an end tied to the ground a
   hatched ceiling or wall across the run, a pulled end an arrow labelled with the force;
@@ -25,8 +29,9 @@ What each part looks like:
   anchor at a ground end), labelled k, b; a torsional spring a coil at the body's pin (or
   center), a rotational damper a hatched sector there;
 - force an arrow at its point in its direction (ending at the point when it pushes on the body's
-  edge), torque a curved arrow around the body, gravity the weight m g of a single body or a g
-  arrow beside the scene;
+  edge), torque a curved arrow (counter-clockwise, or clockwise for a negative one) around a small
+  body or about the center of a large one, gravity the weight m g of a single body or a g arrow
+  beside the scene; labels are placed where they cover the least of the drawing;
 - contact regime, written at the point of contact as textbooks do: "no slip" (rolling without
   slipping; with mu_s when given), "smooth" (sliding without friction), "rough, mu_k" (kinetic
   friction).
@@ -159,19 +164,9 @@ class _Scene:
         for a, b in zip(points, points[1:]):
             self.ink_line(a, b)
 
-    def ink_circle(self, center, radius: float, fill: bool = False) -> None:
+    def ink_circle(self, center, radius: float) -> None:
         steps = max(8, int(2 * math.pi * radius / 0.1))
         self.ink += [_add(center, _unit(360 * k / steps), radius) for k in range(steps)]
-        if fill:
-            rings = int(radius / 0.15)
-            for ring in range(1, rings):
-                self.ink_circle(center, radius * ring / rings)
-            self.ink.append(center)
-
-    def ink_box(self, center, half: float) -> None:
-        corners = [_add(center, (sx * half, sy * half)) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))]
-        self.ink_polyline(corners)
-        self.ink.append(center)
 
     def label(self, point, text: str | None, gap: float = 0.05, prefer=None) -> None:
         """A label beside `point` (at `gap` cm), on the side where it covers the least ink and no
@@ -186,7 +181,7 @@ class _Scene:
             where = _add(point, direction, gap + extra)
             box = _box(where, _anchor(*direction), width, height)
             covered = sum(1 for p in self.ink if box[0] <= p[0] <= box[2] and box[1] <= p[1] <= box[3])
-            overlap = sum(_overlap(box, other) for other in self.boxes)
+            overlap = sum(_overlap(box, _grown(other, 0.2)) for other in self.boxes)  # nor close enough to read as one
             cost = covered + 400 * overlap + 0.3 * rank
             if best is None or cost < best[0]:
                 best = (cost, where, direction, box)
@@ -237,6 +232,10 @@ def _box(point, anchor: str, width: float, height: float):
     vertical = next((k for k in ("south", "north") if k in anchor), anchor if anchor in ("west", "east") else "center")
     x0, y0 = x + dx[horizontal], y + dy[vertical]
     return (x0, y0, x0 + width, y0 + height)
+
+
+def _grown(box, margin: float):
+    return (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
 
 
 def _overlap(a, b) -> float:
@@ -581,7 +580,7 @@ class _Layout:
                         math.hypot(*_sub(center, body.center)) > 1e-6:  # a hub, a step of a pulley
                     view.put("elements", f"\\draw[fill=gray!35] {_pt(center)} circle ({_f(radius)});")
                     view.ink_circle(center, radius)
-                self._wrap(a, center, radius, incoming, outgoing, i == 0, i == len(path) - 1)
+                self._wrap(a, center, radius, incoming, outgoing)
             elif a.kind == "around":  # a peg of no size
                 if body is None:
                     view.put("joints", f"\\draw[fill=white] {_pt(center)} circle (0.07);")
@@ -605,7 +604,7 @@ class _Layout:
                 view.ink_line(start, _add(start, toward, 0.9 + ARROW))
                 self.pulls[cord.name] = (_add(start, toward, 0.9 + ARROW), fig.m(pulled.force))
 
-    def _wrap(self, a, center, radius: float, incoming, outgoing, first: bool, last: bool) -> None:
+    def _wrap(self, a, center, radius: float, incoming, outgoing) -> None:
         """The cord in contact with a circle: from the incoming tangent point to the outgoing one in
         its sense; a wound end shows a quarter turn still on the reel."""
         view = self.view
@@ -920,13 +919,14 @@ class _Layout:
         magnitude, sign = torque.torque, 1
         if magnitude.could_extract_minus_sign():
             magnitude, sign = -magnitude, -1
-        radius = min(drawn.extent, 1.2) + 0.2
+        radius = drawn.extent + 0.2 if drawn.extent <= 1.0 else 0.5  # around it, or about its center within it
         side = _degrees(view.clearest(drawn.center, radius + 0.3, own=drawn.outline()))
         start, end = (side - 55, side + 55) if sign > 0 else (side + 55, side - 55)
         first = _add(drawn.center, _unit(start), radius)
         view.put("arrows", f"\\draw[force] {_pt(first)} arc[start angle={_f(start)}, end angle={_f(end)}, "
                            f"radius={_f(radius)}];")
-        view.ink += [_add(drawn.center, _unit(start + (end - start) * k / 10), radius) for k in range(11)]
+        view.ink += [_add(drawn.center, _unit(start + (end - start) * k / 10), radius * f)  # the arc and its hollow
+                     for k in range(11) for f in (0.4, 0.7, 1.0)]
         self.later(fig.m(magnitude), _add(drawn.center, _unit(side), radius), 0.06)
 
     def _gravity(self) -> None:
@@ -970,7 +970,9 @@ class _Layout:
             along = _unit(math.degrees(drawn.angle))
             across = _perp(along)
             self.later(label, drawn.center, 0.12 if drawn.kind == "rod" else drawn.reach(drawn.center, across) + 0.04,
-                       [across, _scale_vec(across, -1), _add(across, along, 0.8), _add(across, along, -0.8)])
+                       [across, _scale_vec(across, -1)]
+                       + [(_add(side, along, k), extra) for extra, k in ((0.2, 1.0), (0.5, 1.5))
+                          for side in (across, _scale_vec(across, -1)) for k in (k, -k)])
         elif drawn.kind in ("round", "oval"):  # inside when it is large enough to hold it (clear of a hub), else beside
             reach = drawn.extent
             if reach > 0.6:
