@@ -16,7 +16,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from derive import inertia, limits, numeric
+from derive import composite, inertia, limits, numeric
 from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
@@ -306,6 +306,8 @@ class Solution(CrossChecks):
         if ask.quantity.detail is None and route == "integral":
             return self._within_ranges(body.inertia)
         if ask.quantity.detail is None:
+            if body.composite is not None:  # the parts' tensors composed, against the scalar parallel-axis sum
+                return composite.moment_by_sum(body.composite)
             if body.shape not in inertia.SHAPES:
                 return None  # a custom body's inertia is given, not derived
             ask = Ask(ask.name, ask.meaning, ask.path, Quantity("inertia", body.name, inertia.PLANAR_AXIS[body.shape]),

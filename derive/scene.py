@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive import inertia
+from derive.composite import CompositeParts
 from derive.parts import Part
 from derive.parts.contact import Contact
 from derive.parts.gravity import Gravity
@@ -25,6 +26,7 @@ from derive.parts.surfaces import Circle, Plane, Surface
 SHAPE_SIZES: dict[str, tuple[str, ...]] = {
     "point": (),
     "custom": (),
+    "composite": (),
     **{name: tuple(shape.sizes) for name, shape in inertia.SHAPES.items()},
 }
 
@@ -63,7 +65,8 @@ class Body:
     """A rigid body (or a point mass) in the plane.
 
     `inertia` is the moment of inertia about the axis through the center of mass normal to
-    the plane: given for a custom body, otherwise integrated by `derive.inertia`.
+    the plane: given for a custom body, composed from the parts of a composite, otherwise
+    integrated by `derive.inertia`.
     """
 
     name: str
@@ -75,6 +78,7 @@ class Body:
     density: sp.Expr | None = None
     at: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))  # the center of mass, reference configuration
     angle: sp.Expr = sp.Integer(0)  # the body frame's angle from the world's axes there
+    composite: CompositeParts | None = None  # a body made of parts: derive.composite
 
     @property
     def rotates(self) -> bool:

@@ -13,8 +13,8 @@ import dataclasses
 
 import sympy as sp
 
-from derive import inertia, units
-from derive.errors import InputError
+from derive import composite, inertia, units
+from derive.errors import EngineLimit, InputError
 from derive.parts import cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
@@ -39,10 +39,15 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
                           optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
-                                    "path", "rotation", "angle", *MOTION_KEYS, *all_sizes))
+                                    "path", "rotation", "angle", "parts", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
+    if (shape == "composite") != ("parts" in spec):
+        raise reader.fail(f"{field}.parts", "a composite body has parts: {NAME: {shape, mass, sizes, at}}; other "
+                                            "shapes have none")
+    if shape == "composite":
+        return _composite(reader, name, spec, field)
     if "mass" in spec:
         mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
     elif "density" in spec:
@@ -92,6 +97,27 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         distance = joint.offset[0] ** 2 + joint.offset[1] ** 2
         body = Body(name, shape, mass, sizes, given - mass * distance, at=at, angle=angle)
     return body, joint
+
+
+def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body, Pin | None]:
+    """A body made of parts (derive.composite): `at` places the origin of the parts' frame."""
+    for key in ("mass", "density", "inertia", "inertia_about", "path", "rotation"):
+        if key in spec:
+            raise reader.fail(f"{field}.{key}", f"a composite's {key.replace('_', ' ')} comes from its parts"
+                              if key in ("mass", "density", "inertia", "inertia_about") else
+                              f"a composite body has no {key}")
+    for size in sorted({s for sizes in SHAPE_SIZES.values() for s in sizes} & set(spec)):
+        raise reader.fail(f"{field}.{size}", f"a composite has no {size} of its own: its parts have sizes")
+    made = composite.read(reader, spec["parts"], f"{field}.parts")
+    origin = (_vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec
+              else (sp.Integer(0), sp.Integer(0)))
+    angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
+    turn = sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
+    at = tuple(sp.Matrix(origin) + turn * sp.Matrix(made.center))
+    radius = made.radius(reader)
+    body = Body(name, "composite", made.mass, {} if radius is None else {"radius": radius}, made.inertia,
+                at=at, angle=angle, composite=made)
+    return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
 
 
 COORDINATE_UNITS = {"x": "m", "y": "m", "z": "m", "r": "m", "phi": "rad", "theta": "rad"}
@@ -145,8 +171,7 @@ def _motion(reader: Reader, name: str, spec: dict, bodies: dict[str, Body]) -> M
     velocity = _vector(reader, spec["velocity"], f"{field}.velocity", "m/s", "a velocity") if "velocity" in spec \
         else (sp.Integer(0), sp.Integer(0))
     spin = reader.dimensioned(spec["spin"], f"{field}.spin", "rad/s", "a spin") if "spin" in spec else sp.Integer(0)
-    position = _vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec \
-        else (sp.Integer(0), sp.Integer(0))
+    position = bodies[name].at  # the center of mass (a composite's `at` is its parts' origin)
     if "hits" in spec:
         if "at" in spec:
             raise reader.fail(f"{field}.hits", "give at or hits, not both")
@@ -240,6 +265,9 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
         raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(surfaces) or 'none'})")
     if spec.get("joint") is not None:
         raise reader.fail(f"{field}.on", "a body on a surface cannot also turn on a joint")
+    if body.composite is not None and "radius" not in body.sizes:
+        raise EngineLimit(f"{reader.path}: {field}.on", "model a composite's contact with a surface other than by a "
+                                                        "round part centered at its center of mass")
     kind = spec.get("contact", "rolling" if "radius" in body.sizes else "sliding")
     if kind not in ("rolling", "sliding"):
         raise reader.fail(f"{field}.contact", "expected rolling or sliding")

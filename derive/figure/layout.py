@@ -107,6 +107,7 @@ _LAYOUTS = (
     (lambda p: p.scene.internal_forces is not None, _internal),
     (lambda p: bool(p.scene.rotations), _rotation),
     (lambda p: any(b.path is not None for b in p.scene.bodies.values()), _paths),
+    (lambda p: any(b.composite is not None for b in p.scene.bodies.values()), _parts),  # drawn part by part
     (_on_one_surface, _on_surface),
     (_collision, _impact),
     (_on_pivots, _pinned),

@@ -60,6 +60,7 @@ from derive.parts.torque import Torque
 from derive.parts.torsional_spring import TorsionalSpring
 from derive.parts.weld import Weld
 from derive.render import tex_escape
+from derive.scene import Body
 
 #: The parts this layout draws (gravity is the scene's own field).
 KNOWN = (Contact, Cord, Damper, Force, Pin, Slider, Spring, Torque, TorsionalSpring, Weld)
@@ -245,11 +246,17 @@ def _overlap(a, b) -> float:
 class _Body:
     """How one body is drawn: its center and angle on the figure, its shape's sizes (cm)."""
 
-    def __init__(self, view: _Scene, name: str):
+    def __init__(self, view: _Scene, name: str, part=None):
+        """The scene's body `name`, or `part` = (body, world position, angle) of a composite's part."""
         self.view, self.name = view, name
-        self.body = body = view.scene.bodies[name]
-        self.world = view.world(name)
-        self.angle = view.value(body.angle)  # radians
+        self.body, self.world, self.angle = part or (view.scene.bodies[name], view.world(name),
+                                                      view.value(view.scene.bodies[name].angle))
+        body = self.body
+        self.pieces = [_Body(view, f"{name}.{piece}", (Body(piece, shape, mass, sizes), view.world(name, offset),
+                                                       self.angle + view.value(angle)))
+                       for offset, (piece, (shape, mass, sizes, _, angle)) in
+                       zip((body.composite.points()[n] for n in body.composite.parts), body.composite.parts.items())] \
+            if body.composite is not None else []  # a composite is drawn part by part
         sizes = {k: view.value(v) for k, v in body.sizes.items()}
         self.radius_m = sizes.get("radius", sizes.get("outer_radius"))
         self.rod = sizes.get("length") if body.shape == "rod" else None
@@ -262,6 +269,8 @@ class _Body:
 
     def corners_m(self) -> list[tuple[float, float]]:
         """World points of its outline that bound it (for the figure's extent)."""
+        if self.pieces:
+            return [p for piece in self.pieces for p in piece.corners_m()]
         c, a = self.world, self.angle
         along, across = (math.cos(a), math.sin(a)), (-math.sin(a), math.cos(a))
         if self.kind == "round":
@@ -288,6 +297,8 @@ class _Body:
 
     def outline(self) -> list[tuple[float, float]]:
         """Points of its drawn outline (cm)."""
+        if self.pieces:
+            return [p for piece in self.pieces for p in piece.outline()]
         c, s = self.drawn_center, self.view.scale
         along = (math.cos(self.angle), math.sin(self.angle))
         across = _perp(along)
@@ -334,7 +345,10 @@ class _Body:
         view, fig, body = self.view, self.view.fig, self.body
         c, s = self.drawn_center, view.scale
         degrees = math.degrees(self.angle)
-        if self.kind == "point":
+        if self.pieces:
+            for piece in self.pieces:
+                piece.shape()
+        elif self.kind == "point":
             if self.block:
                 tilt = self.tilt
                 view.draw("blocks", fig.body, body, c, BLOCK / 2, tilt, block=True)
@@ -471,7 +485,7 @@ class _Layout:
     def draw(self) -> None:
         view = self.view
         for drawn in self.bodies.values():
-            if drawn.kind == "oval":
+            if drawn.kind == "oval" and not drawn.pieces:
                 drawn.fit_oval(self._attached(drawn.name))
             drawn.shape()
         for cord in self.cords:

@@ -4,7 +4,8 @@ A point is written as
 - `BODY` (its center of mass) or `BODY.POINT`, a point the body's shape names (`BODY_POINTS`:
   a rod's `end` and `start`, a round body's `top`, `bottom`, `left`, `right` on its rim, a plate's
   or a box's sides), in the body's own frame (before the body is turned by its `angle`);
-- `{BODY: [x, y]}`: any point in the body's frame, from its center of mass;
+- `{BODY: [x, y]}`: any point in the body's frame, from its center of mass (a composite's from
+  the origin its parts are placed from: `derive.composite`);
 - `[x, y]`, or the name of a point declared under `scene.points`: a fixed point of the ground.
 
 `Places` resolves these for the scene reader, and evaluates reference geometry at the middle of the
@@ -51,6 +52,22 @@ def extent(shape: str, sizes: dict[str, sp.Expr]) -> sp.Expr | None:
     return None
 
 
+def sample(reader, expr: sp.Expr) -> float:
+    """The value at the middle of the parameter ranges (SI), open sizes at 1: for decisions of sign
+    and geometry that the problem's parameters do not change."""
+    values = {}
+    for p in reader.parameters.values():
+        middle = p.value if p.value is not None else (p.range[0] + p.range[1]) / 2
+        values[p.symbol] = middle * units.si_factor(units.parse_unit(p.unit))
+    expr = expr.xreplace(values) if isinstance(expr, sp.Basic) else sp.Integer(expr)
+    return float(expr.xreplace({s: 1 for s in expr.free_symbols}))
+
+
+def points_of(body) -> dict[str, tuple[sp.Expr, sp.Expr]]:
+    """A body's named points (a composite's include its parts' points)."""
+    return body.composite.points() if body.composite is not None else body_points(body.shape, body.sizes)
+
+
 class Places:
     """Resolves point references of one problem file (see the module)."""
 
@@ -58,14 +75,8 @@ class Places:
         self.reader, self.bodies, self.ground = reader, bodies, ground
 
     def sample(self, expr: sp.Expr) -> float:
-        """The value at the middle of the parameter ranges (SI), open sizes at 1: for decisions of
-        sign and geometry that the problem's parameters do not change."""
-        values = {}
-        for p in self.reader.parameters.values():
-            middle = p.value if p.value is not None else (p.range[0] + p.range[1]) / 2
-            values[p.symbol] = middle * units.si_factor(units.parse_unit(p.unit))
-        expr = expr.xreplace(values) if isinstance(expr, sp.Basic) else sp.Integer(expr)
-        return float(expr.xreplace({s: 1 for s in expr.free_symbols}))
+        """`sample` for this problem file."""
+        return sample(self.reader, expr)
 
     def coincide(self, first: sp.Matrix, second: sp.Matrix) -> bool:
         """Whether two reference positions are the same point (at the middle of the ranges)."""
@@ -101,7 +112,7 @@ class Places:
         body, _, name = value.partition(".")
         self._body(body, field)
         rigid = self.bodies[body]
-        named = body_points(rigid.shape, rigid.sizes)
+        named = points_of(rigid)
         if (name or "center") not in named:
             raise self.reader.fail(field, f"a {rigid.shape} has no point {name!r} (points: {', '.join(named)}; or "
                                           f"{{{body}: [x, y]}} in its frame)")
@@ -145,7 +156,7 @@ class Places:
     def on_body(self, body: str, offset, field: str) -> None:
         """Refuse a point that lies outside its body (a pin's point, a winding's radius)."""
         rigid = self.bodies[body]
-        reach = extent(rigid.shape, rigid.sizes)
+        reach = rigid.composite.extent() if rigid.composite is not None else extent(rigid.shape, rigid.sizes)
         if rigid.shape == "point":
             reach = ZERO
         if reach is None:

@@ -78,5 +78,5 @@ def read(reader, places, name: str, spec: dict, field: str) -> Weld:
         if to == body:
             raise reader.fail(f"{field}.to", f"a weld joins two bodies: not the {body} to itself")
     if not places.bodies[body].rotates or (to != "ground" and not places.bodies[to].rotates):
-        raise reader.fail(field, "a weld holds turning bodies; a point mass on a body is a part of a composite body")
+        raise reader.fail(field, "a weld holds turning bodies; a point mass fixed on a body is a part of it (shape: composite)")
     return Weld(name, body, None if to == "ground" else to)
