@@ -204,9 +204,10 @@ class Solution(CrossChecks):
         loop = self.scene.surfaces[contact.surface]
         radius = self.scene.bodies[body].sizes.get("radius", sp.Integer(0))
         top = loop.top(radius)
+        placed = sp.Matrix(self.scene.bodies[body].at)  # the coordinates are displacements from here
         speed, drop = sp.symbols("s D", positive=True)
         coords = self.coordinates
-        state = {coords.of(body, "x").q: top[0], coords.of(body, "y").q: top[1]}
+        state = {coords.of(body, "x").q: top[0] - placed[0], coords.of(body, "y").q: top[1] - placed[1]}
         state.update({c.q: 0 for c in coords.all if c.q not in state})
         velocity = speed * loop.tangent_at(top, radius)
         state.update({coords.of(body, "x").u: velocity[0], coords.of(body, "y").u: velocity[1]})
@@ -219,7 +220,7 @@ class Solution(CrossChecks):
             raise self.problem.error("ask", f"the normal force at the top of the loop vanishes at {critical}")
         balance = speed_after_drop(self.scene, body, drop)
         (needed,) = sp.solve(sp.Eq(balance.speed**2, critical[0] ** 2), drop)
-        height = tidy(needed + top[1])
+        height = tidy(needed + top[1] - (loop.middle[1] - loop.path_radius(radius)))  # above the lowest point
         steps = (
             Step(f"Normal force on the {body} at the top of the loop, at speed s", (sp.Eq(sp.Symbol("N"), normal),)),
             Step("It stays on the track while N >= 0: the least speed at the top", (sp.Eq(speed, critical[0]),)),

@@ -54,3 +54,20 @@ def test_rolling_quantities_need_a_rolling_body_with_a_velocity(tmp_path):
     text = load("rolling_kinetic_energy").path.read_text().replace("rolling.rotational_fraction", "rolling.spin")
     with pytest.raises(ProblemError, match=r"ask\.share\.of: a rolling body has rolling\.angular_velocity"):
         parse(text, tmp_path / "p.yaml")
+
+
+@pytest.mark.parametrize("placed", ["", "at: [(R - r)*sin(pi/3), R - (R - r)*cos(pi/3)], "])
+def test_a_ball_of_finite_size_needs_27_tenths_of_its_path_radius(placed, tmp_path):
+    """A solid ball of radius r rolling in a loop of radius R: its center moves on a circle of
+    radius R - r, so the least release height of the center above its lowest position is
+    27 (R - r) / 10 (Serway & Jewett, Physics for Scientists and Engineers, ch. 10, the loop
+    problem with the ball's radius kept; the point-ball 27 R / 10 is its r -> 0 limit). It was
+    27 R / 10 - r: the top of the loop was put in as a displacement from the ball's placed
+    position. Placed elsewhere on the loop, the answer is the same."""
+    text = load("loop_the_loop_ball").path.read_text().replace("ball: {shape: sphere, ", "ball: {shape: sphere, "
+                                                               + placed)
+    path = tmp_path / "loop.yaml"
+    path.write_text(text)
+    problem = load(path)
+    R, r = problem.parameters["R"].symbol, problem.parameters["r"].symbol
+    assert sp.simplify(Solution(problem).expression("h_roll") - sp.Rational(27, 10) * (R - r)) == 0
