@@ -404,6 +404,10 @@ class Solution(CrossChecks):
                 result.append((oscillation.stiffness if oscillation.stable else -oscillation.stiffness, True,
                                f"the equilibrium is {'un' if oscillation.stable else ''}stable at these parameters "
                                f"(q'' = {sp.sstr(-oscillation.stiffness)} q)"))
+            if oscillation.damping != 0 and oscillation.stable:
+                result.append((tidy(oscillation.stiffness - oscillation.damping**2 / 4), True,
+                               "the damping is too strong at these parameters: it does not oscillate "
+                               "(overdamped, c^2/4 >= k)"))
         for declared in self.problem.conditions:  # the problem file's own, answers substituted
             answers = {d: self.expression(name) for d, name in declared.answers.items()}
             result += [(difference.xreplace(answers), strict, f"{declared.text} does not hold: {declared.because}")

@@ -118,7 +118,7 @@ class CrossChecks:
             methods.add(method)
         for index, regime in enumerate(self.regimes):  # every friction regime, each on its own motions
             lag, ne = (self._regime_derivations(index)[r] for r in ROUTES)
-            for state in self._states_on_constraints(scene=regime.scene):
+            for state in self._check_states(index):
                 for unknown in lag.unknowns:
                     if agree(lag.at(state).raw[unknown], ne.at(state).raw[unknown],
                              symbolic=False) is None:
@@ -151,7 +151,7 @@ class CrossChecks:
         for index, regime in enumerate(self.regimes):
             ledger = self.energy_ledger(regime.scene)
             rate = coords.ddt(ledger["kinetic_translational"] + ledger["kinetic_rotational"] + ledger["potential"])
-            for state in self._states_on_constraints(scene=regime.scene):
+            for state in self._check_states(index):
                 solved = self._regime_derivations(index)["lagrange"].at(state).raw
                 forces = {u: v for u, v in solved.items() if u not in coords.accelerations}
                 left = rate.xreplace(state).xreplace({c.a: solved[c.a] for c in coords.all})
@@ -163,13 +163,28 @@ class CrossChecks:
         kind = "conserved" if kinds == {True} else "changes by the work of the applied forces"
         return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work")
 
-    def _states_on_constraints(self, count: int = 2, scene=None) -> list[dict[sp.Symbol, sp.Expr]]:
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, three regimes at most
+    def _check_states(self, index: int) -> list[dict[sp.Symbol, sp.Expr]]:
+        """The states the routes and the work-energy checks compare in the index-th friction
+        regime: motions on its constraints, at sample parameters (the checks are numeric, and each
+        derivative along a motion is then taken of a number-valued geometry, not of the general
+        one). The same states for both checks: each route solves them once."""
+        routes = self._regime_derivations(index).values()
+        symbols = set().union(*(e.free_symbols for d in routes for e in [*d.balances, *d.rates]))
+        symbols -= self.coordinates.state | {u for d in routes for u in d.unknowns}
+        parameters = sample_points(self.problem, sp.Add(*symbols), count=1)[0] if symbols else {}
+        return self._states_on_constraints(scene=self.regimes[index].scene, parameters=parameters)
+
+    def _states_on_constraints(self, count: int = 2, scene=None, parameters=None) -> list[dict[sp.Symbol, sp.Expr]]:
         """Motions the constraints of the scene (by default the one the derivations describe)
         allow: the reference configuration (where every gap vanishes) with random velocities
-        solving dg/dt = 0. Off the constraints the two routes' descriptions of a curved contact
-        differ, so only states on them are compared."""
+        solving dg/dt = 0 (with `parameters`, at those values, which the states then include).
+        Off the constraints the two routes' descriptions of a curved contact differ, so only
+        states on them are compared."""
         coords = self.coordinates
-        rates = [coords.ddt(g) for c in (scene or self.dynamics_scene).constraints for g in c.gaps(coords)]
+        parameters = parameters or {}
+        rates = [coords.ddt(g).xreplace(parameters) for c in (scene or self.dynamics_scene).constraints
+                 for g in c.gaps(coords)]
         at_reference = {c.q: 0 for c in coords.all}
         rng = random.Random(2)
         states = []
@@ -180,7 +195,7 @@ class CrossChecks:
             chosen = {u: sp.Rational(rng.randint(-90, 90), 37) for u in free}
             solved = sp.solve([r.xreplace(at_reference).xreplace(chosen) for r in rates],
                               [c.u for c in coords.all if c.u not in chosen], dict=True)
-            states.append({**at_reference, **chosen, **(solved[0] if solved else {})})
+            states.append({**parameters, **at_reference, **chosen, **(solved[0] if solved else {})})
         return states
 
     def _event_check(self) -> Check:

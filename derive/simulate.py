@@ -47,7 +47,7 @@ def _values(solution: Solution) -> dict[sp.Symbol, sp.Expr]:
     """Parameter values (SI) at the middle of their ranges, open sizes at sample values."""
     symbols = set()
     for d in solution.derivations.values():
-        for e in d.equations:
+        for e in [*d.balances, *d.rates]:
             symbols |= e.free_symbols
     for expr in solution.expressions.values():
         symbols |= expr.free_symbols

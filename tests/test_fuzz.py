@@ -296,7 +296,10 @@ def _accepts(call, *args) -> bool:
     return True
 
 
-REFUSED_ALWAYS = re.compile(r"\^\^|\\(iow_|tl_|cs_|use:|ExplSyntax|NewDocumentCommand|csname|catcode|input|write|def(?![A-Za-z]))"
+#: A control word that must never pass: its backslash not itself escaped (`\\use:c` is a line break
+#: and the letters "use:c").
+REFUSED_ALWAYS = re.compile(r"\^\^|(?<!\\)(?:\\\\)*\\(iow_|tl_|cs_|use:|ExplSyntax|NewDocumentCommand|csname|catcode|input|write"
+                            r"|def(?![A-Za-z]))"
                             "|[\x00\t\x7f\u202e\u200d\ue000😀ع]")
 
 

@@ -346,3 +346,49 @@ def test_an_oscillation_away_from_the_equilibrium_is_an_engine_limit(tmp_path):
     result = run_derive("solve", str(tmp_path / "problem.yaml"))
     assert result.returncode == 1 and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert "derive cannot yet find the equilibrium of a scene placed away from it" in result.stderr
+
+
+DAMPED = """\
+id: damped_block
+title: A block on a spring with a dashpot
+topic: torque
+parameters:
+  m: {meaning: mass of the block, unit: kg, range: [1, 2], sig_figs: 3}
+  k: {meaning: spring constant, unit: N/m, range: [50, 100], sig_figs: 3}
+  b: {meaning: damping coefficient, unit: N*s/m, range: [RANGE], sig_figs: 3}
+  L: {meaning: length of the spring, unit: m, value: 0.5}
+scene:
+  surfaces:
+    floor: {plane: {angle: 0}}
+  points:
+    wall: [0, 0]
+  bodies:
+    block: {shape: point, mass: m, at: [L, 0], on: floor, contact: sliding}
+  loads:
+    - spring: {between: [wall, block], stiffness: k}
+    - damper: {between: [wall, block], coefficient: b}
+ask:
+  omega: {meaning: angular frequency of the damped oscillations, of: small_oscillation.omega, unit: rad/s}
+question: |
+  A block of mass {{ m }} on a smooth floor, held by a spring and a dashpot.
+"""
+
+
+def test_a_damper_slows_the_small_oscillation(tmp_path):
+    """omega' = sqrt(k/m - b^2/(4 m^2)) (Halliday, Resnick & Walker, Fundamentals of Physics,
+    10th ed., §15.6, damped simple harmonic motion). It was sqrt(k/m), the damper left out:
+    the linearization was taken at rest, where a dashpot exerts no force."""
+    problem = load(write(tmp_path, DAMPED.replace("RANGE", "2, 10")))
+    m, k, b = (problem.parameters[n].symbol for n in ("m", "k", "b"))
+    omega = Solution(problem).expression("omega")
+    assert sp.simplify(omega**2 - (k / m - b**2 / (4 * m**2))) == 0
+    result = run_derive("check", str(problem.path))  # against the period of a simulated motion
+    assert result.returncode == 0 and "ok: omega" in result.stdout, result.stdout + result.stderr
+
+
+def test_an_overdamped_variant_is_refused(tmp_path):
+    """With b up to 40 N s/m, k/m - b^2/(4 m^2) < 0 for some variants: it does not oscillate."""
+    path = write(tmp_path, DAMPED.replace("RANGE", "2, 40"))
+    result = run_derive("solve", str(path), "--set", "b=30", "--set", "m=1", "--set", "k=50")
+    assert result.returncode == 2 and "overdamped" in result.stderr, result.stdout + result.stderr
+    assert run_derive("solve", str(path), "--set", "b=5").returncode == 0

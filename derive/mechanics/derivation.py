@@ -48,7 +48,13 @@ class Solved(Mapping):
 class Derivation:
     """The equations of motion of one route, solved for accelerations and constraint forces.
 
-    `solution` solves them in general (every coordinate and velocity a symbol), on first use;
+    `balances` are the route's own equations (Euler–Lagrange, or force and torque balances);
+    `rates` the constraints on velocities, v(q, u) = 0 and linear in u, that close the system at
+    acceleration level, dv/dt = 0. `equations` holds them all in general (every coordinate and
+    velocity a symbol: a simulation needs them); with every velocity zero, dv/dt is only
+    sum(dv/du_i a_i) (the terms in u vanish), which `at_rest_equations` builds without deriving
+    the general terms: the second time derivative of a cord's exact geometry was most of a
+    cascade's time (benchmarks: derive bench). `solution` solves them in general, on first use;
     `at(state)` solves them with some coordinates and velocities given (the reference
     configuration at rest, a state of the motion): with the state put in first, the linear system
     is far smaller than the general one. `steps` hold the derivation up to the equations;
@@ -56,10 +62,32 @@ class Derivation:
     """
 
     route: str
-    equations: list[sp.Eq]
+    balances: list[sp.Eq]
     unknowns: list[sp.Symbol]
     steps: list[Step] = field(default_factory=list)
+    rates: list[sp.Expr] = field(default_factory=list)
+    coords: object = None  # derive.mechanics.kinematics.Coordinates, for the rates' derivatives
+    gaps: list[sp.Expr] = field(default_factory=list)  # when each rate is dg/dt of a gap g(q)
     _states: dict = field(default_factory=dict, repr=False)
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def equations(self) -> list[sp.Eq]:
+        """Every equation, in general: the balances and dv/dt = 0 for each rate."""
+        if "general" not in self._cache:
+            self._cache["general"] = self.balances + [sp.Eq(self.coords.ddt(v), 0) for v in self.rates]
+        return self._cache["general"]
+
+    @property
+    def at_rest_equations(self) -> list[sp.Eq]:
+        """The equations with every velocity zero (coordinates still free)."""
+        if "rest" not in self._cache:
+            still = {c.u: 0 for c in self.coords.all} if self.coords is not None else {}
+            rows = [sp.Eq(self._slope_term(i, {}), 0, evaluate=False) if self._linear(i)
+                    else sp.Eq(self.coords.ddt(v).xreplace(still), 0)  # not linear in u: in full
+                    for i, v in enumerate(self.rates)]
+            self._cache["rest"] = [e.xreplace(still) for e in self.balances] + rows
+        return self._cache["rest"]
 
     @property
     def solution(self) -> Solved:
@@ -69,9 +97,52 @@ class Derivation:
         """The solution with `state` (coordinates and velocities, some or all) put in."""
         key = tuple(sorted(state.items(), key=lambda item: str(item[0])))
         if key not in self._states:
+            coords = self.coords.all if self.coords is not None else []
+            if coords and all(state.get(c.u, None) == 0 for c in coords):
+                equations = [e.xreplace(state) for e in self.at_rest_equations]
+            elif coords and all(c.q in state and c.u in state for c in coords) \
+                    and all(self._linear(i) for i in range(len(self.rates))):
+                equations = [e.xreplace(state) for e in self.balances] + self._rates_along(state)
+            else:
+                equations = [e.xreplace(state) for e in self.equations]
             with limits.time_limit(f"solving the equations of {self.route.replace('_', '-')}"):
-                self._states[key] = solve_linear([e.xreplace(state) for e in self.equations], self.unknowns)
+                self._states[key] = solve_linear(equations, self.unknowns)
         return self._states[key]
+
+    def _slopes(self, i: int) -> list[tuple[sp.Expr, sp.Symbol]]:
+        """(dv/du_j, a_j) for the i-th rate v."""
+        key = ("slopes", i)
+        if key not in self._cache:
+            self._cache[key] = [(sp.diff(self.rates[i], c.u), c.a) for c in self.coords.all
+                                if c.u in self.rates[i].free_symbols]
+        return self._cache[key]
+
+    def _linear(self, i: int) -> bool:
+        """Whether the i-th rate is linear and homogeneous in the velocities (as rigid-body
+        kinematics and the rates of gaps are): then dv/dt = sum(dv/du_j a_j) + the terms in u."""
+        velocities = {c.u for c in self.coords.all}
+        still = {u: 0 for u in velocities}
+        return self.rates[i].xreplace(still) == 0 and not any(slope.free_symbols & velocities
+                                                              for slope, _ in self._slopes(i))
+
+    def _slope_term(self, i: int, state: dict) -> sp.Expr:
+        return sum((slope.xreplace(state) * a for slope, a in self._slopes(i)), sp.Integer(0))
+
+    def _rates_along(self, state: dict[sp.Symbol, sp.Expr]) -> list[sp.Eq]:
+        """dv/dt = 0 in a state that gives every coordinate and velocity u0: sum(dv/du_j a_j) plus
+        the derivative along the motion, d/ds v(q0 + s u0, u0) at s = 0, or for the rate of a gap
+        g, d^2/ds^2 g(q0 + s u0): one derivative in one symbol where the general dv/dt needs one
+        per coordinate and velocity (the chain rule, exactly)."""
+        s = sp.Dummy("s")
+        path = {c.q: state[c.q] + s * state[c.u] for c in self.coords.all}
+        velocities = {c.u: state[c.u] for c in self.coords.all}
+        rows = []
+        for i, v in enumerate(self.rates):
+            gap = self.gaps[i] if self.gaps else None
+            along = sp.diff(gap.xreplace(path), s, 2) if gap is not None else \
+                sp.diff(v.xreplace(velocities).xreplace(path), s)
+            rows.append(sp.Eq(self._slope_term(i, state) + along.xreplace({s: 0}), 0, evaluate=False))
+        return rows
 
     def solving_step(self, unknowns, state: dict[sp.Symbol, sp.Expr], where: str) -> Step:
         solved = self.at(state)

@@ -67,9 +67,10 @@ class Coordinates:
 
     def ddt(self, expr: sp.Expr) -> sp.Expr:
         """Total time derivative of an expression in the q and u symbols."""
+        present = expr.free_symbols if isinstance(expr, sp.Basic) else set()
         return sum(
-            (sp.diff(expr, c.q) * c.u + sp.diff(expr, c.u) * c.a for c in self.all),
-            sp.Integer(0),
+            (sp.diff(expr, c.q) * c.u for c in self.all if c.q in present),
+            sum((sp.diff(expr, c.u) * c.a for c in self.all if c.u in present), sp.Integer(0)),
         )
 
     def orientation(self, body: str) -> sp.Expr:

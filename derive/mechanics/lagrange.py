@@ -60,7 +60,7 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         lhs = coords.ddt(sp.diff(lagrangian, c.u)) - sp.diff(lagrangian, c.q)
         rhs = applied[c.q] + sum((force * sp.diff(gap, c.q) for gap, force in pairs), sp.Integer(0))
         equations.append(sp.Eq(lhs, rhs))
-    constraint_accelerations = [sp.Eq(coords.ddt(coords.ddt(gap)), 0) for gap, _ in pairs]
+    rates = [coords.ddt(gap) for gap, _ in pairs]
     unknowns = coords.accelerations + [force for _, force in pairs]
     # The equations stay general (unexpanded: a cord's exact geometry makes them long); the steps
     # show them where the answers are read, in the reference configuration at rest.
@@ -72,11 +72,12 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     if pairs:
         steps.append(Step("Constraints g = 0, each with a multiplier equal to the force it exerts (their rates, "
                           "in the reference configuration)",
-                          tuple(sp.Eq(simplest(coords.ddt(gap).xreplace(rest_positions(coords))), 0)
-                                for gap, _ in pairs)))
+                          tuple(sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in rates)))
+    derivation = Derivation("lagrange", equations, unknowns, steps, rates, coords, [gap for gap, _ in pairs])
     steps += [
         Step("Euler–Lagrange equations, d/dt(dL/dq') - dL/dq = Q + sum of multiplier times dg/dq (in the reference "
              "configuration, at rest)", tuple(at_state(e, rest) for e in equations)),
-        Step("Constraints at acceleration level", tuple(at_state(e, rest) for e in constraint_accelerations)),
+        Step("Constraints at acceleration level",
+             tuple(at_state(e, rest) for e in derivation.at_rest_equations[len(equations):])),
     ]
-    return Derivation("lagrange", equations + constraint_accelerations, unknowns, steps)
+    return derivation

@@ -52,12 +52,11 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         steps.append(Step(f"Forces and torques on the {body.name} ({labels})",
                           tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances)))
     conditions = [v for c in scene.constraints for v in c.conditions(coords)]
-    kinematic = [sp.Eq(coords.ddt(v), 0) for v in conditions]
-    equations += kinematic
+    unknowns = coords.accelerations + [f for c in scene.constraints for f in c.unknowns().values()]
+    derivation = Derivation("newton_euler", equations, unknowns, steps, conditions, coords)
     if conditions:
         where = rest_positions(coords)
         steps.append(Step("Kinematic constraints (velocities, then accelerations, in the reference configuration)",
                           tuple(sp.Eq(simplest(v.xreplace(where)), 0) for v in conditions)
-                          + tuple(at_state(e, rest) for e in kinematic)))
-    unknowns = coords.accelerations + [f for c in scene.constraints for f in c.unknowns().values()]
-    return Derivation("newton_euler", equations, unknowns, steps)
+                          + tuple(at_state(e, rest) for e in derivation.at_rest_equations[len(equations):])))
+    return derivation

@@ -42,16 +42,21 @@ class Oscillation:
     #: True when the sign of the stiffness holds for every value of the symbols; otherwise it
     #: was read at sample parameters, and every variant must check it (Solution.conditions).
     proven: bool = True
+    #: c in q'' = -k q - c q' (a damper): the oscillation is at omega^2 = k - c^2/4 while that is
+    #: positive (underdamped; Solution.conditions checks it for every variant).
+    damping: sp.Expr = sp.Integer(0)
 
     def quantity(self, name: str) -> sp.Expr:
         """omega or period (stable), growth_rate (unstable)."""
+        k, c = self.stiffness, self.damping
         if name == "growth_rate":
             if self.stable:
                 raise OscillationError("the equilibrium is stable: it oscillates, it has no growth rate")
-            return root(-self.stiffness)
+            return root(-k) if c == 0 else tidy(root(c**2 / 4 - k) - c / 2)
         if not self.stable:
-            raise OscillationError(f"the equilibrium is unstable (q'' = {sp.sstr(-self.stiffness)} q): ask for growth_rate")
-        return root(self.stiffness) if name == "omega" else 2 * sp.pi * root(1 / self.stiffness)
+            raise OscillationError(f"the equilibrium is unstable (q'' = {sp.sstr(-k)} q): ask for growth_rate")
+        square = k if c == 0 else tidy(k - c**2 / 4)
+        return root(square) if name == "omega" else 2 * sp.pi * root(1 / square)
 
 
 class OscillationLimit(OscillationError):
@@ -96,7 +101,7 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
     first = {u: sp.Dummy(f"d{u}") for u in derivation.unknowns}
     along = {q: direction[i] * s for i, q in enumerate(positions)}
     linear_equations = []
-    for e in derivation.equations:
+    for e in derivation.at_rest_equations:
         residual = (e.lhs - e.rhs).xreplace(at_rest).xreplace(along)
         residual = residual.xreplace({u: equilibrium[u] + s * first[u] for u in derivation.unknowns})
         linear_equations.append(sp.Eq(sp.diff(residual, s).xreplace({s: 0}), 0))
@@ -109,16 +114,33 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
         raise OscillationError(f"cannot decide whether q'' = {sp.sstr(-stiffness)} q is stable for all parameters")
     else:
         stable = sample(stiffness) > 0
-    q = coordinate.q
-    linear = Step(f"Linearize about {q} = 0 at rest", (sp.Eq(coordinate.a, -stiffness * q),))
+    damping = _damping(scene, derivation, coords, direction, coordinate)
+    q, rate = coordinate.q, sp.Symbol(str(coordinate.u))
+    linear = Step(f"Linearize about {q} = 0 at rest" + (" (the damping to first order in the rate)" if damping else ""),
+                  (sp.Eq(coordinate.a, -stiffness * q - damping * rate),))
+    oscillation = Oscillation(coordinate, stiffness, (), stable, tuple(direction), proven, damping)
     if stable:
-        omega = root(stiffness)
-        steps = (linear, Step("Angular frequency and period of small oscillations",
-                              (sp.Eq(sp.Symbol("omega"), omega), sp.Eq(sp.Symbol("T"), 2 * sp.pi * root(1 / stiffness)))))
+        steps = (linear, Step("Angular frequency and period of small oscillations" +
+                              (", damped: omega^2 = k - c^2/4" if damping else ""),
+                              (sp.Eq(sp.Symbol("omega"), oscillation.quantity("omega")),
+                               sp.Eq(sp.Symbol("T"), oscillation.quantity("period")))))
     else:
         steps = (linear, Step("Unstable: the deviation grows as exp(a t) with growth rate",
-                              (sp.Eq(sp.Symbol("a"), root(-stiffness)),)))
-    return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven)
+                              (sp.Eq(sp.Symbol("a"), oscillation.quantity("growth_rate")),)))
+    return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping)
+
+
+def _damping(scene: Scene, derivation: Derivation, coords: Coordinates, direction, coordinate: Coordinate) -> sp.Expr:
+    """c in q'' = -k q - c q': minus the slope of the free coordinate's acceleration in its rate,
+    moving through the reference configuration along the free direction (terms in the rate
+    squared are second order). Zero unless a part dissipates (a damper)."""
+    if all(part.dissipation(coords) == 0 for part in scene.parts):
+        return sp.Integer(0)
+    w = sp.Dummy("w")
+    state = {c.q: 0 for c in coords.all}
+    state.update({c.u: direction[i] * w for i, c in enumerate(coords.all)})
+    acceleration = derivation.at(state).raw[coordinate.a]
+    return tidy(-sp.diff(acceleration, w).xreplace({w: 0}))
 
 
 def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tuple[sp.Expr, tuple[Step, ...]]:
