@@ -4,7 +4,9 @@ Figures: CLI start-up; derivation per problem, cold and cached; time per answer 
 largest relative error of each evaluation backend against a 50-digit reference, at typical
 and extreme parameters; an answer key of 30 problems x 300 variants; the same derivations
 with sympy.physics.mechanics alone; a work-precision table of scipy's integrators and a
-symplectic one on a large-amplitude pendulum.
+symplectic one on a large-amplitude pendulum; derive's cold time for both routes with the
+cross-check next to sympy.physics.mechanics' KanesMethod on the same scenes (derive.bench_anchors),
+and how both grow along chains of n bodies.
 
 >>> lines = []
 >>> startup(lines.append, runs=1)
@@ -261,13 +263,236 @@ def sheet_build(say, with_pdfs: bool) -> None:
                 os.environ["DERIVE_LIBRARY"] = previous
 
 
-def run(say, quick: bool = False) -> None:
+# --- derive against sympy.physics.mechanics' KanesMethod, cold (derive.bench_anchors) -----------
+
+#: The worker imports these before it forks: neither engine pays for an import in its figure.
+_PRELOAD = ("sympy", "sympy.physics.mechanics", "scipy.integrate", "derive.answers", "derive.problem",
+            "derive.simulate", "derive.bench_anchors")
+#: CPU seconds one job may take before the worker's child is stopped.
+JOB_CPU_LIMIT = 900
+
+
+def _serve() -> None:
+    """The cold-start worker (`python -c "from derive.bench import _serve; _serve()"`): import
+    both engines once, then for each job (a JSON line on stdin) fork a child that clears sympy's
+    cache, runs the job and sends one JSON line back. A child starts with every cache empty (the
+    worker itself derives nothing), without paying the 1 to 2 s of a fresh interpreter."""
+    import importlib
+    import json
+    import os
+
+    for name in _PRELOAD:
+        importlib.import_module(name)
+    for line in sys.stdin:
+        read, write = os.pipe()
+        pid = os.fork()
+        if pid == 0:  # the child: never returns
+            os.close(read)
+            result = {}
+            try:
+                import resource
+
+                resource.setrlimit(resource.RLIMIT_CPU, (JOB_CPU_LIMIT, JOB_CPU_LIMIT))
+                devnull = os.open(os.devnull, os.O_WRONLY)
+                os.dup2(devnull, 1)
+                from sympy.core.cache import clear_cache
+
+                clear_cache()
+                result = _job(json.loads(line))
+            except BaseException as error:  # noqa: B036 - reported as the job's figure
+                result = {"error": f"{type(error).__name__}: {str(error).splitlines()[0] if str(error) else ''}"}
+            finally:
+                os.write(write, (json.dumps(result) + "\n").encode())
+                os._exit(0)
+        os.close(write)
+        with os.fdopen(read) as pipe:
+            answer = pipe.read().strip()
+        _, status = os.waitpid(pid, 0)
+        if not answer:
+            answer = json.dumps({"error": f"stopped (status {status}; over {JOB_CPU_LIMIT} CPU s?)"})
+        print(answer, flush=True)
+
+
+def _job(job: dict) -> dict:
+    if job["engine"] == "derive":
+        return _derive_cold(job["reference"])
+    from derive import bench_anchors
+
+    if "chain" in job:
+        _, build = bench_anchors.CHAINS[job["chain"]]
+        _, seconds = _timed(lambda: build(job["n"]).solve())
+    else:
+        _, seconds = _timed(bench_anchors.SCENES[job["scene"]].run)
+    return {"total": seconds}
+
+
+def _derive_cold(reference: str) -> dict:
+    """What `derive check` runs, timed: the problem read, both routes, every answer and every
+    cross-check (then, apart, the simulation). The routes' own time (forming each route's
+    equations and solving them, at the reference and at the states the checks draw) and the
+    inertia integrals are measured by wrapping those functions in this child process."""
+    from derive import inertia, problem, simulate
+    from derive.answers import Solution
+    from derive.mechanics import derivation, lagrange, newton_euler
+    from derive.scene import DYNAMIC_KINDS
+
+    spent = {"lagrange": 0.0, "newton_euler": 0.0, "inertia": 0.0}
+    inner: list[float] = []  # time of the wrapped calls inside the one running, by depth
+
+    def timed(label, function):
+        def wrapper(*args, **kwargs):
+            start = time.perf_counter()
+            inner.append(0.0)
+            try:
+                return function(*args, **kwargs)
+            finally:
+                elapsed = time.perf_counter() - start
+                spent[label(args)] += elapsed - inner.pop()
+                if inner:
+                    inner[-1] += elapsed
+        return wrapper
+
+    lagrange.derive = timed(lambda a: "lagrange", lagrange.derive)
+    newton_euler.derive = timed(lambda a: "newton_euler", newton_euler.derive)
+    derivation.Derivation.at = timed(lambda a: a[0].route, derivation.Derivation.at)
+    inertia.central_moment = timed(lambda a: "inertia", inertia.central_moment)
+
+    start = time.perf_counter()
+    p = problem.load(reference)
+    solution = Solution(p)
+    solution.expressions
+    solution.checks()
+    total = time.perf_counter() - start
+    result = {**spent, "total": total, "answers_and_checks": total - sum(spent.values())}
+    if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS:
+        report, result["simulate"] = _timed(simulate.check, solution)
+        result["simulate_passed"] = report.passed
+    return result
+
+
+class _Worker:
+    """The cold-start worker process (see `_serve`)."""
+
+    def __enter__(self):
+        self.process = subprocess.Popen([sys.executable, "-c", "from derive.bench import _serve; _serve()"],
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+        return self
+
+    def __call__(self, **job) -> dict:
+        import json
+
+        self.process.stdin.write(json.dumps(job) + "\n")
+        line = self.process.stdout.readline()
+        return json.loads(line) if line else {"error": "the worker stopped"}
+
+    def __exit__(self, *exc):
+        self.process.stdin.close()
+        self.process.wait(timeout=60)
+
+
+def _seconds(result: dict, key: str = "total") -> str:
+    return "failed" if "error" in result else f"{result[key]:.2f}"
+
+
+def _growth(sizes: list[int], times: list[float]) -> float:
+    """The exponent k of t ~ n^k, by least squares on log t against log n."""
+    xs, ys = np.log(sizes), np.log(times)
+    return float(np.polyfit(xs, ys, 1)[0])
+
+
+def engines(say, quick: bool = False, scenes: list[str] | None = None, sizes: list[int] | None = None,
+            chains: list[str] | None = None) -> dict:
+    """derive's cold time for both routes with the cross-check, scene by scene, next to
+    sympy.physics.mechanics' KanesMethod on the same scene (derive.bench_anchors says what the
+    anchor computes), and how each grows along chains of n bodies. Each figure is one cold run
+    in a fresh child of a worker process. Returns the figures."""
+    import tempfile
+
+    from derive import bench_anchors
+
+    scenes = scenes or list(bench_anchors.QUICK if quick else bench_anchors.SCENES)
+    sizes = sizes or list(range(1, 5 if quick else 7))
+    chains = chains or list(bench_anchors.CHAINS)[:1 if quick else None]
+    figures: dict = {"scenes": {}, "chains": {}}
+    say("\nderive against sympy.physics.mechanics (KanesMethod), cold, seconds (targets: derive's both routes "
+        "with the cross-check within 1.5x the anchor's one route; growth along a chain no steeper; 6 bodies "
+        "in seconds):")
+    say("  derive: the problem read, Lagrange and Newton-Euler (each: equations formed and solved), the inertia "
+        "integrals, the answers and every cross-check (as `derive check`, whose simulation is timed apart).")
+    say("  anchor: KanesMethod in minimal coordinates, an auxiliary speed per constraint force derive computes, "
+        "accelerations and those forces solved at the reference configuration at rest (plus small oscillations "
+        "and loop heights where asked).")
+    with tempfile.TemporaryDirectory() as folder, _Worker() as worker:
+        say(f"  {'scene':<20} {'Lagrange':>8} {'N-E':>6} {'inertia':>7} {'answers':>7} {'derive':>7} "
+            f"{'anchor':>7} {'ratio':>6} {'simulate':>8}")
+        met = 0
+        for ident in scenes:
+            anchor = bench_anchors.SCENES[ident]
+            ours = worker(engine="derive", reference=anchor.reference(folder))
+            theirs = worker(engine="anchor", scene=ident)
+            figures["scenes"][ident] = (ours, theirs)
+            if "error" in ours or "error" in theirs:
+                say(f"  {ident:<20} derive: {ours.get('error', 'ok')}; anchor: {theirs.get('error', 'ok')}")
+                continue
+            ratio = ours["total"] / theirs["total"]
+            met += ratio <= 1.5
+            simulated = f"{ours['simulate']:.2f}" if "simulate" in ours else "-"
+            say(f"  {ident:<20} {ours['lagrange']:>8.2f} {ours['newton_euler']:>6.2f} {ours['inertia']:>7.2f} "
+                f"{ours['answers_and_checks']:>7.2f} {ours['total']:>7.2f} {theirs['total']:>7.2f} {ratio:>6.1f} "
+                f"{simulated:>8}")
+        timed = [(o["total"], t["total"]) for o, t in figures["scenes"].values() if "error" not in o and "error" not in t]
+        if timed:
+            ours_total, theirs_total = (sum(x) for x in zip(*timed))
+            say(f"  {'all ' + str(len(timed)) + ' scenes':<20} {'':>8} {'':>6} {'':>7} {'':>7} {ours_total:>7.2f} "
+                f"{theirs_total:>7.2f} {ours_total / theirs_total:>6.1f}   ({met} of {len(timed)} within 1.5x)")
+        for kind in chains:
+            write, _ = bench_anchors.CHAINS[kind]
+            say(f"\n  A chain of n {kind}, cold seconds:")
+            say(f"  {'n':>3} {'derive':>8} {'anchor':>8} {'ratio':>6}")
+            rows = []
+            for n in sizes:
+                path = Path(folder) / f"{kind.replace(' ', '_')}_{n}.yaml"
+                path.write_text(write(n))
+                ours = worker(engine="derive", reference=str(path))
+                theirs = worker(engine="anchor", chain=kind, n=n)
+                rows.append((n, ours, theirs))
+                ratio = f"{ours['total'] / theirs['total']:>6.1f}" if "error" not in ours and "error" not in theirs \
+                    else "     -"
+                say(f"  {n:>3} {_seconds(ours):>8} {_seconds(theirs):>8} {ratio}"
+                    + "".join(f"   ({who}: {r['error']})" for who, r in (("derive", ours), ("anchor", theirs))
+                              if "error" in r))
+            figures["chains"][kind] = rows
+            good = [(n, o["total"], t["total"]) for n, o, t in rows if "error" not in o and "error" not in t]
+            if len(good) >= 3:
+                ns, ours_t, theirs_t = zip(*good)
+                say(f"  growth t ~ n^k: derive k = {_growth(ns, ours_t):.2f}, anchor k = {_growth(ns, theirs_t):.2f}; "
+                    f"t({ns[-1]}) / t({ns[0]}): derive {ours_t[-1] / ours_t[0]:.1f}, anchor "
+                    f"{theirs_t[-1] / theirs_t[0]:.1f}")
+    return figures
+
+
+#: The sections of `derive bench`, in order (`--only` runs one).
+SECTIONS = ("startup", "derivations", "backends", "answer_key", "sheet", "mechanics_alone", "work_precision", "engines")
+
+
+def run(say, quick: bool = False, only: str | None = None) -> None:
+    def wanted(section: str) -> bool:
+        return only is None or only == section
+
     ids = [p.stem for p in library.problem_files()]
-    startup(say, runs=3 if quick else 10)
-    solutions = derivations(say, ids[:8] if quick else ids)
-    backends(say, solutions, samples=1 if quick else 3)
-    answer_key(say, solutions, variants=30 if quick else 300)
-    sheet_build(say, with_pdfs=not quick)
-    if not quick:
+    if wanted("startup"):
+        startup(say, runs=3 if quick else 10)
+    if only is None or only in ("derivations", "backends", "answer_key"):
+        solutions = derivations(say, ids[:8] if quick else ids)
+        if wanted("backends"):
+            backends(say, solutions, samples=1 if quick else 3)
+        if wanted("answer_key"):
+            answer_key(say, solutions, variants=30 if quick else 300)
+    if wanted("sheet"):
+        sheet_build(say, with_pdfs=not quick)
+    if only == "mechanics_alone" or only is None and not quick:
         mechanics_alone(say)
-    work_precision(say)
+    if wanted("work_precision"):
+        work_precision(say)
+    if wanted("engines"):
+        engines(say, quick=quick)

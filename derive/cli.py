@@ -277,20 +277,25 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
 
 
 @main.command()
-@click.option("--quick", is_flag=True, help="A shorter run (under a minute): fewer problems, samples and variants.")
+@click.option("--quick", is_flag=True, help="A shorter run: fewer problems, samples, variants, scenes and chain lengths.")
+@click.option("--only", type=click.Choice(["startup", "derivations", "backends", "answer_key", "sheet",
+                                           "mechanics_alone", "work_precision", "engines"]),
+              default=None, help="Run one section (engines: derive against KanesMethod, scenes and chains).")
 @reports_errors
-def bench(quick: bool) -> None:
+def bench(quick: bool, only: str | None) -> None:
     """Measure speed against accuracy and print the figures.
 
     CLI start-up; derivation per problem, cold and cached; time per answer and the worst
     relative error of each evaluation backend (float, mpmath, auto, exact) against a
     50-digit reference, at typical and extreme parameters; a 30-problem x 300-variant
     answer key; sympy.physics.mechanics alone on the same systems; a work-precision table
-    of scipy's integrators and a symplectic one. Figures, not pass/fail.
+    of scipy's integrators and a symplectic one; derive's cold time for both routes with the
+    cross-check next to sympy.physics.mechanics' KanesMethod on the same scenes, and along
+    chains of 1 to 6 bodies. Figures, not pass/fail.
     """
     from derive import bench as benchmarks
 
-    benchmarks.run(lambda line: click.echo(line), quick=quick)
+    benchmarks.run(lambda line: click.echo(line), quick=quick, only=only)
 
 
 @main.command()
