@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import collections
 import json
+import os
 import subprocess
 import sys
 import tempfile
@@ -51,7 +52,7 @@ def _charge(frame, root: str):
     return None
 
 
-def child(path: str, top: int) -> dict:
+def child(path: str, top: int, seconds: float | None = None) -> dict:
     from derive import problem
     from derive.answers import Solution
 
@@ -61,8 +62,17 @@ def child(path: str, top: int) -> dict:
     functions: collections.Counter = collections.Counter()
     running = True
 
+    def report(total: float) -> dict:
+        samples = sum(counts.values()) or 1
+        return {"total": total, "samples": samples, "stopped": seconds is not None and total >= seconds,
+                "functions": [(f, n / samples) for f, n in functions.most_common(top)],
+                "lines": [(*k, n / samples) for k, n in counts.most_common(top)]}
+
     def sample():
         while running:
+            if seconds is not None and time.perf_counter() - start > seconds:  # give up: report so far
+                print(json.dumps(report(time.perf_counter() - start)), flush=True)
+                os._exit(0)
             frame = sys._current_frames().get(main)
             charged = _charge(frame, root) if frame is not None else None
             if charged:
@@ -79,27 +89,28 @@ def child(path: str, top: int) -> dict:
     running = False
     total = time.perf_counter() - start
     sampler.join()
-    samples = sum(counts.values()) or 1
-    return {"total": total, "samples": samples,
-            "functions": [(f, n / samples) for f, n in functions.most_common(top)],
-            "lines": [(*k, n / samples) for k, n in counts.most_common(top)]}
+    return report(total)
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scenes", nargs="*", default=SLOWEST)
     parser.add_argument("--top", type=int, default=5)
+    parser.add_argument("--seconds", type=float, default=None, help="stop a scene after this long and show "
+                                                                        "where the time went so far")
     parser.add_argument("--child", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
-        print(json.dumps(child(args.child, args.top)))
+        print(json.dumps(child(args.child, args.top, args.seconds)))
         return
     with tempfile.TemporaryDirectory() as folder:
         for scene in args.scenes:
+            limit = ["--seconds", str(args.seconds)] if args.seconds else []
             done = subprocess.run([sys.executable, __file__, "--child", reference(scene, folder), "--top",
-                                   str(args.top)], capture_output=True, text=True, check=True)
+                                   str(args.top), *limit], capture_output=True, text=True, check=True)
             result = json.loads(done.stdout.splitlines()[-1])
-            print(f"{scene}: {result['total']:.1f} s, {result['samples']} samples; by derive function:")
+            stopped = " (stopped: still running)" if result["stopped"] else ""
+            print(f"{scene}: {result['total']:.1f} s{stopped}, {result['samples']} samples; by derive function:")
             for function, share in result["functions"]:
                 print(f"  {share:6.1%}  {function}")
             print("  by line, with the call below it:")

@@ -268,15 +268,21 @@ def sheet_build(say, with_pdfs: bool) -> None:
 #: The worker imports these before it forks: neither engine pays for an import in its figure.
 _PRELOAD = ("sympy", "sympy.physics.mechanics", "scipy.integrate", "derive.answers", "derive.problem",
             "derive.simulate", "derive.bench_anchors")
-#: CPU seconds one job may take before the worker's child is stopped.
+#: CPU seconds one job may take before the worker's child is stopped; and its simulation, after.
 JOB_CPU_LIMIT = 900
+SIMULATION_CPU_LIMIT = 30
+#: A job is run again (a fresh cold child each time) while its runs took under this many seconds
+#: in all, at most REPEATS times; its figure is the median.
+REPEAT_BELOW = 3.0
+REPEATS = 3
 
 
 def _serve() -> None:
     """The cold-start worker (`python -c "from derive.bench import _serve; _serve()"`): import
     both engines once, then for each job (a JSON line on stdin) fork a child that clears sympy's
-    cache, runs the job and sends one JSON line back. A child starts with every cache empty (the
-    worker itself derives nothing), without paying the 1 to 2 s of a fresh interpreter."""
+    cache, runs the job and sends JSON lines back (a derive job: its figures, then the simulation's
+    time in a second line). A child starts with every cache empty (the worker itself derives
+    nothing), without paying the 1 to 2 s of a fresh interpreter."""
     import importlib
     import json
     import os
@@ -288,32 +294,59 @@ def _serve() -> None:
         pid = os.fork()
         if pid == 0:  # the child: never returns
             os.close(read)
-            result = {}
             try:
-                import resource
-
-                resource.setrlimit(resource.RLIMIT_CPU, (JOB_CPU_LIMIT, JOB_CPU_LIMIT))
-                devnull = os.open(os.devnull, os.O_WRONLY)
-                os.dup2(devnull, 1)
-                from sympy.core.cache import clear_cache
-
-                clear_cache()
-                result = _job(json.loads(line))
-            except BaseException as error:  # noqa: B036 - reported as the job's figure
-                result = {"error": f"{type(error).__name__}: {str(error).splitlines()[0] if str(error) else ''}"}
+                _child(json.loads(line), lambda result: os.write(write, (json.dumps(result) + "\n").encode()))
             finally:
-                os.write(write, (json.dumps(result) + "\n").encode())
                 os._exit(0)
         os.close(write)
         with os.fdopen(read) as pipe:
-            answer = pipe.read().strip()
+            answers = [json.loads(a) for a in pipe.read().splitlines() if a.strip()]
         _, status = os.waitpid(pid, 0)
-        if not answer:
-            answer = json.dumps({"error": f"stopped (status {status}; over {JOB_CPU_LIMIT} CPU s?)"})
-        print(answer, flush=True)
+        result = answers[0] if answers else {"error": f"stopped (status {status}; over {JOB_CPU_LIMIT} CPU s?)"}
+        if result.get("simulate") == "pending":
+            result["simulate"] = answers[1]["simulate"] if len(answers) > 1 else \
+                f"stopped after {SIMULATION_CPU_LIMIT} CPU s"
+        print(json.dumps(result), flush=True)
 
 
-def _job(job: dict) -> dict:
+def _child(job: dict, send) -> None:
+    """Run one job in a forked child, with stdout and stderr silenced and a CPU limit."""
+    import os
+    import resource
+
+    def limit(seconds: float) -> None:
+        used = resource.getrusage(resource.RUSAGE_SELF)
+        soft = int(used.ru_utime + used.ru_stime + seconds)
+        resource.setrlimit(resource.RLIMIT_CPU, (soft, soft + 5))
+
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, 1)
+    os.dup2(devnull, 2)
+    limit(JOB_CPU_LIMIT)
+    from sympy.core.cache import clear_cache
+
+    clear_cache()
+    try:
+        result, solution = _job(job)
+    except BaseException as error:  # noqa: B036 - reported as the job's figure
+        send({"error": f"{type(error).__name__}: {str(error).splitlines()[0] if str(error) else ''}"})
+        return
+    if solution is None or not job.get("simulate", True):
+        send(result)
+        return
+    send({**result, "simulate": "pending"})
+    limit(SIMULATION_CPU_LIMIT)
+    from derive import simulate
+
+    try:
+        report, seconds = _timed(simulate.check, solution)
+        send({"simulate": seconds if report.passed else f"check failed ({'; '.join(report.notes)[:60]})"})
+    except BaseException as error:  # noqa: B036
+        send({"simulate": f"{type(error).__name__}"})
+
+
+def _job(job: dict) -> tuple[dict, object]:
+    """(figures, the derive Solution to simulate or None)."""
     if job["engine"] == "derive":
         return _derive_cold(job["reference"])
     from derive import bench_anchors
@@ -323,15 +356,15 @@ def _job(job: dict) -> dict:
         _, seconds = _timed(lambda: build(job["n"]).solve())
     else:
         _, seconds = _timed(bench_anchors.SCENES[job["scene"]].run)
-    return {"total": seconds}
+    return {"total": seconds}, None
 
 
-def _derive_cold(reference: str) -> dict:
+def _derive_cold(reference: str) -> tuple[dict, object]:
     """What `derive check` runs, timed: the problem read, both routes, every answer and every
-    cross-check (then, apart, the simulation). The routes' own time (forming each route's
+    cross-check (the simulation is timed apart, after). The routes' own time (forming each route's
     equations and solving them, at the reference and at the states the checks draw) and the
     inertia integrals are measured by wrapping those functions in this child process."""
-    from derive import inertia, problem, simulate
+    from derive import inertia, problem
     from derive.answers import Solution
     from derive.mechanics import derivation, lagrange, newton_euler
     from derive.scene import DYNAMIC_KINDS
@@ -364,10 +397,7 @@ def _derive_cold(reference: str) -> dict:
     solution.checks()
     total = time.perf_counter() - start
     result = {**spent, "total": total, "answers_and_checks": total - sum(spent.values())}
-    if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS:
-        report, result["simulate"] = _timed(simulate.check, solution)
-        result["simulate_passed"] = report.passed
-    return result
+    return result, solution if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS else None
 
 
 class _Worker:
@@ -378,12 +408,24 @@ class _Worker:
                                         stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
         return self
 
-    def __call__(self, **job) -> dict:
+    def once(self, job: dict) -> dict:
         import json
 
         self.process.stdin.write(json.dumps(job) + "\n")
         line = self.process.stdout.readline()
         return json.loads(line) if line else {"error": "the worker stopped"}
+
+    def __call__(self, **job) -> dict:
+        """The job's figures: its first run, with each time the median over the runs (see REPEATS)."""
+        runs = [self.once(job)]
+        while ("error" not in runs[0] and len(runs) < REPEATS
+               and sum(r["total"] for r in runs) < REPEAT_BELOW):
+            runs.append(self.once({**job, "simulate": False}))
+        if len(runs) > 1 and all("error" not in r for r in runs):
+            for key, value in runs[0].items():
+                if isinstance(value, float) and key != "simulate":
+                    runs[0][key] = statistics.median(r[key] for r in runs)
+        return runs[0]
 
     def __exit__(self, *exc):
         self.process.stdin.close()
@@ -436,7 +478,8 @@ def engines(say, quick: bool = False, scenes: list[str] | None = None, sizes: li
                 continue
             ratio = ours["total"] / theirs["total"]
             met += ratio <= 1.5
-            simulated = f"{ours['simulate']:.2f}" if "simulate" in ours else "-"
+            simulated = ours.get("simulate", "-")
+            simulated = f"{simulated:.2f}" if isinstance(simulated, float) else simulated
             say(f"  {ident:<20} {ours['lagrange']:>8.2f} {ours['newton_euler']:>6.2f} {ours['inertia']:>7.2f} "
                 f"{ours['answers_and_checks']:>7.2f} {ours['total']:>7.2f} {theirs['total']:>7.2f} {ratio:>6.1f} "
                 f"{simulated:>8}")
