@@ -1,7 +1,7 @@
-"""The anchor of `derive bench`: each benchmark scene written again by hand with
-sympy.physics.mechanics' KanesMethod, and the scenes derive reads (library ids, or problem files
-written here: an Atwood machine, a double pendulum, a yo-yo, a cart with a pendulum, a block on a
-table pulled over a pulley; and chains of n pendulum links or n disks on cords).
+"""The anchor of `derive bench`: each benchmark scene written again with sympy.physics.mechanics'
+KanesMethod, and the problem file derive reads for it (a library id, or a file of
+derive/bench_scenes/: an Atwood machine, a double pendulum, a yo-yo, a cart with a pendulum, a
+block on a table pulled over a pulley, a rod held by a spring; and the n-link pendulum chain).
 
 What an anchor computes (all of it timed): the frames, points, bodies and loads; Kane's equations
 in minimal coordinates, fr + fr* = 0, with one auxiliary speed for each constraint force that
@@ -11,6 +11,10 @@ solved in the reference configuration at rest for the accelerations (LU) and the
 does it too: small oscillations about a rest position (omega^2 from the equation linearized
 there), and the least release height on a loop (the normal force at the top at speed s, then
 energy).
+
+The n-link pendulum (and the double pendulum) is built with sympy's joints (PinJoint, System),
+accelerations only; the other scenes by hand, since rolling, cords and the constraint forces need
+auxiliary speeds, which the joints do not give.
 
 The models are the textbook ones, in minimal coordinates: a straight run of cord keeps its
 direction (a block hanging from a cord moves along the cord and does not swing). derive's cords
@@ -30,9 +34,12 @@ from pathlib import Path
 from typing import Callable
 
 import sympy as sp
-from sympy.physics.mechanics import KanesMethod, Particle, Point, ReferenceFrame, RigidBody, dynamicsymbols, inertia
+from sympy.physics.mechanics import (KanesMethod, Particle, PinJoint, Point, ReferenceFrame, RigidBody, System,
+                                     dynamicsymbols, inertia)
 
 TIME = dynamicsymbols._t
+#: The problem files of the scenes that are not in the library.
+SCENE_FILES = Path(__file__).resolve().parent / "bench_scenes"
 
 
 def _symbols(names: str):
@@ -105,6 +112,8 @@ class Model:
         forcing = self.kane.forcing.xreplace(state)
         rates = {u.diff(TIME): sp.cancel(v) for u, v in zip(self.u, mass_matrix.LUsolve(forcing))}
         rates.update({a.diff(TIME): sp.S.Zero for a in self.aux.values()})
+        if not self.forces:
+            return rates
         auxiliary = self.kane.auxiliary_eqs.xreplace(rates).xreplace(state)
         unknowns = list(self.forces.values())
         matrix, rhs = sp.linear_eq_to_matrix(list(auxiliary), unknowns)
@@ -264,8 +273,9 @@ def _loop(model: Model, loop_radius, bodies) -> None:
 
 
 def release_height(model: Model, index: int, body: str, loop_radius, radius, small: bool = False) -> sp.Expr:
-    """The least release height of `body`'s center: the normal force at the top of the loop at
-    speed s vanishes at s_c; energy from the release to the top gives the drop."""
+    """The least release height of `body`'s center above its lowest position (as derive's
+    min_release_height): the normal force at the top of the loop at speed s vanishes at s_c;
+    energy from the release to the top, 2 (R - r) above the lowest position, gives the drop."""
     s = sp.Symbol("s", positive=True)
     path = loop_radius - radius
     top = {model.q[index]: sp.pi, model.u[index]: s / path}
@@ -273,7 +283,7 @@ def release_height(model: Model, index: int, body: str, loop_radius, radius, sma
     (critical,) = [r for r in sp.solve(normal, s) if r.is_positive is not False]
     moving = next(b for b in model.bodies if b.name == body)
     kinetic = moving.kinetic_energy(model.N).xreplace({model.u[index]: critical / path}).xreplace(model.rest())
-    height = sp.cancel(kinetic / (moving.mass * model.g)) + loop_radius + path
+    height = sp.cancel(kinetic / (moving.mass * model.g)) + 2 * path
     return sp.limit(height, radius, 0, "+") if small else height
 
 
@@ -291,35 +301,9 @@ def loop_the_loop() -> Model:
     return model.equations()
 
 
-# --- scenes written here ----------------------------------------------------------------------
 
-ATWOOD = """\
-id: atwood
-title: An Atwood machine with a massive pulley
-topic: torque
-parameters:
-  m1: {meaning: mass of the left block, unit: kg, range: [0.5, 2], sig_figs: 3}
-  m2: {meaning: mass of the right block, unit: kg, range: [2.5, 5], sig_figs: 3}
-  M: {meaning: mass of the pulley, unit: kg, range: [0.5, 2], sig_figs: 3}
-  R: {meaning: radius of the pulley, unit: m, range: [0.05, 0.2], sig_figs: 2}
-  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
-scene:
-  bodies:
-    pulley: {shape: disk, mass: M, radius: R, joint: fixed_axle}
-    left: {shape: point, mass: m1, at: [-R, -4*R]}
-    right: {shape: point, mass: m2, at: [R, -4*R]}
-  cords:
-    rope: [left, {over: pulley}, right]
-  loads:
-    - gravity: g
-ask:
-  a: {meaning: acceleration of the right block, of: right.acceleration.y, unit: m/s^2}
-  T1: {meaning: tension on the left, of: rope.tension_1, unit: N}
-  T2: {meaning: tension on the right, of: rope.tension_2, unit: N}
-question: |
-  Two blocks hang from a cord over a uniform disk on a fixed axle.
-"""
 
+# --- scenes of derive/bench_scenes ---------------------------------------------------------------
 
 def atwood() -> Model:
     m1, m2, M, R, g = _symbols("m1 m2 M R g")
@@ -339,33 +323,6 @@ def atwood() -> Model:
     return model.equations()
 
 
-CART_PENDULUM = """\
-id: cart_pendulum
-title: A rod hinged to a cart on a rail
-topic: torque
-parameters:
-  m1: {meaning: mass of the cart, unit: kg, range: [1, 5], sig_figs: 3}
-  m2: {meaning: mass of the rod, unit: kg, range: [0.2, 1], sig_figs: 3}
-  L: {meaning: length of the rod, unit: m, range: [0.2, 1], sig_figs: 2}
-  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
-scene:
-  bodies:
-    cart: {shape: point, mass: m1}
-    rod: {shape: rod, mass: m2, length: L, at: [L/2, 0]}
-  joints:
-    rail: {slider: cart, angle: 0}
-    hinge: {pin: rod.start, to: cart}
-  loads:
-    - gravity: g
-ask:
-  a: {meaning: acceleration of the cart, of: cart.acceleration.x, unit: m/s^2}
-  alpha: {meaning: angular acceleration of the rod, of: rod.angular_acceleration, unit: rad/s^2}
-  N: {meaning: force of the rail on the cart, of: rail.normal, unit: N}
-question: |
-  A rod hinged to a cart on a level rail is released from rest, horizontal.
-"""
-
-
 def cart_pendulum() -> Model:
     m1, m2, L, g = _symbols("m1 m2 L g")
     model = Model(2, ["N^rail", "R_x^hinge", "R_y^hinge"], g)
@@ -381,36 +338,6 @@ def cart_pendulum() -> Model:
     model.load(hinge, reaction)
     model.load(cart, f["N^rail"] * N.y - reaction)
     return model.equations()
-
-
-TABLE_PULLEY = """\
-id: table_pulley
-title: A block on a table pulled by a hanging block over a pulley
-topic: torque
-parameters:
-  m1: {meaning: mass of the block on the table, unit: kg, range: [0.5, 3], sig_figs: 3}
-  m2: {meaning: mass of the hanging block, unit: kg, range: [0.2, 2], sig_figs: 3}
-  M: {meaning: mass of the pulley, unit: kg, range: [0.2, 1], sig_figs: 3}
-  R: {meaning: radius of the pulley, unit: m, range: [0.03, 0.1], sig_figs: 2}
-  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
-scene:
-  surfaces:
-    table: {plane: {angle: 0}}
-  bodies:
-    box: {shape: point, mass: m1, on: table, contact: sliding}
-    pulley: {shape: disk, mass: M, radius: R, at: [4*R, -R], joint: fixed_axle}
-    weight: {shape: point, mass: m2, at: [5*R, -5*R]}
-  cords:
-    rope: [box, {over: pulley}, weight]
-  loads:
-    - gravity: g
-ask:
-  a: {meaning: acceleration of the box, of: box.acceleration.x, unit: m/s^2}
-  T1: {meaning: tension of the level run, of: rope.tension_1, unit: N}
-  T2: {meaning: tension of the hanging run, of: rope.tension_2, unit: N}
-question: |
-  A box on a smooth table is tied by a cord over a pulley at the table's edge to a hanging weight.
-"""
 
 
 def table_pulley() -> Model:
@@ -434,34 +361,46 @@ def table_pulley() -> Model:
     return model.equations()
 
 
-# --- chains: n pendulum links, n disks on cords -------------------------------------------------
+def yo_yo() -> Model:
+    m, R, r, g = _symbols("m R r g")
+    model = Model(1, ["T_string"], g)
+    N, (q,), (u,), a, f = model.N, model.q, model.u, model.aux, model.forces
+    yoyo = model.frame("yoyo", q, u)
+    center = model.point("C", (-r * u + a["T_string"]) * N.y)  # the cord's tangent point stays put
+    model.rigid("yoyo", center, yoyo, m, m * R**2 / 2)
+    model.load(model.on(center, "axle", r * N.x, yoyo), f["T_string"] * N.y)
+    return model.equations()
 
-def _parameters(lines: list[str], specs) -> None:
-    for name, meaning, unit, low, high in specs:
-        lines.append(f"  {name}: {{meaning: {meaning}, unit: {unit}, range: [{low}, {high}], sig_figs: 3}}")
 
+def spring_pendulum() -> Model:
+    m, L, k, H, L0, g = _symbols("m L k H L0 g")
+    model = Model(1, ["R_x^hinge", "R_y^hinge"], g)
+    N, (q,), (u,), a, f = model.N, model.q, model.u, model.aux, model.forces
+    rod = model.frame("rod", q, u)
+    hinge = model.point("P", a["R_x^hinge"] * N.x + a["R_y^hinge"] * N.y)
+    model.rigid("rod", model.on(hinge, "C", L / 2 * rod.x, rod), rod, m, m * L**2 / 12)
+    end = model.on(hinge, "E", L * rod.x, rod)
+    stretch = (L * N.x + H * N.y) - end.pos_from(hinge)  # from the rod's end to the spring's top
+    model.load(end, k * (stretch.magnitude() - L0) * stretch.normalize())
+    model.load(hinge, f["R_x^hinge"] * N.x + f["R_y^hinge"] * N.y)
+    return model.equations()
+
+
+# --- the n-link pendulum: sympy's joints ---------------------------------------------------------
 
 def _names(prefix: str, n: int, distinct: bool) -> list[str]:
     return [f"{prefix}{k}" if distinct else prefix for k in range(1, n + 1)]
 
 
-def pendulum_chain_file(n: int, distinct: bool = False, angles=None) -> str:
-    """n rods pinned end to end, the first to the ground at its start; link k at angle `angles`[k]
-    (default: all level), released from rest."""
-    masses, lengths = _names("m", n, distinct), _names("L", n, distinct)
-    angles = angles or [0] * n
-    lines = [f"id: pendulum_chain_{n}", f"title: A chain of {n} pendulum links", "topic: torque", "parameters:"]
-    _parameters(lines, dict.fromkeys([(m, "mass of a link", "kg", 0.5, 2) for m in masses]
-                                     + [(L, "length of a link", "m", 0.2, 1) for L in lengths]))
-    lines += ["  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}", "scene:", "  bodies:"]
-    start = sp.Matrix([0, 0])
-    for k in range(n):
-        L, angle = sp.Symbol(lengths[k]), sp.sympify(angles[k])
-        along = sp.Matrix([sp.cos(angle), sp.sin(angle)])
-        center = start + L / 2 * along
-        lines.append(f"    link{k + 1}: {{shape: rod, mass: {masses[k]}, length: {L}, "
-                     f"at: [{sp.sstr(center[0])}, {sp.sstr(center[1])}], angle: {sp.sstr(angle)}}}")
-        start = start + L * along
+def pendulum_chain_file(n: int) -> str:
+    """derive's problem file of n equal rods pinned end to end, the first to the ground at its
+    start, all level, released from rest."""
+    lines = [f"id: pendulum_chain_{n}", f"title: A chain of {n} pendulum links", "topic: torque", "parameters:",
+             "  m: {meaning: mass of a link, unit: kg, range: [0.5, 2], sig_figs: 3}",
+             "  L: {meaning: length of a link, unit: m, range: [0.2, 1], sig_figs: 3}",
+             "  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}", "scene:", "  bodies:"]
+    lines += [f"    link{k}: {{shape: rod, mass: m, length: L, at: [{2 * k - 1}*L/2, 0], angle: 0}}"
+              for k in range(1, n + 1)]
     lines += ["  joints:", "    pin1: {pin: link1.start}"]
     lines += [f"    pin{k}: {{pin: link{k}.start, to: link{k - 1}.end}}" for k in range(2, n + 1)]
     lines += ["  loads:", "    - gravity: g", "ask:",
@@ -473,119 +412,63 @@ def pendulum_chain_file(n: int, distinct: bool = False, angles=None) -> str:
 
 
 def pendulum_chain(n: int, distinct: bool = False, angles=None) -> Model:
-    """The same chain: the links' turns q_k; each pin's reaction by auxiliary speeds of the
-    link's start."""
+    """The KanesMethod n-link pendulum of rods (sympy's PinJoint and System): link k at the
+    absolute angle `angles`[k] (default: all level), its turn from there the joint's coordinate.
+    Accelerations only: the joints give no pin reactions."""
     masses = [sp.Symbol(s, positive=True) for s in _names("m", n, distinct)]
     lengths = [sp.Symbol(s, positive=True) for s in _names("L", n, distinct)]
-    g = sp.Symbol("g", positive=True)
-    angles = angles or [0] * n
-    model = Model(n, [f"R_{c}^pin{k}" for k in range(1, n + 1) for c in "xy"], g)
-    N, a, f = model.N, model.aux, model.forces
-    end = model.origin
-    for k in range(1, n + 1):
-        link = model.frame(f"link{k}", model.q[k - 1], model.u[k - 1], sp.sympify(angles[k - 1]))
-        start = end.locatenew(f"P{k}", 0)
-        start.set_vel(N, end.vel(N) + a[f"R_x^pin{k}"] * N.x + a[f"R_y^pin{k}"] * N.y)
-        L, m = lengths[k - 1], masses[k - 1]
-        model.rigid(f"link{k}", model.on(start, f"C{k}", L / 2 * link.x, link), link, m, m * L**2 / 12)
-        reaction = f[f"R_x^pin{k}"] * N.x + f[f"R_y^pin{k}"] * N.y
-        model.load(start, reaction)
-        if k > 1:
-            model.load(end, -reaction)
-        end = model.on(start, f"E{k}", L * link.x, link)
-    return model.equations()
-
-
-def cascade_file(n: int, distinct: bool = False) -> str:
-    """n disks: the first on a fixed axle, each next one hanging from a cord wound on the right of
-    the one above and on its own left (a stack of yo-yos), released from rest."""
-    masses, radii = _names("M", n, distinct), _names("R", n, distinct)
-    lines = [f"id: disk_cascade_{n}", f"title: A cascade of {n} disks on cords", "topic: torque", "parameters:"]
-    _parameters(lines, dict.fromkeys([(m, "mass of a disk", "kg", 0.5, 2) for m in masses]
-                                     + [(r, "radius of a disk", "m", 0.05, 0.2) for r in radii]))
-    lines += ["  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}", "scene:", "  bodies:"]
-    x = y = sp.Integer(0)
-    for k in range(n):
-        if k:
-            x, y = x + sp.Symbol(radii[k - 1]) + sp.Symbol(radii[k]), y - 4 * sp.Symbol(radii[0])
-        axle = ", joint: fixed_axle" if k == 0 else ""
-        lines.append(f"    disk{k + 1}: {{shape: disk, mass: {masses[k]}, radius: {radii[k]}, "
-                     f"at: [{sp.sstr(x)}, {sp.sstr(y)}]{axle}}}")
-    if n > 1:
-        lines.append("  cords:")
-        lines += [f"    cord{k}: [{{wound: disk{k - 1}, side: right}}, {{wound: disk{k}, side: left}}]"
-                  for k in range(2, n + 1)]
-    lines += ["  loads:", "    - gravity: g", "ask:",
-              f"  a: {{meaning: acceleration of the lowest disk, of: disk{n}.acceleration.y, unit: m/s^2}}",
-              "  F: {meaning: force of the axle on the top disk, of: axle.reaction.y, unit: N}",
-              "question: |", f"  A cascade of {n} disks is released from rest."]
-    return "\n".join(lines) + "\n"
-
-
-def cascade(n: int, distinct: bool = False) -> Model:
-    """The same cascade: the disks' turns q_k; disk k's center moves along y with the rim of the
-    disk above plus R_k u_k; the axle's reaction and each cord's tension by auxiliary speeds."""
-    masses = [sp.Symbol(s, positive=True) for s in _names("M", n, distinct)]
-    radii = [sp.Symbol(s, positive=True) for s in _names("R", n, distinct)]
-    g = sp.Symbol("g", positive=True)
-    model = Model(n, ["R_x^axle", "R_y^axle", *(f"T_cord{k}" for k in range(2, n + 1))], g)
-    N, a, f, q, u = model.N, model.aux, model.forces, model.q, model.u
-    center = model.point("C1", a["R_x^axle"] * N.x + a["R_y^axle"] * N.y)
-    model.load(center, f["R_x^axle"] * N.x + f["R_y^axle"] * N.y)
-    frame = None
-    for k in range(1, n + 1):
-        M, R = masses[k - 1], radii[k - 1]
-        if k > 1:
-            above = model.on(center, f"right{k - 1}", radii[k - 2] * N.x, frame)
-            center = model.point(f"C{k}", (above.vel(N).dot(N.y) + R * u[k - 1] + a[f"T_cord{k}"]) * N.y)
-        frame = model.frame(f"disk{k}", q[k - 1], u[k - 1])
-        model.rigid(f"disk{k}", center, frame, M, M * R**2 / 2)
-        if k > 1:
-            left = model.on(center, f"left{k}", -R * N.x, frame)
-            model.load(left, f[f"T_cord{k}"] * N.y)
-            model.load(above, -f[f"T_cord{k}"] * N.y)
-    return model.equations()
+    angles = [sp.sympify(a) for a in (angles or [0] * n)]
+    ground = RigidBody("ground")
+    system = System.from_newtonian(ground)
+    model = Model(0, [], sp.Symbol("g", positive=True))
+    model.N, model.origin = ground.frame, ground.masscenter
+    parent, joint_at, previous = ground, ground.masscenter, 0
+    for k, (m, L, angle) in enumerate(zip(masses, lengths, angles), start=1):
+        link = RigidBody(f"link{k}", mass=m)
+        link.inertia = (inertia(link.frame, 0, 0, m * L**2 / 12), link.masscenter)
+        turned = parent.frame.orientnew(f"at{k}", "Axis", (angle - previous, parent.frame.z))
+        system.add_joints(PinJoint(f"pin{k}", parent, link, dynamicsymbols(f"q{k}"), dynamicsymbols(f"u{k}"),
+                                   parent_point=joint_at, child_point=-L / 2 * link.frame.x,
+                                   parent_interframe=turned, joint_axis=turned.z))
+        model.centers[link.name] = (link.masscenter, link.frame)
+        parent, joint_at, previous = link, L / 2 * link.frame.x, angle
+    system.apply_uniform_gravity(-model.g * model.N.y)
+    system.form_eoms()
+    model.q, model.u, model.kane = list(system.q), list(system.u), system.eom_method
+    return model
 
 
 # --- the table --------------------------------------------------------------------------------
 
 @dataclass(frozen=True)
 class Anchor:
-    """A benchmark scene: derive's problem (a library id, or a problem file's text) and the same
-    scene by KanesMethod (`build` forms the equations; `extra` computes what else the problem
-    asks from the built model)."""
+    """A benchmark scene: the same physics as derive's problem of the same id (a file of
+    derive/bench_scenes, or a library id) by KanesMethod. `build` forms the model and its
+    equations; `answers` computes what else the problem asks, by the problem's ask names."""
 
     id: str
-    source: str | Callable[[], str]
     build: Callable[[], Model]
-    extra: Callable[[Model], dict] | None = None
+    answers: Callable[[Model], dict[str, sp.Expr]] | None = None
 
-    def text(self) -> str | None:
-        """The problem file's text for a scene written here; None for a library id."""
-        source = self.source() if callable(self.source) else self.source
-        return source if "\n" in source else None
+    def reference(self) -> str:
+        """What `derive.problem.load` reads for this scene."""
+        path = SCENE_FILES / f"{self.id}.yaml"
+        return str(path) if path.exists() else self.id
 
-    def reference(self, folder) -> str:
-        """What `derive.problem.load` reads: the library id, or the scene's file written to `folder`."""
-        text = self.text()
-        if text is None:
-            return self.source
-        path = Path(folder) / f"{self.id}.yaml"
-        path.write_text(text)
-        return str(path)
-
-    def run(self) -> dict:
+    def run(self) -> tuple[Model, dict[str, sp.Expr]]:
         """What is timed: the model, Kane's equations, their solution at the reference
-        configuration at rest, and the extra answers."""
+        configuration at rest, and the answers asked beyond it."""
         model = self.build()
-        result = model.solve()
-        if self.extra is not None:
-            result.update(self.extra(model))
-        return result
+        model.solve()
+        return model, self.answers(model) if self.answers else {}
 
 
-def _omega(model: Model) -> dict:
-    return {"omega^2": model.omega_squared()}
+def _frequency(model: Model) -> dict:
+    return {"omega": sp.sqrt(model.omega_squared())}
+
+
+def _growth_rate(model: Model) -> dict:
+    return {"a": sp.sqrt(-model.omega_squared())}
 
 
 def _loop_heights(model: Model) -> dict:
@@ -599,31 +482,69 @@ def _ball_height(model: Model) -> dict:
     return {"h_roll": release_height(model, 0, "ball", R, r)}
 
 
-_DOUBLE = dict(n=2, distinct=True, angles=[0, -sp.pi / 2])
-
 SCENES = {a.id: a for a in (
-    Anchor("string_wrapped_disk", "string_wrapped_disk", string_wrapped_disk),
-    Anchor("tugged_spool", "tugged_spool", tugged_spool),
-    Anchor("compound_pendulum", "compound_pendulum", compound_pendulum, _omega),
-    Anchor("tightrope_walker", "tightrope_walker", tightrope_walker, _omega),
-    Anchor("rolling_incline", "rolling_incline", rolling_incline),
-    Anchor("incline_race", "incline_race", incline_race),
-    Anchor("loop_the_loop", "loop_the_loop", loop_the_loop, _loop_heights),
-    Anchor("loop_the_loop_ball", "loop_the_loop_ball", loop_the_loop_ball, _ball_height),
-    Anchor("atwood", ATWOOD, atwood),
-    Anchor("double_pendulum", lambda: pendulum_chain_file(**_DOUBLE).replace("pendulum_chain_2", "double_pendulum"),
-           lambda: pendulum_chain(**_DOUBLE)),
-    Anchor("yo_yo", lambda: cascade_file(2, distinct=True).replace("disk_cascade_2", "yo_yo"),
-           lambda: cascade(2, distinct=True)),
-    Anchor("cart_pendulum", CART_PENDULUM, cart_pendulum),
-    Anchor("table_pulley", TABLE_PULLEY, table_pulley),
+    Anchor("string_wrapped_disk", string_wrapped_disk),
+    Anchor("tugged_spool", tugged_spool),
+    Anchor("compound_pendulum", compound_pendulum, _frequency),
+    Anchor("tightrope_walker", tightrope_walker, _growth_rate),
+    Anchor("rolling_incline", rolling_incline),
+    Anchor("incline_race", incline_race),
+    Anchor("loop_the_loop", loop_the_loop, _loop_heights),
+    Anchor("loop_the_loop_ball", loop_the_loop_ball, _ball_height),
+    Anchor("atwood", atwood),
+    Anchor("table_pulley", table_pulley),
+    Anchor("yo_yo", yo_yo),
+    Anchor("spring_pendulum", spring_pendulum),
+    Anchor("cart_pendulum", cart_pendulum),
+    Anchor("double_pendulum", lambda: pendulum_chain(2, distinct=True, angles=[0, -sp.pi / 2])),
 )}
 
-#: A shorter run (`derive bench --quick`): a scene of each kind of part.
-QUICK = ("string_wrapped_disk", "compound_pendulum", "rolling_incline", "atwood", "cart_pendulum")
+#: A shorter run (`derive bench --quick`): a pendulum, a cord over a pulley, rolling, a pin linkage.
+QUICK = ("compound_pendulum", "atwood", "rolling_incline", "cart_pendulum")
 
-#: Chains for the growth with n: (file, anchor model) by kind.
-CHAINS = {
-    "pendulum links": (pendulum_chain_file, pendulum_chain),
-    "disks on cords": (cascade_file, cascade),
-}
+
+# --- the same numbers on both sides ---------------------------------------------------------------
+
+def sample_point(p) -> dict[str, sp.Expr]:
+    """The values, by name, at which both engines' expressions are compared: a problem's
+    parameters at their value or the middle of their range."""
+    return {n: q.value if q.value is not None else (q.range[0] + q.range[1]) / 2 for n, q in p.parameters.items()}
+
+
+def numbers(expressions: dict[str, sp.Expr], point: dict[str, sp.Expr]) -> dict[str, list[float]]:
+    """Each expression at `point` as [real, imaginary]; a symbol `point` lacks (a size the problem
+    leaves open) at a value fixed by its name, the same on both sides."""
+    def value(name: str) -> sp.Expr:
+        return point[name] if name in point else sp.Rational(3 + sum(map(ord, name)) % 7, 10)
+
+    result = {}
+    for key, expression in expressions.items():
+        number = complex(sp.N(expression.xreplace({s: value(str(s)) for s in expression.free_symbols}), 20))
+        result[key] = [number.real, number.imag]
+    return result
+
+
+def disagreements(derived: dict[str, list[float]], anchored: dict[str, list[float]],
+                  tolerance: float = 1e-9) -> list[str]:
+    """What the anchor computes that derive lacks or gives differently (relative `tolerance`)."""
+    wrong = []
+    for key, theirs in anchored.items():
+        ours = derived.get(key)
+        if ours is None:
+            wrong.append(f"{key}: not in derive's solution")
+        elif abs(complex(*ours) - complex(*theirs)) > tolerance * (1 + abs(complex(*theirs))):
+            wrong.append(f"{key}: derive {ours[0]:.10g}, anchor {theirs[0]:.10g}")
+    return wrong
+
+
+def anchor_numbers(model: Model, answers: dict[str, sp.Expr], point: dict[str, sp.Expr]) -> dict[str, list[float]]:
+    """The anchor's accelerations, constraint forces and answers, in derive's names, at `point`."""
+    return numbers({**model.in_derive_terms(), **answers}, point)
+
+
+def derive_numbers(solution, answers, point: dict[str, sp.Expr]) -> dict[str, list[float]]:
+    """derive's accelerations and constraint forces (Lagrange's route, at the reference
+    configuration at rest) and its answers named in `answers`, at `point`."""
+    rest = solution.coordinates.at_rest_in_reference()
+    raw = solution.derivations["lagrange"].at(rest).raw
+    return numbers({**{str(k): v for k, v in raw.items()}, **{a: solution.expression(a) for a in answers}}, point)
