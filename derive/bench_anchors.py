@@ -519,7 +519,10 @@ def numbers(expressions: dict[str, sp.Expr], point: dict[str, sp.Expr]) -> dict[
 
     result = {}
     for key, expression in expressions.items():
-        number = complex(sp.N(expression.xreplace({s: value(str(s)) for s in expression.free_symbols}), 20))
+        try:
+            number = complex(sp.N(expression.xreplace({s: value(str(s)) for s in expression.free_symbols}), 20))
+        except TypeError:  # not a number there (an answer that is not a scalar): not compared
+            continue
         result[key] = [number.real, number.imag]
     return result
 
@@ -542,9 +545,9 @@ def anchor_numbers(model: Model, answers: dict[str, sp.Expr], point: dict[str, s
     return numbers({**model.in_derive_terms(), **answers}, point)
 
 
-def derive_numbers(solution, answers, point: dict[str, sp.Expr]) -> dict[str, list[float]]:
+def derive_numbers(solution, point: dict[str, sp.Expr]) -> dict[str, list[float]]:
     """derive's accelerations and constraint forces (Lagrange's route, at the reference
-    configuration at rest) and its answers named in `answers`, at `point`."""
+    configuration at rest) and every answer, at `point`."""
     rest = solution.coordinates.at_rest_in_reference()
     raw = solution.derivations["lagrange"].at(rest).raw
-    return numbers({**{str(k): v for k, v in raw.items()}, **{a: solution.expression(a) for a in answers}}, point)
+    return numbers({**{str(k): v for k, v in raw.items()}, **solution.expressions}, point)

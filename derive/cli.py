@@ -277,25 +277,70 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
 
 
 @main.command()
-@click.option("--quick", is_flag=True, help="A shorter run: fewer problems, samples, variants, scenes and chain lengths.")
+@click.option("--quick", is_flag=True,
+              help="A shorter run: fewer problems, samples and variants; 4 scenes and chains up to n = 3.")
 @click.option("--only", type=click.Choice(["startup", "derivations", "backends", "answer_key", "sheet",
                                            "mechanics_alone", "work_precision", "engines"]),
-              default=None, help="Run one section (engines: derive against KanesMethod, scenes and chains).")
+              default=None, help="Run one section (engines: derive against sympy.physics.mechanics).")
+@click.option("--json", "as_json", is_flag=True,
+              help="Print the engines section's figures as one JSON document on stdout (the other "
+                   "sections' lines and the progress go to stderr).")
+@click.option("--scenes", default=None, metavar="LIST",
+              help="Engines: these scenes only (comma-separated ids of derive.bench_anchors.SCENES).")
+@click.option("--max-n", type=click.IntRange(1, 12), default=None,
+              help="Engines: the n-link pendulum up to this n (default 6; 3 with --quick).")
+@click.option("--repeats", type=click.IntRange(1, 20), default=3, show_default=True,
+              help="Engines: runs of a job under 20 s, whose median is shown.")
+@click.option("--limit", type=click.FloatRange(1), default=None, metavar="SECONDS",
+              help="Engines: CPU seconds a run may take before it is stopped and shown as "
+                   "'over limit' (default 300; 60 with --quick).")
 @reports_errors
-def bench(quick: bool, only: str | None) -> None:
-    """Measure speed against accuracy and print the figures.
+def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_n: int | None, repeats: int,
+          limit: float | None) -> None:
+    """Measure speed against accuracy and print the figures (never pass/fail).
 
     CLI start-up; derivation per problem, cold and cached; time per answer and the worst
     relative error of each evaluation backend (float, mpmath, auto, exact) against a
     50-digit reference, at typical and extreme parameters; a 30-problem x 300-variant
     answer key; sympy.physics.mechanics alone on the same systems; a work-precision table
-    of scipy's integrators and a symplectic one; derive's cold time for both routes with the
-    cross-check next to sympy.physics.mechanics' KanesMethod on the same scenes, and along
-    chains of 1 to 6 bodies. Figures, not pass/fail.
+    of scipy's integrators and a symplectic one.
+
+    \b
+    Engines (derive against sympy.physics.mechanics, in the same run):
+    - 14 scenes (pendulums, Atwood machine, cords over pulleys, rolling, loops, a yo-yo,
+      a spring, pin linkages), each a problem file derive reads and the same physics built
+      with KanesMethod (derive.bench_anchors). Both must give the same accelerations,
+      constraint forces and answers at a sample point; a scene where they differ is
+      reported, with no timing.
+    - derive's time: the problem read, Lagrange and Newton-Euler (equations formed and
+      solved), the inertia integrals, every answer and cross-check (`derive check` without
+      its simulation); the anchor's: its model, Kane's equations and their solution.
+    - The n-link pendulum (rods pinned end to end), n = 1..6: derive's Lagrange route,
+      its Newton-Euler route, its whole solve, and the KanesMethod n-link pendulum.
+    Each run is a fresh child of one worker (imports paid once, every cache empty); the
+    figures are the median wall seconds of up to --repeats runs and the rise of peak
+    resident memory (MiB). A run over --limit CPU seconds shows 'over limit'.
     """
+    import json
+
     from derive import bench as benchmarks
 
-    benchmarks.run(lambda line: click.echo(line), quick=quick, only=only)
+    options = {"repeats": repeats, "max_n": max_n, "limit": limit}
+    if scenes:
+        from derive.bench_anchors import SCENES
+
+        options["scenes"] = [s.strip() for s in scenes.split(",") if s.strip()]
+        unknown = [s for s in options["scenes"] if s not in SCENES]
+        if unknown:
+            raise click.BadParameter(f"{', '.join(unknown)} (known: {', '.join(SCENES)})", param_hint="--scenes")
+
+    def progress(line: str) -> None:
+        click.echo(line, err=True)
+
+    say = progress if as_json else click.echo
+    figures = benchmarks.run(say, quick=quick, only=only, note=progress, **options)
+    if as_json:
+        click.echo(json.dumps(figures, indent=1))
 
 
 @main.command()
