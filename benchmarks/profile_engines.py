@@ -4,9 +4,9 @@ every cross-check); each sample is charged to the innermost of derive's own func
 comprehension to the function it is in) at the line running, with the sympy call below it.
 
     .venv/bin/python benchmarks/profile_engines.py                      # the slowest scenes
-    .venv/bin/python benchmarks/profile_engines.py yo_yo "disks on cords:6" --top 8
+    .venv/bin/python benchmarks/profile_engines.py yo_yo chain:6 --top 8
 
-A scene is an id of derive.bench_anchors.SCENES or "KIND:n" for a chain (CHAINS). Each runs in
+A scene is an id of derive.bench_anchors.SCENES or "chain:n" for the n-link pendulum. Each runs in
 a fresh process (cold). Sampling costs little (unlike cProfile, which slows sympy about 2.5x).
 Figures, not a test.
 """
@@ -23,19 +23,20 @@ import threading
 import time
 from pathlib import Path
 
-SLOWEST = ["yo_yo", "incline_race", "loop_the_loop", "disks on cords:6"]
+SLOWEST = ["incline_race", "loop_the_loop", "rolling_incline", "chain:6"]
 INTERVAL = 0.002  # seconds between samples
 
 
 def reference(scene: str, folder: str) -> str:
+    """The problem file of a scene of derive.bench_anchors.SCENES, or of "chain:n", the n-link pendulum."""
     from derive import bench_anchors
 
-    if ":" in scene:
-        kind, n = scene.split(":")
-        path = Path(folder) / f"{kind.replace(' ', '_')}_{n}.yaml"
-        path.write_text(bench_anchors.CHAINS[kind][0](int(n)))
+    if scene.startswith("chain:"):
+        n = int(scene.split(":")[1])
+        path = Path(folder) / f"pendulum_chain_{n}.yaml"
+        path.write_text(bench_anchors.pendulum_chain_file(n))
         return str(path)
-    return bench_anchors.SCENES[scene].reference(folder)
+    return bench_anchors.SCENES[scene].reference()
 
 
 def _charge(frame, root: str):
