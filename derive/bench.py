@@ -558,7 +558,7 @@ def chain_table(rows: list[dict]) -> str:
     """The n-link pendulum: seconds and peak MiB of each route, and whether derive and the anchor agree."""
     from rich.table import Table
 
-    table = Table(title="The n-link pendulum (rods pinned end to end, level, from rest): median seconds (peak MiB)")
+    table = Table(title="The n-link pendulum, rods pinned end to end: median s (peak MiB)")
     table.add_column("n", justify="right")
     for heading in ROUTES.values():
         table.add_column(heading, justify="right")
