@@ -47,10 +47,6 @@ from derive import bench_anchors  # noqa: E402
 from derive.mechanics import lagrange  # noqa: E402
 from derive.mechanics.kinematics import Coordinates  # noqa: E402
 
-_LOOP_BALL_BUG = ("derive's loop_the_loop_ball h_roll is 27R/10 - r; the ball's center, from its lowest position, "
-                  "needs 2(R - r) + 7(R - r)/10 = 27(R - r)/10 (v^2 = g(R - r) at the top): a derive bug the bench reports")
-
-
 def _lagrange_at_rest(p) -> dict:
     """derive's Lagrange route in the reference configuration at rest: every acceleration and force."""
     coords = Coordinates(p.scene)
@@ -74,7 +70,7 @@ def test_each_anchor_gives_derives_accelerations_and_forces(scene):
 @pytest.mark.parametrize("scene, ask", [
     ("compound_pendulum", "omega"), ("tightrope_walker", "a"), ("loop_the_loop", "h_slide"),
     ("loop_the_loop", "h_roll"),
-    pytest.param("loop_the_loop_ball", "h_roll", marks=pytest.mark.xfail(strict=True, reason=_LOOP_BALL_BUG)),
+    ("loop_the_loop_ball", "h_roll"),  # 27(R - r)/10: derive said 27R/10 - r until the anchor found it
 ])
 def test_the_answers_an_anchor_computes_are_derives(scene, ask):
     anchor = bench_anchors.SCENES[scene]
