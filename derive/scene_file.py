@@ -436,8 +436,10 @@ def _pull(reader: Reader, index: int, spec, places: Places) -> Cord:
 
 
 def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
-    """Before anything is derived: each body on a surface touches it, and no cord pulls it
-    straight off or into its surface (a body resting on a surface does not hang from a cord)."""
+    """Before anything is derived: each body on a surface touches it, and no cord whose tension is
+    unknown pulls it straight off or into its surface (a body resting on a surface does not hang
+    from a cord: the normal force and the tension would share one balance). A cord pulled with a
+    given force may: the sign of the normal force is then checked for every variant."""
     from derive.mechanics.kinematics import Coordinates
 
     coords = Coordinates(scene)
@@ -457,6 +459,8 @@ def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
             if not isinstance(part, Cord):
                 continue
             for segment in part.segments():
+                if segment.symbol is None:  # pulled with a given force: the normal force is N = weight - pull
+                    continue
                 for r in segment.runs(coords):
                     if c.body in (r.start.body, r.end.body):
                         direction = r.direction.xreplace(rest)

@@ -392,3 +392,11 @@ def test_an_overdamped_variant_is_refused(tmp_path):
     result = run_derive("solve", str(path), "--set", "b=30", "--set", "m=1", "--set", "k=50")
     assert result.returncode == 2 and "overdamped" in result.stderr, result.stdout + result.stderr
     assert run_derive("solve", str(path), "--set", "b=5").returncode == 0
+
+
+def test_a_pull_that_lifts_a_body_off_its_surface_is_refused():
+    """Pulled straight up with more than its weight, the yo-yo leaves the floor: N = M g - F < 0."""
+    path = "tests/textbook/yoyo_pulled_up_rolls_left.yaml"
+    result = run_derive("solve", path, "--set", "F=10", "--set", "M=0.3")
+    assert result.returncode == 2 and "normal" in result.stderr, result.stdout + result.stderr
+    assert run_derive("solve", path, "--set", "F=1", "--set", "M=0.3").returncode == 0

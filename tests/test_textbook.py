@@ -31,6 +31,12 @@ def _cos(x):
 
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
+    # Halliday ch. 11 (a yo-yo pulled by its string): pulled straight up from the axle's right,
+    # I = M R^2 / 2: a = -F r R / (I + M R^2) = -2 F r / (3 M R), N = M g - F.
+    "yoyo_pulled_up_rolls_left": {
+        "a": lambda s: -2 * s.F * s.r / (3 * s.M * s.R),
+        "N": lambda s: s.M * s.g - s.F,
+    },
     # Taylor, Classical Mechanics, ch. 7: a solid ball rolling at the bottom of a bowl of radius R,
     # its center on a circle of radius R - r: omega^2 = 5 g / (7 (R - r)).
     "ball_in_bowl": {
