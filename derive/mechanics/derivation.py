@@ -201,13 +201,11 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
     if matrix.shape[0] != matrix.shape[1]:
         raise ValueError(f"the constraints leave {len(unknowns)} unknowns in {len(equations)} equations: "
                          "they are redundant or impossible")
-    augmented = matrix.row_join(rhs)
-    # Roots and functions of the coordinates (a curved track's sqrt, an atan2) as generators of
-    # the field, so that it is one of rational functions and not sympy's slow expression domain.
-    atoms = {a for a in augmented.atoms(sp.Pow) if not a.exp.is_Integer} | augmented.atoms(sp.Function)
-    generators = {atom: sp.Dummy(real=True) for atom in atoms}
-    back = {d: atom for atom, d in generators.items()}
-    domain_matrix = DomainMatrix.from_Matrix(augmented.xreplace(generators)).to_sparse()
+    generated, back = _as_rational(matrix.row_join(rhs))
+    # Through the dense form: DomainMatrix.from_Matrix keeps an entry that is zero only in the
+    # field (a vertical cord's x-component, once its roots are simplified) as a stored sparse
+    # entry, which rref then takes for a pivot; to_dense().to_sparse() drops it.
+    domain_matrix = DomainMatrix.from_Matrix(generated).to_dense().to_sparse()
     if not domain_matrix.domain.is_Field:
         domain_matrix = domain_matrix.to_field()
     reduced, pivots = domain_matrix.rref()
@@ -220,3 +218,33 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
     values = {unknown: reduced.domain.to_sympy(reduced.rep.getitem(row, column)).xreplace(back)
               for row, unknown in enumerate(unknowns)}
     return Solved(values)
+
+
+def _as_rational(matrix: sp.Matrix) -> tuple[sp.Matrix, dict]:
+    """The matrix as rational functions of new symbols (generators), and the map back.
+
+    Roots and functions of the coordinates (a curved track's sqrt, an atan2) become generators,
+    so that the field is one of rational functions and not sympy's slow expression domain. A
+    root's base is put over one denominator and factored first, and b**(p/q) is written
+    b**k * g**r with g = b**(1/q), 0 <= r < q: one generator per base, so that a cord's
+    (R**2 + h**2)**(3/2) and sqrt(1 - R**2/(R**2 + h**2)) = h/sqrt(R**2 + h**2) cancel where
+    they meet (as independent generators they made a stepped pulley's system too slow to solve).
+    """
+    roots = {a: sp.factor(sp.together(a.base)) ** a.exp for a in matrix.atoms(sp.Pow)
+             if a.exp.is_Rational and not a.exp.is_Integer and not a.base.has(sp.Function)}
+    matrix = matrix.xreplace(roots)
+    generators, replace = {}, {}
+    for atom in matrix.atoms(sp.Pow):
+        if atom.exp.is_Integer:
+            continue
+        if atom.exp.is_Rational and not atom.base.has(sp.Function):
+            q = atom.exp.q
+            g = generators.setdefault((atom.base, q), sp.Dummy(positive=True))
+            whole, rest = divmod(atom.exp.p, q)
+            replace[atom] = atom.base ** whole * g ** rest
+        else:
+            replace[atom] = generators.setdefault(atom, sp.Dummy(real=True))
+    for atom in matrix.atoms(sp.Function):
+        replace[atom] = generators.setdefault(atom, sp.Dummy(real=True))
+    back = {g: (key[0] ** sp.Rational(1, key[1]) if isinstance(key, tuple) else key) for key, g in generators.items()}
+    return matrix.xreplace(replace), back
