@@ -417,7 +417,7 @@ def pendulum_chain(n: int, distinct: bool = False, angles=None) -> Model:
     Accelerations only: the joints give no pin reactions."""
     masses = [sp.Symbol(s, positive=True) for s in _names("m", n, distinct)]
     lengths = [sp.Symbol(s, positive=True) for s in _names("L", n, distinct)]
-    angles = [sp.sympify(a) for a in (angles or [0] * n)]
+    angles = [sp.sympify(a, strict=True) for a in (angles or [0] * n)]  # safe: numbers from the bench's own code; strict refuses text
     ground = RigidBody("ground")
     system = System.from_newtonian(ground)
     model = Model(0, [], sp.Symbol("g", positive=True))

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive import inertia
-from derive.parts.places import body_points, extent, sample
+from derive.parts.places import body_points, extent, sample, turned
 
 ROUND = ("ring", "disk", "annulus", "cylinder", "cylindrical_shell", "sphere", "spherical_shell",
          "thick_spherical_shell", "cone")
@@ -54,9 +54,8 @@ class CompositeParts:
         cx, cy = self.center
         result = {"center": (sp.Integer(0), sp.Integer(0)), "origin": (-cx, -cy)}
         for name, (shape, _, sizes, (x, y), angle) in self.parts.items():
-            turn = sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
             for point, offset in body_points(shape, sizes).items():
-                px, py = sp.Matrix([x - cx, y - cy]) + turn * sp.Matrix(offset)
+                px, py = sp.Matrix([x - cx, y - cy]) + turned(angle, offset)
                 result[name if point == "center" else f"{name}.{point}"] = (px, py)
         return result
 

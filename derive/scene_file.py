@@ -19,7 +19,7 @@ from derive.parts import cord, damper, force, gravity, pin, slider, spring, torq
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
 from derive.parts.pin import Pin
-from derive.parts.places import Places
+from derive.parts.places import Places, turned
 from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
@@ -112,8 +112,7 @@ def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body,
     origin = (_vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec
               else (sp.Integer(0), sp.Integer(0)))
     angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
-    turn = sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
-    at = tuple(sp.Matrix(origin) + turn * sp.Matrix(made.center))
+    at = tuple(sp.Matrix(origin) + turned(angle, made.center))
     radius = made.radius(reader)
     body = Body(name, "composite", made.mass, {} if radius is None else {"radius": radius}, made.inertia,
                 at=at, angle=angle, composite=made)

@@ -119,7 +119,7 @@ class _Scene:
         self.ground: set[tuple[float, float]] = set()  # those of them that are the ground's
         self.boxes: list[tuple[float, float, float, float]] = []  # the labels placed so far
         self.origin, self.scale = (0.0, 0.0), 1.0
-        self.values = {symbol: sp.sympify(v) for symbol, v in fig.values.items()}
+        self.values = {symbol: sp.sympify(v, strict=True) for symbol, v in fig.values.items()}  # safe: numbers computed from the parameters; strict refuses text
 
     # numbers
     def value(self, expression) -> float:

@@ -63,6 +63,11 @@ def sample(reader, expr: sp.Expr) -> float:
     return float(expr.xreplace({s: 1 for s in expr.free_symbols}))
 
 
+def turned(angle: sp.Expr, offset) -> sp.Matrix:
+    """An offset (x, y) turned counter-clockwise by an angle."""
+    return sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]]) * sp.Matrix(offset)
+
+
 def points_of(body) -> dict[str, tuple[sp.Expr, sp.Expr]]:
     """A body's named points (a composite's include its parts' points)."""
     return body.composite.points() if body.composite is not None else body_points(body.shape, body.sizes)
@@ -149,9 +154,7 @@ class Places:
         if body is None:
             return sp.Matrix(offset)
         rigid = self.bodies[body]
-        turn = rigid.angle
-        rotation = sp.Matrix([[sp.cos(turn), -sp.sin(turn)], [sp.sin(turn), sp.cos(turn)]])
-        return sp.Matrix(rigid.at) + rotation * sp.Matrix(offset)
+        return sp.Matrix(rigid.at) + turned(rigid.angle, offset)
 
     def on_body(self, body: str, offset, field: str) -> None:
         """Refuse a point that lies outside its body (a pin's point, a winding's radius)."""
