@@ -119,8 +119,10 @@ class Reader:
     def fail(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
 
-    def mapping(self, value, field: str, required=(), optional=(), free: bool = False) -> dict:
-        """A mapping with the given keys; `free` allows any keys (names of parameters, bodies, ...)."""
+    def mapping(self, value, field: str, required=(), optional=(), free: bool = False, points=()) -> dict:
+        """A mapping with the given keys; `free` allows any keys (names of parameters, bodies, ...);
+        `points`: keys whose values are points (`BODY.POINT`, `{BODY: [x, y]}`, `[x, y]`), which
+        `derive.parts.places` reads, rather than names."""
         if not isinstance(value, dict):
             raise self.fail(field, f"expected a mapping, got {type(value).__name__}")
         unknown = [] if free else [k for k in value if k not in required and k not in optional]
@@ -130,7 +132,7 @@ class Reader:
         for key in required:
             if key not in value:
                 raise self.fail(f"{field}.{key}" if field else key, "missing")
-        for key in () if free else NAME_KEYS.intersection(value):  # looked up in tables: no lists
+        for key in () if free else NAME_KEYS.difference(points).intersection(value):  # looked up in tables
             if not isinstance(value[key], str):
                 raise self.fail(f"{field}.{key}" if field else key, f"expected a name, got {type(value[key]).__name__}")
         return value

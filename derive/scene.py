@@ -286,7 +286,10 @@ class Scene:
         return Scene(bodies, constraints, self.gravity, self.surfaces, loads)
 
     def contact_of(self, body: str) -> Contact | None:
-        return next((c for c in self.constraints if isinstance(c, Contact) and c.body == body), None)
+        """The contact of a body resting on a surface by its rim or as a point mass (`body` names the
+        body), or the named contact of a body touching at a material point (`body` names the contact)."""
+        return next((c for c in self.constraints if isinstance(c, Contact)
+                     and (c.body == body and c.point is None or c.point is not None and c.name == body)), None)
 
 
 #: Quantities that come out of the equations of motion (both routes).
@@ -318,6 +321,9 @@ class Quantity:
     detail: str | None
 
 
+
+#: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
+RESERVED_NAMES = ("top", "spinning_wheel", "system", "event", "orbit", "oscillation", "small_oscillation", "ground")
 
 #: What a body on a surface can be asked, besides what every body can.
 CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
@@ -432,11 +438,14 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         raise ValueError(f"a body has {known}; not {rest!r}")
     names = {c.name: c for c in scene.constraints}
     if head in names:
-        allowed = tuple(names[head].unknowns())
-        if isinstance(names[head], Contact) and names[head].has_friction and "friction" not in allowed:
+        part = names[head]
+        allowed = tuple(part.unknowns())
+        if isinstance(part, Contact) and part.has_friction and "friction" not in allowed:
             allowed += ("friction",)
+        if isinstance(part, Contact) and part.point is not None and "friction" in allowed:
+            allowed += ("min_friction_coefficient",)
         if rest not in allowed:
             raise ValueError(f"{head} has {', '.join(allowed)}; not {rest!r}")
-        return Quantity("force", head, rest)
+        return Quantity("contact" if rest == "min_friction_coefficient" else "force", head, rest)
     known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
     raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})")

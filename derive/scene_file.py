@@ -15,7 +15,7 @@ import sympy as sp
 
 from derive import composite, inertia, units
 from derive.errors import EngineLimit, InputError
-from derive.parts import cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
+from derive.parts import contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
 from derive.parts.pin import Pin
@@ -23,11 +23,11 @@ from derive.parts.places import Places, turned
 from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (SHAPE_SIZES, TIME, Body, Bounce, InternalTurn, Motion, Orbit, Rotation, Scene, Skid,
-                          SpinningWheel, StandingWave, Stick, Top)
+from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Bounce, InternalTurn, Motion, Orbit,
+                          Rotation, Scene, Skid, SpinningWheel, StandingWave, Stick, Top)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
-JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read}
+JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "touches": contact.read}
 LOADS = {"gravity": gravity.read, "force": force.read, "torque": torque.read, "spring": spring.read,
          "torsional_spring": torsional_spring.read, "damper": damper.read}
 #: A body's keys that place it: its center of mass in the reference configuration, and its angle.
@@ -272,13 +272,8 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
         raise reader.fail(f"{field}.contact", "expected rolling or sliding")
     if kind == "rolling" and "radius" not in body.sizes:
         raise reader.fail(f"{field}.contact", f"a {body.shape} has no radius to roll on")
-    static = kinetic = None
+    static, kinetic = contact.coefficients(reader, spec, field)
     if "friction" in spec:
-        friction = reader.mapping(spec["friction"], f"{field}.friction", optional=("static", "kinetic"))
-        if not friction:
-            raise reader.fail(f"{field}.friction", "give static: mu_s, kinetic: mu_k or both")
-        static, kinetic = (reader.positive(friction[k], f"{field}.friction.{k}", "1", "a coefficient of friction")
-                           if k in friction else None for k in ("static", "kinetic"))
         if kind == "rolling" and static is None:
             raise reader.fail(f"{field}.friction", "a body rolls as long as static friction holds it: give static: "
                                                    "mu_s (and kinetic: mu_k for when it slips)")
@@ -287,17 +282,27 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
 
 def _surfaces(reader: Reader, raw) -> dict:
     """`plane: {angle, through, height}` (`incline` is the same), `circle: {radius, center, side}`
-    (`loop: {radius}` is a circle ridden inside)."""
+    (`loop: {radius}` is a circle ridden inside), `wall: {facing: left|right, through}` (a vertical
+    plane; bodies touch it from the side it faces)."""
     raw = reader.mapping(raw or {}, "scene.surfaces", free=True)
     result = {}
     for name, spec in raw.items():
         field = f"scene.surfaces.{name}"
         reader.name(name, field, "a surface name")
-        spec = reader.mapping(spec, field, optional=("plane", "incline", "circle", "loop"))
+        spec = reader.mapping(spec, field, optional=("plane", "incline", "circle", "loop", "wall"))
         if len(spec) != 1:
-            raise reader.fail(field, "expected one surface kind (plane or incline, circle or loop)")
+            raise reader.fail(field, "expected one surface kind (plane or incline, circle or loop, wall)")
         (kind, details), = spec.items()
         where = f"{field}.{kind}"
+        if kind == "wall":
+            details = reader.mapping(details, where, required=("facing",), optional=("through",))
+            if details["facing"] not in ("left", "right"):
+                raise reader.fail(f"{where}.facing", "left or right (the side bodies touch it from)")
+            through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
+                if "through" in details else (sp.Integer(0), sp.Integer(0))
+            # A vertical plane: its normal (sin angle, cos angle) points to the side it faces.
+            result[name] = Plane(name, sp.pi / 2 if details["facing"] == "right" else -sp.pi / 2, None, through)
+            continue
         if kind in ("circle", "loop"):
             details = reader.mapping(details, where, required=("radius",),
                                      optional=("center", "side") if kind == "circle" else ())
@@ -447,12 +452,17 @@ def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
         if not isinstance(c, Contact):
             continue
         surface, body = scene.surfaces[c.surface], scene.bodies[c.body]
-        radius = body.sizes.get("radius", sp.Integer(0))
-        off = places.sample(surface.gap(sp.Matrix(body.at), radius))
-        scale = 1 + max(abs(places.sample(v)) for v in body.at)
+        if c.point is None:
+            radius, center, field = body.sizes.get("radius", sp.Integer(0)), sp.Matrix(body.at), f"scene.bodies.{c.body}.at"
+        else:
+            radius, center, field = sp.Integer(0), places.world(c.body, c.point), f"scene.joints.{c.name}.touches"
+        off = places.sample(surface.gap(center, radius))
+        scale = 1 + max(abs(places.sample(v)) for v in center)
         if abs(off) > 1e-9 * scale:
-            raise reader.fail(f"scene.bodies.{c.body}.at", f"the {c.body} does not touch {c.surface} there (it is "
-                                                           f"{off:.4g} m {'above' if off > 0 else 'inside'} it)")
+            raise reader.fail(field, f"the {c.body} does not touch {c.surface} there (it is "
+                                     f"{off:.4g} m {'above' if off > 0 else 'inside'} it)")
+        if c.point is not None:
+            continue  # a body touching at a point has its own torque balance: a cord along the normal is no clash
         normal = surface.normal_at(coords.position(c.body), radius).xreplace(rest)
         for part in scene.constraints + scene.loads:
             if not isinstance(part, Cord):
@@ -501,7 +511,7 @@ def read_scene(reader: Reader, raw) -> Scene:
     strings = [_string(reader, i, c, bodies) for i, c in enumerate(constraints_raw)]
     hanging = {cord["hangs"][0]: cord["hangs"][1] for _, cord in strings}
     bodies = _placed(reader, bodies, bodies_raw, surfaces, hanging)
-    places = Places(reader, bodies, ground)
+    places = Places(reader, bodies, ground, surfaces)
     contacts = [c for n, spec in bodies_raw.items()
                 if (c := _contact(reader, bodies[n], spec, surfaces, f"scene.bodies.{n}")) is not None]
     # A joint given with its body is named "axle" or "pivot"; with several of a kind, "<body>_axle".
@@ -524,6 +534,10 @@ def read_scene(reader: Reader, raw) -> Scene:
     duplicate = next((n for n in names if names.count(n) > 1 or n in bodies), None)
     if duplicate:
         raise reader.fail("scene", f"the name {duplicate!r} is used twice (bodies, joints, cords and loads)")
+    reserved = next((n for n in [*bodies, *names] if n in (*RESERVED_NAMES, *SYSTEMS)), None)
+    if reserved:
+        raise reader.fail("scene", f"the name {reserved!r} is reserved for asks ({reserved}.…): name the part "
+                                   "otherwise")
     motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
     events = _events(reader, raw.get("events") or [], bodies)
     # A velocity is the state before an event, or the speed of a body rolling without slipping.

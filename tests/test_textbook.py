@@ -31,6 +31,30 @@ def _cos(x):
 
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
+    # Halliday ch. 12 (a ladder against a frictionless wall): floor normal M g, floor friction and
+    # wall push (M g/2) cot(theta), the friction toward the wall; Serway & Jewett Example 12.3: it
+    # stands while mu_s >= cot(theta)/2.
+    "ladder_statics": {
+        "N": lambda s: s.M * s.g,
+        "f": lambda s: -s.M * s.g / (2 * sp.tan(s.theta)),
+        "P": lambda s: s.M * s.g / (2 * sp.tan(s.theta)),
+        "mu_min": lambda s: 1 / (2 * sp.tan(s.theta)),
+    },
+    # Halliday Sample Problem 12.02: F_wall = g a (M/2 + m/3)/h with a = sqrt(L^2 - h^2); the
+    # floor pushes (M + m) g up and F_wall toward the wall.
+    "ladder_firefighter": {
+        "Fw": lambda s: s.g * sp.sqrt(s.L**2 - s.h**2) * (s.M / 2 + s.m / 3) / s.h,
+        "Fpx": lambda s: -s.g * sp.sqrt(s.L**2 - s.h**2) * (s.M / 2 + s.m / 3) / s.h,
+        "Fpy": lambda s: (s.M + s.m) * s.g,
+    },
+    # Kleppner & Kolenkow ch. 7 (the sliding ladder, both surfaces smooth), at release: the angle
+    # above the floor has theta'' = -(3 g/(2 L)) cos(theta) (the rod's own angle is pi - theta);
+    # N_floor = M g (1 - 3 cos^2(theta)/4), N_wall = 3 M g sin(theta) cos(theta)/4.
+    "ladder_sliding": {
+        "alpha": lambda s: 3 * s.g * _cos(s.theta) / (2 * s.L),
+        "N": lambda s: s.M * s.g * (1 - 3 * _cos(s.theta) ** 2 / 4),
+        "P": lambda s: 3 * s.M * s.g * _sin(s.theta) * _cos(s.theta) / 4,
+    },
     # Halliday ch. 11 (a yo-yo pulled by its string): pulled straight up from the axle's right,
     # I = M R^2 / 2: a = -F r R / (I + M R^2) = -2 F r / (3 M R), N = M g - F.
     "yoyo_pulled_up_rolls_left": {

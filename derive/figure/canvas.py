@@ -250,15 +250,15 @@ def _label_mass(fig: _Figure, body: Body, at, direction) -> None:
 
 def regime_text(fig: _Figure, contact, skid=None) -> str:
     """What a textbook writes at a contact: "no slip" (rolling without slipping, with mu_s when
-    given), "smooth" (sliding without friction), "rough, mu_k" (kinetic friction); a body that
+    given), "smooth" (sliding without friction), "rough, mu_s, mu_k" (the coefficients the file gives); a body that
     skids before it rolls (a Skid event), "rough" with the skid's coefficient."""
     static, kinetic = fig.tex(contact.static), fig.tex(contact.kinetic)
     if skid is not None:
         words = ["rough"] + [f"${t}$" for t in (fig.tex(skid.friction),) if t]
     elif contact.rolling:
         words = ["no slip"] + [f"${t}$" for t in (static, kinetic) if t]
-    elif contact.kinetic is not None:
-        words = ["rough"] + [f"${t}$" for t in (kinetic,) if t]
+    elif contact.has_friction:  # the engine decides whether it holds: both coefficients the file gives
+        words = ["rough"] + [f"${t}$" for t in (static, kinetic) if t]
     else:
         words = ["smooth"]
     return "\\scriptsize " + ", ".join(words)

@@ -799,6 +799,9 @@ class _Layout:
         view = self.view
         drawn = self.bodies[contact.body]
         surface = self.scene.surfaces[contact.surface]
+        if contact.point is not None:  # a material point touches (a ladder's foot)
+            world = view.world(contact.body, contact.point)
+            return world, _norm(view.vector(surface.normal_at(sp.Matrix(world), sp.Integer(0))))
         radius = drawn.radius_m if drawn.kind == "round" and "radius" in drawn.body.sizes else 0.0
         normal = _norm(view.vector(surface.normal_at(sp.Matrix(drawn.world), sp.Float(radius))))
         return _add(drawn.world, normal, -radius), normal
@@ -877,7 +880,7 @@ class _Layout:
         lift = self.lift.get(plane.name, 0.0)
         a, b = (_add(view.at(_add(through, down, s)), normal, -lift) for s in (low, high))
         angle = math.degrees(math.atan2(-down[1], down[0]))
-        if angle > 0.5:
+        if 0.5 < angle < 89.5:  # an incline; a level floor, a wall or any other plane is a hatched line
             corner = (a[0], b[1])
             view.put("surfaces", f"\\draw[fill=gray!10] {_pt(a)} -- {_pt(b)} -- {_pt(corner)} -- cycle; "
                                  f"\\fill[pattern=north east lines] {_pt(_add(corner, (0, -0.15)))} rectangle {_pt(b)};")

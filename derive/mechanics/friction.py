@@ -67,7 +67,7 @@ def with_contact(scene: Scene, contact: Contact) -> Scene:
 
 def regimes(scene: Scene, contact: Contact) -> list[Regime]:
     """The regimes to derive: stuck, and, with mu_k, slipping either way."""
-    held = "rolls" if "radius" in scene.bodies[contact.body].sizes else "stays"
+    held = "rolls" if contact.point is None and "radius" in scene.bodies[contact.body].sizes else "stays"
     result = [Regime(held, with_contact(scene, stuck(contact)))]
     if contact.kinetic is not None:
         result += [Regime("slips", with_contact(scene, slipping(contact, d)), d) for d in (1, -1)]
@@ -80,8 +80,9 @@ def static_coefficient(contact: Contact) -> sp.Expr:
 
 
 def grip_margin(contact: Contact, normal: sp.Expr, friction: sp.Expr) -> sp.Expr:
-    """mu_s N - |f|: the grip holds where it is not negative."""
-    return static_coefficient(contact) * normal - sp.Abs(friction)
+    """mu_s - |f/N|: the grip holds where it is not negative (N > 0 is a condition of its own;
+    the ratio cancels what scales both, such as the mass, so fewer parameters decide it)."""
+    return static_coefficient(contact) - least_coefficient(normal, friction)
 
 
 def least_coefficient(normal: sp.Expr, friction: sp.Expr) -> sp.Expr:

@@ -1,6 +1,9 @@
-"""A body resting on a surface, in one of three regimes: rolling without slipping (a normal force
-and static friction), smooth sliding (a normal force only), or sliding with kinetic friction
-mu_k N against the slip. A round body touches a radius below its center; a point mass at it.
+"""A body resting on a surface, in one of three regimes: held without slip (a normal force and
+static friction: a round body rolls, any other stays put), smooth sliding (a normal force only),
+or sliding with kinetic friction mu_k N against the slip. A round body touches a radius below its
+center; a point mass at it; a body touching at one of its material points (a ladder's foot on the
+floor, its top on the wall: the scene's `joints:` as `{touches: BODY.POINT, on: SURFACE}`) at
+that point, so a rod may rest on two surfaces at once.
 
 Lagrange: the gap to the surface (multiplier: the normal force) and, rolling, the distance rolled
 plus R theta (multiplier: the friction along the surface); kinetic friction is power,
@@ -28,7 +31,8 @@ from derive.parts import AppliedForce, Part, Sign
 class Contact(Part):
     """`body` on the surface named `surface`: `rolling`, or sliding (smooth unless `kinetic`, the
     coefficient mu_k, with `direction` +1 or -1: the friction acts along +t or -t). `static` is
-    mu_s when the file gives it."""
+    mu_s when the file gives it. `point`: the material point that touches, in the body's frame
+    (None: the round body's rim below its center, or the point mass itself)."""
 
     name: str
     body: str
@@ -37,6 +41,7 @@ class Contact(Part):
     static: sp.Expr | None = None
     kinetic: sp.Expr | None = None
     direction: int = 0
+    point: tuple[sp.Expr, sp.Expr] | None = None
 
     def bodies(self) -> tuple[str, ...]:
         return (self.body,)
@@ -53,18 +58,25 @@ class Contact(Part):
         return "kinetic" if self.direction else "sliding"
 
     def unknowns(self) -> dict[str, sp.Symbol]:
-        result = {"normal": sp.Symbol(f"N^{self.body}", real=True)}
+        label = self.body if self.point is None else self.name  # a body may touch at two points
+        result = {"normal": sp.Symbol(f"N^{label}", real=True)}
         if self.rolling:
-            result["friction"] = sp.Symbol(f"f^{self.body}", real=True)
+            result["friction"] = sp.Symbol(f"f^{label}", real=True)
         return result
 
     def _geometry(self, coords):
+        """(surface, the center of the circle that touches it, that circle's radius): a touching
+        material point is a circle of radius 0."""
         surface = coords.scene.surfaces[self.surface]
+        if self.point is not None:
+            return surface, coords.position(self.body, self.point), sp.Integer(0)
         radius = coords.scene.bodies[self.body].sizes.get("radius", sp.Integer(0))
         return surface, coords.position(self.body), radius
 
     def offset(self, coords) -> sp.Matrix:
         """World offset from the body's center to the point touching the surface."""
+        if self.point is not None:
+            return coords.rotated(self.body, self.point)
         surface, center, radius = self._geometry(coords)
         return -radius * surface.normal_at(center, radius)
 
@@ -106,5 +118,42 @@ class Contact(Part):
 
     def signs(self) -> list[Sign]:
         normal = self.unknowns()["normal"]
-        return [Sign(normal, f"the {self.body} leaves the surface {self.surface} (its normal force would be "
+        where = "" if self.point is None else f" at {self.name}"
+        return [Sign(normal, f"the {self.body} leaves the surface {self.surface}{where} (its normal force would be "
                              "negative)")]
+
+
+def read(reader, places, name: str, spec: dict, field: str) -> Contact:
+    """`{touches: BODY.POINT, on: SURFACE}`: the body touches the surface at that material point,
+    smoothly unless `grips: true` (static friction holds the point as needed) or `friction:
+    {static: mu_s, kinetic: mu_k}` (the engine decides whether it holds).
+
+    The point must lie on its body and on the surface in the reference configuration (checked
+    with the scene's geometry)."""
+    spec = reader.mapping(spec, field, required=("touches", "on"), optional=("grips", "friction"))
+    body, point = places.point(spec["touches"], f"{field}.touches", ground=False)
+    places.on_body(body, point, f"{field}.touches")
+    if spec["on"] not in places.surfaces:
+        raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(places.surfaces) or 'none'})")
+    grips = spec.get("grips", False)
+    if not isinstance(grips, bool):
+        raise reader.fail(f"{field}.grips", "expected true or false")
+    static, kinetic = coefficients(reader, spec, field)
+    if grips and static is None and kinetic is not None:
+        raise reader.fail(f"{field}.grips", "the point grips as long as static friction holds it: give "
+                                            "friction.static: mu_s (and kinetic: mu_k for when it slips)")
+    if grips and static is not None:
+        raise reader.fail(f"{field}.grips", "with friction.static the engine decides whether the point grips: "
+                                            "leave grips out")
+    return Contact(name, body, spec["on"], grips, static, kinetic, point=point)
+
+
+def coefficients(reader, spec: dict, field: str) -> tuple[sp.Expr | None, sp.Expr | None]:
+    """(mu_s, mu_k) from `friction: {static: mu_s, kinetic: mu_k}`, each None when not given."""
+    if "friction" not in spec:
+        return None, None
+    friction = reader.mapping(spec["friction"], f"{field}.friction", optional=("static", "kinetic"))
+    if not friction:
+        raise reader.fail(f"{field}.friction", "give static: mu_s, kinetic: mu_k or both")
+    return tuple(reader.positive(friction[k], f"{field}.friction.{k}", "1", "a coefficient of friction")
+                 if k in friction else None for k in ("static", "kinetic"))

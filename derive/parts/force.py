@@ -43,7 +43,7 @@ class Force(Part):
 
 def read(reader, places, name: str, spec: dict, field: str) -> Force:
     """`{on: BODY.POINT, magnitude: F, angle: EXPR}` (angle from +x, counter-clockwise; default 0)."""
-    spec = reader.mapping(spec, field, required=("on", "magnitude"), optional=("angle", "name"))
+    spec = reader.mapping(spec, field, required=("on", "magnitude"), optional=("angle", "name"), points=("on",))
     body, offset = places.point(spec["on"], f"{field}.on", ground=False)
     places.on_body(body, offset, f"{field}.on")
     magnitude = reader.dimensioned(spec["magnitude"], f"{field}.magnitude", "N", "a force", places.with_time())

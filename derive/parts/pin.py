@@ -65,7 +65,7 @@ class Pin(Part):
 def read(reader, places, name: str, spec: dict, field: str) -> Pin:
     """`{pin: BODY.POINT}` (to the ground where the point is) or `{pin: POINT, to: POINT}` (to
     another body's point, or a point of the ground, where the first point is)."""
-    spec = reader.mapping(spec, field, required=("pin",), optional=("to",))
+    spec = reader.mapping(spec, field, required=("pin",), optional=("to",), points=("to",))
     body, offset = places.point(spec["pin"], f"{field}.pin", ground=False)
     places.on_body(body, offset, f"{field}.pin")
     if "to" not in spec or spec["to"] == "ground":

@@ -76,8 +76,9 @@ def points_of(body) -> dict[str, tuple[sp.Expr, sp.Expr]]:
 class Places:
     """Resolves point references of one problem file (see the module)."""
 
-    def __init__(self, reader, bodies: dict, ground: dict[str, tuple[sp.Expr, sp.Expr]]):
+    def __init__(self, reader, bodies: dict, ground: dict[str, tuple[sp.Expr, sp.Expr]], surfaces: dict | None = None):
         self.reader, self.bodies, self.ground = reader, bodies, ground
+        self.surfaces = surfaces or {}
 
     def sample(self, expr: sp.Expr) -> float:
         """`sample` for this problem file."""
