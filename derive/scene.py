@@ -427,6 +427,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             surface = scene.surfaces[contact.surface]
             if rest in INCLINE_ONLY and not isinstance(surface, Plane):
                 raise ValueError(f"{rest} is for a body on an incline")
+            if rest in (*INCLINE_ONLY, "min_release_height") and surface.carrier is not None:
+                raise ValueError(f"{rest} is measured on a fixed surface; {contact.surface} moves with the "
+                                 f"{surface.carrier}: ask {head}.acceleration.x|y")
             if rest == "min_release_height" and not (isinstance(surface, Circle) and surface.side == "inside"):
                 raise ValueError("min_release_height is for a body riding a loop")
             if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:

@@ -264,6 +264,8 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
         raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(surfaces) or 'none'})")
     if spec.get("joint") is not None:
         raise reader.fail(f"{field}.on", "a body on a surface cannot also turn on a joint")
+    if surfaces[spec["on"]].carrier == body.name:
+        raise reader.fail(f"{field}.on", f"the {body.name} carries {spec['on']}: it cannot rest on it")
     if body.composite is not None and "radius" not in body.sizes:
         raise EngineLimit(f"{reader.path}: {field}.on", "model a composite's contact with a surface other than by a "
                                                         "round part centered at its center of mass")
@@ -277,7 +279,8 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
         if kind == "rolling" and static is None:
             raise reader.fail(f"{field}.friction", "a body rolls as long as static friction holds it: give static: "
                                                    "mu_s (and kinetic: mu_k for when it slips)")
-    return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling", static, kinetic)
+    return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling", static, kinetic,
+                   carrier=surfaces[spec["on"]].carrier)
 
 
 def _surfaces(reader: Reader, raw) -> dict:
@@ -289,7 +292,10 @@ def _surfaces(reader: Reader, raw) -> dict:
     for name, spec in raw.items():
         field = f"scene.surfaces.{name}"
         reader.name(name, field, "a surface name")
-        spec = reader.mapping(spec, field, optional=("plane", "incline", "circle", "loop", "wall"))
+        spec = dict(reader.mapping(spec, field, optional=("plane", "incline", "circle", "loop", "wall", "carried_by")))
+        carrier = spec.pop("carried_by", None)
+        if carrier is not None:
+            reader.name(carrier, f"{field}.carried_by", "a body's name")
         if len(spec) != 1:
             raise reader.fail(field, "expected one surface kind (plane or incline, circle or loop, wall)")
         (kind, details), = spec.items()
@@ -301,7 +307,7 @@ def _surfaces(reader: Reader, raw) -> dict:
             through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
                 if "through" in details else (sp.Integer(0), sp.Integer(0))
             # A vertical plane: its normal (sin angle, cos angle) points to the side it faces.
-            result[name] = Plane(name, sp.pi / 2 if details["facing"] == "right" else -sp.pi / 2, None, through)
+            result[name] = Plane(name, sp.pi / 2 if details["facing"] == "right" else -sp.pi / 2, None, through, carrier)
             continue
         if kind in ("circle", "loop"):
             details = reader.mapping(details, where, required=("radius",),
@@ -312,7 +318,7 @@ def _surfaces(reader: Reader, raw) -> dict:
             center = _vector(reader, details["center"], f"{where}.center", "m", "a position") \
                 if "center" in details else None
             result[name] = Circle(name, reader.positive(details["radius"], f"{where}.radius", "m", "a radius"),
-                                  center, side)
+                                  center, side, carrier)
             continue
         details = reader.mapping(details or {}, where, optional=("angle", "height", "through"))
         if "angle" in details:
@@ -324,7 +330,7 @@ def _surfaces(reader: Reader, raw) -> dict:
         height = reader.positive(details["height"], f"{where}.height", "m", "a height") if "height" in details else None
         through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
             if "through" in details else (sp.Integer(0), sp.Integer(0))
-        result[name] = Plane(name, angle, height, through)
+        result[name] = Plane(name, angle, height, through, carrier)
     return result
 
 
@@ -505,6 +511,10 @@ def read_scene(reader: Reader, raw) -> Scene:
         body, joint = _body(reader, name, spec)
         bodies[name] = body
         pins += [joint] if joint else []
+    for name, surface in surfaces.items():
+        if surface.carrier is not None and surface.carrier not in bodies:
+            raise reader.fail(f"scene.surfaces.{name}.carried_by", f"no body {surface.carrier!r} (bodies: "
+                                                                    f"{', '.join(bodies) or 'none'})")
     constraints_raw = raw.get("constraints") or []
     if not isinstance(constraints_raw, list):
         raise reader.fail("scene.constraints", "expected a list")

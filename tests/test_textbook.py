@@ -31,6 +31,31 @@ def _cos(x):
 
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
+    # Morin ch. 3 (a block on a frictionless wedge free to slide on a frictionless floor): the
+    # wedge A = -m g sin(theta) cos(theta)/(M + m sin^2(theta)) (it moves back, -x); momentum
+    # gives the block's m a_x = -M A; a_y = -(M + m) g sin^2(theta)/(M + m sin^2(theta));
+    # N = M m g cos(theta)/(M + m sin^2(theta)).
+    "wedge_block": {
+        "A": lambda s: -s.m * s.g * _sin(s.theta) * _cos(s.theta) / (s.M + s.m * _sin(s.theta) ** 2),
+        "ax": lambda s: s.M * s.g * _sin(s.theta) * _cos(s.theta) / (s.M + s.m * _sin(s.theta) ** 2),
+        "ay": lambda s: -(s.M + s.m) * s.g * _sin(s.theta) ** 2 / (s.M + s.m * _sin(s.theta) ** 2),
+        "N": lambda s: s.M * s.m * s.g * _cos(s.theta) / (s.M + s.m * _sin(s.theta) ** 2),
+    },
+    # The same at release for a bead in a cart's circular track, where the track is inclined at
+    # phi: the cart moves toward the bead's side (+x).
+    "cart_track_bead": {
+        "A": lambda s: s.m * s.g * _sin(s.phi) * _cos(s.phi) / (s.M + s.m * _sin(s.phi) ** 2),
+        "N": lambda s: s.M * s.m * s.g * _cos(s.phi) / (s.M + s.m * _sin(s.phi) ** 2),
+    },
+    # Kleppner & Kolenkow ch. 7 (a plank pulled from under a uniform cylinder that rolls on it):
+    # friction f = m a on the cylinder, f R = (m R^2/2) alpha, no slip a + alpha R = A (alpha
+    # counter-clockwise), F - f = M A: A = 3F/(3M + m), a = A/3, f = m A/3.
+    "plank_cylinder": {
+        "A": lambda s: 3 * s.F / (3 * s.M + s.m),
+        "a": lambda s: s.F / (3 * s.M + s.m),
+        "alpha": lambda s: 2 * s.F / (s.R * (3 * s.M + s.m)),
+        "f": lambda s: s.F * s.m / (3 * s.M + s.m),
+    },
     # Halliday ch. 12 (a ladder against a frictionless wall): floor normal M g, floor friction and
     # wall push (M g/2) cot(theta), the friction toward the wall; Serway & Jewett Example 12.3: it
     # stands while mu_s >= cot(theta)/2.

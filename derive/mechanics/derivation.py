@@ -136,11 +136,14 @@ class Derivation:
         s = sp.Dummy("s")
         path = {c.q: state[c.q] + s * state[c.u] for c in self.coords.all}
         velocities = {c.u: state[c.u] for c in self.coords.all}
+        # The state's other values (parameters at a sample point) first: the derivative is then
+        # taken of a number-valued geometry, and the row holds no parameter the state gives.
+        given = {k: v for k, v in state.items() if k not in path and k not in velocities}
         rows = []
         for i, v in enumerate(self.rates):
             gap = self.gaps[i] if self.gaps else None
-            along = sp.diff(gap.xreplace(path), s, 2) if gap is not None else \
-                sp.diff(v.xreplace(velocities).xreplace(path), s)
+            along = sp.diff(gap.xreplace(given).xreplace(path), s, 2) if gap is not None else \
+                sp.diff(v.xreplace(given).xreplace(velocities).xreplace(path), s)
             rows.append(sp.Eq(self._slope_term(i, state) + along.xreplace({s: 0}), 0, evaluate=False))
         return rows
 

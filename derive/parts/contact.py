@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedForce, Part, Sign
+from derive.parts.surfaces import carried
 
 
 @dataclass(frozen=True)
@@ -32,7 +33,9 @@ class Contact(Part):
     """`body` on the surface named `surface`: `rolling`, or sliding (smooth unless `kinetic`, the
     coefficient mu_k, with `direction` +1 or -1: the friction acts along +t or -t). `static` is
     mu_s when the file gives it. `point`: the material point that touches, in the body's frame
-    (None: the round body's rim below its center, or the point mass itself)."""
+    (None: the round body's rim below its center, or the point mass itself). `carrier`: the body
+    that carries the surface (None: the ground); it feels the opposite forces, and the contact
+    holds the two bodies' velocities at the point of contact together."""
 
     name: str
     body: str
@@ -42,9 +45,10 @@ class Contact(Part):
     kinetic: sp.Expr | None = None
     direction: int = 0
     point: tuple[sp.Expr, sp.Expr] | None = None
+    carrier: str | None = None
 
     def bodies(self) -> tuple[str, ...]:
-        return (self.body,)
+        return (self.body,) if self.carrier is None else (self.body, self.carrier)
 
     @property
     def has_friction(self) -> bool:
@@ -65,9 +69,9 @@ class Contact(Part):
         return result
 
     def _geometry(self, coords):
-        """(surface, the center of the circle that touches it, that circle's radius): a touching
-        material point is a circle of radius 0."""
-        surface = coords.scene.surfaces[self.surface]
+        """(surface where its carrier has it, the center of the circle that touches it, that
+        circle's radius): a touching material point is a circle of radius 0."""
+        surface = carried(coords.scene.surfaces[self.surface], coords)
         if self.point is not None:
             return surface, coords.position(self.body, self.point), sp.Integer(0)
         radius = coords.scene.bodies[self.body].sizes.get("radius", sp.Integer(0))
@@ -80,11 +84,24 @@ class Contact(Part):
         surface, center, radius = self._geometry(coords)
         return -radius * surface.normal_at(center, radius)
 
+    def _carrier_offset(self, coords) -> sp.Matrix:
+        """World offset from the carrier's center to the point of contact."""
+        return coords.position(self.body) + self.offset(coords) - coords.position(self.carrier)
+
+    def _slip_velocity(self, coords) -> sp.Matrix:
+        """The velocity of the body's touching point relative to the surface's material point
+        there (rigid-body kinematics of each)."""
+        touching = coords.velocity(self.body, self.offset(coords))
+        if self.carrier is None:
+            return touching
+        return touching - coords.velocity(self.carrier, self._carrier_offset(coords))
+
     def gaps(self, coords) -> list[sp.Expr]:
         surface, center, radius = self._geometry(coords)
         result = [surface.gap(center, radius)]
-        if self.rolling:
-            result.append(surface.arc(center, radius) + radius * coords.angle(self.body))
+        if self.rolling:  # the arc along the surface and the turn, both as seen from the carrier
+            turned = coords.angle(self.body) - (coords.angle(self.carrier) if self.carrier else 0)
+            result.append(surface.arc(center, radius) + radius * turned)
         return result
 
     def _kinetic_force(self, coords) -> sp.Matrix:
@@ -94,26 +111,28 @@ class Contact(Part):
     def power(self, coords) -> sp.Expr:
         if self.regime != "kinetic":
             return sp.Integer(0)
-        return self._kinetic_force(coords).dot(coords.velocity(self.body, self.offset(coords)))
+        return self._kinetic_force(coords).dot(self._slip_velocity(coords))
 
     def loads(self, coords) -> list[AppliedForce]:
         surface, center, radius = self._geometry(coords)
         f = self.unknowns()
-        offset = self.offset(coords)
-        result = [AppliedForce(self.body, offset, f["normal"] * surface.normal_at(center, radius), "normal force")]
+        forces = [(f["normal"] * surface.normal_at(center, radius), "normal force")]
         if self.rolling:
-            result.append(AppliedForce(self.body, offset, f["friction"] * surface.tangent_at(center, radius),
-                                       "static friction"))
+            forces.append((f["friction"] * surface.tangent_at(center, radius), "static friction"))
         elif self.regime == "kinetic":
-            result.append(AppliedForce(self.body, offset, self._kinetic_force(coords), "kinetic friction"))
+            forces.append((self._kinetic_force(coords), "kinetic friction"))
+        result = [AppliedForce(self.body, self.offset(coords), force, label) for force, label in forces]
+        if self.carrier is not None:  # the body pushes back on the surface's carrier
+            result += [AppliedForce(self.carrier, self._carrier_offset(coords), -force, f"{label} of the {self.body}")
+                       for force, label in forces]
         return result
 
     def conditions(self, coords) -> list[sp.Expr]:
         surface, center, radius = self._geometry(coords)
-        touching = coords.velocity(self.body, self.offset(coords))
-        result = [touching.dot(surface.normal_at(center, radius))]
+        slip = self._slip_velocity(coords)
+        result = [slip.dot(surface.normal_at(center, radius))]
         if self.rolling:
-            result.append(touching.dot(surface.tangent_at(center, radius)))
+            result.append(slip.dot(surface.tangent_at(center, radius)))
         return result
 
     def signs(self) -> list[Sign]:
@@ -135,6 +154,8 @@ def read(reader, places, name: str, spec: dict, field: str) -> Contact:
     places.on_body(body, point, f"{field}.touches")
     if spec["on"] not in places.surfaces:
         raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(places.surfaces) or 'none'})")
+    if places.surfaces[spec["on"]].carrier == body:
+        raise reader.fail(f"{field}.on", f"the {body} carries {spec['on']}: it cannot rest on it")
     grips = spec.get("grips", False)
     if not isinstance(grips, bool):
         raise reader.fail(f"{field}.grips", "expected true or false")
@@ -145,7 +166,8 @@ def read(reader, places, name: str, spec: dict, field: str) -> Contact:
     if grips and static is not None:
         raise reader.fail(f"{field}.grips", "with friction.static the engine decides whether the point grips: "
                                             "leave grips out")
-    return Contact(name, body, spec["on"], grips, static, kinetic, point=point)
+    return Contact(name, body, spec["on"], grips, static, kinetic, point=point,
+                   carrier=places.surfaces[spec["on"]].carrier)
 
 
 def coefficients(reader, spec: dict, field: str) -> tuple[sp.Expr | None, sp.Expr | None]:

@@ -1,5 +1,7 @@
-"""Fixed surfaces a body can rest on: a plane at any angle, and a circle seen from inside (a bowl,
-a loop, a cylinder) or from outside (a dome).
+"""Surfaces a body can rest on: a plane at any angle, and a circle seen from inside (a bowl, a
+loop, a cylinder) or from outside (a dome). A surface is fixed to the ground, or carried by a body
+(`carrier`: a wedge's face, a plank's top, a cart's curved track), given where it is in the
+reference configuration; `carried` moves it with its carrier.
 
 Each gives, for a round body of radius r whose center is at C: `gap` (how far the body stands off
 the surface; zero when it touches), `normal_at` (the unit vector from the surface toward the
@@ -15,9 +17,12 @@ Matrix([[1/2, sqrt(3)/2]])
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import sympy as sp
+
+from derive.parts.places import turned
 
 
 @dataclass(frozen=True)
@@ -30,6 +35,7 @@ class Plane:
     angle: sp.Expr
     height: sp.Expr | None = None
     through: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    carrier: str | None = None
 
     @property
     def down(self) -> sp.Matrix:
@@ -58,14 +64,16 @@ class Plane:
 
 @dataclass(frozen=True)
 class Circle:
-    """A fixed circle of `radius` about `center`, ridden on its `side`: "inside" (a bowl, a loop;
-    by default its lowest point is at the origin) or "outside" (a dome; by default its highest
-    point is at the origin)."""
+    """A circle of `radius` about `center`, ridden on its `side`: "inside" (a bowl, a loop; by
+    default its lowest point is at the origin) or "outside" (a dome; by default its highest point
+    is at the origin). `turn`: how far its carrier has turned it (arcs are measured on it)."""
 
     name: str
     radius: sp.Expr
     center: tuple[sp.Expr, sp.Expr] | None = None
     side: str = "inside"
+    carrier: str | None = None
+    turn: sp.Expr = sp.Integer(0)
 
     @property
     def middle(self) -> sp.Matrix:
@@ -99,9 +107,10 @@ class Circle:
 
     def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
         """The path radius times the center's polar angle about the circle's center, measured from
-        the touching point, counter-clockwise inside and clockwise outside."""
+        the touching point, counter-clockwise inside and clockwise outside, on the circle as its
+        carrier has turned it."""
         offset = center - self.middle
-        return self.path_radius(radius) * sp.atan2(offset[0], -self._sign * offset[1])
+        return self.path_radius(radius) * (sp.atan2(offset[0], -self._sign * offset[1]) - self._sign * self.turn)
 
     def top(self, radius: sp.Expr) -> sp.Matrix:
         """The highest point of the circle a body inside rides on."""
@@ -109,3 +118,27 @@ class Circle:
 
 
 Surface = Plane | Circle
+
+
+def carried(surface: Surface, coords) -> Surface:
+    """The surface where its carrier has moved it (turned with it about the carrier's center of
+    mass, and shifted with it); a fixed surface as it is.
+
+    >>> from derive.mechanics.kinematics import Coordinates
+    >>> from derive.scene import Body, Scene
+    >>> scene = Scene({"wedge": Body("wedge", "point", sp.Symbol("M"), {})})
+    >>> carried(Plane("face", sp.pi / 6, carrier="wedge"), Coordinates(scene)).through
+    (x_wedge, y_wedge)
+    """
+    if surface.carrier is None:
+        return surface
+    body = coords.scene.bodies[surface.carrier]
+
+    def moved(point) -> tuple[sp.Expr, sp.Expr]:
+        local = turned(-body.angle, sp.Matrix(point) - sp.Matrix(body.at))  # in the carrier's own frame
+        return tuple(coords.position(surface.carrier, local))
+
+    turn = coords.angle(surface.carrier)
+    if isinstance(surface, Plane):
+        return dataclasses.replace(surface, through=moved(surface.through), angle=surface.angle + turn)
+    return dataclasses.replace(surface, center=moved(surface.middle), turn=turn)
