@@ -438,3 +438,112 @@ def test_a_peg_of_no_size_holds_the_cord_where_its_runs_meet(drawn_scenes):
     assert re.search(rf"\\draw\[fill=gray!30\] {re.escape(_pt(point))} -- ", drawn)  # its support
     runs = lines(drawn, "thick")
     assert any(close_to(b, point) for _, b in runs) and any(close_to(a, point) for a, _ in runs)
+
+
+REGIME = re.compile(r"^\\node\[anchor=[a-z ]+, inner sep=1.5pt\] at \((-?[\d.]+),(-?[\d.]+)\) \{\\scriptsize (.*)\};$", re.M)
+BAR = re.compile(r"\\draw\[line width=3.2pt, line cap=round, gray!60!black\] \((-?[\d.]+),(-?[\d.]+)\) -- "
+                 r"\((-?[\d.]+),(-?[\d.]+)\);")
+
+
+def touching(p, at):
+    """Each contact at a material point: (the contact, where that point is on the figure), from the parts."""
+    from derive.parts.contact import Contact
+
+    coords, number = reference(p)
+    return [(c, at(tuple(number(v) for v in coords.position(c.body, c.point))))
+            for c in p.scene.constraints if isinstance(c, Contact) and c.point is not None]
+
+
+def on_segment(point, a, b):
+    length = math.hypot(b[0] - a[0], b[1] - a[1])
+    along = ((point[0] - a[0]) * (b[0] - a[0]) + (point[1] - a[1]) * (b[1] - a[1])) / length
+    across = ((point[0] - a[0]) * (b[1] - a[1]) - (point[1] - a[1]) * (b[0] - a[0])) / length
+    return abs(across) <= TOLERANCE and -TOLERANCE <= along <= length + TOLERANCE
+
+
+def test_a_ladder_touches_the_floor_and_the_wall_at_its_points_and_they_meet_at_the_corner(drawn_scenes):
+    """A ladder (a rod; a custom body given by its points: a bar between them) against a wall
+    facing right and one facing left: each touching point on its surface's line as drawn, the
+    ladder from one touching point exactly to the other, the floor and the wall meeting at their
+    corner (each line ends there)."""
+    for name in ("ladder_wall", "ladder_left"):
+        p, drawn, at = drawn_scenes[name]
+        _, number = reference(p)
+        surfaces = lines(drawn.replace("; \\draw[thick]", ";\n\\draw[thick]"), "thick")
+        points, ends = [], []
+        for contact, point in touching(p, at):
+            plane = p.scene.surfaces[contact.surface]
+            through = at(tuple(number(v) for v in plane.through))
+            normal = tuple(number(v) for v in plane.normal)
+
+            def on_plane(x):
+                return abs((x[0] - through[0]) * normal[0] + (x[1] - through[1]) * normal[1]) <= TOLERANCE
+
+            drawn_lines = [(a, b) for a, b in surfaces if on_plane(a) and on_plane(b)]
+            assert len(drawn_lines) == 1 and on_segment(point, *drawn_lines[0]), (name, contact.name, point)
+            points.append(point)
+            ends.append(drawn_lines[0])
+        ladder = BAR.search(drawn)
+        bar = [(float(ladder[1]), float(ladder[2])), (float(ladder[3]), float(ladder[4]))]
+        assert (close_to(bar[0], points[0]) and close_to(bar[1], points[1])) or \
+            (close_to(bar[0], points[1]) and close_to(bar[1], points[0])), (name, bar, points)
+        floor, wall = (p.scene.surfaces[s] for s in ("floor", "wall"))
+        corner = at((number(wall.through[0]), number(floor.through[1])))
+        assert all(close_to(a, corner) or close_to(b, corner) for a, b in ends), (name, corner, ends)
+
+
+def test_each_touching_point_is_labelled_with_its_own_regime(drawn_scenes):
+    """The regime written nearest each touching point is its own: the foot "rough, mu_s" (static
+    friction given: the engine decides), "no slip" (grips), the wall "smooth"."""
+    expected = {"ladder_wall": {"floor": "rough, $\\mu_{s}$", "wall": "smooth"},
+                "ladder_left": {"floor": "no slip", "wall": "smooth"}}
+    for name, regimes in expected.items():
+        p, drawn, at = drawn_scenes[name]
+        labels = [((float(x), float(y)), text) for x, y, text in REGIME.findall(drawn)]
+        assert sorted(text for _, text in labels) == sorted(regimes.values()), (name, labels)
+        for contact, point in touching(p, at):
+            where, text = min(labels, key=lambda label: math.dist(label[0], point))
+            assert text == regimes[contact.surface] and math.dist(where, point) < 0.5, (name, contact.name, text)
+
+
+def test_the_ladders_angle_above_the_floor_is_marked_at_its_foot(drawn_scenes):
+    """theta, a parameter, is the angle between the floor and the ladder: an arc about the foot
+    from the floor's line to the ladder's, labelled; the wall's angle (pi/2 - theta) is not."""
+    arc = re.compile(r"\\draw \((-?[\d.]+),(-?[\d.]+)\) arc\[start angle=(-?[\d.]+), end angle=(-?[\d.]+), "
+                     r"radius=([\d.]+)\];")
+    for name in ("ladder_wall", "ladder_left"):
+        p, drawn, at = drawn_scenes[name]
+        _, number = reference(p)
+        (foot,), (head,) = ([point for c, point in touching(p, at) if c.surface == s] for s in ("floor", "wall"))
+        arcs = arc.findall(drawn)
+        assert len(arcs) == 1 and "{$\\theta$}" in drawn, name
+        x, y, start, end, radius = map(float, arcs[0])
+        center = (x - radius * math.cos(math.radians(start)), y - radius * math.sin(math.radians(start)))
+        assert math.dist(center, foot) < 0.01, (name, center, foot)
+        assert abs(abs(end - start) - math.degrees(number(p.parameters["theta"].symbol))) < 0.02
+        assert start % 180 == 0  # from along the floor
+        toward = math.degrees(math.atan2(head[1] - foot[1], head[0] - foot[0]))
+        assert abs((end - toward + 180) % 360 - 180) < 0.2, (name, end, toward)  # to along the ladder
+
+
+def test_a_ladder_given_by_its_points_is_a_bar_with_its_center_of_mass_and_loads_on_it(drawn_scenes):
+    p, drawn, at = drawn_scenes["ladder_left"]
+    coords, number = reference(p)
+    center = at(tuple(number(v) for v in coords.position("ladder")))
+    painter = next(load for load in p.scene.loads if load.name == "painter")
+    painter = at(tuple(number(v) for v in coords.position("ladder", painter.offset)))
+    assert f"\\draw[fill=white] {_pt(center)} circle (0.05);" in drawn  # the center of mass marked on the bar
+    assert f"\\draw[force] {_pt(painter)} -- {_pt((painter[0], painter[1] - 0.85))};" in drawn and "{$P$}" in drawn
+    assert f"\\draw[force] {_pt(center)} -- {_pt((center[0], center[1] - 0.85))};" in drawn and "{$m\\,g$}" in drawn
+
+
+def test_a_custom_body_touching_that_is_no_bar_leaves_the_figure_out():
+    """Drawn as an oval about its points, it would cross the floor at its foot: no figure. So a
+    ladder whose painter stands off its line, or that touches the floor only."""
+    text = (FIGURES / "ladder_left.yaml").read_text()
+    off_the_line = text.replace("on: {ladder: [L/6, 0]}", "on: {ladder: [L/6, L/10]}")
+    foot_only = text.replace("    head: {touches: {ladder: [2*L/3, 0]}, on: wall}\n", "").replace("head.normal", "foot.normal")
+    assert "L/10" in off_the_line and "head:" not in foot_only
+    assert figure.tikz(problem.parse(text, FIGURES / "ladder_left.yaml")) is not None
+    for changed in (off_the_line, foot_only):
+        assert figure.tikz(problem.parse(changed, FIGURES / "ladder_left.yaml")) is None

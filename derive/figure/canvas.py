@@ -202,8 +202,7 @@ class _Figure:
                 self.add(f"\\fill {c} circle ({_f(min(radius, 0.3))});")
         elif shape == "rod":
             direction = _unit(angle)
-            self.add(f"\\draw[line width=3.2pt, line cap=round, gray!60!black] {_pt(_add(center, direction, -radius))}"
-                     f" -- {_pt(_add(center, direction, radius))};")
+            self.bar(_add(center, direction, -radius), _add(center, direction, radius))
         elif shape in ("ring", "cylindrical_shell", "spherical_shell"):
             self.add(f"\\draw[line width=1.8pt] {c} circle ({r}); \\fill {c} circle (0.04);")
         elif shape in ("sphere", "thick_spherical_shell"):
@@ -227,6 +226,10 @@ class _Figure:
         if shape not in ("point", "rod", "sphere", "thick_spherical_shell", "ring", "cylindrical_shell",
                          "spherical_shell", "cone"):
             self.add(f"\\fill {c} circle (0.04);")
+
+    def bar(self, a, b) -> None:
+        """A rod, or any body drawn as a thick bar, from `a` to `b`."""
+        self.add(f"\\draw[line width=3.2pt, line cap=round, gray!60!black] {_pt(a)} -- {_pt(b)};")
 
     def density_shades(self, body: Body) -> tuple[str, str]:
         """Radial shading colors: darker where the density is larger (inner, outer)."""

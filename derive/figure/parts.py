@@ -8,14 +8,20 @@ scaled uniformly so that the scene is about 4 cm wide.
 
 What each part looks like:
 
-- surfaces: a plane a hatched floor (an incline a shaded wedge with its angle), stopping short of
-  things below its level (a pulley at a table's edge); a circle a thick track hatched on the solid
-  side (outside a bowl or a loop, inside a dome), with its radius;
+- surfaces: a plane a hatched floor or wall (an incline a shaded wedge with its angle), stopping
+  short of things below its level (a pulley at a table's edge) and meeting another such plane at
+  their corner (a floor and a wall); a circle a thick track hatched on the solid side (outside a
+  bowl or a loop, inside a dome), with its radius;
 - bodies by shape (a point mass a block when it rests on a plane or ends a cord, a spring or a
-  dashpot, else a small ball), labelled with their mass (or name). A point mass touches its
-  surface at its point, where its cords and springs attach: a surface only point masses rest on
-  is drawn half a block (a ball's radius) below their points, so that each block, centered on its
-  point, sits on it and its cord leaves its side, as in a textbook;
+  dashpot, else a small ball; a custom body an oval about the points where parts attach, or a bar
+  between the two points it touches surfaces at when its center of mass and those points lie on
+  that segment: a ladder), labelled with their mass (or name). A point mass touches its surface
+  at its point, where its cords and springs attach: a surface only point masses rest on is drawn
+  half a block (a ball's radius) below their points, so that each block, centered on its point,
+  sits on it and its cord leaves its side, as in a textbook. A body touching a surface at one of
+  its points is drawn on its side of it (an outline that would cross it is Undrawable); a rod or
+  a bar there has its angle to a plane marked when the scene gives that angle as a parameter (a
+  ladder's theta above the floor);
 - pin to the ground: a hatched support on the clearest side, toward the ground's own lines when
   near (a pulley's bracket to its table; a bracket past the rim for an axle), with the pin a small
   circle (an axle a circled dot); a pin between bodies a small circle; a slider a hatched rail
@@ -33,8 +39,8 @@ What each part looks like:
   body or about the center of a large one, gravity the weight m g of a single body or a g arrow
   beside the scene; labels are placed where they cover the least of the drawing;
 - contact regime, written at the point of contact as textbooks do: "no slip" (rolling without
-  slipping; with mu_s when given), "smooth" (sliding without friction), "rough, mu_k" (kinetic
-  friction).
+  slipping, or a point held by static friction; with mu_s when given), "smooth" (sliding without
+  friction), "rough, mu_s, mu_k" (the coefficients the file gives: the engine decides the regime).
 
 A part this module does not know, or geometry that does not evaluate to real numbers, raises
 `Undrawable`: `tikz` then omits the figure rather than draw something wrong.
@@ -264,6 +270,7 @@ class _Body:
         self.kind = "point" if body.shape == "point" else "rod" if self.rod else "rectangle" if self.sides else \
             "round" if self.radius_m else "oval"
         self.block = False  # a point mass: a block (set by the layout), else a ball
+        self.ends = None  # a bar: the two points of its body (body frame) it runs between (set by the layout)
         self.tilt = 0.0  # degrees: a block on an incline is turned to lie on it
         self.seat = None  # a block on a plane that round bodies share: the plane's unit normal (it sits on it)
 
@@ -278,6 +285,8 @@ class _Body:
             return [_add(c, d, r) for d in ((1, 0), (0, 1), (-1, 0), (0, -1))]
         if self.kind == "rod":
             return [_add(c, along, self.rod / 2), _add(c, along, -self.rod / 2)]
+        if self.kind == "bar":
+            return [self.view.world(self.name, end) for end in self.ends]
         if self.kind == "rectangle":
             a_, b_ = self.sides[0] / 2, self.sides[1] / 2
             return [_add(_add(c, along, sx * a_), across, sy * b_) for sx in (-1, 1) for sy in (-1, 1)]
@@ -287,6 +296,21 @@ class _Body:
     @property
     def center(self):
         return self.view.at(self.world)
+
+    def segment(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """A rod's or a bar's two ends on the figure (cm)."""
+        if self.kind == "bar":
+            return tuple(self.view.at(p) for p in self.corners_m())
+        along, half = (math.cos(self.angle), math.sin(self.angle)), self.rod / 2 * self.view.scale
+        return _add(self.center, along, -half), _add(self.center, along, half)
+
+    @property
+    def axis(self) -> tuple[float, float]:
+        """The unit vector along it: a bar's from its first end to its second, else its angle's."""
+        if self.kind == "bar":
+            p, q = self.segment()
+            return _norm(_sub(q, p))
+        return _unit(math.degrees(self.angle))
 
     @property
     def drawn_center(self):
@@ -310,10 +334,10 @@ class _Body:
                 [_add(c, _unit(tilt + 90 * k), h) for k in range(4)]
         if self.kind == "round":
             return [_add(c, _unit(10 * k), self.radius_m * s) for k in range(36)]
-        if self.kind == "rod":
-            half = self.rod / 2 * s
-            steps = max(2, int(2 * half / 0.1))
-            return [_add(c, along, -half + 2 * half * k / steps) for k in range(steps + 1)]
+        if self.kind in ("rod", "bar"):
+            p, q = self.segment()
+            steps = max(2, int(math.hypot(*_sub(q, p)) / 0.1))
+            return [_add(p, _sub(q, p), k / steps) for k in range(steps + 1)]
         if self.kind == "rectangle":
             a_, b_ = self.sides[0] / 2 * s, self.sides[1] / 2 * s
             corners = [_add(_add(c, along, sx * a_), across, sy * b_) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
@@ -367,6 +391,9 @@ class _Body:
                 view.draw("bodies", fig.body, body, c, r, degrees)
         elif self.kind == "rod":
             view.draw("bodies", fig.body, body, c, self.rod / 2 * s, degrees)
+        elif self.kind == "bar":  # its center of mass marked on it
+            view.draw("bodies", fig.bar, *self.segment())
+            view.put("bodies", f"\\draw[fill=white] {_pt(c)} circle (0.05); \\fill {_pt(c)} circle (0.025);")
         elif self.kind == "rectangle":
             view.draw("bodies", fig.body, body, c, self.sides[0] / 2 * s, degrees, aspect=self.sides[1] / self.sides[0])
         else:
@@ -411,6 +438,7 @@ class _Layout:
         self.pending: list = []  # labels, placed once everything is drawn
         self.lift: dict[str, float] = {}  # surface: how far below the points resting on it it is drawn (cm)
         self._mark_blocks()
+        self._mark_bars()
         self._scale()
 
     def of(self, kind):
@@ -444,6 +472,23 @@ class _Layout:
             elif name in ends:
                 drawn.block = True
 
+    def _mark_bars(self) -> None:
+        """A custom body of no given size that touches surfaces at two of its points (or more, in a
+        line) is a bar between the two farthest apart, when its center of mass and every point
+        where a part attaches lie on that segment (a ladder given by its foot and its top)."""
+        view = self.view
+        for name, drawn in self.bodies.items():
+            if drawn.kind != "oval" or drawn.pieces:
+                continue
+            touching = [c.point for c in self.contacts if c.body == name and c.point is not None]
+            if len(touching) < 2:
+                continue
+            ends = max(((p, q) for p in touching for q in touching),
+                       key=lambda pq: math.hypot(*_sub(view.world(name, pq[0]), view.world(name, pq[1]))))
+            p, q = (view.world(name, end) for end in ends)
+            if all(_on_segment(point, p, q) for point in [drawn.world] + self._attached(name)):
+                drawn.kind, drawn.ends = "bar", ends
+
     # the extent and the scale
     def _world_points(self) -> list[tuple[float, float]]:
         view, points = self.view, []
@@ -463,6 +508,8 @@ class _Layout:
             points.append(view.world(part.body, part.offset))
         for contact in self.contacts:
             surface = self.scene.surfaces[contact.surface]
+            if contact.point is not None:
+                points.append(view.world(contact.body, contact.point))
             if isinstance(surface, Circle):
                 middle, r = view.vector(surface.middle), view.value(surface.radius)
                 points += [_add(middle, d, r) for d in ((1, 0), (0, 1), (-1, 0), (0, -1))]
@@ -480,14 +527,16 @@ class _Layout:
         scale = min(scales)
         view.scale = scale if math.isfinite(scale) else 1.0
         view.origin = (min(xs), min(ys))
+        self.size = (width * view.scale, height * view.scale)  # the scene's extent on the figure, from (0, 0)
 
     # drawing
     def draw(self) -> None:
         view = self.view
         for drawn in self.bodies.values():
             if drawn.kind == "oval" and not drawn.pieces:
-                drawn.fit_oval(self._attached(drawn.name))
+                drawn.fit_oval([view.at(p) for p in self._attached(drawn.name)])
             drawn.shape()
+        self._off_the_surfaces()
         for cord in self.cords:
             self._cord(cord)
         for spring in self.of(Spring):
@@ -514,6 +563,8 @@ class _Layout:
             self._torque(torque)
         self._gravity()
         self._velocities()
+        for contact in self.contacts:  # the angles' labels after the loads' (beside the arcs, they have more room)
+            self._contact_angle(contact)
         for contact in self.contacts:
             self._regime(contact)
         for drawn in self.bodies.values():
@@ -533,18 +584,33 @@ class _Layout:
         self.pending.append((text, point, gap, prefer))
 
     def _attached(self, name: str) -> list[tuple[float, float]]:
-        """The points of a body where parts attach to it (cm)."""
+        """The points of a body where parts attach to it or it touches a surface (world, m)."""
         view, points = self.view, []
         for part in self.of(Pin) + self.of(Slider) + self.of(Force):
             if part.body == name:
-                points.append(view.at(view.world(name, part.offset)))
+                points.append(view.world(name, part.offset))
             if isinstance(part, Pin) and part.to == name:
-                points.append(view.at(view.world(name, part.to_offset)))
+                points.append(view.world(name, part.to_offset))
         for part in self.of(Spring) + self.of(Damper):
-            points += [view.at(view.world(b, o)) for b, o in zip(part.ends, part.offsets) if b == name]
+            points += [view.world(b, o) for b, o in zip(part.ends, part.offsets) if b == name]
         for cord in self.cords:
-            points += [view.at(view.vector(a.center(view.coords))) for a in cord.path if a.body == name]
+            points += [view.vector(a.center(view.coords)) for a in cord.path if a.body == name]
+        points += [view.world(name, c.point) for c in self.contacts if c.body == name and c.point is not None]
         return points
+
+    def _off_the_surfaces(self) -> None:
+        """A body touching a surface at one of its points stays on the side it touches it from: a
+        drawn outline that would cross the surface as drawn (an oval about a ladder's foot) is
+        Undrawable."""
+        view = self.view
+        for contact in self.contacts:
+            if contact.point is None:
+                continue
+            surface, lift = self.scene.surfaces[contact.surface], self.lift.get(contact.surface, 0.0)
+            for point in self.bodies[contact.body].outline():
+                world = _add(view.origin, point, 1 / view.scale)
+                if view.value(surface.gap(sp.Matrix(world), sp.Integer(0))) * view.scale + lift < -0.02:
+                    raise Undrawable(f"the {contact.body} drawn would cross the surface {contact.surface}")
 
     def _ground_anchor(self, point, toward, layer: str = "supports", width: float = 0.5) -> None:
         """A hatched ceiling or wall at `point` (cm), facing `toward` (where the attached part is)."""
@@ -837,15 +903,17 @@ class _Layout:
                     self.later(self.fig.m(surface.radius), _add(middle, side, max(radius, solid)), 0.1, [side])
 
     def _plane(self, plane: Plane) -> None:
-        """The plane from before its first body to past its last, stopping short of what lies
-        below its level (a pulley at the table's edge); an incline a wedge with its angle."""
+        """The plane from before its first body to past its last (a little past a touching point),
+        stopping short of what lies below its level (a pulley at the table's edge) and at the
+        corner where it meets another plane (a floor and a wall); an incline a wedge with its angle."""
         view = self.view
         through = view.vector(plane.through)
         down, normal = _norm(view.vector(plane.down)), _norm(view.vector(plane.normal))
         on = [c for c in self.contacts if c.surface == plane.name]
         along = [_dot(_sub(self._contact_point(c)[0], through), down) for c in on]
-        margin = max([1.1] + [1.3 * self.bodies[c.body].extent for c in on]) / view.scale
-        low, high = min(along) - margin, max(along) + margin
+        around = max([1.1] + [1.3 * self.bodies[c.body].extent for c in on if c.point is None])  # a body on it
+        margins = [(0.6 if c.point is not None else around) / view.scale for c in on]
+        low, high = min(s - m for s, m in zip(along, margins)), max(s + m for s, m in zip(along, margins))
         lowest, highest = min(along), max(along)
         def level(point) -> tuple[float, float]:
             return _dot(_sub(point, through), down), _dot(_sub(point, through), normal)
@@ -877,10 +945,12 @@ class _Layout:
                         high = min(high, s - radius - gap if corner == drawn.world else s - gap)
                     elif s < lowest:
                         low = max(low, s + radius + gap if corner == drawn.world else s + gap)
+        corners = {} if _wedge(down) else self._corners(plane, lowest, highest)
+        low, high = corners.get(-1, low), corners.get(1, high)
         lift = self.lift.get(plane.name, 0.0)
         a, b = (_add(view.at(_add(through, down, s)), normal, -lift) for s in (low, high))
         angle = math.degrees(math.atan2(-down[1], down[0]))
-        if 0.5 < angle < 89.5:  # an incline; a level floor, a wall or any other plane is a hatched line
+        if _wedge(down):  # an incline; a level floor, a wall or any other plane is a hatched line
             corner = (a[0], b[1])
             view.put("surfaces", f"\\draw[fill=gray!10] {_pt(a)} -- {_pt(b)} -- {_pt(corner)} -- cycle; "
                                  f"\\fill[pattern=north east lines] {_pt(_add(corner, (0, -0.15)))} rectangle {_pt(b)};")
@@ -889,18 +959,91 @@ class _Layout:
             view.draw("surfaces", self.fig.arc, b, radius, 180 - angle, 180)
             view.ink += [_add(b, _unit(180 - angle + angle * k / 6), radius) for k in range(7)]
             self.later(self.fig.m(plane.angle), _add(b, _unit(180 - angle / 2), radius + 0.02), 0.03)
-        else:
+        else:  # at a corner the hatching runs on past it, under the other plane's
             under = (-normal[0], -normal[1])
-            view.put("surfaces", f"\\fill[pattern=north east lines] {_pt(a)} -- {_pt(b)} -- "
-                                 f"{_pt(_add(b, under, 0.16))} -- {_pt(_add(a, under, 0.16))} -- cycle; "
+            ha, hb = (_add(a, down, -0.16) if -1 in corners else a), (_add(b, down, 0.16) if 1 in corners else b)
+            view.put("surfaces", f"\\fill[pattern=north east lines] {_pt(ha)} -- {_pt(hb)} -- "
+                                 f"{_pt(_add(hb, under, 0.16))} -- {_pt(_add(ha, under, 0.16))} -- cycle; "
                                  f"\\draw[thick] {_pt(a)} -- {_pt(b)};")
-            view.ground_ink([a, b, _add(b, under, 0.16), _add(a, under, 0.16), a])
+            view.ground_ink([ha, hb, _add(hb, under, 0.16), _add(ha, under, 0.16), ha])
+
+    def _drawn_line(self, plane: Plane):
+        """Where a plane is drawn (cm): a point of its line (lowered by its lift), its down-slope
+        and its normal unit vectors."""
+        view = self.view
+        normal = _norm(view.vector(plane.normal))
+        return _add(view.at(view.vector(plane.through)), normal, -self.lift.get(plane.name, 0.0)), \
+            _norm(view.vector(plane.down)), normal
+
+    def _corners(self, plane: Plane, lowest: float, highest: float) -> dict[int, float]:
+        """Where another plane drawn as a line meets this one within the scene (a floor and a
+        wall), with this one's contacts (from `lowest` to `highest`, m along it) on the open side
+        of the other: {-1 or +1, the end it makes (up- or down-slope): m along it from `through`}."""
+        view = self.view
+        base, down, _ = self._drawn_line(plane)
+        result = {}
+        for name in dict.fromkeys(c.surface for c in self.contacts):
+            other = self.scene.surfaces[name]
+            if name == plane.name or not isinstance(other, Plane):
+                continue
+            other_base, other_down, other_normal = self._drawn_line(other)
+            corner = _crossing(base, down, other_base, other_down)
+            if _wedge(other_down) or corner is None or not all(-0.5 <= corner[k] <= self.size[k] + 0.5 for k in (0, 1)):
+                continue
+            at = _dot(_sub(corner, base), down) / view.scale
+            side = -1 if _dot(down, other_normal) > 0 else 1  # the end of this plane that the corner is
+            if (lowest >= at if side < 0 else highest <= at):
+                result[side] = at
+        return result
+
+    def _drawn_contact(self, contact: Contact):
+        """The point of contact on the figure (on its surface as drawn, cm) and the surface's normal there."""
+        world, normal = self._contact_point(contact)
+        return _add(self.view.at(world), normal, -self.lift.get(contact.surface, 0.0)), normal
+
+    def _contact_angle(self, contact: Contact) -> None:
+        """A straight body (a rod, a bar) touching a plane at one of its points: the angle between
+        them marked there, on the side of the point where the scene gives it as a parameter (a
+        ladder's theta above the floor); no mark when neither angle is one."""
+        view, drawn, plane = self.view, self.bodies[contact.body], self.scene.surfaces[contact.surface]
+        if contact.point is None or drawn.kind not in ("rod", "bar") or not isinstance(plane, Plane):
+            return
+        toward = drawn.body.angle + self._direction(drawn, contact.point)  # along the body, from the point
+        parameters = {p.symbol for p in self.fig.problem.parameters.values()}
+        for line in (-plane.angle, sp.pi - plane.angle):  # along the plane, down- and up-slope
+            turn = toward - line
+            turn -= 2 * sp.pi * round(view.value(turn) / (2 * math.pi))  # within half a turn
+            swept = turn if view.value(turn) >= 0 else -turn
+            if swept in parameters:
+                break
+        else:
+            return
+        point, _ = self._drawn_contact(contact)
+        start, sweep = math.degrees(view.value(line)), math.degrees(view.value(turn))
+        radius = min(0.5, 0.4 * math.hypot(*_sub(*drawn.segment())))
+        view.draw("marks", self.fig.arc, point, radius, start, start + sweep)
+        view.ink += [_add(point, _unit(start + sweep * k / 6), radius) for k in range(7)]
+        sides = [(_unit(start + sweep * k), extra) for extra in (0.0, 0.3) for k in (0.5, 0.3, 0.7, 0.15)]
+        self.later(self.fig.m(swept), point, radius + 0.04, sides)  # beyond the arc, the nearer the better
+
+    def _direction(self, drawn: _Body, point) -> sp.Expr:
+        """The angle, in the body's frame, of a rod's or a bar's line from its `point` to its far end."""
+        view = self.view
+        if drawn.kind == "bar":
+            ends = drawn.ends
+        else:
+            half = drawn.body.sizes["length"] / 2
+            ends = ((-half, sp.Integer(0)), (half, sp.Integer(0)))
+        far = max(ends, key=lambda end: math.hypot(view.value(end[0] - point[0]), view.value(end[1] - point[1])))
+        dx, dy = (sp.sympify(far[k] - point[k], strict=True) for k in (0, 1))  # safe: the scene's own expressions
+        if dy == 0:
+            return sp.Integer(0) if view.value(dx) > 0 else sp.pi
+        return sp.atan2(dy, dx)
 
     def _regime(self, contact: Contact) -> None:
         """The contact's regime beside its point of contact: no slip, smooth, rough."""
         view, fig = self.view, self.fig
-        world, normal = self._contact_point(contact)
-        point = _add(view.at(world), normal, -self.lift.get(contact.surface, 0.0))
+        point, normal = self._drawn_contact(contact)
         tangent = (normal[1], -normal[0])
         gap = BLOCK / 2 + 0.06 if self.bodies[contact.body].kind == "point" else 0.12
         sides = [_add(tangent, normal, k) for k in (0.25, 1.0)] + [_add(_scale_vec(tangent, -1), normal, k)
@@ -983,10 +1126,10 @@ class _Layout:
         body = drawn.body
         text = self.fig.tex(body.mass) or self.fig.tex(body.given_inertia)
         label = f"${text}$" if text else f"\\scriptsize {tex_escape(body.name)}"
-        if drawn.kind in ("rod", "rectangle"):  # across it, beside its middle
-            along = _unit(math.degrees(drawn.angle))
+        if drawn.kind in ("rod", "bar", "rectangle"):  # across it, beside its middle (a bar's center of mass)
+            along = drawn.axis
             across = _perp(along)
-            self.later(label, drawn.center, 0.12 if drawn.kind == "rod" else drawn.reach(drawn.center, across) + 0.04,
+            self.later(label, drawn.center, 0.12 if drawn.kind != "rectangle" else drawn.reach(drawn.center, across) + 0.04,
                        [across, _scale_vec(across, -1)]
                        + [(_add(side, along, k), extra) for extra, k in ((0.2, 1.0), (0.5, 1.5))
                           for side in (across, _scale_vec(across, -1)) for k in (k, -k)])
@@ -1000,6 +1143,27 @@ class _Layout:
         else:
             self.later(label, drawn.drawn_center, drawn.extent + 0.04)
 
+
+
+def _on_segment(point, p, q) -> bool:
+    """Whether `point` lies on the segment from p to q (to a millionth of its length)."""
+    length = math.hypot(*_sub(q, p))
+    direction, offset, tolerance = _norm(_sub(q, p)), _sub(point, p), 1e-6 * length
+    return abs(_dot(offset, _perp(direction))) <= tolerance and -tolerance <= _dot(offset, direction) <= length + tolerance
+
+
+def _crossing(p, u, q, v):
+    """Where the line through p along u crosses the line through q along v; None if they are parallel."""
+    cross = u[0] * v[1] - u[1] * v[0]
+    if abs(cross) < 1e-9:
+        return None
+    t = ((q[0] - p[0]) * v[1] - (q[1] - p[1]) * v[0]) / cross
+    return _add(p, u, t)
+
+
+def _wedge(down) -> bool:
+    """Whether a plane descending along `down` is drawn as an incline's wedge (else a hatched line)."""
+    return 0.5 < math.degrees(math.atan2(-down[1], down[0])) < 89.5
 
 
 def _scale_vec(p, k: float):
