@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive import report
+from derive import figure, report
 from derive.answers import Solution
 from derive.problem import load
 
@@ -106,3 +106,15 @@ def test_a_carried_surface_that_does_not_fit_is_refused_naming_the_field(tmp_pat
     assert result.returncode == 2, result.stdout
     line = result.stderr.strip()
     assert line.count("\n") == 0 and f"wedge.yaml: {field}: " in line and reason in line, line
+
+
+def test_a_carried_surface_is_left_out_of_the_figure_rather_than_drawn_fixed(tmp_path):
+    """The figure would hatch the wedge's face as ground: it leaves the figure out (until it draws
+    carriers)."""
+    path = tmp_path / "wedge.yaml"
+    path.write_text(WEDGE)
+    assert figure.tikz(load(str(path))) is None
+    fixed = tmp_path / "fixed.yaml"
+    fixed.write_text(WEDGE.replace(", carried_by: wedge", "").replace("rail: {slider: wedge, angle: 0}",
+                                                                         "rail: {slider: wedge, angle: 0, turns: true}"))
+    assert figure.tikz(load(str(fixed))) is not None

@@ -427,6 +427,8 @@ class _Layout:
         for part in parts:
             if not isinstance(part, KNOWN):
                 raise Undrawable(f"the figure does not draw a {type(part).__name__}")
+            if isinstance(part, Contact) and part.carrier is not None:  # it would look fixed to the ground
+                raise Undrawable(f"the figure does not draw a surface carried by a body ({part.surface})")
         self.parts = parts
         self.bodies = {name: _Body(view, name) for name in scene.bodies}
         self.cords = [p for p in parts if isinstance(p, Cord)]
