@@ -22,6 +22,7 @@ from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_e
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import friction
 from derive.mechanics.derivation import Derivation, Solved, Step, root, tidy
+from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import (Oscillation, OscillationError, OscillationLimit, exact_period,
                                          small_oscillation)
@@ -95,8 +96,22 @@ class Solution(CrossChecks):
         except OscillationError as error:
             raise self.problem.error("ask", str(error)) from None
 
+    @cached_property
+    def equilibria(self) -> dict[str, Equilibrium]:
+        """Where the scene rests, found by each route's equations."""
+        try:
+            return {route: equilibrium(self.dynamics_scene, d, self._sample,
+                                       functools.partial(self._within_ranges, absolute=True))
+                    for route, d in self.derivations.items()}
+        except EquilibriumLimit as error:
+            raise self.problem.limit(str(error)) from None
+        except EquilibriumError as error:
+            raise self.problem.error("ask", str(error)) from None
+
     def _route_expression(self, ask: Ask, route: str) -> sp.Expr:
         q = ask.quantity
+        if q.kind == "equilibrium":
+            return self.equilibria[route].position(self.scene, q.target, q.detail)
         if q.kind == "small_oscillation":
             try:
                 return self.oscillations[route].quantity(q.detail)
@@ -324,15 +339,20 @@ class Solution(CrossChecks):
         moment = inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density, route)[1]
         return self._within_ranges(moment)
 
-    def _within_ranges(self, expr: sp.Expr) -> sp.Expr:
+    def _within_ranges(self, expr: sp.Expr, absolute: bool = False) -> sp.Expr:
         """Resolve what an integral left open, using the parameter ranges: the branch of a Piecewise
-        that holds over them, and 0**e where e > 0 over them (a density (r/R)**k with k > -2)."""
-        if not expr.has(sp.Piecewise) and not expr.has(sp.Pow):
+        that holds over them, and 0**e where e > 0 over them (a density (r/R)**k with k > -2);
+        with `absolute`, also |e| where e keeps its sign over them (an equilibrium's root)."""
+        if not expr.has(sp.Piecewise) and not expr.has(sp.Pow) and not (absolute and expr.has(sp.Abs)):
             return expr
         points = sample_points(self.problem, expr)
 
         def holds(condition) -> bool:
             return all(bool(condition.xreplace(p)) for p in points)
+
+        if absolute:
+            expr = expr.replace(lambda e: isinstance(e, sp.Abs) and (holds(e.args[0] > 0) or holds(e.args[0] < 0)),
+                                lambda e: e.args[0] if holds(e.args[0] > 0) else -e.args[0])
 
         def branch(piecewise):
             for value, condition in piecewise.args:
@@ -555,6 +575,9 @@ class Solution(CrossChecks):
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps
+        if "equilibrium" in kinds:
+            for route in result:
+                result[route] += self.equilibria[route].steps
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "oscillation":
                 for route in result:

@@ -293,7 +293,8 @@ class Scene:
 
 
 #: Quantities that come out of the equations of motion (both routes).
-DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation"}
+DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation",
+                 "equilibrium"}
 #: Answered by a small system of derive.mechanics, with a second route of its own.
 SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rotation", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
@@ -313,7 +314,8 @@ class Quantity:
     "system" (inertia about the center of mass, reduced_mass of two bodies), "top" (TOP_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "rotation" (a turning body; ROTATION_QUANTITIES),
-    "small_oscillation" (omega, period, growth_rate).
+    "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
+    the scene rests: derive.mechanics.equilibrium).
     """
 
     kind: str
@@ -411,6 +413,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             return Quantity("inertia", head, axis)
         if rest in ("acceleration.x", "acceleration.y"):
             return Quantity("acceleration", head, rest[-1])
+        if rest in ("equilibrium.x", "equilibrium.y") or rest == "equilibrium.angle" and body.rotates:
+            return Quantity("equilibrium", head, rest.partition(".")[2])
         if rest == "angular_acceleration" and body.rotates:
             return Quantity("angular_acceleration", head, None)
         contact = scene.contact_of(head)
@@ -435,7 +439,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
             return Quantity("contact", head, rest)
-        known = "inertia, acceleration.x, acceleration.y, angular_acceleration"
+        known = "inertia, acceleration.x, acceleration.y, angular_acceleration, equilibrium.x, equilibrium.y" + (
+            ", equilibrium.angle" if body.rotates else "")
         if contact:
             known += ", " + ", ".join(CONTACT_QUANTITIES)
         raise ValueError(f"a body has {known}; not {rest!r}")

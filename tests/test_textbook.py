@@ -31,6 +31,24 @@ def _cos(x):
 
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
+    # Where a scene rests (derive.mechanics.equilibrium). Serway & Jewett ch. 5: a ball on a
+    # string of length L pushed by a horizontal F rests at tan(theta) = F/(m g) from the vertical.
+    "bob_pushed_aside": {
+        "x": lambda s: s.L * s.F / sp.sqrt(s.F**2 + (s.m * s.g) ** 2),
+        "y": lambda s: -s.L * s.m * s.g / sp.sqrt(s.F**2 + (s.m * s.g) ** 2),
+    },
+    # Halliday ch. 12 (torques about the hinge): a uniform rod pushed at its lower end by F rests
+    # at tan(phi) = 2F/(M g) from the vertical; its angle from +x is phi - pi/2.
+    "rod_pushed_aside": {
+        "angle": lambda s: sp.atan(2 * s.F / (s.M * s.g)) - sp.pi / 2,
+        "x": lambda s: s.L / 2 * 2 * s.F / sp.sqrt(4 * s.F**2 + (s.M * s.g) ** 2),
+    },
+    # Serway & Jewett ch. 7: on a smooth incline a spring of rest length L0 fixed up the slope
+    # stretches by m g sin(theta)/k.
+    "spring_incline_rest": {
+        "x": lambda s: (s.L0 + s.m * s.g * _sin(s.theta) / s.k) * _cos(s.theta),
+        "y": lambda s: -(s.L0 + s.m * s.g * _sin(s.theta) / s.k) * _sin(s.theta),
+    },
     # Morin ch. 3 (a block on a frictionless wedge free to slide on a frictionless floor): the
     # wedge A = -m g sin(theta) cos(theta)/(M + m sin^2(theta)) (it moves back, -x); momentum
     # gives the block's m a_x = -M A; a_y = -(M + m) g sin^2(theta)/(M + m sin^2(theta));

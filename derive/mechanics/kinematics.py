@@ -131,18 +131,24 @@ def solve_gaps(scene: Scene, coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
     Raises ValueError when a gap cannot be solved for any remaining coordinate.
     """
     order = sorted(coords.all, key=lambda c: c.kind == "theta")
+    reference = {c.q: 0 for c in coords.all}
     solved: dict[sp.Symbol, sp.Expr] = {}
     for c in scene.constraints:
         for gap in c.gaps(coords):
             gap = gap.xreplace(solved)
-            for candidate in order:
-                if candidate.q in solved or not gap.has(candidate.q):
-                    continue
-                roots = sp.solve(gap, candidate.q)
+            # One root, or else (a cord's circle: y = -sqrt(L^2 - x^2) or +...) the one branch
+            # through the reference configuration, where every coordinate is zero.
+            chosen, branches = None, []
+            for k in (k for k in order if k.q not in solved and gap.has(k.q)):
+                roots = sp.solve(gap, k.q)
                 if len(roots) == 1:
-                    solved = {q: v.xreplace({candidate.q: roots[0]}) for q, v in solved.items()}
-                    solved[candidate.q] = roots[0]
+                    chosen = k, roots[0]
                     break
-            else:
+                branches.append((k, [r for r in roots if sp.simplify(r.xreplace(reference)) == 0]))
+            chosen = chosen or next(((k, through[0]) for k, through in branches if len(through) == 1), None)
+            if chosen is None:
                 raise ValueError(f"the constraint {c.name} could not be solved for any coordinate")
+            candidate, root = chosen
+            solved = {q: v.xreplace({candidate.q: root}) for q, v in solved.items()}
+            solved[candidate.q] = root
     return solved
