@@ -21,12 +21,13 @@ from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_e
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import friction
-from derive.mechanics.derivation import Derivation, Solved, Step, root, tidy
+from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step, root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import (Oscillation, OscillationError, OscillationLimit, exact_period,
                                          small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
+from derive.parts.contact import Contact
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
@@ -75,10 +76,33 @@ class Solution(CrossChecks):
         return {"lagrange": by_lagrange, "newton_euler": by_newton_euler}
 
     def _grip(self, route: str) -> tuple[sp.Expr, sp.Expr]:
-        """(normal force, friction) the stuck contact needs, in the reference configuration at rest."""
-        stuck = self.derivations[route].at(self.coordinates.at_rest_in_reference())
-        forces = self.dynamics_scene.constraint(friction.frictional(self.scene).name).unknowns()
-        return stuck.raw[forces["normal"]], stuck.raw[forces["friction"]]
+        """(normal force, friction) the stuck contact needs, in the reference configuration at rest.
+
+        A contact that presses with no force cannot grip: refused (mu_s N >= |f| has no mu_s)."""
+        stuck = self._solved(self.derivations[route], self.coordinates.at_rest_in_reference())
+        contact = friction.frictional(self.scene)
+        forces = self.dynamics_scene.constraint(contact.name).unknowns()
+        normal, grip = stuck.raw[forces["normal"]], stuck.raw[forces["friction"]]
+        self._presses(contact, normal, grip)
+        return normal, grip
+
+    def _presses(self, contact, normal: sp.Expr, grip: sp.Expr) -> None:
+        """Refuse a contact held by friction that it does not press on (friction needs N > 0)."""
+        if tidy(normal) != 0 or tidy(grip) == 0:
+            return
+        if contact.kinetic is not None:
+            raise self.problem.limit(f"decide whether the {contact.body} slips at {contact.name}, which presses "
+                                     "with no force while held")
+        raise self.problem.error("scene", f"the {contact.body} presses on {contact.surface} with no force at "
+                                          f"{contact.name}, so friction there cannot hold it (it needs "
+                                          f"{sp.sstr(tidy(grip))}): the scene cannot stay at rest")
+
+    def _solved(self, derivation: Derivation, state: dict) -> Solved:
+        """The derivation solved in a state; equations that do not fix every force are the scene's fault."""
+        try:
+            return derivation.at(state)
+        except Indeterminate as error:
+            raise self.problem.error("scene", str(error)) from None
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
     def _exact_period(self, amplitude: sp.Expr, route: str):
@@ -138,14 +162,14 @@ class Solution(CrossChecks):
         may slip, each is a Piecewise over the regimes: stuck where mu_s N >= |f|, else slipping
         with kinetic friction the way f points."""
         rest = self.coordinates.at_rest_in_reference()
-        stuck = self.derivations[route].at(rest)
+        stuck = self._solved(self.derivations[route], rest)
         if len(self.regimes) == 1:
             return stuck
         contact = self.dynamics_scene.constraint(friction.frictional(self.scene).name)
         forces = contact.unknowns()
         pieces = [stuck.raw]
         for index, regime in enumerate(self.regimes[1:], start=1):
-            solved = dict(self._regime_derivations(index)[route].at(rest).raw)
+            solved = dict(self._solved(self._regime_derivations(index)[route], rest).raw)
             solved[forces["friction"]] = regime.direction * contact.kinetic * solved[forces["normal"]]
             pieces.append(solved)
         where = self.regime_conditions(route)
@@ -447,6 +471,10 @@ class Solution(CrossChecks):
         scene = self.dynamics_scene
         result = [(sign.expression.xreplace(solved), False, sign.meaning)
                   for part in (*scene.constraints, *scene.loads) for sign in part.signs()]
+        for part in scene.constraints:  # a grip with no coefficient: it still needs something to press on
+            if isinstance(part, Contact) and part.rolling and not part.has_friction:
+                forces = part.unknowns()
+                self._presses(part, solved[forces["normal"]], solved[forces["friction"]])
         contact = friction.frictional(self.scene)
         if contact is not None:
             normal, grip = self._grip("lagrange")
@@ -466,6 +494,21 @@ class Solution(CrossChecks):
             if value is not None and (float(value) < 0 or strict and float(value) == 0):
                 return meaning
         return None
+
+    def never_holds(self) -> str | None:
+        """The meaning of the first condition that every sample of the parameter ranges breaks (a
+        wall facing the wrong way would have to pull for every variant), or None."""
+        for condition, strict, meaning in self.conditions:
+            points = sample_points(self.problem, condition)
+            if all(self.violated_at(condition, strict, point) for point in points):
+                return meaning
+        return None
+
+    @staticmethod
+    def violated_at(condition: sp.Expr, strict: bool, values: dict) -> bool:
+        """Whether these values break one condition (False where a symbol has no value)."""
+        value = numeric.evaluate(condition, values, 15)
+        return value is not None and (float(value) < 0 or strict and float(value) == 0)
 
     def _position(self, body: str) -> sp.Matrix:
         motion = self.scene.motions.get(body)

@@ -23,11 +23,13 @@ Rounding is half-to-even on the high-precision decimal value, never on a float's
 """
 from __future__ import annotations
 
+import functools
 from decimal import ROUND_HALF_EVEN, Decimal, localcontext
 from functools import cached_property, lru_cache
 
 import mpmath
 import sympy as sp
+from sympy.core.evalf import PrecisionExhausted
 
 GUARD_DIGITS = 10
 BACKENDS = ("auto", "float", "mpmath", "exact")
@@ -57,10 +59,30 @@ def round_decimal(exact: Decimal, digits: int, rounding: str = ROUND_HALF_EVEN) 
 
 def significant(value: sp.Expr, digits: int) -> str:
     """An exact (or exactly evaluable) number as a decimal string with `digits` significant digits."""
-    approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
+    try:
+        approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
+    except PrecisionExhausted:  # evalf cannot tell a part from zero: it may be exactly zero (a balance)
+        simpler = _by_identities(value)
+        try:
+            approx = sp.N(simpler, digits + GUARD_DIGITS, strict=True) if simpler != 0 else sp.Integer(0)
+        except PrecisionExhausted:
+            raise ValueError(f"cannot decide whether {value} is zero") from None
     if not approx.is_real:
         raise ValueError(f"{value} is not a real number")
     return round_decimal(Decimal(str(approx)) if approx != 0 else Decimal(0), digits)
+
+
+def _by_identities(value: sp.Expr) -> sp.Expr:
+    """An exact number simplified by trigonometric identities: its trigonometric functions of
+    rational angles written as multiples of one angle x (sin(1) and tan(1/2) as sin(2x) and tan(x)),
+    expanded and simplified, x put back (a push that exactly balances a slope cancels to 0)."""
+    angles = [f.args[0] for f in value.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Rational]
+    if not angles:
+        return sp.simplify(value)
+    base, x = functools.reduce(sp.gcd, angles), sp.Dummy("x")
+    value = value.replace(lambda f: isinstance(f, (sp.sin, sp.cos, sp.tan)) and f.args[0].is_Rational,
+                          lambda f: f.func(f.args[0] / base * x))
+    return sp.simplify(sp.expand_trig(value)).xreplace({x: base})
 
 
 def _agree(a, b, digits: int) -> bool:

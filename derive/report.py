@@ -37,6 +37,9 @@ def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: 
     broken = solution.violated(values)
     if broken:
         raise problem.error("parameters", broken)
+    never = solution.never_holds()
+    if never:
+        raise problem.error("scene", f"{never}, for every value in the parameter ranges")
     result = {}
     for name, ask in problem.asks.items():
         if names is not None and name not in names:

@@ -466,7 +466,8 @@ def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
         scale = 1 + max(abs(places.sample(v)) for v in center)
         if abs(off) > 1e-9 * scale:
             raise reader.fail(field, f"the {c.body} does not touch {c.surface} there (it is "
-                                     f"{off:.4g} m {'above' if off > 0 else 'inside'} it)")
+                                     f"{off:.4g} m {'off' if off > 0 else 'inside'} it, at the middle of the "
+                                     "parameter ranges)")
         if c.point is not None:
             continue  # a body touching at a point has its own torque balance: a cord along the normal is no clash
         normal = surface.normal_at(coords.position(c.body), radius).xreplace(rest)

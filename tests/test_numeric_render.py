@@ -74,3 +74,16 @@ def test_latex_error_prints_the_log_lines_of_the_error(tmp_path, monkeypatch):
     assert "worksheet.tex did not compile" in done.stderr and "Undefined control sequence" in done.stderr
     assert "internal error" not in done.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_an_answer_exactly_zero_by_trigonometry_prints_zero():
+    """A push that exactly balances a slope: evalf cannot tell the value from zero; the identity
+    sin(1) tan(1/2) = 2 sin(1/2)^2 settles it (it crashed with PrecisionExhausted)."""
+    import sympy as sp
+
+    from derive import numeric
+
+    half = sp.Rational(1, 2)
+    value = (-981 * sp.sin(1) * sp.tan(half) / 25 + 1962 * sp.sin(half) ** 2 / 25) / (2 * (sp.sin(half) ** 2 + 3))
+    assert numeric.significant(value, 15) == "0"
+    assert numeric.significant(value + sp.Rational(1, 10**30), 3) == "1.00e-30"

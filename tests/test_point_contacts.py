@@ -136,3 +136,27 @@ def test_a_force_and_a_pin_take_any_point_of_a_body(tmp_path):
     expected = (s["M"] / 2 + s["m"] / 3) * s["g"] / sp.tan(s["theta"])
     assert sp.simplify(push - expected) == 0
 
+
+
+@pytest.mark.parametrize("change, status, reason", [
+    # both ends grip: only the sum of the two frictions is fixed (statically indeterminate)
+    ({"head: {touches: ladder.end, on: wall}": "head: {touches: ladder.end, on: wall, grips: true}"}, 2,
+     "scene: the constraints do not determine every force"),
+    # a smooth floor: nothing pushes the ladder against the rough wall, whose friction cannot hold it
+    ({"FOOT": "", "head: {touches: ladder.end, on: wall}":
+      "head: {touches: ladder.end, on: wall, friction: {static: 0.5}}"}, 2, "presses on wall with no force at head"),
+    ({"FOOT": "", "head: {touches: ladder.end, on: wall}": "head: {touches: ladder.end, on: wall, grips: true}"},
+     2, "presses on wall with no force at head"),
+    ({"FOOT": "", "head: {touches: ladder.end, on: wall}":
+      "head: {touches: ladder.end, on: wall, friction: {kinetic: 0.3}}"}, 1, "derive cannot yet decide whether"),
+    # a wall facing away from the ladder would have to pull it, whatever the parameters
+    ({"facing: right": "facing: left"}, 2, "leaves the surface wall at head (its normal force would be negative), "
+                                           "for every value in the parameter ranges"),
+])
+def test_a_ladder_that_cannot_stand_as_stated_is_refused_with_a_reason(tmp_path, change, status, reason):
+    change = dict(change)
+    foot = change.pop("FOOT", "grips: true")
+    result = run_derive("solve", str(ladder(tmp_path, foot=foot, **change)))
+    assert result.returncode == status, result.stdout + result.stderr
+    line = result.stderr.strip()
+    assert line.count("\n") == 0 and reason in line, line

@@ -44,6 +44,16 @@ class Solved(Mapping):
         return len(self.raw)
 
 
+class Indeterminate(ValueError):
+    """The equations do not determine every acceleration and force: the constraints are
+    redundant (statically indeterminate: two contacts that both grip, a rod on two pins) or
+    contradict each other."""
+
+    def __init__(self, counts: str):
+        super().__init__(f"the constraints do not determine every force ({counts}): they are redundant "
+                         "(statically indeterminate, as two contacts that both grip) or contradict each other")
+
+
 @dataclass
 class Derivation:
     """The equations of motion of one route, solved for accelerations and constraint forces.
@@ -202,8 +212,7 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
     if matrix.free_symbols & set(unknowns):
         raise ValueError("the equations are not linear in the accelerations and forces")
     if matrix.shape[0] != matrix.shape[1]:
-        raise ValueError(f"the constraints leave {len(unknowns)} unknowns in {len(equations)} equations: "
-                         "they are redundant or impossible")
+        raise Indeterminate(f"{len(unknowns)} accelerations and forces in {len(equations)} equations")
     generated, back = _as_rational(matrix.row_join(rhs))
     # Through the dense form: DomainMatrix.from_Matrix keeps an entry that is zero only in the
     # field (a vertical cord's x-component, once its roots are simplified) as a stored sparse
@@ -213,10 +222,7 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
         domain_matrix = domain_matrix.to_field()
     reduced, pivots = domain_matrix.rref()
     if pivots != tuple(range(len(unknowns))):
-        raise ValueError(
-            f"the constraints leave {len(unknowns)} unknowns in {len(equations)} independent "
-            "equations: they are redundant or impossible"
-        )
+        raise Indeterminate(f"{len(unknowns)} accelerations and forces in {len(pivots)} independent equations")
     column = len(unknowns)
     values = {unknown: reduced.domain.to_sympy(reduced.rep.getitem(row, column)).xreplace(back)
               for row, unknown in enumerate(unknowns)}
