@@ -495,11 +495,14 @@ class Solution(CrossChecks):
                 return meaning
         return None
 
-    def never_holds(self) -> str | None:
-        """The meaning of the first condition that every sample of the parameter ranges breaks (a
-        wall facing the wrong way would have to pull for every variant), or None."""
+    def never_holds(self, values: dict[sp.Symbol, sp.Expr]) -> str | None:
+        """The meaning of the first condition that the given values leave open and that every
+        sample of the rest of the parameter ranges breaks (a wall facing the wrong way would have
+        to pull in every variant), or None."""
         for condition, strict, meaning in self.conditions:
-            points = sample_points(self.problem, condition)
+            if condition.free_symbols <= set(values):
+                continue  # decided by the values (violated)
+            points = [{**point, **values} for point in sample_points(self.problem, condition, count=20)]
             if all(self.violated_at(condition, strict, point) for point in points):
                 return meaning
         return None

@@ -37,9 +37,10 @@ def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: 
     broken = solution.violated(values)
     if broken:
         raise problem.error("parameters", broken)
-    never = solution.never_holds()
+    never = solution.never_holds(values)
     if never:
-        raise problem.error("scene", f"{never}, for every value in the parameter ranges")
+        raise problem.error("scene", f"{never}, at every sample of the parameter ranges (give values with --set "
+                                     "to answer one variant)")
     result = {}
     for name, ask in problem.asks.items():
         if names is not None and name not in names:

@@ -151,7 +151,7 @@ def test_a_force_and_a_pin_take_any_point_of_a_body(tmp_path):
       "head: {touches: ladder.end, on: wall, friction: {kinetic: 0.3}}"}, 1, "derive cannot yet decide whether"),
     # a wall facing away from the ladder would have to pull it, whatever the parameters
     ({"facing: right": "facing: left"}, 2, "leaves the surface wall at head (its normal force would be negative), "
-                                           "for every value in the parameter ranges"),
+                                           "at every sample of the parameter ranges"),
 ])
 def test_a_ladder_that_cannot_stand_as_stated_is_refused_with_a_reason(tmp_path, change, status, reason):
     change = dict(change)
