@@ -12,6 +12,7 @@ from conftest import close
 from derive import numeric, problem, report
 from derive.bench import EXTREME_CASES
 from derive.answers import Solution
+from derive.errors import ProblemError
 
 EXTREMES = EXTREME_CASES
 
@@ -71,3 +72,10 @@ def test_bad_regions_are_clear_errors(derive):
     slow_top = derive("solve", "top_precession_exact", "--set", "m=0.2", "--set", "Rcm=0.05", "--set", "I3=5e-5",
                       "--set", "I1=5e-4", "--set", "theta=0.5", "--set", "omega=30")
     assert slow_top.returncode == 2 and "no steady precession" in slow_top.stderr
+
+
+def test_a_nearly_vertical_incline_without_enough_friction_is_refused():
+    """At pi/2 - 1e-9 rolling needs mu_s >= 2/7 tan(theta) ~ 2.9e8: no mu_s of the range holds it."""
+    steep = {"M": "1", "R": "0.1", "H": "1", "theta": mpmath.nstr(mpmath.pi / 2 - mpmath.mpf("1e-9"), 45)}
+    with pytest.raises(ProblemError, match="mu_s >= mu_min does not hold"):
+        report.solve(problem.load("rolling_incline"), steep, 15)
