@@ -24,12 +24,13 @@ from derive.mechanics import friction
 from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step, root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.mechanics.kinematics import Coordinates
+from derive.mechanics import states as state_motion
 from derive.mechanics.oscillation import (Oscillation, OscillationError, OscillationLimit, exact_period,
                                          small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
 from derive.parts.contact import Contact
 from derive.problem import Ask, Problem
-from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
+from derive.scene import DYNAMIC_KINDS, RATE_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
 class Solution(CrossChecks):
     """Everything derived for one problem, computed on first use."""
@@ -132,6 +133,48 @@ class Solution(CrossChecks):
         except EquilibriumError as error:
             raise self.problem.error("ask", str(error)) from None
 
+    @cached_property
+    def states(self) -> dict[str, state_motion.Reached]:
+        """Every coordinate and velocity in each named state of the scene (derive.mechanics.states):
+        the placement moving at given rates, or where a coordinate gets to from another state."""
+        if self.scene.states and len(self.regimes) > 1:
+            raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
+                                     "give contact: rolling or sliding")
+        coords, result = self.coordinates, {}
+        for name, state in self.scene.states.items():
+            try:
+                if state.rates:
+                    result[name] = state_motion.moving(self.dynamics_scene, coords, {
+                        coords.of(body, kind): value for body, kind, value in state.rates})
+                    continue
+                start = result[state.start].values if state.start else state_motion.rest(coords)
+                body, kind, value = state.when
+                placed = self.scene.bodies[body]
+                offset = placed.angle if kind == "theta" else placed.at[0 if kind == "x" else 1]
+                result[name] = state_motion.reach(self.dynamics_scene, coords, start, coords.of(body, kind),
+                                                  value - offset, self.derivations["lagrange"], self._sample)
+            except state_motion.StateLimit as error:
+                raise self.problem.limit(f"{error} (scene.states.{name})") from None
+            except state_motion.StateError as error:
+                raise self.problem.error(f"scene.states.{name}", str(error)) from None
+        return result
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes, a few states
+    def in_state(self, route: str, name: str | None) -> Solved:
+        """One route's accelerations and forces in a named state (None: the placement at rest)."""
+        if name is None:
+            return self.at_reference(route)
+        return self._solved(self.derivations[route], self.states[name].values)
+
+    def _rate(self, q: Quantity, name: str) -> sp.Expr:
+        """A body's velocity, speed or angular velocity in a named state."""
+        values, coords = self.states[name].values, self.coordinates
+        if q.kind == "angular_velocity":
+            return values[coords.of(q.target, "theta").u]
+        if q.kind == "velocity":
+            return values[coords.of(q.target, q.detail).u]
+        return root(values[coords.of(q.target, "x").u] ** 2 + values[coords.of(q.target, "y").u] ** 2)
+
     def _route_expression(self, ask: Ask, route: str) -> sp.Expr:
         q = ask.quantity
         if q.kind == "equilibrium":
@@ -143,8 +186,10 @@ class Solution(CrossChecks):
                 raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
         if q.kind == "oscillation":
             return self._exact_period(ask.amplitude, route)[0]
+        if q.kind in RATE_KINDS:
+            return self._rate(q, ask.state)
         derivation = self.derivations[route]
-        solved = self.at_reference(route)
+        solved = self.in_state(route, ask.state)
         if q.kind == "acceleration":
             return solved[self.coordinates.of(q.target, q.detail).a]
         if q.kind == "angular_acceleration":
@@ -152,7 +197,7 @@ class Solution(CrossChecks):
         if q.kind == "force":
             return solved[self.dynamics_scene.constraint(q.target).unknowns()[q.detail]]
         if q.kind == "contact":
-            return self._contact_expression(q.target, q.detail, derivation)
+            return self._contact_expression(q.target, q.detail, derivation, ask.state)
         raise AssertionError(q.kind)
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes
@@ -205,9 +250,10 @@ class Solution(CrossChecks):
         index = self.regime_index(values)
         return None if index is None else self.regimes[index].name or None
 
-    def _contact_expression(self, body: str, detail: str, derivation: Derivation) -> sp.Expr:
-        """Quantities of a body on a surface, from one route's accelerations and forces."""
-        solved = self.at_reference(derivation.route)
+    def _contact_expression(self, body: str, detail: str, derivation: Derivation, state: str | None = None) -> sp.Expr:
+        """Quantities of a body on a surface, from one route's accelerations and forces (its
+        normal force and friction also in a named state)."""
+        solved = self.in_state(derivation.route, state)
         contact = self.dynamics_scene.contact_of(body)
         surface = self.scene.surfaces[contact.surface]
         forces = contact.unknowns()
@@ -471,6 +517,12 @@ class Solution(CrossChecks):
         scene = self.dynamics_scene
         result = [(sign.expression.xreplace(solved), False, sign.meaning)
                   for part in (*scene.constraints, *scene.loads) for sign in part.signs()]
+        for name in dict.fromkeys(a.state for a in self.problem.asks.values() if a.state is not None):
+            # in each state asked: the motion gets there, and the parts keep their signs there
+            reached, forces = self.states[name], self.in_state("lagrange", name).raw
+            result += [(expr, True, f"{meaning} ({name})") for expr, meaning in reached.positive]
+            result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
+                       for part in (*scene.constraints, *scene.loads) for sign in part.signs()]
         for part in scene.constraints:  # a grip with no coefficient: it still needs something to press on
             if isinstance(part, Contact) and part.rolling and not part.has_friction:
                 forces = part.unknowns()
@@ -618,6 +670,14 @@ class Solution(CrossChecks):
                   for route, d in self.derivations.items()}
         if needed and len(self.regimes) > 1:
             result.update(self._regime_steps(needed, rest))
+        for name in dict.fromkeys(a.state for a in self.problem.asks.values() if a.state is not None):
+            result[f"the state {name}"] = list(self.states[name].steps)
+            in_state = self._needed_unknowns(name)
+            for route, d in self.derivations.items():
+                if in_state:
+                    result[route] = [*(result[route] or d.steps),
+                                     d.solving_step([u for u in d.unknowns if u in in_state], self.states[name].values,
+                                                    f"in the state {name}")]
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps
@@ -660,11 +720,14 @@ class Solution(CrossChecks):
                                              "in the reference configuration, at rest")]
         return result
 
-    def _needed_unknowns(self) -> set[sp.Symbol]:
-        """The accelerations and forces the asked quantities are made of."""
+    def _needed_unknowns(self, state: str | None = None) -> set[sp.Symbol]:
+        """The accelerations and forces the quantities asked in a state (None: the placement at
+        rest) are made of."""
         needed = set()
         for ask in self.problem.asks.values():
             q = ask.quantity
+            if ask.state != state:
+                continue
             if q.kind == "acceleration":
                 needed.add(self.coordinates.of(q.target, q.detail).a)
             elif q.kind == "angular_acceleration":

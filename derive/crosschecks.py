@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive import inertia, limits, units
-from derive.mechanics import gyroscope, lagrange, many_bodies, orbits, paths, top
+from derive.mechanics import gyroscope, lagrange, many_bodies, orbits, paths, states, top
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
@@ -56,6 +56,8 @@ class CrossChecks:
         if kinds & DYNAMIC_KINDS:
             result.append(self._routes_check())
             result.append(self._work_energy_check())
+        if any(state.when for state in self.scene.states.values()):
+            result.append(self._states_check())
         if kinds & {"event", "after"}:
             result.append(self._event_check())
         if "orbit" in kinds:
@@ -142,6 +144,35 @@ class CrossChecks:
         power = sp.trigsimp(sp.expand(lagrange.nonconservative_power(scene, coords)))
         return {"kinetic_translational": translational, "kinetic_rotational": rotational,
                 "potential": potential, "power_nonconservative": power}
+
+    def _states_check(self) -> Check:
+        """Each state reached by the motion (energy, derive.mechanics.states) against Newton–Euler's
+        equations integrated numerically from its start until the coordinate gets there, at the
+        middle of the parameter ranges: every coordinate and velocity within 1e-7."""
+        coords, newton_euler = self.coordinates, self.derivations["newton_euler"]
+        for name, state in self.scene.states.items():
+            if state.when is None:
+                continue
+            reached = self.states[name].values
+            start = self.states[state.start].values if state.start else states.rest(coords)
+            body, kind, value = state.when
+            target = coords.of(body, kind)
+            symbols = set().union(*(sp.sympify(v).free_symbols for v in (*reached.values(), *start.values())))
+            symbols |= set().union(*(e.free_symbols for e in newton_euler.balances)) - coords.state
+            symbols -= set(newton_euler.unknowns)
+            values = sample_points(self.problem, sp.Add(*symbols), count=1)[0] if symbols else {}
+            expected = {k: float(sp.N(sp.sympify(v).xreplace(values), 20)) for k, v in reached.items()}
+            distance = abs(expected[target.q] - float(sp.N(sp.sympify(start[target.q]).xreplace(values))))
+            horizon = 100 * distance / max(abs(expected[target.u]), 1e-9) + 1
+            simulated = states.integrate_to(newton_euler, coords, values, start, target, expected[target.q], horizon)
+            if not simulated:
+                raise CheckFailure(f"{self.problem.id}: Newton–Euler's motion from the start does not reach the "
+                                   f"state {name} in {horizon:.3g} s")
+            worst = max(abs(simulated[k] - expected[k]) / (1 + abs(expected[k])) for k in expected)
+            if worst > 1e-7:
+                raise CheckFailure(f"{self.problem.id}: the state {name} by energy and by Newton–Euler's motion "
+                                   f"differ by {worst:.2e}")
+        return Check("states", True, "numeric", "every state reached: energy against Newton–Euler's motion, integrated")
 
     def _work_energy_check(self) -> Check:
         """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,

@@ -26,7 +26,7 @@ from derive.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QU
 from derive.errors import EngineLimit, ProblemError
 from derive.reader import Loader, Reader
 from derive.parts.contact import Contact
-from derive.scene import DYNAMIC_KINDS, Quantity, Scene, parse_quantity
+from derive.scene import DYNAMIC_KINDS, RATE_KINDS, STATE_KINDS, Quantity, Scene, parse_quantity
 from derive.scene_file import read_scene
 
 DEFAULT_SIG_FIGS = 3
@@ -93,6 +93,7 @@ class Ask:
     amplitude: sp.Expr | None = None
     exact: str | None = None  # this ask approximates that one
     tolerance: str | None = None  # "2%" or an absolute amount in `unit`; None: the last digit shown
+    state: str | None = None  # read in this state of the scene (`in:`); None: the placement at rest
 
 
 @dataclass(frozen=True)
@@ -223,7 +224,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
                               optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift", "amplitude",
-                                        "exact", "tolerance"))
+                                        "exact", "tolerance", "in"))
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -245,11 +246,27 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
             _amplitude(reader, spec.get("amplitude"), f"{field}.amplitude", quantity),
             spec.get("exact"),
             _tolerance(reader, spec.get("tolerance"), f"{field}.tolerance"),
+            _state(reader, spec.get("in"), f"{field}.in", scene, quantity, path),
         )
     for name, ask in result.items():
         if ask.exact is not None and (ask.exact not in result or ask.exact == name):
             raise reader.fail(f"ask.{name}.exact", f"expected another ask of this problem (asks: {', '.join(result)})")
     return result
+
+
+def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, path: str) -> str | None:
+    """The state an ask is read in (`in: vertical`): rates need one; accelerations and forces take one."""
+    if raw is None:
+        if quantity.kind in RATE_KINDS:
+            raise reader.fail(field, f"{path} is read in a state: give in: STATE (states: "
+                                     f"{', '.join(scene.states) or 'none; add scene.states'})")
+        return None
+    if raw not in scene.states:
+        raise reader.fail(field, f"no state {raw!r} (states: {', '.join(scene.states) or 'none; add scene.states'})")
+    if quantity.kind not in STATE_KINDS or quantity.kind == "contact" and quantity.detail not in ("normal_force",
+                                                                                                  "friction"):
+        raise reader.fail(field, f"{path} is not read in a state: only accelerations, forces and rates are")
+    return raw
 
 
 def _tolerance(reader: Reader, raw, field: str) -> str | None:
@@ -384,6 +401,11 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
     if scene.events and not kinds & {"event", "after"}:
         raise reader.fail("scene.events", "no ask reads the event (event.QUANTITY or BODY.after.QUANTITY): "
                                           "remove it, or ask what it changes")
+    read = {a.state for a in asks.values()} | {s.start for s in scene.states.values()}
+    unread = next((name for name in scene.states if name not in read), None)
+    if unread is not None:
+        raise reader.fail(f"scene.states.{unread}", "no ask is read in this state (in: STATE) and no state starts "
+                                                    "from it: remove it, or ask what it holds")
     if not kinds & DYNAMIC_KINDS:
         for c in scene.constraints:
             if isinstance(c, Contact) and c.has_friction:

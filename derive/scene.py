@@ -235,6 +235,25 @@ def constraint_bodies(part: Part) -> tuple[str, ...]:
 
 
 @dataclass(frozen=True)
+class State:
+    """A named state of a scene (`states:`), where asks may be read (`in: STATE`).
+
+    Either the placement moving at given `rates` ((body, coordinate kind, value) with kind x, y
+    or theta), or the configuration where one body coordinate reaches a value (`when`: an
+    absolute x, y of the center or angle, as `at` and `angle` are given), reached by the motion
+    from the state `start` (None: the placement at rest).
+
+    >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
+    True
+    """
+
+    name: str
+    rates: tuple[tuple[str, str, sp.Expr], ...] = ()
+    when: tuple[str, str, sp.Expr] | None = None
+    start: str | None = None
+
+
+@dataclass(frozen=True)
 class Scene:
     """Bodies and parts: the constraints (parts with unknown forces: pins, sliders, welds, cords,
     contacts), gravity and the other loads (forces, torques, springs, dampers, pulled cords);
@@ -253,6 +272,7 @@ class Scene:
     wave: StandingWave | None = None
     internal_forces: int | None = None
     rotations: dict[str, Rotation] = field(default_factory=dict)
+    states: dict[str, State] = field(default_factory=dict)
 
     @property
     def parts(self) -> tuple[Part, ...]:
@@ -294,7 +314,11 @@ class Scene:
 
 #: Quantities that come out of the equations of motion (both routes).
 DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation",
-                 "equilibrium"}
+                 "equilibrium", "velocity", "angular_velocity", "speed"}
+#: Read in a state (`in: STATE`): the rates only there, the others at the placement at rest without it.
+STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velocity", "angular_velocity", "speed"}
+#: What a state gives: read only with `in: STATE`.
+RATE_KINDS = {"velocity", "angular_velocity", "speed"}
 #: Answered by a small system of derive.mechanics, with a second route of its own.
 SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rotation", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
@@ -413,6 +437,10 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             return Quantity("inertia", head, axis)
         if rest in ("acceleration.x", "acceleration.y"):
             return Quantity("acceleration", head, rest[-1])
+        if rest in ("velocity.x", "velocity.y"):
+            return Quantity("velocity", head, rest[-1])
+        if rest == "speed" or rest == "angular_velocity" and body.rotates:
+            return Quantity(rest, head, None)
         if rest in ("equilibrium.x", "equilibrium.y") or rest == "equilibrium.angle" and body.rotates:
             return Quantity("equilibrium", head, rest.partition(".")[2])
         if rest == "angular_acceleration" and body.rotates:
@@ -439,8 +467,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
             return Quantity("contact", head, rest)
-        known = "inertia, acceleration.x, acceleration.y, angular_acceleration, equilibrium.x, equilibrium.y" + (
-            ", equilibrium.angle" if body.rotates else "")
+        known = ("inertia, acceleration.x, acceleration.y, velocity.x, velocity.y, speed, equilibrium.x, equilibrium.y"
+                 + (", angular_acceleration, angular_velocity, equilibrium.angle" if body.rotates else ""))
         if contact:
             known += ", " + ", ".join(CONTACT_QUANTITIES)
         raise ValueError(f"a body has {known}; not {rest!r}")

@@ -24,7 +24,7 @@ from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
 from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Bounce, InternalTurn, Motion, Orbit,
-                          Rotation, Scene, Skid, SpinningWheel, StandingWave, Stick, Top)
+                          Rotation, Scene, Skid, SpinningWheel, StandingWave, State, Stick, Top)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "touches": contact.read}
@@ -223,6 +223,56 @@ def _events(reader: Reader, raw, bodies: dict[str, Body]) -> tuple:
             angle = reader.dimensioned(detail["angle"], f"{field}.{kind}.angle", "rad", "an angle")
             result.append(InternalTurn(f"event{i}", detail["body"], detail["relative_to"], angle))
     return tuple(result)
+
+
+#: How a state names a body's coordinates: (kind, unit) of a position (`when:`) and of a rate (`rates:`).
+STATE_POSITIONS = {"x": ("x", "m"), "y": ("y", "m"), "angle": ("theta", "rad")}
+STATE_RATES = {"velocity.x": ("x", "m/s"), "velocity.y": ("y", "m/s"), "angular_velocity": ("theta", "rad/s")}
+
+
+def _states(reader: Reader, raw, bodies: dict[str, Body]) -> dict[str, State]:
+    """`states: {spinning: {rates: {wheel.angular_velocity: w0}}, vertical: {when: {rod.angle: -pi/2},
+    from: spinning}}`: each state's `from` one named above it (no state reached from itself)."""
+    result = {}
+    for name, spec in _named(reader, raw, "states").items():
+        field = f"scene.states.{name}"
+        if name in bodies or name in ("placement", "ground"):
+            raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
+        spec = reader.mapping(spec, field, optional=("rates", "when", "from"))
+        if ("rates" in spec) == ("when" in spec):
+            raise reader.fail(field, "a state gives rates: (at the placement) or when: (a position reached)")
+        if "rates" in spec:
+            if "from" in spec:
+                raise reader.fail(f"{field}.from", "rates: are given at the placement; from: goes with when:")
+            rates = reader.mapping(spec["rates"], f"{field}.rates", free=True)
+            if not rates:
+                raise reader.fail(f"{field}.rates", "give at least one rate, e.g. wheel.angular_velocity: omega0")
+            result[name] = State(name, rates=tuple(_state_entry(reader, key, value, f"{field}.rates", bodies, STATE_RATES)
+                                                   for key, value in rates.items()))
+            continue
+        when = reader.mapping(spec["when"], f"{field}.when", free=True)
+        if len(when) != 1:
+            raise reader.fail(f"{field}.when", "give one position, e.g. rod.angle: -pi/2")
+        (key, value), = when.items()
+        start = spec.get("from")
+        if start is not None and start not in result:
+            raise reader.fail(f"{field}.from", f"expected a state named above this one (states: "
+                                               f"{', '.join(result) or 'none'})")
+        result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies, STATE_POSITIONS),
+                             start=start)
+    return result
+
+
+def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body], kinds: dict) -> tuple:
+    """(body, coordinate kind, value) from `BODY.angle: -pi/2` (or a rate)."""
+    head, _, rest = str(key).partition(".")
+    if head not in bodies:
+        raise reader.fail(f"{field}.{key}", f"no body {head!r} (bodies: {', '.join(bodies)})")
+    if rest not in kinds or kinds[rest][0] == "theta" and not bodies[head].rotates:
+        allowed = [k for k, (kind, _) in kinds.items() if kind != "theta" or bodies[head].rotates]
+        raise reader.fail(f"{field}.{key}", f"a state gives {head}'s {', '.join(allowed)}")
+    kind, unit = kinds[rest]
+    return head, kind, reader.dimensioned(value, f"{field}.{key}", unit, "a position" if unit in ("m", "rad") else "a rate")
 
 
 PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
@@ -492,7 +542,7 @@ def read_scene(reader: Reader, raw) -> Scene:
     """The scene section, validated, as a Scene."""
     raw = reader.mapping(raw, "scene", optional=("bodies", "points", "surfaces", "joints", "cords", "constraints",
                                                  "loads", "orbit", "events", "top", "spinning_wheel", "standing_wave",
-                                                 "internal_forces"))
+                                                 "internal_forces", "states"))
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     top = _top(reader, raw["top"]) if "top" in raw else None
     wheel = _wheel(reader, raw["spinning_wheel"]) if "spinning_wheel" in raw else None
@@ -563,8 +613,9 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
     rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
                  for n, spec in bodies_raw.items() if "rotation" in spec}
+    states = _states(reader, raw.get("states"), bodies)
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, events, top, wheel,
-                  wave, internal, rotations)
+                  wave, internal, rotations, states)
     _check_geometry(reader, places, scene)
     return scene
 

@@ -58,23 +58,18 @@ def _values(solution: Solution) -> dict[sp.Symbol, sp.Expr]:
 
 def _rhs(solution: Solution, values, regime: int):
     """d/dt of (q, u, W): velocities, the accelerations and the power of the non-conservative
-    forces, in one friction regime. Lagrange's equations are linear in the accelerations and
-    forces: they are solved numerically at each step (numpy), not symbolically once: with
-    cords the general symbolic solution is large."""
+    forces, in one friction regime (Lagrange's route)."""
     coords = solution.coordinates
     lagrange = solution._regime_derivations(regime)["lagrange"]
     scene = solution.regimes[regime].scene
     state = [c.q for c in coords.all] + [c.u for c in coords.all]
-    matrix, rhs_vector = sp.linear_eq_to_matrix([(e.lhs - e.rhs).xreplace(values) for e in lagrange.equations],
-                                                lagrange.unknowns)
-    system = sp.lambdify(state, [matrix, rhs_vector], "numpy")
+    solve = lagrange.numeric(values)
     power = sp.lambdify(state + lagrange.unknowns,
                         nonconservative_power(scene, coords).xreplace(values), "numpy")
     n = len(coords.all)
 
     def rhs(t, y):
-        a, b = system(*y[:2 * n])
-        unknowns = np.linalg.solve(np.asarray(a, dtype=float), np.asarray(b, dtype=float).ravel())
+        unknowns = solve(y[:2 * n])
         return np.concatenate([y[n:2 * n], unknowns[:n], [power(*y[:2 * n], *unknowns)]])
     return rhs, state
 

@@ -157,6 +157,22 @@ class Derivation:
             rows.append(sp.Eq(self._slope_term(i, state) + along.xreplace({s: 0}), 0, evaluate=False))
         return rows
 
+    def numeric(self, values: dict[sp.Symbol, sp.Expr]):
+        """A function of the state array (every coordinate, then every velocity) giving every
+        unknown (accelerations, then forces) at these parameter `values`: the general equations,
+        linear in the unknowns, solved numerically at each call (numpy): with cords the general
+        symbolic solution is large. For simulations."""
+        import numpy as np  # only simulations need it
+
+        state = [c.q for c in self.coords.all] + [c.u for c in self.coords.all]
+        matrix, rhs = sp.linear_eq_to_matrix([(e.lhs - e.rhs).xreplace(values) for e in self.equations], self.unknowns)
+        system = sp.lambdify(state, [matrix, rhs], "numpy")
+
+        def unknowns(y):
+            a, b = system(*y)
+            return np.linalg.solve(np.asarray(a, dtype=float), np.asarray(b, dtype=float).ravel())
+        return unknowns
+
     def solving_step(self, unknowns, state: dict[sp.Symbol, sp.Expr], where: str) -> Step:
         solved = self.at(state)
         return Step(f"Solving {where}", tuple(sp.Eq(u, solved[u]) for u in unknowns))
