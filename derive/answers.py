@@ -141,23 +141,31 @@ class Solution(CrossChecks):
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
         coords, result = self.coordinates, {}
+        resolve = functools.partial(self._within_ranges, absolute=True)
         for name, state in self.scene.states.items():
             try:
-                if state.rates:
-                    result[name] = state_motion.moving(self.dynamics_scene, coords, {
-                        coords.of(body, kind): value for body, kind, value in state.rates})
-                    continue
-                start = result[state.start].values if state.start else state_motion.rest(coords)
-                body, kind, value = state.when
-                placed = self.scene.bodies[body]
-                offset = placed.angle if kind == "theta" else placed.at[0 if kind == "x" else 1]
-                result[name] = state_motion.reach(self.dynamics_scene, coords, start, coords.of(body, kind),
-                                                  value - offset, self.derivations["lagrange"], self._sample)
+                with limits.time_limit(f"finding the state {name}"):
+                    reached = self._state(state, result)
+                # |L0 - d|, |sin(theta0)|: in the form the parameter ranges give
+                result[name] = state_motion.Reached({k: resolve(v) for k, v in reached.values.items()},
+                                                    tuple((resolve(e), m) for e, m in reached.positive), reached.steps)
             except state_motion.StateLimit as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except state_motion.StateError as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
         return result
+
+    def _state(self, state, found: dict) -> state_motion.Reached:
+        coords = self.coordinates
+        if state.rates:
+            return state_motion.moving(self.dynamics_scene, coords, {coords.of(body, kind): value
+                                                                     for body, kind, value in state.rates})
+        start = found[state.start].values if state.start else state_motion.rest(coords)
+        body, kind, value = state.when
+        placed = self.scene.bodies[body]
+        offset = placed.angle if kind == "theta" else placed.at[0 if kind == "x" else 1]
+        return state_motion.reach(self.dynamics_scene, coords, start, coords.of(body, kind), value - offset,
+                                  self.derivations["lagrange"], self._sample)
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes, a few states
     def in_state(self, route: str, name: str | None) -> Solved:

@@ -331,7 +331,50 @@ EXPECTED = {
 # from every answer: the cords' radicals must simplify.
 EXPECTED["stepped_pulley_deep"] = EXPECTED["stepped_pulley"]
 
-FILES = sorted(FOLDER.glob("*.yaml"))
+# States (issue 12): rates and forces where the motion gets to, from the work-energy theorem.
+EXPECTED.update({
+    # Serway & Jewett Ex. 10.11: omega = sqrt(3g/L) at the lowest position; the hinge then holds
+    # M g + M omega^2 L/2 = 5 M g/2 (Newton's second law toward the pin); no torque: alpha = 0.
+    "rod_swings_down": {
+        "omega": lambda s: sp.sqrt(3 * s.g / s.L),
+        "v": lambda s: sp.sqrt(3 * s.g / s.L) * s.L / 2,
+        "F": lambda s: 5 * s.M * s.g / 2,
+        "alpha": lambda s: 0,
+    },
+    # Serway & Jewett ch. 8: v_B = sqrt(2 g L (1 - cos theta_A)), T_B = m g (3 - 2 cos theta_A).
+    "pendulum_bob_released": {
+        "v": lambda s: sp.sqrt(2 * s.g * s.L * (1 - _cos(s.theta0))),
+        "T": lambda s: s.m * s.g * (3 - 2 * _cos(s.theta0)),
+    },
+    # Halliday ch. 8 and 6: v^2 = v0^2 - 2 g L where the cord is level, T = m v^2/L there; just
+    # after the push T0 = m g + m v0^2/L.
+    "bob_given_speed": {
+        "v": lambda s: sp.sqrt(s.v0**2 - 2 * s.g * s.L),
+        "T": lambda s: s.m * (s.v0**2 - 2 * s.g * s.L) / s.L,
+        "T0": lambda s: s.m * s.g + s.m * s.v0**2 / s.L,
+    },
+    # Serway & Jewett ch. 8 problems: from the rim, v = sqrt(2 g R) and N = 3 m g at the bottom.
+    "block_in_bowl": {
+        "v": lambda s: sp.sqrt(2 * s.g * s.R),
+        "N": lambda s: 3 * s.m * s.g,
+    },
+    # Serway & Jewett Ex. 10.13: v = sqrt(10 g h/7) rolling without slipping; omega = v/R.
+    "sphere_rolls_down": {
+        "v": lambda s: sp.sqrt(10 * s.g * s.h / 7),
+        "omega": lambda s: sp.sqrt(10 * s.g * s.h / 7) / s.R,
+    },
+    # Serway & Jewett Eq. 10.25: tau phi = I omega^2/2 from rest, I = M R^2/2.
+    "flywheel_torque_work": {
+        "omega": lambda s: sp.sqrt(2 * s.tau * s.phi / (s.M * s.R**2 / 2)),
+    },
+    # Serway & Jewett ch. 7: v = d sqrt(k/m) where the spring is relaxed; the floor holds m g.
+    "spring_launch": {
+        "v": lambda s: s.d * sp.sqrt(s.k / s.m),
+        "N": lambda s: s.m * s.g,
+    },
+})
+
+FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))
 
 
 def _points_in_ranges(problem, fractions=(sp.Rational(1, 10), sp.Rational(1, 2), sp.Rational(9, 10))):
@@ -349,6 +392,7 @@ def _points_in_ranges(problem, fractions=(sp.Rational(1, 10), sp.Rational(1, 2),
 def test_every_file_has_its_closed_forms():
     assert {f.stem for f in FILES} == set(EXPECTED)
     assert len(FILES) >= 30
+    assert len(list((FOLDER / "states").glob("*.yaml"))) >= 7
 
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])

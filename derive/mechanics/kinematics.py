@@ -124,31 +124,79 @@ class Coordinates:
         return {s for c in self.all for s in (c.q, c.u)}
 
 
-def solve_gaps(scene: Scene, coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
+def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate | None = None,
+               heading: dict | None = None) -> dict[sp.Symbol, sp.Expr]:
     """Solve every constraint gap for one coordinate, preferring translations to angles;
-    the coordinates left over are the free ones.
+    the coordinates left over are the free ones. `sample` (an expression's float value at sample
+    parameters) tells the branch through the reference where simplification cannot (a cord
+    placed at an angle: |sin(theta0)| is sin(theta0) only over the parameter ranges). `keep` is
+    left free where another coordinate can be solved for instead (a state's coordinate: a bob's x
+    where it passes the bottom, where y is extremal and x(y) has no derivative). `heading` (+1,
+    -1 or 0 by coordinate symbol: the way a motion leaves the reference) picks between two
+    branches that both pass through it (a bead leaving a bowl's rim downward).
 
     Raises ValueError when a gap cannot be solved for any remaining coordinate.
     """
-    order = sorted(coords.all, key=lambda c: c.kind == "theta")
+    order = sorted(coords.all, key=lambda c: (c == keep, c.kind == "theta"))
     reference = {c.q: 0 for c in coords.all}
     solved: dict[sp.Symbol, sp.Expr] = {}
     for c in scene.constraints:
         for gap in c.gaps(coords):
             gap = gap.xreplace(solved)
             # One root, or else (a cord's circle: y = -sqrt(L^2 - x^2) or +...) the one branch
-            # through the reference configuration, where every coordinate is zero.
-            chosen, branches = None, []
-            for k in (k for k in order if k.q not in solved and gap.has(k.q)):
-                roots = sp.solve(gap, k.q)
-                if len(roots) == 1:
-                    chosen = k, roots[0]
-                    break
-                branches.append((k, [r for r in roots if sp.simplify(r.xreplace(reference)) == 0]))
-            chosen = chosen or next(((k, through[0]) for k, through in branches if len(through) == 1), None)
+            # through the reference configuration, where every coordinate is zero, or else the one
+            # that moves the way `heading` says; `keep` last of all.
+            candidates = [k for k in order if k.q not in solved and gap.has(k.q)]
+            found = {k: _roots(gap, k.q) for k in candidates}
+            through = {k: [r for r in roots if _through(r.xreplace(reference), sample)] for k, roots in found.items()}
+            picks = [lambda k: found[k][0] if len(found[k]) == 1 else None,
+                     lambda k: through[k][0] if len(through[k]) == 1 else None,
+                     lambda k: _heading(through[k], k, heading, sample)]
+            chosen = next(((k, root) for pick in picks for k in candidates if k != keep
+                           if (root := pick(k)) is not None), None)
+            chosen = chosen or next(((k, root) for pick in picks for k in candidates if k == keep
+                                     if (root := pick(k)) is not None), None)
             if chosen is None:
                 raise ValueError(f"the constraint {c.name} could not be solved for any coordinate")
             candidate, root = chosen
             solved = {q: v.xreplace({candidate.q: root}) for q, v in solved.items()}
             solved[candidate.q] = root
     return solved
+
+
+def _through(offset: sp.Expr, sample) -> bool:
+    """Whether a root passes through the reference configuration (its value there is zero)."""
+    if sp.simplify(offset) == 0:
+        return True
+    if sample is None:
+        return False
+    try:
+        return abs(sample(offset)) <= 1e-12
+    except (TypeError, ValueError):
+        return False
+
+
+def _roots(gap: sp.Expr, q: sp.Symbol) -> list[sp.Expr]:
+    """The roots of a gap in one coordinate; none where sympy cannot solve for it (a cord's
+    tangent angles in a block's position)."""
+    try:
+        return sp.solve(gap, q)
+    except NotImplementedError:
+        return []
+
+
+def _heading(branches: list[sp.Expr], k: Coordinate, heading: dict | None, sample) -> sp.Expr | None:
+    """Of branches through the reference, the one that moves k the way `heading` says for a small
+    step of the other coordinates the way they head."""
+    if heading is None or sample is None or not heading.get(k.q) or len(branches) < 2:
+        return None
+    step = {q: sp.Rational(sign, 10**6) for q, sign in heading.items() if q != k.q}
+    matching = []
+    for branch in branches:
+        try:
+            value = sample(branch.xreplace(step).xreplace({q: 0 for q in branch.free_symbols if q in heading}))
+        except (TypeError, ValueError):
+            continue
+        if value * heading[k.q] > 0:
+            matching.append(branch)
+    return matching[0] if len(matching) == 1 else None

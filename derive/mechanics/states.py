@@ -72,8 +72,8 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     """The placement moving at the given rates, the other velocities fixed by the constraints
     (dg/dt = 0 at the placement); refused where the rates leave a velocity open or break a
     constraint."""
-    placement = {c.q: 0 for c in coords.all}
-    given = {c.u: value for c, value in rates.items()}
+    placement = {c.q: sp.Integer(0) for c in coords.all}
+    given = {c.u: sp.sympify(value) for c, value in rates.items()}
     rows = [coords.ddt(g).xreplace(placement).xreplace(given) for c in scene.constraints for g in c.gaps(coords)]
     others = [c.u for c in coords.all if c.u not in given]
     solved = {}
@@ -102,18 +102,25 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], ta
     along the one free coordinate. `derivation` gives the direction a start at rest moves in;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
     assumptions leave open."""
+    decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed
+    heading = _heading(start, coords, derivation, decide)
+    heading[target.q] = 1 if decide(value - start[target.q]) > 0 else -1
     try:
-        dependent = solve_gaps(scene, coords)
-    except ValueError as error:
+        dependent = solve_gaps(scene, coords, sample, keep=target, heading=heading)
+    except (ValueError, NotImplementedError) as error:
         raise StateLimit(f"find where the scene gets to: {error}") from None
     free = [c for c in coords.all if c.q not in dependent]
     if len(free) != 1:
         raise StateLimit(f"find a state reached by a scene of {len(free)} degrees of freedom (energy fixes one rate)")
     (coordinate,) = free
     s, speed = coordinate.q, coordinate.u
-    decide = sample or _assumed
     s0, u0 = start[s], start[speed]
-    direction = _direction(u0, start, coordinate, derivation, decide)
+    # From rest a coordinate with no acceleration at the start (a bead's x at a bowl's rim, where
+    # it first falls straight down) moves the way the other coordinates take it: toward the state
+    # (Newton–Euler's motion, integrated at every solve, checks that it gets there).
+    direction = _direction(u0, start, coordinate, derivation, decide) or (heading[s] if s == target.q else 0)
+    if not direction:
+        raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
     s1 = _where(dependent.get(target.q, target.q), value, s, s0, direction, decide)
 
     positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
@@ -170,15 +177,28 @@ def _holds_unknowns(expr: sp.Expr, scene: Scene) -> bool:
     return bool(expr.free_symbols & forces)
 
 
+def _heading(start: dict, coords: Coordinates, derivation: Derivation, decide) -> dict[sp.Symbol, int]:
+    """The way each coordinate leaves the start (+1, -1, 0): along its velocities, or from rest
+    along its accelerations."""
+    if any(start[c.u] != 0 for c in coords.all):
+        motion = {c.q: start[c.u] for c in coords.all}
+    else:
+        solved = derivation.at(start).raw
+        motion = {c.q: tidy(solved[c.a]) for c in coords.all}
+    signs = {}
+    for q, value in motion.items():
+        number = 0.0 if value == 0 else decide(value)
+        signs[q] = 1 if number > 1e-12 else -1 if number < -1e-12 else 0
+    return signs
+
+
 def _direction(u0: sp.Expr, start: dict, coordinate: Coordinate, derivation: Derivation, decide) -> int:
     """+1 or -1: the way the free coordinate moves from the start (its rate, or from rest the way
-    it is pushed); refused where it stays put."""
+    it is pushed); 0 where it is not pushed."""
     if u0 != 0:
         return 1 if decide(u0) > 0 else -1
-    pushed = derivation.at(start).raw[coordinate.a]
-    if tidy(pushed) == 0:
-        raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
-    return 1 if decide(pushed) > 0 else -1
+    pushed = tidy(derivation.at(start).raw[coordinate.a])
+    return 0 if pushed == 0 else 1 if decide(pushed) > 0 else -1
 
 
 def _where(position: sp.Expr, value: sp.Expr, s: sp.Symbol, s0: sp.Expr, direction: int, decide) -> sp.Expr:
