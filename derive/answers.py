@@ -140,7 +140,7 @@ class Solution(CrossChecks):
         if self.scene.states and len(self.regimes) > 1:
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
-        coords, result = self.coordinates, {}
+        result = {}
         resolve = functools.partial(self._within_ranges, absolute=True)
         for name, state in self.scene.states.items():
             try:
