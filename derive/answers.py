@@ -148,7 +148,8 @@ class Solution(CrossChecks):
                     reached = self._state(state, result)
                 # |L0 - d|, |sin(theta0)|: in the form the parameter ranges give
                 result[name] = state_motion.Reached({k: resolve(v) for k, v in reached.values.items()},
-                                                    tuple((resolve(e), m) for e, m in reached.positive), reached.steps)
+                                                    tuple((resolve(e), m) for e, m in reached.positive), reached.steps,
+                                                    reached.along)
             except state_motion.StateLimit as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except state_motion.StateError as error:
@@ -681,11 +682,10 @@ class Solution(CrossChecks):
         for name in dict.fromkeys(a.state for a in self.problem.asks.values() if a.state is not None):
             result[f"the state {name}"] = list(self.states[name].steps)
             in_state = self._needed_unknowns(name)
-            for route, d in self.derivations.items():
-                if in_state:
-                    result[route] = [*(result[route] or d.steps),
-                                     d.solving_step([u for u in d.unknowns if u in in_state], self.states[name].values,
-                                                    f"in the state {name}")]
+            for route, d in self.derivations.items() if in_state else ():
+                result[route] = [*(result[route] or d.steps),
+                                 d.solving_step([u for u in d.unknowns if u in in_state], self.states[name].values,
+                                                f"in the state {name}")]
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps

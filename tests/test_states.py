@@ -40,6 +40,11 @@ def solve(tmp_path, text, *extra):
     return run_derive("solve", str(path), "--format", "json", *extra)
 
 
+def with_state(spec: str) -> str:
+    """The rod with its state given otherwise: `spec` is the state's mapping."""
+    return ROD.replace("    there: {when: {rod.angle: TARGET}}", f"    there: {spec}")
+
+
 def refused(tmp_path, text, field):
     result = solve(tmp_path, text)
     assert result.returncode == 2, result.stdout + result.stderr
@@ -76,8 +81,7 @@ def test_a_rate_without_a_state_is_refused(tmp_path):
 
 
 def test_a_state_no_ask_reads_is_refused(tmp_path):
-    text = ROD.replace("TARGET", "-pi/2").replace("    there: {when: {rod.angle: -pi/2}}",
-                                                   "    there: {when: {rod.angle: -pi/2}}\n    unused: {when: {rod.angle: -1}}")
+    text = with_state("{when: {rod.angle: -pi/2}}\n    unused: {when: {rod.angle: -1}}")
     assert "no ask is read in this state" in refused(tmp_path, text, "scene.states.unused")
 
 
@@ -89,15 +93,13 @@ def test_an_ask_that_is_not_read_in_a_state_is_refused(tmp_path):
 
 def test_rates_that_leave_a_velocity_open_are_refused(tmp_path):
     """The pinned rod given only its center's x rate (zero by the pin): how fast it turns is open."""
-    text = ROD.replace("TARGET", "-pi/2").replace("    there: {when: {rod.angle: -pi/2}}",
-                                                   "    there: {rates: {rod.velocity.x: 0}}")
+    text = with_state("{rates: {rod.velocity.x: 0}}")
     assert "open" in refused(tmp_path, text, "scene.states.there")
 
 
 def test_rates_that_break_a_constraint_are_refused(tmp_path):
     """The pinned rod's center cannot move along the rod."""
-    text = ROD.replace("TARGET", "-pi/2").replace("    there: {when: {rod.angle: -pi/2}}",
-                                                   "    there: {rates: {rod.velocity.x: sqrt(g*L)}}")
+    text = with_state("{rates: {rod.velocity.x: sqrt(g*L)}}")
     assert "break a constraint" in refused(tmp_path, text, "scene.states.there")
 
 

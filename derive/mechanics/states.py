@@ -56,11 +56,13 @@ class StateLimit(StateError):
 @dataclass(frozen=True)
 class Reached:
     """Every coordinate and velocity in a state (`values`), what must stay positive for the
-    motion to get there ((expression, meaning) pairs), and the steps that found it."""
+    motion to get there ((expression, meaning) pairs), the steps that found it, and the
+    coordinate the motion was followed along (None at the placement)."""
 
     values: dict[sp.Symbol, sp.Expr]
     positive: tuple[tuple[sp.Expr, str], ...] = ()
     steps: tuple[Step, ...] = ()
+    along: Coordinate | None = None
 
 
 def rest(coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
@@ -73,7 +75,7 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     (dg/dt = 0 at the placement); refused where the rates leave a velocity open or break a
     constraint."""
     placement = {c.q: sp.Integer(0) for c in coords.all}
-    given = {c.u: sp.sympify(value) for c, value in rates.items()}
+    given = {c.u: sp.sympify(value) for c, value in rates.items()}  # safe: expressions derive.expr parsed, or ints
     rows = [coords.ddt(g).xreplace(placement).xreplace(given) for c in scene.constraints for g in c.gaps(coords)]
     others = [c.u for c in coords.all if c.u not in given]
     solved = {}
@@ -102,13 +104,38 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], ta
     along the one free coordinate. `derivation` gives the direction a start at rest moves in;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
     assumptions leave open."""
-    decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed
+    decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed  # safe: engine expressions
     heading = _heading(start, coords, derivation, decide)
     heading[target.q] = 1 if decide(value - start[target.q]) > 0 else -1
-    try:
-        dependent = solve_gaps(scene, coords, sample, keep=target, heading=heading)
-    except (ValueError, NotImplementedError) as error:
-        raise StateLimit(f"find where the scene gets to: {error}") from None
+    # The state's coordinate left free first; where it is extremal at the state (a disk's center
+    # at its lowest, whose angle has no derivative in its height there), another, those that
+    # move from the start first (one that does not is no measure of the motion near it).
+    tried, problem = [], None
+    others = sorted((c for c in coords.all if c != target), key=lambda c: heading[c.q] == 0)
+    for keep in [target, *others]:
+        try:
+            dependent = solve_gaps(scene, coords, sample, keep=keep, heading=heading)
+        except (ValueError, NotImplementedError) as error:
+            problem = problem or StateLimit(f"find where the scene gets to: {error}")
+            continue
+        if set(dependent) in tried:
+            continue
+        tried.append(set(dependent))
+        try:
+            reached = _along(scene, coords, start, target, value, dependent, heading, derivation, decide)
+        except StateError as error:
+            problem = problem or error
+            continue
+        if not any(v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) for v in reached.values.values()):
+            return reached
+        problem = problem or StateLimit("find a coordinate that describes the motion through the state (each one the "
+                             "constraints leave free has no rate there)")
+    raise problem
+
+
+def _along(scene: Scene, coords: Coordinates, start: dict, target: Coordinate, value: sp.Expr, dependent: dict,
+           heading: dict, derivation: Derivation, decide) -> Reached:
+    """The state reached along the one coordinate the solved constraints leave free."""
     free = [c for c in coords.all if c.q not in dependent]
     if len(free) != 1:
         raise StateLimit(f"find a state reached by a scene of {len(free)} degrees of freedom (energy fixes one rate)")
@@ -159,12 +186,12 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], ta
              (sp.Eq(symbol, arrived), sp.Eq(s, s1))),
         Step(f"So, moving {'forward' if direction > 0 else 'backward'} in {s}", (sp.Eq(speed, rate),)),
     )
-    return Reached(values, tuple(positive), steps)
+    return Reached(values, tuple(positive), steps, coordinate)
 
 
 def _assumed(expr: sp.Expr) -> float:
     """A number's value, or a symbolic expression's sign by the symbols' assumptions."""
-    expr = sp.sympify(expr)
+    expr = sp.sympify(expr)  # safe: an engine expression or a Python number
     if expr.is_number:
         return float(expr)
     if expr.is_positive or expr.is_negative:
@@ -238,8 +265,7 @@ def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, star
     def arrives(t, y):
         return y[index] - value
     arrives.terminal = True
-    y0 = np.array([float(sp.N(sp.sympify(start[c.q]).xreplace(values), 20)) for c in coords.all]
-                  + [float(sp.N(sp.sympify(start[c.u]).xreplace(values), 20)) for c in coords.all])
+    y0 = np.array([float(sp.N(start[s].xreplace(values), 20)) for s in [c.q for c in coords.all] + [c.u for c in coords.all]])
     run = solve_ivp(rates, (0, horizon), y0, method="DOP853", rtol=1e-11, atol=1e-13, events=arrives)
     if not len(run.t_events[0]):
         return {}
