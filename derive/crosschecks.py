@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive import inertia, limits, units
+from derive import inertia, limits, numeric, units
 from derive.mechanics import gyroscope, lagrange, many_bodies, orbits, paths, states, top
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
@@ -56,7 +56,7 @@ class CrossChecks:
         if kinds & DYNAMIC_KINDS:
             result.append(self._routes_check())
             result.append(self._work_energy_check())
-        if any(state.when for state in self.scene.states.values()):
+        if any(not state.rates for state in self.scene.states.values()):
             result.append(self._states_check())
         if kinds & {"event", "after"}:
             result.append(self._event_check())
@@ -147,32 +147,37 @@ class CrossChecks:
 
     def _states_check(self) -> Check:
         """Each state reached by the motion (energy, derive.mechanics.states) against Newton–Euler's
-        equations integrated numerically from its start until the coordinate gets there, at the
-        middle of the parameter ranges: every coordinate and velocity within 1e-7."""
+        equations integrated numerically from its start until its condition holds (a coordinate
+        gets there, the motion turns, a force falls to zero), at the middle of the parameter
+        ranges: every coordinate and velocity, and the time it takes, within 1e-7."""
         coords, newton_euler = self.coordinates, self.derivations["newton_euler"]
         for name, state in self.scene.states.items():
-            if state.when is None:
+            if state.rates:
                 continue
             reached = self.states[name]
-            start = self.states[state.start].values if state.start else states.rest(coords)
-            # Along the coordinate the energy route followed: the state's own may be extremal there
-            # (a disk's center at its lowest), which an integration never sees it cross.
-            along = reached.along
-            exprs = [*reached.values.values(), *start.values(), *(e.lhs - e.rhs for e in newton_euler.balances)]
+            time = states.duration(reached.path, reached.end)[0]
+            exprs = [*reached.values.values(), *reached.path.start.values(), time,
+                     *(e.lhs - e.rhs for e in newton_euler.balances)]
             symbols = set().union(*(e.free_symbols for e in exprs)) - coords.state - set(newton_euler.unknowns)
             values = sample_points(self.problem, sp.Add(*symbols), count=1)[0] if symbols else {}
             expected = {k: float(sp.N(v.xreplace(values), 20)) for k, v in reached.values.items()}
-            distance = abs(expected[along.q] - float(sp.N(start[along.q].xreplace(values))))
-            horizon = 100 * distance / abs(expected[along.u]) + 1
-            simulated = states.integrate_to(newton_euler, coords, values, start, along, expected[along.q], horizon)
-            if not simulated:
+            try:
+                expected_time = float(numeric.evaluate(time, values, 12))  # an integral: by mpmath's quadrature
+            except ValueError as error:
+                raise CheckFailure(f"{self.problem.id}: the time to the state {name}: {error}") from None
+            horizon = 2 * expected_time + 1
+            simulated = states.integrate_to(newton_euler, coords, values, reached, self._condition(state), horizon)
+            if simulated is None:
                 raise CheckFailure(f"{self.problem.id}: Newton–Euler's motion from the start does not reach the "
                                    f"state {name} in {horizon:.3g} s")
+            took, simulated = simulated
             worst = max(abs(simulated[k] - expected[k]) / (1 + abs(expected[k])) for k in expected)
+            worst = max(worst, abs(took - expected_time) / (1 + expected_time))
             if worst > 1e-7:
                 raise CheckFailure(f"{self.problem.id}: the state {name} by energy and by Newton–Euler's motion "
                                    f"differ by {worst:.2e}")
-        return Check("states", True, "numeric", "every state reached: energy against Newton–Euler's motion, integrated")
+        return Check("states", True, "numeric", "every state reached, and the time it takes: energy against "
+                                               "Newton–Euler's motion, integrated")
 
     def _work_energy_check(self) -> Check:
         """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,

@@ -265,7 +265,10 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
         raise reader.fail(field, f"no state {raw!r} (states: {', '.join(scene.states) or 'none; add scene.states'})")
     if quantity.kind not in STATE_KINDS or quantity.kind == "contact" and quantity.detail not in ("normal_force",
                                                                                                   "friction"):
-        raise reader.fail(field, f"{path} is not read in a state: only accelerations, forces and rates are")
+        raise reader.fail(field, f"{path} is not read in a state: only accelerations, forces, positions and rates are")
+    if quantity.kind == "time" and scene.states[raw].rates:
+        raise reader.fail(field, f"the state {raw} is the placement, at time zero: ask the time in a state the "
+                                 "motion gets to (when:)")
     return raw
 
 

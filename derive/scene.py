@@ -239,9 +239,10 @@ class State:
     """A named state of a scene (`states:`), where asks may be read (`in: STATE`).
 
     Either the placement moving at given `rates` ((body, coordinate kind, value) with kind x, y
-    or theta), or the configuration where one body coordinate reaches a value (`when`: an
-    absolute x, y of the center or angle, as `at` and `angle` are given), reached by the motion
-    from the state `start` (None: the placement at rest).
+    or theta), or a state the motion from the state `start` (None: the placement at rest) gets
+    to first: where one body coordinate reaches a value (`when`: an absolute x, y of the center
+    or angle, as `at` and `angle` are given), or (`until`) where the motion stops, ("stops",
+    None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD).
 
     >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
     True
@@ -251,6 +252,7 @@ class State:
     rates: tuple[tuple[str, str, sp.Expr], ...] = ()
     when: tuple[str, str, sp.Expr] | None = None
     start: str | None = None
+    until: tuple[str, str | None] | None = None
 
 
 @dataclass(frozen=True)
@@ -314,11 +316,12 @@ class Scene:
 
 #: Quantities that come out of the equations of motion (both routes).
 DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation",
-                 "equilibrium", "velocity", "angular_velocity", "speed"}
+                 "equilibrium", "velocity", "angular_velocity", "speed", "position", "angle", "time"}
 #: Read in a state (`in: STATE`): the rates only there, the others at the placement at rest without it.
-STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velocity", "angular_velocity", "speed"}
-#: What a state gives: read only with `in: STATE`.
-RATE_KINDS = {"velocity", "angular_velocity", "speed"}
+STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velocity", "angular_velocity", "speed",
+               "position", "angle", "time"}
+#: What a state gives: read only with `in: STATE` (positions and times only in a state reached).
+RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time"}
 #: Answered by a small system of derive.mechanics, with a second route of its own.
 SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rotation", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
@@ -349,7 +352,8 @@ class Quantity:
 
 
 #: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
-RESERVED_NAMES = ("top", "spinning_wheel", "system", "event", "orbit", "oscillation", "small_oscillation", "ground")
+RESERVED_NAMES = ("top", "spinning_wheel", "system", "event", "orbit", "oscillation", "small_oscillation", "ground",
+                  "time")
 
 #: What a body on a surface can be asked, besides what every body can.
 CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
@@ -413,6 +417,11 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if getattr(scene.orbit, ORBIT_QUANTITIES[rest]) is None:
             raise ValueError(f"orbit.{rest} needs the orbit's {ORBIT_QUANTITIES[rest].replace('_', ' ')}")
         return Quantity("orbit", None, rest)
+    if head == "time":
+        if rest or not scene.states:
+            raise ValueError("time is asked as of: time, in: STATE (the time the motion takes from the state's "
+                             "from: to it)" if scene.states else "time needs a state: add scene.states")
+        return Quantity("time", None, None)
     if head == "oscillation":
         if rest != "period":
             raise ValueError("an oscillation at a given amplitude has period (give amplitude:)")
@@ -439,8 +448,10 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             return Quantity("acceleration", head, rest[-1])
         if rest in ("velocity.x", "velocity.y"):
             return Quantity("velocity", head, rest[-1])
-        if rest == "speed" or rest == "angular_velocity" and body.rotates:
+        if rest == "speed" or rest in ("angular_velocity", "angle") and body.rotates:
             return Quantity(rest, head, None)
+        if rest in ("position.x", "position.y"):
+            return Quantity("position", head, rest[-1])
         if rest in ("equilibrium.x", "equilibrium.y") or rest == "equilibrium.angle" and body.rotates:
             return Quantity("equilibrium", head, rest.partition(".")[2])
         if rest == "angular_acceleration" and body.rotates:
@@ -467,8 +478,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
             return Quantity("contact", head, rest)
-        known = ("inertia, acceleration.x, acceleration.y, velocity.x, velocity.y, speed, equilibrium.x, equilibrium.y"
-                 + (", angular_acceleration, angular_velocity, equilibrium.angle" if body.rotates else ""))
+        known = ("inertia, acceleration.x, acceleration.y, velocity.x, velocity.y, speed, position.x, position.y, "
+                 "equilibrium.x, equilibrium.y"
+                 + (", angular_acceleration, angular_velocity, angle, equilibrium.angle" if body.rotates else ""))
         if contact:
             known += ", " + ", ".join(CONTACT_QUANTITIES)
         raise ValueError(f"a body has {known}; not {rest!r}")

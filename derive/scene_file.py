@@ -230,9 +230,12 @@ STATE_POSITIONS = {"x": ("x", "m"), "y": ("y", "m"), "angle": ("theta", "rad")}
 STATE_RATES = {"velocity.x": ("x", "m/s"), "velocity.y": ("y", "m/s"), "angular_velocity": ("theta", "rad/s")}
 
 
-def _states(reader: Reader, raw, bodies: dict[str, Body]) -> dict[str, State]:
+def _states(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dict[str, State]:
     """`states: {spinning: {rates: {wheel.angular_velocity: w0}}, vertical: {when: {rod.angle: -pi/2},
-    from: spinning}}`: each state's `from` one named above it (no state reached from itself)."""
+    from: spinning}}`: each state's `from` one named above it (no state reached from itself).
+    `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
+    stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`) or a cord goes slack
+    (`{slack: CORD}`)."""
     result = {}
     for name, spec in _named(reader, raw, "states").items():
         field = f"scene.states.{name}"
@@ -250,17 +253,47 @@ def _states(reader: Reader, raw, bodies: dict[str, Body]) -> dict[str, State]:
             result[name] = State(name, rates=tuple(_state_entry(reader, key, value, f"{field}.rates", bodies, STATE_RATES)
                                                    for key, value in rates.items()))
             continue
-        when = reader.mapping(spec["when"], f"{field}.when", free=True)
-        if len(when) != 1:
-            raise reader.fail(f"{field}.when", "give one position, e.g. rod.angle: -pi/2")
-        (key, value), = when.items()
         start = spec.get("from")
         if start is not None and start not in result:
             raise reader.fail(f"{field}.from", f"expected a state named above this one (states: "
                                                f"{', '.join(result) or 'none'})")
+        if spec["when"] == "stops":
+            result[name] = State(name, start=start, until=("stops", None))
+            continue
+        if not isinstance(spec["when"], dict):
+            raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY} "
+                                               "and {slack: CORD}")
+        when = reader.mapping(spec["when"], f"{field}.when", free=True)
+        if len(when) != 1:
+            raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY} "
+                                               "or {slack: CORD}")
+        (key, value), = when.items()
+        if key in THRESHOLDS:
+            result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",
+                                                                                constraints)))
+            continue
         result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies, STATE_POSITIONS),
                              start=start)
     return result
+
+
+#: The states where a part's force falls to zero: the part's kind and the force's key.
+THRESHOLDS = {"leaves": (Contact, "normal"), "slack": (Cord, None)}
+
+
+def _threshold_part(reader: Reader, kind: str, raw, field: str, constraints: list) -> str:
+    """The part whose force falls to zero: a contact (named, or by its body) or a cord of one tension."""
+    part_type, _ = THRESHOLDS[kind]
+    fitting = {c.name: c for c in constraints if isinstance(c, part_type)}
+    if part_type is Contact:
+        fitting.update({c.body: c for c in constraints if isinstance(c, Contact) and c.point is None})
+    if not isinstance(raw, str) or raw not in fitting:
+        what = "a contact (a body on a surface, or a contact joint)" if part_type is Contact else "a cord"
+        raise reader.fail(field, f"expected {what} of the scene ({', '.join(fitting) or 'none'})")
+    part = fitting[raw]
+    if part_type is Cord and len(part.unknowns()) != 1:
+        raise reader.fail(field, f"the cord {raw} has {len(part.unknowns())} tensions: slack is for a cord of one")
+    return part.name
 
 
 def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body], kinds: dict) -> tuple:
@@ -613,7 +646,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
     rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
                  for n, spec in bodies_raw.items() if "rotation" in spec}
-    states = _states(reader, raw.get("states"), bodies)
+    states = _states(reader, raw.get("states"), bodies, constraints)
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, events, top, wheel,
                   wave, internal, rotations, states)
     _check_geometry(reader, places, scene)

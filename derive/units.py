@@ -219,6 +219,13 @@ def expression_dimension(expr: sympy.Expr, symbol_units: Mapping[sympy.Symbol, s
             return out
         if isinstance(e, sympy.Abs):
             return walk(e.args[0])
+        if isinstance(e, sympy.Integral):  # each variable has the dimension of its limits
+            for var, *ends in e.limits:
+                dims[var] = walk(next((end for end in ends if end != 0), sympy.Integer(0)))
+            out = walk(e.function)
+            for var, *_ in e.limits:
+                out = _add(out, dims.pop(var))
+            return out
         if isinstance(e, sympy.Piecewise):  # each branch the same; each condition consistent
             found = [walk(value) for value, _ in e.args if value != 0]  # zero has every dimension
             first, *rest = found or [{}]

@@ -68,7 +68,10 @@ question: |
 """
 
 
-def test_a_ball_in_a_drum_that_turns_meets_its_limits(tmp_path):
+def test_a_ball_in_a_drum_that_turns_meets_its_limits(tmp_path, monkeypatch):
+    # Its Newton–Euler derivation takes 45 s on an idle machine, close to the default limit of 60 s
+    # per ask (tests/textbook/PENDING.md): what this test checks is the physics, so it gets room.
+    monkeypatch.setenv("DERIVE_TIME_LIMIT", "300")
     path = tmp_path / "drum.yaml"
     path.write_text(DRUM)
     problem = load(str(path))

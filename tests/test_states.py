@@ -2,6 +2,7 @@
 the textbook suite (tests/textbook/states); here the rules a user meets, each refusal, and the
 second route (Newton–Euler's motion integrated) shown to catch a wrong state."""
 import json
+from pathlib import Path
 
 import pytest
 
@@ -123,5 +124,95 @@ def test_a_wrong_state_is_caught_by_the_integrated_motion(tmp_path, monkeypatch)
     path.write_text(ROD.replace("TARGET", "-pi/2"))
     original = states.root
     monkeypatch.setattr(states, "root", lambda expr: original(expr) * 101 / 100)
+    with pytest.raises(CheckFailure, match="differ"):
+        report.solve(problem.load(path), {}, 4)
+
+
+# Turning points, thresholds and times (`when: stops`, `{leaves: ...}`, `{slack: ...}`, `of: time`).
+
+HANGING = ROD.replace("at: [L/2, 0], angle: 0", "at: [0, -L/2], angle: -pi/2").replace(
+    "    there: {when: {rod.angle: TARGET}}",
+    "    struck: {rates: {rod.angular_velocity: SPIN}}\n    there: {when: stops, from: struck}").replace(
+    "of: rod.angular_velocity, in: there, unit: rad/s", "of: rod.angle, in: there, unit: rad")
+
+
+def test_a_struck_rod_stops_where_its_energy_runs_out(tmp_path):
+    """(1/2)(M L^2/3) w0^2 = M g (L/2)(1 - cos(theta)): w0 = sqrt(3g/L) swings it to the horizontal."""
+    result = solve(tmp_path, HANGING.replace("SPIN", "sqrt(3*g/L)"), "--set", "L=1.5")
+    assert result.returncode == 0, result.stderr
+    assert float(json.loads(result.stdout)["answers"]["omega"]["value"]) == pytest.approx(0, abs=1e-12)
+
+
+def test_a_rod_struck_over_the_top_never_stops(tmp_path):
+    """w0^2 > 12 g/L takes it over the top: it goes round forever, with no turning point."""
+    assert "does not stop" in refused(tmp_path, HANGING.replace("SPIN", "4*sqrt(g/L)"), "scene.states.there")
+
+
+def test_a_misspelled_threshold_is_refused(tmp_path):
+    stderr = refused(tmp_path, HANGING.replace("SPIN", "sqrt(g/L)").replace("when: stops", "when: stop"),
+                     "scene.states.there.when")
+    assert "stops" in stderr
+
+
+@pytest.mark.parametrize("spec, field", [("{slack: hinge}", "when.slack"), ("{leaves: rod}", "when.leaves")])
+def test_a_threshold_of_a_part_that_has_none_is_refused(tmp_path, spec, field):
+    """A pin is no cord, and the rod rests on no surface."""
+    text = HANGING.replace("SPIN", "sqrt(g/L)").replace("when: stops", f"when: {spec}")
+    assert "expected a" in refused(tmp_path, text, f"scene.states.there.{field}")
+
+
+def test_the_time_of_the_placement_is_refused(tmp_path):
+    text = HANGING.replace("SPIN", "sqrt(g/L)").replace("of: rod.angle, in: there", "of: time, in: struck")
+    assert "time zero" in refused(tmp_path, text, "ask.omega.in")
+
+
+#: A ball on a cord given v0 at the bottom, asked where the cord goes slack (from the textbook suite).
+BALL = (Path(__file__).parent / "textbook" / "states" / "ball_circle_slack.yaml").read_text()
+
+
+def test_a_cord_goes_slack_above_where_the_first_coordinate_turns(tmp_path):
+    """Followed along x, the ball's circle ends at x = L (the level of the hook), below where the
+    cord goes slack; followed along y (which heads up: the cord pulls the ball up at the bottom)
+    it gets there: (v0^2 - 2 g L)/(3 g) above the hook."""
+    result = solve(tmp_path, BALL, "--set", "v0=4", "--set", "L=0.4")
+    assert result.returncode == 0, result.stderr
+    assert float(json.loads(result.stdout)["answers"]["h"]["value"]) == pytest.approx((16 - 2 * 9.81 * 0.4) / (3 * 9.81), rel=1e-3)
+
+
+def test_a_state_off_the_geometry_at_some_values_is_refused_there(tmp_path):
+    """v0^2 > 5 g L takes the ball over the top: the cord never goes slack, and the formula's
+    height (v0^2 - 2gL)/(3g) lies above the circle. Such a variant is refused, not answered."""
+    from fractions import Fraction
+
+    import sympy as sp
+
+    from derive.answers import Solution
+    path = tmp_path / "problem.yaml"
+    path.write_text(BALL)
+    solution = Solution(problem.load(path))
+    symbols = {p.symbol.name: p.symbol for p in solution.problem.parameters.values()}
+
+    def at(v0, L):
+        return {symbols["m"]: 1, symbols["g"]: sp.Rational(981, 100), symbols["v0"]: sp.Rational(Fraction(v0)),
+                symbols["L"]: sp.Rational(Fraction(L))}
+    assert solution.violated(at("4", "0.4")) is None  # 2gL = 7.8 < 16 < 5gL = 19.6
+    assert "never gets to the state slack" in solution.violated(at("4.4", "0.3"))  # 19.4 > 5gL = 14.7
+
+
+def test_a_wrong_threshold_is_caught_by_the_integrated_motion(tmp_path, monkeypatch):
+    """The second route for a turning point: its place 1% off is found by Newton–Euler's motion."""
+    path = tmp_path / "problem.yaml"
+    path.write_text(HANGING.replace("SPIN", "2*sqrt(g/L)"))
+    original = states._first
+    monkeypatch.setattr(states, "_first", lambda *args: original(*args) * 101 / 100)
+    with pytest.raises(CheckFailure, match="differ|not real"):  # past the turning point there is no time
+        report.solve(problem.load(path), {}, 4)
+
+
+def test_a_wrong_time_is_caught_by_the_integrated_motion(tmp_path, monkeypatch):
+    path = tmp_path / "problem.yaml"
+    path.write_text(HANGING.replace("SPIN", "2*sqrt(g/L)"))
+    original = states.duration
+    monkeypatch.setattr(states, "duration", lambda *args: (original(*args)[0] * 101 / 100, original(*args)[1]))
     with pytest.raises(CheckFailure, match="differ"):
         report.solve(problem.load(path), {}, 4)

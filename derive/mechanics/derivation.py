@@ -205,8 +205,12 @@ def tidy(expr: sp.Expr) -> sp.Expr:
 
 def root(expr: sp.Expr) -> sp.Expr:
     """sqrt(expr) kept as one root, as the notes write it (sympy would split sqrt(M*g) into
-    sqrt(M)*sqrt(g) for positive symbols)."""
-    return sp.Pow(tidy(expr), sp.S.Half, evaluate=False)
+    sqrt(M)*sqrt(g) for positive symbols), unless it is a perfect square: sqrt(v0**2) is v0."""
+    radicand = tidy(expr)
+    evaluated = sp.sqrt(radicand)
+    if all(p.exp.is_Integer for p in evaluated.atoms(sp.Pow)) and not evaluated.has(sp.Abs):
+        return evaluated
+    return sp.Pow(radicand, sp.S.Half, evaluate=False)
 
 
 def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:

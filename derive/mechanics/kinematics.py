@@ -125,7 +125,7 @@ class Coordinates:
 
 
 def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate | None = None,
-               heading: dict | None = None) -> dict[sp.Symbol, sp.Expr]:
+               heading: dict | None = None, at: dict | None = None) -> dict[sp.Symbol, sp.Expr]:
     """Solve every constraint gap for one coordinate, preferring translations to angles;
     the coordinates left over are the free ones. `sample` (an expression's float value at sample
     parameters) tells the branch through the reference where simplification cannot (a cord
@@ -133,12 +133,14 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
     left free where another coordinate can be solved for instead (a state's coordinate: a bob's x
     where it passes the bottom, where y is extremal and x(y) has no derivative). `heading` (+1,
     -1 or 0 by coordinate symbol: the way a motion leaves the reference) picks between two
-    branches that both pass through it (a bead leaving a bowl's rim downward).
+    branches that both pass through it (a bead leaving a bowl's rim downward). `at` (coordinate
+    values) is the configuration the branches must pass through, if not the reference (a state
+    the motion starts from).
 
     Raises ValueError when a gap cannot be solved for any remaining coordinate.
     """
     order = sorted(coords.all, key=lambda c: (c == keep, c.kind == "theta"))
-    reference = {c.q: 0 for c in coords.all}
+    reference = {c.q: (at or {}).get(c.q, sp.Integer(0)) for c in coords.all}
     solved: dict[sp.Symbol, sp.Expr] = {}
     for c in scene.constraints:
         for gap in c.gaps(coords):
@@ -148,10 +150,11 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
             # that moves the way `heading` says; `keep` last of all.
             candidates = [k for k in order if k.q not in solved and gap.has(k.q)]
             found = {k: _roots(gap, k.q) for k in candidates}
-            through = {k: [r for r in roots if _through(r.xreplace(reference), sample)] for k, roots in found.items()}
+            through = {k: [r for r in roots if _through(r.xreplace(reference) - reference[k.q], sample)]
+                       for k, roots in found.items()}
             picks = [lambda k: found[k][0] if len(found[k]) == 1 else None,
                      lambda k: through[k][0] if len(through[k]) == 1 else None,
-                     lambda k: _heading(through[k], k, heading, sample)]
+                     lambda k: _heading(through[k], k, heading, sample, reference)]
             chosen = next(((k, root) for pick in picks for k in candidates if k != keep
                            if (root := pick(k)) is not None), None)
             chosen = chosen or next(((k, root) for pick in picks for k in candidates if k == keep
@@ -185,16 +188,16 @@ def _roots(gap: sp.Expr, q: sp.Symbol) -> list[sp.Expr]:
         return []
 
 
-def _heading(branches: list[sp.Expr], k: Coordinate, heading: dict | None, sample) -> sp.Expr | None:
-    """Of branches through the reference, the one that moves k the way `heading` says for a small
-    step of the other coordinates the way they head."""
+def _heading(branches: list[sp.Expr], k: Coordinate, heading: dict | None, sample, at: dict) -> sp.Expr | None:
+    """Of branches through the configuration `at`, the one that moves k the way `heading` says for
+    a small step of the other coordinates the way they head."""
     if heading is None or sample is None or not heading.get(k.q) or len(branches) < 2:
         return None
-    step = {q: sp.Rational(sign, 10**6) for q, sign in heading.items() if q != k.q}
+    step = {q: at[q] + sp.Rational(sign, 10**6) for q, sign in heading.items() if q != k.q}
     matching = []
     for branch in branches:
         try:
-            value = sample(branch.xreplace(step).xreplace({q: 0 for q in branch.free_symbols if q in heading}))
+            value = sample(branch.xreplace(step).xreplace({q: at[q] for q in branch.free_symbols if q in heading}) - at[k.q])
         except (TypeError, ValueError):
             continue
         if value * heading[k.q] > 0:

@@ -23,7 +23,7 @@ solve by derive.crosschecks).
 >>> rod = Body("rod", "rod", m, {"length": L}, m * L**2 / 12, at=(L / 2, 0), angle=0)
 >>> scene = Scene({"rod": rod}, (Pin("hinge", "rod", (-L / 2, 0)),), Gravity(g))
 >>> coords = Coordinates(scene)
->>> down = reach(scene, coords, rest(coords), coords.of("rod", "theta"), -sp.pi / 2, lagrange.derive(scene, coords))
+>>> down = reach(scene, coords, rest(coords), Gets(coords.of("rod", "theta"), -sp.pi / 2), lagrange.derive(scene, coords))
 >>> down.values[coords.of("rod", "theta").u]
 -sqrt(3)*sqrt(g)/sqrt(L)
 """
@@ -56,13 +56,18 @@ class StateLimit(StateError):
 @dataclass(frozen=True)
 class Reached:
     """Every coordinate and velocity in a state (`values`), what must stay positive for the
-    motion to get there ((expression, meaning) pairs), the steps that found it, and the
-    coordinate the motion was followed along (None at the placement)."""
+    motion to get there ((expression, meaning) pairs), the steps that found it, the coordinate
+    the motion was followed along and its path there (None at the placement), where on the path
+    the state is (`end`, the value of its coordinate), and the constraint forces that are zero
+    there by its definition (`vanished`: a body leaving its surface)."""
 
     values: dict[sp.Symbol, sp.Expr]
     positive: tuple[tuple[sp.Expr, str], ...] = ()
     steps: tuple[Step, ...] = ()
     along: Coordinate | None = None
+    path: Path | None = None
+    end: sp.Expr | None = None
+    vanished: tuple[sp.Symbol, ...] = ()
 
 
 def rest(coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
@@ -97,24 +102,96 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     return Reached(values, (), steps)
 
 
-def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], target: Coordinate,
-          value: sp.Expr, derivation: Derivation, sample=None) -> Reached:
-    """The state where coordinate `target` reaches `value` (a displacement from the placement),
-    moving from the state `start` (every coordinate and velocity), by the work-energy theorem
-    along the one free coordinate. `derivation` gives the direction a start at rest moves in;
+@dataclass(frozen=True)
+class Gets:
+    """The state where a coordinate gets to a value (a displacement from the placement)."""
+
+    coordinate: Coordinate
+    value: sp.Expr
+
+
+@dataclass(frozen=True)
+class Stops:
+    """The state where the motion stops (a turning point: the highest point, the widest swing)."""
+
+
+@dataclass(frozen=True)
+class Vanishes:
+    """The state where a constraint force first falls to zero: a body leaves its surface (the
+    normal force), a cord goes slack (its tension)."""
+
+    force: sp.Symbol
+    meaning: str  # "the normal force N^bead", for the steps
+
+
+@dataclass(frozen=True)
+class Path:
+    """The motion from a start along its one free coordinate s (`coordinate`): every coordinate
+    as a function of s (`positions`), the kinetic energy per s'^2 (`inertia`, k(s)) and where s
+    is (`kinetic`, K(s) by the work-energy theorem from the start), and the way s moves
+    (`direction`, +1 or -1). `speed` is s' where it is left a symbol."""
+
+    coordinate: Coordinate
+    start: dict
+    direction: int
+    positions: dict
+    velocities: dict
+    inertia: sp.Expr
+    kinetic: sp.Expr
+
+    @property
+    def s(self) -> sp.Symbol:
+        return self.coordinate.q
+
+    def rate(self, where: sp.Expr) -> sp.Expr:
+        """s' where s = `where`, moving the path's way."""
+        return self.direction * root(self.kinetic.xreplace({self.s: where}) / self.inertia.xreplace({self.s: where}))
+
+    def general(self) -> tuple[dict[sp.Symbol, sp.Expr], sp.Dummy, sp.Dummy]:
+        """Every coordinate and velocity at a point of the path, in two new symbols for s and s'
+        (the route's equations are solved in them, then the state put in): the coordinates' own
+        would be moved again where a route differentiates along the motion."""
+        where, rate = sp.Dummy(str(self.s)), sp.Dummy(str(self.coordinate.u))
+        return self.values(where, rate, settle=False), where, rate
+
+    def values(self, where: sp.Expr, rate: sp.Expr, settle: bool = True) -> dict[sp.Symbol, sp.Expr]:
+        """Every coordinate and velocity where s = `where`, moving at s' = `rate`."""
+        at = {self.s: where, self.coordinate.u: rate}
+        done = settled if settle else (lambda expr: expr)
+        return {**{q: done(p.xreplace({self.s: where})) for q, p in self.positions.items()},
+                **{u: done(v.xreplace(at)) for u, v in self.velocities.items()}}
+
+
+def settled(expr: sp.Expr) -> sp.Expr:
+    """tidy, with each root's radicand factored first: where a state lies on a circle, sqrt(R^2 - y^2)
+    at y = a root holds a perfect square, which then leaves the root (the routes' linear solve
+    in that state took 26 s with it nested, for a ball rolling off a dome)."""
+    return tidy(sp.sympify(expr).replace(  # safe: an engine expression; replace works from the leaves up
+        lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer, lambda e: sp.factor(e.base) ** e.exp))
+
+
+def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], condition: Gets | Stops | Vanishes,
+          derivation: Derivation, sample=None) -> Reached:
+    """The state the motion from the state `start` (every coordinate and velocity) gets to first
+    where `condition` holds, by the work-energy theorem along the one free coordinate.
+    `derivation` gives the direction a start at rest moves in and the forces along the way;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
     assumptions leave open."""
     decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed  # safe: engine expressions
     heading = _heading(start, coords, derivation, decide)
-    heading[target.q] = 1 if decide(value - start[target.q]) > 0 else -1
+    target = condition.coordinate if isinstance(condition, Gets) else None
+    if target is not None:
+        heading[target.q] = 1 if decide(condition.value - start[target.q]) > 0 else -1
     # The state's coordinate left free first; where it is extremal at the state (a disk's center
     # at its lowest, whose angle has no derivative in its height there), another, those that
     # move from the start first (one that does not is no measure of the motion near it).
     tried, problem = [], None
-    others = sorted((c for c in coords.all if c != target), key=lambda c: heading[c.q] == 0)
-    for keep in [target, *others]:
+    # An angle before a translation: a swinging rod's angle gives its height as a cosine, its x a root.
+    others = sorted((c for c in coords.all if c != target), key=lambda c: (heading[c.q] == 0, c.kind != "theta"))
+    for keep in [target, *others] if target else others:
         try:
-            dependent = solve_gaps(scene, coords, sample, keep=keep, heading=heading)
+            dependent = solve_gaps(scene, coords, sample, keep=keep, heading=heading,
+                                   at={c.q: start[c.q] for c in coords.all})
         except (ValueError, NotImplementedError) as error:
             problem = problem or StateLimit(f"find where the scene gets to: {error}")
             continue
@@ -122,71 +199,170 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], ta
             continue
         tried.append(set(dependent))
         try:
-            reached = _along(scene, coords, start, target, value, dependent, heading, derivation, decide)
+            path = _path(scene, coords, start, dependent, heading, derivation, decide, target)
+            reached = _arrive(path, condition, derivation, decide)
         except StateError as error:
             problem = problem or error
             continue
         if not any(v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) for v in reached.values.values()):
             return reached
         problem = problem or StateLimit("find a coordinate that describes the motion through the state (each one the "
-                             "constraints leave free has no rate there)")
+                                        "constraints leave free has no rate there)")
     raise problem
 
 
-def _along(scene: Scene, coords: Coordinates, start: dict, target: Coordinate, value: sp.Expr, dependent: dict,
-           heading: dict, derivation: Derivation, decide) -> Reached:
-    """The state reached along the one coordinate the solved constraints leave free."""
+def _path(scene: Scene, coords: Coordinates, start: dict, dependent: dict, heading: dict, derivation: Derivation,
+          decide, target: Coordinate | None) -> Path:
+    """The motion from the start along the one coordinate the solved constraints leave free."""
     free = [c for c in coords.all if c.q not in dependent]
     if len(free) != 1:
         raise StateLimit(f"find a state reached by a scene of {len(free)} degrees of freedom (energy fixes one rate)")
     (coordinate,) = free
     s, speed = coordinate.q, coordinate.u
-    s0, u0 = start[s], start[speed]
     # From rest a coordinate with no acceleration at the start (a bead's x at a bowl's rim, where
     # it first falls straight down) moves the way the other coordinates take it: toward the state
     # (Newton–Euler's motion, integrated at every solve, checks that it gets there).
-    direction = _direction(u0, start, coordinate, derivation, decide) or (heading[s] if s == target.q else 0)
+    direction = _direction(start[speed], start, coordinate, derivation, decide) or (
+        heading[s] if target is not None and s == target.q else 0)
     if not direction:
         raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
-    s1 = _where(dependent.get(target.q, target.q), value, s, s0, direction, decide)
-
     positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
     velocities = {c.u: tidy(sp.diff(positions[c.q], s)) * speed for c in coords.all}
     kinetic, potential = energies(scene, coords)
     per_speed_squared = tidy(kinetic.xreplace(velocities).xreplace(positions) / speed**2)
-    potential_along = potential.xreplace(positions)
     power = nonconservative_power(scene, coords).xreplace(velocities).xreplace(positions)
     force = tidy(power / speed)
     if force.has(speed, TIME) or force.free_symbols & {c.a for c in coords.all} or _holds_unknowns(force, scene):
         raise StateLimit("find a state reached under loads whose work depends on the speed, the time or a "
                          "contact force (a damper, a force given in t, kinetic friction)")
-    start_energy = kinetic.xreplace(start) + potential.xreplace(start)
     antiderivative = sp.integrate(force, s) if force != 0 else sp.Integer(0)
     if antiderivative.has(sp.Integral):
         raise StateLimit(f"integrate the work of the loads, {sp.sstr(force)} d{s}")
+    s0 = start[s]
+    energy = kinetic.xreplace(start) + potential.xreplace(start) - antiderivative.xreplace({s: s0})
+    along = tidy(energy - potential.xreplace(positions) + antiderivative)
+    return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along)
 
-    def kinetic_at(where: sp.Expr) -> sp.Expr:
-        work = antiderivative.xreplace({s: where}) - antiderivative.xreplace({s: s0})
-        return tidy(start_energy - potential_along.xreplace({s: where}) + work)
 
-    arrived = kinetic_at(s1)
-    rate = direction * root(arrived / per_speed_squared.xreplace({s: s1}))
-    values = {c.q: tidy(positions[c.q].xreplace({s: s1})) for c in coords.all}
-    values.update({c.u: tidy(velocities[c.u].xreplace({s: s1, speed: rate})) for c in coords.all})
-    positive = [(arrived, "the motion does not reach the state: it stops before it")]
-    positive += [(kinetic_at(s0 + sp.Rational(k, ON_THE_WAY) * (s1 - s0)),
+def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
+    """The state on the path where the condition first holds, what must stay positive on the way,
+    and the steps that found it."""
+    s, speed, s0 = path.s, path.coordinate.u, path.start[path.s]
+    symbol = sp.Symbol("K")
+    steps = [Step(f"The constraints leave one coordinate, {s}; the kinetic energy in its rate",
+                  (sp.Eq(symbol, path.inertia * speed**2),)),
+             Step("Work and energy from the start: the constraints do no work, gravity and springs through V, "
+                  "the other loads through their work", (sp.Eq(symbol, path.kinetic),))]
+    vanished = ()
+    if isinstance(condition, Gets):
+        position = path.positions[condition.coordinate.q]
+        s1 = _first(sp.Eq(position, condition.value), position - condition.value, path, decide,
+                    "the motion from the start does not get there")
+    elif isinstance(condition, Stops):
+        s1 = _first(sp.Eq(path.kinetic, 0), path.kinetic, path, decide,
+                    "the motion does not stop: it goes on (over the top, or forever)")
+        steps.append(Step("It stops where its kinetic energy is zero", (sp.Eq(s, s1),)))
+    else:
+        force = _along(path, condition.force, derivation)
+        steps.append(Step(f"Along the way, {condition.meaning}", (sp.Eq(condition.force, force),)))
+        s1 = _first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
+        steps.append(Step("It falls to zero at", (sp.Eq(s, s1),)))
+        vanished = (condition.force,)
+    rate = sp.Integer(0) if isinstance(condition, Stops) else path.rate(s1)
+    values = path.values(s1, rate)
+    arrived = path.kinetic.xreplace({s: s1})
+    positive = [] if isinstance(condition, Stops) else [(arrived, "the motion does not reach the state: it stops before it")]
+    positive += [(path.kinetic.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (s1 - s0)}),
                   f"the motion stops on its way to the state (its kinetic energy, sampled at {ON_THE_WAY - 1} "
                   "points between, falls to zero)") for k in range(1, ON_THE_WAY)]
-    symbol = sp.Symbol("K")
-    steps = (
-        Step(f"The constraints leave one coordinate, {s}; the kinetic energy in its rate",
-             (sp.Eq(symbol, per_speed_squared * speed**2),)),
-        Step("Work and energy from the start: the constraints do no work, gravity and springs through V, "
-             "the other loads through their work",
-             (sp.Eq(symbol, arrived), sp.Eq(s, s1))),
-        Step(f"So, moving {'forward' if direction > 0 else 'backward'} in {s}", (sp.Eq(speed, rate),)),
-    )
-    return Reached(values, tuple(positive), steps, coordinate)
+    if not isinstance(condition, Stops):
+        steps.append(Step(f"So, moving {'forward' if path.direction > 0 else 'backward'} in {s}",
+                          (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate))))
+    return Reached(values, tuple(positive), tuple(steps), path.coordinate, path, s1, vanished)
+
+
+def _along(path: Path, force: sp.Symbol, derivation: Derivation) -> sp.Expr:
+    """A constraint force along the path, as a function of s (s'^2 from the energy)."""
+    general, where, rate = path.general()
+    solved = derivation.at(general).raw[force].xreplace({where: path.s})
+    return tidy(solved.xreplace({rate: sp.sqrt(path.kinetic / path.inertia)}))
+
+
+def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
+    """The time the motion takes along the path from its start to s = `end`: t = integral of
+    ds/|s'|. Where s'' is constant (s'^2 = K/k linear in s) in closed form, t = (s'1 - s'0)/s'';
+    else as an integral, evaluated numerically (derive.numeric vouches for its digits by two
+    precisions)."""
+    s, s0 = path.s, path.start[path.s]
+    squared = tidy(path.kinetic / path.inertia)  # s'^2
+    polynomial = sp.Poly(squared, s) if squared.is_polynomial(s) else None
+    if polynomial is not None and polynomial.degree() <= 1:
+        slope = polynomial.coeff_monomial(s)
+        acceleration = slope / 2  # d(s'^2)/dt = 2 s' s'' = slope s'
+        if slope == 0:
+            time = tidy((end - s0) / path.rate(s0))
+        else:
+            time = tidy((path.rate(end) - path.rate(s0)) / acceleration)
+        symbol = sp.Symbol("t")
+        return time, Step(f"The acceleration along {s} is constant, {s}'' = {sp.sstr(acceleration)}, so "
+                          f"t = ({s}'1 - {s}'0)/{s}''", (sp.Eq(symbol, time),))
+    # Over w in [0, 1], the fraction of the way w^2 (3 - 2 w), flat at both ends: the 1/sqrt
+    # singularities where the motion starts from rest or ends at a turning point become smooth
+    # (mpmath's tanh-sinh quadrature then gives 20 digits at 35 where over the fraction itself it
+    # gave 11). Not simplified: sympy would fold the polynomials and cancel digits near the ends.
+    w = sp.Dummy("w")
+    where = s0 + w**2 * (3 - 2 * w) * (end - s0)
+    # One root (w (1 - w) >= 0 inside it): a sum of two integrands, which simplifying would split
+    # the integral into, diverges at a turning point in each part.
+    integrand = 6 * sp.sqrt(path.inertia.xreplace({s: where}) * (w * (1 - w)) ** 2 / path.kinetic.xreplace({s: where}))
+    time = sp.Abs(end - s0) * sp.Integral(integrand, (w, 0, 1))
+    return time, Step(f"The acceleration along {s} is not constant: t is the integral of d{s}/|{s}'| from the "
+                      "start, evaluated numerically", (sp.Eq(sp.Symbol("t"), time),))
+
+
+def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -> sp.Expr:
+    """The first s ahead of the start (in the path's direction) where `function` of s is zero:
+    sympy's roots of `equation` (with their turns by 2 pi where s is in a trigonometric
+    function) that are roots at the sample parameters, the nearest one ahead, and no change of
+    sign before it (sampled), which would be a root sympy missed."""
+    s, s0, direction = path.s, path.start[path.s], path.direction
+    if equation.lhs == s:
+        found = [equation.rhs]
+    else:
+        try:
+            found = [r for r in sp.solve(equation, s) if not r.has(sp.I)]
+        except NotImplementedError:
+            raise StateLimit(f"solve {sp.sstr(equation)} for {s}") from None
+        if any(f.has(s) for f in function.atoms(sp.sin, sp.cos, sp.tan)):  # periodic in s
+            found = [r + 2 * sp.pi * k for r in found for k in (-1, 0, 1)]
+    start = decide(s0)
+    on_path = [r for r in found if _real(r, decide) and all(_real(p.xreplace({s: r}), decide) for p in path.positions.values())]
+    ahead = sorted({r for r in on_path if direction * (decide(r) - start) > 1e-12
+                    and abs(decide(function.xreplace({s: r}))) <= 1e-9 * (1 + abs(decide(function.xreplace({s: s0}))))},
+                   key=lambda r: abs(decide(r) - start))
+    if not ahead:
+        # Where the coordinate followed turns back (a bob's x at the level of its pivot), the path
+        # in it ends: the state may lie beyond, on the motion's way back in it.
+        ends = [r for r in _roots(sp.fraction(sp.together(path.inertia))[1], s)
+                if _real(r, decide) and direction * (decide(r) - start) > 1e-12]
+        if ends:
+            end = min(ends, key=lambda r: abs(decide(r) - start))
+            raise StateLimit(f"follow the motion past {s} = {sp.sstr(end)}, where that coordinate turns back: "
+                             "give a state there (when:) and reach this one from it (from:)")
+        raise StateError(f"{fails} (it moves {'up' if direction > 0 else 'down'} in {s} from {sp.sstr(s0)})")
+    first = ahead[0]
+    end = decide(first)
+    signs = [decide(function.xreplace({s: s0 + sp.Rational(k, 64) * (first - s0)})) for k in range(1, 64)]
+    if any(a * b < 0 for a, b in zip(signs, signs[1:])):
+        raise StateLimit(f"find where {sp.sstr(function)} = 0 in closed form: it changes sign before {s} = {end:.6g}")
+    return first
+
+
+def _roots(expr: sp.Expr, s: sp.Symbol) -> list[sp.Expr]:
+    try:
+        return [r for r in sp.solve(expr, s) if not r.has(sp.I)]
+    except NotImplementedError:
+        return []
 
 
 def _assumed(expr: sp.Expr) -> float:
@@ -205,13 +381,12 @@ def _holds_unknowns(expr: sp.Expr, scene: Scene) -> bool:
 
 
 def _heading(start: dict, coords: Coordinates, derivation: Derivation, decide) -> dict[sp.Symbol, int]:
-    """The way each coordinate leaves the start (+1, -1, 0): along its velocities, or from rest
-    along its accelerations."""
-    if any(start[c.u] != 0 for c in coords.all):
-        motion = {c.q: start[c.u] for c in coords.all}
-    else:
+    """The way each coordinate leaves the start (+1, -1, 0): along its velocity, or where that is
+    zero (from rest, or a bob's height at the bottom of its swing) along its acceleration."""
+    motion = {c.q: start[c.u] for c in coords.all}
+    if any(value == 0 for value in motion.values()):
         solved = derivation.at(start).raw
-        motion = {c.q: tidy(solved[c.a]) for c in coords.all}
+        motion = {c.q: value if value != 0 else tidy(solved[c.a]) for (c, value) in zip(coords.all, motion.values())}
     signs = {}
     for q, value in motion.items():
         number = 0.0 if value == 0 else decide(value)
@@ -228,20 +403,6 @@ def _direction(u0: sp.Expr, start: dict, coordinate: Coordinate, derivation: Der
     return 0 if pushed == 0 else 1 if decide(pushed) > 0 else -1
 
 
-def _where(position: sp.Expr, value: sp.Expr, s: sp.Symbol, s0: sp.Expr, direction: int, decide) -> sp.Expr:
-    """The free coordinate where `position` (a function of it) equals `value`: the first such
-    point the motion meets from s0 in `direction`."""
-    if position == s:
-        found = [value]
-    else:
-        found = [r for r in sp.solve(sp.Eq(position, value), s) if not r.has(sp.I)]
-    ahead = [r for r in found if _real(r, decide) and direction * (decide(r) - decide(s0)) > 0]
-    if not ahead:
-        raise StateError(f"the motion from the start does not get there (it moves {'up' if direction > 0 else 'down'}"
-                         f" in {s} from {sp.sstr(s0)}; the state is at {', '.join(map(sp.sstr, found)) or 'no point'})")
-    return min(ahead, key=lambda r: abs(decide(r) - decide(s0)))
-
-
 def _real(expr: sp.Expr, decide) -> bool:
     try:
         return bool(np.isfinite(decide(expr)))
@@ -249,25 +410,42 @@ def _real(expr: sp.Expr, decide) -> bool:
         return False
 
 
-def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, start: dict, target: Coordinate,
-                 value: float, horizon: float) -> dict[sp.Symbol, float]:
-    """The state where `target`'s coordinate first reaches `value`, by integrating this route's
-    equations of motion numerically (scipy, rtol 1e-11) from `start` at the parameter `values`;
-    empty when it does not get there within `horizon` seconds."""
-    accelerations = derivation.numeric(values)
-    n = len(coords.all)
+def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reached: Reached, condition,
+                 horizon: float):
+    """The state `reached` (its path from its start) found again by integrating this route's
+    equations of motion numerically (scipy DOP853, rtol 1e-11) at the parameter `values`, until
+    its condition first holds: (the time, every coordinate and velocity), or None when it does
+    not within `horizon` seconds. Where a coordinate gets to a value, the path's own coordinate
+    gets to its value at the state (the state's may be extremal there, as a disk's center at its
+    lowest, which an integration never sees it cross)."""
+    unknowns = derivation.numeric(values)
+    n, along = len(coords.all), reached.path.coordinate
+    index = coords.all.index(along)
 
     def rates(t, y):
-        return np.concatenate([y[n:], accelerations(y)[:n]])
+        return np.concatenate([y[n:], unknowns(y)[:n]])
 
-    index = coords.all.index(target)
+    if isinstance(condition, Gets):
+        end = float(sp.N(reached.end.xreplace(values), 20))
 
-    def arrives(t, y):
-        return y[index] - value
-    arrives.terminal = True
+        def event(t, y):
+            return y[index] - end
+    elif isinstance(condition, Stops):
+        def event(t, y):
+            return y[n + index]
+        event.direction = -reached.path.direction
+    else:
+        force = derivation.unknowns.index(condition.force)
+
+        def event(t, y):
+            return unknowns(y)[force]
+        event.direction = -1
+    event.terminal = True
+    start = reached.path.start
     y0 = np.array([float(sp.N(start[s].xreplace(values), 20)) for s in [c.q for c in coords.all] + [c.u for c in coords.all]])
-    run = solve_ivp(rates, (0, horizon), y0, method="DOP853", rtol=1e-11, atol=1e-13, events=arrives)
+    run = solve_ivp(rates, (0, horizon), y0, method="DOP853", rtol=1e-11, atol=1e-13, events=event)
     if not len(run.t_events[0]):
-        return {}
-    end = run.y_events[0][0]
-    return {**{c.q: end[i] for i, c in enumerate(coords.all)}, **{c.u: end[n + i] for i, c in enumerate(coords.all)}}
+        return None
+    y = run.y_events[0][0]
+    return run.t_events[0][0], {**{c.q: y[i] for i, c in enumerate(coords.all)},
+                                **{c.u: y[n + i] for i, c in enumerate(coords.all)}}
