@@ -6,7 +6,7 @@ answer, and a numerical simulation where the scene moves.
 
 >>> rows = audit(["rod_endpoint"])
 >>> rows[0].passed, rows[0].routes
-(True, 'parallel_axis')
+(True, 'tensor_vs_integral, parallel_axis')
 """
 from __future__ import annotations
 

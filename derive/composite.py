@@ -21,7 +21,7 @@ contact of a round body off its center of mass is not modelled.
 >>> tee = build({"bar": ("rod", m, {"length": L}, (0, 0), 0),
 ...              "stem": ("rod", m, {"length": L}, (0, -L / 2), sp.pi / 2)})
 >>> tee.center, sp.factor(tee.inertia)
-((0, -L/4), 5*L**2*m/12)
+((0, -L/4), 7*L**2*m/24)
 """
 from __future__ import annotations
 

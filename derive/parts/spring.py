@@ -9,7 +9,7 @@ k (l - l0) at each end, pulling it toward the other (pushing when compressed).
 >>> k, m = sp.symbols("k m", positive=True)
 >>> scene = Scene({"block": Body("block", "point", m, {}, at=(sp.Integer(1), sp.Integer(0)))})
 >>> Spring("s", ("block", None), ((0, 0), (0, 0)), k, sp.Integer(1)).potential(Coordinates(scene))
-k*(sqrt((x_block + 1)**2) - 1)**2/2
+k*(sqrt(y_block**2 + (-x_block - 1)**2) - 1)**2/2
 """
 from __future__ import annotations
 
