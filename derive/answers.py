@@ -11,7 +11,6 @@ L**2*m/3
 """
 from __future__ import annotations
 
-import dataclasses
 import functools
 from functools import cached_property
 
@@ -25,15 +24,15 @@ from derive.mechanics import friction
 from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step, root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.mechanics.kinematics import Coordinates
-from derive.mechanics import states as state_motion
 from derive.mechanics.oscillation import (Oscillation, OscillationError, OscillationLimit, exact_period,
                                          small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
+from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
-class Solution(CrossChecks):
+class Solution(StateAnswers, CrossChecks):
     """Everything derived for one problem, computed on first use."""
 
     def __init__(self, problem: Problem):
@@ -133,93 +132,6 @@ class Solution(CrossChecks):
             raise self.problem.limit(str(error)) from None
         except EquilibriumError as error:
             raise self.problem.error("ask", str(error)) from None
-
-    @cached_property
-    def states(self) -> dict[str, state_motion.Reached]:
-        """Every coordinate and velocity in each named state of the scene (derive.mechanics.states):
-        the placement moving at given rates, or where a coordinate gets to from another state."""
-        if self.scene.states and len(self.regimes) > 1:
-            raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
-                                     "give contact: rolling or sliding")
-        result = {}
-        resolve = functools.partial(self._within_ranges, absolute=True)
-        for name, state in self.scene.states.items():
-            try:
-                with limits.time_limit(f"finding the state {name}"):
-                    reached = self._state(state, result)
-                # |L0 - d|, |sin(theta0)|: in the form the parameter ranges give
-                result[name] = dataclasses.replace(
-                    reached, values={k: resolve(v) for k, v in reached.values.items()},
-                    positive=tuple((resolve(e), m) for e, m in reached.positive))
-            except state_motion.StateLimit as error:
-                raise self.problem.limit(f"{error} (scene.states.{name})") from None
-            except state_motion.StateError as error:
-                raise self.problem.error(f"scene.states.{name}", str(error)) from None
-        return result
-
-    def _state(self, state, found: dict) -> state_motion.Reached:
-        coords = self.coordinates
-        if state.rates:
-            return state_motion.moving(self.dynamics_scene, coords, {coords.of(body, kind): value
-                                                                     for body, kind, value in state.rates})
-        start = found[state.start].values if state.start else state_motion.rest(coords)
-        return state_motion.reach(self.dynamics_scene, coords, start, self._condition(state),
-                                  self.derivations["lagrange"], self._sample)
-
-    def _condition(self, state) -> state_motion.Gets | state_motion.Stops | state_motion.Vanishes:
-        """Where a state reached by the motion is: a coordinate's value, a stop, a force at zero."""
-        if state.until is None:
-            body, kind, value = state.when
-            placed = self.scene.bodies[body]
-            offset = placed.angle if kind == "theta" else placed.at[0 if kind == "x" else 1]
-            return state_motion.Gets(self.coordinates.of(body, kind), value - offset)
-        kind, name = state.until
-        if kind == "stops":
-            return state_motion.Stops()
-        part = self.dynamics_scene.constraint(name)
-        force = part.unknowns()["normal"] if kind == "leaves" else next(iter(part.unknowns().values()))
-        what = f"the normal force on the {part.body} at {name}" if kind == "leaves" else f"the tension of {name}"
-        return state_motion.Vanishes(force, what)
-
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes, a few states
-    def in_state(self, route: str, name: str | None) -> Solved:
-        """One route's accelerations and forces in a named state (None: the placement at rest)."""
-        if name is None:
-            return self.at_reference(route)
-        reached, derivation = self.states[name], self.derivations[route]
-        if reached.path is None:
-            return self._solved(derivation, reached.values)
-        # Along the path first (functions of its one coordinate s), then at the state: its values
-        # hold roots of the whole scene's sizes (a ball leaving a dome), in which the linear solve
-        # took 26 s against 1 s along the path.
-        path = reached.path
-        general, where, rate = path.general()
-        at = {where: reached.values[path.s], rate: reached.values[path.coordinate.u]}
-        return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general).raw.items()})
-
-    def _rate(self, q: Quantity, name: str) -> sp.Expr:
-        """A body's velocity, speed, angular velocity, position or angle in a named state, or the
-        time the motion takes to get there."""
-        values, coords = self.states[name].values, self.coordinates
-        if q.kind == "time":
-            return self._duration(name)[0]
-        if q.kind in ("angle", "position"):
-            placed = self.scene.bodies[q.target]
-            kind = "theta" if q.kind == "angle" else q.detail
-            offset = placed.angle if kind == "theta" else placed.at[0 if kind == "x" else 1]
-            return tidy(offset + values[coords.of(q.target, kind).q])
-        if q.kind == "angular_velocity":
-            return values[coords.of(q.target, "theta").u]
-        if q.kind == "velocity":
-            return values[coords.of(q.target, q.detail).u]
-        return root(values[coords.of(q.target, "x").u] ** 2 + values[coords.of(q.target, "y").u] ** 2)
-
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few states
-    def _duration(self, name: str) -> tuple[sp.Expr, Step]:
-        reached = self.states[name]
-        time, step = state_motion.duration(reached.path, reached.end)
-        # |s1 - s0| by the ranges; an integral's integrand as it is (simplifying it cancels digits)
-        return time.xreplace({a: self._within_ranges(a, absolute=True) for a in time.atoms(sp.Abs)}), step
 
     def _route_expression(self, ask: Ask, route: str) -> sp.Expr:
         q = ask.quantity
@@ -563,20 +475,7 @@ class Solution(CrossChecks):
         scene = self.dynamics_scene
         result = [(sign.expression.xreplace(solved), False, sign.meaning)
                   for part in (*scene.constraints, *scene.loads) for sign in part.signs()]
-        for name in dict.fromkeys(a.state for a in self.problem.asks.values() if a.state is not None):
-            # in each state asked: the motion gets there, and the parts keep their signs there
-            reached, forces = self.states[name], self.in_state("lagrange", name).raw
-            result += [(expr, True, f"{meaning} ({name})") for expr, meaning in reached.positive]
-            # the state is real: where a formula puts it off the scene's geometry (a ball higher
-            # than its cord reaches), the motion never gets there at these values
-            result += [(radicand, False, f"the motion never gets to the state {name} at these values (it lies off "
-                                         "the scene's geometry there)")
-                       for radicand in dict.fromkeys(p.base for v in reached.values.values() for p in v.atoms(sp.Pow)
-                                                     if p.exp.is_Rational and p.exp.q == 2)]
-            # (a force the state is defined by, zero there, has no sign to keep: it was positive on the way)
-            result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
-                       for part in (*scene.constraints, *scene.loads) for sign in part.signs()
-                       if not sign.expression.has(*reached.vanished)]
+        result += self._state_conditions()
         for part in scene.constraints:  # a grip with no coefficient: it still needs something to press on
             if isinstance(part, Contact) and part.rolling and not part.has_friction:
                 forces = part.unknowns()
@@ -724,15 +623,7 @@ class Solution(CrossChecks):
                   for route, d in self.derivations.items()}
         if needed and len(self.regimes) > 1:
             result.update(self._regime_steps(needed, rest))
-        for name in dict.fromkeys(a.state for a in self.problem.asks.values() if a.state is not None):
-            result[f"the state {name}"] = list(self.states[name].steps)
-            if any(a.state == name and a.quantity.kind == "time" for a in self.problem.asks.values()):
-                result[f"the state {name}"].append(self._duration(name)[1])
-            in_state = self._needed_unknowns(name)
-            for route, d in self.derivations.items() if in_state else ():
-                result[route] = [*(result[route] or d.steps),
-                                 d.solving_step([u for u in d.unknowns if u in in_state], self.states[name].values,
-                                                f"in the state {name}")]
+        self._state_steps(result)
         if "small_oscillation" in kinds:
             for route in result:
                 result[route] += self.oscillations[route].steps

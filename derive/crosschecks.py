@@ -155,7 +155,7 @@ class CrossChecks:
             if state.rates:
                 continue
             reached = self.states[name]
-            time = states.duration(reached.path, reached.end)[0]
+            time = self._duration(name)[0]
             exprs = [*reached.values.values(), *reached.path.start.values(), time,
                      *(e.lhs - e.rhs for e in newton_euler.balances)]
             symbols = set().union(*(e.free_symbols for e in exprs)) - coords.state - set(newton_euler.unknowns)

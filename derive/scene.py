@@ -85,6 +85,11 @@ class Body:
         """A point mass has no orientation; every other body has an angle."""
         return self.shape != "point"
 
+    def placed(self, kind: str) -> sp.Expr:
+        """Where the file places the coordinate `kind` (x, y or theta): every coordinate of the
+        engine is a displacement from it."""
+        return self.angle if kind == "theta" else self.at[0 if kind == "x" else 1]
+
     @property
     def inertia(self) -> sp.Expr:
         if self.given_inertia is not None:

@@ -53,12 +53,8 @@ class Equilibrium:
 
     def position(self, scene: Scene, body: str, detail: str) -> sp.Expr:
         """The body's angle from +x, or its center's x or y, at the equilibrium."""
-        coords = Coordinates(scene)
-        placed = scene.bodies[body]
-        if detail == "angle":
-            return tidy(placed.angle + coords.angle(body).xreplace(self.configuration))
-        index = 0 if detail == "x" else 1
-        return tidy(placed.at[index] + coords.of(body, detail).q.xreplace(self.configuration))
+        kind = "theta" if detail == "angle" else detail
+        return tidy(scene.bodies[body].placed(kind) + Coordinates(scene).of(body, kind).q.xreplace(self.configuration))
 
 
 def equilibrium(scene: Scene, derivation: Derivation, sample=None, resolve=None) -> Equilibrium:

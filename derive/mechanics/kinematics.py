@@ -149,7 +149,7 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
             # through the reference configuration, where every coordinate is zero, or else the one
             # that moves the way `heading` says; `keep` last of all.
             candidates = [k for k in order if k.q not in solved and gap.has(k.q)]
-            found = {k: _roots(gap, k.q) for k in candidates}
+            found = {k: roots(gap, k.q) for k in candidates}
             through = {k: [r for r in roots if _through(r.xreplace(reference) - reference[k.q], sample)]
                        for k, roots in found.items()}
             picks = [lambda k: found[k][0] if len(found[k]) == 1 else None,
@@ -179,7 +179,7 @@ def _through(offset: sp.Expr, sample) -> bool:
         return False
 
 
-def _roots(gap: sp.Expr, q: sp.Symbol) -> list[sp.Expr]:
+def roots(gap: sp.Expr, q: sp.Symbol) -> list[sp.Expr]:
     """The roots of a gap in one coordinate; none where sympy cannot solve for it (a cord's
     tangent angles in a block's position)."""
     try:

@@ -30,13 +30,14 @@ solve by derive.crosschecks).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
 from derive.mechanics.derivation import Derivation, Step, root, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
+from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
 from derive.scene import TIME, Scene
 
@@ -56,15 +57,14 @@ class StateLimit(StateError):
 @dataclass(frozen=True)
 class Reached:
     """Every coordinate and velocity in a state (`values`), what must stay positive for the
-    motion to get there ((expression, meaning) pairs), the steps that found it, the coordinate
-    the motion was followed along and its path there (None at the placement), where on the path
-    the state is (`end`, the value of its coordinate), and the constraint forces that are zero
+    motion to get there ((expression, meaning) pairs), the steps that found it, the path the
+    motion was followed along (None at the placement), where on the path the state is (`end`,
+    the value of its coordinate), and the constraint forces that are zero
     there by its definition (`vanished`: a body leaving its surface)."""
 
     values: dict[sp.Symbol, sp.Expr]
     positive: tuple[tuple[sp.Expr, str], ...] = ()
     steps: tuple[Step, ...] = ()
-    along: Coordinate | None = None
     path: Path | None = None
     end: sp.Expr | None = None
     vanished: tuple[sp.Symbol, ...] = ()
@@ -129,7 +129,7 @@ class Path:
     """The motion from a start along its one free coordinate s (`coordinate`): every coordinate
     as a function of s (`positions`), the kinetic energy per s'^2 (`inertia`, k(s)) and where s
     is (`kinetic`, K(s) by the work-energy theorem from the start), and the way s moves
-    (`direction`, +1 or -1). `speed` is s' where it is left a symbol."""
+    (`direction`, +1 or -1); `velocities` in s and its rate s' (the coordinate's u)."""
 
     coordinate: Coordinate
     start: dict
@@ -147,6 +147,7 @@ class Path:
         """s' where s = `where`, moving the path's way."""
         return self.direction * root(self.kinetic.xreplace({self.s: where}) / self.inertia.xreplace({self.s: where}))
 
+    @cached_property  # one set of symbols per path, so that a route's solution in them is reused
     def general(self) -> tuple[dict[sp.Symbol, sp.Expr], sp.Dummy, sp.Dummy]:
         """Every coordinate and velocity at a point of the path, in two new symbols for s and s'
         (the route's equations are solved in them, then the state put in): the coordinates' own
@@ -278,12 +279,12 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     if not isinstance(condition, Stops):
         steps.append(Step(f"So, moving {'forward' if path.direction > 0 else 'backward'} in {s}",
                           (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate))))
-    return Reached(values, tuple(positive), tuple(steps), path.coordinate, path, s1, vanished)
+    return Reached(values, tuple(positive), tuple(steps), path, s1, vanished)
 
 
 def _along(path: Path, force: sp.Symbol, derivation: Derivation) -> sp.Expr:
     """A constraint force along the path, as a function of s (s'^2 from the energy)."""
-    general, where, rate = path.general()
+    general, where, rate = path.general
     solved = derivation.at(general).raw[force].xreplace({where: path.s})
     return tidy(solved.xreplace({rate: sp.sqrt(path.kinetic / path.inertia)}))
 
@@ -335,15 +336,15 @@ def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -
             raise StateLimit(f"solve {sp.sstr(equation)} for {s}") from None
         if any(f.has(s) for f in function.atoms(sp.sin, sp.cos, sp.tan)):  # periodic in s
             found = [r + 2 * sp.pi * k for r in found for k in (-1, 0, 1)]
-    start = decide(s0)
+    start, scale = decide(s0), 1 + abs(decide(function.xreplace({s: s0})))
     on_path = [r for r in found if _real(r, decide) and all(_real(p.xreplace({s: r}), decide) for p in path.positions.values())]
     ahead = sorted({r for r in on_path if direction * (decide(r) - start) > 1e-12
-                    and abs(decide(function.xreplace({s: r}))) <= 1e-9 * (1 + abs(decide(function.xreplace({s: s0}))))},
+                    and abs(decide(function.xreplace({s: r}))) <= 1e-9 * scale},
                    key=lambda r: abs(decide(r) - start))
     if not ahead:
         # Where the coordinate followed turns back (a bob's x at the level of its pivot), the path
         # in it ends: the state may lie beyond, on the motion's way back in it.
-        ends = [r for r in _roots(sp.fraction(sp.together(path.inertia))[1], s)
+        ends = [r for r in roots(sp.fraction(sp.together(path.inertia))[1], s)
                 if _real(r, decide) and direction * (decide(r) - start) > 1e-12]
         if ends:
             end = min(ends, key=lambda r: abs(decide(r) - start))
@@ -356,13 +357,6 @@ def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -
     if any(a * b < 0 for a, b in zip(signs, signs[1:])):
         raise StateLimit(f"find where {sp.sstr(function)} = 0 in closed form: it changes sign before {s} = {end:.6g}")
     return first
-
-
-def _roots(expr: sp.Expr, s: sp.Symbol) -> list[sp.Expr]:
-    try:
-        return [r for r in sp.solve(expr, s) if not r.has(sp.I)]
-    except NotImplementedError:
-        return []
 
 
 def _assumed(expr: sp.Expr) -> float:
