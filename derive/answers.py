@@ -376,7 +376,10 @@ class Solution(StateAnswers, CrossChecks):
         points = sample_points(self.problem, expr)
 
         def holds(condition) -> bool:
-            return all(bool(condition.xreplace(p)) for p in points)
+            try:
+                return all(bool(condition.xreplace(p)) for p in points)
+            except TypeError:  # not real at a point (a state the motion does not reach there)
+                return False
 
         if absolute:
             expr = expr.replace(lambda e: isinstance(e, sp.Abs) and (holds(e.args[0] > 0) or holds(e.args[0] < 0)),

@@ -58,7 +58,7 @@ def reports_errors(command):
             from derive.export import BuildError
 
             if not isinstance(error, (BuildError, EngineLimit)):
-                raise
+                _internal(error)  # a check between routes that fails (CheckFailure) is an engine bug
             click.echo(f"derive: error: {error}", err=True)
             sys.exit(1)
         except KeyboardInterrupt:
@@ -68,12 +68,17 @@ def reports_errors(command):
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
             sys.exit(0)
         except Exception as error:  # an engine bug: say so, exit 1
-            if os.environ.get("DERIVE_DEBUG"):
-                traceback.print_exc()
-            click.echo(f"derive: internal error: {type(error).__name__}: {error}", err=True)
-            sys.exit(1)
+            _internal(error)
 
     return wrapper
+
+
+def _internal(error: Exception):
+    """An engine bug: one line, exit 1 (DERIVE_DEBUG=1 prints the traceback too)."""
+    if os.environ.get("DERIVE_DEBUG"):
+        traceback.print_exc()
+    click.echo(f"derive: internal error: {type(error).__name__}: {error}", err=True)
+    sys.exit(1)
 
 
 def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:

@@ -148,8 +148,9 @@ class CrossChecks:
     def _states_check(self) -> Check:
         """Each state reached by the motion (energy, derive.mechanics.states) against Newton–Euler's
         equations integrated numerically from its start until its condition holds (a coordinate
-        gets there, the motion turns, a force falls to zero), at the middle of the parameter
-        ranges: every coordinate and velocity, and the time it takes, within 1e-7."""
+        gets there, the motion turns, a force falls to zero), at a point of the parameter ranges
+        where the motion gets there (the middle, else the first of 20 draws that meets every
+        condition): every coordinate and velocity, and the time it takes, within 1e-7."""
         coords, newton_euler = self.coordinates, self.derivations["newton_euler"]
         for name, state in self.scene.states.items():
             if state.rates:
@@ -158,8 +159,13 @@ class CrossChecks:
             time = self._duration(name)[0]
             exprs = [*reached.values.values(), *reached.path.start.values(), time,
                      *(e.lhs - e.rhs for e in newton_euler.balances)]
-            symbols = set().union(*(e.free_symbols for e in exprs)) - coords.state - set(newton_euler.unknowns)
-            values = sample_points(self.problem, sp.Add(*symbols), count=1)[0] if symbols else {}
+            symbols = set().union(*(e.free_symbols for e in exprs), *(c.free_symbols for c, _, _ in self.conditions))
+            symbols -= coords.state | set(newton_euler.unknowns)
+            values = next((point for point in sample_points(self.problem, sp.Add(*symbols), count=20)
+                           if self.violated(point) is None), None)
+            if values is None:
+                raise self.problem.error(f"scene.states.{name}", "the motion gets to this state at none of 20 points "
+                                                                 "of the parameter ranges: narrow them")
             expected = {k: float(sp.N(v.xreplace(values), 20)) for k, v in reached.values.items()}
             try:
                 expected_time = float(numeric.evaluate(time, values, 12))  # an integral: by mpmath's quadrature

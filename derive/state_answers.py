@@ -21,6 +21,8 @@ import sympy as sp
 from derive import limits
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
+from derive.parts.contact import Contact
+from derive.parts.surfaces import Plane
 from derive.scene import Quantity
 
 
@@ -127,6 +129,26 @@ class StateAnswers:
             result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
                        for part in (*scene.constraints, *scene.loads) for sign in part.signs()
                        if not sign.expression.has(*reached.vanished)]
+        return result + self._ramp_conditions()
+
+    def _ramp_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
+        """A body on an incline of a given height starts at its top (derive.parts.surfaces.Plane):
+        in every state the motion gets to, it is still on the ramp, from the top down to the
+        bottom (where a formula for an endless plane would put it beyond, the variant is refused)."""
+        result = []
+        for contact in self.dynamics_scene.constraints:
+            surface = self.scene.surfaces.get(getattr(contact, "surface", None))
+            if not isinstance(contact, Contact) or not isinstance(surface, Plane) or surface.height is None:
+                continue
+            for name, reached in self.states.items():
+                if reached.path is None:
+                    continue
+                drop = -reached.values[self.coordinates.of(contact.body, "y").q]
+                result += [(drop, False, f"the {contact.body} would be above the top of {contact.surface} in the "
+                                         f"state {name} (the incline starts where it is placed)"),
+                           (surface.height - drop, False, f"the {contact.body} would be past the bottom of "
+                                                          f"{contact.surface} in the state {name} (its height is "
+                                                          f"{sp.sstr(surface.height)})")]
         return result
 
     def _state_steps(self, result: dict[str, list[Step]]) -> None:

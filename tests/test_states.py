@@ -2,6 +2,7 @@
 the textbook suite (tests/textbook/states); here the rules a user meets, each refusal, and the
 second route (Newton–Euler's motion integrated) shown to catch a wrong state."""
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -216,3 +217,81 @@ def test_a_wrong_time_is_caught_by_the_integrated_motion(tmp_path, monkeypatch):
     monkeypatch.setattr(states, "duration", lambda *args: (original(*args)[0] * 101 / 100, original(*args)[1]))
     with pytest.raises(CheckFailure, match="differ"):
         report.solve(problem.load(path), {}, 4)
+
+
+# Found by a new-user trial (a helper writing setups from the README alone).
+
+HOOP = """\
+id: hoop_down_ramp
+title: A hoop rolls down a ramp from a spot away from the plane's origin
+topic: rolling
+parameters:
+  M: {meaning: mass of the hoop, unit: kg, range: [0.5, 5], sig_figs: 2}
+  R: {meaning: radius of the hoop, unit: m, range: [0.05, 0.2], sig_figs: 2}
+  H: {meaning: height of the ramp, unit: m, range: [1, 2], sig_figs: 2}
+  theta: {meaning: angle of the ramp, unit: rad, range: [0.2, 0.8], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    ramp: {incline: {angle: theta, height: H}}
+  bodies:
+    hoop: {shape: ring, mass: M, radius: R, at: [H/tan(theta) + R*sin(theta), -H + R*cos(theta)], on: ramp, contact: rolling}
+  loads:
+    - gravity: g
+  states:
+    low: {when: {hoop.y: -H + R*cos(theta) - DROP}}
+ask:
+  turned: {meaning: angle the hoop has turned through, of: hoop.angle, in: low, unit: rad}
+  v: {meaning: speed of its center, of: hoop.speed, in: low, unit: m/s}
+question: |
+  A hoop rolls down a ramp.
+"""
+
+
+def test_a_hoop_placed_away_from_the_planes_origin_turns_by_the_distance_it_rolls(tmp_path):
+    """The rolling gap was measured from the plane's origin, so a body placed elsewhere started
+    turned (its angle in a state was off by H/(R sin(theta)); the integration check caught it).
+    Dropping h, it rolls h/sin(theta) and turns that over R, clockwise; v = sqrt(g h) for a hoop."""
+    path = tmp_path / "problem.yaml"
+    path.write_text(HOOP.replace("DROP", "H/2"))
+    result = run_derive("solve", str(path), "--format", "json", "--set", "H=1.5", "--set", "R=0.1", "--set", "theta=0.5")
+    assert result.returncode == 0, result.stderr
+    answers = json.loads(result.stdout)["answers"]
+    assert float(answers["turned"]["value"]) == pytest.approx(-0.75 / math.sin(0.5) / 0.1, rel=1e-3)
+    assert float(answers["v"]["value"]) == pytest.approx(math.sqrt(9.81 * 0.75), rel=1e-3)
+
+
+def test_a_state_past_the_bottom_of_a_ramp_of_given_height_is_refused(tmp_path):
+    """The ramp's height is how far it drops from where the hoop starts: rolling 2H down would
+    leave it, which an endless plane's formula would answer."""
+    assert "past the bottom of ramp" in refused(tmp_path, HOOP.replace("DROP", "2*H"), "scene")
+
+
+def test_a_scene_of_two_degrees_of_freedom_is_refused_at_once(tmp_path):
+    """A rod on a smooth floor slides and turns: energy fixes one rate of two. Refused before any
+    gap is solved (it used to run into the time limit)."""
+    text = ROD.replace("  joints:\n    hinge: {pin: rod.start}\n", "  surfaces:\n    floor: {plane: {angle: 0, through: [0, 0]}}\n"
+                       "  joints:\n    foot: {touches: rod.start, on: floor}\n").replace(
+        "at: [L/2, 0], angle: 0", "at: [L/2*cos(1), L/2*sin(1)], angle: 1").replace("TARGET", "1/2")
+    result = solve(tmp_path, text)
+    assert result.returncode == 1 and "2 degrees of freedom" in result.stderr, result.stderr
+
+
+def test_a_state_where_its_coordinate_is_extremal_is_reached_along_another(tmp_path):
+    """A bead from the bowl's rim asked at the bottom by its height (y = -R, its minimum): y has
+    no rate there, so the motion is followed along x; speed sqrt(2 g R), normal force 3 m g."""
+    text = (Path(__file__).parent / "textbook" / "states" / "block_in_bowl.yaml").read_text()
+    result = solve(tmp_path, text.replace("bottom: {when: {bead.x: 0}}", "bottom: {when: {bead.y: -R}}"),
+                   "--set", "R=0.5", "--set", "m=0.2")
+    assert result.returncode == 0, result.stderr
+    answers = json.loads(result.stdout)["answers"]
+    assert float(answers["v"]["value"]) == pytest.approx(math.sqrt(2 * 9.81 * 0.5), rel=1e-3)
+    assert float(answers["N"]["value"]) == pytest.approx(3 * 0.2 * 9.81, rel=1e-3)
+
+
+def test_ranges_whose_middle_never_gets_to_the_state_are_refused(tmp_path):
+    """derive decides the state's branch at the middle of the ranges: where the motion does not get
+    there (a ball pushed too slowly to reach where its cord would go slack), the file is refused
+    with the reason, not answered from a branch chosen blind."""
+    text = BALL.replace("range: [3.6, 4.4]", "range: [2, 2.5]")
+    assert "middle of the parameter ranges" in refused(tmp_path, text, "scene.states.slack")

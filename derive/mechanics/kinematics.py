@@ -190,16 +190,26 @@ def roots(gap: sp.Expr, q: sp.Symbol) -> list[sp.Expr]:
 
 def _heading(branches: list[sp.Expr], k: Coordinate, heading: dict | None, sample, at: dict) -> sp.Expr | None:
     """Of branches through the configuration `at`, the one that moves k the way `heading` says for
-    a small step of the other coordinates the way they head."""
+    a small step of the other coordinates the way they head. A coordinate that does not head
+    either way yet (a bead's x at a bowl's rim, where it falls straight down) is stepped both
+    ways: the branches are real on one side only, the side the motion can take."""
     if heading is None or sample is None or not heading.get(k.q) or len(branches) < 2:
         return None
-    step = {q: at[q] + sp.Rational(sign, 10**6) for q, sign in heading.items() if q != k.q}
-    matching = []
-    for branch in branches:
-        try:
-            value = sample(branch.xreplace(step).xreplace({q: at[q] for q in branch.free_symbols if q in heading}) - at[k.q])
-        except (TypeError, ValueError):
-            continue
-        if value * heading[k.q] > 0:
-            matching.append(branch)
-    return matching[0] if len(matching) == 1 else None
+    others = [q for q in heading if q != k.q]
+    still = [q for q in others if not heading[q]]
+    for signs in ([1] * len(still), [-1] * len(still)):
+        step = {q: at[q] + sp.Rational(heading[q] or signs[still.index(q)], 10**6) for q in others}
+        matching = []
+        for branch in branches:
+            try:
+                value = sample(branch.xreplace(step).xreplace({q: at[q] for q in branch.free_symbols if q in heading})
+                               - at[k.q])
+            except (TypeError, ValueError):
+                continue
+            if value * heading[k.q] > 0:
+                matching.append(branch)
+        if len(matching) == 1:
+            return matching[0]
+        if not still:
+            break
+    return None

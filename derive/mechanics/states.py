@@ -178,6 +178,9 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
     `derivation` gives the direction a start at rest moves in and the forces along the way;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
     assumptions leave open."""
+    free = len(coords.all) - sum(len(c.gaps(coords)) for c in scene.constraints)
+    if free != 1:  # before solving any gap: with two or more free, energy fixes one rate of several
+        raise StateLimit(f"find a state reached by a scene of {free} degrees of freedom (energy fixes one rate)")
     decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed  # safe: engine expressions
     heading = _heading(start, coords, derivation, decide)
     target = condition.coordinate if isinstance(condition, Gets) else None
@@ -200,7 +203,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
             continue
         tried.append(set(dependent))
         try:
-            path = _path(scene, coords, start, dependent, heading, derivation, decide, target)
+            path = _path(scene, coords, start, dependent, heading, derivation, decide, condition)
             reached = _arrive(path, condition, derivation, decide)
         except StateError as error:
             problem = problem or error
@@ -213,7 +216,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
 
 
 def _path(scene: Scene, coords: Coordinates, start: dict, dependent: dict, heading: dict, derivation: Derivation,
-          decide, target: Coordinate | None) -> Path:
+          decide, condition) -> Path:
     """The motion from the start along the one coordinate the solved constraints leave free."""
     free = [c for c in coords.all if c.q not in dependent]
     if len(free) != 1:
@@ -223,11 +226,11 @@ def _path(scene: Scene, coords: Coordinates, start: dict, dependent: dict, headi
     # From rest a coordinate with no acceleration at the start (a bead's x at a bowl's rim, where
     # it first falls straight down) moves the way the other coordinates take it: toward the state
     # (Newton–Euler's motion, integrated at every solve, checks that it gets there).
+    positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
     direction = _direction(start[speed], start, coordinate, derivation, decide) or (
-        heading[s] if target is not None and s == target.q else 0)
+        _toward(positions, condition, s, start[s], decide) if isinstance(condition, Gets) else 0)
     if not direction:
         raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
-    positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
     velocities = {c.u: tidy(sp.diff(positions[c.q], s)) * speed for c in coords.all}
     kinetic, potential = energies(scene, coords)
     per_speed_squared = tidy(kinetic.xreplace(velocities).xreplace(positions) / speed**2)
@@ -243,6 +246,16 @@ def _path(scene: Scene, coords: Coordinates, start: dict, dependent: dict, headi
     energy = kinetic.xreplace(start) + potential.xreplace(start) - antiderivative.xreplace({s: s0})
     along = tidy(energy - potential.xreplace(positions) + antiderivative)
     return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along)
+
+
+def _toward(positions: dict, condition: Gets, s: sp.Symbol, s0: sp.Expr, decide) -> int:
+    """+1 or -1: the way s must go for the state's coordinate to get to its value (the nearest
+    such point on the path), 0 where it never does."""
+    if condition.coordinate.q == s:
+        return 1 if decide(condition.value - s0) > 0 else -1
+    found = [r for r in roots(positions[condition.coordinate.q] - condition.value, s) if _real(r, decide)]
+    ahead = [decide(r) - decide(s0) for r in found if abs(decide(r) - decide(s0)) > 1e-12]
+    return 0 if not ahead else 1 if min(ahead, key=abs) > 0 else -1
 
 
 def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
@@ -269,6 +282,12 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
         s1 = _first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
         steps.append(Step("It falls to zero at", (sp.Eq(s, s1),)))
         vanished = (condition.force,)
+    inertia = path.inertia.xreplace({s: s1})
+    if inertia.has(sp.zoo, sp.oo, sp.nan) or not _real(inertia, decide) or settled(1 / inertia) == 0:
+        # the coordinate is extremal there (a bead's height at the bottom of a bowl): it has no
+        # rate to carry the motion's, which another coordinate must
+        raise StateLimit("find a coordinate that describes the motion through the state (each one the "
+                         "constraints leave free has no rate there)")
     rate = sp.Integer(0) if isinstance(condition, Stops) else path.rate(s1)
     values = path.values(s1, rate)
     arrived = path.kinetic.xreplace({s: s1})
@@ -276,6 +295,14 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     positive += [(path.kinetic.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (s1 - s0)}),
                   f"the motion stops on its way to the state (its kinetic energy, sampled at {ON_THE_WAY - 1} "
                   "points between, falls to zero)") for k in range(1, ON_THE_WAY)]
+    for expr, meaning in positive:  # where derive decides the branches, the motion must get there
+        try:
+            reaches = decide(expr) > 0
+        except StateError:  # no sample parameters, and a sign the assumptions leave open
+            continue
+        if not reaches:
+            raise StateError(f"{meaning}, at the middle of the parameter ranges (where derive decides which way the "
+                             "motion goes): narrow the ranges to where it gets there")
     if not isinstance(condition, Stops):
         steps.append(Step(f"So, moving {'forward' if path.direction > 0 else 'backward'} in {s}",
                           (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate))))

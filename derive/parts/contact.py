@@ -101,7 +101,8 @@ class Contact(Part):
         result = [surface.gap(center, radius)]
         if self.rolling:  # the arc along the surface and the turn, both as seen from the carrier
             turned = coords.angle(self.body) - (coords.angle(self.carrier) if self.carrier else 0)
-            result.append(surface.arc(center, radius) + radius * turned)
+            arc = surface.arc(center, radius)  # from the surface's own origin: zero where it is placed
+            result.append(arc - arc.xreplace(coords.at_rest_in_reference()) + radius * turned)
         return result
 
     def _kinetic_force(self, coords) -> sp.Matrix:
