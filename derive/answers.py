@@ -98,10 +98,11 @@ class Solution(StateAnswers, CrossChecks):
                                           f"{contact.name}, so friction there cannot hold it (it needs "
                                           f"{sp.sstr(tidy(grip))}): the scene cannot stay at rest")
 
-    def _solved(self, derivation: Derivation, state: dict) -> Solved:
-        """The derivation solved in a state; equations that do not fix every force are the scene's fault."""
+    def _solved(self, derivation: Derivation, state: dict, frozen=None) -> Solved:
+        """The derivation solved in a state (`frozen`: see Derivation.at); equations that do not fix
+        every force are the scene's fault."""
         try:
-            return derivation.at(state)
+            return derivation.at(state, frozen)
         except Indeterminate as error:
             raise self.problem.error("scene", str(error)) from None
 

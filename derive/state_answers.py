@@ -88,7 +88,7 @@ class StateAnswers:
         path = reached.path
         general, where, rate = path.general
         at = {where: reached.values[path.s], rate: reached.values[path.coordinate.u]}
-        return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general).raw.items()})
+        return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general, path.frozen).raw.items()})
 
     def _rate(self, q: Quantity, name: str) -> sp.Expr:
         """A body's velocity, speed, angular velocity, position or angle in a named state, or the
@@ -160,6 +160,7 @@ class StateAnswers:
                 result[f"the state {name}"].append(self._duration(name)[1])
             in_state = self._needed_unknowns(name)
             for route, d in self.derivations.items() if in_state else ():
+                solved = self.in_state(route, name)  # the answers' own solution there (along a path: by it)
                 result[route] = [*(result[route] or d.steps),
-                                 d.solving_step([u for u in d.unknowns if u in in_state], self.states[name].values,
-                                                f"in the state {name}")]
+                                 Step(f"Solving in the state {name}", tuple(sp.Eq(u, solved[u]) for u in d.unknowns
+                                                                            if u in in_state))]

@@ -295,3 +295,67 @@ def test_ranges_whose_middle_never_gets_to_the_state_are_refused(tmp_path):
     with the reason, not answered from a branch chosen blind."""
     text = BALL.replace("range: [3.6, 4.4]", "range: [2, 2.5]")
     assert "middle of the parameter ranges" in refused(tmp_path, text, "scene.states.slack")
+
+
+ATWOOD = (Path(__file__).parent / "textbook" / "states" / "atwood_pulley_speed.yaml").read_text()
+
+
+def test_blocks_on_a_cord_move_along_a_line_and_a_given_push_turns_back_where_energy_says(tmp_path):
+    """The Atwood machine has three degrees of freedom in derive's coordinates (each block may
+    swing), but from rest, or pushed along the cord, its motion is a line: the heavier block
+    thrown up at v0 stops after d = v0^2/(2a), a = (m1 - m2) g/(m1 + m2 + M/2)."""
+    text = ATWOOD.replace("    fallen: {when: {heavy.y: -10*R - h}}",
+                          "    thrown: {rates: {heavy.velocity.y: v0, heavy.velocity.x: 0, light.velocity.x: 0}}\n    top: {from: thrown, when: stops}").replace(
+        "  g: {meaning", "  v0: {meaning: speed the heavier block is thrown up at, unit: m/s, range: [0.5, 1], sig_figs: 2}\n"
+                        "  g: {meaning").split("ask:")[0] + (
+        "ask:\n  y: {meaning: height of the heavier block at the top, of: heavy.position.y, in: top, unit: m}\n"
+        "  t: {meaning: time to the top, of: time, in: top, unit: s}\nquestion: The heavier block is thrown up.\n")
+    text = "\n".join(line for line in text.splitlines() if not line.startswith("  h: "))
+    values = {"m1": 2, "m2": 1, "M": 1, "R": 0.1, "v0": 0.8}
+    result = solve(tmp_path, text, *(arg for k, v in values.items() for arg in ("--set", f"{k}={v}")))
+    assert result.returncode == 0, result.stderr
+    answers = json.loads(result.stdout)["answers"]
+    a = (2 - 1) * 9.81 / (2 + 1 + 0.5)
+    assert float(answers["y"]["value"]) == pytest.approx(-1 + 0.8**2 / (2 * a), rel=1e-9)
+    assert float(answers["t"]["value"]) == pytest.approx(0.8 / a, rel=1e-9)
+
+
+def test_a_block_pulled_up_past_its_pulley_is_refused_per_variant(tmp_path):
+    """Along a line the cord's runs keep their directions only while their ends have not met:
+    the lighter block, 10 R below the axle, cannot rise h > 10 R. The middle of the ranges is
+    fine; the variant asked is refused, naming the run."""
+    text = ATWOOD.replace("range: [0.1, 0.8], sig_figs: 2}", "range: [0.1, 1.5], sig_figs: 2}")
+    result = solve(tmp_path, text, "--set", "h=1.4", "--set", "R=0.1")
+    assert result.returncode == 2 and "run from pulley to light would shrink to nothing" in result.stderr, result.stderr
+    assert solve(tmp_path, text, "--set", "h=0.9", "--set", "R=0.1").returncode == 0
+
+
+def test_a_motion_that_leaves_its_starting_line_is_refused(tmp_path):
+    """A puck held by two springs of different stiffness (at right angles, both stretched) starts
+    along (k1, k2) but curves away: energy along that line would be wrong, so derive refuses."""
+    text = """id: puck_two_springs
+title: A puck between two springs
+topic: energy
+parameters:
+  m: {meaning: mass of the puck, unit: kg, range: [1, 2]}
+  k1: {meaning: stiffness of the spring along x, unit: N/m, range: [10, 20]}
+  k2: {meaning: stiffness of the spring along y, unit: N/m, range: [40, 50]}
+  L: {meaning: distance to each anchor, unit: m, range: [1, 2]}
+scene:
+  points:
+    east: [L, 0]
+    north: [0, L]
+  bodies:
+    puck: {shape: point, mass: m, at: [0, 0]}
+  loads:
+    - spring: {between: [east, puck], stiffness: k1, rest_length: L/2}
+    - spring: {between: [north, puck], stiffness: k2, rest_length: L/2}
+  states:
+    moved: {when: {puck.x: L/4}}
+ask:
+  v: {meaning: speed of the puck there, of: puck.speed, in: moved, unit: m/s}
+question: A puck is held between two stretched springs and released.
+"""
+    result = solve(tmp_path, text)
+    assert result.returncode == 1 and "2 degrees of freedom whose motion is not a straight line" in result.stderr, \
+        result.stderr

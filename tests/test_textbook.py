@@ -420,6 +420,32 @@ EXPECTED.update({
         "v": lambda s: s.d * sp.sqrt(s.k / s.m),
         "N": lambda s: s.m * s.g,
     },
+    # Serway & Jewett Example 10.14 (an Atwood machine with a disk pulley, by energy): after m1
+    # falls h, v = sqrt(2 (m1 - m2) g h/(m1 + m2 + I/R^2)), I = M R^2/2, omega = v/R; the
+    # acceleration a = (m1 - m2) g/(m1 + m2 + M/2) is constant, so t = sqrt(2 h/a), and the rope
+    # holds the heavier block with T1 = m1 (g - a).
+    "atwood_pulley_speed": {
+        "v": lambda s: sp.sqrt(2 * (s.m1 - s.m2) * s.g * s.h / (s.m1 + s.m2 + s.M / 2)),
+        "omega": lambda s: sp.sqrt(2 * (s.m1 - s.m2) * s.g * s.h / (s.m1 + s.m2 + s.M / 2)) / s.R,
+        "t": lambda s: sp.sqrt(2 * s.h * (s.m1 + s.m2 + s.M / 2) / ((s.m1 - s.m2) * s.g)),
+        "T1": lambda s: s.m1 * (s.g - (s.m1 - s.m2) * s.g / (s.m1 + s.m2 + s.M / 2)),
+    },
+    # Serway & Jewett ch. 10 problems (a yo-yo, a uniform disk, unwinding from a string fixed
+    # above it): M g h = (M v^2 + I v^2/R^2)/2 gives v = sqrt(4 g h/3); a = 2 g/3, so
+    # t = sqrt(2 h/a) = sqrt(3 h/g), and T = M (g - a) = M g/3.
+    "yoyo_falls": {
+        "v": lambda s: sp.sqrt(4 * s.g * s.h / 3),
+        "t": lambda s: sp.sqrt(3 * s.h / s.g),
+        "T": lambda s: s.M * s.g / 3,
+    },
+    # Serway & Jewett ch. 10 (a block on a frictionless table pulled over a uniform disk pulley by
+    # a hanging block): (m1 + m2 + M/2) v^2/2 = m2 g h; the block on the table has moved h toward
+    # the pulley, and the table holds its weight.
+    "table_block_pulley_speed": {
+        "v": lambda s: sp.sqrt(2 * s.m2 * s.g * s.h / (s.m1 + s.m2 + s.M / 2)),
+        "x": lambda s: -10 * s.R + s.h,
+        "N": lambda s: s.m1 * s.g,
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))
@@ -440,7 +466,7 @@ def _points_in_ranges(problem, fractions=(sp.Rational(1, 10), sp.Rational(1, 2),
 def test_every_file_has_its_closed_forms():
     assert {f.stem for f in FILES} == set(EXPECTED)
     assert len(FILES) >= 30
-    assert len(list((FOLDER / "states").glob("*.yaml"))) >= 13
+    assert len(list((FOLDER / "states").glob("*.yaml"))) >= 16
 
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])

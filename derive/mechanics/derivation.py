@@ -103,9 +103,12 @@ class Derivation:
     def solution(self) -> Solved:
         return self.at({})
 
-    def at(self, state: dict[sp.Symbol, sp.Expr]) -> Solved:
-        """The solution with `state` (coordinates and velocities, some or all) put in."""
-        key = tuple(sorted(state.items(), key=lambda item: str(item[0])))
+    def at(self, state: dict[sp.Symbol, sp.Expr], frozen=None) -> Solved:
+        """The solution with `state` (coordinates and velocities, some or all) put in; `frozen`
+        (equations, unknowns -> equations) rewrites the equations before they are solved (a
+        motion along a line puts each coefficient that does not change along it at its start,
+        derive.mechanics.states)."""
+        key = (tuple(sorted(state.items(), key=lambda item: str(item[0]))), frozen)
         if key not in self._states:
             coords = self.coords.all if self.coords is not None else []
             if coords and all(state.get(c.u, None) == 0 for c in coords):
@@ -115,6 +118,8 @@ class Derivation:
                 equations = [e.xreplace(state) for e in self.balances] + self._rates_along(state)
             else:
                 equations = [e.xreplace(state) for e in self.equations]
+            if frozen is not None:
+                equations = frozen(equations, self.unknowns)
             with limits.time_limit(f"solving the equations of {self.route.replace('_', '-')}"):
                 self._states[key] = solve_linear(equations, self.unknowns)
         return self._states[key]

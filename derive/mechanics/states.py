@@ -3,9 +3,10 @@
 A state is the placement (the reference configuration, every coordinate zero) moving at given
 rates, or the configuration where one body coordinate reaches a value, reached by the motion from
 another state (the placement at rest by default). The constraints fix the other velocities of
-the first; for the second the scene must have one degree of freedom, and its rates come from the
-work-energy theorem along its free coordinate s (every constraint of derive's parts is ideal:
-pins, cords, smooth or rolling contacts do no work):
+the first; for the second the motion must have one degree of freedom (the scene's one, or a
+straight line in its coordinates that it keeps: blocks on cords), and its rates come from the
+work-energy theorem along its coordinate s (every constraint of derive's parts is ideal: pins,
+cords, smooth or rolling contacts do no work):
 
     K(s1) = K(s0) + V(s0) - V(s1) + W,   K = k(s) s'^2,   W = integral of Q(s) ds
 
@@ -29,6 +30,7 @@ solve by derive.crosschecks).
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -92,7 +94,7 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
         if len(pivots) < len(others):
             open_ = [str(others[i]) for i in range(len(others)) if i not in pivots]
             raise StateError(f"the rates leave {len(open_)} velocit{'y' if len(open_) == 1 else 'ies'} open "
-                             f"({', '.join(open_)}): give more of them")
+                             f"({', '.join(open_)}): give more of them (0 for one that does not move)")
         solved = {others[i]: tidy(reduced[row, -1]) for row, i in enumerate(pivots)}
     elif any(tidy(r) != 0 for r in rows):
         raise StateError("the rates break a constraint: no motion of the scene has them")
@@ -138,6 +140,7 @@ class Path:
     velocities: dict
     inertia: sp.Expr
     kinetic: sp.Expr
+    line: tuple | None = None  # on a line: where the state is, and the sign function (see `frozen`)
 
     @property
     def s(self) -> sp.Symbol:
@@ -147,12 +150,18 @@ class Path:
         """s' where s = `where`, moving the path's way."""
         return self.direction * root(self.kinetic.xreplace({self.s: where}) / self.inertia.xreplace({self.s: where}))
 
+    @cached_property  # one function per path: Derivation.at caches its solutions by it
+    def frozen(self):
+        """On a line, the rewriting of a route's equations at the general point that puts their
+        coefficients constant along it at the start (`_constant_along`); None elsewhere."""
+        return None if self.line is None else _constant_along(self, *self.line)
+
     @cached_property  # one set of symbols per path, so that a route's solution in them is reused
     def general(self) -> tuple[dict[sp.Symbol, sp.Expr], sp.Dummy, sp.Dummy]:
         """Every coordinate and velocity at a point of the path, in two new symbols for s and s'
         (the route's equations are solved in them, then the state put in): the coordinates' own
         would be moved again where a route differentiates along the motion."""
-        where, rate = sp.Dummy(str(self.s)), sp.Dummy(str(self.coordinate.u))
+        where, rate = sp.Dummy(str(self.s), real=True), sp.Dummy(str(self.coordinate.u), real=True)
         return self.values(where, rate, settle=False), where, rate
 
     def values(self, where: sp.Expr, rate: sp.Expr, settle: bool = True) -> dict[sp.Symbol, sp.Expr]:
@@ -174,14 +183,17 @@ def settled(expr: sp.Expr) -> sp.Expr:
 def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], condition: Gets | Stops | Vanishes,
           derivation: Derivation, sample=None) -> Reached:
     """The state the motion from the state `start` (every coordinate and velocity) gets to first
-    where `condition` holds, by the work-energy theorem along the one free coordinate.
+    where `condition` holds, by the work-energy theorem along the one free coordinate (with
+    several, along the line the motion keeps: `_line`).
     `derivation` gives the direction a start at rest moves in and the forces along the way;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
     assumptions leave open."""
     free = len(coords.all) - sum(len(c.gaps(coords)) for c in scene.constraints)
-    if free != 1:  # before solving any gap: with two or more free, energy fixes one rate of several
-        raise StateLimit(f"find a state reached by a scene of {free} degrees of freedom (energy fixes one rate)")
     decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed  # safe: engine expressions
+    if free > 1:  # before solving any gap: energy fixes one rate of several, unless the motion is a line
+        return _line(scene, coords, start, condition, derivation, decide, free)
+    if free < 1:
+        raise StateError("the constraints leave the scene no motion: it never gets to the state")
     heading = _heading(start, coords, derivation, decide)
     target = condition.coordinate if isinstance(condition, Gets) else None
     if target is not None:
@@ -202,8 +214,14 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
         if set(dependent) in tried:
             continue
         tried.append(set(dependent))
+        left = [c for c in coords.all if c.q not in dependent]
+        if len(left) != 1:
+            problem = problem or StateLimit(f"find a state reached by a scene of {len(left)} degrees of freedom "
+                                            "(energy fixes one rate)")
+            continue
         try:
-            path = _path(scene, coords, start, dependent, heading, derivation, decide, condition)
+            positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
+            path = _path(scene, coords, start, left[0], positions, derivation, decide, condition)
             reached = _arrive(path, condition, derivation, decide)
         except StateError as error:
             problem = problem or error
@@ -215,18 +233,14 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
     raise problem
 
 
-def _path(scene: Scene, coords: Coordinates, start: dict, dependent: dict, heading: dict, derivation: Derivation,
-          decide, condition) -> Path:
-    """The motion from the start along the one coordinate the solved constraints leave free."""
-    free = [c for c in coords.all if c.q not in dependent]
-    if len(free) != 1:
-        raise StateLimit(f"find a state reached by a scene of {len(free)} degrees of freedom (energy fixes one rate)")
-    (coordinate,) = free
+def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate, positions: dict,
+          derivation: Derivation, decide, condition) -> Path:
+    """The motion from the start along one coordinate, every coordinate's position (`positions`)
+    a function of it: the one the solved constraints leave free, or a line's."""
     s, speed = coordinate.q, coordinate.u
     # From rest a coordinate with no acceleration at the start (a bead's x at a bowl's rim, where
     # it first falls straight down) moves the way the other coordinates take it: toward the state
     # (Newton–Euler's motion, integrated at every solve, checks that it gets there).
-    positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
     direction = _direction(start[speed], start, coordinate, derivation, decide) or (
         _toward(positions, condition, s, start[s], decide) if isinstance(condition, Gets) else 0)
     if not direction:
@@ -246,6 +260,109 @@ def _path(scene: Scene, coords: Coordinates, start: dict, dependent: dict, headi
     energy = kinetic.xreplace(start) + potential.xreplace(start) - antiderivative.xreplace({s: s0})
     along = tidy(energy - potential.xreplace(positions) + antiderivative)
     return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along)
+
+
+def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation: Derivation, decide,
+          free: int) -> Reached:
+    """The state a scene of several degrees of freedom gets to where its motion is a straight line
+    in its coordinates: q = q0 + (s - s0) d / d_s, d the start's velocities (from rest its
+    accelerations), s a coordinate that moves (the state's own where it does). Blocks on cords
+    over pulleys move so, and a yo-yo falling from its string: a block's sideways coordinate,
+    free to swing, never does. The line is checked, at the middle of the parameter ranges, at five
+    points from the start to the state: every constraint holds on it, and the accelerations there
+    (with the velocities along it from energy) stay in proportion to d. Per variant, each part's
+    extents (a cord's runs) keep their signs."""
+    limit = StateLimit(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
+                       "straight line in its coordinates (energy fixes one rate of several)")
+    if any(start[c.u] != 0 for c in coords.all):
+        d = {c: start[c.u] for c in coords.all}
+    else:
+        solved = derivation.at(start).raw
+        d = {c: tidy(solved[c.a]) for c in coords.all}
+    moves = [c for c in coords.all if d[c] != 0]
+    if not moves:
+        raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
+    target = condition.coordinate if isinstance(condition, Gets) else None
+    along = target if target in moves else min(moves, key=lambda c: c.kind == "theta")
+    ratios = {c: tidy(d[c] / d[along]) for c in coords.all}
+    s, s0 = along.q, start[along.q]
+    positions = {c.q: s if c == along else start[c.q] + ratios[c] * (s - s0) for c in coords.all}
+    path = _path(scene, coords, start, along, positions, derivation, decide, condition)
+    reached = _arrive(path, condition, derivation, decide)
+    if not _on_line(scene, coords, path, reached.end, ratios, derivation, decide):
+        raise limit
+    extents = [(tidy(e.xreplace(reached.values)), meaning)
+               for part in scene.constraints for e, meaning in part.extents(coords)]
+    for expr, meaning in extents:
+        if decide(expr) <= 0:
+            raise StateError(f"{meaning}, at the middle of the parameter ranges: narrow the ranges to where the "
+                             "state is on the scene's geometry")
+    path = dataclasses.replace(path, line=(reached.end, decide))
+    moved = tuple(sp.Eq(c.q - start[c.q], ratios[c] * (s - s0)) for c in coords.all if c != along and ratios[c] != 0)
+    kinetic = reached.steps[0].equations
+    steps = (Step(f"From the start the scene moves along a straight line of its coordinates: each in proportion to "
+                  f"{s}, as the accelerations there are, and they stay so along it (the constraints hold and the "
+                  "forces keep the proportions); the kinetic energy in its rate", (*moved, *kinetic)),
+             *reached.steps[1:])
+    return Reached(reached.values, reached.positive + tuple(extents), steps, path, reached.end, reached.vanished)
+
+
+def _constant_along(path: Path, end: sp.Expr, decide):
+    """The rewriting of a route's equations at the path's general point (Path.general) that puts
+    each coefficient (of an unknown, or the free term) that does not change along the line at its
+    value at the start. On a line a cord's runs keep their directions, but their formulas (roots
+    of the distances between the centers) do not say so, and the linear solve in them gave up
+    after 60 s for an Atwood machine. A coefficient is constant where, at the middle of the
+    parameter ranges, it has its start's value (to 25 digits) at three points between the start and
+    the state, each moving at the rate energy gives: an analytic function of s that is not
+    constant meets a value at isolated points only."""
+    general, where, rate = path.general
+    s0 = path.start[path.s]
+    probes = [{where: s0 + sp.Rational(k, 4) * (end - s0), rate: path.rate(s0 + sp.Rational(k, 4) * (end - s0))}
+              for k in (1, 2, 3)]
+
+    def constant(entry: sp.Expr) -> sp.Expr:
+        if not entry.has(where):
+            return entry
+        start = entry.xreplace({where: s0})
+        for probe in probes:
+            there, here = decide(entry.xreplace(probe)), decide(start.xreplace({rate: probe[rate]}))
+            if abs(there - here) > 1e-25 * (1 + abs(here)):
+                return entry
+        return tidy(start)
+
+    def frozen(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> list[sp.Eq]:
+        matrix, rhs = sp.linear_eq_to_matrix([e.lhs - e.rhs for e in equations], unknowns)
+        return [sp.Eq(sum((constant(matrix[i, j]) * u for j, u in enumerate(unknowns)), sp.Integer(0)),
+                      constant(rhs[i])) for i in range(len(equations))]
+    return frozen
+
+
+def _on_line(scene: Scene, coords: Coordinates, path: Path, end: sp.Expr, ratios: dict, derivation: Derivation,
+             decide) -> bool:
+    """Whether, at the middle of the parameter ranges, the line from the path's start to `end`
+    keeps every constraint (each gap zero to 30 digits at five points) and the motion on it
+    (velocities along it, at the rate energy gives) accelerates along it (each acceleration in
+    its ratio to the path's, to 1e-8 and 1e-9 of the largest, the equations solved in floats)."""
+    s0 = path.start[path.s]
+    gaps = [g for part in scene.constraints for g in part.gaps(coords)]
+    parameters = set().union(*(e.free_symbols for e in derivation.equations))
+    parameters -= coords.state | set(derivation.unknowns)
+    accelerations = derivation.numeric({p: decide(p) for p in parameters})
+    n, index = len(coords.all), coords.all.index(path.coordinate)
+    numbers = [decide(ratios[c]) for c in coords.all]
+    for k in range(5):
+        where = s0 + sp.Rational(k, 4) * (end - s0)
+        at = path.values(where, path.rate(where), settle=False)
+        for gap in gaps:
+            terms = [decide(t.xreplace(at)) for t in sp.Add.make_args(gap)]
+            if abs(sum(terms)) > 1e-15 * (1 + sum(abs(t) for t in terms)):
+                return False
+        a = accelerations(np.array([decide(at[c.q]) for c in coords.all] + [decide(at[c.u]) for c in coords.all]))[:n]
+        floor = 1e-9 * max(abs(a))  # the rounding of a zero acceleration in floats
+        if any(abs(a[i] - r * a[index]) > 1e-8 * (abs(a[i]) + abs(r * a[index])) + floor for i, r in enumerate(numbers)):
+            return False
+    return True
 
 
 def _toward(positions: dict, condition: Gets, s: sp.Symbol, s0: sp.Expr, decide) -> int:
@@ -312,7 +429,7 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
 def _along(path: Path, force: sp.Symbol, derivation: Derivation) -> sp.Expr:
     """A constraint force along the path, as a function of s (s'^2 from the energy)."""
     general, where, rate = path.general
-    solved = derivation.at(general).raw[force].xreplace({where: path.s})
+    solved = derivation.at(general, path.frozen).raw[force].xreplace({where: path.s})
     return tidy(solved.xreplace({rate: sp.sqrt(path.kinetic / path.inertia)}))
 
 

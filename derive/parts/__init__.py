@@ -98,3 +98,10 @@ class Part:
     def signs(self) -> list[Sign]:
         """Forces that must keep their sign (a taut cord, a body pressing on its surface)."""
         return []
+
+    def extents(self, coords) -> list[tuple[sp.Expr, str]]:
+        """Sizes of its geometry, positive in the reference configuration, with what it means for
+        one to reach zero: a motion along a straight line of the coordinates
+        (derive.mechanics.states) keeps them positive where its line is the part's (a block pulled
+        up past its pulley would flip the cord's run)."""
+        return []

@@ -244,6 +244,19 @@ class Cord(Part):
     def conditions(self, coords) -> list[sp.Expr]:
         return [s.rate(coords) for s in self.segments() if s.symbol is not None]
 
+    def extents(self, coords) -> list[tuple[sp.Expr, str]]:
+        """Each straight run measured along its direction in the reference configuration: its
+        length there, zero where its ends meet, negative where they have crossed."""
+        rest = coords.at_rest_in_reference()
+        result = []
+        for s in self.segments():
+            for r in s.runs(coords):
+                if r.length is not None:
+                    result.append((r.direction.xreplace(rest).dot(r.end_point - r.start_point),
+                                   f"the cord {self.name}'s run from {_describe(r.start)} to {_describe(r.end)} would "
+                                   "shrink to nothing (its ends would meet)"))
+        return result
+
     def signs(self) -> list[Sign]:
         return [Sign(s.symbol, f"the cord {self.name} goes slack (its tension would be negative)")
                 for s in self.segments() if s.symbol is not None]
