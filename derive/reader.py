@@ -149,6 +149,14 @@ class Reader:
             raise self.fail(field, f"{what} is a letter followed by letters, digits or _")
         return value
 
+    def named(self, raw, section: str) -> dict:
+        """A section of the scene that maps declared names to their specs (`scene.joints`,
+        `scene.states`, ...): a mapping, possibly absent, every key a name."""
+        raw = self.mapping(raw or {}, f"scene.{section}", free=True)
+        for name in raw:
+            self.name(name, f"scene.{section}.{name}", f"a name in {section}")
+        return raw
+
     def text(self, value, field: str, limit: int) -> str:
         """Non-empty text of at most `limit` characters that TeX may safely see
         (derive.latex_safety): plain text, but for the `question` field, checked as LaTeX with

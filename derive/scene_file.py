@@ -1,5 +1,6 @@
 """The scene section of a problem file: bodies, joints, contacts, surfaces, loads, events and
-the scene-level systems (orbit, top, spinning wheel, standing wave, internal forces).
+the scene-level systems (orbit, top, spinning wheel, standing wave, internal forces); its states
+are read by derive.state_file.
 
 Every field goes through the `derive.reader.Reader`, so errors name the file and the field.
 
@@ -13,7 +14,7 @@ import dataclasses
 
 import sympy as sp
 
-from derive import composite, inertia, units
+from derive import composite, inertia, state_file, units
 from derive.errors import EngineLimit, InputError
 from derive.parts import contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
 from derive.parts.contact import Contact
@@ -24,7 +25,7 @@ from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
 from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Bounce, InternalTurn, Motion, Orbit,
-                          Rotation, Scene, Skid, SpinningWheel, StandingWave, State, Stick, Top)
+                          Rotation, Scene, Skid, SpinningWheel, StandingWave, Stick, Top)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "touches": contact.read}
@@ -225,89 +226,6 @@ def _events(reader: Reader, raw, bodies: dict[str, Body]) -> tuple:
     return tuple(result)
 
 
-#: How a state names a body's coordinates: (kind, unit) of a position (`when:`) and of a rate (`rates:`).
-STATE_POSITIONS = {"x": ("x", "m"), "y": ("y", "m"), "angle": ("theta", "rad")}
-STATE_RATES = {"velocity.x": ("x", "m/s"), "velocity.y": ("y", "m/s"), "angular_velocity": ("theta", "rad/s")}
-
-
-def _states(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dict[str, State]:
-    """`states: {spinning: {rates: {wheel.angular_velocity: w0}}, vertical: {when: {rod.angle: -pi/2},
-    from: spinning}}`: each state's `from` one named above it (no state reached from itself).
-    `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
-    stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`) or a cord goes slack
-    (`{slack: CORD}`)."""
-    result = {}
-    for name, spec in _named(reader, raw, "states").items():
-        field = f"scene.states.{name}"
-        if name in bodies or name in ("placement", "ground"):
-            raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
-        spec = reader.mapping(spec, field, optional=("rates", "when", "from"))
-        if ("rates" in spec) == ("when" in spec):
-            raise reader.fail(field, "a state gives rates: (at the placement) or when: (a position reached)")
-        if "rates" in spec:
-            if "from" in spec:
-                raise reader.fail(f"{field}.from", "rates: are given at the placement; from: goes with when:")
-            rates = reader.mapping(spec["rates"], f"{field}.rates", free=True)
-            if not rates:
-                raise reader.fail(f"{field}.rates", "give at least one rate, e.g. wheel.angular_velocity: omega0")
-            result[name] = State(name, rates=tuple(_state_entry(reader, key, value, f"{field}.rates", bodies, STATE_RATES)
-                                                   for key, value in rates.items()))
-            continue
-        start = spec.get("from")
-        if start is not None and start not in result:
-            raise reader.fail(f"{field}.from", f"expected a state named above this one (states: "
-                                               f"{', '.join(result) or 'none'})")
-        if spec["when"] == "stops":
-            result[name] = State(name, start=start, until=("stops", None))
-            continue
-        if not isinstance(spec["when"], dict):
-            raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY} "
-                                               "and {slack: CORD}")
-        when = reader.mapping(spec["when"], f"{field}.when", free=True)
-        if len(when) != 1:
-            raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY} "
-                                               "or {slack: CORD}")
-        (key, value), = when.items()
-        if key in THRESHOLDS:
-            result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",
-                                                                                constraints)))
-            continue
-        result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies, STATE_POSITIONS),
-                             start=start)
-    return result
-
-
-#: The states where a part's force falls to zero: the part's kind and the force's key.
-THRESHOLDS = {"leaves": (Contact, "normal"), "slack": (Cord, None)}
-
-
-def _threshold_part(reader: Reader, kind: str, raw, field: str, constraints: list) -> str:
-    """The part whose force falls to zero: a contact (named, or by its body) or a cord of one tension."""
-    part_type, _ = THRESHOLDS[kind]
-    fitting = {c.name: c for c in constraints if isinstance(c, part_type)}
-    if part_type is Contact:
-        fitting.update({c.body: c for c in constraints if isinstance(c, Contact) and c.point is None})
-    if not isinstance(raw, str) or raw not in fitting:
-        what = "a contact (a body on a surface, or a contact joint)" if part_type is Contact else "a cord"
-        raise reader.fail(field, f"expected {what} of the scene ({', '.join(fitting) or 'none'})")
-    part = fitting[raw]
-    if part_type is Cord and len(part.unknowns()) != 1:
-        raise reader.fail(field, f"the cord {raw} has {len(part.unknowns())} tensions: slack is for a cord of one")
-    return part.name
-
-
-def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body], kinds: dict) -> tuple:
-    """(body, coordinate kind, value) from `BODY.angle: -pi/2` (or a rate)."""
-    head, _, rest = str(key).partition(".")
-    if head not in bodies:
-        raise reader.fail(f"{field}.{key}", f"no body {head!r} (bodies: {', '.join(bodies)})")
-    if rest not in kinds or kinds[rest][0] == "theta" and not bodies[head].rotates:
-        allowed = [k for k, (kind, _) in kinds.items() if kind != "theta" or bodies[head].rotates]
-        raise reader.fail(f"{field}.{key}", f"a state gives {head}'s {', '.join(allowed)}")
-    kind, unit = kinds[rest]
-    return head, kind, reader.dimensioned(value, f"{field}.{key}", unit, "a position" if unit in ("m", "rad") else "a rate")
-
-
 PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
 
 
@@ -477,13 +395,6 @@ def _placed(reader: Reader, bodies: dict[str, Body], specs: dict, surfaces: dict
     return result
 
 
-def _named(reader: Reader, raw, section: str) -> dict:
-    raw = reader.mapping(raw or {}, f"scene.{section}", free=True)
-    for name in raw:
-        reader.name(name, f"scene.{section}.{name}", f"a name in {section}")
-    return raw
-
-
 def _loads(reader: Reader, raw, places: Places) -> tuple[list, list]:
     """`loads:` a list of `{KIND: SPEC}` (LOADS; `pull` is the shorthand of a cord wound on a hub
     and pulled by a force). Returns (gravity, if any, in a list; the other loads)."""
@@ -583,7 +494,7 @@ def read_scene(reader: Reader, raw) -> Scene:
     internal = _internal_forces(reader, raw["internal_forces"]) if "internal_forces" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
     ground = {name: _vector(reader, v, f"scene.points.{name}", "m", "a position")
-              for name, v in _named(reader, raw.get("points"), "points").items()}
+              for name, v in reader.named(raw.get("points"), "points").items()}
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
     if not bodies_raw and all(s is None for s in (orbit, top, wheel, wave, internal)):
         raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a top, a spinning_wheel)")
@@ -612,7 +523,7 @@ def read_scene(reader: Reader, raw) -> Scene:
     kinds = [p.name for p in pins]
     pins = [p if kinds.count(p.name) == 1 else Pin(f"{p.body}_{p.name}", p.body, p.offset) for p in pins]
     joints = []
-    for name, spec in _named(reader, raw.get("joints"), "joints").items():
+    for name, spec in reader.named(raw.get("joints"), "joints").items():
         field = f"scene.joints.{name}"
         kind = [k for k in JOINTS if isinstance(spec, dict) and k in spec]
         if len(kind) != 1:
@@ -620,7 +531,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         joints.append(JOINTS[kind[0]](reader, places, name, spec, field))
     cords = [cord.read(reader, places, name, spec["path"], spec["field"]) for name, spec in strings]
     cords += [cord.read(reader, places, name, path, f"scene.cords.{name}")
-              for name, path in _named(reader, raw.get("cords"), "cords").items()]
+              for name, path in reader.named(raw.get("cords"), "cords").items()]
     found, loads = _loads(reader, raw.get("loads") or [], places)
     constraints = [*pins, *contacts, *joints, *(c for c in cords if c.unknowns())]
     loads = [*(c for c in cords if not c.unknowns()), *loads]
@@ -646,7 +557,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
     rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
                  for n, spec in bodies_raw.items() if "rotation" in spec}
-    states = _states(reader, raw.get("states"), bodies, constraints)
+    states = state_file.read(reader, raw.get("states"), bodies, constraints)
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, events, top, wheel,
                   wave, internal, rotations, states)
     _check_geometry(reader, places, scene)

@@ -272,8 +272,6 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     points from the start to the state: every constraint holds on it, and the accelerations there
     (with the velocities along it from energy) stay in proportion to d. Per variant, each part's
     extents (a cord's runs) keep their signs."""
-    limit = StateLimit(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
-                       "straight line in its coordinates (energy fixes one rate of several)")
     if any(start[c.u] != 0 for c in coords.all):
         d = {c: start[c.u] for c in coords.all}
     else:
@@ -290,13 +288,11 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     path = _path(scene, coords, start, along, positions, derivation, decide, condition)
     reached = _arrive(path, condition, derivation, decide)
     if not _on_line(scene, coords, path, reached.end, ratios, derivation, decide):
-        raise limit
+        raise StateLimit(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
+                         "straight line in its coordinates (energy fixes one rate of several)")
     extents = [(tidy(e.xreplace(reached.values)), meaning)
                for part in scene.constraints for e, meaning in part.extents(coords)]
-    for expr, meaning in extents:
-        if decide(expr) <= 0:
-            raise StateError(f"{meaning}, at the middle of the parameter ranges: narrow the ranges to where the "
-                             "state is on the scene's geometry")
+    _positive_at_the_middle(extents, decide, ": narrow the ranges to where the state is on the scene's geometry")
     path = dataclasses.replace(path, line=(reached.end, decide))
     moved = tuple(sp.Eq(c.q - start[c.q], ratios[c] * (s - s0)) for c in coords.all if c != along and ratios[c] != 0)
     kinetic = reached.steps[0].equations
@@ -326,8 +322,8 @@ def _constant_along(path: Path, end: sp.Expr, decide):
             return entry
         start = entry.xreplace({where: s0})
         for probe in probes:
-            there, here = decide(entry.xreplace(probe)), decide(start.xreplace({rate: probe[rate]}))
-            if abs(there - here) > 1e-25 * (1 + abs(here)):
+            here = start.xreplace({rate: probe[rate]})  # the difference at 30 digits, before any float
+            if abs(decide(entry.xreplace(probe) - here)) > 1e-25 * (1 + abs(decide(here))):
                 return entry
         return tidy(start)
 
@@ -341,7 +337,8 @@ def _constant_along(path: Path, end: sp.Expr, decide):
 def _on_line(scene: Scene, coords: Coordinates, path: Path, end: sp.Expr, ratios: dict, derivation: Derivation,
              decide) -> bool:
     """Whether, at the middle of the parameter ranges, the line from the path's start to `end`
-    keeps every constraint (each gap zero to 30 digits at five points) and the motion on it
+    keeps every constraint (each gap, its terms evaluated at 30 digits, zero to 1e-15 of their sizes, at
+    five points) and the motion on it
     (velocities along it, at the rate energy gives) accelerates along it (each acceleration in
     its ratio to the path's, to 1e-8 and 1e-9 of the largest, the equations solved in floats)."""
     s0 = path.start[path.s]
@@ -412,18 +409,25 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     positive += [(path.kinetic.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (s1 - s0)}),
                   f"the motion stops on its way to the state (its kinetic energy, sampled at {ON_THE_WAY - 1} "
                   "points between, falls to zero)") for k in range(1, ON_THE_WAY)]
-    for expr, meaning in positive:  # where derive decides the branches, the motion must get there
-        try:
-            reaches = decide(expr) > 0
-        except StateError:  # no sample parameters, and a sign the assumptions leave open
-            continue
-        if not reaches:
-            raise StateError(f"{meaning}, at the middle of the parameter ranges (where derive decides which way the "
-                             "motion goes): narrow the ranges to where it gets there")
+    _positive_at_the_middle(positive, decide, " (where derive decides which way the motion goes): narrow the ranges "
+                                             "to where it gets there")
     if not isinstance(condition, Stops):
         steps.append(Step(f"So, moving {'forward' if path.direction > 0 else 'backward'} in {s}",
                           (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate))))
     return Reached(values, tuple(positive), tuple(steps), path, s1, vanished)
+
+
+def _positive_at_the_middle(positive, decide, advice: str) -> None:
+    """Refuse (StateError, with `advice`) where one of the (expression, meaning) pairs is not
+    positive at the middle of the parameter ranges, where derive makes its choices; a sign that
+    no sample parameters decide is left to the per-variant conditions."""
+    for expr, meaning in positive:
+        try:
+            holds = decide(expr) > 0
+        except StateError:  # no sample parameters, and a sign the assumptions leave open
+            continue
+        if not holds:
+            raise StateError(f"{meaning}, at the middle of the parameter ranges{advice}")
 
 
 def _along(path: Path, force: sp.Symbol, derivation: Derivation) -> sp.Expr:

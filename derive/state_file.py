@@ -1,0 +1,96 @@
+"""The states section of a scene (`scene.states`): named states, each the placement moving at given
+rates or where the motion from another state gets to (a position, a stop, a force falling to
+zero). derive.mechanics.states finds them; derive.state_answers answers in them.
+
+>>> from derive.problem import load
+>>> load("tests/textbook/states/rod_swings_down.yaml").scene.states["lowest"].when[:2]
+('rod', 'theta')
+"""
+from __future__ import annotations
+
+from derive.parts.contact import Contact
+from derive.parts.cord import Cord
+from derive.reader import Reader
+from derive.scene import Body, State
+
+#: How a state names a body's coordinates: (kind, unit) of a position (`when:`) and of a rate (`rates:`).
+STATE_POSITIONS = {"x": ("x", "m"), "y": ("y", "m"), "angle": ("theta", "rad")}
+STATE_RATES = {"velocity.x": ("x", "m/s"), "velocity.y": ("y", "m/s"), "angular_velocity": ("theta", "rad/s")}
+
+
+def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dict[str, State]:
+    """`states: {spinning: {rates: {wheel.angular_velocity: w0}}, vertical: {when: {rod.angle: -pi/2},
+    from: spinning}}`: each state's `from` one named above it (no state reached from itself).
+    `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
+    stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`) or a cord goes slack
+    (`{slack: CORD}`)."""
+    result = {}
+    for name, spec in reader.named(raw, "states").items():
+        field = f"scene.states.{name}"
+        if name in bodies or name in ("placement", "ground"):
+            raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
+        spec = reader.mapping(spec, field, optional=("rates", "when", "from"))
+        if ("rates" in spec) == ("when" in spec):
+            raise reader.fail(field, "a state gives rates: (at the placement) or when: (a position reached)")
+        if "rates" in spec:
+            if "from" in spec:
+                raise reader.fail(f"{field}.from", "rates: are given at the placement; from: goes with when:")
+            rates = reader.mapping(spec["rates"], f"{field}.rates", free=True)
+            if not rates:
+                raise reader.fail(f"{field}.rates", "give at least one rate, e.g. wheel.angular_velocity: omega0")
+            result[name] = State(name, rates=tuple(_state_entry(reader, key, value, f"{field}.rates", bodies, STATE_RATES)
+                                                   for key, value in rates.items()))
+            continue
+        start = spec.get("from")
+        if start is not None and start not in result:
+            raise reader.fail(f"{field}.from", f"expected a state named above this one (states: "
+                                               f"{', '.join(result) or 'none'})")
+        if spec["when"] == "stops":
+            result[name] = State(name, start=start, until=("stops", None))
+            continue
+        if not isinstance(spec["when"], dict):
+            raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY} "
+                                               "and {slack: CORD}")
+        when = reader.mapping(spec["when"], f"{field}.when", free=True)
+        if len(when) != 1:
+            raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY} "
+                                               "or {slack: CORD}")
+        (key, value), = when.items()
+        if key in THRESHOLDS:
+            result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",
+                                                                                constraints)))
+            continue
+        result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies, STATE_POSITIONS),
+                             start=start)
+    return result
+
+
+#: The states where a part's force falls to zero: the part's kind and the force's key.
+THRESHOLDS = {"leaves": (Contact, "normal"), "slack": (Cord, None)}
+
+
+def _threshold_part(reader: Reader, kind: str, raw, field: str, constraints: list) -> str:
+    """The part whose force falls to zero: a contact (named, or by its body) or a cord of one tension."""
+    part_type, _ = THRESHOLDS[kind]
+    fitting = {c.name: c for c in constraints if isinstance(c, part_type)}
+    if part_type is Contact:
+        fitting.update({c.body: c for c in constraints if isinstance(c, Contact) and c.point is None})
+    if not isinstance(raw, str) or raw not in fitting:
+        what = "a contact (a body on a surface, or a contact joint)" if part_type is Contact else "a cord"
+        raise reader.fail(field, f"expected {what} of the scene ({', '.join(fitting) or 'none'})")
+    part = fitting[raw]
+    if part_type is Cord and len(part.unknowns()) != 1:
+        raise reader.fail(field, f"the cord {raw} has {len(part.unknowns())} tensions: slack is for a cord of one")
+    return part.name
+
+
+def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body], kinds: dict) -> tuple:
+    """(body, coordinate kind, value) from `BODY.angle: -pi/2` (or a rate)."""
+    head, _, rest = str(key).partition(".")
+    if head not in bodies:
+        raise reader.fail(f"{field}.{key}", f"no body {head!r} (bodies: {', '.join(bodies)})")
+    if rest not in kinds or kinds[rest][0] == "theta" and not bodies[head].rotates:
+        allowed = [k for k, (kind, _) in kinds.items() if kind != "theta" or bodies[head].rotates]
+        raise reader.fail(f"{field}.{key}", f"a state gives {head}'s {', '.join(allowed)}")
+    kind, unit = kinds[rest]
+    return head, kind, reader.dimensioned(value, f"{field}.{key}", unit, "a position" if unit in ("m", "rad") else "a rate")
