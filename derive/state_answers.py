@@ -132,9 +132,10 @@ class StateAnswers:
         return result + self._ramp_conditions()
 
     def _ramp_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
-        """A body on an incline of a given height starts at its top (derive.parts.surfaces.Plane):
-        in every state the motion gets to, it is still on the ramp, from the top down to the
-        bottom (where a formula for an endless plane would put it beyond, the variant is refused)."""
+        """An incline's height is how far it drops below where a body starts
+        (derive.parts.surfaces.Plane): in every state the motion gets to, the body has not dropped
+        past its bottom (where a formula for an endless plane would put it beyond, the variant is
+        refused). Up the slope the plane goes on: a block pulled up it is not limited."""
         result = []
         for contact in self.dynamics_scene.constraints:
             surface = self.scene.surfaces.get(getattr(contact, "surface", None))
@@ -144,11 +145,10 @@ class StateAnswers:
                 if reached.path is None:
                     continue
                 drop = -reached.values[self.coordinates.of(contact.body, "y").q]
-                result += [(drop, False, f"the {contact.body} would be above the top of {contact.surface} in the "
-                                         f"state {name} (the incline starts where it is placed)"),
-                           (surface.height - drop, False, f"the {contact.body} would be past the bottom of "
-                                                          f"{contact.surface} in the state {name} (its height is "
-                                                          f"{sp.sstr(surface.height)})")]
+                result.append((surface.height - drop, False, f"the {contact.body} would be past the bottom of "
+                                                             f"{contact.surface} in the state {name} (it drops "
+                                                             f"{sp.sstr(surface.height)} below where the "
+                                                             f"{contact.body} starts)"))
         return result
 
     def _state_steps(self, result: dict[str, list[Step]]) -> None:

@@ -267,6 +267,22 @@ def test_a_state_past_the_bottom_of_a_ramp_of_given_height_is_refused(tmp_path):
     assert "past the bottom of ramp" in refused(tmp_path, HOOP.replace("DROP", "2*H"), "scene")
 
 
+def test_a_hoop_rolling_up_a_ramp_of_given_height_is_not_limited_by_it(tmp_path):
+    """The height is the drop below the start, not a top: a hoop pushed up the slope at v0 rises
+    v0^2/g (K = M v^2 for a rolling hoop), above where it started. It was refused as "above the
+    top of ramp" (found by a new-user trial: a block pulled up an incline by a hanging block)."""
+    text = HOOP.replace("    low: {when: {hoop.y: -H + R*cos(theta) - DROP}}",
+                        "    pushed: {rates: {hoop.velocity.x: -v0*cos(theta), hoop.velocity.y: v0*sin(theta)}}\n"
+                        "    top: {from: pushed, when: stops}").replace(
+        "  g: {meaning", "  v0: {meaning: speed it is pushed up at, unit: m/s, range: [1, 2], sig_figs: 2}\n  g: {meaning")
+    text = text.split("ask:")[0] + ("ask:\n  y: {meaning: height of its center at the top, of: hoop.position.y, in: top, "
+                                    "unit: m}\nquestion: A hoop is pushed up a ramp.\n")
+    result = solve(tmp_path, text, "--set", "H=1.5", "--set", "R=0.1", "--set", "theta=0.5", "--set", "v0=1.5")
+    assert result.returncode == 0, result.stderr
+    y = float(json.loads(result.stdout)["answers"]["y"]["value"])
+    assert y == pytest.approx(-1.5 + 0.1 * math.cos(0.5) + 1.5**2 / 9.81, rel=1e-9)
+
+
 def test_a_scene_of_two_degrees_of_freedom_is_refused_at_once(tmp_path):
     """A rod on a smooth floor slides and turns: energy fixes one rate of two. Refused before any
     gap is solved (it used to run into the time limit)."""
