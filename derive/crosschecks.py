@@ -151,10 +151,16 @@ class CrossChecks:
         gets there, the motion turns, a force falls to zero), at a point of the parameter ranges
         where the motion gets there (the middle, else the first of 20 draws that meets every
         condition): every coordinate and velocity, and the time it takes, within 1e-7."""
-        coords, newton_euler = self.coordinates, self.derivations["newton_euler"]
+        coords = self.coordinates
+        impacts = 0
         for name, state in self.scene.states.items():
             if state.rates:
                 continue
+            if state.event:
+                self._impact_check(name)
+                impacts += 1
+                continue
+            newton_euler = self.derivations_in(name)["newton_euler"]
             reached = self.states[name]
             time = self._duration(name)[0]
             exprs = [*reached.values.values(), *reached.path.start.values(), time,
@@ -182,8 +188,23 @@ class CrossChecks:
             if worst > 1e-7:
                 raise CheckFailure(f"{self.problem.id}: the state {name} by energy and by Newton–Euler's motion "
                                    f"differ by {worst:.2e}")
-        return Check("states", True, "numeric", "every state reached, and the time it takes: energy against "
-                                               "Newton–Euler's motion, integrated")
+        detail = "every state reached, and the time it takes: energy against Newton–Euler's motion, integrated"
+        if impacts:
+            detail += f"; {impacts} impact{'s' if impacts > 1 else ''}: generalized momenta against each body's impulses"
+        return Check("states", True, "numeric", detail)
+
+    def _impact_check(self, name: str) -> None:
+        """The velocities and impulses just after an impact by Lagrange (generalized momenta and
+        impulses) and by Newton–Euler (each body's impulse and momentum) agree, symbolically."""
+        by_lagrange = self._chain[2][name]
+        state = self.scene.states[name]
+        by_impulses = self._impact(name, self.states[state.start].values, self._chain[1][name], "newton_euler")
+        for key in (*by_lagrange.velocities, *by_lagrange.impulses):
+            a = {**by_lagrange.velocities, **by_lagrange.impulses}[key]
+            b = {**by_impulses.velocities, **by_impulses.impulses}[key]
+            if agree(a, b) is None:
+                raise CheckFailure(f"{self.problem.id}: in the impact {name}, {key} is {a} by generalized momenta and "
+                                   f"{b} by impulses")
 
     def _work_energy_check(self) -> Check:
         """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,

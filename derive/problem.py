@@ -269,6 +269,9 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
     if quantity.kind == "time" and scene.states[raw].rates:
         raise reader.fail(field, f"the state {raw} is the placement, at time zero: ask the time in a state the "
                                  "motion gets to (when:)")
+    if quantity.kind == "time" and scene.states[raw].event:
+        raise reader.fail(field, f"the state {raw} is just after an impact, which takes no time: ask the time in a "
+                                 "state the motion gets to (when:)")
     return raw
 
 

@@ -247,7 +247,10 @@ class State:
     or theta), or a state the motion from the state `start` (None: the placement at rest) gets
     to first: where one body coordinate reaches a value (`when`: an absolute x, y of the center
     or angle, as `at` and `angle` are given), or (`until`) where the motion stops, ("stops",
-    None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD).
+    None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD); or the state
+    just after an impact in the state `start` (`event`: ("stick", BODY, OTHER), the body sticks to
+    the other where it is, or ("lock", BODY, OTHER), the two turn together from then on), after
+    which the scene keeps the joint the impact made.
 
     >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
     True
@@ -258,6 +261,7 @@ class State:
     when: tuple[str, str, sp.Expr] | None = None
     start: str | None = None
     until: tuple[str, str | None] | None = None
+    event: tuple[str, str, str] | None = None
 
 
 @dataclass(frozen=True)
@@ -321,12 +325,12 @@ class Scene:
 
 #: Quantities that come out of the equations of motion (both routes).
 DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation",
-                 "equilibrium", "velocity", "angular_velocity", "speed", "position", "angle", "time"}
+                 "equilibrium", "velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy"}
 #: Read in a state (`in: STATE`): the rates only there, the others at the placement at rest without it.
 STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velocity", "angular_velocity", "speed",
-               "position", "angle", "time"}
+               "position", "angle", "time", "kinetic_energy"}
 #: What a state gives: read only with `in: STATE` (positions and times only in a state reached).
-RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time"}
+RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy"}
 #: Answered by a small system of derive.mechanics, with a second route of its own.
 SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rotation", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
@@ -358,7 +362,7 @@ class Quantity:
 
 #: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
 RESERVED_NAMES = ("top", "spinning_wheel", "system", "event", "orbit", "oscillation", "small_oscillation", "ground",
-                  "time")
+                  "time", "kinetic_energy")
 
 #: What a body on a surface can be asked, besides what every body can.
 CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
@@ -427,6 +431,11 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError("time is asked as of: time, in: STATE (the time the motion takes from the state's "
                              "from: to it)" if scene.states else "time needs a state: add scene.states")
         return Quantity("time", None, None)
+    if head == "kinetic_energy":
+        if rest or not scene.states:
+            raise ValueError("kinetic_energy is asked as of: kinetic_energy, in: STATE (of every body, in that state)"
+                             if scene.states else "kinetic_energy needs a state: add scene.states")
+        return Quantity("kinetic_energy", None, None)
     if head == "oscillation":
         if rest != "period":
             raise ValueError("an oscillation at a given amplitude has period (give amplitude:)")

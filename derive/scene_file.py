@@ -16,7 +16,7 @@ import sympy as sp
 
 from derive import composite, inertia, state_file, units
 from derive.errors import EngineLimit, InputError
-from derive.parts import contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
+from derive.parts import clutch, contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
 from derive.parts.pin import Pin
@@ -28,7 +28,7 @@ from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Boun
                           Rotation, Scene, Skid, SpinningWheel, StandingWave, Stick, Top)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
-JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "touches": contact.read}
+JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
 LOADS = {"gravity": gravity.read, "force": force.read, "torque": torque.read, "spring": spring.read,
          "torsional_spring": torsional_spring.read, "damper": damper.read}
 #: A body's keys that place it: its center of mass in the reference configuration, and its angle.

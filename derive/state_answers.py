@@ -19,9 +19,12 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
+from derive.mechanics import impacts, lagrange, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.contact import Contact
+from derive.parts.pin import Pin
+from derive.parts.places import extent
 from derive.parts.surfaces import Plane
 from derive.scene import Quantity
 
@@ -29,37 +32,102 @@ from derive.scene import Quantity
 class StateAnswers:
     """What Solution answers in a named state."""
 
-    @cached_property
+    @property
     def states(self) -> dict[str, state_motion.Reached]:
         """Every coordinate and velocity in each named state of the scene (derive.mechanics.states):
-        the placement moving at given rates, or where a coordinate gets to from another state."""
+        the placement moving at given rates, where a coordinate gets to from another state, or
+        just after an impact (derive.mechanics.impacts)."""
+        return self._chain[0]
+
+    @cached_property
+    def _chain(self) -> tuple[dict[str, state_motion.Reached], dict[str, tuple], dict[str, impacts.Impact]]:
+        """The states in the order the file names them, the joints impacts made on the way to each
+        (the scene in a state has them: `scene_in`), and each impact's solution by Lagrange."""
         if self.scene.states and len(self.regimes) > 1:
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
-        result = {}
+        result, joints, solved = {}, {}, {}
         resolve = functools.partial(self._within_ranges, absolute=True)
         for name, state in self.scene.states.items():
+            joints[name] = joints[state.start] if state.start else ()
             try:
                 with limits.time_limit(f"finding the state {name}"):
-                    reached = self._state(state, result)
+                    if state.event:
+                        joints[name] += (self._joint(state, result),)
+                        solved[name] = self._impact(name, result[state.start].values, joints[name], "lagrange")
+                        reached = self._after_impact(name, result[state.start].values, solved[name])
+                    else:
+                        reached = self._state(state, result, joints[name])
                 # |L0 - d|, |sin(theta0)|: in the form the parameter ranges give
                 result[name] = dataclasses.replace(
                     reached, values={k: resolve(v) for k, v in reached.values.items()},
                     positive=tuple((resolve(e), m) for e, m in reached.positive))
             except state_motion.StateLimit as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
-            except state_motion.StateError as error:
+            except (state_motion.StateError, ValueError) as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
-        return result
+        return result, joints, solved
 
-    def _state(self, state, found: dict) -> state_motion.Reached:
+    def _state(self, state, found: dict, joints: tuple) -> state_motion.Reached:
         coords = self.coordinates
         if state.rates:
             return state_motion.moving(self.dynamics_scene, coords, {coords.of(body, kind): value
                                                                      for body, kind, value in state.rates})
         start = found[state.start].values if state.start else state_motion.rest(coords)
-        return state_motion.reach(self.dynamics_scene, coords, start, self._condition(state),
-                                  self.derivations["lagrange"], self._sample)
+        return state_motion.reach(self._scene_with(joints), coords, start, self._condition(state),
+                                  self._derivations_with(joints)["lagrange"], self._sample)
+
+    def _joint(self, state, found: dict):
+        """The joint the impact of `state` makes, where the bodies are in the state it happens in."""
+        joint = impacts.joint(self.scene, self.coordinates, found[state.start].values, state.event, state.name)
+        *_, body, to = state.event
+        if isinstance(joint, Pin) and self.scene.bodies[joint.to].rotates:  # a point mass sticks: on the body?
+            host = self.scene.bodies[joint.to]
+            reach = extent(host.shape, host.sizes) if host.composite is None else host.composite.extent()
+            where = sp.sqrt(sum(e**2 for e in joint.to_offset))
+            if reach is not None and self._sample(where - reach) > 1e-12 * (1 + abs(self._sample(reach))):
+                raise state_motion.StateError(f"the {joint.body} is {sp.sstr(tidy(where))} from the {joint.to}'s center "
+                                              f"in the state {state.start}, off the {host.shape}: it cannot stick there")
+        return joint
+
+    def _impact(self, name: str, before: dict, joints: tuple, route: str) -> impacts.Impact:
+        try:
+            return impacts.impact(self._scene_with(joints), self.coordinates, before, route)
+        except impacts.ImpactError as error:
+            raise state_motion.StateLimit(str(error)) from None
+
+    def _after_impact(self, name: str, before: dict, impact: impacts.Impact) -> state_motion.Reached:
+        """The state just after an impact: where the bodies were, at the velocities the impact leaves."""
+        values = {**{c.q: before[c.q] for c in self.coordinates.all}, **impact.velocities}
+        lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, values)
+        kind, body, to = self.scene.states[name].event
+        what = f"the {body} sticks to the {to}" if kind == "stick" else f"the {body} and the {to} lock together"
+        steps = (Step(f"The impact: {what}", ()), *impact.steps,
+                 Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),)))
+        return state_motion.Reached(values, (), steps)
+
+    def scene_in(self, name: str | None):
+        """The scene in a state (None: the placement): with the joints impacts on the way made."""
+        return self._scene_with(self._chain[1][name] if name else ())
+
+    def _scene_with(self, joints: tuple):
+        scene = self.dynamics_scene
+        return dataclasses.replace(scene, constraints=scene.constraints + joints) if joints else scene
+
+    def derivations_in(self, name: str | None) -> dict:
+        """Each route's derivation of the scene in a state (see scene_in)."""
+        return self._derivations_with(self._chain[1][name] if name else ())
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
+    def _derivations_with(self, joints: tuple) -> dict:
+        if not joints:
+            return self.derivations
+        scene = self._scene_with(joints)
+        with limits.time_limit("the derivation by Lagrange, after the impact"):
+            by_lagrange = lagrange.derive(scene, self.coordinates)
+        with limits.time_limit("the derivation by Newton-Euler, after the impact"):
+            by_newton_euler = newton_euler.derive(scene, self.coordinates)
+        return {"lagrange": by_lagrange, "newton_euler": by_newton_euler}
 
     def _condition(self, state) -> state_motion.Gets | state_motion.Stops | state_motion.Vanishes:
         """Where a state reached by the motion is: a coordinate's value, a stop, a force at zero."""
@@ -79,7 +147,7 @@ class StateAnswers:
         """One route's accelerations and forces in a named state (None: the placement at rest)."""
         if name is None:
             return self.at_reference(route)
-        reached, derivation = self.states[name], self.derivations[route]
+        reached, derivation = self.states[name], self.derivations_in(name)[route]
         if reached.path is None:
             return self._solved(derivation, reached.values)
         # Along the path first (functions of its one coordinate s), then at the state: its values
@@ -91,11 +159,13 @@ class StateAnswers:
         return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general, path.frozen).raw.items()})
 
     def _rate(self, q: Quantity, name: str) -> sp.Expr:
-        """A body's velocity, speed, angular velocity, position or angle in a named state, or the
-        time the motion takes to get there."""
+        """A body's velocity, speed, angular velocity, position or angle in a named state, the
+        kinetic energy of every body there, or the time the motion takes to get there."""
         values, coords = self.states[name].values, self.coordinates
         if q.kind == "time":
             return self._duration(name)[0]
+        if q.kind == "kinetic_energy":
+            return tidy(lagrange.energies(self.dynamics_scene, coords)[0].xreplace(values))
         if q.kind in ("angle", "position"):
             kind = "theta" if q.kind == "angle" else q.detail
             return tidy(self.scene.bodies[q.target].placed(kind) + values[coords.of(q.target, kind).q])
@@ -115,21 +185,40 @@ class StateAnswers:
     def _state_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """In each state asked: the motion gets there, the state is on the scene's geometry, and
         the parts keep their signs there."""
-        scene, result = self.dynamics_scene, []
-        for name in dict.fromkeys(a.state for a in self.problem.asks.values() if a.state is not None):
-            reached, forces = self.states[name], self.in_state("lagrange", name).raw
+        result = []
+        for name in self._on_the_way():
+            reached, scene = self.states[name], self.scene_in(name)
+            if name in self._chain[2]:  # no joint pulls in an impact where it can only push (a body off its surface)
+                impulses = self._chain[2][name].impulses
+                result += [(sign.expression.xreplace(impulses), False, f"{sign.meaning} (in the impact {name})")
+                           for part in scene.constraints for sign in part.signs()]
+            forces = self.in_state("lagrange", name).raw
+            # the state is real, first: where a formula puts it off the scene's geometry (a ball
+            # higher than its cord reaches, a swing that would stop above the top), the motion
+            # never gets there at these values, and the other conditions are not numbers
+            never = (f"the motion goes over the top and never stops at these values ({name})"
+                     if self.scene.states[name].until == ("stops", None) else
+                     f"the motion never gets to the state {name} at these values (it lies off the scene's geometry "
+                     "there)")
+            exprs = [*reached.values.values(), *(e for e, _ in reached.positive)]
+            result += [(real, False, never) for real in dict.fromkeys(
+                [p.base for v in exprs for p in v.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2]
+                + [tidy(1 - f.args[0] ** 2) for v in exprs for f in v.atoms(sp.acos, sp.asin)])]
             result += [(expr, True, f"{meaning} ({name})") for expr, meaning in reached.positive]
-            # the state is real: where a formula puts it off the scene's geometry (a ball higher
-            # than its cord reaches), the motion never gets there at these values
-            result += [(radicand, False, f"the motion never gets to the state {name} at these values (it lies off "
-                                         "the scene's geometry there)")
-                       for radicand in dict.fromkeys(p.base for v in reached.values.values() for p in v.atoms(sp.Pow)
-                                                     if p.exp.is_Rational and p.exp.q == 2)]
             # (a force the state is defined by, zero there, has no sign to keep: it was positive on the way)
             result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
                        for part in (*scene.constraints, *scene.loads) for sign in part.signs()
                        if not sign.expression.has(*reached.vanished)]
         return result + self._ramp_conditions()
+
+    def _on_the_way(self) -> list[str]:
+        """The states asks are read in, and those their motions start from, in the file's order: a
+        chain's every link."""
+        names = {a.state for a in self.problem.asks.values() if a.state is not None}
+        for name in reversed(self.scene.states):
+            if name in names and self.scene.states[name].start:
+                names.add(self.scene.states[name].start)
+        return [name for name in self.scene.states if name in names]
 
     def _ramp_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """An incline's height is how far it drops below where a body starts
@@ -154,13 +243,17 @@ class StateAnswers:
     def _state_steps(self, result: dict[str, list[Step]]) -> None:
         """Add to a worked solution's steps, by route, how each state asked is found and the
         routes' solution there."""
-        for name in dict.fromkeys(a.state for a in self.problem.asks.values() if a.state is not None):
+        for name in self._on_the_way():
             result[f"the state {name}"] = list(self.states[name].steps)
             if any(a.state == name and a.quantity.kind == "time" for a in self.problem.asks.values()):
                 result[f"the state {name}"].append(self._duration(name)[1])
             in_state = self._needed_unknowns(name)
-            for route, d in self.derivations.items() if in_state else ():
+            joints = self._chain[1][name]
+            for route, d in self.derivations_in(name).items() if in_state else ():
                 solved = self.in_state(route, name)  # the answers' own solution there (along a path: by it)
-                result[route] = [*(result[route] or d.steps),
+                if joints:  # the scene after an impact: its own equations
+                    route = f"{route}, with the joint{'s' if len(joints) > 1 else ''} " + \
+                            ", ".join(j.name for j in joints)
+                result[route] = [*(result.get(route) or d.steps),
                                  Step(f"Solving in the state {name}", tuple(sp.Eq(u, solved[u]) for u in d.unknowns
                                                                             if u in in_state))]

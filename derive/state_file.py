@@ -23,15 +23,20 @@ def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dic
     from: spinning}}`: each state's `from` one named above it (no state reached from itself).
     `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
     stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`) or a cord goes slack
-    (`{slack: CORD}`)."""
+    (`{slack: CORD}`). `event:` is an impact in the state from: (see EVENTS), and the state is
+    the one just after it."""
     result = {}
     for name, spec in reader.named(raw, "states").items():
         field = f"scene.states.{name}"
         if name in bodies or name in ("placement", "ground"):
             raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
-        spec = reader.mapping(spec, field, optional=("rates", "when", "from"))
-        if ("rates" in spec) == ("when" in spec):
-            raise reader.fail(field, "a state gives rates: (at the placement) or when: (a position reached)")
+        spec = reader.mapping(spec, field, optional=("rates", "when", "from", "event"))
+        if sum(key in spec for key in ("rates", "when", "event")) != 1:
+            raise reader.fail(field, "a state gives rates: (at the placement), when: (a position reached) or event: "
+                                     "(an impact in the state from:)")
+        if "event" in spec:
+            result[name] = _event(reader, name, spec, field, bodies, result)
+            continue
         if "rates" in spec:
             if "from" in spec:
                 raise reader.fail(f"{field}.from", "rates: are given at the placement; from: goes with when:")
@@ -63,6 +68,34 @@ def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dic
         result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies, STATE_POSITIONS),
                              start=start)
     return result
+
+
+#: The impacts a state may follow: what each makes of the two bodies.
+EVENTS = {"stick": "the body sticks to the other where it touches it",
+          "lock": "the two turning bodies turn together from then on (a clutch)"}
+
+
+def _event(reader: Reader, name: str, spec: dict, field: str, bodies: dict[str, Body], found: dict[str, State]) -> State:
+    """`{from: STATE, event: {stick: BODY, to: OTHER}}` or `{lock: BODY, to: OTHER}`: the state
+    just after an impact in the state from:."""
+    if spec.get("from") not in found:
+        raise reader.fail(f"{field}.from", f"an impact happens in a state: give from: a state named above this one "
+                                           f"(states: {', '.join(found) or 'none'})")
+    raw = reader.mapping(spec["event"], f"{field}.event", required=("to",), optional=tuple(EVENTS))
+    kinds = [k for k in EVENTS if k in raw]
+    if len(kinds) != 1:
+        raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
+    kind = kinds[0]
+    body, to = raw[kind], raw["to"]
+    for key, value in ((kind, body), ("to", to)):
+        if not isinstance(value, str) or value not in bodies:
+            raise reader.fail(f"{field}.event.{key}", f"no body {value!r} (bodies: {', '.join(bodies)})")
+    if body == to:
+        raise reader.fail(f"{field}.event.to", f"an impact joins two bodies: not the {body} to itself")
+    if kind == "lock" and not (bodies[body].rotates and bodies[to].rotates):
+        raise reader.fail(f"{field}.event", "lock joins two turning bodies (a point mass does not turn): "
+                                            "a point mass sticks (stick:)")
+    return State(name, start=spec["from"], event=(kind, body, to))
 
 
 #: The states where a part's force falls to zero: the part's kind and the force's key.

@@ -141,6 +141,7 @@ class Path:
     inertia: sp.Expr
     kinetic: sp.Expr
     line: tuple | None = None  # on a line: where the state is, and the sign function (see `frozen`)
+    leaves: sp.Expr | None = None  # the start's rate (from rest, acceleration) in s, whose sign is `direction`
 
     @property
     def s(self) -> sp.Symbol:
@@ -241,8 +242,9 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     # From rest a coordinate with no acceleration at the start (a bead's x at a bowl's rim, where
     # it first falls straight down) moves the way the other coordinates take it: toward the state
     # (Newton–Euler's motion, integrated at every solve, checks that it gets there).
-    direction = _direction(start[speed], start, coordinate, derivation, decide) or (
-        _toward(positions, condition, s, start[s], decide) if isinstance(condition, Gets) else 0)
+    direction, leaves = _direction(start[speed], start, coordinate, derivation, decide)
+    if not direction and isinstance(condition, Gets):
+        direction = _toward(positions, condition, s, start[s], decide)
     if not direction:
         raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
     velocities = {c.u: tidy(sp.diff(positions[c.q], s)) * speed for c in coords.all}
@@ -259,7 +261,7 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     s0 = start[s]
     energy = kinetic.xreplace(start) + potential.xreplace(start) - antiderivative.xreplace({s: s0})
     along = tidy(energy - potential.xreplace(positions) + antiderivative)
-    return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along)
+    return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along, leaves=leaves)
 
 
 def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation: Derivation, decide,
@@ -384,15 +386,18 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     vanished = ()
     if isinstance(condition, Gets):
         position = path.positions[condition.coordinate.q]
-        s1 = _first(sp.Eq(position, condition.value), position - condition.value, path, decide,
+        function = position - condition.value
+        s1 = _first(sp.Eq(position, condition.value), function, path, decide,
                     "the motion from the start does not get there")
     elif isinstance(condition, Stops):
-        s1 = _first(sp.Eq(path.kinetic, 0), path.kinetic, path, decide,
+        function = path.kinetic
+        s1 = _first(sp.Eq(path.kinetic, 0), function, path, decide,
                     "the motion does not stop: it goes on (over the top, or forever)")
         steps.append(Step("It stops where its kinetic energy is zero", (sp.Eq(s, s1),)))
     else:
         force = _along(path, condition.force, derivation)
         steps.append(Step(f"Along the way, {condition.meaning}", (sp.Eq(condition.force, force),)))
+        function = force
         s1 = _first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
         steps.append(Step("It falls to zero at", (sp.Eq(s, s1),)))
         vanished = (condition.force,)
@@ -406,15 +411,39 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     values = path.values(s1, rate)
     arrived = path.kinetic.xreplace({s: s1})
     positive = [] if isinstance(condition, Stops) else [(arrived, "the motion does not reach the state: it stops before it")]
+    if path.leaves is not None:  # every variant leaves the start the way the middle of the ranges does
+        positive.insert(0, (path.direction * path.leaves, f"the motion leaves the start {'backward' if path.direction > 0 else 'forward'} "
+                                                          f"in {s}, the other way than at the middle of the parameter ranges, "
+                                                          "for which derive followed it"))
     positive += [(path.kinetic.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (s1 - s0)}),
                   f"the motion stops on its way to the state (its kinetic energy, sampled at {ON_THE_WAY - 1} "
                   "points between, falls to zero)") for k in range(1, ON_THE_WAY)]
     _positive_at_the_middle(positive, decide, " (where derive decides which way the motion goes): narrow the ranges "
                                              "to where it gets there")
+    guard = _a_root(function, s, s0, s1)
+    if guard and decide(guard[0][0]) <= 0:  # _first checked the root there: an engine fault, not the file's
+        raise StateLimit(f"find the state: its formula {s} = {sp.sstr(s1)} does not hold at the middle of the ranges")
+    positive[:0] = guard
     if not isinstance(condition, Stops):
         steps.append(Step(f"So, moving {'forward' if path.direction > 0 else 'backward'} in {s}",
                           (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate))))
     return Reached(values, tuple(positive), tuple(steps), path, s1, vanished)
+
+
+def _a_root(function: sp.Expr, s: sp.Symbol, s0: sp.Expr, s1: sp.Expr) -> list:
+    """What keeps s1, a root of `function` at the middle of the ranges, a root in every variant:
+    sympy's solution of an equation with roots in it holds where the roots' signs are those of the
+    middle (squaring both sides of sqrt(L^2 - x^2) = L - h gives an x also where L < h, on the
+    other branch of the circle). Positive where function(s1) is zero to 1e-9 of function(s0), as
+    `_first` asks of a root at the middle."""
+    residual = function.xreplace({s: s1})
+    scale = function.xreplace({s: s0})
+    if residual == 0 or tidy(scale) == 0:
+        return []
+    return [(sp.Rational(1, 10**18) * scale**2 - residual**2, "the formula derive found for the state does not hold "
+                                                                 "at these values (they put the motion on another "
+                                                                 "branch of the scene's geometry than the middle of "
+                                                                 "the parameter ranges)")]
 
 
 def _positive_at_the_middle(positive, decide, advice: str) -> None:
@@ -536,13 +565,13 @@ def _heading(start: dict, coords: Coordinates, derivation: Derivation, decide) -
     return signs
 
 
-def _direction(u0: sp.Expr, start: dict, coordinate: Coordinate, derivation: Derivation, decide) -> int:
-    """+1 or -1: the way the free coordinate moves from the start (its rate, or from rest the way
-    it is pushed); 0 where it is not pushed."""
+def _direction(u0: sp.Expr, start: dict, coordinate: Coordinate, derivation: Derivation, decide) -> tuple:
+    """(+1 or -1, the expression whose sign says so): the way the free coordinate moves from the
+    start (its rate, or from rest the way it is pushed); (0, None) where it is not pushed."""
     if u0 != 0:
-        return 1 if decide(u0) > 0 else -1
+        return (1 if decide(u0) > 0 else -1), u0
     pushed = tidy(derivation.at(start).raw[coordinate.a])
-    return 0 if pushed == 0 else 1 if decide(pushed) > 0 else -1
+    return (0, None) if pushed == 0 else ((1 if decide(pushed) > 0 else -1), pushed)
 
 
 def _real(expr: sp.Expr, decide) -> bool:

@@ -21,11 +21,15 @@ from derive.parts import AppliedForce, AppliedTorque, Part
 
 @dataclass(frozen=True)
 class Weld(Part):
-    """`body` held rigidly to `to` (None: the ground) as they are in the reference configuration."""
+    """`body` held rigidly to `to` (None: the ground) as they are in the reference configuration,
+    or (`offset`, `turn`) with its center at `offset` in the other's frame and its turn `turn`
+    more than the other's (a body that sticks to another in a state away from the placement)."""
 
     name: str
     body: str
     to: str | None
+    offset: tuple[sp.Expr, sp.Expr] | None = None
+    turn: sp.Expr = sp.Integer(0)
 
     def bodies(self) -> tuple[str, ...]:
         return (self.body,) if self.to is None else (self.body, self.to)
@@ -37,6 +41,8 @@ class Weld(Part):
 
     def _offset(self, coords) -> sp.Matrix:
         """Where the body's center sits in the other's frame (from its center of mass)."""
+        if self.offset is not None:
+            return sp.Matrix(self.offset)
         this, other = coords.scene.bodies[self.body], coords.scene.bodies[self.to]
         between = sp.Matrix(this.at) - sp.Matrix(other.at)
         turn = -other.angle
@@ -48,7 +54,7 @@ class Weld(Part):
             held, angle = center.xreplace(coords.at_rest_in_reference()), sp.Integer(0)
         else:
             held, angle = coords.position(self.to, tuple(self._offset(coords))), coords.angle(self.to)
-        return [*(center - held), coords.angle(self.body) - angle]
+        return [*(center - held), coords.angle(self.body) - angle - self.turn]
 
     def loads(self, coords) -> list[AppliedForce | AppliedTorque]:
         f = self.unknowns()

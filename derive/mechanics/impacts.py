@@ -1,0 +1,161 @@
+"""Impacts that join bodies, in a state of a scene: a point mass that sticks to a body (a bullet
+into a hanging rod, a child jumping onto a turntable), a body that sticks to another, two
+turning bodies that lock together (a clutch, a disk dropped onto another).
+
+The impact makes a joint (`joint`): a pin holding the point mass where it struck, a weld, or a
+clutch. In the instant of the impact the configuration q* does not change, and forces that stay
+finite (weights, springs, given loads) give no impulse: only the joints' forces do, the new one
+and those already there (a hinge's). The velocities just after, u+, are solved by two routes
+from the velocities just before, u- (`impact`):
+
+- Lagrange: the generalized momentum dT/du jumps by the joints' generalized impulses,
+  dT/du(u+) - dT/du(u-) = sum_j J_j dg_j/dq at q*, and every gap's rate is zero after,
+  dg_j/dq . u+ = 0 (each J_j the impulse of the force g_j's multiplier is);
+- Newton–Euler: impulse and momentum of each body, m (v+ - v-) = sum J and
+  I (omega+ - omega-) = sum r x J (+ the couples' impulses), the impulses those of the parts'
+  forces at their points, and the parts' velocity conditions after.
+
+Kinetic energy is not conserved in such an impact: `energy_lost` is the ledger's entry.
+
+>>> import sympy as sp
+>>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.parts.pin import Pin
+>>> from derive.scene import Body, Scene
+>>> m, M, L, v = sp.symbols("m M L v", positive=True)
+>>> rod = Body("rod", "rod", M, {"length": L}, M * L**2 / 12, at=(0, -L / 2), angle=-sp.pi / 2)
+>>> bullet = Body("bullet", "point", m, {}, at=(0, -L))
+>>> scene = Scene({"rod": rod, "bullet": bullet}, (Pin("hinge", "rod", (-L / 2, 0)),))
+>>> coords = Coordinates(scene)
+>>> before = {**{s: 0 for s in coords.state}, coords.of("bullet", "x").u: v}
+>>> after = Scene(scene.bodies, scene.constraints + (joint(scene, coords, before, ("stick", "bullet", "rod"), "hit"),))
+>>> impact(after, coords, before, "lagrange").velocities[coords.of("rod", "theta").u]
+3*m*v/(L*(M + 3*m))
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.mechanics.derivation import Step, solve_linear, tidy
+from derive.mechanics.kinematics import Coordinates
+from derive.mechanics.lagrange import energies
+from derive.parts import AppliedForce, AppliedTorque, Part
+from derive.parts.clutch import Clutch
+from derive.parts.pin import Pin
+from derive.parts.weld import Weld
+from derive.scene import Scene
+
+
+class ImpactError(ValueError):
+    """An impact this module cannot solve (an engine limit: a sliding contact's friction)."""
+
+
+@dataclass(frozen=True)
+class Impact:
+    """One route's velocities just after the impact (every coordinate's u), the joints' impulses
+    (by their forces' symbols), and the steps that found them."""
+
+    velocities: dict[sp.Symbol, sp.Expr]
+    impulses: dict[sp.Symbol, sp.Expr]
+    steps: tuple[Step, ...]
+
+
+def joint(scene: Scene, coords: Coordinates, values: dict, event: tuple[str, str, str], name: str) -> Part:
+    """The joint an impact (kind, body, other) makes as the bodies are in the state `values`: a
+    clutch (`lock`, at the turn between them then); for `stick` a pin holding a point mass where
+    it is on the other body, or a weld of two turning bodies.
+
+    Raises ValueError where two point masses that are apart would stick (a particle has no frame
+    to hold another in)."""
+    kind, body, to = event
+    at = {c.q: values[c.q] for c in coords.all}
+
+    def turn(a: str, b: str) -> sp.Expr:
+        return tidy((coords.angle(a) - coords.angle(b)).xreplace(at))
+
+    if kind == "lock":
+        return Clutch(name, body, to, turn(body, to))
+    point, host = (body, to) if not scene.bodies[body].rotates else (to, body)
+    between = (coords.position(point) - coords.position(host)).xreplace(at)
+    angle = -coords.orientation(host).xreplace(at)
+    offset = tuple(tidy(e) for e in sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
+                   * between)
+    if not scene.bodies[point].rotates:
+        if not scene.bodies[host].rotates and any(e != 0 for e in offset):
+            raise ValueError(f"the {point} and the {to if point == body else body} are point masses apart from "
+                             "each other: they can stick only where they touch")
+        return Pin(name, point, (sp.Integer(0), sp.Integer(0)), host, offset)
+    return Weld(name, point, host, offset, turn(point, host))
+
+
+def impact(scene: Scene, coords: Coordinates, before: dict, route: str) -> Impact:
+    """The velocities just after an impulsive change in `scene` (the scene after the impact, with
+    the joint it made), from the state `before` (every coordinate and velocity), by `route`
+    ("lagrange" or "newton_euler"; see the module)."""
+    at = {c.q: before[c.q] for c in coords.all}
+    forces = [f for part in scene.constraints for f in part.unknowns().values()]
+    power = sum((part.power(coords) for part in scene.parts), sp.Integer(0))
+    if power.free_symbols & set(forces):
+        raise ImpactError("solve an impact with a sliding contact's friction (its impulse depends on the normal one)")
+    if route == "lagrange":
+        equations, text = _momenta(scene, coords, before, at), (
+            "In the impact the configuration does not change and only the joints' forces give impulses: the "
+            "generalized momenta jump by the joints' generalized impulses, and the joints hold after (each force's "
+            "symbol stands for its impulse)")
+    else:
+        equations, text = _impulses(scene, coords, before, at), (
+            "Impulse and momentum of each body in the impact: only the joints' forces give impulses, and the joints "
+            "hold after (each force's symbol stands for its impulse)")
+    unknowns = [c.u for c in coords.all] + forces
+    solution = solve_linear(equations, unknowns)
+    velocities = {c.u: tidy(solution.raw[c.u]) for c in coords.all}
+    impulses = {f: tidy(solution.raw[f]) for f in forces}
+    steps = (Step(text, tuple(equations)),
+             Step("Just after the impact", tuple(sp.Eq(u, v) for u, v in velocities.items() if v != 0)))
+    return Impact(velocities, impulses, steps)
+
+
+def _momenta(scene: Scene, coords: Coordinates, before: dict, at: dict) -> list[sp.Eq]:
+    kinetic, _ = energies(scene, coords)
+    earlier = {c.u: before[c.u] for c in coords.all}
+    gaps = [(f, g) for part in scene.constraints for f, g in zip(part.unknowns().values(), part.gaps(coords))]
+    equations = []
+    for c in coords.all:
+        momentum = sp.diff(kinetic, c.u)
+        impulse = sum((f * sp.diff(g, c.q) for f, g in gaps), sp.Integer(0))
+        equations.append(sp.Eq((momentum - momentum.xreplace(earlier)).xreplace(at), impulse.xreplace(at)))
+    return equations + [sp.Eq(coords.ddt(g).xreplace(at), 0) for _, g in gaps]
+
+
+def _impulses(scene: Scene, coords: Coordinates, before: dict, at: dict) -> list[sp.Eq]:
+    loads = []
+    for part in scene.constraints:
+        unknowns = list(part.unknowns().values())
+        for load in part.loads(coords):
+            size = load.force if isinstance(load, AppliedForce) else sp.Matrix([load.torque])
+            impulsive = sp.Matrix([sum((f * sp.diff(e, f) for f in unknowns), sp.Integer(0)) for e in size])
+            if any(tidy(e) != 0 for e in size - impulsive):
+                raise ImpactError(f"solve an impact where the {part.name}'s force is not in proportion to its unknowns")
+            loads.append(load)
+    equations = []
+    for body in scene.bodies.values():
+        on_body = [f for f in loads if f.body == body.name]
+        pushes = [f for f in on_body if isinstance(f, AppliedForce)]
+        total = sum((f.force for f in pushes), sp.zeros(2, 1))
+        for i, kind in enumerate(("x", "y")):
+            u = coords.of(body.name, kind).u
+            equations.append(sp.Eq(body.mass * (u - before[u]), total[i].xreplace(at)))
+        if body.rotates:
+            u = coords.of(body.name, "theta").u
+            moment = sum((f.offset[0] * f.force[1] - f.offset[1] * f.force[0] for f in pushes), sp.Integer(0))
+            moment += sum((f.torque for f in on_body if isinstance(f, AppliedTorque)), sp.Integer(0))
+            equations.append(sp.Eq(body.inertia * (u - before[u]), moment.xreplace(at)))
+    conditions = [v for part in scene.constraints for v in part.conditions(coords)]
+    return equations + [sp.Eq(v.xreplace(at), 0) for v in conditions]
+
+
+def energy_lost(scene: Scene, coords: Coordinates, before: dict, after: dict) -> sp.Expr:
+    """The kinetic energy the impact takes (before minus after), factored."""
+    kinetic, _ = energies(scene, coords)
+    return tidy(kinetic.xreplace(before) - kinetic.xreplace(after))

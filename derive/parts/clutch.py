@@ -1,0 +1,61 @@
+"""A clutch: two turning bodies locked to turn together (an engaged clutch, a disk dropped onto
+another and carried by it), their centers left to the other parts (a shared axle).
+
+Lagrange: the angle between them stays what it was when they locked, g = theta_body -
+theta_to - turn (the multiplier is the couple on the body). Newton–Euler: that couple on the
+body, its opposite on the other; their angular velocities are equal.
+
+>>> import sympy as sp
+>>> from derive.scene import Body, Scene
+>>> from derive.mechanics.kinematics import Coordinates
+>>> I = sp.Symbol("I")
+>>> scene = Scene({n: Body(n, "custom", sp.Symbol("M"), {}, I) for n in ("top", "bottom")})
+>>> Clutch("plates", "top", "bottom").gaps(Coordinates(scene))
+[-theta_bottom + theta_top]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.parts import AppliedTorque, Part
+
+
+@dataclass(frozen=True)
+class Clutch(Part):
+    """`body` locked to turn with `to`, `turn` (their turns' difference from the placement) apart."""
+
+    name: str
+    body: str
+    to: str
+    turn: sp.Expr = sp.Integer(0)
+
+    def bodies(self) -> tuple[str, ...]:
+        return (self.body, self.to)
+
+    def unknowns(self) -> dict[str, sp.Symbol]:
+        return {"torque": sp.Symbol(f"M^{self.name}", real=True)}
+
+    def gaps(self, coords) -> list[sp.Expr]:
+        return [coords.angle(self.body) - coords.angle(self.to) - self.turn]
+
+    def loads(self, coords) -> list[AppliedTorque]:
+        couple = self.unknowns()["torque"]
+        label = f"clutch {self.name}"
+        return [AppliedTorque(self.body, couple, label), AppliedTorque(self.to, -couple, label)]
+
+    def conditions(self, coords) -> list[sp.Expr]:
+        return [coords.angular_velocity(self.body) - coords.angular_velocity(self.to)]
+
+
+def read(reader, places, name: str, spec: dict, field: str) -> Clutch:
+    """`{clutch: BODY, to: OTHER}`: two turning bodies that turn together."""
+    spec = reader.mapping(spec, field, required=("clutch", "to"))
+    body, _ = places.point(spec["clutch"], f"{field}.clutch", ground=False)
+    to, _ = places.point(spec["to"], f"{field}.to", ground=False)
+    if to == body:
+        raise reader.fail(f"{field}.to", f"a clutch joins two bodies: not the {body} to itself")
+    if not places.bodies[body].rotates or not places.bodies[to].rotates:
+        raise reader.fail(field, "a clutch locks two turning bodies together (a point mass does not turn)")
+    return Clutch(name, body, to)

@@ -1,0 +1,220 @@
+"""Impacts in a chain of states (`event:` in scene.states; derive.mechanics.impacts): the closed
+forms are in the textbook suite (tests/textbook/states: a bullet into a rod and into a block on a
+cord, a child onto a turntable, a clutch and a brake); here the rules a user meets, each refusal,
+and the second route shown to catch a wrong impact."""
+import json
+
+import pytest
+import sympy as sp
+
+from conftest import run_derive
+from derive import problem, report
+from derive.answers import Solution
+from derive.crosschecks import CheckFailure
+from derive.mechanics import impacts
+
+DISKS = """\
+id: clutch_test
+title: Two disks on one axle
+topic: conservation
+parameters:
+  M1: {meaning: mass of the lower disk, unit: kg, range: [1, 4], sig_figs: 2}
+  M2: {meaning: mass of the upper disk, unit: kg, range: [0.5, 2], sig_figs: 2}
+  R: {meaning: radius of both disks, unit: m, range: [0.1, 0.3], sig_figs: 2}
+  w1: {meaning: angular velocity of the lower disk, unit: rad/s, range: [10, 30], sig_figs: 2}
+  w2: {meaning: angular velocity of the upper disk, unit: rad/s, range: [-5, 5], sig_figs: 2}
+scene:
+  bodies:
+    lower: {shape: disk, mass: M1, radius: R}
+    upper: {shape: disk, mass: M2, radius: R}
+  joints:
+    axle: {pin: lower.center}
+    shaft: {pin: upper.center, to: lower.center}
+  states:
+    spinning: {rates: {lower.angular_velocity: w1, upper.angular_velocity: w2}}
+    coupled: {from: spinning, event: EVENT}
+ask:
+  K0: {meaning: kinetic energy before, of: kinetic_energy, in: spinning, unit: J}
+  K1: {meaning: kinetic energy after, of: kinetic_energy, in: coupled, unit: J}
+question: |
+  Two disks on one axle are coupled.
+"""
+
+FLOOR = """\
+id: block_struck_from_below
+title: A block on a floor struck by a bullet
+topic: conservation
+parameters:
+  m: {meaning: mass of the bullet, unit: kg, range: [0.01, 0.02], sig_figs: 2}
+  M: {meaning: mass of the block, unit: kg, range: [1, 2], sig_figs: 2}
+  v: {meaning: speed of the bullet, unit: m/s, range: [100, 200], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    floor: {plane: {angle: 0, through: [0, 0]}}
+  bodies:
+    block: {shape: point, mass: M, at: [0, 0], on: floor, contact: sliding}
+    bullet: {shape: point, mass: m, at: [0, 0]}
+  loads:
+    - gravity: g
+  states:
+    flying: {rates: {bullet.velocity.x: VX, bullet.velocity.y: VY, block.velocity.x: 0}}
+    struck: {from: flying, event: {stick: bullet, to: block}}
+ask:
+  u: {meaning: speed of the block just after, of: block.velocity.x, in: struck, unit: m/s}
+question: |
+  A bullet strikes a block resting on a smooth floor and embeds in it.
+"""
+
+
+def write(tmp_path, text):
+    path = tmp_path / "problem.yaml"
+    path.write_text(text)
+    return path
+
+
+def refused(tmp_path, text, field, exit_code=2):
+    result = run_derive("solve", str(write(tmp_path, text)))
+    assert result.returncode == exit_code, result.stdout + result.stderr
+    assert field in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    return result.stderr
+
+
+def test_a_clutch_takes_the_energy_of_the_difference_of_the_rates(tmp_path):
+    """K0 - K1 = I1 I2 (w1 - w2)^2 / (2 (I1 + I2)), the textbook's loss in a perfectly inelastic
+    coupling, here from the kinetic energies the engine derives before and after."""
+    solution = Solution(problem.load(write(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))))
+    M1, M2, R, w1, w2 = sp.symbols("M1 M2 R w1 w2", positive=True)
+    w2 = next(s for s in solution.expression("K0").free_symbols if s.name == "w2")
+    I1, I2 = M1 * R**2 / 2, M2 * R**2 / 2
+    lost = solution.expression("K0") - solution.expression("K1")
+    assert sp.simplify(lost - I1 * I2 * (w1 - w2) ** 2 / (2 * (I1 + I2))) == 0
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_a_weld_at_the_impact_agrees_with_a_clutch_on_a_shared_axle(tmp_path):
+    """Two disks that stick (a weld) on a shared axle turn as two that lock: the weld's force is
+    redundant with the shaft's pin, which the impact's solve refuses as indeterminate."""
+    stderr = refused(tmp_path, DISKS.replace("EVENT", "{stick: upper, to: lower}"), "scene")
+    assert "redundant" in stderr
+
+
+def test_the_second_route_catches_a_wrong_impact(tmp_path, monkeypatch):
+    """Newton–Euler's impulses against Lagrange's generalized momenta: an impulse equation with
+    one body's mass off by a factor is caught."""
+    path = write(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))
+    original = impacts._impulses
+
+    def wrong(scene, coords, before, at):
+        equations = original(scene, coords, before, at)
+        return [sp.Eq(2 * equations[2].lhs, equations[2].rhs), *equations[:2], *equations[3:]]
+
+    monkeypatch.setattr(impacts, "_impulses", wrong)
+    with pytest.raises(CheckFailure, match="in the impact coupled"):
+        report.solve(problem.load(path), {}, 4)
+
+
+def test_an_impact_that_a_floor_would_have_to_pull_through_is_refused(tmp_path):
+    """A bullet from below lifts the block off the floor: the floor's impulse would pull."""
+    across = run_derive("solve", str(write(tmp_path, FLOOR.replace("VX", "v").replace("VY", "0"))),
+                        "--format", "json", "--set", "m=0.01", "--set", "M=1", "--set", "v=101")
+    assert across.returncode == 0, across.stderr
+    assert float(json.loads(across.stdout)["answers"]["u"]["value"]) == pytest.approx(0.01 * 101 / 1.01)
+    upward = FLOOR.replace("VX", "0").replace("VY", "v")
+    stderr = refused(tmp_path, upward, "scene")
+    assert "leaves the surface floor (its normal force would be negative) (in the impact struck)" in stderr
+
+
+@pytest.mark.parametrize("event, field, words", [
+    ("{lock: upper, to: upper}", "scene.states.coupled.event.to", "not the upper to itself"),
+    ("{lock: upper, to: wheel}", "scene.states.coupled.event.to", "no body 'wheel'"),
+    ("{lock: upper}", "scene.states.coupled.event.to", "missing"),
+    ("{glue: upper, to: lower}", "scene.states.coupled.event.glue", "unknown key"),
+    ("{stick: upper, lock: upper, to: lower}", "scene.states.coupled.event", "give one of"),
+])
+def test_a_wrong_event_is_refused_naming_its_field(tmp_path, event, field, words):
+    assert words in refused(tmp_path, DISKS.replace("EVENT", event), field)
+
+
+def test_an_impact_needs_a_state_to_happen_in(tmp_path):
+    text = DISKS.replace("coupled: {from: spinning, event: EVENT}", "coupled: {event: {lock: upper, to: lower}}")
+    assert "an impact happens in a state" in refused(tmp_path, text, "scene.states.coupled.from")
+
+
+def test_a_point_mass_cannot_lock(tmp_path):
+    text = FLOOR.replace("event: {stick: bullet, to: block}", "event: {lock: bullet, to: block}")
+    assert "lock joins two turning bodies" in refused(tmp_path, text.replace("VX", "v").replace("VY", "0"),
+                                                      "scene.states.struck.event")
+
+
+def test_a_point_mass_off_the_body_cannot_stick_to_it(tmp_path):
+    text = (DISKS.replace("EVENT", "{stick: bug, to: lower}")
+            .replace("    upper: {shape: disk, mass: M2, radius: R}\n",
+                     "    upper: {shape: disk, mass: M2, radius: R}\n    bug: {shape: point, mass: M2, at: [2*R, 0]}\n")
+            .replace("upper.angular_velocity: w2}", "upper.angular_velocity: w2, bug.velocity.x: 0, "
+                                                    "bug.velocity.y: 0}"))
+    assert "off the disk: it cannot stick there" in refused(tmp_path, text, "scene.states.coupled")
+
+
+def test_time_is_not_asked_just_after_an_impact(tmp_path):
+    text = DISKS.replace("EVENT", "{lock: upper, to: lower}").replace(
+        "of: kinetic_energy, in: coupled, unit: J", "of: time, in: coupled, unit: s")
+    assert "takes no time" in refused(tmp_path, text, "ask.K1.in")
+
+
+def test_kinetic_energy_is_read_in_a_state(tmp_path):
+    text = DISKS.replace("EVENT", "{lock: upper, to: lower}").replace(
+        "of: kinetic_energy, in: coupled, unit: J", "of: kinetic_energy, unit: J")
+    assert "read in a state" in refused(tmp_path, text, "ask.K1.in")
+
+
+def test_a_swing_over_the_top_after_an_impact_is_refused_per_variant():
+    """The rod struck by a fast bullet goes over the top: the swing's highest point does not exist."""
+    result = run_derive("solve", "tests/textbook/states/rod_ballistic_pendulum.yaml", "--set", "m=0.02",
+                        "--set", "v=300", "--set", "M=0.5", "--set", "L=0.5")
+    assert result.returncode == 2 and "goes over the top and never stops" in result.stderr, result.stderr
+
+
+def test_a_root_on_the_other_branch_of_the_circle_is_refused_per_variant():
+    """The block on its cord swung past the level of the hook: squaring the circle's root put a
+    turning point below the hook, a root of the squared equation only (found silently wrong: h =
+    0.30 m where the block would rise 1.70 m, past the cord's horizontal)."""
+    fixed = ["--set", "m1=0.02", "--set", "m2=0.5", "--set", "L=1"]
+    result = run_derive("solve", "tests/textbook/states/ballistic_pendulum_block.yaml", *fixed, "--set", "v=150")
+    assert result.returncode == 2 and "does not hold at these values" in result.stderr, result.stderr
+    below = run_derive("solve", "tests/textbook/states/ballistic_pendulum_block.yaml", *fixed, "--set", "v=100",
+                       "--format", "json")
+    assert below.returncode == 0, below.stderr
+    rise = (0.02 * 100 / 0.52) ** 2 / (2 * 9.81)
+    assert float(json.loads(below.stdout)["answers"]["h"]["value"]) == pytest.approx(rise, rel=1e-12)
+
+
+def test_a_motion_that_leaves_the_other_way_than_at_the_middle_is_refused():
+    """The coupled disks turn backward where the upper one's spin wins: the brake then speeds them
+    up, and the stop derive found at the middle of the ranges (t = -0.1 s) never comes."""
+    result = run_derive("solve", "tests/textbook/states/clutch_disks_brake.yaml", "--set", "M1=1", "--set", "R1=0.1",
+                        "--set", "w1=10", "--set", "M2=2", "--set", "R2=0.1", "--set", "w2=-10", "--set", "tau=0.5")
+    assert result.returncode == 2 and "the other way than at the middle" in result.stderr, result.stderr
+
+
+def test_a_clutch_joint_turns_two_disks_together(tmp_path):
+    """An engaged clutch as a joint: a torque on one disk turns both at tau/(I1 + I2), the clutch
+    passing I2 alpha to the other."""
+    text = DISKS.replace("    shaft: {pin: upper.center, to: lower.center}\n",
+                         "    shaft: {pin: upper.center, to: lower.center}\n    plates: {clutch: upper, to: lower}\n"
+                         "  loads:\n    - torque: {on: lower, magnitude: tau}\n")
+    text = text[:text.index("  states:")] + """\
+ask:
+  alpha: {meaning: angular acceleration, of: upper.angular_acceleration, unit: rad/s^2}
+  C: {meaning: torque of the clutch on the upper disk, of: plates.torque, unit: N*m}
+question: |
+  Two disks on one axle turn together.
+"""
+    text = text.replace("  w1: {meaning: angular velocity of the lower disk, unit: rad/s, range: [10, 30], sig_figs: 2}\n"
+                        "  w2: {meaning: angular velocity of the upper disk, unit: rad/s, range: [-5, 5], sig_figs: 2}\n",
+                        "  tau: {meaning: torque, unit: N*m, range: [1, 2], sig_figs: 2}\n")
+    solution = Solution(problem.load(write(tmp_path, text)))
+    M1, M2, R, tau = sp.symbols("M1 M2 R tau", positive=True)
+    alpha = tau / ((M1 + M2) * R**2 / 2)
+    assert sp.simplify(solution.expression("alpha") - alpha) == 0
+    assert sp.simplify(solution.expression("C") - M2 * R**2 / 2 * alpha) == 0
