@@ -19,11 +19,12 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import impacts, lagrange, newton_euler
+from derive.mechanics import friction, impacts, lagrange, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.contact import Contact
 from derive.parts.pin import Pin
+from derive.parts.weld import Weld
 from derive.parts.places import extent
 from derive.parts.surfaces import Plane
 from derive.scene import Quantity
@@ -47,7 +48,8 @@ class StateAnswers:
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
         result, joints, solved = {}, {}, {}
-        resolve = functools.partial(self._within_ranges, absolute=True)
+        def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
+            return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
         for name, state in self.scene.states.items():
             joints[name] = joints[state.start] if state.start else ()
             try:
@@ -58,10 +60,8 @@ class StateAnswers:
                         reached = self._after_impact(name, result[state.start].values, solved[name])
                     else:
                         reached = self._state(state, result, joints[name])
-                # |L0 - d|, |sin(theta0)|: in the form the parameter ranges give
-                result[name] = dataclasses.replace(
-                    reached, values={k: resolve(v) for k, v in reached.values.items()},
-                    positive=tuple((resolve(e), m) for e, m in reached.positive))
+                # (what must stay positive is evaluated per variant, Abs and all: left as it is)
+                result[name] = dataclasses.replace(reached, values={k: resolve(v) for k, v in reached.values.items()})
             except state_motion.StateLimit as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
@@ -78,17 +78,34 @@ class StateAnswers:
                                   self._derivations_with(joints)["lagrange"], self._sample)
 
     def _joint(self, state, found: dict):
-        """The joint the impact of `state` makes, where the bodies are in the state it happens in."""
+        """The joint the impact of `state` makes, where the bodies are in the state it happens in
+        (refused where, at the middle of the ranges, they do not touch there)."""
         joint = impacts.joint(self.scene, self.coordinates, found[state.start].values, state.event, state.name)
-        *_, body, to = state.event
-        if isinstance(joint, Pin) and self.scene.bodies[joint.to].rotates:  # a point mass sticks: on the body?
-            host = self.scene.bodies[joint.to]
-            reach = extent(host.shape, host.sizes) if host.composite is None else host.composite.extent()
-            where = sp.sqrt(sum(e**2 for e in joint.to_offset))
-            if reach is not None and self._sample(where - reach) > 1e-12 * (1 + abs(self._sample(reach))):
-                raise state_motion.StateError(f"the {joint.body} is {sp.sstr(tidy(where))} from the {joint.to}'s center "
-                                              f"in the state {state.start}, off the {host.shape}: it cannot stick there")
+        for gap, meaning in self._apart(joint, state.start):
+            if self._sample(gap) < -1e-12 * (1 + abs(self._sample(gap + 1))):
+                raise state_motion.StateError(meaning)
         return joint
+
+    def _apart(self, joint, start: str) -> list[tuple[sp.Expr, str]]:
+        """(reach^2 - distance^2, meaning) for a joint an impact made: not negative where the point
+        mass lies on the body it sticks to, or two bodies that stick are near enough to touch."""
+        if not isinstance(joint, (Pin, Weld)) or joint.to is None:
+            return []
+
+        def reach(name: str) -> sp.Expr | None:
+            body = self.scene.bodies[name]
+            if not body.rotates:
+                return sp.Integer(0)
+            return extent(body.shape, body.sizes) if body.composite is None else body.composite.extent()
+
+        offset = joint.to_offset if isinstance(joint, Pin) else joint.offset
+        reaches = [reach(joint.to), reach(joint.body)]
+        if any(r is None for r in reaches):
+            return []
+        where = sum((e**2 for e in offset), sp.Integer(0))
+        return [(tidy(sum(reaches) ** 2 - where), f"the {joint.body} is {sp.sstr(tidy(sp.sqrt(where)))} from the "
+                                                  f"{joint.to}'s center in the state {start}, too far to touch it: it "
+                                                  "cannot stick there")]
 
     def _impact(self, name: str, before: dict, joints: tuple, route: str) -> impacts.Impact:
         try:
@@ -138,6 +155,9 @@ class StateAnswers:
         if kind == "stops":
             return state_motion.Stops()
         part = self.dynamics_scene.constraint(name)
+        if kind == "slips":
+            return state_motion.Vanishes(self._grip_margin(part), f"the grip of the {part.body} at {name}: "
+                                                                  "mu_s^2 N^2 - f^2")
         force = part.unknowns()["normal"] if kind == "leaves" else next(iter(part.unknowns().values()))
         what = f"the normal force on the {part.body} at {name}" if kind == "leaves" else f"the tension of {name}"
         return state_motion.Vanishes(force, what)
@@ -189,6 +209,8 @@ class StateAnswers:
         for name in self._on_the_way():
             reached, scene = self.states[name], self.scene_in(name)
             if name in self._chain[2]:  # no joint pulls in an impact where it can only push (a body off its surface)
+                result += [(gap, False, meaning) for gap, meaning in
+                           self._apart(self._chain[1][name][-1], self.scene.states[name].start)]
                 impulses = self._chain[2][name].impulses
                 result += [(sign.expression.xreplace(impulses), False, f"{sign.meaning} (in the impact {name})")
                            for part in scene.constraints for sign in part.signs()]
@@ -205,11 +227,39 @@ class StateAnswers:
                 [p.base for v in exprs for p in v.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2]
                 + [tidy(1 - f.args[0] ** 2) for v in exprs for f in v.atoms(sp.acos, sp.asin)])]
             result += [(expr, True, f"{meaning} ({name})") for expr, meaning in reached.positive]
+            result += self._grip_conditions(name)
             # (a force the state is defined by, zero there, has no sign to keep: it was positive on the way)
             result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
                        for part in (*scene.constraints, *scene.loads) for sign in part.signs()
                        if not sign.expression.has(*reached.vanished)]
         return result + self._ramp_conditions()
+
+    @staticmethod
+    def _grip_margin(contact) -> sp.Expr:
+        """mu_s^2 N^2 - f^2: not negative while the contact's grip holds (N >= 0 is a sign of its own)."""
+        forces = contact.unknowns()
+        return friction.static_coefficient(contact) ** 2 * forces["normal"] ** 2 - forces["friction"] ** 2
+
+    def _grip_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
+        """A contact held by static friction (friction: {static: mu_s}) keeps its grip in the state
+        and, on the motion's way there, at ON_THE_WAY - 1 points between: past the point where it
+        would slip, the motion is not the one derived (a ball slips on a dome long before it leaves)."""
+        state, reached, result = self.scene.states[name], self.states[name], []
+        for contact in self.scene_in(name).constraints:
+            if not isinstance(contact, Contact) or not contact.has_friction or state.until == ("slips", contact.name):
+                continue
+            margin = self._grip_margin(contact)
+            meaning = (f"the {contact.body} slips at {contact.name} on the way to the state {name} (mu_s N < |f|): ask "
+                       f"where it starts to slip (when: {{slips: {contact.name}}})")
+            forces = self.in_state("lagrange", name).raw
+            result.append((margin.xreplace(forces).xreplace(reached.values), False, meaning))
+            if reached.path is not None:
+                path, s1 = reached.path, reached.end
+                s0 = path.start[path.s]
+                on_path = state_motion.along(path, margin, self.derivations_in(name)["lagrange"])
+                result += [(on_path.xreplace({path.s: s0 + sp.Rational(k, state_motion.ON_THE_WAY) * (s1 - s0)}), False,
+                            meaning) for k in range(state_motion.ON_THE_WAY)]
+        return result
 
     def _on_the_way(self) -> list[str]:
         """The states asks are read in, and those their motions start from, in the file's order: a

@@ -22,8 +22,8 @@ def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dic
     """`states: {spinning: {rates: {wheel.angular_velocity: w0}}, vertical: {when: {rod.angle: -pi/2},
     from: spinning}}`: each state's `from` one named above it (no state reached from itself).
     `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
-    stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`) or a cord goes slack
-    (`{slack: CORD}`). `event:` is an impact in the state from: (see EVENTS), and the state is
+    stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`), a cord goes slack
+    (`{slack: CORD}`) or a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static: mu_s}). `event:` is an impact in the state from: (see EVENTS), and the state is
     the one just after it."""
     result = {}
     for name, spec in reader.named(raw, "states").items():
@@ -54,12 +54,12 @@ def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dic
             result[name] = State(name, start=start, until=("stops", None))
             continue
         if not isinstance(spec["when"], dict):
-            raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY} "
-                                               "and {slack: CORD}")
+            raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY}, "
+                                               "{slack: CORD} and {slips: BODY}")
         when = reader.mapping(spec["when"], f"{field}.when", free=True)
         if len(when) != 1:
-            raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY} "
-                                               "or {slack: CORD}")
+            raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY}, "
+                                               "{slack: CORD} or {slips: BODY}")
         (key, value), = when.items()
         if key in THRESHOLDS:
             result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",
@@ -99,7 +99,7 @@ def _event(reader: Reader, name: str, spec: dict, field: str, bodies: dict[str, 
 
 
 #: The states where a part's force falls to zero: the part's kind and the force's key.
-THRESHOLDS = {"leaves": (Contact, "normal"), "slack": (Cord, None)}
+THRESHOLDS = {"leaves": (Contact, "normal"), "slack": (Cord, None), "slips": (Contact, "friction")}
 
 
 def _threshold_part(reader: Reader, kind: str, raw, field: str, constraints: list) -> str:
@@ -112,6 +112,9 @@ def _threshold_part(reader: Reader, kind: str, raw, field: str, constraints: lis
         what = "a contact (a body on a surface, or a contact joint)" if part_type is Contact else "a cord"
         raise reader.fail(field, f"expected {what} of the scene ({', '.join(fitting) or 'none'})")
     part = fitting[raw]
+    if kind == "slips" and not part.has_friction:
+        raise reader.fail(field, f"the contact {raw} gives no friction coefficient: where it slips needs "
+                                 "friction: {static: mu_s}")
     if part_type is Cord and len(part.unknowns()) != 1:
         raise reader.fail(field, f"the cord {raw} has {len(part.unknowns())} tensions: slack is for a cord of one")
     return part.name

@@ -381,3 +381,46 @@ question: A puck is held between two stretched springs and released.
     result = solve(tmp_path, text)
     assert result.returncode == 1 and "2 degrees of freedom whose motion is not a straight line" in result.stderr, \
         result.stderr
+
+
+# Grips: a contact held by static friction keeps it on the way to every state, or the state is
+# where it slips.
+
+DOME = Path("tests/textbook/states/ball_slips_on_dome.yaml").read_text()
+
+
+def test_a_ball_that_slips_on_its_way_is_not_followed_to_where_it_leaves(tmp_path):
+    """Found silently wrong: with mu_s given, a ball on a dome was answered as rolling all the way
+    to where it leaves (cos = 10/17), though it slips near 30 degrees from the top for mu_s = 0.3."""
+    text = DOME.replace("slipping: {when: {slips: ball}, from: nudged}", "off: {when: {leaves: ball}, from: nudged}")
+    text = text.replace("in: slipping", "in: off")
+    stderr = refused(tmp_path, text, "scene")
+    assert "slips at ball_contact on the way to the state off" in stderr and "when: {slips: ball_contact}" in stderr
+
+
+def test_where_a_grip_fails_needs_a_coefficient(tmp_path):
+    text = DOME.replace(", friction: {static: mu}}", "}").replace(
+        "  mu: {meaning: coefficient of static friction, unit: 1, range: [0.2, 0.5], sig_figs: 2}\n", "")
+    assert "gives no friction coefficient" in refused(tmp_path, text, "scene.states.slipping.when.slips")
+
+
+def test_the_slip_point_is_checked_by_the_integrated_motion(tmp_path, monkeypatch):
+    """The place where the grip fails, 1% off, is caught by Newton–Euler's motion integrated to
+    where mu_s^2 N^2 = f^2 (the root's own check set aside)."""
+    path = tmp_path / "problem.yaml"
+    path.write_text(DOME)
+    original = states._first
+    monkeypatch.setattr(states, "_first", lambda *args: original(*args) * 101 / 100)
+    monkeypatch.setattr(states, "_a_root", lambda *args: [])
+    with pytest.raises(CheckFailure, match="differ"):
+        report.solve(problem.load(path), {}, 4)
+
+
+def test_an_angle_reached_only_the_other_way_round_is_refused(tmp_path):
+    """Found by a new-user trial: a rod turning clockwise asked where its angle is +pi/2 was
+    followed on the counter-clockwise branch of its center's circle (an internal error, the
+    integrated motion disagreeing); the branch is now the one it turns on, which never gets there."""
+    text = with_state("{rates: {rod.angular_velocity: -2*sqrt(g/L)}}").replace(
+        "    there: {rates: {rod.angular_velocity: -2*sqrt(g/L)}}",
+        "    spun: {rates: {rod.angular_velocity: -2*sqrt(g/L)}}\n    there: {when: {rod.angle: pi/2}, from: spun}")
+    assert "does not get there" in refused(tmp_path, text, "scene.states.there")

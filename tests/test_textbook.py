@@ -485,6 +485,15 @@ EXPECTED.update({
         "t": lambda s: (s.M1 * s.R1**2 + s.M2 * s.R2**2) / 2
         * ((s.M1 * s.R1**2 * s.w1 + s.M2 * s.R2**2 * s.w2) / (s.M1 * s.R1**2 + s.M2 * s.R2**2)) / s.tau,
     },
+    # Kleppner & Kolenkow ch. 7 / Morin ch. 8: rolling on a fixed sphere (rho = R + r from its
+    # center), N = M g (17 c - k)/7 with k = 10 + 7 v0^2/(g rho), c = cos(phi), and f = 2 M g sin(phi)/7;
+    # |f| = mu N where mu^2 (17 c - k)^2 = 4 (1 - c^2), the larger root (reached first from the top):
+    # c = (17 mu^2 k + 2 sqrt(4 + mu^2 (289 - k^2)))/(289 mu^2 + 4); the center is rho c above.
+    "ball_slips_on_dome": {
+        "h": lambda s: (s.R + s.r) * (17 * s.mu**2 * (10 + 7 * s.v0**2 / (s.g * (s.R + s.r)))
+                                      + 2 * sp.sqrt(4 + s.mu**2 * (289 - (10 + 7 * s.v0**2 / (s.g * (s.R + s.r))) ** 2)))
+        / (289 * s.mu**2 + 4),
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))

@@ -149,7 +149,8 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
             # through the reference configuration, where every coordinate is zero, or else the one
             # that moves the way `heading` says; `keep` last of all.
             candidates = [k for k in order if k.q not in solved and gap.has(k.q)]
-            found = {k: roots(gap, k.q) for k in candidates}
+            found = {k: _turned_back(roots(gap, k.q), reference, sample) if k.kind == "theta" else roots(gap, k.q)
+                     for k in candidates}
             through = {k: [r for r in roots if _through(r.xreplace(reference) - reference[k.q], sample)]
                        for k, roots in found.items()}
             picks = [lambda k: found[k][0] if len(found[k]) == 1 else None,
@@ -165,6 +166,22 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
             solved = {q: v.xreplace({candidate.q: root}) for q, v in solved.items()}
             solved[candidate.q] = root
     return solved
+
+
+def _turned_back(found: list[sp.Expr], reference: dict, sample) -> list[sp.Expr]:
+    """An angle's roots, each turned by whole turns to pass nearest the reference: sympy gives
+    acos(c) and 2 pi - acos(c) for cos(theta) = c, and the second is the branch -acos(c) through
+    the reference that a body turning clockwise from it takes."""
+    if sample is None:
+        return found
+    result = []
+    for r in found:
+        try:
+            turns = round(sample(r.xreplace(reference)) / (2 * sp.pi.evalf()))
+        except (TypeError, ValueError):
+            turns = 0
+        result.append(r - 2 * sp.pi * turns if turns else r)
+    return result
 
 
 def _through(offset: sp.Expr, sample) -> bool:

@@ -120,9 +120,10 @@ class Stops:
 @dataclass(frozen=True)
 class Vanishes:
     """The state where a constraint force first falls to zero: a body leaves its surface (the
-    normal force), a cord goes slack (its tension)."""
+    normal force), a cord goes slack (its tension); or an expression of the forces does: where a
+    grip fails, mu_s^2 N^2 - f^2 (zero where |f| = mu_s N, N > 0; smooth, unlike |f|)."""
 
-    force: sp.Symbol
+    force: sp.Expr
     meaning: str  # "the normal force N^bead", for the steps
 
 
@@ -197,7 +198,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
         raise StateError("the constraints leave the scene no motion: it never gets to the state")
     heading = _heading(start, coords, derivation, decide)
     target = condition.coordinate if isinstance(condition, Gets) else None
-    if target is not None:
+    if target is not None and not heading[target.q]:  # at rest and not pushed: the way to the state
         heading[target.q] = 1 if decide(condition.value - start[target.q]) > 0 else -1
     # The state's coordinate left free first; where it is extremal at the state (a disk's center
     # at its lowest, whose angle has no derivative in its height there), another, those that
@@ -389,18 +390,23 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
         function = position - condition.value
         s1 = _first(sp.Eq(position, condition.value), function, path, decide,
                     "the motion from the start does not get there")
+        if condition.coordinate == path.coordinate:  # every variant's state lies ahead, as the middle's does
+            steps_ahead = [(path.direction * (condition.value - s0), f"the state lies behind the start in {s} (the "
+                                                                     "motion moves away from it)")]
+        else:
+            steps_ahead = []
     elif isinstance(condition, Stops):
         function = path.kinetic
         s1 = _first(sp.Eq(path.kinetic, 0), function, path, decide,
                     "the motion does not stop: it goes on (over the top, or forever)")
         steps.append(Step("It stops where its kinetic energy is zero", (sp.Eq(s, s1),)))
     else:
-        force = _along(path, condition.force, derivation)
+        force = along(path, condition.force, derivation)
         steps.append(Step(f"Along the way, {condition.meaning}", (sp.Eq(condition.force, force),)))
         function = force
         s1 = _first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
         steps.append(Step("It falls to zero at", (sp.Eq(s, s1),)))
-        vanished = (condition.force,)
+        vanished = (condition.force,) if condition.force.is_Symbol else ()
     inertia = path.inertia.xreplace({s: s1})
     if inertia.has(sp.zoo, sp.oo, sp.nan) or not _real(inertia, decide) or settled(1 / inertia) == 0:
         # the coordinate is extremal there (a bead's height at the bottom of a bowl): it has no
@@ -411,6 +417,7 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     values = path.values(s1, rate)
     arrived = path.kinetic.xreplace({s: s1})
     positive = [] if isinstance(condition, Stops) else [(arrived, "the motion does not reach the state: it stops before it")]
+    positive[:0] = steps_ahead if isinstance(condition, Gets) else []
     if path.leaves is not None:  # every variant leaves the start the way the middle of the ranges does
         positive.insert(0, (path.direction * path.leaves, f"the motion leaves the start {'backward' if path.direction > 0 else 'forward'} "
                                                           f"in {s}, the other way than at the middle of the parameter ranges, "
@@ -459,8 +466,11 @@ def _positive_at_the_middle(positive, decide, advice: str) -> None:
             raise StateError(f"{meaning}, at the middle of the parameter ranges{advice}")
 
 
-def _along(path: Path, force: sp.Symbol, derivation: Derivation) -> sp.Expr:
-    """A constraint force along the path, as a function of s (s'^2 from the energy)."""
+def along(path: Path, force: sp.Expr, derivation: Derivation) -> sp.Expr:
+    """A constraint force along the path, as a function of s (s'^2 from the energy); an
+    expression of the route's unknowns with each of them so (each tidied, the whole not)."""
+    if not force.is_Symbol:
+        return force.xreplace({u: along(path, u, derivation) for u in force.free_symbols if u in derivation.unknowns})
     general, where, rate = path.general
     solved = derivation.at(general, path.frozen).raw[force].xreplace({where: path.s})
     return tidy(solved.xreplace({rate: sp.sqrt(path.kinetic / path.inertia)}))
@@ -507,8 +517,14 @@ def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -
     if equation.lhs == s:
         found = [equation.rhs]
     else:
+        # |a(s)| as a or -a by its sign just ahead of the start (a ball's cos on a dome): sympy
+        # solves without Abs at once; a root past a change of that sign fails `_a_root`'s check
+        ahead = s0 + direction * sp.Rational(1, 10**6)
+        equation = equation.xreplace({a: a.args[0] if decide(a.args[0].xreplace({s: ahead})) >= 0 else -a.args[0]
+                                      for a in equation.atoms(sp.Abs) if a.has(s)})
+        found = _cosine_roots(equation.lhs - equation.rhs, s)
         try:
-            found = [r for r in sp.solve(equation, s) if not r.has(sp.I)]
+            found = found if found is not None else [r for r in sp.solve(equation, s) if not r.has(sp.I)]
         except NotImplementedError:
             raise StateLimit(f"solve {sp.sstr(equation)} for {s}") from None
         if any(f.has(s) for f in function.atoms(sp.sin, sp.cos, sp.tan)):  # periodic in s
@@ -534,6 +550,27 @@ def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -
     if any(a * b < 0 for a, b in zip(signs, signs[1:])):
         raise StateLimit(f"find where {sp.sstr(function)} = 0 in closed form: it changes sign before {s} = {end:.6g}")
     return first
+
+
+def _cosine_roots(expr: sp.Expr, s: sp.Symbol) -> list[sp.Expr] | None:
+    """The roots in s of a polynomial in cos(a s + b) and sin(a s + b)^2 (a ball's grip on a dome,
+    mu^2 N^2 - f^2), through the polynomial in c = cos(a s + b): s = (+-acos(c) - b)/a (and their
+    turns by 2 pi/a). sympy's solve took minutes on the trigonometric form. None where `expr` is
+    not of that form."""
+    arguments = {f.args[0] for f in expr.atoms(sp.sin, sp.cos) if f.has(s)}
+    if len(arguments) != 1:
+        return None
+    (argument,) = arguments
+    slope = sp.diff(argument, s)
+    if slope == 0 or slope.has(s):
+        return None
+    c = sp.Dummy("c", real=True)
+    polynomial = sp.expand(expr).xreplace({sp.sin(argument) ** 2: 1 - c**2}).xreplace({sp.cos(argument): c})
+    if polynomial.has(s):
+        return None
+    offset = argument.xreplace({s: 0})
+    cosines = [r for r in sp.solve(polynomial, c) if not r.has(sp.I)]
+    return [(sign * sp.acos(r) - offset + 2 * sp.pi * k) / slope for r in cosines for sign in (1, -1) for k in (-1, 0, 1)]
 
 
 def _assumed(expr: sp.Expr) -> float:
@@ -606,10 +643,10 @@ def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reac
             return y[n + index]
         event.direction = -reached.path.direction
     else:
-        force = derivation.unknowns.index(condition.force)
+        force = sp.lambdify(derivation.unknowns, condition.force.xreplace(values), "numpy")
 
         def event(t, y):
-            return unknowns(y)[force]
+            return force(*unknowns(y))
         event.direction = -1
     event.terminal = True
     start = reached.path.start
