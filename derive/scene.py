@@ -248,9 +248,10 @@ class State:
     to first: where one body coordinate reaches a value (`when`: an absolute x, y of the center
     or angle, as `at` and `angle` are given), or (`until`) where the motion stops, ("stops",
     None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD); or the state
-    just after an impact in the state `start` (`event`: ("stick", BODY, OTHER), the body sticks to
-    the other where it is, or ("lock", BODY, OTHER), the two turn together from then on), after
-    which the scene keeps the joint the impact made.
+    just after an impact in the state `start` (`event`: ("stick", BODY, OTHER, None), the body
+    sticks to the other where it is; ("lock", BODY, OTHER, None), the two turn together from then
+    on, the scene keeping the joint the impact made; or ("bounce", BODY, OTHER, e), a point mass
+    bounces off a body with the coefficient of restitution e).
 
     >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
     True
@@ -261,7 +262,7 @@ class State:
     when: tuple[str, str, sp.Expr] | None = None
     start: str | None = None
     until: tuple[str, str | None] | None = None
-    event: tuple[str, str, str] | None = None
+    event: tuple[str, str, str, sp.Expr | None] | None = None
 
 
 @dataclass(frozen=True)

@@ -41,13 +41,14 @@ class StateAnswers:
         return self._chain[0]
 
     @cached_property
-    def _chain(self) -> tuple[dict[str, state_motion.Reached], dict[str, tuple], dict[str, impacts.Impact]]:
+    def _chain(self) -> tuple[dict[str, state_motion.Reached], dict[str, tuple], dict[str, impacts.Impact], dict]:
         """The states in the order the file names them, the joints impacts made on the way to each
-        (the scene in a state has them: `scene_in`), and each impact's solution by Lagrange."""
+        (the scene in a state has them: `scene_in`), each impact's solution by Lagrange, and the
+        joint each impact made (a bounce's touch, for its instant only, is in no state's scene)."""
         if self.scene.states and len(self.regimes) > 1:
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
-        result, joints, solved = {}, {}, {}
+        result, joints, solved, made = {}, {}, {}, {}
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
         for name, state in self.scene.states.items():
@@ -55,8 +56,11 @@ class StateAnswers:
             try:
                 with limits.time_limit(f"finding the state {name}"):
                     if state.event:
-                        joints[name] += (self._joint(state, result),)
-                        solved[name] = self._impact(name, result[state.start].values, joints[name], "lagrange")
+                        made[name] = self._joint(state, result)
+                        solved[name] = self._impact(name, result[state.start].values, joints[name], made[name],
+                                                    "lagrange")
+                        if state.event[0] != "bounce":  # a bounce's touch lasts the instant only
+                            joints[name] += (made[name],)
                         reached = self._after_impact(name, result[state.start].values, solved[name])
                     else:
                         reached = self._state(state, result, joints[name])
@@ -66,7 +70,7 @@ class StateAnswers:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
-        return result, joints, solved
+        return result, joints, solved, made
 
     def _state(self, state, found: dict, joints: tuple) -> state_motion.Reached:
         coords = self.coordinates
@@ -80,7 +84,8 @@ class StateAnswers:
     def _joint(self, state, found: dict):
         """The joint the impact of `state` makes, where the bodies are in the state it happens in
         (refused where, at the middle of the ranges, they do not touch there)."""
-        joint = impacts.joint(self.scene, self.coordinates, found[state.start].values, state.event, state.name)
+        joint = impacts.joint(self.scene, self.coordinates, found[state.start].values, state.event, state.name,
+                              self._sample)
         for gap, meaning in self._apart(joint, state.start):
             if self._sample(gap) < -1e-12 * (1 + abs(self._sample(gap + 1))):
                 raise state_motion.StateError(meaning)
@@ -89,7 +94,7 @@ class StateAnswers:
     def _apart(self, joint, start: str) -> list[tuple[sp.Expr, str]]:
         """(reach^2 - distance^2, meaning) for a joint an impact made: not negative where the point
         mass lies on the body it sticks to, or two bodies that stick are near enough to touch."""
-        if not isinstance(joint, (Pin, Weld)) or joint.to is None:
+        if not isinstance(joint, (Pin, Weld, impacts.Touch)) or joint.to is None:
             return []
 
         def reach(name: str) -> sp.Expr | None:
@@ -98,7 +103,7 @@ class StateAnswers:
                 return sp.Integer(0)
             return extent(body.shape, body.sizes) if body.composite is None else body.composite.extent()
 
-        offset = joint.to_offset if isinstance(joint, Pin) else joint.offset
+        offset = joint.offset if isinstance(joint, Weld) else joint.to_offset
         reaches = [reach(joint.to), reach(joint.body)]
         if any(r is None for r in reaches):
             return []
@@ -107,9 +112,13 @@ class StateAnswers:
                                                   f"{joint.to}'s center in the state {start}, too far to touch it: it "
                                                   "cannot stick there")]
 
-    def _impact(self, name: str, before: dict, joints: tuple, route: str) -> impacts.Impact:
+    def _impact(self, name: str, before: dict, joints: tuple, made, route: str) -> impacts.Impact:
+        """The impact of the state `name` by `route`, in the scene with the joints before it and the
+        one it makes (`made`)."""
+        kind, *_, restitution = self.scene.states[name].event
+        bounce = (made, restitution) if kind == "bounce" else ()
         try:
-            return impacts.impact(self._scene_with(joints), self.coordinates, before, route)
+            return impacts.impact(self._scene_with(joints + (made,)), self.coordinates, before, route, bounce)
         except impacts.ImpactError as error:
             raise state_motion.StateLimit(str(error)) from None
 
@@ -117,8 +126,9 @@ class StateAnswers:
         """The state just after an impact: where the bodies were, at the velocities the impact leaves."""
         values = {**{c.q: before[c.q] for c in self.coordinates.all}, **impact.velocities}
         lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, values)
-        kind, body, to = self.scene.states[name].event
-        what = f"the {body} sticks to the {to}" if kind == "stick" else f"the {body} and the {to} lock together"
+        kind, body, to, restitution = self.scene.states[name].event
+        what = {"stick": f"the {body} sticks to the {to}", "lock": f"the {body} and the {to} lock together",
+                "bounce": f"the {body} bounces off the {to} (coefficient of restitution {restitution})"}[kind]
         steps = (Step(f"The impact: {what}", ()), *impact.steps,
                  Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),)))
         return state_motion.Reached(values, (), steps)
@@ -209,11 +219,11 @@ class StateAnswers:
         for name in self._on_the_way():
             reached, scene = self.states[name], self.scene_in(name)
             if name in self._chain[2]:  # no joint pulls in an impact where it can only push (a body off its surface)
-                result += [(gap, False, meaning) for gap, meaning in
-                           self._apart(self._chain[1][name][-1], self.scene.states[name].start)]
+                made, start = self._chain[3][name], self.scene.states[name].start
+                result += [(gap, False, meaning) for gap, meaning in self._apart(made, start)]
                 impulses = self._chain[2][name].impulses
                 result += [(sign.expression.xreplace(impulses), False, f"{sign.meaning} (in the impact {name})")
-                           for part in scene.constraints for sign in part.signs()]
+                           for part in (*self.scene_in(start).constraints, made) for sign in part.signs()]
             forces = self.in_state("lagrange", name).raw
             # the state is real, first: where a formula puts it off the scene's geometry (a ball
             # higher than its cord reaches, a swing that would stop above the top), the motion

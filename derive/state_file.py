@@ -72,16 +72,17 @@ def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dic
 
 #: The impacts a state may follow: what each makes of the two bodies.
 EVENTS = {"stick": "the body sticks to the other where it touches it",
-          "lock": "the two turning bodies turn together from then on (a clutch)"}
+          "lock": "the two turning bodies turn together from then on (a clutch)",
+          "bounce": "a point mass bounces off a rod or a round body, smooth, with restitution: e"}
 
 
 def _event(reader: Reader, name: str, spec: dict, field: str, bodies: dict[str, Body], found: dict[str, State]) -> State:
-    """`{from: STATE, event: {stick: BODY, to: OTHER}}` or `{lock: BODY, to: OTHER}`: the state
-    just after an impact in the state from:."""
+    """`{from: STATE, event: {stick: BODY, to: OTHER}}`, `{lock: BODY, to: OTHER}` or `{bounce:
+    BODY, to: OTHER, restitution: e}`: the state just after an impact in the state from:."""
     if spec.get("from") not in found:
         raise reader.fail(f"{field}.from", f"an impact happens in a state: give from: a state named above this one "
                                            f"(states: {', '.join(found) or 'none'})")
-    raw = reader.mapping(spec["event"], f"{field}.event", required=("to",), optional=tuple(EVENTS))
+    raw = reader.mapping(spec["event"], f"{field}.event", required=("to",), optional=(*EVENTS, "restitution"))
     kinds = [k for k in EVENTS if k in raw]
     if len(kinds) != 1:
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
@@ -95,7 +96,16 @@ def _event(reader: Reader, name: str, spec: dict, field: str, bodies: dict[str, 
     if kind == "lock" and not (bodies[body].rotates and bodies[to].rotates):
         raise reader.fail(f"{field}.event", "lock joins two turning bodies (a point mass does not turn): "
                                             "a point mass sticks (stick:)")
-    return State(name, start=spec["from"], event=(kind, body, to))
+    restitution = None
+    if kind == "bounce":
+        if "restitution" not in raw:
+            raise reader.fail(f"{field}.event.restitution", "missing: a bounce gives its coefficient of restitution "
+                                                             "(1 elastic, 0 they move together along the normal)")
+        restitution = reader.dimensioned(raw["restitution"], f"{field}.event.restitution", "1",
+                                         "a coefficient of restitution")
+    elif "restitution" in raw:
+        raise reader.fail(f"{field}.event.restitution", f"a {kind} has no restitution (a bounce has)")
+    return State(name, start=spec["from"], event=(kind, body, to, restitution))
 
 
 #: The states where a part's force falls to zero: the part's kind and the force's key.

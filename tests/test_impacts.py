@@ -244,7 +244,8 @@ def test_the_librarys_sticky_impacts_agree_with_the_impacts_of_states(problem_id
         before[coords.of(name, "x").u], before[coords.of(name, "y").u] = motion.velocity
         if bodies[name].rotates:
             before[coords.of(name, "theta").u] = motion.spin
-    after = Scene(bodies, old.constraints + (impacts.joint(scene, coords, before, ("stick", stick.body, stick.to), "hit"),))
+    after = Scene(bodies, old.constraints + (impacts.joint(scene, coords, before, ("stick", stick.body, stick.to, None),
+                                                          "hit"),))
     expected = events.by_conservation(old)
     for route in ("lagrange", "newton_euler"):
         result = impacts.impact(after, coords, before, route)
@@ -254,3 +255,64 @@ def test_the_librarys_sticky_impacts_agree_with_the_impacts_of_states(problem_id
                 assert sp.simplify(result.velocities[coords.of(name, kind).u] - value) == 0, (route, name, kind)
         lost = impacts.energy_lost(after, coords, before, {**before, **result.velocities})
         assert sp.simplify(lost + events.energy_change(old, expected)) == 0
+
+
+WHEEL = """\
+id: ball_off_wheel
+title: A ball bounces off the rim of a wheel on a fixed axle
+topic: conservation
+parameters:
+  m: {meaning: mass of the ball, unit: kg, range: [0.1, 0.5], sig_figs: 2}
+  M: {meaning: mass of the wheel, unit: kg, range: [1, 3], sig_figs: 2}
+  R: {meaning: radius of the wheel, unit: m, range: [0.2, 0.5], sig_figs: 2}
+  v: {meaning: speed of the ball, unit: m/s, range: [1, 5], sig_figs: 2}
+  e: {meaning: coefficient of restitution, unit: 1, range: [0.3, 1], sig_figs: 2}
+scene:
+  bodies:
+    wheel: {shape: disk, mass: M, radius: R}
+    ball: {shape: point, mass: m, at: [-R*cos(pi/6), R*sin(pi/6)]}
+  joints:
+    axle: {pin: wheel.center}
+  states:
+    coming: {rates: {ball.velocity.x: v, ball.velocity.y: 0, wheel.angular_velocity: 0}}
+    bounced: {from: coming, event: EVENT}
+ask:
+  omega: {meaning: angular velocity of the wheel after, of: wheel.angular_velocity, in: bounced, unit: rad/s}
+  vx: {meaning: ball's velocity after, of: ball.velocity.x, in: bounced, unit: m/s}
+  vy: {meaning: ball's velocity after, of: ball.velocity.y, in: bounced, unit: m/s}
+question: |
+  A ball strikes the rim of a wheel on a fixed axle, 30 degrees above its center.
+"""
+
+
+def test_a_smooth_bounce_off_a_wheel_on_its_axle_does_not_turn_it(tmp_path):
+    """The impulse of a smooth contact on a round body is along its radius, through the axle: the
+    wheel does not turn, and the ball's velocity along the radius reverses, scaled by e (the
+    axle takes the impulse), while the tangential one is kept."""
+    solution = Solution(problem.load(write(tmp_path, WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e}"))))
+    v, e = (next(s for s in solution.expression("vx").free_symbols if s.name == n) for n in ("v", "e"))
+    assert solution.expression("omega") == 0
+    n = sp.Matrix([-sp.cos(sp.pi / 6), sp.sin(sp.pi / 6)])  # outward, at the ball
+    t = sp.Matrix([-n[1], n[0]])
+    before, after = sp.Matrix([v, 0]), sp.Matrix([solution.expression("vx"), solution.expression("vy")])
+    assert sp.simplify(after.dot(n) + e * before.dot(n)) == 0
+    assert sp.simplify(after.dot(t) - before.dot(t)) == 0
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+@pytest.mark.parametrize("event, field, words", [
+    ("{bounce: ball, to: wheel}", "scene.states.bounced.event.restitution", "missing"),
+    ("{stick: ball, to: wheel, restitution: e}", "scene.states.bounced.event.restitution", "no restitution"),
+])
+def test_restitution_goes_with_a_bounce(tmp_path, event, field, words):
+    text = WHEEL.replace("EVENT", event)
+    if "stick" in event:
+        text = text.replace("  e: {meaning: coefficient of restitution, unit: 1, range: [0.3, 1], sig_figs: 2}\n", "")
+    assert words in refused(tmp_path, text, field)
+
+
+def test_a_ball_moving_away_does_not_bounce(tmp_path):
+    """Moving away from the wheel, the ball would have to pull on it: refused, naming the bounce."""
+    text = WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e}").replace(
+        "ball.velocity.x: v,", "ball.velocity.x: -v,")
+    assert "would pull on the wheel in the bounce" in refused(tmp_path, text, "scene")

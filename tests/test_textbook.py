@@ -494,6 +494,15 @@ EXPECTED.update({
                                       + 2 * sp.sqrt(4 + s.mu**2 * (289 - (10 + 7 * s.v0**2 / (s.g * (s.R + s.r))) ** 2)))
         / (289 * s.mu**2 + 4),
     },
+    # Serway & Jewett ch. 11 problems: about the pivot m v L = m u L + (M L^2/3) omega, and the
+    # ends' relative speed reversed and scaled, L omega - u = e v.
+    "ball_bounces_off_rod": {
+        "omega": lambda s: 3 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 3 * s.m)),
+        "u": lambda s: s.v * (3 * s.m - s.M * s.e) / (s.M + 3 * s.m),
+        "K0": lambda s: s.m * s.v**2 / 2,
+        "K1": lambda s: s.m * (s.v * (3 * s.m - s.M * s.e) / (s.M + 3 * s.m)) ** 2 / 2
+        + s.M * s.L**2 / 6 * (3 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 3 * s.m))) ** 2,
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))

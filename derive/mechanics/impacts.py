@@ -1,9 +1,11 @@
-"""Impacts that join bodies, in a state of a scene: a point mass that sticks to a body (a bullet
-into a hanging rod, a child jumping onto a turntable), a body that sticks to another, two
-turning bodies that lock together (a clutch, a disk dropped onto another).
+"""Impacts in a state of a scene: a point mass that sticks to a body (a bullet into a hanging
+rod, a child jumping onto a turntable), a body that sticks to another, two turning bodies that
+lock together (a clutch, a disk dropped onto another), a point mass that bounces off a body
+with a coefficient of restitution (a ball off the end of a hanging rod).
 
-The impact makes a joint (`joint`): a pin holding the point mass where it struck, a weld, or a
-clutch. In the instant of the impact the configuration q* does not change, and forces that stay
+The impact makes a joint (`joint`): a pin holding the point mass where it struck, a weld, a
+clutch, or for a bounce a smooth touch along the normal that lasts the instant only (its
+normal rate after is -e times the one before). In the instant of the impact the configuration q* does not change, and forces that stay
 finite (weights, springs, given loads) give no impulse: only the joints' forces do, the new one
 and those already there (a hinge's). The velocities just after, u+, are solved by two routes
 from the velocities just before, u- (`impact`):
@@ -27,7 +29,7 @@ Kinetic energy is not conserved in such an impact: `energy_lost` is the ledger's
 >>> scene = Scene({"rod": rod, "bullet": bullet}, (Pin("hinge", "rod", (-L / 2, 0)),))
 >>> coords = Coordinates(scene)
 >>> before = {**{s: 0 for s in coords.state}, coords.of("bullet", "x").u: v}
->>> after = Scene(scene.bodies, scene.constraints + (joint(scene, coords, before, ("stick", "bullet", "rod"), "hit"),))
+>>> after = Scene(scene.bodies, scene.constraints + (joint(scene, coords, before, ("stick", "bullet", "rod", None), "hit"),))
 >>> impact(after, coords, before, "lagrange").velocities[coords.of("rod", "theta").u]
 3*m*v/(L*(M + 3*m))
 """
@@ -40,11 +42,48 @@ import sympy as sp
 from derive.mechanics.derivation import Step, solve_linear, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.lagrange import energies
-from derive.parts import AppliedForce, AppliedTorque, Part
+from derive.parts import AppliedForce, AppliedTorque, Part, Sign
 from derive.parts.clutch import Clutch
 from derive.parts.pin import Pin
 from derive.parts.weld import Weld
 from derive.scene import Scene
+
+
+@dataclass(frozen=True)
+class Touch(Part):
+    """A point mass `body` striking `to`'s material point at `to_offset` (its frame) along the
+    world direction `normal` (from `to` toward the point mass), smooth: for the instant of a
+    bounce only. Lagrange: the gap n . (P_body - P_to); Newton–Euler: the impulse J n on the
+    point mass, -J n on the other body there; their normal velocities."""
+
+    name: str
+    body: str
+    to: str
+    to_offset: tuple[sp.Expr, sp.Expr]
+    normal: tuple[sp.Expr, sp.Expr]
+
+    def bodies(self) -> tuple[str, ...]:
+        return (self.body, self.to)
+
+    def unknowns(self) -> dict[str, sp.Symbol]:
+        return {"impulse": sp.Symbol(f"J^{self.name}", real=True)}
+
+    def gaps(self, coords) -> list[sp.Expr]:
+        return [sp.Matrix(self.normal).dot(coords.position(self.body) - coords.position(self.to, self.to_offset))]
+
+    def loads(self, coords) -> list[AppliedForce]:
+        push = self.unknowns()["impulse"] * sp.Matrix(self.normal)
+        label = f"impact {self.name}"
+        return [AppliedForce(self.body, sp.zeros(2, 1), push, label),
+                AppliedForce(self.to, coords.rotated(self.to, self.to_offset), -push, label)]
+
+    def conditions(self, coords) -> list[sp.Expr]:
+        there = coords.velocity(self.to, coords.rotated(self.to, self.to_offset))
+        return [sp.Matrix(self.normal).dot(coords.velocity(self.body, sp.zeros(2, 1)) - there)]
+
+    def signs(self) -> list[Sign]:
+        return [Sign(self.unknowns()["impulse"], f"the {self.body} would pull on the {self.to} in the bounce (they "
+                                                 "are not moving toward each other)")]
 
 
 class ImpactError(ValueError):
@@ -61,14 +100,17 @@ class Impact:
     steps: tuple[Step, ...]
 
 
-def joint(scene: Scene, coords: Coordinates, values: dict, event: tuple[str, str, str], name: str) -> Part:
-    """The joint an impact (kind, body, other) makes as the bodies are in the state `values`: a
-    clutch (`lock`, at the turn between them then); for `stick` a pin holding a point mass where
-    it is on the other body, or a weld of two turning bodies.
+def joint(scene: Scene, coords: Coordinates, values: dict, event: tuple, name: str, decide=None) -> Part:
+    """The joint an impact (kind, body, other, restitution) makes as the bodies are in the state
+    `values`: a clutch (`lock`, at the turn between them then); for `stick` a pin holding a point
+    mass where it is on the other body, or a weld of two turning bodies; for `bounce` the touch
+    of a point mass on the other body, for the instant (along the rod's normal, or a round
+    body's radius).
 
     Raises ValueError where two point masses that are apart would stick (a particle has no frame
-    to hold another in)."""
-    kind, body, to = event
+    to hold another in), or a bounce has no normal derive knows. `decide` (an expression's value
+    at the middle of the ranges) turns a rod's normal toward the side the point mass comes from."""
+    kind, body, to, _ = event
     at = {c.q: values[c.q] for c in coords.all}
 
     def turn(a: str, b: str) -> sp.Expr:
@@ -81,6 +123,12 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: tuple[str, str
     angle = -coords.orientation(host).xreplace(at)
     offset = tuple(tidy(e) for e in sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
                    * between)
+    if kind == "bounce":
+        touch = _touch(scene, coords, at, name, point, host, offset)
+        approach = touch.conditions(coords)[0].xreplace(values)  # negative while they close in
+        if decide is not None and scene.bodies[host].shape == "rod" and decide(approach) > 0:
+            touch = Touch(name, point, host, offset, tuple(-e for e in touch.normal))
+        return touch
     if not scene.bodies[point].rotates:
         if not scene.bodies[host].rotates and any(e != 0 for e in offset):
             raise ValueError(f"the {point} and the {to if point == body else body} are point masses apart from "
@@ -89,22 +137,40 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: tuple[str, str
     return Weld(name, point, host, offset, turn(point, host))
 
 
-def impact(scene: Scene, coords: Coordinates, before: dict, route: str) -> Impact:
+def _touch(scene: Scene, coords: Coordinates, at: dict, name: str, point: str, host: str, offset) -> Touch:
+    """The touch of a bounce: a point mass on a rod's axis (normal across the rod) or on a round
+    body's rim (normal along the radius)."""
+    if scene.bodies[point].rotates:
+        raise ValueError("a bounce is of a point mass off a body (or a body off a point mass)")
+    shape = scene.bodies[host]
+    if "radius" in shape.sizes:
+        out = sp.Matrix(coords.rotated(host, offset)).xreplace(at)
+        normal = out / sp.sqrt(out.dot(out))
+    elif shape.shape == "rod":
+        angle = coords.orientation(host).xreplace(at)
+        normal = sp.Matrix([-sp.sin(angle), sp.cos(angle)])
+    else:
+        raise ValueError(f"a bounce off a {shape.shape}: the normal is known for round bodies and rods")
+    return Touch(name, point, host, offset, tuple(tidy(e) for e in normal))
+
+
+def impact(scene: Scene, coords: Coordinates, before: dict, route: str, bounce: tuple = ()) -> Impact:
     """The velocities just after an impulsive change in `scene` (the scene after the impact, with
     the joint it made), from the state `before` (every coordinate and velocity), by `route`
-    ("lagrange" or "newton_euler"; see the module)."""
+    ("lagrange" or "newton_euler"; see the module). `bounce` (a Touch of the scene, the
+    coefficient of restitution e): its normal rate after is -e times the one before, not zero."""
     at = {c.q: before[c.q] for c in coords.all}
     forces = [f for part in scene.constraints for f in part.unknowns().values()]
     power = sum((part.power(coords) for part in scene.parts), sp.Integer(0))
     if power.free_symbols & set(forces):
         raise ImpactError("solve an impact with a sliding contact's friction (its impulse depends on the normal one)")
     if route == "lagrange":
-        equations, text = _momenta(scene, coords, before, at), (
+        equations, text = _momenta(scene, coords, before, at, bounce), (
             "In the impact the configuration does not change and only the joints' forces give impulses: the "
             "generalized momenta jump by the joints' generalized impulses, and the joints hold after (each force's "
             "symbol stands for its impulse)")
     else:
-        equations, text = _impulses(scene, coords, before, at), (
+        equations, text = _impulses(scene, coords, before, at, bounce), (
             "Impulse and momentum of each body in the impact: only the joints' forces give impulses, and the joints "
             "hold after (each force's symbol stands for its impulse)")
     unknowns = [c.u for c in coords.all] + forces
@@ -116,19 +182,27 @@ def impact(scene: Scene, coords: Coordinates, before: dict, route: str) -> Impac
     return Impact(velocities, impulses, steps)
 
 
-def _momenta(scene: Scene, coords: Coordinates, before: dict, at: dict) -> list[sp.Eq]:
+def _after(rate: sp.Expr, part: Part, coords: Coordinates, before: dict, at: dict, bounce: tuple) -> sp.Eq:
+    """A joint's rate just after the impact: zero, or for the bounce -e times the one before."""
+    rate = rate.xreplace(at)
+    if not bounce or part is not bounce[0]:
+        return sp.Eq(rate, 0)
+    return sp.Eq(rate, -bounce[1] * rate.xreplace({c.u: before[c.u] for c in coords.all}))
+
+
+def _momenta(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce: tuple) -> list[sp.Eq]:
     kinetic, _ = energies(scene, coords)
     earlier = {c.u: before[c.u] for c in coords.all}
-    gaps = [(f, g) for part in scene.constraints for f, g in zip(part.unknowns().values(), part.gaps(coords))]
+    gaps = [(part, f, g) for part in scene.constraints for f, g in zip(part.unknowns().values(), part.gaps(coords))]
     equations = []
     for c in coords.all:
         momentum = sp.diff(kinetic, c.u)
-        impulse = sum((f * sp.diff(g, c.q) for f, g in gaps), sp.Integer(0))
+        impulse = sum((f * sp.diff(g, c.q) for _, f, g in gaps), sp.Integer(0))
         equations.append(sp.Eq((momentum - momentum.xreplace(earlier)).xreplace(at), impulse.xreplace(at)))
-    return equations + [sp.Eq(coords.ddt(g).xreplace(at), 0) for _, g in gaps]
+    return equations + [_after(coords.ddt(g), part, coords, before, at, bounce) for part, _, g in gaps]
 
 
-def _impulses(scene: Scene, coords: Coordinates, before: dict, at: dict) -> list[sp.Eq]:
+def _impulses(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce: tuple) -> list[sp.Eq]:
     loads = []
     for part in scene.constraints:
         unknowns = list(part.unknowns().values())
@@ -151,8 +225,8 @@ def _impulses(scene: Scene, coords: Coordinates, before: dict, at: dict) -> list
             moment = sum((f.offset[0] * f.force[1] - f.offset[1] * f.force[0] for f in pushes), sp.Integer(0))
             moment += sum((f.torque for f in on_body if isinstance(f, AppliedTorque)), sp.Integer(0))
             equations.append(sp.Eq(body.inertia * (u - before[u]), moment.xreplace(at)))
-    conditions = [v for part in scene.constraints for v in part.conditions(coords)]
-    return equations + [sp.Eq(v.xreplace(at), 0) for v in conditions]
+    return equations + [_after(v, part, coords, before, at, bounce)
+                        for part in scene.constraints for v in part.conditions(coords)]
 
 
 def energy_lost(scene: Scene, coords: Coordinates, before: dict, after: dict) -> sp.Expr:
