@@ -21,11 +21,12 @@ from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_e
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import friction
+from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step, root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.oscillation import (Oscillation, OscillationError, OscillationLimit, exact_period,
-                                         small_oscillation)
+from derive.mechanics.oscillation import (NotAPendulum, Oscillation, OscillationError, OscillationLimit,
+                                         exact_period, small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
 from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
@@ -108,10 +109,31 @@ class Solution(StateAnswers, CrossChecks):
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
     def _exact_period(self, amplitude: sp.Expr, route: str):
+        """(period, steps) at an amplitude: the elliptic integral of a pendulum, else twice the time
+        between the turning points (derive.mechanics.states.period; Newton–Euler's motion
+        integrated checks it: crosschecks)."""
         try:
             return exact_period(self.scene, self.derivations[route], amplitude)
+        except NotAPendulum:
+            period, steps, _ = self._period_by_energy(amplitude)
+            return period, steps
         except OscillationError as error:
             raise self.problem.error("ask", str(error)) from None
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
+    def _period_by_energy(self, amplitude: sp.Expr):
+        coordinate = self.oscillations["lagrange"].coordinate
+        if coordinate.kind != "theta":
+            raise self.problem.limit(f"find the period at an amplitude in rad of a scene that swings in "
+                                     f"{coordinate.q}, not an angle")
+        try:
+            with limits.time_limit("the period at its amplitude"):
+                return state_motion.period(self.dynamics_scene, self.coordinates, coordinate, amplitude,
+                                           self.derivations["lagrange"], self._sample)
+        except state_motion.StateLimit as error:
+            raise self.problem.limit(str(error)) from None
+        except state_motion.StateError as error:
+            raise self.problem.error("ask", f"the swing at that amplitude: {error}") from None
 
     @cached_property
     def oscillations(self) -> dict[str, Oscillation]:
@@ -437,6 +459,10 @@ class Solution(StateAnswers, CrossChecks):
     def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """(expression, strict, meaning): each expression must be positive (strict) or not
         negative for the answers to exist."""
+        with limits.time_limit(f"{self.problem.path}: the conditions of its answers"):
+            return self._conditions()
+
+    def _conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         result = []
         orbit = self.scene.orbit
         if orbit is not None and orbit.eccentricity is not None:

@@ -21,6 +21,7 @@ import sympy as sp
 
 from derive import inertia, limits, numeric, units
 from derive.mechanics import gyroscope, lagrange, many_bodies, orbits, paths, states, top
+from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
@@ -60,6 +61,8 @@ class CrossChecks:
             result.append(self._states_check())
         if kinds & {"event", "after"}:
             result.append(self._event_check())
+        if "oscillation" in kinds:
+            result.append(self._period_check())
         if "orbit" in kinds:
             result.append(self._orbit_check())
         if self.energy_balances:
@@ -192,6 +195,35 @@ class CrossChecks:
         if impacts:
             detail += f"; {impacts} impact{'s' if impacts > 1 else ''}: generalized momenta against each body's impulses"
         return Check("states", True, "numeric", detail)
+
+    def _period_check(self) -> Check:
+        """Each period found by energy between the turning points (not a pendulum's elliptic
+        integral) against Newton–Euler's motion integrated from rest at the amplitude to the turning
+        point on the other side, at the middle of the ranges: twice its time, within 1e-7."""
+        coords, newton_euler = self.coordinates, self.derivations["newton_euler"]
+        compared = 0
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind != "oscillation":
+                continue
+            try:
+                exact_period(self.scene, self.derivations["lagrange"], ask.amplitude)
+                continue  # a pendulum: the elliptic integral, compared by the routes check
+            except NotAPendulum:
+                period, _, turned = self._period_by_energy(ask.amplitude)
+            compared += 1
+            symbols = (period.free_symbols | set().union(*(e.free_symbols for e in newton_euler.equations))
+                       | set().union(*(v.free_symbols for v in turned.path.start.values())))
+            symbols -= coords.state | set(newton_euler.unknowns)
+            values = sample_points(self.problem, sp.Add(*symbols), count=1)[0]
+            expected = float(numeric.evaluate(period, values, 12))
+            simulated = states.integrate_to(newton_euler, coords, values, turned, states.Stops(), expected + 1)
+            if simulated is None or abs(2 * simulated[0] - expected) > 1e-7 * expected:
+                raise CheckFailure(f"{self.problem.id}: the period at amplitude {ask.amplitude} is {expected} by energy, "
+                                   f"{None if simulated is None else 2 * simulated[0]} by Newton–Euler's motion")
+        if not compared:
+            return Check("period", True, "symbolic", "a pendulum's period: the elliptic integral by both routes")
+        return Check("period", True, "numeric", "the period at its amplitude by energy between the turning points "
+                                                "against Newton–Euler's motion, integrated")
 
     def _impact_check(self, name: str) -> None:
         """The velocities and impulses just after an impact by Lagrange (generalized momenta and

@@ -424,3 +424,28 @@ def test_an_angle_reached_only_the_other_way_round_is_refused(tmp_path):
         "    there: {rates: {rod.angular_velocity: -2*sqrt(g/L)}}",
         "    spun: {rates: {rod.angular_velocity: -2*sqrt(g/L)}}\n    there: {when: {rod.angle: pi/2}, from: spun}")
     assert "does not get there" in refused(tmp_path, text, "scene.states.there")
+
+
+def test_the_period_by_energy_meets_the_elliptic_integral(monkeypatch):
+    """The period at an amplitude of a scene that is not a pendulum is twice the time between its
+    turning points, by quadrature: for the library's compound pendulum, forced onto that route, it
+    is the elliptic integral's value to 12 digits (amplitude 2.4 rad, near the top)."""
+    import sympy as sp
+
+    from derive import answers, library, numeric
+    from derive.answers import Solution
+    from derive.crosschecks import sample_points
+    from derive.mechanics.oscillation import NotAPendulum
+
+    loaded = problem.load(library.find_problem("compound_pendulum_large"))
+    exact = Solution(loaded).expression("T")
+    values = {**sample_points(loaded, exact, count=1)[0], next(s for s in exact.free_symbols if s.name == "theta0"):
+              sp.Rational(24, 10)}
+    elliptic = numeric.evaluate(exact, values, 15)
+
+    def not_a_pendulum(*args):
+        raise NotAPendulum("forced")
+    monkeypatch.setattr(answers, "exact_period", not_a_pendulum)
+    by_energy = Solution(loaded).expression("T")
+    assert by_energy.has(sp.Integral)
+    assert abs(float(numeric.evaluate(by_energy, values, 15)) - float(elliptic)) <= 1e-12 * abs(float(elliptic))

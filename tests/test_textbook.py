@@ -503,6 +503,11 @@ EXPECTED.update({
         "K1": lambda s: s.m * (s.v * (3 * s.m - s.M * s.e) / (s.M + 3 * s.m)) ** 2 / 2
         + s.M * s.L**2 / 6 * (3 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 3 * s.m))) ** 2,
     },
+    # Halliday, Resnick & Walker ch. 15: tau = -kappa theta at any angle, so T = 2 pi sqrt(I/kappa),
+    # I = M R^2/2, whatever the amplitude (here by energy between the turning points, a quadrature).
+    "torsion_pendulum_wide_swing": {
+        "T": lambda s: 2 * sp.pi * sp.sqrt(s.M * s.R**2 / (2 * s.kappa)),
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))

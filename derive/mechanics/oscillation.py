@@ -63,6 +63,11 @@ class OscillationLimit(OscillationError):
     """A scene whose oscillation derive cannot yet find (an engine limit, not the file's fault)."""
 
 
+class NotAPendulum(OscillationError):
+    """The equation of motion is not q'' = -w0^2 sin(q): the period at an amplitude has no elliptic
+    closed form here (derive.mechanics.states.period integrates it)."""
+
+
 def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Oscillation:
     """Angular frequency and period of small oscillations about the reference configuration.
 
@@ -157,7 +162,7 @@ def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tu
     acceleration = derivation.at({**{c.u: 0 for c in coords.all}, **dependent})[linear.coordinate.a]
     ratio = tidy(acceleration / sp.sin(q))
     if q in ratio.free_symbols or not linear.stable:
-        raise OscillationError("the exact period is for pendulum-like motion, q'' = -w0^2 sin(q)")
+        raise NotAPendulum("the exact period is for pendulum-like motion, q'' = -w0^2 sin(q)")
     rate = root(-ratio)
     period = 4 * sp.elliptic_k(sp.sin(amplitude / 2) ** 2) / rate
     chi, k = sp.symbols("chi k", positive=True)

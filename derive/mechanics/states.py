@@ -508,6 +508,25 @@ def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
                       "start, evaluated numerically", (sp.Eq(sp.Symbol("t"), time),))
 
 
+def period(scene: Scene, coords: Coordinates, coordinate: Coordinate, amplitude: sp.Expr, derivation: Derivation,
+           sample) -> tuple[sp.Expr, tuple[Step, ...], Reached]:
+    """The period of a scene of one degree of freedom swinging about its placement (a stable
+    equilibrium) with `amplitude` in `coordinate`: released from rest there, it gets to its
+    turning point on the other side in half a period (energy along the motion, `reach`; the time
+    by `duration`), and comes back the same way. Also the state of that turning point."""
+    dependent = solve_gaps(scene, coords, sample, keep=coordinate)
+    released = {c.q: sp.sympify(dependent.get(c.q, c.q)).xreplace({coordinate.q: amplitude})  # safe: engine exprs
+                for c in coords.all}
+    start = {**released, **{c.u: sp.Integer(0) for c in coords.all}}
+    turned = reach(scene, coords, start, Stops(), derivation, sample)
+    half, step = duration(turned.path, turned.end)
+    steps = (Step(f"Released from rest at {coordinate.q} = {sp.sstr(amplitude)}, the turning point on the other side",
+                  tuple(sp.Eq(c.q, turned.values[c.q]) for c in coords.all if c == coordinate)),
+             *turned.steps, step,
+             Step("It comes back the same way: the period is twice that time", (sp.Eq(sp.Symbol("T"), 2 * half),)))
+    return 2 * half, steps, turned
+
+
 def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -> sp.Expr:
     """The first s ahead of the start (in the path's direction) where `function` of s is zero:
     sympy's roots of `equation` (with their turns by 2 pi where s is in a trigonometric
