@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive import inertia, limits, numeric, units
-from derive.mechanics import gyroscope, lagrange, many_bodies, orbits, paths, states, top
+from derive.mechanics import gyroscope, impacts, lagrange, many_bodies, orbits, paths, states, top
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
@@ -238,6 +238,15 @@ class CrossChecks:
             if agree(a, b) is None:
                 raise CheckFailure(f"{self.problem.id}: in the impact {name}, {key} is {a} by generalized momenta and "
                                    f"{b} by impulses")
+        # where no impulse from outside has a moment about a point, Newton–Euler's velocities keep
+        # the angular momentum about it (and with none at all, the momentum)
+        before = self.states[state.start].values
+        kept = impacts.conserved(self.scene_in(state.start), self.coordinates, before,
+                                 {**before, **by_impulses.velocities})
+        for was, now in zip(*(iter(kept.equations if kept else ()),) * 2):
+            if agree(was.rhs, now.rhs) is None:
+                raise CheckFailure(f"{self.problem.id}: in the impact {name}, {was.lhs} is {was.rhs} before and "
+                                   f"{now.rhs} after")
 
     def _work_energy_check(self) -> Check:
         """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,

@@ -61,7 +61,8 @@ class StateAnswers:
                                                     "lagrange")
                         if state.event[0] != "bounce":  # a bounce's touch lasts the instant only
                             joints[name] += (made[name],)
-                        reached = self._after_impact(name, result[state.start].values, solved[name])
+                        reached = self._after_impact(name, result[state.start].values, solved[name],
+                                                     self._scene_with(joints[name]))
                     else:
                         reached = self._state(state, result, joints[name])
                 # (what must stay positive is evaluated per variant, Abs and all: left as it is)
@@ -122,14 +123,15 @@ class StateAnswers:
         except impacts.ImpactError as error:
             raise state_motion.StateLimit(str(error)) from None
 
-    def _after_impact(self, name: str, before: dict, impact: impacts.Impact) -> state_motion.Reached:
+    def _after_impact(self, name: str, before: dict, impact: impacts.Impact, scene) -> state_motion.Reached:
         """The state just after an impact: where the bodies were, at the velocities the impact leaves."""
         values = {**{c.q: before[c.q] for c in self.coordinates.all}, **impact.velocities}
         lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, values)
         kind, body, to, restitution = self.scene.states[name].event
         what = {"stick": f"the {body} sticks to the {to}", "lock": f"the {body} and the {to} lock together",
                 "bounce": f"the {body} bounces off the {to} (coefficient of restitution {restitution})"}[kind]
-        steps = (Step(f"The impact: {what}", ()), *impact.steps,
+        kept = impacts.conserved(scene, self.coordinates, before, values)
+        steps = (Step(f"The impact: {what}", ()), *impact.steps, *((kept,) if kept else ()),
                  Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),)))
         return state_motion.Reached(values, (), steps)
 

@@ -3,6 +3,7 @@ forms are in the textbook suite (tests/textbook/states: a bullet into a rod and 
 cord, a child onto a turntable, a clutch and a brake); here the rules a user meets, each refusal,
 and the second route shown to catch a wrong impact."""
 import json
+from pathlib import Path
 
 import pytest
 import sympy as sp
@@ -105,8 +106,8 @@ def test_the_second_route_catches_a_wrong_impact(tmp_path, monkeypatch):
     path = write(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))
     original = impacts._impulses
 
-    def wrong(scene, coords, before, at):
-        equations = original(scene, coords, before, at)
+    def wrong(scene, coords, before, at, bounce):
+        equations = original(scene, coords, before, at, bounce)
         return [sp.Eq(2 * equations[2].lhs, equations[2].rhs), *equations[:2], *equations[3:]]
 
     monkeypatch.setattr(impacts, "_impulses", wrong)
@@ -316,3 +317,38 @@ def test_a_ball_moving_away_does_not_bounce(tmp_path):
     text = WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e}").replace(
         "ball.velocity.x: v,", "ball.velocity.x: -v,")
     assert "would pull on the wheel in the bounce" in refused(tmp_path, text, "scene")
+
+
+def test_a_worked_impact_shows_the_angular_momentum_it_keeps():
+    """About the hinge, where the only impulse from outside acts, the angular momentum is the
+    same before and after: the worked solution shows it (m v L, twice), and the check compares it
+    with Newton–Euler's velocities."""
+    solution = Solution(problem.load("tests/textbook/states/rod_ballistic_pendulum.yaml"))
+    steps = solution.steps()["the state struck"]
+    (kept,) = [s for s in steps if s.text.startswith("Check: the angular momentum about the pin")]
+    m, v, L = (next(s for s in solution.expression("omega").free_symbols if s.name == n) for n in ("m", "v", "L"))
+    assert [sp.simplify(e.rhs - m * v * L) for e in kept.equations] == [0, 0]
+
+
+def test_a_free_impact_keeps_momentum_and_angular_momentum(tmp_path):
+    """With no joint to the ground (a free rod struck at its end in space), both are shown kept."""
+    text = Path("tests/textbook/states/rod_ballistic_pendulum.yaml").read_text()
+    text = text.replace("  joints:\n    hinge: {pin: rod.start}\n", "").replace("  loads:\n    - gravity: g\n", "")
+    text = text.replace("  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}\n", "")
+    text = text.replace("rod.angular_velocity: 0}}", "rod.angular_velocity: 0, rod.velocity.x: 0, rod.velocity.y: 0}}")
+    text = text.replace("    highest: {when: stops, from: struck}\n", "")
+    text = text[:text.index("ask:")] + """ask:
+  omega: {meaning: angular velocity just after the impact, of: rod.angular_velocity, in: struck, unit: rad/s}
+question: |
+  A bullet embeds in the end of a free rod.
+"""
+    solution = Solution(problem.load(write(tmp_path, text)))
+    # about the center of mass of the rod and bullet: m v (L/2) ... = (I_cm + ...) omega; by the
+    # textbook, omega = 6 m v/(L (M + 4 m)) for a bullet into the end of a free rod
+    M, m, v, L = (next(s for s in solution.expression("omega").free_symbols if s.name == n) for n in ("M", "m", "v", "L"))
+    assert sp.simplify(solution.expression("omega") - 6 * m * v / (L * (M + 4 * m))) == 0
+    steps = solution.steps()["the state struck"]
+    (kept,) = [s for s in steps if s.text.startswith("Check: no impulse from outside")]
+    pairs = list(zip(kept.equations[::2], kept.equations[1::2]))
+    assert len(pairs) == 3 and all(sp.simplify(a.rhs - b.rhs) == 0 for a, b in pairs)
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())

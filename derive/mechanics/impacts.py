@@ -233,3 +233,39 @@ def energy_lost(scene: Scene, coords: Coordinates, before: dict, after: dict) ->
     """The kinetic energy the impact takes (before minus after), factored."""
     kinetic, _ = energies(scene, coords)
     return tidy(kinetic.xreplace(before) - kinetic.xreplace(after))
+
+
+def conserved(scene: Scene, coords: Coordinates, before: dict, after: dict) -> Step | None:
+    """The momentum the impact keeps, as a text names it, with its value before and after. The
+    joints between bodies give equal and opposite impulses at one point (or couples), so only the
+    ground's matter: with none, the total momentum and the angular momentum about the origin; with
+    pins to the ground all at one point (a hinge, an axle), the angular momentum about it; with
+    another joint to the ground (a floor, a weld), none is named (None)."""
+    grounded = [p for p in scene.constraints if len(p.bodies()) == 1]
+    if any(not isinstance(p, Pin) or p.to is not None for p in grounded):
+        return None
+    at = {c.q: before[c.q] for c in coords.all}
+    points = {tuple(tidy(e) for e in coords.position(p.body, p.offset).xreplace(at)) for p in grounded}
+    if len(points) > 1:
+        return None
+    about = sp.Matrix(points.pop()) if points else sp.zeros(2, 1)
+
+    def momenta(state: dict) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+        p, angular = sp.zeros(2, 1), sp.Integer(0)
+        for body in scene.bodies.values():
+            v = sp.Matrix([state[coords.of(body.name, k).u] for k in ("x", "y")])
+            r = coords.position(body.name).xreplace(at) - about
+            p += body.mass * v
+            angular += body.mass * (r[0] * v[1] - r[1] * v[0])
+            if body.rotates:
+                angular += body.inertia * state[coords.of(body.name, "theta").u]
+        return tidy(p[0]), tidy(p[1]), tidy(angular)
+
+    (px0, py0, l0), (px1, py1, l1) = momenta(before), momenta(after)
+    L, px, py = sp.Symbol("L_O"), sp.Symbol("p_x"), sp.Symbol("p_y")  # L_O: not the length L
+    if grounded:
+        where = f"about the pin at {sp.sstr(tuple(about))}, where the only impulse from outside acts"
+        return Step(f"Check: the angular momentum {where}, before and after", (sp.Eq(L, l0), sp.Eq(L, l1)))
+    return Step("Check: no impulse from outside, so the momentum and the angular momentum about the origin, before "
+                "and after", (sp.Eq(px, px0), sp.Eq(px, px1), sp.Eq(py, py0), sp.Eq(py, py1), sp.Eq(L, l0),
+                              sp.Eq(L, l1)))
