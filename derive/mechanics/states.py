@@ -419,9 +419,11 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     positive = [] if isinstance(condition, Stops) else [(arrived, "the motion does not reach the state: it stops before it")]
     positive[:0] = steps_ahead if isinstance(condition, Gets) else []
     if path.leaves is not None:  # every variant leaves the start the way the middle of the ranges does
-        positive.insert(0, (path.direction * path.leaves, f"the motion leaves the start {'backward' if path.direction > 0 else 'forward'} "
-                                                          f"in {s}, the other way than at the middle of the parameter ranges, "
-                                                          "for which derive followed it"))
+        way = "decreasing" if path.direction > 0 else "increasing"
+        positive.insert(0, (path.direction * path.leaves, f"at these values the motion leaves the start with {s} {way}, "
+                                                          "the other way than at the middle of the parameter ranges, "
+                                                          "where derive found the state: it does not get there as "
+                                                          "derived"))
     positive += [(path.kinetic.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (s1 - s0)}),
                   f"the motion stops on its way to the state (its kinetic energy, sampled at {ON_THE_WAY - 1} "
                   "points between, falls to zero)") for k in range(1, ON_THE_WAY)]
