@@ -228,10 +228,10 @@ class CrossChecks:
     def _impact_check(self, name: str) -> None:
         """The velocities and impulses just after an impact by Lagrange (generalized momenta and
         impulses) and by Newton–Euler (each body's impulse and momentum) agree, symbolically."""
-        by_lagrange = self._chain[2][name]
+        by_lagrange = self._chain.impacts[name]
         state = self.scene.states[name]
-        by_impulses = self._impact(name, self.states[state.start].values, self._chain[1][state.start],
-                                   self._chain[3][name], "newton_euler")
+        by_impulses = self._impact(name, self.states[state.start].values, self._chain.joints[state.start],
+                                   self._chain.made[name], "newton_euler")
         for key in (*by_lagrange.velocities, *by_lagrange.impulses):
             a = {**by_lagrange.velocities, **by_lagrange.impulses}[key]
             b = {**by_impulses.velocities, **by_impulses.impulses}[key]

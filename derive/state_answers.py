@@ -13,6 +13,7 @@ sqrt(3)*sqrt(g)/sqrt(L)
 from __future__ import annotations
 
 import dataclasses
+from dataclasses import dataclass
 import functools
 from functools import cached_property
 
@@ -30,6 +31,19 @@ from derive.parts.surfaces import Plane
 from derive.scene import Quantity
 
 
+@dataclass(frozen=True)
+class Chain:
+    """The named states of a scene, in the order the file names them (`reached`); the joints
+    impacts made on the way to each (`joints`: the scene in a state has them); and per impact, its
+    solution by Lagrange (`impacts`) and the joint it made (`made`: a bounce's touch lasts its
+    instant only, in no state's scene)."""
+
+    reached: dict[str, state_motion.Reached]
+    joints: dict[str, tuple]
+    impacts: dict[str, impacts.Impact]
+    made: dict[str, object]
+
+
 class StateAnswers:
     """What Solution answers in a named state."""
 
@@ -38,17 +52,16 @@ class StateAnswers:
         """Every coordinate and velocity in each named state of the scene (derive.mechanics.states):
         the placement moving at given rates, where a coordinate gets to from another state, or
         just after an impact (derive.mechanics.impacts)."""
-        return self._chain[0]
+        return self._chain.reached
 
     @cached_property
-    def _chain(self) -> tuple[dict[str, state_motion.Reached], dict[str, tuple], dict[str, impacts.Impact], dict]:
-        """The states in the order the file names them, the joints impacts made on the way to each
-        (the scene in a state has them: `scene_in`), each impact's solution by Lagrange, and the
-        joint each impact made (a bounce's touch, for its instant only, is in no state's scene)."""
+    def _chain(self) -> Chain:
+        """Each named state in turn, from the state it starts from (see Chain)."""
         if self.scene.states and len(self.regimes) > 1:
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
         result, joints, solved, made = {}, {}, {}, {}
+
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
         for name, state in self.scene.states.items():
@@ -71,7 +84,7 @@ class StateAnswers:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
-        return result, joints, solved, made
+        return Chain(result, joints, solved, made)
 
     def _state(self, state, found: dict, joints: tuple) -> state_motion.Reached:
         coords = self.coordinates
@@ -137,7 +150,7 @@ class StateAnswers:
 
     def scene_in(self, name: str | None):
         """The scene in a state (None: the placement): with the joints impacts on the way made."""
-        return self._scene_with(self._chain[1][name] if name else ())
+        return self._scene_with(self._chain.joints[name] if name else ())
 
     def _scene_with(self, joints: tuple):
         scene = self.dynamics_scene
@@ -145,7 +158,7 @@ class StateAnswers:
 
     def derivations_in(self, name: str | None) -> dict:
         """Each route's derivation of the scene in a state (see scene_in)."""
-        return self._derivations_with(self._chain[1][name] if name else ())
+        return self._derivations_with(self._chain.joints[name] if name else ())
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
     def _derivations_with(self, joints: tuple) -> dict:
@@ -220,10 +233,10 @@ class StateAnswers:
         result = []
         for name in self._on_the_way():
             reached, scene = self.states[name], self.scene_in(name)
-            if name in self._chain[2]:  # no joint pulls in an impact where it can only push (a body off its surface)
-                made, start = self._chain[3][name], self.scene.states[name].start
+            if name in self._chain.impacts:  # no joint pulls in an impact where it can only push (a body off its surface)
+                made, start = self._chain.made[name], self.scene.states[name].start
                 result += [(gap, False, meaning) for gap, meaning in self._apart(made, start)]
-                impulses = self._chain[2][name].impulses
+                impulses = self._chain.impacts[name].impulses
                 result += [(sign.expression.xreplace(impulses), False, f"{sign.meaning} (in the impact {name})")
                            for part in (*self.scene_in(start).constraints, made) for sign in part.signs()]
             forces = self.in_state("lagrange", name).raw
@@ -310,7 +323,7 @@ class StateAnswers:
             if any(a.state == name and a.quantity.kind == "time" for a in self.problem.asks.values()):
                 result[f"the state {name}"].append(self._duration(name)[1])
             in_state = self._needed_unknowns(name)
-            joints = self._chain[1][name]
+            joints = self._chain.joints[name]
             for route, d in self.derivations_in(name).items() if in_state else ():
                 solved = self.in_state(route, name)  # the answers' own solution there (along a path: by it)
                 if joints:  # the scene after an impact: its own equations
