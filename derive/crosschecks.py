@@ -160,7 +160,7 @@ class CrossChecks:
             if state.rates:
                 continue
             if state.event:
-                self._impact_check(name)
+                (self._move_check if state.event.kind == "move" else self._impact_check)(name)
                 impacts += 1
                 continue
             newton_euler = self.derivations_in(name)["newton_euler"]
@@ -193,7 +193,8 @@ class CrossChecks:
                                    f"differ by {worst:.2e}")
         detail = "every state reached, and the time it takes: energy against Newton–Euler's motion, integrated"
         if impacts:
-            detail += f"; {impacts} impact{'s' if impacts > 1 else ''}: generalized momenta against each body's impulses"
+            detail += (f"; {impacts} impact{'s' if impacts > 1 else ''} or move{'s' if impacts > 1 else ''}: generalized "
+                       "momenta against each body's impulses or moments")
         return Check("states", True, "numeric", detail)
 
     def _period_check(self) -> Check:
@@ -247,6 +248,18 @@ class CrossChecks:
             if agree(was.rhs, now.rhs) is None:
                 raise CheckFailure(f"{self.problem.id}: in the impact {name}, {was.lhs} is {was.rhs} before and "
                                    f"{now.rhs} after")
+
+    def _move_check(self, name: str) -> None:
+        """The state after a move by Lagrange (momenta of the rigid motions that leave the
+        Lagrangian and the gaps unchanged) and by Newton–Euler (angular momenta about points where
+        the forces from outside have no moment) agree, symbolically."""
+        by_lagrange = self._chain.impacts[name]
+        start = self.scene.states[name].start
+        by_moments = self._move(name, self.states[start].values, self._chain.joints[start], "newton_euler")
+        for key, a in by_lagrange.values.items():
+            if agree(a, by_moments.values[key]) is None:
+                raise CheckFailure(f"{self.problem.id}: after the move {name}, {key} is {a} by the Lagrangian's "
+                                   f"symmetries and {by_moments.values[key]} by moments about points")
 
     def _work_energy_check(self) -> Check:
         """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,

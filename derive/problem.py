@@ -269,7 +269,12 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
     if quantity.kind == "time" and scene.states[raw].rates:
         raise reader.fail(field, f"the state {raw} is the placement, at time zero: ask the time in a state the "
                                  "motion gets to (when:)")
-    if quantity.kind == "time" and scene.states[raw].event:
+    event = scene.states[raw].event
+    if event and event.kind == "move" and quantity.kind not in ("angular_velocity", "kinetic_energy"):
+        raise reader.fail(field, f"after a move, where the bodies are depends on how it is made (a turntable turns "
+                                 f"while a child walks on it), and so do the directions of their velocities and "
+                                 f"forces: in the state {raw} ask an angular velocity or the kinetic energy")
+    if quantity.kind == "time" and event:
         raise reader.fail(field, f"the state {raw} is just after an impact, which takes no time: ask the time in a "
                                  "state the motion gets to (when:)")
     return raw

@@ -175,7 +175,8 @@ class Skid:
     friction: sp.Expr
 
 
-Event = Stick | InternalTurn | Bounce | Skid
+#: An entry of the scene's `events:` section (the states' events, derive.scene.Event, are the general form).
+LibraryEvent = Stick | InternalTurn | Bounce | Skid
 
 
 @dataclass(frozen=True)
@@ -240,6 +241,25 @@ def constraint_bodies(part: Part) -> tuple[str, ...]:
 
 
 @dataclass(frozen=True)
+class Event:
+    """What happens to the scene in an instant, or by its own forces, between two states: an
+    impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
+    `restitution`), or a move (`kind` move: the point mass `body` carried to `place` on the body
+    `to`, in its frame, where the pin `joint` holds it).
+
+    >>> Event("stick", "bullet", "rod").restitution is None
+    True
+    """
+
+    kind: str
+    body: str
+    to: str
+    restitution: sp.Expr | None = None
+    place: tuple[sp.Expr, sp.Expr] | None = None
+    joint: str | None = None
+
+
+@dataclass(frozen=True)
 class State:
     """A named state of a scene (`states:`), where asks may be read (`in: STATE`).
 
@@ -248,10 +268,9 @@ class State:
     to first: where one body coordinate reaches a value (`when`: an absolute x, y of the center
     or angle, as `at` and `angle` are given), or (`until`) where the motion stops, ("stops",
     None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD); or the state
-    just after an impact in the state `start` (`event`: ("stick", BODY, OTHER, None), the body
-    sticks to the other where it is; ("lock", BODY, OTHER, None), the two turn together from then
-    on, the scene keeping the joint the impact made; or ("bounce", BODY, OTHER, e), a point mass
-    bounces off a body with the coefficient of restitution e).
+    just after an `event` in the state `start`: an impact (a stick, the body held where it is; a
+    lock, the two turning together from then on, the scene keeping the joint the impact made; a
+    bounce off a body) or a move of a point mass on the body that holds it.
 
     >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
     True
@@ -262,7 +281,7 @@ class State:
     when: tuple[str, str, sp.Expr] | None = None
     start: str | None = None
     until: tuple[str, str | None] | None = None
-    event: tuple[str, str, str, sp.Expr | None] | None = None
+    event: Event | None = None
 
 
 @dataclass(frozen=True)
@@ -278,7 +297,7 @@ class Scene:
     loads: tuple[Part, ...] = ()
     orbit: Orbit | None = None
     motions: dict[str, Motion] = field(default_factory=dict)
-    events: tuple[Event, ...] = ()
+    events: tuple[LibraryEvent, ...] = ()
     top: Top | None = None
     wheel: SpinningWheel | None = None
     wave: StandingWave | None = None

@@ -557,7 +557,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
     rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
                  for n, spec in bodies_raw.items() if "rotation" in spec}
-    states = state_file.read(reader, raw.get("states"), bodies, constraints)
+    states = state_file.read(reader, raw.get("states"), places, constraints)
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, events, top, wheel,
                   wave, internal, rotations, states)
     _check_geometry(reader, places, scene)

@@ -20,7 +20,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import friction, impacts, lagrange, newton_euler
+from derive.mechanics import friction, impacts, lagrange, moves, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.contact import Contact
@@ -34,13 +34,14 @@ from derive.scene import Quantity
 @dataclass(frozen=True)
 class Chain:
     """The named states of a scene, in the order the file names them (`reached`); the joints
-    impacts made on the way to each (`joints`: the scene in a state has them); and per impact, its
-    solution by Lagrange (`impacts`) and the joint it made (`made`: a bounce's touch lasts its
-    instant only, in no state's scene)."""
+    events made on the way to each (`joints`: the scene in a state has them, a moved pin in place
+    of the pin it was); and per event, its solution by Lagrange (`impacts`: an impact's or a
+    move's) and the joint it made (`made`: a bounce's touch lasts its instant only, in no state's
+    scene)."""
 
     reached: dict[str, state_motion.Reached]
     joints: dict[str, tuple]
-    impacts: dict[str, impacts.Impact]
+    impacts: dict[str, impacts.Impact | moves.Moved]
     made: dict[str, object]
 
 
@@ -68,19 +69,24 @@ class StateAnswers:
             joints[name] = joints[state.start] if state.start else ()
             try:
                 with limits.time_limit(f"finding the state {name}"):
-                    if state.event:
+                    if state.event is None:
+                        reached = self._state(state, result, joints[name])
+                    elif state.event.kind == "move":
+                        made[name] = moves.moved_pin(self._scene_with(joints[name]), state.event, state.event.place)
+                        joints[name] = tuple(j for j in joints[name] if j.name != made[name].name) + (made[name],)
+                        solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
+                        reached = self._after_move(name, result[state.start].values, solved[name])
+                    else:
                         made[name] = self._joint(state, result)
                         solved[name] = self._impact(name, result[state.start].values, joints[name], made[name],
                                                     "lagrange")
-                        if state.event[0] != "bounce":  # a bounce's touch lasts the instant only
+                        if state.event.kind != "bounce":  # a bounce's touch lasts the instant only
                             joints[name] += (made[name],)
                         reached = self._after_impact(name, result[state.start].values, solved[name],
                                                      self._scene_with(joints[name]))
-                    else:
-                        reached = self._state(state, result, joints[name])
                 # (what must stay positive is evaluated per variant, Abs and all: left as it is)
                 result[name] = dataclasses.replace(reached, values={k: resolve(v) for k, v in reached.values.items()})
-            except state_motion.StateLimit as error:
+            except (state_motion.StateLimit, moves.MoveLimit) as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
@@ -129,8 +135,8 @@ class StateAnswers:
     def _impact(self, name: str, before: dict, joints: tuple, made, route: str) -> impacts.Impact:
         """The impact of the state `name` by `route`, in the scene with the joints before it and the
         one it makes (`made`)."""
-        kind, *_, restitution = self.scene.states[name].event
-        bounce = (made, restitution) if kind == "bounce" else ()
+        event = self.scene.states[name].event
+        bounce = (made, event.restitution) if event.kind == "bounce" else ()
         try:
             return impacts.impact(self._scene_with(joints + (made,)), self.coordinates, before, route, bounce)
         except impacts.ImpactError as error:
@@ -140,21 +146,45 @@ class StateAnswers:
         """The state just after an impact: where the bodies were, at the velocities the impact leaves."""
         values = {**{c.q: before[c.q] for c in self.coordinates.all}, **impact.velocities}
         lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, values)
-        kind, body, to, restitution = self.scene.states[name].event
+        event = self.scene.states[name].event
+        body, to = event.body, event.to
         what = {"stick": f"the {body} sticks to the {to}", "lock": f"the {body} and the {to} lock together",
-                "bounce": f"the {body} bounces off the {to} (coefficient of restitution {restitution})"}[kind]
+                "bounce": f"the {body} bounces off the {to} (coefficient of restitution {event.restitution})"}
+        what = what[event.kind]
         kept = impacts.conserved(scene, self.coordinates, before, values)
         steps = (Step(f"The impact: {what}", ()), *impact.steps, *((kept,) if kept else ()),
                  Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),)))
         return state_motion.Reached(values, (), steps)
+
+    def _move(self, name: str, before: dict, joints: tuple, route: str) -> moves.Moved:
+        """The move of the state `name` by `route`, in the scene with the joints before it."""
+        return moves.move(self._scene_with(joints), self.coordinates, before, self.scene.states[name].event, route,
+                          self._sample)
+
+    def _after_move(self, name: str, before: dict, moved: moves.Moved) -> state_motion.Reached:
+        """The state after a move, with the kinetic energy the forces that make it add."""
+        event = self.scene.states[name].event
+        kinetic, _ = lagrange.energies(self.dynamics_scene, self.coordinates)
+        added = tidy(kinetic.xreplace(moved.values) - kinetic.xreplace(before))
+        steps = (Step(f"The move: the {event.body} is carried to {sp.sstr(tuple(event.place))} on the {event.to} "
+                      "by forces inside the scene (they come in equal and opposite pairs)", ()),
+                 *moved.steps,
+                 Step("Kinetic energy the move adds (the work of the forces that make it)",
+                      (sp.Eq(sp.Symbol("Delta_K"), added),)))
+        return state_motion.Reached(moved.values, (), steps)
 
     def scene_in(self, name: str | None):
         """The scene in a state (None: the placement): with the joints impacts on the way made."""
         return self._scene_with(self._chain.joints[name] if name else ())
 
     def _scene_with(self, joints: tuple):
+        """The scene with the joints events made (a moved pin in place of the one of its name)."""
         scene = self.dynamics_scene
-        return dataclasses.replace(scene, constraints=scene.constraints + joints) if joints else scene
+        if not joints:
+            return scene
+        replaced = {j.name for j in joints}
+        return dataclasses.replace(scene, constraints=tuple(c for c in scene.constraints if c.name not in replaced)
+                                   + joints)
 
     def derivations_in(self, name: str | None) -> dict:
         """Each route's derivation of the scene in a state (see scene_in)."""
@@ -233,7 +263,7 @@ class StateAnswers:
         result = []
         for name in self._on_the_way():
             reached, scene = self.states[name], self.scene_in(name)
-            if name in self._chain.impacts:  # no joint pulls in an impact where it can only push (a body off its surface)
+            if isinstance(self._chain.impacts.get(name), impacts.Impact):  # no joint pulls where it can only push
                 made, start = self._chain.made[name], self.scene.states[name].start
                 result += [(gap, False, meaning) for gap, meaning in self._apart(made, start)]
                 impulses = self._chain.impacts[name].impulses

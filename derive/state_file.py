@@ -11,31 +11,40 @@ from __future__ import annotations
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.reader import Reader
-from derive.scene import Body, State
+from derive.parts.pin import Pin
+from derive.scene import Body, Event, State
 
 #: How a state names a body's coordinates: (kind, unit) of a position (`when:`) and of a rate (`rates:`).
 STATE_POSITIONS = {"x": ("x", "m"), "y": ("y", "m"), "angle": ("theta", "rad")}
 STATE_RATES = {"velocity.x": ("x", "m/s"), "velocity.y": ("y", "m/s"), "angular_velocity": ("theta", "rad/s")}
 
 
-def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dict[str, State]:
+def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
     """`states: {spinning: {rates: {wheel.angular_velocity: w0}}, vertical: {when: {rod.angle: -pi/2},
     from: spinning}}`: each state's `from` one named above it (no state reached from itself).
     `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
     stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`), a cord goes slack
-    (`{slack: CORD}`) or a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static: mu_s}). `event:` is an impact in the state from: (see EVENTS), and the state is
-    the one just after it."""
-    result = {}
+    (`{slack: CORD}`) or a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static:
+    mu_s}). `event:` is an impact or a move in the state from: (see EVENTS), and the state is the
+    one just after it."""
+    result, bodies = {}, places.bodies
+    taken = {*bodies, *(p.name for p in constraints), "placement", "ground"}  # an impact's joint is named so
     for name, spec in reader.named(raw, "states").items():
         field = f"scene.states.{name}"
-        if name in bodies or name in ("placement", "ground"):
+        if name in taken:
             raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
         spec = reader.mapping(spec, field, optional=("rates", "when", "from", "event"))
+        earlier = result.get(spec.get("from"))
+        moves_on = isinstance(spec.get("event"), dict) and "move" in spec["event"]
+        if earlier and earlier.event and earlier.event.kind == "move" and not moves_on:
+            raise reader.fail(f"{field}.from", f"where the bodies are after the move {earlier.name} depends on how it "
+                                               "is made (a turntable turns while a child walks on it): only another "
+                                               "move may follow it")
         if sum(key in spec for key in ("rates", "when", "event")) != 1:
             raise reader.fail(field, "a state gives rates: (at the placement), when: (a position reached) or event: "
-                                     "(an impact in the state from:)")
+                                     "(an impact or a move in the state from:)")
         if "event" in spec:
-            result[name] = _event(reader, name, spec, field, bodies, result)
+            result[name] = _event(reader, name, spec, field, places, constraints, result)
             continue
         if "rates" in spec:
             if "from" in spec:
@@ -70,27 +79,38 @@ def read(reader: Reader, raw, bodies: dict[str, Body], constraints: list) -> dic
     return result
 
 
-#: The impacts a state may follow: what each makes of the two bodies.
+#: The events a state may follow: what each makes of the two bodies.
 EVENTS = {"stick": "the body sticks to the other where it touches it",
           "lock": "the two turning bodies turn together from then on (a clutch)",
-          "bounce": "a point mass bounces off a rod or a round body, smooth, with restitution: e"}
+          "bounce": "a point mass bounces off a rod or a round body, smooth, with restitution: e",
+          "move": "a point mass pinned to a body is carried to the point to: of that body by the scene's own forces "
+                  "(a child walking to a turntable's center)"}
 
 
-def _event(reader: Reader, name: str, spec: dict, field: str, bodies: dict[str, Body], found: dict[str, State]) -> State:
-    """`{from: STATE, event: {stick: BODY, to: OTHER}}`, `{lock: BODY, to: OTHER}` or `{bounce:
-    BODY, to: OTHER, restitution: e}`: the state just after an impact in the state from:."""
+def _event(reader: Reader, name: str, spec: dict, field: str, places, constraints: list,
+           found: dict[str, State]) -> State:
+    """`{from: STATE, event: {stick: BODY, to: OTHER}}`, `{lock: BODY, to: OTHER}`, `{bounce:
+    BODY, to: OTHER, restitution: e}` (the state just after an impact in the state from:) or
+    `{move: BODY, to: OTHER.POINT}` (the state after the move)."""
+    bodies = places.bodies
     if spec.get("from") not in found:
-        raise reader.fail(f"{field}.from", f"an impact happens in a state: give from: a state named above this one "
+        raise reader.fail(f"{field}.from", f"an event happens in a state: give from: a state named above this one "
                                            f"(states: {', '.join(found) or 'none'})")
-    raw = reader.mapping(spec["event"], f"{field}.event", required=("to",), optional=(*EVENTS, "restitution"))
+    raw = reader.mapping(spec["event"], f"{field}.event", required=("to",), optional=(*EVENTS, "restitution"),
+                         points=("to",))
     kinds = [k for k in EVENTS if k in raw]
     if len(kinds) != 1:
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
     kind = kinds[0]
     body, to = raw[kind], raw["to"]
-    for key, value in ((kind, body), ("to", to)):
-        if not isinstance(value, str) or value not in bodies:
-            raise reader.fail(f"{field}.event.{key}", f"no body {value!r} (bodies: {', '.join(bodies)})")
+    if not isinstance(body, str) or body not in bodies:
+        raise reader.fail(f"{field}.event.{kind}", f"no body {body!r} (bodies: {', '.join(bodies)})")
+    if "restitution" in raw and kind != "bounce":
+        raise reader.fail(f"{field}.event.restitution", f"a {kind} has no restitution (a bounce has)")
+    if kind == "move":
+        return State(name, start=spec["from"], event=_move(reader, body, to, f"{field}.event", places, constraints))
+    if not isinstance(to, str) or to not in bodies:
+        raise reader.fail(f"{field}.event.to", f"no body {to!r} (bodies: {', '.join(bodies)})")
     if body == to:
         raise reader.fail(f"{field}.event.to", f"an impact joins two bodies: not the {body} to itself")
     if kind == "lock" and not (bodies[body].rotates and bodies[to].rotates):
@@ -103,9 +123,27 @@ def _event(reader: Reader, name: str, spec: dict, field: str, bodies: dict[str, 
                                                              "(1 elastic, 0 they move together along the normal)")
         restitution = reader.dimensioned(raw["restitution"], f"{field}.event.restitution", "1",
                                          "a coefficient of restitution")
-    elif "restitution" in raw:
-        raise reader.fail(f"{field}.event.restitution", f"a {kind} has no restitution (a bounce has)")
-    return State(name, start=spec["from"], event=(kind, body, to, restitution))
+    return State(name, start=spec["from"], event=Event(kind, body, to, restitution))
+
+
+def _move(reader: Reader, body: str, to, field: str, places, constraints: list) -> Event:
+    """A move of a point mass held by one pin to another body, to a point of that body."""
+    if places.bodies[body].rotates:
+        raise reader.fail(f"{field}.move", f"the {body} turns: a move carries a point mass (shape: point) on the "
+                                           "body it is pinned to")
+    holding = [p for p in constraints if body in p.bodies()]
+    pins = [p for p in holding if isinstance(p, Pin) and p.to is not None]
+    if len(holding) != 1 or len(pins) != 1:
+        raise reader.fail(f"{field}.move", f"a move carries a point mass held by one pin to another body (the {body} "
+                                           f"is held by {', '.join(p.name for p in holding) or 'nothing'})")
+    pin, = pins
+    host = pin.to if pin.body == body else pin.body
+    where, place = places.point(to, f"{field}.to", ground=False)
+    if where != host:
+        raise reader.fail(f"{field}.to", f"the {body} moves on the {host}, which its pin {pin.name} holds it to: "
+                                         f"give a point of the {host} ({host}.POINT or {{{host}: [x, y]}})")
+    places.on_body(host, place, f"{field}.to")
+    return Event("move", body, host, place=place, joint=pin.name)
 
 
 #: The states where a part's force falls to zero: the part's kind and the force's key.

@@ -139,7 +139,7 @@ def test_a_wrong_event_is_refused_naming_its_field(tmp_path, event, field, words
 
 def test_an_impact_needs_a_state_to_happen_in(tmp_path):
     text = DISKS.replace("coupled: {from: spinning, event: EVENT}", "coupled: {event: {lock: upper, to: lower}}")
-    assert "an impact happens in a state" in refused(tmp_path, text, "scene.states.coupled.from")
+    assert "an event happens in a state" in refused(tmp_path, text, "scene.states.coupled.from")
 
 
 def test_a_point_mass_cannot_lock(tmp_path):
@@ -232,7 +232,7 @@ def test_the_librarys_sticky_impacts_agree_with_the_impacts_of_states(problem_id
     from derive import library
     from derive.mechanics import events
     from derive.mechanics.kinematics import Coordinates
-    from derive.scene import Motion, Scene
+    from derive.scene import Event, Motion, Scene
 
     old = problem.load(library.find_problem(problem_id)).scene
     (stick,) = old.events
@@ -245,7 +245,7 @@ def test_the_librarys_sticky_impacts_agree_with_the_impacts_of_states(problem_id
         before[coords.of(name, "x").u], before[coords.of(name, "y").u] = motion.velocity
         if bodies[name].rotates:
             before[coords.of(name, "theta").u] = motion.spin
-    after = Scene(bodies, old.constraints + (impacts.joint(scene, coords, before, ("stick", stick.body, stick.to, None),
+    after = Scene(bodies, old.constraints + (impacts.joint(scene, coords, before, Event("stick", stick.body, stick.to),
                                                           "hit"),))
     expected = events.by_conservation(old)
     for route in ("lagrange", "newton_euler"):

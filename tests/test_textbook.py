@@ -503,6 +503,18 @@ EXPECTED.update({
         "K1": lambda s: s.m * (s.v * (3 * s.m - s.M * s.e) / (s.M + 3 * s.m)) ** 2 / 2
         + s.M * s.L**2 / 6 * (3 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 3 * s.m))) ** 2,
     },
+    # Serway & Jewett ch. 11: about the axle (M R^2/2 + m R^2) w0 = (M R^2/2) omega.
+    "child_walks_to_center": {
+        "omega": lambda s: s.w0 * (s.M + 2 * s.m) / s.M,
+        "K0": lambda s: (s.M * s.R**2 / 2 + s.m * s.R**2) * s.w0**2 / 2,
+        "K1": lambda s: s.M * s.R**2 / 4 * (s.w0 * (s.M + 2 * s.m) / s.M) ** 2,
+    },
+    # Serway & Jewett ch. 11: (I + 2 m r1^2) w0 = (I + 2 m r2^2) omega.
+    "stool_pulls_in_weights": {
+        "omega": lambda s: s.w0 * (s.I + 2 * s.m * s.r1**2) / (s.I + 2 * s.m * s.r2**2),
+        "K0": lambda s: (s.I + 2 * s.m * s.r1**2) * s.w0**2 / 2,
+        "K1": lambda s: (s.I + 2 * s.m * s.r2**2) * (s.w0 * (s.I + 2 * s.m * s.r1**2) / (s.I + 2 * s.m * s.r2**2)) ** 2 / 2,
+    },
     # Halliday, Resnick & Walker ch. 15: tau = -kappa theta at any angle, so T = 2 pi sqrt(I/kappa),
     # I = M R^2/2, whatever the amplitude (here by energy between the turning points, a quadrature).
     "torsion_pendulum_wide_swing": {

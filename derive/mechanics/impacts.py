@@ -22,14 +22,15 @@ Kinetic energy is not conserved in such an impact: `energy_lost` is the ledger's
 >>> import sympy as sp
 >>> from derive.mechanics.kinematics import Coordinates
 >>> from derive.parts.pin import Pin
->>> from derive.scene import Body, Scene
+>>> from derive.scene import Body, Event, Scene
 >>> m, M, L, v = sp.symbols("m M L v", positive=True)
 >>> rod = Body("rod", "rod", M, {"length": L}, M * L**2 / 12, at=(0, -L / 2), angle=-sp.pi / 2)
 >>> bullet = Body("bullet", "point", m, {}, at=(0, -L))
 >>> scene = Scene({"rod": rod, "bullet": bullet}, (Pin("hinge", "rod", (-L / 2, 0)),))
 >>> coords = Coordinates(scene)
 >>> before = {**{s: 0 for s in coords.state}, coords.of("bullet", "x").u: v}
->>> after = Scene(scene.bodies, scene.constraints + (joint(scene, coords, before, ("stick", "bullet", "rod", None), "hit"),))
+>>> hit = joint(scene, coords, before, Event("stick", "bullet", "rod"), "hit")
+>>> after = Scene(scene.bodies, scene.constraints + (hit,))
 >>> impact(after, coords, before, "lagrange").velocities[coords.of("rod", "theta").u]
 3*m*v/(L*(M + 3*m))
 """
@@ -46,7 +47,7 @@ from derive.parts import AppliedForce, AppliedTorque, Part, Sign
 from derive.parts.clutch import Clutch
 from derive.parts.pin import Pin
 from derive.parts.weld import Weld
-from derive.scene import Scene
+from derive.scene import Event, Scene
 
 
 @dataclass(frozen=True)
@@ -100,8 +101,8 @@ class Impact:
     steps: tuple[Step, ...]
 
 
-def joint(scene: Scene, coords: Coordinates, values: dict, event: tuple, name: str, decide=None) -> Part:
-    """The joint an impact (kind, body, other, restitution) makes as the bodies are in the state
+def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: str, decide=None) -> Part:
+    """The joint an impact (derive.scene.Event) makes as the bodies are in the state
     `values`: a clutch (`lock`, at the turn between them then); for `stick` a pin holding a point
     mass where it is on the other body, or a weld of two turning bodies; for `bounce` the touch
     of a point mass on the other body, for the instant (along the rod's normal, or a round
@@ -110,7 +111,7 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: tuple, name: s
     Raises ValueError where two point masses that are apart would stick (a particle has no frame
     to hold another in), or a bounce has no normal derive knows. `decide` (an expression's value
     at the middle of the ranges) turns a rod's normal toward the side the point mass comes from."""
-    kind, body, to, _ = event
+    kind, body, to = event.kind, event.body, event.to
     at = {c.q: values[c.q] for c in coords.all}
 
     def turn(a: str, b: str) -> sp.Expr:

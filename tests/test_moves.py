@@ -1,0 +1,152 @@
+"""Moves in a chain of states (`event: {move: BODY, to: POINT}`; derive.mechanics.moves): the
+textbook closed forms are in tests/textbook/states (a child walking to a turntable's center, a
+student on a stool pulling in two weights); here a free body, each refusal, and the second
+route shown to catch a wrong move."""
+import pytest
+import sympy as sp
+
+from conftest import run_derive
+from derive import problem, report
+from derive.answers import Solution
+from derive.crosschecks import CheckFailure
+from derive.mechanics import moves
+
+FREE = """\
+id: bead_on_free_rod
+title: A bead walks to the middle of a spinning rod in space
+topic: conservation
+parameters:
+  m: {meaning: mass of the bead, unit: kg, range: [0.1, 0.5], sig_figs: 2}
+  M: {meaning: mass of the rod, unit: kg, range: [1, 2], sig_figs: 2}
+  L: {meaning: length of the rod, unit: m, range: [1, 2], sig_figs: 2}
+  w0: {meaning: angular velocity of the rod, unit: rad/s, range: [1, 3], sig_figs: 2}
+scene:
+  bodies:
+    rod: {shape: rod, mass: M, length: L}
+    bead: {shape: point, mass: m, at: [L/2, 0]}
+  joints:
+    hold: {pin: bead, to: rod.end}
+  states:
+    spinning: {rates: {rod.angular_velocity: w0, rod.velocity.x: 0, rod.velocity.y: 0}}
+    middle: {from: spinning, event: {move: bead, to: MIDDLE}}
+ask:
+  omega: {meaning: angular velocity of the rod after, of: rod.angular_velocity, in: middle, unit: rad/s}
+  K: {meaning: kinetic energy after, of: kinetic_energy, in: middle, unit: J}
+question: |
+  A bead at the end of a rod spinning in space walks to its middle.
+"""
+
+SWING = """\
+id: swing_stands_up
+title: A child on a swing stands up
+topic: conservation
+parameters:
+  m: {meaning: mass of the child, unit: kg, range: [20, 40], sig_figs: 2}
+  M: {meaning: mass of the swing, unit: kg, range: [2, 4], sig_figs: 2}
+  L: {meaning: length of the swing, unit: m, range: [2, 3], sig_figs: 2}
+  w0: {meaning: angular velocity at the bottom, unit: rad/s, range: [1, 2], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  bodies:
+    swing: {shape: rod, mass: M, length: L, at: [0, -L/2], angle: -pi/2}
+    child: {shape: point, mass: m, at: [0, -L]}
+  joints:
+    hook: {pin: swing.start}
+    seat: {pin: child, to: swing.end}
+  loads:
+    - gravity: g
+  states:
+    low: {rates: {swing.angular_velocity: w0}}
+    up: {from: low, event: {move: child, to: {swing: [L/4, 0]}}}
+ask:
+  omega: {meaning: angular velocity after, of: swing.angular_velocity, in: up, unit: rad/s}
+question: |
+  A child on a swing stands up as it passes the bottom.
+"""
+
+
+def write(tmp_path, text):
+    path = tmp_path / "problem.yaml"
+    path.write_text(text)
+    return path
+
+
+def refused(tmp_path, text, field, exit_code=2):
+    result = run_derive("solve", str(write(tmp_path, text)))
+    assert result.returncode == exit_code, result.stdout + result.stderr
+    assert field in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    return result.stderr
+
+
+def test_a_free_body_keeps_its_momentum_and_its_angular_momentum_about_the_center_of_mass(tmp_path):
+    """A bead at the end of a free rod (spinning about its own middle, so the whole moves) walks
+    to the middle: the center of mass moves on at m w0 L/(2 (M + m)), and the angular momentum
+    about it, w0 L^2 (M/12 + m M/(4 (M + m))), is the rod's alone after: omega = w0 (M + 4 m)/(M + m)."""
+    solution = Solution(problem.load(write(tmp_path, FREE.replace("MIDDLE", "rod.center"))))
+    m, M, L, w0 = (solution.problem.parameters[n].symbol for n in ("m", "M", "L", "w0"))
+    omega = w0 * (M + 4 * m) / (M + m)
+    assert sp.simplify(solution.expression("omega") - omega) == 0
+    speed = m * w0 * L / (2 * (M + m))
+    assert sp.simplify(solution.expression("K") - ((M + m) * speed**2 / 2 + M * L**2 * omega**2 / 24)) == 0
+    checks = report.solve(solution.problem, solution=solution)["checks"]
+    assert all(c["passed"] for c in checks.values()), checks
+    assert "move" in checks["states"]["detail"]
+
+
+def test_a_move_under_a_weights_moment_is_refused_as_an_engine_limit(tmp_path):
+    """Standing up on a swing: the weight has a moment about the pivot, so no momentum is kept
+    whatever the move's duration; derive does not model the quick move, and says so (exit 1)."""
+    result = run_derive("solve", str(write(tmp_path, SWING)))
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert "derive cannot yet find the rates after this move: it keeps no momentum" in result.stderr and "scene.states.up" in result.stderr
+
+
+@pytest.mark.parametrize("change, field, words", [
+    ("{move: rod, to: rod.center}", "scene.states.middle.event.move", "carries a point mass"),
+    ("{move: bead, to: [0, 0]}", "scene.states.middle.event.to", "expected a point of a body"),
+    ("{move: bead, to: {rod: [2*L, 0]}}", "scene.states.middle.event.to", "outside the rod"),
+    ("{move: bead, to: rod.center, restitution: 1}", "scene.states.middle.event.restitution", "has no restitution"),
+])
+def test_a_wrong_move_is_refused_naming_its_field(tmp_path, change, field, words):
+    text = FREE.replace("{move: bead, to: MIDDLE}", change)
+    assert words in refused(tmp_path, text, field)
+
+
+def test_a_move_needs_the_pin_that_holds_the_point_mass(tmp_path):
+    text = FREE.replace("    hold: {pin: bead, to: rod.end}\n", "    hold: {pin: bead, to: rod.end}\n"
+                                                                  "    other: {pin: bead, to: rod.end}\n")
+    assert "held by one pin" in refused(tmp_path, text.replace("MIDDLE", "rod.center"), "scene.states.middle.event.move")
+
+
+def test_only_angular_velocities_and_energies_are_asked_after_a_move(tmp_path):
+    text = FREE.replace("MIDDLE", "rod.center").replace("of: rod.angular_velocity, in: middle",
+                                                        "of: rod.velocity.x, in: middle")
+    assert "depends on how it is made" in refused(tmp_path, text, "ask.omega")
+
+
+def test_only_a_move_follows_a_move(tmp_path):
+    text = FREE.replace("MIDDLE", "rod.center").replace(
+        "    middle: {from: spinning, event: {move: bead, to: rod.center}}\n",
+        "    middle: {from: spinning, event: {move: bead, to: rod.center}}\n    later: {from: middle, when: stops}\n")
+    assert "only another move may follow it" in refused(tmp_path, text, "scene.states.later.from")
+
+
+def test_a_state_may_not_take_a_joints_name(tmp_path):
+    text = FREE.replace("MIDDLE", "rod.center").replace("middle:", "hold:").replace("in: middle", "in: hold")
+    assert "is taken" in refused(tmp_path, text, "scene.states.hold")
+
+
+def test_the_second_route_catches_a_wrong_move(tmp_path, monkeypatch):
+    """Newton–Euler's moments against Lagrange's symmetries: angular momentum with the bodies'
+    spins counted twice is caught."""
+    path = write(tmp_path, FREE.replace("MIDDLE", "rod.center"))
+    original = moves.Symmetry.momentum
+
+    def spins_twice(self, coords):
+        spins = sum((coords.scene.bodies[n].inertia * coords.angular_velocity(n)
+                     for n in self.moved if coords.scene.bodies[n].rotates and self.about is not None), sp.Integer(0))
+        return original(self, coords) + spins
+
+    monkeypatch.setattr(moves.Symmetry, "momentum", spins_twice)
+    with pytest.raises(CheckFailure, match="after the move middle"):
+        report.solve(problem.load(path), {}, 4)
