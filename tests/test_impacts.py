@@ -352,3 +352,15 @@ question: |
     pairs = list(zip(kept.equations[::2], kept.equations[1::2]))
     assert len(pairs) == 3 and all(sp.simplify(a.rhs - b.rhs) == 0 for a, b in pairs)
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_a_stop_after_a_bounce_that_sets_a_ball_flying_is_an_engine_limit(tmp_path):
+    """After the bounce the ball flies free while the rod swings: no straight line of the
+    coordinates, which the start already shows (it crashed on K = 0 having no root before)."""
+    text = (Path(__file__).parent / "textbook/states/ball_bounces_off_rod.yaml").read_text()
+    text = text.replace("    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n",
+                        "    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n"
+                        "    highest: {when: stops, from: bounced}\n")
+    text = text.replace("ask:\n", "ask:\n  angle: {meaning: the rod's highest angle, of: rod.angle, in: highest, unit: rad}\n")
+    stderr = refused(tmp_path, text, "scene.states.highest", exit_code=1)
+    assert "whose motion is not a straight line in its coordinates" in stderr

@@ -56,6 +56,12 @@ class StateLimit(StateError):
     """A state derive cannot yet find (an engine limit, not the file's fault)."""
 
 
+#: Where no one coordinate carries the motion from its start to the state, and what to do.
+NO_COORDINATE = ("find a coordinate that describes the whole motion from the start to the state (each one the "
+                 "constraints leave free turns back on the way or has no rate there): give a state on the way "
+                 "(when:), such as a bead at the side of its hoop, and reach this one from it (from:)")
+
+
 @dataclass(frozen=True)
 class Reached:
     """Every coordinate and velocity in a state (`values`), what must stay positive for the
@@ -230,8 +236,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
             continue
         if not any(v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) for v in reached.values.values()):
             return reached
-        problem = problem or StateLimit("find a coordinate that describes the motion through the state (each one the "
-                                        "constraints leave free has no rate there)")
+        problem = problem or StateLimit(NO_COORDINATE)
     raise problem
 
 
@@ -289,10 +294,13 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     s, s0 = along.q, start[along.q]
     positions = {c.q: s if c == along else start[c.q] + ratios[c] * (s - s0) for c in coords.all}
     path = _path(scene, coords, start, along, positions, derivation, decide, condition)
+    curved = StateLimit(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
+                        "straight line in its coordinates (energy fixes one rate of several)")
+    if not _on_line(scene, coords, path, s0, ratios, derivation, decide):  # at the start already (a ball flying off)
+        raise curved
     reached = _arrive(path, condition, derivation, decide)
     if not _on_line(scene, coords, path, reached.end, ratios, derivation, decide):
-        raise StateLimit(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
-                         "straight line in its coordinates (energy fixes one rate of several)")
+        raise curved
     extents = [(tidy(e.xreplace(reached.values)), meaning)
                for part in scene.constraints for e, meaning in part.extents(coords)]
     _positive_at_the_middle(extents, decide, ": narrow the ranges to where the state is on the scene's geometry")
@@ -411,8 +419,7 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     if inertia.has(sp.zoo, sp.oo, sp.nan) or not _real(inertia, decide) or settled(1 / inertia) == 0:
         # the coordinate is extremal there (a bead's height at the bottom of a bowl): it has no
         # rate to carry the motion's, which another coordinate must
-        raise StateLimit("find a coordinate that describes the motion through the state (each one the "
-                         "constraints leave free has no rate there)")
+        raise StateLimit(NO_COORDINATE)
     rate = sp.Integer(0) if isinstance(condition, Stops) else path.rate(s1)
     values = path.values(s1, rate)
     arrived = path.kinetic.xreplace({s: s1})
@@ -535,6 +542,8 @@ def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -
     function) that are roots at the sample parameters, the nearest one ahead, and no change of
     sign before it (sampled), which would be a root sympy missed."""
     s, s0, direction = path.s, path.start[path.s], path.direction
+    if equation in (sp.true, sp.false):  # K(s) = 0 with K constant: it never holds (or always)
+        raise StateError(f"{fails} (it moves {'up' if direction > 0 else 'down'} in {s} from {sp.sstr(s0)})")
     if equation.lhs == s:
         found = [equation.rhs]
     else:
