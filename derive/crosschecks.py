@@ -163,10 +163,12 @@ class CrossChecks:
                 (self._move_check if state.event.kind == "move" else self._impact_check)(name)
                 impacts += 1
                 continue
-            newton_euler = self.derivations_in(name)["newton_euler"]
+            gripping = state.until is not None and state.until[0] == "grips"  # the motion: with the clutch slipping
+            newton_euler = self.derivations_in(state.start if gripping else name)["newton_euler"]
             reached = self.states[name]
+            start = reached.path.start if reached.path else self.states[state.start].values
             time = self._duration(name)[0]
-            exprs = [*reached.values.values(), *reached.path.start.values(), time,
+            exprs = [*reached.values.values(), *start.values(), time,
                      *(e.lhs - e.rhs for e in newton_euler.balances)]
             symbols = set().union(*(e.free_symbols for e in exprs), *(c.free_symbols for c, _, _ in self.conditions))
             symbols -= coords.state | set(newton_euler.unknowns)
@@ -181,7 +183,8 @@ class CrossChecks:
             except ValueError as error:
                 raise CheckFailure(f"{self.problem.id}: the time to the state {name}: {error}") from None
             horizon = 2 * expected_time + 1
-            simulated = states.integrate_to(newton_euler, coords, values, reached, self._condition(state), horizon)
+            simulated = states.integrate_to(newton_euler, coords, values, reached, self._condition(state), horizon,
+                                            start)
             if simulated is None:
                 raise CheckFailure(f"{self.problem.id}: Newton–Euler's motion from the start does not reach the "
                                    f"state {name} in {horizon:.3g} s")

@@ -26,6 +26,7 @@ from derive.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QU
 from derive.errors import EngineLimit, ProblemError
 from derive.reader import Loader, Reader
 from derive.parts.contact import Contact
+from derive.parts.slipping_clutch import SlippingClutch
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, STATE_KINDS, Quantity, Scene, parse_quantity
 from derive.scene_file import read_scene
 
@@ -256,6 +257,10 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
 
 def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, path: str) -> str | None:
     """The state an ask is read in (`in: vertical`): rates need one; accelerations and forces take one."""
+    slipping = next((p.name for p in scene.loads if isinstance(p, SlippingClutch)), None)
+    if raw is None and slipping and quantity.kind in DYNAMIC_KINDS:
+        raise reader.fail(field, f"the clutch {slipping} slips only while its plates turn at different rates: ask "
+                                 "in a state where they do (in: STATE)")
     if raw is None:
         if quantity.kind in RATE_KINDS:
             raise reader.fail(field, f"{path} is read in a state: give in: STATE (states: "

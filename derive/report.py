@@ -94,7 +94,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
     checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
     energy = ({k: sp.sstr(v) for k, v in solution.energy_ledger().items()} if kinds & DYNAMIC_KINDS else {})
     regimes = {}
-    if kinds & DYNAMIC_KINDS and solution.regimes[0].name:
+    at_rest = {a.quantity.kind for a in problem.asks.values() if a.state is None}  # regimes are the placement's
+    if at_rest & DYNAMIC_KINDS and solution.regimes[0].name:
         regimes = {"cases": [{"regime": r.name, "where": sp.sstr(w)}
                              for r, w in zip(solution.regimes, solution.regime_conditions())],
                    "applies": solution.regime_at(values)}

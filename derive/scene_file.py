@@ -533,8 +533,10 @@ def read_scene(reader: Reader, raw) -> Scene:
     cords += [cord.read(reader, places, name, path, f"scene.cords.{name}")
               for name, path in reader.named(raw.get("cords"), "cords").items()]
     found, loads = _loads(reader, raw.get("loads") or [], places)
-    constraints = [*pins, *contacts, *joints, *(c for c in cords if c.unknowns())]
-    loads = [*(c for c in cords if not c.unknowns()), *loads]
+    # a part with no force of its own to find (a cord pulled with a given force, a slipping
+    # clutch's kinetic couple) is a load
+    constraints = [*pins, *contacts, *(j for j in joints if j.unknowns()), *(c for c in cords if c.unknowns())]
+    loads = [*(j for j in joints if not j.unknowns()), *(c for c in cords if not c.unknowns()), *loads]
     names = [p.name for p in constraints + loads]
     duplicate = next((n for n in names if names.count(n) > 1 or n in bodies), None)
     if duplicate:
@@ -557,7 +559,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
     rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
                  for n, spec in bodies_raw.items() if "rotation" in spec}
-    states = state_file.read(reader, raw.get("states"), places, constraints)
+    states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, events, top, wheel,
                   wave, internal, rotations, states)
     _check_geometry(reader, places, scene)

@@ -20,11 +20,13 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import friction, impacts, lagrange, moves, newton_euler
+from derive.mechanics import friction, grips, impacts, lagrange, moves, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
+from derive.parts.clutch import Clutch
 from derive.parts.contact import Contact
 from derive.parts.pin import Pin
+from derive.parts.slipping_clutch import SlippingClutch
 from derive.parts.weld import Weld
 from derive.parts.places import extent
 from derive.parts.surfaces import Plane
@@ -58,7 +60,7 @@ class StateAnswers:
     @cached_property
     def _chain(self) -> Chain:
         """Each named state in turn, from the state it starts from (see Chain)."""
-        if self.scene.states and len(self.regimes) > 1:
+        if self.scene.states and len(self.regimes) > 1 and self._sliding is None:
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
         result, joints, solved, made = {}, {}, {}, {}
@@ -66,10 +68,16 @@ class StateAnswers:
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
         for name, state in self.scene.states.items():
-            joints[name] = joints[state.start] if state.start else ()
+            joints[name] = joints[state.start] if state.start else self._slides_from(result)
             try:
                 with limits.time_limit(f"finding the state {name}"):
-                    if state.event is None:
+                    if state.until and state.until[0] == "grips":
+                        start = result[state.start].values if state.start else state_motion.rest(self.coordinates)
+                        reached = grips.grip(self.coordinates, start, self._slipping(state.until[1]),
+                                             self._derivations_with(joints[name])["lagrange"], self._sample)
+                        made[name] = self._gripped(state.until[1], reached.values)
+                        joints[name] = tuple(j for j in joints[name] if j.name != made[name].name) + (made[name],)
+                    elif state.event is None:
                         reached = self._state(state, result, joints[name])
                     elif state.event.kind == "move":
                         made[name] = moves.moved_pin(self._scene_with(joints[name]), state.event, state.event.place)
@@ -86,6 +94,8 @@ class StateAnswers:
                                                      self._scene_with(joints[name]))
                 # (what must stay positive is evaluated per variant, Abs and all: left as it is)
                 result[name] = dataclasses.replace(reached, values={k: resolve(v) for k, v in reached.values.items()})
+                if state.start is None and self._sliding is not None:  # its friction against the slip found
+                    joints[name] = self._slides_from(result)
             except (state_motion.StateLimit, moves.MoveLimit) as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
@@ -95,11 +105,52 @@ class StateAnswers:
     def _state(self, state, found: dict, joints: tuple) -> state_motion.Reached:
         coords = self.coordinates
         if state.rates:
-            return state_motion.moving(self.dynamics_scene, coords, {coords.of(body, kind): value
-                                                                     for body, kind, value in state.rates})
+            return state_motion.moving(self._scene_with(joints), coords, {coords.of(body, kind): value
+                                                                          for body, kind, value in state.rates})
         start = found[state.start].values if state.start else state_motion.rest(coords)
         return state_motion.reach(self._scene_with(joints), coords, start, self._condition(state),
                                   self._derivations_with(joints)["lagrange"], self._sample)
+
+    @cached_property
+    def _sliding(self) -> Contact | None:
+        """The contact a state grips (`when: {grips: BODY}`): it slides with kinetic friction in
+        the states before, whatever the regimes at the placement."""
+        names = {s.until[1] for s in self.scene.states.values() if s.until and s.until[0] == "grips"}
+        return next((c for c in self.dynamics_scene.constraints if isinstance(c, Contact) and c.name in names), None)
+
+    def _slides_from(self, found: dict) -> tuple:
+        """The joints of a state at the root of a chain: none, or the sliding contact with kinetic
+        friction against the slip of the first state given by its rates (found with the contact
+        smooth, which holds the same constraints)."""
+        contact = self._sliding
+        if contact is None:
+            return ()
+        if not found:  # the first state itself, before its slip is known
+            return (friction.slipping(contact, 0),)
+        first = next(iter(found.values())).values
+        way = self._sample(contact.slip(self.coordinates).xreplace(first))
+        if way == 0:
+            raise state_motion.StateError(f"the {contact.body} does not slide on {contact.surface} in the first state: "
+                                          "give it rates that slip")
+        return (friction.slipping(contact, -1 if way > 0 else 1),)
+
+    def _slipping(self, name: str) -> SlippingClutch | Contact | None:
+        """The part of that name that slips until it grips: a slipping clutch, or a contact with
+        kinetic friction (None: none)."""
+        scene = self.dynamics_scene
+        return next((p for p in (*scene.loads, *scene.constraints) if p.name == name
+                     and (isinstance(p, SlippingClutch) or isinstance(p, Contact) and p.kinetic is not None)), None)
+
+    def _gripped(self, name: str, values: dict) -> Clutch | Contact:
+        """What takes a slipping part's place where it grips, as the bodies are then: a clutch at
+        the turn between its plates, a contact that rolls (or holds) from where it slid to."""
+        part, coords = self._slipping(name), self.coordinates
+        if isinstance(part, Contact):
+            rolled = part.rolled(coords)
+            slid = tidy(rolled.xreplace(values) - rolled.xreplace(coords.at_rest_in_reference()))
+            return dataclasses.replace(friction.stuck(part), slipped=slid)
+        turn = coords.angle(part.body) - (coords.angle(part.to) if part.to else 0)
+        return Clutch(name, part.body, part.to, tidy(turn.xreplace(values)))
 
     def _joint(self, state, found: dict):
         """The joint the impact of `state` makes, where the bodies are in the state it happens in
@@ -184,7 +235,7 @@ class StateAnswers:
             return scene
         replaced = {j.name for j in joints}
         return dataclasses.replace(scene, constraints=tuple(c for c in scene.constraints if c.name not in replaced)
-                                   + joints)
+                                   + joints, loads=tuple(p for p in scene.loads if p.name not in replaced))
 
     def derivations_in(self, name: str | None) -> dict:
         """Each route's derivation of the scene in a state (see scene_in)."""
@@ -209,6 +260,11 @@ class StateAnswers:
         kind, name = state.until
         if kind == "stops":
             return state_motion.Stops()
+        if kind == "grips":  # the slip rate, positive at the middle of the ranges at the start
+            slip = self._slipping(name).slip(self.coordinates)
+            start = self.states[state.start].values if state.start else state_motion.rest(self.coordinates)
+            return state_motion.Vanishes(sp.sign(self._sample(slip.xreplace(start))) * slip,
+                                         f"the slip rate of {name}")
         part = self.dynamics_scene.constraint(name)
         if kind == "slips":
             return state_motion.Vanishes(self._grip_margin(part), f"the grip of the {part.body} at {name}: "
@@ -253,6 +309,8 @@ class StateAnswers:
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few states
     def _duration(self, name: str) -> tuple[sp.Expr, Step]:
         reached = self.states[name]
+        if reached.took is not None:
+            return reached.took
         time, step = state_motion.duration(reached.path, reached.end)
         # |s1 - s0| by the ranges; an integral's integrand as it is (simplifying it cancels digits)
         return time.xreplace({a: self._within_ranges(a, absolute=True) for a in time.atoms(sp.Abs)}), step
@@ -283,11 +341,39 @@ class StateAnswers:
                 + [tidy(1 - f.args[0] ** 2) for v in exprs for f in v.atoms(sp.acos, sp.asin)])]
             result += [(expr, True, f"{meaning} ({name})") for expr, meaning in reached.positive]
             result += self._grip_conditions(name)
+            result += self._clutch_conditions(name, scene, forces)
             # (a force the state is defined by, zero there, has no sign to keep: it was positive on the way)
             result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
                        for part in (*scene.constraints, *scene.loads) for sign in part.signs()
                        if not sign.expression.has(*reached.vanished)]
         return result + self._ramp_conditions()
+
+    def _clutch_conditions(self, name: str, scene, forces: dict) -> list[tuple[sp.Expr, bool, str]]:
+        """A slipping clutch slips in the state, the way it does at the middle of the ranges, and a
+        sliding contact the way its kinetic friction opposes (where it stops slipping it grips: a
+        state `when: {grips: ...}`); a clutch that has gripped needs a couple of at most its
+        kinetic one (derive takes no larger static couple)."""
+        values, result = self.states[name].values, []
+        for part in scene.loads:
+            if isinstance(part, SlippingClutch):
+                slip = part.slip(self.coordinates).xreplace(values)
+                result.append((sp.sign(self._sample(slip)) * slip, True,
+                               f"the plates of {part.name} turn together in the state {name}: they grip there (give "
+                               f"a state when: {{grips: {part.name}}} and go on from it)"))
+        for part in scene.constraints:
+            if isinstance(part, Contact) and part.regime == "kinetic":
+                result.append((-part.direction * part.slip(self.coordinates).xreplace(values), True,
+                               f"the {part.body} does not slide on {part.surface} the way its kinetic friction "
+                               f"opposes in the state {name} (it grips there: give a state when: "
+                               f"{{grips: {part.body}}})"))
+        for part in scene.constraints:
+            slipping = self._slipping(part.name) if isinstance(part, Clutch) else None
+            if slipping is not None:
+                couple = forces[part.unknowns()["torque"]].xreplace(values)
+                result.append((slipping.couple**2 - couple**2, False,
+                               f"the clutch {part.name} would slip again in the state {name}: it needs a couple "
+                               f"larger than {sp.sstr(slipping.couple)}"))
+        return result
 
     @staticmethod
     def _grip_margin(contact) -> sp.Expr:
@@ -301,7 +387,8 @@ class StateAnswers:
         would slip, the motion is not the one derived (a ball slips on a dome long before it leaves)."""
         state, reached, result = self.scene.states[name], self.states[name], []
         for contact in self.scene_in(name).constraints:
-            if not isinstance(contact, Contact) or not contact.has_friction or state.until == ("slips", contact.name):
+            if not isinstance(contact, Contact) or not contact.has_friction or not contact.rolling \
+                    or state.until == ("slips", contact.name):
                 continue
             margin = self._grip_margin(contact)
             meaning = (f"the {contact.body} slips at {contact.name} on the way to the state {name} (mu_s N < |f|): ask "

@@ -12,6 +12,7 @@ from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.reader import Reader
 from derive.parts.pin import Pin
+from derive.parts.slipping_clutch import SlippingClutch
 from derive.scene import Body, Event, State
 
 #: How a state names a body's coordinates: (kind, unit) of a position (`when:`) and of a rate (`rates:`).
@@ -24,8 +25,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
     from: spinning}}`: each state's `from` one named above it (no state reached from itself).
     `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
     stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`), a cord goes slack
-    (`{slack: CORD}`) or a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static:
-    mu_s}). `event:` is an impact or a move in the state from: (see EVENTS), and the state is the
+    (`{slack: CORD}`), a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static:
+    mu_s}) or a slipping clutch's plates come to turn together (`{grips: CLUTCH}`). `event:` is an impact or a move in the state from: (see EVENTS), and the state is the
     one just after it."""
     result, bodies = {}, places.bodies
     taken = {*bodies, *(p.name for p in constraints), "placement", "ground"}  # an impact's joint is named so
@@ -64,11 +65,11 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             continue
         if not isinstance(spec["when"], dict):
             raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY}, "
-                                               "{slack: CORD} and {slips: BODY}")
+                                               "{slack: CORD}, {slips: BODY} and {grips: CLUTCH}")
         when = reader.mapping(spec["when"], f"{field}.when", free=True)
         if len(when) != 1:
             raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY}, "
-                                               "{slack: CORD} or {slips: BODY}")
+                                               "{slack: CORD}, {slips: BODY} or {grips: CLUTCH}")
         (key, value), = when.items()
         if key in THRESHOLDS:
             result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",
@@ -146,20 +147,27 @@ def _move(reader: Reader, body: str, to, field: str, places, constraints: list) 
     return Event("move", body, host, place=place, joint=pin.name)
 
 
-#: The states where a part's force falls to zero: the part's kind and the force's key.
-THRESHOLDS = {"leaves": (Contact, "normal"), "slack": (Cord, None), "slips": (Contact, "friction")}
+#: The states where a part's force falls to zero (the part's kind and the force's key), or where a
+#: slipping clutch's plates come to turn together.
+THRESHOLDS = {"leaves": (Contact, "normal"), "slack": (Cord, None), "slips": (Contact, "friction"),
+              "grips": ((SlippingClutch, Contact), None)}
 
 
 def _threshold_part(reader: Reader, kind: str, raw, field: str, constraints: list) -> str:
     """The part whose force falls to zero: a contact (named, or by its body) or a cord of one tension."""
     part_type, _ = THRESHOLDS[kind]
     fitting = {c.name: c for c in constraints if isinstance(c, part_type)}
-    if part_type is Contact:
+    if part_type in (Contact, (SlippingClutch, Contact)):
         fitting.update({c.body: c for c in constraints if isinstance(c, Contact) and c.point is None})
     if not isinstance(raw, str) or raw not in fitting:
-        what = "a contact (a body on a surface, or a contact joint)" if part_type is Contact else "a cord"
+        what = {Contact: "a contact (a body on a surface, or a contact joint)", Cord: "a cord",
+                (SlippingClutch, Contact): "a slipping clutch (a joint {clutch: BODY, to: OTHER, slipping: C}) or a "
+                                           "contact with kinetic friction"}[part_type]
         raise reader.fail(field, f"expected {what} of the scene ({', '.join(fitting) or 'none'})")
     part = fitting[raw]
+    if kind == "grips" and not isinstance(part, SlippingClutch) and part.kinetic is None:
+        raise reader.fail(field, f"the contact {raw} gives no kinetic friction: where it grips needs friction: "
+                                 "{kinetic: mu_k}")
     if kind == "slips" and not part.has_friction:
         raise reader.fail(field, f"the contact {raw} gives no friction coefficient: where it slips needs "
                                  "friction: {static: mu_s}")

@@ -515,6 +515,43 @@ EXPECTED.update({
         "K0": lambda s: (s.I + 2 * s.m * s.r1**2) * s.w0**2 / 2,
         "K1": lambda s: (s.I + 2 * s.m * s.r2**2) * (s.w0 * (s.I + 2 * s.m * s.r1**2) / (s.I + 2 * s.m * s.r2**2)) ** 2 / 2,
     },
+    # Serway & Jewett ch. 10-11: the couple C speeds the record (I2) and slows the turntable (I1)
+    # until I1 w0 = (I1 + I2) omega, after t = I2 omega/C; the record turns C t^2/(2 I2) meanwhile.
+    "turntable_record_slips": {
+        "alpha": lambda s: s.C / (s.M2 * s.R2**2 / 2),
+        "omega": lambda s: s.M1 * s.R1**2 * s.w0 / (s.M1 * s.R1**2 + s.M2 * s.R2**2),
+        "t": lambda s: s.M2 * s.R2**2 / 2 * s.M1 * s.R1**2 * s.w0 / (s.M1 * s.R1**2 + s.M2 * s.R2**2) / s.C,
+        "turn": lambda s: s.C / (s.M2 * s.R2**2) * (s.M2 * s.R2**2 / 2 * s.M1 * s.R1**2 * s.w0
+                                                   / (s.M1 * s.R1**2 + s.M2 * s.R2**2) / s.C) ** 2,
+        "K1": lambda s: (s.M1 * s.R1**2 + s.M2 * s.R2**2) / 4
+        * (s.M1 * s.R1**2 * s.w0 / (s.M1 * s.R1**2 + s.M2 * s.R2**2)) ** 2,
+    },
+    # Halliday, Resnick & Walker ch. 10: alpha = -tau/I, t = I w0/tau, turn I w0^2/(2 tau), I = M R^2.
+    "flywheel_brake_grips": {
+        "alpha": lambda s: -s.C / (s.M * s.R**2),
+        "t": lambda s: s.M * s.R**2 * s.w0 / s.C,
+        "turn": lambda s: s.M * s.R**2 * s.w0**2 / (2 * s.C),
+    },
+    # Serway & Jewett ch. 10; Kleppner & Kolenkow ch. 7: kinetic friction mu M g slows the ball
+    # and spins it up until v = -R omega: t = 2 v0/(7 mu g), V = 5 v0/7, d = 12 v0^2/(49 mu g).
+    "bowling_ball_skids": {
+        "a": lambda s: -s.mu * s.g,
+        "t": lambda s: 2 * s.v0 / (7 * s.mu * s.g),
+        "d": lambda s: 12 * s.v0**2 / (49 * s.mu * s.g),
+        "V": lambda s: 5 * s.v0 / 7,
+        "K": lambda s: 5 * s.M * s.v0**2 / 14,
+    },
+    # Kleppner & Kolenkow ch. 7: angular momentum about the contact point, M R v0 - I w0 =
+    # (M R^2 + I) V / R; the slip v + R w falls at 7 mu g/2.
+    "cue_ball_backspin": {
+        "V": lambda s: (5 * s.v0 - 2 * s.R * s.w0) / 7,
+        "t": lambda s: 2 * (s.v0 + s.R * s.w0) / (7 * s.mu * s.g),
+    },
+    # Halliday, Resnick & Walker ch. 11; Morin ch. 8: I w0 = (I + M R^2) V/R, V = 2 R w0/7.
+    "spinning_ball_set_down": {
+        "V": lambda s: 2 * s.R * s.w0 / 7,
+        "t": lambda s: 2 * s.R * s.w0 / (7 * s.mu * s.g),
+    },
     # Halliday, Resnick & Walker ch. 15: tau = -kappa theta at any angle, so T = 2 pi sqrt(I/kappa),
     # I = M R^2/2, whatever the amplitude (here by energy between the turning points, a quadrature).
     "torsion_pendulum_wide_swing": {

@@ -68,7 +68,8 @@ class Reached:
     motion to get there ((expression, meaning) pairs), the steps that found it, the path the
     motion was followed along (None at the placement), where on the path the state is (`end`,
     the value of its coordinate), and the constraint forces that are zero
-    there by its definition (`vanished`: a body leaving its surface)."""
+    there by its definition (`vanished`: a body leaving its surface); for a state reached
+    along no path (a clutch that grips), the time it takes and the step that found it (`took`)."""
 
     values: dict[sp.Symbol, sp.Expr]
     positive: tuple[tuple[sp.Expr, str], ...] = ()
@@ -76,6 +77,7 @@ class Reached:
     path: Path | None = None
     end: sp.Expr | None = None
     vanished: tuple[sp.Symbol, ...] = ()
+    took: tuple[sp.Expr, Step] | None = None
 
 
 def rest(coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
@@ -649,38 +651,43 @@ def _real(expr: sp.Expr, decide) -> bool:
 
 
 def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reached: Reached, condition,
-                 horizon: float):
-    """The state `reached` (its path from its start) found again by integrating this route's
-    equations of motion numerically (scipy DOP853, rtol 1e-11) at the parameter `values`, until
-    its condition first holds: (the time, every coordinate and velocity), or None when it does
-    not within `horizon` seconds. Where a coordinate gets to a value, the path's own coordinate
-    gets to its value at the state (the state's may be extremal there, as a disk's center at its
-    lowest, which an integration never sees it cross)."""
+                 horizon: float, start: dict | None = None):
+    """The state `reached` (its path from its start, or from `start` where it has none) found
+    again by integrating this route's equations of motion numerically (scipy DOP853, rtol
+    1e-11) at the parameter `values`, until its condition first holds: (the time, every
+    coordinate and velocity), or None when it does not within `horizon` seconds. Where a
+    coordinate gets to a value, the path's own coordinate gets to its value at the state (the
+    state's may be extremal there, as a disk's center at its lowest, which an integration never
+    sees it cross); where an expression of the state and the forces vanishes, it falls through
+    zero."""
     unknowns = derivation.numeric(values)
-    n, along = len(coords.all), reached.path.coordinate
-    index = coords.all.index(along)
+    n = len(coords.all)
+    state = [c.q for c in coords.all] + [c.u for c in coords.all]
 
     def rates(t, y):
         return np.concatenate([y[n:], unknowns(y)[:n]])
 
     if isinstance(condition, Gets):
+        index = coords.all.index(reached.path.coordinate)
         end = float(sp.N(reached.end.xreplace(values), 20))
 
         def event(t, y):
             return y[index] - end
     elif isinstance(condition, Stops):
+        index = coords.all.index(reached.path.coordinate)
+
         def event(t, y):
             return y[n + index]
         event.direction = -reached.path.direction
     else:
-        force = sp.lambdify(derivation.unknowns, condition.force.xreplace(values), "numpy")
+        force = sp.lambdify(state + list(derivation.unknowns), condition.force.xreplace(values), "numpy")
 
         def event(t, y):
-            return force(*unknowns(y))
+            return force(*y, *unknowns(y))
         event.direction = -1
     event.terminal = True
-    start = reached.path.start
-    y0 = np.array([float(sp.N(start[s].xreplace(values), 20)) for s in [c.q for c in coords.all] + [c.u for c in coords.all]])
+    start = reached.path.start if start is None else start
+    y0 = np.array([float(sp.N(start[s].xreplace(values), 20)) for s in state])
     run = solve_ivp(rates, (0, horizon), y0, method="DOP853", rtol=1e-11, atol=1e-13, events=event)
     if not len(run.t_events[0]):
         return None

@@ -1,5 +1,7 @@
 """A clutch: two turning bodies locked to turn together (an engaged clutch, a disk dropped onto
-another and carried by it), their centers left to the other parts (a shared axle).
+another and carried by it), their centers left to the other parts (a shared axle); or a body held
+from turning (a brake that grips). With `slipping: C` it is a slipping clutch until it grips
+(derive.parts.slipping_clutch).
 
 Lagrange: the angle between them stays what it was when they locked, g = theta_body -
 theta_to - turn (the multiplier is the couple on the body). Newton–Euler: that couple on the
@@ -20,42 +22,49 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedTorque, Part
+from derive.parts.slipping_clutch import SlippingClutch
 
 
 @dataclass(frozen=True)
 class Clutch(Part):
-    """`body` locked to turn with `to`, `turn` (their turns' difference from the placement) apart."""
+    """`body` locked to turn with `to` (None: held by the ground), `turn` (their turns'
+    difference from the placement) apart."""
 
     name: str
     body: str
-    to: str
+    to: str | None
     turn: sp.Expr = sp.Integer(0)
 
     def bodies(self) -> tuple[str, ...]:
-        return (self.body, self.to)
+        return (self.body,) if self.to is None else (self.body, self.to)
 
     def unknowns(self) -> dict[str, sp.Symbol]:
         return {"torque": sp.Symbol(f"M^{self.name}", real=True)}
 
     def gaps(self, coords) -> list[sp.Expr]:
-        return [coords.angle(self.body) - coords.angle(self.to) - self.turn]
+        return [coords.angle(self.body) - (coords.angle(self.to) if self.to else 0) - self.turn]
 
     def loads(self, coords) -> list[AppliedTorque]:
         couple = self.unknowns()["torque"]
         label = f"clutch {self.name}"
-        return [AppliedTorque(self.body, couple, label), AppliedTorque(self.to, -couple, label)]
+        return [AppliedTorque(self.body, couple, label)] + ([AppliedTorque(self.to, -couple, label)] if self.to else [])
 
     def conditions(self, coords) -> list[sp.Expr]:
-        return [coords.angular_velocity(self.body) - coords.angular_velocity(self.to)]
+        return [coords.angular_velocity(self.body) - (coords.angular_velocity(self.to) if self.to else 0)]
 
 
-def read(reader, places, name: str, spec: dict, field: str) -> Clutch:
-    """`{clutch: BODY, to: OTHER}`: two turning bodies that turn together."""
-    spec = reader.mapping(spec, field, required=("clutch", "to"))
+def read(reader, places, name: str, spec: dict, field: str) -> Clutch | SlippingClutch:
+    """`{clutch: BODY, to: OTHER}`: two turning bodies that turn together (`to: ground`: a
+    brake that holds the body); with `slipping: C`, their plates slip with the kinetic couple C
+    until they grip (a state `when: {grips: NAME}`)."""
+    spec = reader.mapping(spec, field, required=("clutch", "to"), optional=("slipping",))
     body, _ = places.point(spec["clutch"], f"{field}.clutch", ground=False)
-    to, _ = places.point(spec["to"], f"{field}.to", ground=False)
+    to = None if spec["to"] == "ground" else places.point(spec["to"], f"{field}.to", ground=False)[0]
     if to == body:
         raise reader.fail(f"{field}.to", f"a clutch joins two bodies: not the {body} to itself")
-    if not places.bodies[body].rotates or not places.bodies[to].rotates:
+    if not places.bodies[body].rotates or to is not None and not places.bodies[to].rotates:
         raise reader.fail(field, "a clutch locks two turning bodies together (a point mass does not turn)")
+    if "slipping" in spec:
+        return SlippingClutch(name, body, to, reader.positive(spec["slipping"], f"{field}.slipping", "N*m",
+                                                              "a kinetic friction couple"))
     return Clutch(name, body, to)

@@ -35,7 +35,9 @@ class Contact(Part):
     mu_s when the file gives it. `point`: the material point that touches, in the body's frame
     (None: the round body's rim below its center, or the point mass itself). `carrier`: the body
     that carries the surface (None: the ground); it feels the opposite forces, and the contact
-    holds the two bodies' velocities at the point of contact together."""
+    holds the two bodies' velocities at the point of contact together. `slipped`: how far it
+    slid before it gripped (rolling, the distance rolled plus R theta is that much off the
+    placement's)."""
 
     name: str
     body: str
@@ -46,6 +48,7 @@ class Contact(Part):
     direction: int = 0
     point: tuple[sp.Expr, sp.Expr] | None = None
     carrier: str | None = None
+    slipped: sp.Expr = sp.Integer(0)
 
     def bodies(self) -> tuple[str, ...]:
         return (self.body,) if self.carrier is None else (self.body, self.carrier)
@@ -100,10 +103,21 @@ class Contact(Part):
         surface, center, radius = self._geometry(coords)
         result = [surface.gap(center, radius)]
         if self.rolling:  # the arc along the surface and the turn, both as seen from the carrier
-            turned = coords.angle(self.body) - (coords.angle(self.carrier) if self.carrier else 0)
-            arc = surface.arc(center, radius)  # from the surface's own origin: zero where it is placed
-            result.append(arc - arc.xreplace(coords.at_rest_in_reference()) + radius * turned)
+            rolled = self.rolled(coords)
+            result.append(rolled - rolled.xreplace(coords.at_rest_in_reference()) - self.slipped)
         return result
+
+    def slip(self, coords) -> sp.Expr:
+        """The rate the touching point slides along the surface (zero where it grips)."""
+        surface, center, radius = self._geometry(coords)
+        return self._slip_velocity(coords).dot(surface.tangent_at(center, radius))
+
+    def rolled(self, coords) -> sp.Expr:
+        """The arc along the surface (from its own origin) plus R theta, both as seen from the
+        carrier: constant while it grips."""
+        surface, center, radius = self._geometry(coords)
+        turned = coords.angle(self.body) - (coords.angle(self.carrier) if self.carrier else 0)
+        return surface.arc(center, radius) + radius * turned
 
     def _kinetic_force(self, coords) -> sp.Matrix:
         surface, center, radius = self._geometry(coords)

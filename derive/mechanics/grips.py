@@ -1,0 +1,88 @@
+"""Where a slipping part grips: a slipping clutch's plates, which rub with a constant kinetic
+couple against their relative turning (derive.parts.slipping_clutch), or a body sliding on a
+surface under kinetic friction (a bowling ball launched without spin). The state is the first
+instant the slip rate is zero (`when: {grips: CLUTCH or BODY}`).
+
+While it slips the friction's direction is that of the slip at the start, so the scene's
+equations are those of constant loads; where the accelerations a they give are the same
+everywhere (no coordinate or rate in them: disks on axles, a brake on a wheel), the motion is
+q = q0 + u0 t + a t^2/2 and the slip rate s = s0 + s' t falls to zero at t = -s0/s'. Where they
+change along the motion derive refuses the state. From then on it grips: the scene has a clutch
+in the slipping clutch's place, a rolling contact in the sliding one's (derive.state_answers). The other route is
+Newton–Euler's equations integrated until the slip vanishes (derive.crosschecks).
+
+>>> import sympy as sp
+>>> from derive.mechanics import lagrange
+>>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.parts.pin import Pin
+>>> from derive.parts.slipping_clutch import SlippingClutch
+>>> from derive.scene import Body, Scene
+>>> I1, I2, C, w = sp.symbols("I1 I2 C omega", positive=True)
+>>> disks = {n: Body(n, "custom", sp.Symbol("M"), {}, i) for n, i in (("lower", I1), ("upper", I2))}
+>>> plates = SlippingClutch("plates", "upper", "lower", C)
+>>> scene = Scene(disks, (Pin("axle", "lower", (0, 0)), Pin("shaft", "upper", (0, 0), "lower", (0, 0))),
+...               loads=(plates,))
+>>> coords = Coordinates(scene)
+>>> start = {**{s: 0 for s in coords.state}, coords.of("lower", "theta").u: w}
+>>> middle = lambda e: float(e.subs({I1: 1, I2: 1, C: 1, w: 1}))
+>>> gripped = grip(coords, start, plates, lagrange.derive(scene, coords), middle)
+>>> gripped.took[0]
+I1*I2*omega/(C*(I1 + I2))
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.mechanics.derivation import Derivation, Step, tidy
+from derive.mechanics.kinematics import Coordinates
+from derive.mechanics.states import Reached, StateError, StateLimit
+from derive.parts.slipping_clutch import SlippingClutch
+
+
+def grip(coords: Coordinates, start: dict, part, derivation: Derivation, decide) -> Reached:
+    """The state where `part` (a SlippingClutch, or a Contact sliding with kinetic friction)
+    first grips, from the state `start` (every coordinate and rate), by the route `derivation`
+    of the scene with it slipping; `decide` gives an expression's value at the middle of the
+    ranges. Its `took` is the time to get there, with the step that found it.
+
+    Raises StateError where it does not slip at the start, StateLimit where the accelerations
+    change along the motion."""
+    slip = part.slip(coords)
+    s0 = tidy(slip.xreplace(start))
+    way = sp.sign(decide(s0))
+    if way == 0:
+        raise StateError(f"{_named(part)} does not slip at the start: it grips there already")
+    ways = {sp.sign(slip): way, sp.sign(-slip): -way}  # a clutch's couple: the way it slips at the start
+    solved = derivation.at({}).raw
+    accelerations = {c: tidy(solved[c.a].xreplace(ways)) for c in coords.all}
+    if any(a.free_symbols & coords.state for a in accelerations.values()):
+        raise StateLimit(f"find where {_named(part)} grips where the accelerations change while it slips (only "
+                         "constant ones are followed, as of disks on axles or a ball on a level floor)")
+    rate = tidy(slip.xreplace({c.u: a for c, a in accelerations.items()}))  # s', constant
+    took = tidy(-s0 / rate)
+    values = {}
+    for c, a in accelerations.items():
+        values[c.q] = tidy(start[c.q] + start[c.u] * took + a * took**2 / 2)
+        values[c.u] = tidy(start[c.u] + a * took)
+    t = sp.Symbol("t")
+    timing = Step(f"The slip rate {sp.sstr(slip)} = {sp.sstr(s0)} + ({sp.sstr(rate)}) t falls to zero at",
+                  (sp.Eq(t, took),))
+    steps = (Step(f"While {_named(part)} slips, {_friction(part)} acts against the slip, the way it slips at the "
+                  "start; the accelerations are then constant",
+                  tuple(sp.Eq(c.a, a) for c, a in accelerations.items() if a != 0)),
+             timing,
+             Step("Then, with constant accelerations (q = q0 + u0 t + a t^2/2, u = u0 + a t)",
+                  tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0)))
+    positive = ((way * s0, f"{_named(part)} slips the other way at these values"),
+                (took, f"the friction of {_named(part)} does not slow its slipping: it never grips"))
+    return Reached(values, positive, steps, took=(took, timing))
+
+
+def _named(part) -> str:
+    return f"the clutch {part.name}" if isinstance(part, SlippingClutch) else f"the {part.body} on {part.surface}"
+
+
+def _friction(part) -> str:
+    if isinstance(part, SlippingClutch):
+        return f"the kinetic couple {sp.sstr(part.couple)}"
+    return f"kinetic friction {sp.sstr(part.kinetic)} N"
