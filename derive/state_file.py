@@ -109,7 +109,8 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     if "restitution" in raw and kind != "bounce":
         raise reader.fail(f"{field}.event.restitution", f"a {kind} has no restitution (a bounce has)")
     if kind == "move":
-        return State(name, start=spec["from"], event=_move(reader, body, to, f"{field}.event", places, constraints))
+        return State(name, start=spec["from"], event=_move(reader, body, to, f"{field}.event", places, constraints,
+                                                           spec["from"], found))
     if not isinstance(to, str) or to not in bodies:
         raise reader.fail(f"{field}.event.to", f"no body {to!r} (bodies: {', '.join(bodies)})")
     if body == to:
@@ -127,24 +128,32 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     return State(name, start=spec["from"], event=Event(kind, body, to, restitution))
 
 
-def _move(reader: Reader, body: str, to, field: str, places, constraints: list) -> Event:
-    """A move of a point mass held by one pin to another body, to a point of that body."""
+def _move(reader: Reader, body: str, to, field: str, places, constraints: list, start: str,
+          found: dict[str, State]) -> Event:
+    """A move of a point mass held by one pin to another body (a joint of the scene, or the pin
+    a stick on the way from the state `start` made), to a point of that body."""
     if places.bodies[body].rotates:
         raise reader.fail(f"{field}.move", f"the {body} turns: a move carries a point mass (shape: point) on the "
                                            "body it is pinned to")
     holding = [p for p in constraints if body in p.bodies()]
-    pins = [p for p in holding if isinstance(p, Pin) and p.to is not None]
+    pins = [(p.name, p.to if p.body == body else p.body) for p in holding if isinstance(p, Pin) and p.to is not None]
+    # an impact on the way that stuck the point mass to a body pinned it there, by a pin named after its state
+    state = found.get(start)
+    while state is not None:
+        if state.event and state.event.kind == "stick" and body in (state.event.body, state.event.to):
+            pins.append((state.name, state.event.to if state.event.body == body else state.event.body))
+            holding.append(state)
+        state = found.get(state.start)
     if len(holding) != 1 or len(pins) != 1:
         raise reader.fail(f"{field}.move", f"a move carries a point mass held by one pin to another body (the {body} "
                                            f"is held by {', '.join(p.name for p in holding) or 'nothing'})")
-    pin, = pins
-    host = pin.to if pin.body == body else pin.body
+    (joint, host), = pins
     where, place = places.point(to, f"{field}.to", ground=False)
     if where != host:
-        raise reader.fail(f"{field}.to", f"the {body} moves on the {host}, which its pin {pin.name} holds it to: "
+        raise reader.fail(f"{field}.to", f"the {body} moves on the {host}, which its pin {joint} holds it to: "
                                          f"give a point of the {host} ({host}.POINT or {{{host}: [x, y]}})")
     places.on_body(host, place, f"{field}.to")
-    return Event("move", body, host, place=place, joint=pin.name)
+    return Event("move", body, host, place=place, joint=joint)
 
 
 #: The states where a part's force falls to zero (the part's kind and the force's key), or where a

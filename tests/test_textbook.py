@@ -552,6 +552,12 @@ EXPECTED.update({
         "V": lambda s: 2 * s.R * s.w0 / 7,
         "t": lambda s: 2 * s.R * s.w0 / (7 * s.mu * s.g),
     },
+    # Serway & Jewett ch. 11: m v R = (I + m R^2) w1 = (I + m r^2) w2, I = M R^2/2.
+    "child_jumps_then_walks_in": {
+        "w1": lambda s: s.m * s.v * s.R / (s.M * s.R**2 / 2 + s.m * s.R**2),
+        "w2": lambda s: s.m * s.v * s.R / (s.M * s.R**2 / 2 + s.m * s.r**2),
+        "K2": lambda s: (s.M * s.R**2 / 2 + s.m * s.r**2) * (s.m * s.v * s.R / (s.M * s.R**2 / 2 + s.m * s.r**2)) ** 2 / 2,
+    },
     # Halliday, Resnick & Walker ch. 15: tau = -kappa theta at any angle, so T = 2 pi sqrt(I/kappa),
     # I = M R^2/2, whatever the amplitude (here by energy between the turning points, a quadrature).
     "torsion_pendulum_wide_swing": {
