@@ -29,16 +29,24 @@ from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
 ROUTES = ("lagrange", "newton_euler")
 
 
+#: The parallel-axis check, as a worked solution reads it.
+PARALLEL_AXIS = "The parallel-axis theorem gives the same moment of inertia as direct integration."
+
+
 class CheckFailure(RuntimeError):
     """Two routes of derivation disagree: a bug in the engine, never bad input."""
 
 
 @dataclass(frozen=True)
 class Check:
+    """One independent check: its `name` and `method`, the `detail` `derive check` and the JSON
+    give, and its `reading`, one sentence a student can read in a worked solution."""
+
     name: str
     passed: bool
     method: str
     detail: str
+    reading: str
 
 
 class CrossChecks:
@@ -84,7 +92,9 @@ class CrossChecks:
                 if agree(first, second) is None:
                     raise CheckFailure(f"{self.problem.id}: {ask.name} is {first} one way, {second} the other")
                 agreed.setdefault(name, []).append(ask.name)
-        result += [Check(name, True, "symbolic", f"{', '.join(asks)} agree") for name, asks in agreed.items()]
+        result += [Check(name, True, "symbolic", f"{', '.join(asks)} agree",
+                         f"A second, independent derivation gives the same {', '.join(asks)}.")
+                   for name, asks in agreed.items()]
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
                 check = self._parallel_axis_check(ask)
@@ -105,7 +115,8 @@ class CrossChecks:
                     f"ask.{name}.unit", f"declared {ask.unit}, but the derived answer has dimension {dimension or 'none'}"
                 )
             found[name] = ask.unit
-        return Check("dimensions", True, "dimensional analysis", ", ".join(f"{k} [{v}]" for k, v in found.items()))
+        return Check("dimensions", True, "dimensional analysis", ", ".join(f"{k} [{v}]" for k, v in found.items()),
+                     "Every answer has the units it should: " + ", ".join(f"{k} in {v}" for k, v in found.items()) + ".")
 
     def _routes_check(self) -> Check:
         """Lagrange's method and Newton–Euler give the same answers (symbolically) and the same
@@ -131,7 +142,9 @@ class CrossChecks:
                                            + (f" where the {regime.name}" if regime.name else ""))
         asked = "symbolic" if methods <= {"symbolic"} else "symbolic or numeric"
         return Check("lagrange_vs_newton_euler", True, f"answers {asked}, all unknowns numeric",
-                     f"answers and {len(lag.unknowns)} accelerations and forces agree")
+                     f"answers and {len(lag.unknowns)} accelerations and forces agree",
+                     "Lagrange's method and the Newton–Euler equations (the forces and torques on each body) give "
+                     "the same accelerations and forces.")
 
     def energy_ledger(self, scene=None) -> dict[str, sp.Expr]:
         """Kinetic energy (translational, rotational), potential energy and the power of the
@@ -198,7 +211,11 @@ class CrossChecks:
         if impacts:
             detail += (f"; {impacts} impact{'s' if impacts > 1 else ''} or move{'s' if impacts > 1 else ''}: generalized "
                        "momenta against each body's impulses or moments")
-        return Check("states", True, "numeric", detail)
+        reading = ("Newton–Euler's equations, integrated numerically from the start, reach each state at the same "
+                   "place, speed and time as the derivation.")
+        if impacts:
+            reading += " In each impact or move, the velocities agree with each body's impulse and momentum."
+        return Check("states", True, "numeric", detail, reading)
 
     def _period_check(self) -> Check:
         """Each period found by energy between the turning points (not a pendulum's elliptic
@@ -225,9 +242,11 @@ class CrossChecks:
                 raise CheckFailure(f"{self.problem.id}: the period at amplitude {ask.amplitude} is {expected} by energy, "
                                    f"{None if simulated is None else 2 * simulated[0]} by Newton–Euler's motion")
         if not compared:
-            return Check("period", True, "symbolic", "a pendulum's period: the elliptic integral by both routes")
+            return Check("period", True, "symbolic", "a pendulum's period: the elliptic integral by both routes",
+                         "Both methods give the same period, an elliptic integral.")
         return Check("period", True, "numeric", "the period at its amplitude by energy between the turning points "
-                                                "against Newton–Euler's motion, integrated")
+                                                "against Newton–Euler's motion, integrated",
+                     "The period found from energy agrees with Newton–Euler's motion integrated over a swing.")
 
     def _impact_check(self, name: str) -> None:
         """The velocities and impulses just after an impact by Lagrange (generalized momenta and
@@ -282,7 +301,9 @@ class CrossChecks:
                                        + (f" where the {regime.name}" if regime.name else ""))
             kinds.add(ledger["power_nonconservative"] == 0)
         kind = "conserved" if kinds == {True} else "changes by the work of the applied forces"
-        return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work")
+        reading = ("Energy is conserved: the constraint forces do no work." if kinds == {True} else
+                   "The energy changes only by the work of the applied forces: the constraint forces do no work.")
+        return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work", reading)
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, three regimes at most
     def _check_states(self, index: int) -> list[dict[sp.Symbol, sp.Expr]]:
@@ -329,7 +350,8 @@ class CrossChecks:
                 if agree(a, b) is None:
                     raise CheckFailure(f"{self.problem.id}: {ask.name} is {a} by conservation, {b} by impulses")
                 compared += 1
-        return Check("conservation_vs_impulses", True, "symbolic", f"{compared} quantities agree")
+        return Check("conservation_vs_impulses", True, "symbolic", f"{compared} quantities agree",
+                     "The conservation laws and the impulses on each body give the same results.")
 
     def _orbit_check(self) -> Check:
         """Lagrange's and Newton's radial equations agree; for an ellipse, the energy is the same
@@ -346,7 +368,8 @@ class CrossChecks:
             if agree(*at) is None or agree(at[0], k["energy"]) is None:
                 raise CheckFailure(f"{self.problem.id}: the energy differs at periapsis and apoapsis")
             detail += "; energy equal at periapsis and apoapsis"
-        return Check("lagrange_vs_newton_euler", True, "symbolic", detail)
+        return Check("lagrange_vs_newton_euler", True, "symbolic", detail,
+                     "Lagrange's method and Newton's second law give the same orbit.")
 
     def _tensor_check(self) -> Check:
         """Each moment of inertia again as n^T I n from the inertia tensor (a different integral)."""
@@ -361,7 +384,8 @@ class CrossChecks:
                 raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} integrated, {other} "
                                    "from the tensor")
             compared.append(name)
-        return Check("tensor_vs_integral", True, "symbolic", ", ".join(compared) or "no derived moment")
+        return Check("tensor_vs_integral", True, "symbolic", ", ".join(compared) or "no derived moment",
+                     "The inertia tensor gives the same moments of inertia as direct integration.")
 
     def _wheel_check(self) -> Check:
         """The vector route (L0 + tau dt) and the rate route (dphi/dt = tau_perp / |L|) agree; the
@@ -372,7 +396,9 @@ class CrossChecks:
         if agree(exact, gyroscope.axis_turn(*arguments, "rate")) is None:
             raise CheckFailure(f"{self.problem.id}: the two routes to the axis turn differ")
         error = tidy(gyroscope.small_angle(*arguments) / exact - 1)
-        return Check("vector_vs_rate", True, "numeric", f"exact turns agree; small-angle / exact - 1 = {sp.sstr(error)}")
+        return Check("vector_vs_rate", True, "numeric", f"exact turns agree; small-angle / exact - 1 = {sp.sstr(error)}",
+                     "The turn of the axis from the change of the angular momentum vector agrees with the one from "
+                     "its rate.")
 
     def _top_check(self) -> Check:
         """Lagrange's and Newton–Euler's (dH/dt = torque) precession conditions agree; the fast-top
@@ -383,7 +409,8 @@ class CrossChecks:
         slow = self._top("precession.slow")
         error = tidy(self._top("precession.fast_top") / slow - 1)
         return Check("lagrange_vs_newton_euler", True, "symbolic",
-                     f"precession conditions agree; fast-top rate / slow root - 1 = {sp.sstr(error)}")
+                     f"precession conditions agree; fast-top rate / slow root - 1 = {sp.sstr(error)}",
+                     "Lagrange's method and the torque equation give the same steady precession.")
 
     def _path_check(self) -> Check:
         """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""
@@ -394,7 +421,9 @@ class CrossChecks:
                 if agree(other, self.expressions[name]) is None:
                     raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} by projection, "
                                        f"{other} by sympy.physics.mechanics")
-        return Check("path_vs_mechanics", True, "symbolic", "every path quantity agrees")
+        return Check("path_vs_mechanics", True, "symbolic", "every path quantity agrees",
+                     "The kinematics of sympy.physics.mechanics give the same velocities and accelerations on the "
+                     "path.")
 
     def _system_check(self) -> Check:
         """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,
@@ -409,7 +438,8 @@ class CrossChecks:
             if agree(total, many_bodies.reduced_mass(bodies[0].mass, bodies[1].mass) * gap.dot(gap)) is None:
                 raise CheckFailure(f"{self.problem.id}: I differs from mu d^2")
             detail += "; I = mu d^2"
-        return Check("system_inertia", True, "symbolic", detail)
+        return Check("system_inertia", True, "symbolic", detail,
+                     "The system's mass and moment of inertia agree by two routes.")
 
     def _energy_check(self) -> Check:
         """Energy conservation gives the same speeds as the accelerations integrated."""
@@ -421,7 +451,8 @@ class CrossChecks:
                 raise CheckFailure(f"{self.problem.id}: energy gives {balance.speed}, dynamics {dynamics} for {body}")
             methods.add(method)
         return Check("energy_vs_dynamics", True, "symbolic" if methods == {"symbolic"} else "numeric",
-                     f"speeds of {', '.join(self.energy_balances)} agree")
+                     f"speeds of {', '.join(self.energy_balances)} agree",
+                     "Energy conservation and the equations of motion give the same speeds.")
 
     def _parallel_axis_check(self, ask: Ask) -> Check | None:
         body = self.scene.bodies[ask.quantity.target]
@@ -432,7 +463,7 @@ class CrossChecks:
                 raise CheckFailure(f"{self.problem.id}: the shifted axis gives {self.expressions[ask.name]}, "
                                    f"the parallel-axis theorem {theorem}")
             return Check("parallel_axis", True, "symbolic",
-                         f"{ask.name}: integration about the shifted axis equals I_cm + M h^2")
+                         f"{ask.name}: integration about the shifted axis equals I_cm + M h^2", PARALLEL_AXIS)
         if derived.distance_from_center == 0:
             return None
         center_axis = inertia.PLANAR_AXIS[body.shape]
@@ -442,7 +473,7 @@ class CrossChecks:
             raise CheckFailure(f"{self.problem.id}: the parallel-axis theorem gives {theorem}, integration {derived.I}")
         return Check(
             "parallel_axis", True, "symbolic",
-            f"{ask.name}: integration equals I_cm + M d^2 with d = {derived.distance_from_center}",
+            f"{ask.name}: integration equals I_cm + M d^2 with d = {derived.distance_from_center}", PARALLEL_AXIS,
         )
 
 

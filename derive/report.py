@@ -91,7 +91,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
     rest = solution.coordinates.at_rest_in_reference()
     equations = ({route: [sp.sstr(at_state(e, rest)) for e in d.at_rest_equations] for route, d in solution.derivations.items()}
                  if kinds & DYNAMIC_KINDS else {})
-    checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail} for c in solution.checks()}
+    checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail, "reading": c.reading}
+              for c in solution.checks()}
     energy = ({k: sp.sstr(v) for k, v in solution.energy_ledger().items()} if kinds & DYNAMIC_KINDS else {})
     regimes = {}
     at_rest = {a.quantity.kind for a in problem.asks.values() if a.state is None}  # regimes are the placement's

@@ -316,6 +316,15 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
     return prepared
 
 
+def _check_latex(check, problem: Problem) -> str:
+    """A check as a worked solution prints it: its reading, the units of the answers in math."""
+    if check.name == "dimensions":
+        units_of = ", ".join(f"${sp.latex(sp.Symbol(n))}$ in ${units.latex_unit(a.unit)}$" if units.latex_unit(a.unit)
+                             else f"${sp.latex(sp.Symbol(n))}$ a pure number" for n, a in problem.asks.items())
+        return f"Every answer has the units it should: {units_of}."
+    return render.tex_escape(check.reading)
+
+
 def _solutions_context(item: _ProblemVariants) -> dict:
     problem, solution = item.problem, item.solution
     routes = [
@@ -342,7 +351,7 @@ def _solutions_context(item: _ProblemVariants) -> dict:
             "results": [{"symbol": sp.latex(sp.Symbol(n)), "value": item.shown(n, results[n]),
                          "unit": units.latex_unit(a.unit)} for n, a in problem.asks.items()],
         })
-    checks = [f"{c.name.replace('_', ' ')}: {c.detail} ({c.method})" for c in solution.checks()]
+    checks = [_check_latex(c, problem) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
     return {"title": problem.title, "source": problem.source, "routes": routes, "answers": answers,
             "variants": variants, "checks": checks, "corrections": list(problem.corrections),
             "figure": figure.tikz(problem)}

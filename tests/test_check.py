@@ -1,8 +1,9 @@
 """`derive check` and the simulation check: they pass on the library and catch what is wrong."""
+import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
-from derive import simulate
+from derive import library, simulate
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.problem import load
@@ -58,3 +59,20 @@ def test_simulation_checks_the_work_of_the_pull(monkeypatch):
     monkeypatch.setattr(simulate, "nonconservative_power", lambda scene, coords: sp.Integer(0))  # pretend the pull does no work
     report = simulate.check(Solution(load("tugged_spool")))
     assert not report.passed and "work-energy" in report.notes[0]
+
+
+READINGS = [p.stem for p in library.problem_files()]
+
+
+def _reads_as_a_sentence(text: str) -> bool:
+    """Prose a student can read: a capitalised sentence, no engine words or ASCII pseudo-math."""
+    return (text[:1].isupper() and text.endswith(".") and "(symbolic)" not in text and "(numeric)" not in text
+            and not any(w in text for w in ("lagrange_vs", "_vs_", "T + V", "d/dt(", "dL/dq", "I_cm")))
+
+
+@pytest.mark.parametrize("problem_id", READINGS)
+def test_every_check_of_the_library_reads_as_a_sentence(problem_id):
+    """Worked solutions and handouts print each check's reading (issue 15): "Energy is conserved:
+    the constraint forces do no work.", never "work_energy: T + V conserved (numeric)"."""
+    checks = Solution(load(problem_id)).checks()
+    assert checks and all(_reads_as_a_sentence(c.reading) for c in checks), [c.reading for c in checks]

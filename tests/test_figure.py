@@ -547,3 +547,14 @@ def test_a_custom_body_touching_that_is_no_bar_leaves_the_figure_out():
     assert figure.tikz(problem.parse(text, FIGURES / "ladder_left.yaml")) is not None
     for changed in (off_the_line, foot_only):
         assert figure.tikz(problem.parse(changed, FIGURES / "ladder_left.yaml")) is None
+
+
+def test_the_handouts_checks_read_as_sentences_with_units_in_math(tmp_path):
+    """Issue 15: "Energy is conserved: the constraint forces do no work.", the answers' units in
+    math; never the engine's "work_energy: T + V conserved (numeric)"."""
+    done = run_derive("handout", "string_wrapped_disk", "--out", str(tmp_path / "h"))
+    assert done.returncode == 0, done.stderr
+    text = (tmp_path / "h" / "string_wrapped_disk.tex").read_text()
+    checks = text.split(r"\section*{Checks}")[1]
+    assert r"$T$ in $\mathrm{N}$" in checks and "Energy is conserved: the constraint forces do no work." in checks
+    assert "(numeric)" not in checks and "work_energy" not in checks and "T + V" not in checks

@@ -613,3 +613,6 @@ def test_textbook_closed_form(path):
     checks = report.solve(problem, solution=solution)["checks"]
     assert checks["lagrange_vs_newton_euler"]["passed"], checks
     assert all(c["passed"] for c in checks.values()), checks
+    # what a worked solution prints of them: sentences a student can read
+    assert all(c["reading"][:1].isupper() and c["reading"].endswith(".") and "_vs_" not in c["reading"]
+               for c in checks.values()), checks
