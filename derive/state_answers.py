@@ -358,14 +358,15 @@ class StateAnswers:
             if isinstance(part, SlippingClutch):
                 slip = part.slip(self.coordinates).xreplace(values)
                 result.append((sp.sign(self._sample(slip)) * slip, True,
-                               f"the plates of {part.name} turn together in the state {name}: they grip there (give "
-                               f"a state when: {{grips: {part.name}}} and go on from it)"))
+                               f"the plates of {part.name} do not slip in the state {name} the way they do at the "
+                               f"middle of the ranges (they turn together, or slip the other way): narrow the ranges, "
+                               f"or give a state when: {{grips: {part.name}}} and go on from it"))
         for part in scene.constraints:
             if isinstance(part, Contact) and part.regime == "kinetic":
                 result.append((-part.direction * part.slip(self.coordinates).xreplace(values), True,
-                               f"the {part.body} does not slide on {part.surface} the way its kinetic friction "
-                               f"opposes in the state {name} (it grips there: give a state when: "
-                               f"{{grips: {part.body}}})"))
+                               f"the {part.body} does not slide on {part.surface} in the state {name} the way it does "
+                               f"at the middle of the ranges, which its kinetic friction opposes (it slides the other "
+                               f"way, or grips): narrow the ranges"))
         for part in scene.constraints:
             slipping = self._slipping(part.name) if isinstance(part, Clutch) else None
             if slipping is not None:

@@ -5,9 +5,10 @@ instant the slip rate is zero (`when: {grips: CLUTCH or BODY}`).
 
 While it slips the friction's direction is that of the slip at the start, so the scene's
 equations are those of constant loads; where the accelerations a they give are the same
-everywhere (no coordinate or rate in them: disks on axles, a brake on a wheel), the motion is
-q = q0 + u0 t + a t^2/2 and the slip rate s = s0 + s' t falls to zero at t = -s0/s'. Where they
-change along the motion derive refuses the state. From then on it grips: the scene has a clutch
+everywhere (the start's, checked along the motion they make: disks on axles, a brake on a
+wheel, a ball on a level floor), the motion is q = q0 + u0 t + a t^2/2 and the slip rate
+s = s0 + s' t falls to zero at t = -s0/s'. Where they change along the motion derive refuses
+the state. From then on it grips: the scene has a clutch
 in the slipping clutch's place, a rolling contact in the sliding one's (derive.state_answers). The other route is
 Newton–Euler's equations integrated until the slip vanishes (derive.crosschecks).
 
@@ -31,6 +32,7 @@ I1*I2*omega/(C*(I1 + I2))
 """
 from __future__ import annotations
 
+import numpy as np
 import sympy as sp
 
 from derive.mechanics.derivation import Derivation, Step, tidy
@@ -53,17 +55,17 @@ def grip(coords: Coordinates, start: dict, part, derivation: Derivation, decide)
     if way == 0:
         raise StateError(f"{_named(part)} does not slip at the start: it grips there already")
     ways = {sp.sign(slip): way, sp.sign(-slip): -way}  # a clutch's couple: the way it slips at the start
-    solved = derivation.at({}).raw
+    solved = derivation.at(start).raw
     accelerations = {c: tidy(solved[c.a].xreplace(ways)) for c in coords.all}
-    if any(a.free_symbols & coords.state for a in accelerations.values()):
-        raise StateLimit(f"find where {_named(part)} grips where the accelerations change while it slips (only "
-                         "constant ones are followed, as of disks on axles or a ball on a level floor)")
     rate = tidy(slip.xreplace({c.u: a for c, a in accelerations.items()}))  # s', constant
     took = tidy(-s0 / rate)
     values = {}
     for c, a in accelerations.items():
         values[c.q] = tidy(start[c.q] + start[c.u] * took + a * took**2 / 2)
         values[c.u] = tidy(start[c.u] + a * took)
+    if not _constant(coords, start, accelerations, took, derivation, decide):
+        raise StateLimit(f"find where {_named(part)} grips where the accelerations change while it slips (only "
+                         "constant ones are followed, as of disks on axles or a ball on a level floor)")
     t = sp.Symbol("t")
     timing = Step(f"The slip rate {sp.sstr(slip)} = {sp.sstr(s0)} + ({sp.sstr(rate)}) t falls to zero at",
                   (sp.Eq(t, took),))
@@ -76,6 +78,25 @@ def grip(coords: Coordinates, start: dict, part, derivation: Derivation, decide)
     positive = ((way * s0, f"{_named(part)} slips the other way at these values"),
                 (took, f"the friction of {_named(part)} does not slow its slipping: it never grips"))
     return Reached(values, positive, steps, took=(took, timing))
+
+
+def _constant(coords: Coordinates, start: dict, accelerations: dict, took: sp.Expr, derivation: Derivation,
+              decide) -> bool:
+    """Whether, at the middle of the ranges, the route's equations give the start's accelerations
+    all along the motion they make (at a quarter, half, three quarters and just before the grip;
+    to 1e-8 of the largest): checked on the motion, as solving the general equations takes
+    minutes where a cord swings."""
+    parameters = set().union(*(e.free_symbols for e in derivation.equations)) - coords.state - set(derivation.unknowns)
+    unknowns = derivation.numeric({p: decide(p) for p in parameters})
+    a = np.array([decide(accelerations[c]) for c in coords.all])
+    floor = 1e-8 * (1 + max(abs(a)))
+    for fraction in (sp.Rational(1, 4), sp.Rational(1, 2), sp.Rational(3, 4), sp.Rational(999, 1000)):
+        t = fraction * took
+        y = [decide(start[c.q] + start[c.u] * t + accelerations[c] * t**2 / 2) for c in coords.all]
+        y += [decide(start[c.u] + accelerations[c] * t) for c in coords.all]
+        if np.max(np.abs(unknowns(np.array(y))[:len(a)] - a)) > floor:
+            return False
+    return True
 
 
 def _named(part) -> str:
