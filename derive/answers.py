@@ -168,6 +168,7 @@ class Solution(StateAnswers, CrossChecks):
         if q.kind == "oscillation":
             return self._exact_period(ask.amplitude, route)[0]
         if q.kind in RATE_KINDS:
+            self._refuse_speed_after_a_shift(ask)
             return self._rate(q, ask.state)
         derivation = self.derivations[route]
         solved = self.in_state(route, ask.state)

@@ -275,10 +275,10 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
         raise reader.fail(field, f"the state {raw} is the placement, at time zero: ask the time in a state the "
                                  "motion gets to (when:)")
     event = scene.states[raw].event
-    if event and event.kind == "move" and quantity.kind not in ("angular_velocity", "kinetic_energy"):
+    if event and event.kind == "move" and quantity.kind not in ("angular_velocity", "kinetic_energy", "speed"):
         raise reader.fail(field, f"after a move, where the bodies are depends on how it is made (a turntable turns "
                                  f"while a child walks on it), and so do the directions of their velocities and "
-                                 f"forces: in the state {raw} ask an angular velocity or the kinetic energy")
+                                 f"forces: in the state {raw} ask an angular velocity, a speed or the kinetic energy")
     if quantity.kind == "time" and event:
         raise reader.fail(field, f"the state {raw} is just after an impact, which takes no time: ask the time in a "
                                  "state the motion gets to (when:)")

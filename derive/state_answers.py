@@ -289,6 +289,16 @@ class StateAnswers:
         at = {where: reached.values[path.s], rate: reached.values[path.coordinate.u]}
         return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general, path.frozen).raw.items()})
 
+    def _refuse_speed_after_a_shift(self, ask) -> None:
+        """A body's speed after a move is the same however the move is made where the bodies can
+        only turn about the ground's pins (a turntable); where a set of them was free to shift (a
+        bead on a free rod) it is not, and the ask is refused."""
+        moved = self._chain.impacts.get(ask.state) if ask.state else None
+        if ask.quantity.kind == "speed" and isinstance(moved, moves.Moved) and any(s.along for s in moved.kept):
+            raise self.problem.error(f"ask.{ask.name}.in", f"after the move {ask.state} the bodies are free to shift, "
+                                                           "so their speeds depend on how the move is made: ask an "
+                                                           "angular velocity or the kinetic energy")
+
     def _rate(self, q: Quantity, name: str) -> sp.Expr:
         """A body's velocity, speed, angular velocity, position or angle in a named state, the
         kinetic energy of every body there, or the time the motion takes to get there."""

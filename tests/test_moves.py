@@ -2,6 +2,8 @@
 textbook closed forms are in tests/textbook/states (a child walking to a turntable's center, a
 student on a stool pulling in two weights); here a free body, each refusal, and the second
 route shown to catch a wrong move."""
+from pathlib import Path
+
 import pytest
 import sympy as sp
 
@@ -150,3 +152,17 @@ def test_the_second_route_catches_a_wrong_move(tmp_path, monkeypatch):
     monkeypatch.setattr(moves.Symmetry, "momentum", spins_twice)
     with pytest.raises(CheckFailure, match="after the move middle"):
         report.solve(problem.load(path), {}, 4)
+
+
+def test_a_speed_after_a_move_is_asked_only_where_nothing_shifts(tmp_path):
+    """On a turntable the child's speed after walking in to R/2 is omega R/2 however the walk was
+    made; on a free rod the bead's is not (the rod's drift adds to it at an angle the walk decides)."""
+    text = (Path(__file__).parent / "textbook/states/child_walks_to_center.yaml").read_text()
+    text = text.replace("to: platform.center}", "to: {platform: [R/2, 0]}}").replace(
+        "ask:\n", "ask:\n  v: {meaning: the child's speed, of: child.speed, in: centered, unit: m/s}\n")
+    solution = Solution(problem.load(write(tmp_path, text)))
+    R = solution.problem.parameters["R"].symbol
+    assert sp.simplify(solution.expression("v") - solution.expression("omega") * R / 2) == 0
+    free = FREE.replace("MIDDLE", "{rod: [L/4, 0]}").replace(
+        "ask:\n", "ask:\n  v: {meaning: the bead's speed, of: bead.speed, in: middle, unit: m/s}\n")
+    assert "free to shift" in refused(tmp_path, free, "ask.v.in")
