@@ -20,7 +20,7 @@ from derive import composite, inertia, limits, numeric
 from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
-from derive.mechanics import friction
+from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step, root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
@@ -110,7 +110,7 @@ class Solution(StateAnswers, CrossChecks):
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
     def _exact_period(self, amplitude: sp.Expr, route: str):
         """(period, steps) at an amplitude: the elliptic integral of a pendulum, else twice the time
-        between the turning points (derive.mechanics.states.period; Newton–Euler's motion
+        between the turning points (derive.mechanics.durations.period; Newton–Euler's motion
         integrated checks it: crosschecks)."""
         try:
             return exact_period(self.scene, self.derivations[route], amplitude)
@@ -128,7 +128,7 @@ class Solution(StateAnswers, CrossChecks):
                                      f"{coordinate.q}, not an angle")
         try:
             with limits.time_limit("the period at its amplitude"):
-                return state_motion.period(self.dynamics_scene, self.coordinates, coordinate, amplitude,
+                return durations.period(self.dynamics_scene, self.coordinates, coordinate, amplitude,
                                            self.derivations["lagrange"], self._sample)
         except state_motion.StateLimit as error:
             raise self.problem.limit(str(error)) from None

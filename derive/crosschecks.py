@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive import inertia, limits, numeric, units
-from derive.mechanics import gyroscope, impacts, lagrange, many_bodies, orbits, paths, states, top
+from derive.mechanics import gyroscope, impacts, integrated_motion, lagrange, many_bodies, orbits, paths, states, top
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import tidy
 from derive.problem import Ask, Problem
@@ -196,7 +196,7 @@ class CrossChecks:
             except ValueError as error:
                 raise CheckFailure(f"{self.problem.id}: the time to the state {name}: {error}") from None
             horizon = 2 * expected_time + 1
-            simulated = states.integrate_to(newton_euler, coords, values, reached, self._condition(state), horizon,
+            simulated = integrated_motion.integrate_to(newton_euler, coords, values, reached, self._condition(state), horizon,
                                             start)
             if simulated is None:
                 raise CheckFailure(f"{self.problem.id}: Newton–Euler's motion from the start does not reach the "
@@ -237,7 +237,7 @@ class CrossChecks:
             symbols -= coords.state | set(newton_euler.unknowns)
             values = sample_points(self.problem, sp.Add(*symbols), count=1)[0]
             expected = float(numeric.evaluate(period, values, 12))
-            simulated = states.integrate_to(newton_euler, coords, values, turned, states.Stops(), expected + 1)
+            simulated = integrated_motion.integrate_to(newton_euler, coords, values, turned, states.Stops(), expected + 1)
             if simulated is None or abs(2 * simulated[0] - expected) > 1e-7 * expected:
                 raise CheckFailure(f"{self.problem.id}: the period at amplitude {ask.amplitude} is {expected} by energy, "
                                    f"{None if simulated is None else 2 * simulated[0]} by Newton–Euler's motion")

@@ -20,7 +20,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import friction, grips, impacts, lagrange, moves, newton_euler
+from derive.mechanics import durations, friction, grips, impacts, lagrange, moves, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.clutch import Clutch
@@ -321,7 +321,7 @@ class StateAnswers:
         reached = self.states[name]
         if reached.took is not None:
             return reached.took
-        time, step = state_motion.duration(reached.path, reached.end)
+        time, step = durations.duration(reached.path, reached.end)
         # |s1 - s0| by the ranges; an integral's integrand as it is (simplifying it cancels digits)
         return time.xreplace({a: self._within_ranges(a, absolute=True) for a in time.atoms(sp.Abs)}), step
 

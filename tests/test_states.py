@@ -11,7 +11,7 @@ from conftest import run_derive
 from derive import problem, report
 from derive.crosschecks import CheckFailure
 from derive.errors import EngineLimit
-from derive.mechanics import states
+from derive.mechanics import durations, states
 
 ROD = """\
 id: rod_states
@@ -219,8 +219,8 @@ def test_a_wrong_threshold_is_caught_by_the_integrated_motion(tmp_path, monkeypa
 def test_a_wrong_time_is_caught_by_the_integrated_motion(tmp_path, monkeypatch):
     path = tmp_path / "problem.yaml"
     path.write_text(HANGING.replace("SPIN", "2*sqrt(g/L)"))
-    original = states.duration
-    monkeypatch.setattr(states, "duration", lambda *args: (original(*args)[0] * 101 / 100, original(*args)[1]))
+    original = durations.duration
+    monkeypatch.setattr(durations, "duration", lambda *args: (original(*args)[0] * 101 / 100, original(*args)[1]))
     with pytest.raises(CheckFailure, match="differ"):
         report.solve(problem.load(path), {}, 4)
 

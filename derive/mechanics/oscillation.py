@@ -65,7 +65,7 @@ class OscillationLimit(OscillationError):
 
 class NotAPendulum(OscillationError):
     """The equation of motion is not q'' = -w0^2 sin(q): the period at an amplitude has no elliptic
-    closed form here (derive.mechanics.states.period integrates it)."""
+    closed form here (derive.mechanics.durations.period integrates it)."""
 
 
 def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Oscillation:

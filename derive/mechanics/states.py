@@ -12,8 +12,8 @@ cords, smooth or rolling contacts do no work):
 
 with V the potential energy of gravity and springs and Q the generalized force of the other loads
 (forces and torques that depend on the configuration alone). The other route is Newton–Euler's
-equations integrated numerically from the start to the state (`integrate_to`, checked at every
-solve by derive.crosschecks).
+equations integrated numerically from the start to the state (derive.mechanics.integrated_motion,
+checked at every solve by derive.crosschecks); the time it takes is derive.mechanics.durations.
 
 >>> import sympy as sp
 >>> from derive.mechanics import lagrange
@@ -36,7 +36,6 @@ from functools import cached_property
 
 import numpy as np
 import sympy as sp
-from scipy.integrate import solve_ivp
 
 from derive.mechanics.derivation import Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
@@ -487,57 +486,6 @@ def along(path: Path, force: sp.Expr, derivation: Derivation) -> sp.Expr:
     return tidy(solved.xreplace({rate: sp.sqrt(path.kinetic / path.inertia)}))
 
 
-def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
-    """The time the motion takes along the path from its start to s = `end`: t = integral of
-    ds/|s'|. Where s'' is constant (s'^2 = K/k linear in s) in closed form, t = (s'1 - s'0)/s'';
-    else as an integral, evaluated numerically (derive.numeric vouches for its digits by two
-    precisions)."""
-    s, s0 = path.s, path.start[path.s]
-    squared = tidy(path.kinetic / path.inertia)  # s'^2
-    polynomial = sp.Poly(squared, s) if squared.is_polynomial(s) else None
-    if polynomial is not None and polynomial.degree() <= 1:
-        slope = polynomial.coeff_monomial(s)
-        acceleration = slope / 2  # d(s'^2)/dt = 2 s' s'' = slope s'
-        if slope == 0:
-            time = tidy((end - s0) / path.rate(s0))
-        else:
-            time = tidy((path.rate(end) - path.rate(s0)) / acceleration)
-        symbol = sp.Symbol("t")
-        return time, Step(f"The acceleration along {s} is constant, {s}'' = {sp.sstr(acceleration)}, so "
-                          f"t = ({s}'1 - {s}'0)/{s}''", (sp.Eq(symbol, time),))
-    # Over w in [0, 1], the fraction of the way w^2 (3 - 2 w), flat at both ends: the 1/sqrt
-    # singularities where the motion starts from rest or ends at a turning point become smooth
-    # (mpmath's tanh-sinh quadrature then gives 20 digits at 35 where over the fraction itself it
-    # gave 11). Not simplified: sympy would fold the polynomials and cancel digits near the ends.
-    w = sp.Dummy("w")
-    where = s0 + w**2 * (3 - 2 * w) * (end - s0)
-    # One root (w (1 - w) >= 0 inside it): a sum of two integrands, which simplifying would split
-    # the integral into, diverges at a turning point in each part.
-    integrand = 6 * sp.sqrt(path.inertia.xreplace({s: where}) * (w * (1 - w)) ** 2 / path.kinetic.xreplace({s: where}))
-    time = sp.Abs(end - s0) * sp.Integral(integrand, (w, 0, 1))
-    return time, Step(f"The acceleration along {s} is not constant: t is the integral of d{s}/|{s}'| from the "
-                      "start, evaluated numerically", (sp.Eq(sp.Symbol("t"), time),))
-
-
-def period(scene: Scene, coords: Coordinates, coordinate: Coordinate, amplitude: sp.Expr, derivation: Derivation,
-           sample) -> tuple[sp.Expr, tuple[Step, ...], Reached]:
-    """The period of a scene of one degree of freedom swinging about its placement (a stable
-    equilibrium) with `amplitude` in `coordinate`: released from rest there, it gets to its
-    turning point on the other side in half a period (energy along the motion, `reach`; the time
-    by `duration`), and comes back the same way. Also the state of that turning point."""
-    dependent = solve_gaps(scene, coords, sample, keep=coordinate)
-    released = {c.q: sp.sympify(dependent.get(c.q, c.q)).xreplace({coordinate.q: amplitude})  # safe: engine exprs
-                for c in coords.all}
-    start = {**released, **{c.u: sp.Integer(0) for c in coords.all}}
-    turned = reach(scene, coords, start, Stops(), derivation, sample)
-    half, step = duration(turned.path, turned.end)
-    steps = (Step(f"Released from rest at {coordinate.q} = {sp.sstr(amplitude)}, the turning point on the other side",
-                  tuple(sp.Eq(c.q, turned.values[c.q]) for c in coords.all if c == coordinate)),
-             *turned.steps, step,
-             Step("It comes back the same way: the period is twice that time", (sp.Eq(sp.Symbol("T"), 2 * half),)))
-    return 2 * half, steps, turned
-
-
 def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -> sp.Expr:
     """The first s ahead of the start (in the path's direction) where `function` of s is zero:
     sympy's roots of `equation` (with their turns by 2 pi where s is in a trigonometric
@@ -648,49 +596,3 @@ def _real(expr: sp.Expr, decide) -> bool:
         return bool(np.isfinite(decide(expr)))
     except (TypeError, ValueError):
         return False
-
-
-def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reached: Reached, condition,
-                 horizon: float, start: dict | None = None):
-    """The state `reached` (its path from its start, or from `start` where it has none) found
-    again by integrating this route's equations of motion numerically (scipy DOP853, rtol
-    1e-11) at the parameter `values`, until its condition first holds: (the time, every
-    coordinate and velocity), or None when it does not within `horizon` seconds. Where a
-    coordinate gets to a value, the path's own coordinate gets to its value at the state (the
-    state's may be extremal there, as a disk's center at its lowest, which an integration never
-    sees it cross); where an expression of the state and the forces vanishes, it falls through
-    zero."""
-    unknowns = derivation.numeric(values)
-    n = len(coords.all)
-    state = [c.q for c in coords.all] + [c.u for c in coords.all]
-
-    def rates(t, y):
-        return np.concatenate([y[n:], unknowns(y)[:n]])
-
-    if isinstance(condition, Gets):
-        index = coords.all.index(reached.path.coordinate)
-        end = float(sp.N(reached.end.xreplace(values), 20))
-
-        def event(t, y):
-            return y[index] - end
-    elif isinstance(condition, Stops):
-        index = coords.all.index(reached.path.coordinate)
-
-        def event(t, y):
-            return y[n + index]
-        event.direction = -reached.path.direction
-    else:
-        force = sp.lambdify(state + list(derivation.unknowns), condition.force.xreplace(values), "numpy")
-
-        def event(t, y):
-            return force(*y, *unknowns(y))
-        event.direction = -1
-    event.terminal = True
-    start = reached.path.start if start is None else start
-    y0 = np.array([float(sp.N(start[s].xreplace(values), 20)) for s in state])
-    run = solve_ivp(rates, (0, horizon), y0, method="DOP853", rtol=1e-11, atol=1e-13, events=event)
-    if not len(run.t_events[0]):
-        return None
-    y = run.y_events[0][0]
-    return run.t_events[0][0], {**{c.q: y[i] for i, c in enumerate(coords.all)},
-                                **{c.u: y[n + i] for i, c in enumerate(coords.all)}}
