@@ -47,6 +47,12 @@ class Chain:
     made: dict[str, object]
 
 
+def _in_place(joints: tuple, made) -> tuple:
+    """The joints events made, with `made` in place of the one of its name (a moved pin, a
+    gripping clutch in place of the slipping one), else added."""
+    return tuple(j for j in joints if j.name != made.name) + (made,)
+
+
 class StateAnswers:
     """What Solution answers in a named state."""
 
@@ -76,12 +82,12 @@ class StateAnswers:
                         reached = grips.grip(self.coordinates, start, self._slipping(state.until[1]),
                                              self._derivations_with(joints[name])["lagrange"], self._sample)
                         made[name] = self._gripped(state.until[1], reached.values)
-                        joints[name] = tuple(j for j in joints[name] if j.name != made[name].name) + (made[name],)
+                        joints[name] = _in_place(joints[name], made[name])
                     elif state.event is None:
                         reached = self._state(state, result, joints[name])
                     elif state.event.kind == "move":
                         made[name] = moves.moved_pin(self._scene_with(joints[name]), state.event, state.event.place)
-                        joints[name] = tuple(j for j in joints[name] if j.name != made[name].name) + (made[name],)
+                        joints[name] = _in_place(joints[name], made[name])
                         solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name])
                     else:
@@ -215,8 +221,7 @@ class StateAnswers:
     def _after_move(self, name: str, before: dict, moved: moves.Moved) -> state_motion.Reached:
         """The state after a move, with the kinetic energy the forces that make it add."""
         event = self.scene.states[name].event
-        kinetic, _ = lagrange.energies(self.dynamics_scene, self.coordinates)
-        added = tidy(kinetic.xreplace(moved.values) - kinetic.xreplace(before))
+        added = tidy(-impacts.energy_lost(self.dynamics_scene, self.coordinates, before, moved.values))
         steps = (Step(f"The move: the {event.body} is carried to {sp.sstr(tuple(event.place))} on the {event.to} "
                       "by forces inside the scene (they come in equal and opposite pairs)", ()),
                  *moved.steps,
@@ -351,14 +356,14 @@ class StateAnswers:
                 + [tidy(1 - f.args[0] ** 2) for v in exprs for f in v.atoms(sp.acos, sp.asin)])]
             result += [(expr, True, f"{meaning} ({name})") for expr, meaning in reached.positive]
             result += self._grip_conditions(name)
-            result += self._clutch_conditions(name, scene, forces)
+            result += self._slip_conditions(name, scene, forces)
             # (a force the state is defined by, zero there, has no sign to keep: it was positive on the way)
             result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
                        for part in (*scene.constraints, *scene.loads) for sign in part.signs()
                        if not sign.expression.has(*reached.vanished)]
         return result + self._ramp_conditions()
 
-    def _clutch_conditions(self, name: str, scene, forces: dict) -> list[tuple[sp.Expr, bool, str]]:
+    def _slip_conditions(self, name: str, scene, forces: dict) -> list[tuple[sp.Expr, bool, str]]:
         """A slipping clutch slips in the state, the way it does at the middle of the ranges, and a
         sliding contact the way its kinetic friction opposes (where it stops slipping it grips: a
         state `when: {grips: ...}`); a clutch that has gripped needs a couple of at most its

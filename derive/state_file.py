@@ -26,8 +26,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
     `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
     stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`), a cord goes slack
     (`{slack: CORD}`), a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static:
-    mu_s}) or a slipping clutch's plates come to turn together (`{grips: CLUTCH}`). `event:` is an impact or a move in the state from: (see EVENTS), and the state is the
-    one just after it."""
+    mu_s}) or a slipping clutch or a sliding body grips (`{grips: CLUTCH or BODY}`). `event:` is
+    an impact or a move in the state from: (see EVENTS), and the state is the one just after it."""
     result, bodies = {}, places.bodies
     taken = {*bodies, *(p.name for p in constraints), "placement", "ground"}  # an impact's joint is named so
     for name, spec in reader.named(raw, "states").items():
@@ -65,11 +65,11 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             continue
         if not isinstance(spec["when"], dict):
             raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY}, "
-                                               "{slack: CORD}, {slips: BODY} and {grips: CLUTCH}")
+                                               "{slack: CORD}, {slips: BODY} and {grips: CLUTCH or BODY}")
         when = reader.mapping(spec["when"], f"{field}.when", free=True)
         if len(when) != 1:
             raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY}, "
-                                               "{slack: CORD}, {slips: BODY} or {grips: CLUTCH}")
+                                               "{slack: CORD}, {slips: BODY} or {grips: CLUTCH or BODY}")
         (key, value), = when.items()
         if key in THRESHOLDS:
             result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",

@@ -22,6 +22,22 @@ def run_derive(*args: str, library: Path | None = None) -> subprocess.CompletedP
     return subprocess.run([str(DERIVE), *args], capture_output=True, text=True, cwd=ROOT, timeout=600, env=env)
 
 
+def write_problem(folder: Path, text: str) -> Path:
+    """A problem file with `text`, in `folder`."""
+    path = folder / "problem.yaml"
+    path.write_text(text)
+    return path
+
+
+def refused(folder: Path, text: str, field: str, *options: str, exit_code: int = 2) -> str:
+    """`derive solve` of a problem file with `text` (and `options`): the exit status `exit_code`
+    and one line of error naming `field`, which is returned."""
+    result = run_derive("solve", str(write_problem(folder, text)), *options)
+    assert result.returncode == exit_code, result.stdout + result.stderr
+    assert field in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    return result.stderr
+
+
 def copy_library(folder: Path) -> Path:
     """A private copy of the problem library that a test may break."""
     library = folder / "library"

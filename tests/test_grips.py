@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import refused, run_derive, write_problem
 from derive import problem, report
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
@@ -52,24 +52,11 @@ SET = [f"--set={name}={value}" for name, value in
        (("I1", 0.03), ("I2", 0.0015), ("w0", 4.5), ("C", 0.015), ("tau", 0.0015))]
 
 
-def write(tmp_path, text):
-    path = tmp_path / "problem.yaml"
-    path.write_text(text)
-    return path
-
-
-def refused(tmp_path, text, field, *options, exit_code=2):
-    result = run_derive("solve", str(write(tmp_path, text)), *options)
-    assert result.returncode == exit_code, result.stdout + result.stderr
-    assert field in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
-    return result.stderr
-
-
 def test_a_driven_turntable_grips_and_the_motor_then_turns_both(tmp_path):
     """While the felt slips, I1 w1' = tau - C and I2 w2' = C: the slip w0 closes at (C - tau)/I1 +
     C/I2, so they grip at t = w0/((C - tau)/I1 + C/I2), turning at (I1 w0 + tau t)/(I1 + I2) (the
     angular momentum the motor's torque adds); the motor then turns both, tau/(I1 + I2)."""
-    path = write(tmp_path, DRIVEN)
+    path = write_problem(tmp_path, DRIVEN)
     result = run_derive("solve", str(path), "--format", "json", *SET)
     assert result.returncode == 0, result.stderr
     answers = json.loads(result.stdout)["answers"]
@@ -94,15 +81,15 @@ def test_a_clutch_that_would_need_more_than_its_couple_after_gripping_is_a_broke
     """With constant loads the clutch that grips never needs more than C after (it would not have
     gripped); where a later state's loads would ask more, the condition says it slips again: here
     the couple the scene needs is put at 2 C."""
-    solution = Solution(problem.load(write(tmp_path, DRIVEN)))
+    solution = Solution(problem.load(write_problem(tmp_path, DRIVEN)))
     clutch = solution.scene_in("together").constraint("felt")
     C = solution.problem.parameters["C"].symbol
     needed = {clutch.unknowns()["torque"]: 2 * C}
-    (slip_again,) = solution._clutch_conditions("together", solution.scene_in("together"), needed)
+    (slip_again,) = solution._slip_conditions("together", solution.scene_in("together"), needed)
     expression, strict, meaning = slip_again
     assert sp.simplify(expression + 3 * C**2) == 0 and not strict and "would slip again" in meaning
     held = {clutch.unknowns()["torque"]: solution.in_state("lagrange", "together").raw[clutch.unknowns()["torque"]]}
-    assert solution._sample(solution._clutch_conditions("together", solution.scene_in("together"), held)[0][0]) > 0
+    assert solution._sample(solution._slip_conditions("together", solution.scene_in("together"), held)[0][0]) > 0
 
 
 def test_the_second_route_catches_a_wrong_grip(tmp_path, monkeypatch):
@@ -116,7 +103,7 @@ def test_the_second_route_catches_a_wrong_grip(tmp_path, monkeypatch):
 
     monkeypatch.setattr(grips, "grip", late)
     with pytest.raises(CheckFailure, match="the state together"):
-        report.solve(problem.load(write(tmp_path, DRIVEN)), {}, 4)
+        report.solve(problem.load(write_problem(tmp_path, DRIVEN)), {}, 4)
 
 
 def test_a_brake_stop_by_energy_is_refused_and_grips_is_the_way(tmp_path):

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import refused, run_derive, write_problem
 from derive import problem, report
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
@@ -68,23 +68,10 @@ question: |
 """
 
 
-def write(tmp_path, text):
-    path = tmp_path / "problem.yaml"
-    path.write_text(text)
-    return path
-
-
-def refused(tmp_path, text, field, exit_code=2):
-    result = run_derive("solve", str(write(tmp_path, text)))
-    assert result.returncode == exit_code, result.stdout + result.stderr
-    assert field in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
-    return result.stderr
-
-
 def test_a_clutch_takes_the_energy_of_the_difference_of_the_rates(tmp_path):
     """K0 - K1 = I1 I2 (w1 - w2)^2 / (2 (I1 + I2)), the textbook's loss in a perfectly inelastic
     coupling, here from the kinetic energies the engine derives before and after."""
-    solution = Solution(problem.load(write(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))))
+    solution = Solution(problem.load(write_problem(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))))
     M1, M2, R, w1, w2 = sp.symbols("M1 M2 R w1 w2", positive=True)
     w2 = next(s for s in solution.expression("K0").free_symbols if s.name == "w2")
     I1, I2 = M1 * R**2 / 2, M2 * R**2 / 2
@@ -103,7 +90,7 @@ def test_a_weld_at_the_impact_agrees_with_a_clutch_on_a_shared_axle(tmp_path):
 def test_the_second_route_catches_a_wrong_impact(tmp_path, monkeypatch):
     """Newton–Euler's impulses against Lagrange's generalized momenta: an impulse equation with
     one body's mass off by a factor is caught."""
-    path = write(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))
+    path = write_problem(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))
     original = impacts._impulses
 
     def wrong(scene, coords, before, at, bounce):
@@ -117,7 +104,7 @@ def test_the_second_route_catches_a_wrong_impact(tmp_path, monkeypatch):
 
 def test_an_impact_that_a_floor_would_have_to_pull_through_is_refused(tmp_path):
     """A bullet from below lifts the block off the floor: the floor's impulse would pull."""
-    across = run_derive("solve", str(write(tmp_path, FLOOR.replace("VX", "v").replace("VY", "0"))),
+    across = run_derive("solve", str(write_problem(tmp_path, FLOOR.replace("VX", "v").replace("VY", "0"))),
                         "--format", "json", "--set", "m=0.01", "--set", "M=1", "--set", "v=101")
     assert across.returncode == 0, across.stderr
     assert float(json.loads(across.stdout)["answers"]["u"]["value"]) == pytest.approx(0.01 * 101 / 1.01)
@@ -214,7 +201,7 @@ question: |
     text = text.replace("  w1: {meaning: angular velocity of the lower disk, unit: rad/s, range: [10, 30], sig_figs: 2}\n"
                         "  w2: {meaning: angular velocity of the upper disk, unit: rad/s, range: [-5, 5], sig_figs: 2}\n",
                         "  tau: {meaning: torque, unit: N*m, range: [1, 2], sig_figs: 2}\n")
-    solution = Solution(problem.load(write(tmp_path, text)))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
     M1, M2, R, tau = sp.symbols("M1 M2 R tau", positive=True)
     alpha = tau / ((M1 + M2) * R**2 / 2)
     assert sp.simplify(solution.expression("alpha") - alpha) == 0
@@ -290,7 +277,7 @@ def test_a_smooth_bounce_off_a_wheel_on_its_axle_does_not_turn_it(tmp_path):
     """The impulse of a smooth contact on a round body is along its radius, through the axle: the
     wheel does not turn, and the ball's velocity along the radius reverses, scaled by e (the
     axle takes the impulse), while the tangential one is kept."""
-    solution = Solution(problem.load(write(tmp_path, WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e}"))))
+    solution = Solution(problem.load(write_problem(tmp_path, WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e}"))))
     v, e = (next(s for s in solution.expression("vx").free_symbols if s.name == n) for n in ("v", "e"))
     assert solution.expression("omega") == 0
     n = sp.Matrix([-sp.cos(sp.pi / 6), sp.sin(sp.pi / 6)])  # outward, at the ball
@@ -342,7 +329,7 @@ def test_a_free_impact_keeps_momentum_and_angular_momentum(tmp_path):
 question: |
   A bullet embeds in the end of a free rod.
 """
-    solution = Solution(problem.load(write(tmp_path, text)))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
     # about the center of mass of the rod and bullet: m v (L/2) ... = (I_cm + ...) omega; by the
     # textbook, omega = 6 m v/(L (M + 4 m)) for a bullet into the end of a free rod
     M, m, v, L = (next(s for s in solution.expression("omega").free_symbols if s.name == n) for n in ("M", "m", "v", "L"))

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import refused, run_derive, write_problem
 from derive import problem, report
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
@@ -67,24 +67,11 @@ question: |
 """
 
 
-def write(tmp_path, text):
-    path = tmp_path / "problem.yaml"
-    path.write_text(text)
-    return path
-
-
-def refused(tmp_path, text, field, exit_code=2):
-    result = run_derive("solve", str(write(tmp_path, text)))
-    assert result.returncode == exit_code, result.stdout + result.stderr
-    assert field in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
-    return result.stderr
-
-
 def test_a_free_body_keeps_its_momentum_and_its_angular_momentum_about_the_center_of_mass(tmp_path):
     """A bead at the end of a free rod (spinning about its own middle, so the whole moves) walks
     to the middle: the center of mass moves on at m w0 L/(2 (M + m)), and the angular momentum
     about it, w0 L^2 (M/12 + m M/(4 (M + m))), is the rod's alone after: omega = w0 (M + 4 m)/(M + m)."""
-    solution = Solution(problem.load(write(tmp_path, FREE.replace("MIDDLE", "rod.center"))))
+    solution = Solution(problem.load(write_problem(tmp_path, FREE.replace("MIDDLE", "rod.center"))))
     m, M, L, w0 = (solution.problem.parameters[n].symbol for n in ("m", "M", "L", "w0"))
     omega = w0 * (M + 4 * m) / (M + m)
     assert sp.simplify(solution.expression("omega") - omega) == 0
@@ -98,7 +85,7 @@ def test_a_free_body_keeps_its_momentum_and_its_angular_momentum_about_the_cente
 def test_a_move_under_a_weights_moment_is_refused_as_an_engine_limit(tmp_path):
     """Standing up on a swing: the weight has a moment about the pivot, so no momentum is kept
     whatever the move's duration; derive does not model the quick move, and says so (exit 1)."""
-    result = run_derive("solve", str(write(tmp_path, SWING)))
+    result = run_derive("solve", str(write_problem(tmp_path, SWING)))
     assert result.returncode == 1, result.stdout + result.stderr
     assert "derive cannot yet find the rates after this move: it keeps no momentum" in result.stderr and "scene.states.up" in result.stderr
 
@@ -141,7 +128,7 @@ def test_a_state_may_not_take_a_joints_name(tmp_path):
 def test_the_second_route_catches_a_wrong_move(tmp_path, monkeypatch):
     """Newton–Euler's moments against Lagrange's symmetries: angular momentum with the bodies'
     spins counted twice is caught."""
-    path = write(tmp_path, FREE.replace("MIDDLE", "rod.center"))
+    path = write_problem(tmp_path, FREE.replace("MIDDLE", "rod.center"))
     original = moves.Symmetry.momentum
 
     def spins_twice(self, coords):
@@ -160,7 +147,7 @@ def test_a_speed_after_a_move_is_asked_only_where_nothing_shifts(tmp_path):
     text = (Path(__file__).parent / "textbook/states/child_walks_to_center.yaml").read_text()
     text = text.replace("to: platform.center}", "to: {platform: [R/2, 0]}}").replace(
         "ask:\n", "ask:\n  v: {meaning: the child's speed, of: child.speed, in: centered, unit: m/s}\n")
-    solution = Solution(problem.load(write(tmp_path, text)))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
     R = solution.problem.parameters["R"].symbol
     assert sp.simplify(solution.expression("v") - solution.expression("omega") * R / 2) == 0
     free = FREE.replace("MIDDLE", "{rod: [L/4, 0]}").replace(

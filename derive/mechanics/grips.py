@@ -25,7 +25,7 @@ Newton–Euler's equations integrated until the slip vanishes (derive.crosscheck
 ...               loads=(plates,))
 >>> coords = Coordinates(scene)
 >>> start = {**{s: 0 for s in coords.state}, coords.of("lower", "theta").u: w}
->>> middle = lambda e: float(sp.sympify(e).subs({I1: 1, I2: 1, C: 1, w: 1, sp.Symbol("M"): 1}))
+>>> middle = lambda e: float((sp.Integer(0) + e).subs({I1: 1, I2: 1, C: 1, w: 1, sp.Symbol("M"): 1}))
 >>> gripped = grip(coords, start, plates, lagrange.derive(scene, coords), middle)
 >>> gripped.took[0]
 I1*I2*omega/(C*(I1 + I2))
