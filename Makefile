@@ -21,7 +21,9 @@ sheet: setup
 
 test: setup
 	$(BIN)/python -m pyflakes derive tests benchmarks
-	$(BIN)/pytest -q -n auto  # one worker per core (pytest-xdist): the suite takes 14 min on 2 cores, 24 on one
+	# one worker per core (pytest-xdist): the suite takes 8 to 14 min on 2 cores. A fixed hash seed:
+	# sympy orders terms by string hashes, and at some seeds one scene takes minutes (tests/textbook/PENDING.md)
+	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto
 
 clean:
 	rm -rf build .pytest_cache
