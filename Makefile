@@ -21,8 +21,8 @@ sheet: setup
 
 test: setup
 	$(BIN)/python -m pyflakes derive tests benchmarks
-	# one worker per core (pytest-xdist): the suite takes 8 to 14 min on 2 cores. A fixed hash seed:
-	# sympy orders terms by string hashes, and at some seeds one scene takes minutes (tests/textbook/PENDING.md)
+	# one worker per core (pytest-xdist): the suite takes 7 to 14 min on 2 cores. A fixed hash seed, so
+	# that a run can be repeated: sympy orders terms by string hashes
 	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto
 
 clean:
