@@ -14,6 +14,7 @@ import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
 from derive import limits
+from derive.mechanics import jets
 
 
 @dataclass(frozen=True)
@@ -148,18 +149,17 @@ class Derivation:
         the derivative along the motion, d/ds v(q0 + s u0, u0) at s = 0, or for the rate of a gap
         g, d^2/ds^2 g(q0 + s u0): one derivative in one symbol where the general dv/dt needs one
         per coordinate and velocity (the chain rule, exactly)."""
-        s = sp.Dummy("s")
-        path = {c.q: state[c.q] + s * state[c.u] for c in self.coords.all}
+        line = {c.q: (state[c.q], state[c.u]) for c in self.coords.all}
         velocities = {c.u: state[c.u] for c in self.coords.all}
         # The state's other values (parameters at a sample point) first: the derivative is then
         # taken of a number-valued geometry, and the row holds no parameter the state gives.
-        given = {k: v for k, v in state.items() if k not in path and k not in velocities}
+        given = {k: v for k, v in state.items() if k not in line and k not in velocities}
         rows = []
         for i, v in enumerate(self.rates):
             gap = self.gaps[i] if self.gaps else None
-            along = sp.diff(gap.xreplace(given).xreplace(path), s, 2) if gap is not None else \
-                sp.diff(v.xreplace(given).xreplace(velocities).xreplace(path), s)
-            rows.append(sp.Eq(self._slope_term(i, state) + along.xreplace({s: 0}), 0, evaluate=False))
+            along = jets.along(gap.xreplace(given), line)[2] if gap is not None else \
+                jets.along(v.xreplace(given).xreplace(velocities), line)[1]
+            rows.append(sp.Eq(self._slope_term(i, state) + along, 0, evaluate=False))
         return rows
 
     def numeric(self, values: dict[sp.Symbol, sp.Expr]):
