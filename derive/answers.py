@@ -278,14 +278,22 @@ class Solution(StateAnswers, CrossChecks):
         state.update({c.q: 0 for c in coords.all if c.q not in state})
         velocity = speed * loop.tangent_at(top, radius)
         state.update({coords.of(body, "x").u: velocity[0], coords.of(body, "y").u: velocity[1]})
-        if self.scene.bodies[body].rotates:  # rolling: the contact point is at rest
+        if contact.rolling:  # the contact point is at rest
             rate = contact.conditions(coords)[-1].xreplace(state)
             state[coords.of(body, "theta").u] = sp.solve(rate, coords.of(body, "theta").u)[0]
+        elif self.scene.bodies[body].rotates:  # sliding without friction from rest: nothing turns it
+            if contact.has_friction:
+                raise self.problem.error("ask", f"the {body} slides with friction: energy is not conserved on the way "
+                                                "to the loop")
+            state[coords.of(body, "theta").u] = sp.Integer(0)
         normal = sp.simplify(derivation.at(state).raw[contact.unknowns()["normal"]])
         critical = [s for s in sp.solve(normal, speed) if s.is_positive is not False]
         if len(critical) != 1:
             raise self.problem.error("ask", f"the normal force at the top of the loop vanishes at {critical}")
-        balance = speed_after_drop(self.scene, body, drop)
+        try:
+            balance = speed_after_drop(self.scene, body, drop)
+        except ConservationError as error:
+            raise self.problem.error("ask", str(error)) from None
         (needed,) = sp.solve(sp.Eq(balance.speed**2, critical[0] ** 2), drop)
         height = tidy(needed + top[1] - (loop.middle[1] - loop.path_radius(radius)))  # above the lowest point
         steps = (

@@ -15,6 +15,7 @@ import csv
 import io
 import json
 import random
+import sys
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
@@ -358,7 +359,9 @@ def _solutions_context(item: _ProblemVariants) -> dict:
 
 
 def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int,
-          with_distractors: bool = False):
+          with_distractors: bool = False, choice: bool = False):
+    """(rows of the CSV key, the JSON key). With `choice`, an answer that too few mistakes apply
+    to is marked in the JSON key as asked as a number, with why (`numerical`)."""
     rows, key = [], {"set": problem_set.id, "title": problem_set.title, "seed": seed,
                      "conventions": "SI units; angles in radians (rad is dimensionless); y up; counter-clockwise "
                                     "positive; values to the significant figures shown",
@@ -375,9 +378,11 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
                                 "expr": sp.sstr(item.solution.expressions[n]), "unit": a.unit,
                                 "meaning": a.meaning} for n, a in item.problem.asks.items()},
             }
-            if with_distractors:  # wrong answers for multiple choice, from mistaken set-ups
+            if with_distractors or choice:  # wrong answers for multiple choice, from mistaken set-ups
                 for n, wrong in item.wrong(values).items():
                     entry["problems"][item.problem.id]["answers"][n]["distractors"] = wrong
+                    if choice and answers[n] is not None and len(wrong) < distractors.WANTED:
+                        entry["problems"][item.problem.id]["answers"][n]["numerical"] = _too_few(len(wrong))
             for n, a in item.problem.asks.items():
                 rows.append({"variant": number, "problem": item.problem.id, "answer": n,
                              "value": answers[n] if answers[n] is not None else sp.sstr(item.solution.expressions[n]),
@@ -387,10 +392,27 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
     return rows, key
 
 
+def _too_few(found: int) -> str:
+    return (f"asked as a number: only {found} distinct wrong option{'' if found == 1 else 's'} derived "
+            f"(multiple choice needs {distractors.WANTED})")
+
+
+def _numerical_notes(key: dict) -> list[str]:
+    """One line per answer that stays numerical in a multiple-choice set, with its variants."""
+    variants: dict[tuple[str, str, str], list[int]] = {}
+    for entry in key["variants"]:
+        for problem_id, problem in entry["problems"].items():
+            for name, answer in problem["answers"].items():
+                if "numerical" in answer:
+                    variants.setdefault((problem_id, name, answer["numerical"]), []).append(entry["variant"])
+    return [f"{problem_id}: ask.{name}, variant{'s' if len(numbers) > 1 else ''} {', '.join(map(str, numbers))}: "
+            f"{note}" for (problem_id, name, note), numbers in variants.items()]
+
+
 def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool) -> list[lms.Item]:
     """Every numeric answer of every variant, with its question and tolerance, for the LMS
-    exports; with `choice`, with its distractors too (an answer with fewer than two stays
-    numerical)."""
+    exports; with `choice`, with its distractors too (an answer with fewer than
+    distractors.WANTED stays numerical)."""
     items = []
     for number in range(1, variants + 1):
         for item in prepared:
@@ -403,7 +425,8 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool) ->
                     continue
                 choices = tuple(d["value"] for d in wrong.get(name, ()))
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
-                                      answers[name], ask.unit, tolerances[name], choices if len(choices) >= 2 else ()))
+                                      answers[name], ask.unit, tolerances[name],
+                                      choices if len(choices) >= distractors.WANTED else ()))
     return items
 
 
@@ -432,7 +455,9 @@ def build(reference: str, *, variants: int | None = None, seed: int | None = Non
                                     "figure": drawn} for item, drawn in zip(prepared, figures)]}
         for n in range(1, variants + 1)
     ]
-    rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats or choice)
+    rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
+    for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
+        print(f"derive: warning: {note}", file=sys.stderr, flush=True)
     items = _lms_items(prepared, variants, choice) if formats & {"moodle", "qti"} else []
     for target in sorted(formats & {"moodle", "qti"}):
         lms.check(items, target)  # before anything is written

@@ -1,5 +1,7 @@
 """Rolling without slipping at a given speed (notes §2, §2.1): the rotation rate, the distance
 per turn and the kinetic-energy split, by the center of mass and by the contact point."""
+import dataclasses
+
 import pytest
 import sympy as sp
 
@@ -71,3 +73,19 @@ def test_a_ball_of_finite_size_needs_27_tenths_of_its_path_radius(placed, tmp_pa
     problem = load(path)
     R, r = problem.parameters["R"].symbol, problem.parameters["r"].symbol
     assert sp.simplify(Solution(problem).expression("h_roll") - sp.Rational(27, 10) * (R - r)) == 0
+
+
+def test_a_ball_sliding_without_friction_in_a_loop_needs_five_halves_of_its_path_radius(tmp_path):
+    """A ball that slides without friction never spins (nothing turns it), so it needs what a point
+    does on its path of radius R - r: 5 (R - r) / 2. Deriving it failed with an IndexError (the
+    rolling condition was looked for on a sliding contact); kinetic friction is refused, as energy
+    is not conserved then."""
+    text = load("loop_the_loop_ball").path.read_text().replace("contact: rolling", "contact: sliding")
+    problem = parse(text, tmp_path / "slide.yaml")
+    R, r = problem.parameters["R"].symbol, problem.parameters["r"].symbol
+    assert sp.simplify(Solution(problem).expression("h_roll") - sp.Rational(5, 2) * (R - r)) == 0
+    (contact,) = problem.scene.constraints
+    rough = dataclasses.replace(contact, kinetic=sp.Rational(1, 10))
+    rough = dataclasses.replace(problem, scene=dataclasses.replace(problem.scene, constraints=(rough,)))
+    with pytest.raises(ProblemError, match="energy is not conserved"):
+        Solution(rough).expression("h_roll")

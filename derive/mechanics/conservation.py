@@ -26,7 +26,7 @@ import sympy as sp
 
 from derive.mechanics.derivation import Step, root, tidy
 from derive.mechanics.kinematics import Coordinates, solve_gaps
-from derive.mechanics.lagrange import energies
+from derive.mechanics.lagrange import energies, nonconservative_power
 from derive.scene import Scene
 
 
@@ -47,7 +47,8 @@ def speed_after_drop(scene: Scene, body: str, drop: sp.Expr) -> EnergyBalance:
     component = scene.component(body)
     coords = Coordinates(component)
     kinetic, potential = energies(component, coords)
-    k = _kinetic_per_speed_squared(component, coords, body, kinetic)
+    idle = _idle(component, coords, kinetic, potential)
+    k = _kinetic_per_speed_squared(component, coords, body, kinetic.xreplace(idle), idle)
     potential_change = _potential_change(component, coords, body, potential, drop)
     speed = root(-potential_change / k)
     v = sp.Symbol("v")
@@ -60,15 +61,41 @@ def speed_after_drop(scene: Scene, body: str, drop: sp.Expr) -> EnergyBalance:
     return EnergyBalance(speed, k, -potential_change, steps)
 
 
-def _kinetic_per_speed_squared(scene: Scene, coords: Coordinates, body: str, kinetic: sp.Expr) -> sp.Expr:
-    """T / v^2, with every velocity expressed through the body's by the constraints dg/dt = 0."""
-    rates = [coords.ddt(gap) for c in scene.constraints for gap in c.gaps(coords)]
-    velocities = [c.u for c in coords.all]
+def _rates(scene: Scene, coords: Coordinates) -> list[sp.Expr]:
+    """The constraints at velocity level, dg/dt = 0."""
+    return [coords.ddt(gap) for c in scene.constraints for gap in c.gaps(coords)]
+
+
+def _idle(scene: Scene, coords: Coordinates, kinetic: sp.Expr, potential: sp.Expr) -> dict[sp.Symbol, sp.Expr]:
+    """Velocities that no constraint ties, no potential or other force drives and T does not couple
+    to another (the spin of a ball sliding without friction): each one's momentum dT/du is c u and
+    conserved, so from rest it stays zero.
+
+    >>> from derive.scene import Body, Scene
+    >>> M, R = sp.symbols("M R", positive=True)
+    >>> scene = Scene({"ball": Body("ball", "sphere", M, {"radius": R})}, ())
+    >>> coords = Coordinates(scene)
+    >>> sorted(map(str, _idle(scene, coords, *energies(scene, coords))))
+    ['thetadot_ball', 'xdot_ball', 'ydot_ball']
+    """
+    tied = set().union(*(rate.free_symbols for rate in _rates(scene, coords)))
+    power = nonconservative_power(scene, coords)
+    return {c.u: sp.Integer(0) for c in coords.all
+            if c.u not in tied and not potential.has(c.q) and not power.has(c.u)
+            and all(sp.diff(kinetic, c.u, other.u) == 0 for other in coords.all if other is not c)}
+
+
+def _kinetic_per_speed_squared(scene: Scene, coords: Coordinates, body: str, kinetic: sp.Expr,
+                               idle: dict[sp.Symbol, sp.Expr]) -> sp.Expr:
+    """T / v^2, with every velocity expressed through the body's by the constraints dg/dt = 0
+    (the idle ones at zero)."""
+    rates = [rate.xreplace(idle) for rate in _rates(scene, coords)]
+    velocities = [c.u for c in coords.all if c.u not in idle]
     if len(velocities) - len(rates) != 1:
         raise ConservationError(f"energy alone fixes one unknown speed; {body}'s system has "
                                 f"{len(velocities) - len(rates)} freedoms")
     vx, vy = coords.of(body, "x").u, coords.of(body, "y").u
-    for free in (vx, vy):
+    for free in (u for u in (vx, vy) if u not in idle):
         others = [u for u in velocities if u != free]
         matrix, rhs = sp.linear_eq_to_matrix(rates, others)
         if not matrix.det().equals(0):
@@ -79,7 +106,7 @@ def _kinetic_per_speed_squared(scene: Scene, coords: Coordinates, body: str, kin
     # On the constraints (every gap vanishes in the reference configuration, q = 0): off them a
     # curved track's expressions carry |p - c| terms that equal its radius only on the track.
     on_track = {c.q: 0 for c in coords.all}
-    ratio = tidy((kinetic.xreplace(solved) / (vx**2 + vy**2).xreplace(solved)).xreplace(on_track))
+    ratio = tidy((kinetic.xreplace(solved) / (vx**2 + vy**2).xreplace({**idle, **solved})).xreplace(on_track))
     if ratio.free_symbols & coords.state:
         raise ConservationError("the kinetic energy is not proportional to the square of the body's speed")
     return ratio
