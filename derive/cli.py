@@ -2,7 +2,7 @@
 
 Heavy modules (sympy and what uses it) are imported inside the commands, so that
 `derive --help` starts fast. Exit status: 0 success, 2 bad input (one line on stderr),
-1 an internal error.
+3 a missing external program (with the command that installs it), 1 an internal error.
 """
 from __future__ import annotations
 
@@ -13,8 +13,8 @@ import traceback
 
 import click
 
-from derive import MAX_VARIANTS, __version__
-from derive.errors import EngineLimit, InputError
+from derive import DISTRIBUTION, MAX_VARIANTS, version
+from derive.errors import EngineLimit, InputError, MissingTool
 
 FORMATS = click.Choice(["text", "latex", "json"])
 
@@ -54,6 +54,9 @@ def reports_errors(command):
             raise
         except InputError as error:
             raise BadInput(str(error)) from None
+        except MissingTool as error:
+            click.echo(f"derive: error: {error}", err=True)
+            sys.exit(3)
         except RuntimeError as error:
             from derive.export import BuildError
 
@@ -92,6 +95,22 @@ def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:
     return result
 
 
+def _show_version(ctx: click.Context, _param, shown: bool) -> None:
+    """`derive --version`: the version importlib.metadata gives for the distribution."""
+    if shown:
+        click.echo(f"derive {version()}")
+        ctx.exit()
+
+
+def course_digits(digits: int | None) -> int:
+    """--digits, else the course defaults' (derive.toml), else 15."""
+    if digits is not None:
+        return digits
+    from derive import defaults  # light: no sympy
+
+    return defaults.load().digits or 15
+
+
 class DeriveGroup(click.Group):
     """click's group with derive's errors: a usage error is one line on stderr (what is wrong and
     where the help is), exit status 2, instead of click's usage block."""
@@ -114,7 +133,9 @@ class DeriveGroup(click.Group):
 
 
 @click.group(cls=DeriveGroup, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
-@click.version_option(__version__, prog_name="derive")
+@click.option("--version", is_flag=True, expose_value=False, is_eager=True,
+              callback=_show_version,
+              help="Print derive's version (of the distribution " + DISTRIBUTION + ") and exit.")
 @click.option("--time-limit", type=click.FloatRange(min=0), default=None, metavar="SECONDS",
               help="Give up a symbolic step (an integral, a simplification, a derivation) after SECONDS, "
                    "with exit status 2. [default: $DERIVE_TIME_LIMIT, else 60; 0: no limit]")
@@ -146,10 +167,11 @@ def main(time_limit: float | None) -> None:
 @click.option("--set", "assignments", multiple=True, metavar="NAME=VALUE",
               help='Give a parameter a value: "m=2" (in its declared unit) or "m=200 g". Repeatable.')
 @click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
-@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True,
-              help="Significant digits of every value (each one correct to the digits shown).")
+@click.option("--digits", type=click.IntRange(1, 50), default=None,
+              help="Significant digits of every value (each one correct to the digits shown). "
+                   "[default: derive.toml's digits, else 15]")
 @reports_errors
-def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> None:
+def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | None) -> None:
     """Derive a problem and print its equations of motion, answers and checks.
 
     PROBLEM is a problem file or a library id (see `derive list`). An answer gets a
@@ -159,7 +181,7 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> 
     from derive import problem as problems
     from derive import report
 
-    result = report.solve(problems.load(problem), parse_assignments(assignments), digits)
+    result = report.solve(problems.load(problem), parse_assignments(assignments), course_digits(digits))
     click.echo({"text": report.as_text, "latex": report.as_latex, "json": report.as_json}[fmt](result))
 
 
@@ -179,11 +201,11 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> 
                    "names as SI numbers. Repeatable; each must be positive.")
 @click.option("--tensor", "show_tensor", is_flag=True, help="Also print the inertia tensor.")
 @click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
-@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True,
-              help="Significant digits of the value.")
+@click.option("--digits", type=click.IntRange(1, 50), default=None,
+              help="Significant digits of the value. [default: derive.toml's digits, else 15]")
 @reports_errors
 def inertia(shape: str, axis: str | None, about: str | None, density: str | None, assignments: tuple[str, ...],
-            show_tensor: bool, fmt: str, digits: int) -> None:
+            show_tensor: bool, fmt: str, digits: int | None) -> None:
     """Moment of inertia of a SHAPE by integrating rho d^2 over it.
 
     Prints the integral set up, the total mass from the same density, I exactly and
@@ -225,7 +247,8 @@ def inertia(shape: str, axis: str | None, about: str | None, density: str | None
     """
     from derive import inertia_report
 
-    result = inertia_report.report(shape, axis, parse_assignments(assignments), digits, about, density, show_tensor)
+    result = inertia_report.report(shape, axis, parse_assignments(assignments), course_digits(digits), about, density,
+                                   show_tensor)
     click.echo(inertia_report.FORMATTERS[fmt](result))
 
 
@@ -370,8 +393,9 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
 
 
 @main.command()
-@click.argument("problem_set", metavar="SET")
-@click.option("--variants", type=click.IntRange(1, MAX_VARIANTS), default=None, help="Variants per problem (default: the set's).")
+@click.argument("references", metavar="SET | PROBLEM...", nargs=-1, required=True)
+@click.option("--variants", type=click.IntRange(1, MAX_VARIANTS), default=None,
+              help="Variants per problem (default: the set's, else 1).")
 @click.option("--seed", type=int, default=None, help="Seed of the parameter draws (default: the set's).")
 @click.option("--out", "out_dir", default=None,
               help="Output folder (default: build/<set id>).")
@@ -384,15 +408,23 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
                    "among wrong answers derived from common mistakes. [default: the set's, else numerical]")
 @progress_option
 @reports_errors
-def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str | None, formats: str | None,
-          questions: str | None, progress) -> None:
+def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, out_dir: str | None,
+          formats: str | None, questions: str | None, progress) -> None:
     """Build a problem set: worksheet, worked solutions and answer key.
 
-    SET is a set file or the id of one in problems/sets/. Each variant draws the
-    parameters from their declared ranges (reproducibly from the seed) and rounds them
-    to their significant figures. Writes .tex files, PDFs (latexmk), HTML (pandoc) and
-    the answer key as CSV and JSON; with --to also Markdown and DOCX (pandoc), Moodle XML
-    (a cloze question per problem and variant) and a QTI 1.2 zip for Canvas.
+    SET is a set file or the id of one in problems/sets/; or give one or more PROBLEMs
+    (library ids or problem files), built as a set of their own (one variant, seed 0,
+    output in build/<ids>). Each variant draws the parameters from their declared ranges
+    (reproducibly from the seed) and rounds them to their significant figures. Writes .tex
+    files, PDFs (latexmk), HTML (pandoc) and the answer key as CSV and JSON; with --to also
+    Markdown and DOCX (pandoc), Moodle XML (a cloze question per problem and variant) and a
+    QTI 1.2 zip for Canvas. A derive.toml in the working folder gives course defaults
+    (README: Course defaults).
+
+    \b
+    Examples:
+      derive sheet demo --variants 30 --seed 7 --to pdf,moodle
+      derive sheet rod_endpoint tugged_spool --out build/two
 
     \b
     A set file needs a title and its problems; the rest has defaults:
@@ -401,11 +433,12 @@ def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str
       course: PHY141            due: 2026-12-01        variants: 30      seed: 141
       outputs: [pdf, moodle]    questions: choice      (options given here override it)
     """
+    from derive import defaults
     from derive import sheet as sheets
 
     wanted = None if formats is None else sheets.outputs(formats, "--to")
-    built = sheets.build(problem_set, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
-                         questions=questions, progress=progress)
+    built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
+                         questions=questions, defaults=defaults.load(), progress=progress)
     for path in built:
         click.echo(str(path))
 

@@ -31,6 +31,7 @@ import sympy as sp
 
 from derive import inertia
 from derive.parts.places import body_points, extent, sample, turned
+from derive.spelling import did_you_mean
 
 ROUND = ("ring", "disk", "annulus", "cylinder", "cylindrical_shell", "sphere", "spherical_shell",
          "thick_spherical_shell", "cone")
@@ -107,7 +108,8 @@ def read(reader, raw, field: str) -> CompositeParts:
         where = f"{field}.{reader.name(name, field, 'a part')}"
         shape = reader.mapping(spec, where, required=("shape",), free=True)["shape"]
         if shape not in inertia.SHAPES:
-            raise reader.fail(f"{where}.shape", f"unknown shape {shape!r} (a part is one of: {', '.join(inertia.SHAPES)})")
+            raise reader.fail(f"{where}.shape", f"unknown shape {shape!r} (a part is one of: {', '.join(inertia.SHAPES)})"
+                                                + did_you_mean(shape, inertia.SHAPES))
         sizes_needed = SHAPE_SIZES[shape]
         spec = reader.mapping(spec, where, required=("shape", "mass", *sizes_needed), optional=("at", "angle"))
         mass = reader.positive(spec["mass"], f"{where}.mass", "kg", "a mass")

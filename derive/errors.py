@@ -32,3 +32,16 @@ class EngineLimit(RuntimeError):
 
     def __init__(self, where: str, what: str):
         super().__init__(f"{where}: derive cannot yet {what}")
+
+
+class MissingTool(Exception):
+    """An external program derive needs (latexmk, pdflatex, pandoc) is not installed: exit status
+    3, one line with the command that installs it.
+
+    >>> str(MissingTool("latexmk", "apt-get install -y latexmk"))
+    'latexmk is not installed; install it with: apt-get install -y latexmk'
+    """
+
+    def __init__(self, tool: str, install: str):
+        super().__init__(f"{tool} is not installed; install it with: {install}")
+        self.tool, self.install = tool, install

@@ -20,7 +20,7 @@ import threading
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from derive.errors import InputError
+from derive.errors import InputError, MissingTool
 
 LATEXMK = ["latexmk", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "-no-shell-escape",
            "-quiet"]
@@ -50,14 +50,21 @@ def first_errors(log: str, context: int = 1) -> list[str]:
     return lines[-5:]
 
 
-def missing_tool(name: str) -> str | None:
-    """None when the tool is on PATH, else the command that installs it."""
-    if shutil.which(name):
-        return None
-    return {
-        "latexmk": "apt-get install -y --no-install-recommends texlive-latex-base texlive-latex-recommended "
-        "texlive-pictures texlive-science texlive-luatex latexmk lmodern fonts-dejavu-core fonts-noto-cjk",
-    }.get(name, f"install {name}")
+#: The command that installs each external program derive runs (Debian; as root). TeX Live's
+#: packages are those of scripts/install-tools that a compile needs.
+TEX_LIVE = ("apt-get install -y --no-install-recommends texlive-latex-base texlive-latex-recommended "
+            "texlive-pictures texlive-science texlive-luatex latexmk lmodern fonts-dejavu-core fonts-noto-cjk")
+INSTALL = {"latexmk": TEX_LIVE, "pdflatex": TEX_LIVE, "lualatex": TEX_LIVE,
+           "pandoc": "pip install pypandoc-binary (or: apt-get install -y pandoc)"}
+
+
+def require(tool: str) -> None:
+    """Raise MissingTool (exit status 3) with the command that installs `tool` unless it is on PATH.
+
+    >>> require("sh")
+    """
+    if not shutil.which(tool):
+        raise MissingTool(tool, INSTALL.get(tool, f"install {tool}"))
 
 
 def engine(text: str) -> str:
@@ -130,10 +137,9 @@ def pdf(tex: Path) -> Path:
     absolute paths, no `..`), so TeX can write nothing but its own scratch files; and with a
     time limit (tex_time_limit), past which its whole process group is killed.
     """
-    install = missing_tool("latexmk")
-    if install:
-        raise BuildError(f"latexmk is not installed; as root run: {install}")
     text = tex.read_text(encoding="utf-8")
+    for tool in ("latexmk", engine(text)):
+        require(tool)
     env = {**os.environ, "openin_any": "p", "openout_any": "p", "SOURCE_DATE_EPOCH": "0",
            "FORCE_SOURCE_DATE": "1"}
     seconds = tex_time_limit()
@@ -212,6 +218,10 @@ def convert(tex: Path, target: str, title: str) -> Path:
     """Convert a .tex document with pandoc to html, md or docx (see PANDOC_TARGETS)."""
     import pypandoc
 
+    try:
+        pypandoc.get_pandoc_path()
+    except OSError:
+        raise MissingTool("pandoc", INSTALL["pandoc"]) from None
     writer, suffix, extra = PANDOC_TARGETS[target]
     out = tex.with_suffix(suffix)
     try:

@@ -18,6 +18,7 @@ import sympy as sp
 
 from derive import expr, inertia, numeric, units
 from derive.errors import InputError
+from derive.spelling import did_you_mean
 
 JSON_KEYS = ("shape", "axis", "integral", "mass", "I", "ratio", "tensor", "value")
 
@@ -89,7 +90,8 @@ def report(shape: str, axis: str | None, assignments: dict[str, str], digits: in
            density: str | None = None, show_tensor: bool = False) -> dict:
     """Everything `derive inertia` prints; the keys of `JSON_KEYS` are the JSON output."""
     if shape not in inertia.SHAPES:
-        raise InputError(f"SHAPE: unknown shape {shape!r} (shapes: {', '.join(inertia.SHAPES)})")
+        raise InputError(f"SHAPE: unknown shape {shape!r} (shapes: {', '.join(inertia.SHAPES)})"
+                         + did_you_mean(shape, inertia.SHAPES))
     body = inertia.SHAPES[shape]
     names = _Names(body)
     axis = axis or inertia.PLANAR_AXIS[shape]
@@ -99,7 +101,8 @@ def report(shape: str, axis: str | None, assignments: dict[str, str], digits: in
     elif axis in body.axes:
         line, label = (axis, axis) if point is None else ((point, body.axes[axis][1]), f"{axis} direction")
     else:
-        raise InputError(f"--axis {axis}: a {shape} has axes {', '.join(body.axes)}, or give a direction such as 1,0,0")
+        raise InputError(f"--axis {axis}: a {shape} has axes {', '.join(body.axes)}, or give a direction such as 1,0,0"
+                         + did_you_mean(axis, body.axes))
     label += f" through ({about})" if about else ""
     rho = names.parse(density, "--density", "1", body.density_symbols) if density else None
     values = _values(names, assignments, shape)  # checked before anything is integrated

@@ -8,12 +8,12 @@ wheel), or the folder named by the DERIVE_LIBRARY environment variable.
 """
 from __future__ import annotations
 
-import difflib
 import os
 import re
 from pathlib import Path
 
 from derive.errors import InputError
+from derive.spelling import did_you_mean
 
 _PACKAGE = Path(__file__).resolve().parent
 ID_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")  # problem ids: file names and LaTeX labels
@@ -56,8 +56,7 @@ def _find(reference: str, candidates: list[Path], kind: str) -> Path:
     for candidate in candidates:
         if candidate.stem == reference:
             return candidate
-    close = difflib.get_close_matches(reference, [c.stem for c in candidates], n=1)
-    hint = f"; did you mean {close[0]!r}?" if close else ""
+    hint = did_you_mean(reference, [c.stem for c in candidates])
     raise LibraryError(f"no {kind} file or library id {reference!r} (see `derive list`){hint}")
 
 
@@ -66,10 +65,24 @@ def find_problem(reference: str) -> Path:
     return _find(reference, problem_files(), "problem")
 
 
+def set_files() -> list[Path]:
+    """Every set file of the library (problems/sets/), sorted."""
+    return sorted((problems_dir() / "sets").glob("*.yaml"))
+
+
+def find_set_or_problem(reference: str) -> Path:
+    """What `derive sheet` is given: a file, or the id of a set or (if no set has it) of a problem.
+
+    >>> find_set_or_problem("demo").parent.name, find_set_or_problem("rod_endpoint").stem
+    ('sets', 'rod_endpoint')
+    """
+    return _find(reference, set_files() + problem_files(), "set or problem")
+
+
 def find_set(reference: str) -> Path:
     """A set file path, or the set of that id in problems/sets/. The set's id is the file's
     stem, and names the output folder (build/<id>): it must match SET_ID_PATTERN."""
-    path = _find(reference, sorted((problems_dir() / "sets").glob("*.yaml")), "set")
+    path = _find(reference, set_files(), "set")
     if not SET_ID_PATTERN.fullmatch(path.stem):
         raise LibraryError(f"{reference}: a set's id is its file name, {path.stem!r}: use letters, digits, _ and -, "
                            "starting with a letter")

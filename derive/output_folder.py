@@ -35,7 +35,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
-from derive import __version__
+from derive import version
 from derive.errors import InputError
 
 MANIFEST = ".derive-build.json"
@@ -222,7 +222,7 @@ def commit(staging: Path, out: Path, products: list[Path]) -> list[Path]:
         for entry in list(staging.iterdir()):  # scratch files that are no product
             if entry.name not in names:
                 shutil.rmtree(entry) if entry.is_dir() else entry.unlink()
-        (staging / MANIFEST).write_text(json.dumps({"derive": __version__, "files": sorted(names)}, indent=1) + "\n",
+        (staging / MANIFEST).write_text(json.dumps({"derive": version(), "files": sorted(names)}, indent=1) + "\n",
                                         encoding="utf-8")
         if out.is_dir():
             _carry_over(out, staging, names)

@@ -29,6 +29,7 @@ from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, STATE_KINDS, Quantity, Scene, parse_quantity
 from derive.scene_file import read_scene
+from derive.spelling import did_you_mean, no_such
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections", "conditions"}
@@ -149,6 +150,7 @@ class Problem:
             if name not in self.parameters:
                 raise ProblemError(
                     f"--set {name}: {self.id} has no parameter {name!r} (parameters: {', '.join(self.parameters)})"
+                    + did_you_mean(name, self.parameters)
                 )
             p = self.parameters[name]
             try:
@@ -267,7 +269,7 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
                                      f"{', '.join(scene.states) or 'none; add scene.states'})")
         return None
     if raw not in scene.states:
-        raise reader.fail(field, f"no state {raw!r} (states: {', '.join(scene.states) or 'none; add scene.states'})")
+        raise reader.fail(field, no_such("state", raw, scene.states, "states") + ("; add scene.states" if not scene.states else ""))
     if quantity.kind not in STATE_KINDS or quantity.kind == "contact" and quantity.detail not in ("normal_force",
                                                                                                   "friction"):
         raise reader.fail(field, f"{path} is not read in a state: only accelerations, forces, positions and rates are")
@@ -288,6 +290,19 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
 def _tolerance(reader: Reader, raw, field: str) -> str | None:
     """`tolerance: 2%` (of the answer) or `tolerance: 0.05` (in the answer's unit): what an
     LMS accepts around the answer; by default one unit in the last significant digit shown."""
+    try:
+        return tolerance_policy(raw)
+    except ValueError as error:
+        raise reader.fail(field, str(error)) from None
+
+
+def tolerance_policy(raw) -> str | None:
+    """An answer's tolerance as an ask (or the course defaults, derive.defaults) gives it: "P%"
+    or a positive amount, normalized; None (not given) stays None; ValueError says what is wrong.
+
+    >>> tolerance_policy("2.50 %"), tolerance_policy(Decimal("0.050")), tolerance_policy(None)
+    ('2.5%', '0.05', None)
+    """
     if raw is None:
         return None
     text = str(raw).strip()
@@ -297,9 +312,9 @@ def _tolerance(reader: Reader, raw, field: str) -> str | None:
     except InvalidOperation:
         number = None
     if isinstance(raw, bool) or number is None or not number.is_finite() or number <= 0:
-        raise reader.fail(field, f"expected a percentage such as 2% or a positive amount in the answer's unit, got {text!r}")
+        raise ValueError(f"expected a percentage such as 2% or a positive amount in the answer's unit, got {text!r}")
     if text.endswith("%") and number >= 100:
-        raise reader.fail(field, f"{text} of the answer would accept zero and the wrong sign")
+        raise ValueError(f"{text} of the answer would accept zero and the wrong sign")
     return f"{number.normalize():f}%" if text.endswith("%") else f"{number.normalize():f}"
 
 

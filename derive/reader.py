@@ -19,6 +19,7 @@ import yaml
 
 from derive import expr, latex_safety, names, units
 from derive.errors import ProblemError
+from derive.spelling import did_you_mean
 
 MAX_CHARACTERS = 200_000  # a library problem file is a few thousand
 MAX_NESTING = 40  # a problem file nests 4 or 5 levels deep
@@ -128,7 +129,8 @@ class Reader:
         unknown = [] if free else [k for k in value if k not in required and k not in optional]
         if unknown:
             allowed = ", ".join(sorted({*required, *optional}))
-            raise self.fail(f"{field}.{unknown[0]}" if field else str(unknown[0]), f"unknown key (allowed: {allowed})")
+            raise self.fail(f"{field}.{unknown[0]}" if field else str(unknown[0]),
+                            f"unknown key (allowed: {allowed})" + did_you_mean(unknown[0], {*required, *optional}))
         for key in required:
             if key not in value:
                 raise self.fail(f"{field}.{key}" if field else key, "missing")

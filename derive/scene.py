@@ -21,6 +21,7 @@ from derive.parts import Part
 from derive.parts.contact import Contact
 from derive.parts.gravity import Gravity
 from derive.parts.surfaces import Circle, Plane, Surface
+from derive.spelling import did_you_mean
 
 #: Body shapes a scene may use, with the size names each needs (from the inertia module's shapes).
 SHAPE_SIZES: dict[str, tuple[str, ...]] = {
@@ -476,7 +477,7 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             if axis is None and body.shape != "point":
                 return Quantity("inertia", head, None)
             if axis not in axes:
-                raise ValueError(f"axis of a {body.shape} is one of: {', '.join(axes) or 'none'}")
+                raise ValueError(f"axis of a {body.shape} is one of: {', '.join(axes) or 'none'}" + did_you_mean(axis, axes))
             return Quantity("inertia", head, axis)
         if rest in ("acceleration.x", "acceleration.y"):
             return Quantity("acceleration", head, rest[-1])
@@ -530,4 +531,5 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError(f"{head} has {', '.join(allowed)}; not {rest!r}")
         return Quantity("contact" if rest == "min_friction_coefficient" else "force", head, rest)
     known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
-    raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})")
+    raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})"
+                     + did_you_mean(head, [*known, *SYSTEMS, *scene.rotations]))

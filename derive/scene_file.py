@@ -23,6 +23,7 @@ from derive.parts.pin import Pin
 from derive.parts.places import Places, turned
 from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
+from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
 from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Bounce, InternalTurn, Motion, Orbit,
                           Rotation, Scene, Skid, SpinningWheel, StandingWave, Stick, Top)
@@ -43,7 +44,8 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
                                     "path", "rotation", "angle", "parts", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
-        raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})")
+        raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
+                                            + did_you_mean(shape, SHAPE_SIZES))
     if (shape == "composite") != ("parts" in spec):
         raise reader.fail(f"{field}.parts", "a composite body has parts: {NAME: {shape, mass, sizes, at}}; other "
                                             "shapes have none")
@@ -208,7 +210,7 @@ def _events(reader: Reader, raw, bodies: dict[str, Body]) -> tuple:
         detail = reader.mapping(detail, f"{field}.{kind}", required=keys)
         for key in keys[:1] if kind == "skid" else keys[:2]:
             if detail[key] not in bodies:
-                raise reader.fail(f"{field}.{kind}.{key}", f"no body {detail[key]!r} (bodies: {', '.join(bodies)})")
+                raise reader.fail(f"{field}.{kind}.{key}", no_such("body", detail[key], bodies, "bodies"))
         if kind == "stick":
             result.append(Stick(f"event{i}", detail["body"], detail["to"]))
         elif kind == "skid":
@@ -262,7 +264,7 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
                 raise reader.fail(f"{field}.{key}", "a contact needs a surface: on: SURFACE")
         return None
     if spec["on"] not in surfaces:
-        raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(surfaces) or 'none'})")
+        raise reader.fail(f"{field}.on", no_such("surface", spec["on"], surfaces, "surfaces"))
     if spec.get("joint") is not None:
         raise reader.fail(f"{field}.on", "a body on a surface cannot also turn on a joint")
     if surfaces[spec["on"]].carrier == body.name:
@@ -363,7 +365,7 @@ def _string(reader: Reader, index: int, spec, bodies: dict[str, Body]) -> tuple[
                                optional=("side", "name"))
     for key in ("wound_on", "hangs"):
         if cord_spec[key] not in bodies:
-            raise reader.fail(f"{field}.string.{key}", f"no body {cord_spec[key]!r} (bodies: {', '.join(bodies)})")
+            raise reader.fail(f"{field}.string.{key}", no_such("body", cord_spec[key], bodies, "bodies"))
     reel = bodies[cord_spec["wound_on"]]
     if "radius" not in reel.sizes:
         raise reader.fail(f"{field}.string.wound_on", f"a cord winds on a disk or a ring, not a {reel.shape}")
@@ -508,8 +510,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         pins += [joint] if joint else []
     for name, surface in surfaces.items():
         if surface.carrier is not None and surface.carrier not in bodies:
-            raise reader.fail(f"scene.surfaces.{name}.carried_by", f"no body {surface.carrier!r} (bodies: "
-                                                                    f"{', '.join(bodies) or 'none'})")
+            raise reader.fail(f"scene.surfaces.{name}.carried_by", no_such("body", surface.carrier, bodies, "bodies"))
     constraints_raw = raw.get("constraints") or []
     if not isinstance(constraints_raw, list):
         raise reader.fail("scene.constraints", "expected a list")
@@ -527,7 +528,9 @@ def read_scene(reader: Reader, raw) -> Scene:
         field = f"scene.joints.{name}"
         kind = [k for k in JOINTS if isinstance(spec, dict) and k in spec]
         if len(kind) != 1:
-            raise reader.fail(field, f"expected one joint kind ({', '.join(JOINTS)})")
+            hint = next((h for k in spec if (h := did_you_mean(k, JOINTS))), "") if not kind and isinstance(spec, dict) \
+                else ""
+            raise reader.fail(field, f"expected one joint kind ({', '.join(JOINTS)}){hint}")
         joints.append(JOINTS[kind[0]](reader, places, name, spec, field))
     cords = [cord.read(reader, places, name, spec["path"], spec["field"]) for name, spec in strings]
     cords += [cord.read(reader, places, name, path, f"scene.cords.{name}")

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
 from pathlib import Path
+from typing import Sequence
 
 import sympy as sp
 import yaml
@@ -28,12 +29,14 @@ from derive import MAX_VARIANTS
 from derive import (distractors, export, figure, latex_safety, library, limiting_cases, lms, numeric, output_folder,
                     render, units)
 from derive.answers import Solution
+from derive.defaults import Defaults
 from derive.errors import InputError
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
 from derive.progress import Reporter
 from derive.reader import Loader
 from derive.report import route_title
 from derive.spreadsheet import safe_cell
+from derive.spelling import did_you_mean
 
 SET_REQUIRED = ("title", "problems")
 SET_OPTIONAL = ("course", "due", "variants", "seed", "outputs", "questions")
@@ -54,9 +57,10 @@ class ProblemSet:
     fields: tuple[str, ...]  # where each problem comes from in the set file: "problems[2]"
     variants: int
     seed: int
-    path: Path
+    path: Path | str  # the set file, or COMMAND_LINE for problems given by themselves
     outputs: frozenset[str] = DEFAULT_OUTPUTS
     questions: str = "numerical"
+    tolerance: str | None = None  # the LMS tolerance of asks that give none (derive.defaults)
 
 
 def outputs(text: str, where: str) -> frozenset[str]:
@@ -68,7 +72,8 @@ def outputs(text: str, where: str) -> frozenset[str]:
     wanted = frozenset(f.strip() for f in text.split(",") if f.strip())
     unknown = sorted(wanted - set(OUTPUTS))
     if unknown:
-        raise InputError(f"{where}: unknown output {unknown[0]!r} (outputs: {', '.join(OUTPUTS)})")
+        raise InputError(f"{where}: unknown output {unknown[0]!r} (outputs: {', '.join(OUTPUTS)})"
+                         + did_you_mean(unknown[0], OUTPUTS))
     return wanted
 
 
@@ -82,7 +87,8 @@ def _topic(path: Path, index: int, entry: dict, seed: int) -> list[str]:
     found = sorted((p.id, str(p.path)) for p in map(load, library.problem_files()) if p.topic == entry["topic"])
     if not found:
         topics = sorted({p.topic for p in map(load, library.problem_files())})
-        raise InputError(f"{path}: {field}.topic: no problem of topic {entry['topic']!r} (topics: {', '.join(topics)})")
+        raise InputError(f"{path}: {field}.topic: no problem of topic {entry['topic']!r} (topics: {', '.join(topics)})"
+                         + did_you_mean(entry["topic"], topics))
     count = entry.get("count", len(found))
     if not isinstance(count, int) or isinstance(count, bool) or not 1 <= count <= len(found):
         raise InputError(f"{path}: {field}.count: expected a whole number from 1 to {len(found)}")
@@ -118,18 +124,71 @@ def _whole(path: Path, raw: dict, key: str, default: int, low: int, high: int) -
     return value
 
 
-def load_set(reference: str) -> ProblemSet:
-    """A set file by path or id; only `title` and `problems` are required."""
-    path = library.find_set(reference)
+def _read_set(path: Path):
     try:
-        raw = yaml.load(path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a hardened SafeLoader
+        return yaml.load(path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a hardened SafeLoader
     except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
         raise InputError(f"{path}: invalid set file: {str(error).splitlines()[0]}") from None
+
+
+def _is_set(path: Path) -> bool:
+    """A set file, not a problem: one of problems/sets/, or any other file but a library problem
+    and a mapping with `id` or `scene` and no `problems` (an unreadable file is a set's, as
+    before problems could be given by themselves, and load_set says what is wrong)."""
+    if path.resolve() in {p.resolve() for p in library.set_files()}:
+        return True
+    if path.resolve() in {p.resolve() for p in library.problem_files()}:
+        return False
+    try:
+        raw = _read_set(path)
+    except InputError:
+        return True
+    return not (isinstance(raw, dict) and "problems" not in raw and {"id", "scene"} & set(raw))
+
+
+#: What errors name for problems given on the command line, in place of a set file.
+COMMAND_LINE = "derive sheet"
+LONGEST_ID = 60  # of a set of problems given by themselves: it names the output folder
+
+
+def load_sheet(references: Sequence[str], defaults: Defaults = Defaults()) -> ProblemSet:
+    """What `derive sheet` builds: one set (a set file, or the id of one in problems/sets/), or
+    the problems given (library ids or problem files) as a set of their own, with one variant,
+    seed 0, its problem's title (or theirs) and id (build/<id>).
+
+    >>> load_sheet(["rod_endpoint", "rod_midpoint"]).id
+    'rod_endpoint-rod_midpoint'
+    """
+    paths = [library.find_set_or_problem(r) for r in references]
+    sets = [r for r, path in zip(references, paths) if _is_set(path)]
+    if sets and len(references) == 1:
+        return load_set(references[0], defaults)
+    if sets:
+        raise InputError(f"{COMMAND_LINE}: {sets[0]} is a set: a set is built by itself (derive sheet SET)")
+    problems, fields = _problems(COMMAND_LINE, list(references), 0, lambda i: f"argument {i + 1}")
+    loaded = [load(reference) for reference in problems]
+    titles = "; ".join(p.title for p in loaded)
+    if len(titles) > TEXT_LIMITS["title"]:
+        titles = f"{loaded[0].title} and {len(loaded) - 1} more"
+    ids = "-".join(p.id for p in loaded)
+    return ProblemSet(
+        id=ids if len(ids) <= LONGEST_ID else f"{loaded[0].id}-and-{len(loaded) - 1}-more", title=titles,
+        course=defaults.course, due="", problems=tuple(problems), fields=tuple(fields), variants=1, seed=0,
+        path=COMMAND_LINE, outputs=DEFAULT_OUTPUTS if defaults.outputs is None else defaults.outputs, tolerance=defaults.tolerance,
+    )
+
+
+def load_set(reference: str, defaults: Defaults = Defaults()) -> ProblemSet:
+    """A set file by path or id; only `title` and `problems` are required. The course defaults
+    give its `course` and `outputs` where it names none, and the tolerance of asks."""
+    path = library.find_set(reference)
+    raw = _read_set(path)
     if not isinstance(raw, dict):
         raise InputError(f"{path}: expected a mapping with {', '.join(SET_REQUIRED)}")
     for key in raw:
         if key not in SET_REQUIRED + SET_OPTIONAL:
-            raise InputError(f"{path}: {key}: unknown key (allowed: {', '.join(SET_REQUIRED + SET_OPTIONAL)})")
+            raise InputError(f"{path}: {key}: unknown key (allowed: {', '.join(SET_REQUIRED + SET_OPTIONAL)})"
+                             + did_you_mean(key, SET_REQUIRED + SET_OPTIONAL))
     for key in SET_REQUIRED:
         if key not in raw:
             raise InputError(f"{path}: {key}: missing")
@@ -138,25 +197,8 @@ def load_set(reference: str) -> ProblemSet:
     entries = raw["problems"]
     if not isinstance(entries, list) or not entries or not all(isinstance(p, (str, dict)) for p in entries):
         raise InputError(f"{path}: problems: expected a list of problem ids, files or {{topic: TOPIC}}")
-    if len(entries) > MAX_PROBLEMS:
-        raise InputError(f"{path}: problems: {len(entries)} entries (limit {MAX_PROBLEMS})")
-    problems, fields, files = [], [], []
-    for i, entry in enumerate(entries):
-        for reference in [entry] if isinstance(entry, str) else _topic(path, i, entry, seed):
-            field = f"problems[{i}]" + (f" (topic {entry['topic']})" if isinstance(entry, dict) else "")
-            try:
-                file = library.find_problem(reference).resolve()
-            except library.LibraryError as error:
-                raise InputError(f"{path}: {field}: {error}") from None
-            if file in files:
-                raise InputError(f"{path}: {field}: {reference} is already {fields[files.index(file)]}; "
-                                 "a problem appears once in a set")
-            problems.append(reference)
-            fields.append(field)
-            files.append(file)
-    if len(problems) > MAX_PROBLEMS:
-        raise InputError(f"{path}: problems: {len(problems)} problems (limit {MAX_PROBLEMS})")
-    listed = raw.get("outputs", ",".join(sorted(DEFAULT_OUTPUTS)))
+    problems, fields = _problems(path, entries, seed, lambda i: f"problems[{i}]")
+    listed = raw.get("outputs", ",".join(sorted(DEFAULT_OUTPUTS if defaults.outputs is None else defaults.outputs)))
     if isinstance(listed, list) and all(isinstance(o, str) for o in listed):
         listed = ",".join(listed)
     if not isinstance(listed, str):
@@ -165,10 +207,35 @@ def load_set(reference: str) -> ProblemSet:
     if questions not in QUESTIONS:
         raise InputError(f"{path}: questions: expected one of {', '.join(QUESTIONS)}")
     return ProblemSet(
-        id=path.stem, title=_set_text(path, raw, "title"), course=_set_text(path, raw, "course"),
+        id=path.stem, title=_set_text(path, raw, "title"),
+        course=_set_text(path, raw, "course") if "course" in raw else defaults.course,
         due=_set_text(path, raw, "due"), problems=tuple(problems), fields=tuple(fields), variants=variants, seed=seed,
-        path=path, outputs=outputs(listed, f"{path}: outputs"), questions=questions,
+        path=path, outputs=outputs(listed, f"{path}: outputs"), questions=questions, tolerance=defaults.tolerance,
     )
+
+
+def _problems(where: Path | str, entries: list, seed: int, field_of) -> tuple[list[str], list[str]]:
+    """The problems of a set's entries (ids, files, topics), each once, and the field each comes
+    from (`field_of(index)`), for errors."""
+    if len(entries) > MAX_PROBLEMS:
+        raise InputError(f"{where}: problems: {len(entries)} entries (limit {MAX_PROBLEMS})")
+    problems, fields, files = [], [], []
+    for i, entry in enumerate(entries):
+        for reference in [entry] if isinstance(entry, str) else _topic(where, i, entry, seed):
+            field = field_of(i) + (f" (topic {entry['topic']})" if isinstance(entry, dict) else "")
+            try:
+                file = library.find_problem(reference).resolve()
+            except library.LibraryError as error:
+                raise InputError(f"{where}: {field}: {error}") from None
+            if file in files:
+                raise InputError(f"{where}: {field}: {reference} is already {fields[files.index(file)]}; "
+                                 "a problem appears once in a set")
+            problems.append(reference)
+            fields.append(field)
+            files.append(file)
+    if len(problems) > MAX_PROBLEMS:
+        raise InputError(f"{where}: problems: {len(problems)} problems (limit {MAX_PROBLEMS})")
+    return problems, fields
 
 
 def draw(problem: Problem, rng: random.Random) -> dict[str, sp.Expr]:
@@ -229,6 +296,7 @@ class _ProblemVariants:
     problem: Problem
     solution: Solution
     draws: list[dict[str, sp.Expr]]
+    tolerance: str | None = None  # the policy of asks that give none (the course defaults)
     # A build reads each variant's answers for the solutions, the key and the LMS exports:
     # evaluated once per draw (keyed by the draw, which self.draws keeps alive).
     _answers: dict[int, dict[str, str | None]] = field(default_factory=dict, repr=False)
@@ -260,7 +328,7 @@ class _ProblemVariants:
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
-        return {name: None if value is None else lms.tolerance(value, self.problem.asks[name].tolerance)
+        return {name: None if value is None else lms.tolerance(value, self.problem.asks[name].tolerance or self.tolerance)
                 for name, value in self.answers(draw).items()}
 
     def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
@@ -313,7 +381,7 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
                          for n in range(1, variants + 1)]
             except InputError as error:
                 raise InputError(f"{problem_set.path}: {where}: {error}") from None
-            prepared.append(_ProblemVariants(problem, solution, draws))
+            prepared.append(_ProblemVariants(problem, solution, draws, problem_set.tolerance))
     return prepared
 
 
@@ -436,16 +504,19 @@ def _write(folder: Path, name: str, text: str) -> Path:
     return path
 
 
-def build(reference: str, *, variants: int | None = None, seed: int | None = None, out_dir: str | None = None,
-          formats: frozenset[str] | None = None, questions: str | None = None,
-          progress: Reporter = Reporter()) -> list[Path]:
-    """Build a set into its output folder; return the files written. Arguments left None
-    take the set file's values (`variants`, `seed`, `outputs`, `questions`)."""
-    problem_set = load_set(reference)
+def build(references: str | Sequence[str], *, variants: int | None = None, seed: int | None = None,
+          out_dir: str | None = None, formats: frozenset[str] | None = None, questions: str | None = None,
+          defaults: Defaults = Defaults(), progress: Reporter = Reporter()) -> list[Path]:
+    """Build a set (or problems given by themselves: load_sheet) into its output folder; return
+    the files written. Arguments left None take the set file's values (`variants`, `seed`,
+    `outputs`, `questions`), and where it has none, the course defaults'."""
+    problem_set = load_sheet([references] if isinstance(references, str) else references, defaults)
     variants = variants or problem_set.variants
     seed = problem_set.seed if seed is None else seed
     formats = problem_set.outputs if formats is None else formats
     choice = (questions or problem_set.questions) == "choice"
+    if "pdf" in formats:
+        export.require("latexmk")  # at once, not after the derivations
     out = output_folder.claim(out_dir or Path("build") / problem_set.id)
     prepared = _prepare(problem_set, variants, seed, progress)
     header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}

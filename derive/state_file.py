@@ -14,6 +14,7 @@ from derive.reader import Reader
 from derive.parts.pin import Pin
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.scene import Body, Event, State
+from derive.spelling import no_such
 
 #: How a state names a body's coordinates: (kind, unit) of a position (`when:`) and of a rate (`rates:`).
 STATE_POSITIONS = {"x": ("x", "m"), "y": ("y", "m"), "angle": ("theta", "rad")}
@@ -105,14 +106,14 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     kind = kinds[0]
     body, to = raw[kind], raw["to"]
     if not isinstance(body, str) or body not in bodies:
-        raise reader.fail(f"{field}.event.{kind}", f"no body {body!r} (bodies: {', '.join(bodies)})")
+        raise reader.fail(f"{field}.event.{kind}", no_such("body", body, bodies, "bodies"))
     if "restitution" in raw and kind != "bounce":
         raise reader.fail(f"{field}.event.restitution", f"a {kind} has no restitution (a bounce has)")
     if kind == "move":
         return State(name, start=spec["from"], event=_move(reader, body, to, f"{field}.event", places, constraints,
                                                            spec["from"], found))
     if not isinstance(to, str) or to not in bodies:
-        raise reader.fail(f"{field}.event.to", f"no body {to!r} (bodies: {', '.join(bodies)})")
+        raise reader.fail(f"{field}.event.to", no_such("body", to, bodies, "bodies"))
     if body == to:
         raise reader.fail(f"{field}.event.to", f"an impact joins two bodies: not the {body} to itself")
     if kind == "lock" and not (bodies[body].rotates and bodies[to].rotates):
@@ -189,7 +190,7 @@ def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body]
     """(body, coordinate kind, value) from `BODY.angle: -pi/2` (or a rate)."""
     head, _, rest = str(key).partition(".")
     if head not in bodies:
-        raise reader.fail(f"{field}.{key}", f"no body {head!r} (bodies: {', '.join(bodies)})")
+        raise reader.fail(f"{field}.{key}", no_such("body", head, bodies, "bodies"))
     if rest not in kinds or kinds[rest][0] == "theta" and not bodies[head].rotates:
         allowed = [k for k, (kind, _) in kinds.items() if kind != "theta" or bodies[head].rotates]
         raise reader.fail(f"{field}.{key}", f"a state gives {head}'s {', '.join(allowed)}")

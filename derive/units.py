@@ -1,9 +1,11 @@
 """Physical units for problem files, on top of ``sympy.physics.units``.
 
-Unit strings come from untrusted files, so they are parsed like expressions in
-``derive.expr`` (an ``ast`` whitelist; names looked up in ``UNITS``; ``*``, ``/``,
-``**``, ``^``, numbers; a space between units means multiplication: "kg m^2").
-Conversions are exact (sympy Rationals and ``pi``), never floats.
+Unit strings come from untrusted files and the command line, so they are parsed like
+expressions in ``derive.expr`` (an ``ast`` whitelist; ``*``, ``/``, ``**``, ``^``, numbers; a
+space between units means multiplication: "kg m^2", "N m"; ``°`` is ``deg``). A name is looked
+up in ``UNITS``, else as an attribute of ``sympy.physics.units`` that is a Quantity ("eV",
+"day", "lightyear", "inch", ...): never sympified. Conversions are exact (sympy Rationals and
+``pi``; a constant sympy stores as a decimal, such as G, is taken at its decimal digits).
 
 Convention: angles are dimensionless, as in SI (and in sympy's ``dimsys_SI``):
 ``rad`` has dimension {} and ``deg``/``rev``/``rpm`` differ from ``rad``/``rad/s``
@@ -27,9 +29,10 @@ from sympy.physics.units.systems.si import SI, dimsys_SI
 
 from derive.errors import InputError
 from derive.expr import ExprError, _build, _rational, _syntax_tree
+from derive.spelling import did_you_mean
 
 __all__ = ["UnitError", "UNITS", "parse_unit", "dimension", "si_factor", "parse_quantity",
-           "to_unit", "expression_dimension", "same_dimension", "latex_unit"]
+           "to_unit", "expression_dimension", "same_dimension", "latex_unit", "sympy_units"]
 
 
 class UnitError(InputError):
@@ -37,6 +40,7 @@ class UnitError(InputError):
 
 
 _REV = 2 * sympy.pi * u.radian
+_AU = 149597870700 * u.meter
 UNITS: dict[str, sympy.Expr] = {
     "kg": u.kilogram, "g": u.gram, "mg": u.milligram, "t": u.tonne,
     "m": u.meter, "cm": u.centimeter, "mm": u.millimeter, "km": u.kilometer,
@@ -44,6 +48,9 @@ UNITS: dict[str, sympy.Expr] = {
     "s": u.second, "ms": u.millisecond, "min": u.minute, "h": u.hour,
     "N": u.newton, "J": u.joule, "W": u.watt, "Pa": u.pascal, "Hz": u.hertz,
     "rad": u.radian, "deg": u.degree, "rev": _REV, "rpm": _REV / u.minute,
+    "Nm": u.newton * u.meter,
+    # sympy's astronomical unit is the value before the IAU fixed it (2012) at exactly 149597870700 m
+    "AU": _AU, "au": _AU, "astronomical_unit": _AU, "astronomical_units": _AU,
 }
 _SI_BASE = [u.kilogram, u.meter, u.second, u.ampere, u.kelvin, u.mole, u.candela]
 _ORDER = ["mass", "length", "time", "current", "temperature", "amount_of_substance",
@@ -61,15 +68,25 @@ def _unit_tree(text: str) -> tuple[ast.Expression, str]:
     if not isinstance(text, str):
         raise UnitError(f"a unit must be a string, got {type(text).__name__}")
     try:
-        return _syntax_tree(_SPACE.sub("*", text.strip()), _MAX_UNIT_LENGTH)
+        return _syntax_tree(_SPACE.sub("*", text.strip().replace("°", " deg ").strip()), _MAX_UNIT_LENGTH)
     except ExprError as e:
         raise UnitError(f"invalid unit {_show(text)}: {e}") from None
 
 
+@lru_cache(maxsize=1)
+def sympy_units() -> dict[str, Quantity]:
+    """Every unit sympy.physics.units names (295 in sympy 1.14), by attribute name."""
+    return {name: value for name, value in vars(u).items()
+            if not name.startswith("_") and isinstance(value, Quantity)}
+
+
 def _lookup(name: str) -> sympy.Expr:
-    if name not in UNITS:
-        raise UnitError(f"unknown unit '{name}' (known: {', '.join(UNITS)})")
-    return UNITS[name]
+    if name in UNITS:
+        return UNITS[name]
+    if name in sympy_units():
+        return sympy_units()[name]
+    raise UnitError(f"unknown unit '{name}' (known: {', '.join(UNITS)}, or any name of sympy.physics.units)"
+                    + did_you_mean(name, [*UNITS, *sympy_units()]))
 
 
 @lru_cache(maxsize=256)  # a unit string parses to one immutable expression
@@ -122,7 +139,7 @@ def _quantity_factor(q: Quantity) -> sympy.Expr:
         f = convert_to(q, u.radian).xreplace({u.radian: sympy.Integer(1)})
     if f.atoms(Quantity):
         raise UnitError(f"cannot express {q} in SI units")
-    return f
+    return f.xreplace({x: sympy.Rational(str(x)) for x in f.atoms(sympy.Float)})
 
 
 @lru_cache(maxsize=256)
@@ -253,7 +270,7 @@ def latex_unit(text: str) -> str:
         return ""
     parse_unit(text)  # validates everything below
     tree, source = _unit_tree(text)
-    special = {"deg": r"{}^{\circ}", "um": r"\mu\mathrm{m}"}
+    special = {"deg": r"{}^{\circ}", "degree": r"{}^{\circ}", "degrees": r"{}^{\circ}", "um": r"\mu\mathrm{m}"}
 
     def tex(n: ast.AST) -> str:
         if isinstance(n, ast.Name):

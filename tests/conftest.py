@@ -16,10 +16,12 @@ ROOT = Path(__file__).resolve().parent.parent
 DERIVE = Path(sys.executable).parent / "derive"
 
 
-def run_derive(*args: str, library: Path | None = None) -> subprocess.CompletedProcess:
-    """Run `derive`; `library` replaces the problem library (DERIVE_LIBRARY)."""
-    env = {**os.environ, "DERIVE_LIBRARY": str(library)} if library else None
-    return subprocess.run([str(DERIVE), *args], capture_output=True, text=True, cwd=ROOT, timeout=600, env=env)
+def run_derive(*args: str, library: Path | None = None, cwd: Path = ROOT, env: dict | None = None
+               ) -> subprocess.CompletedProcess:
+    """Run `derive` in `cwd`; `library` replaces the problem library (DERIVE_LIBRARY), `env` sets
+    other environment variables."""
+    env = {**os.environ, **({"DERIVE_LIBRARY": str(library)} if library else {}), **(env or {})}
+    return subprocess.run([str(DERIVE), *args], capture_output=True, text=True, cwd=cwd, timeout=600, env=env)
 
 
 def write_problem(folder: Path, text: str) -> Path:

@@ -6,7 +6,7 @@ import sys
 import mpmath
 import pytest
 
-from conftest import ROOT, close
+from conftest import ROOT, close, refused, run_derive
 
 
 def close_to_digits(value: str, reference, digits: int = 15) -> bool:
@@ -126,3 +126,174 @@ def test_output_into_a_closed_pipe_stops_quietly():
     from conftest import DERIVE
     done = subprocess.run(f"{DERIVE} list | head -1", shell=True, capture_output=True, text=True)
     assert done.stdout.count("\n") == 1 and "Error" not in done.stderr and "error" not in done.stderr
+
+
+# --- the command line and the package (issue 16, item 6) ---
+
+def _key(folder):
+    return json.loads((folder / "key.json").read_text())
+
+
+def test_sheet_builds_problems_without_a_set_file(tmp_path):
+    one = run_derive("sheet", "rod_endpoint", "--to", "", cwd=tmp_path)  # default folder: build/<id>
+    assert one.returncode == 0, one.stderr
+    key = _key(tmp_path / "build" / "rod_endpoint")
+    assert key["set"] == "rod_endpoint" and key["title"] == "Moment of inertia of a rod about its endpoint"
+    assert [list(v["problems"]) for v in key["variants"]] == [["rod_endpoint"]]  # one variant
+    two = run_derive("sheet", "rod_endpoint", str(ROOT / "problems/torque/string_wrapped_disk.yaml"), "--variants", "2",
+                     "--to", "", "--out", str(tmp_path / "two"))
+    assert two.returncode == 0, two.stderr
+    key = _key(tmp_path / "two")
+    assert key["set"] == "rod_endpoint-string_wrapped_disk" and len(key["variants"]) == 2
+    assert list(key["variants"][1]["problems"]) == ["rod_endpoint", "string_wrapped_disk"]
+    assert "A string wrapped around a disk" in key["title"]
+
+
+def test_sheet_of_a_set_file_is_unchanged(tmp_path):
+    week = tmp_path / "week.yaml"
+    week.write_text("title: Week 9\nproblems: [rod_endpoint]\ncourse: PHY141\n")
+    done = run_derive("sheet", str(week), "--to", "", "--out", str(tmp_path / "out"))
+    assert done.returncode == 0, done.stderr
+    assert _key(tmp_path / "out")["title"] == "Week 9" and "PHY141" in (tmp_path / "out/worksheet.tex").read_text()
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["sheet", "rod_endpoint", "demo"], "demo is a set: a set is built by itself"),
+    (["sheet", "rod_endpoint", "rod_endpoint"], "argument 2: rod_endpoint is already argument 1"),
+    (["sheet"], "Missing argument"),
+])
+def test_sheet_of_problems_refuses(args, fragment):
+    done = run_derive(*args)
+    assert done.returncode == 2 and fragment in done.stderr and len(done.stderr.strip().splitlines()) == 1, done.stderr
+
+
+@pytest.mark.parametrize("args, suggestion", [
+    (["solve", "rod_endpiont"], "did you mean 'rod_endpoint'?"),  # a library id
+    (["sheet", "dmeo"], "did you mean 'demo'?"),  # a set id
+    (["inertia", "cylindr"], "did you mean 'cylinder'?"),  # a shape
+    (["inertia", "rod", "--axis", "ned"], "did you mean 'end'?"),  # an axis
+    (["solve", "string_wrapped_disk", "--set", "MM=2"], "did you mean 'M'?"),  # a parameter
+    (["solve", "string_wrapped_disk", "--set", "m=2 kgg"], "did you mean 'kg'?"),  # a unit
+    (["sheet", "demo", "--to", "pfd"], "did you mean 'pdf'?"),  # an output
+])
+def test_did_you_mean_on_the_command_line(args, suggestion):
+    done = run_derive(*args)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert done.stderr.strip().endswith(suggestion), done.stderr
+
+
+DISK = (ROOT / "problems/torque/string_wrapped_disk.yaml").read_text()
+
+
+@pytest.mark.parametrize("old, new, field, suggestion", [
+    ("shape: disk,", "shape: disc,", "scene.bodies.disk.shape", "'disk'"),  # a shape
+    ("mass: M,", "mas: M,", "scene.bodies.disk.mas", "'mass'"),  # a key of a body
+    ("ask:", "asks:", "asks", "'ask'"),  # a top-level key
+    ("- gravity: g", "- gravty: g", "scene.loads[0].gravty", "'gravity'"),  # a part (a load)
+    ("hangs: block", "hangs: blok", "scene.constraints", "'block'"),  # a body
+    ("of: block.acceleration.y", "of: blok.acceleration.y", "ask.a.of", "'block'"),  # a body an ask names
+])
+def test_did_you_mean_in_problem_files(tmp_path, old, new, field, suggestion):
+    assert old in DISK
+    stderr = refused(tmp_path, DISK.replace(old, new, 1), field)
+    assert stderr.strip().endswith(f"did you mean {suggestion}?"), stderr
+
+
+def test_did_you_mean_for_joints_and_points(tmp_path):
+    text = DISK.replace("joint: fixed_axle}", "}").replace("  constraints:", "  joints:\n    axle: {pinn: disk.centre}\n"
+                                                                               "  constraints:")
+    assert refused(tmp_path, text, "scene.joints.axle").strip().endswith("did you mean 'pin'?")
+    text = text.replace("pinn:", "pin:")
+    assert refused(tmp_path, text, "scene.joints.axle").strip().endswith("did you mean 'center'?")
+
+
+def test_did_you_mean_in_set_files(tmp_path):
+    week = tmp_path / "week.yaml"
+    week.write_text("titel: Week 9\nproblems: [rod_endpoint]\n")
+    done = run_derive("sheet", str(week))
+    assert done.returncode == 2 and done.stderr.strip().endswith("did you mean 'title'?"), done.stderr
+
+
+def test_set_takes_degrees_rpm_and_newton_metres(derive):
+    tilted = solve_json(derive, "rigid_body_L", "alpha=30°", "omega=60 rpm", "m=1", "L=1")
+    assert tilted["parameters"]["alpha"]["value"] == "0.523598775598299"  # pi/6 rad
+    assert tilted["parameters"]["omega"]["value"] == "6.28318530717959"  # 2 pi rad/s
+    assert solve_json(derive, "rigid_body_L", "alpha=30 degrees", "omega=60 rev/min", "m=1", "L=1") == tilted
+    wheel = solve_json(derive, "tilting_wheel", "tau=0.5 N m")
+    assert wheel["parameters"]["tau"]["value"] == solve_json(derive, "tilting_wheel", "tau=0.5 Nm")[
+        "parameters"]["tau"]["value"] == "0.500000000000000"
+
+
+def test_version_is_the_distributions(monkeypatch):
+    import tomllib
+    from importlib import metadata
+
+    import derive
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    assert project["name"] == derive.DISTRIBUTION == "derive-mechanics" and project["scripts"]["derive"]
+    assert run_derive("--version").stdout == f"derive {project['version']}\n"
+    asked = []
+    monkeypatch.setattr(metadata, "version", lambda name: asked.append(name) or "7.7.7")
+    assert derive.version() == "7.7.7" and asked == ["derive-mechanics"]
+
+
+def test_a_missing_tool_exits_3_with_its_install_command(tmp_path):
+    (tmp_path / "bin").mkdir()
+    done = run_derive("sheet", "rod_endpoint", "--to", "pdf", "--out", str(tmp_path / "out"), "--progress", "none",
+                      env={"PATH": str(tmp_path / "bin")})
+    assert done.returncode == 3 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert "latexmk is not installed; install it with: apt-get install" in done.stderr
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_missing_pandoc_is_a_missing_tool(tmp_path, monkeypatch):
+    import pypandoc
+
+    from derive import export
+    from derive.errors import MissingTool
+
+    def nowhere():
+        raise OSError("No pandoc was found")
+
+    monkeypatch.setattr(pypandoc, "get_pandoc_path", nowhere)
+    with pytest.raises(MissingTool, match="pandoc is not installed; install it with: pip install pypandoc-binary"):
+        export.convert(tmp_path / "worksheet.tex", "html", "T")
+
+
+def test_course_defaults_file(tmp_path):
+    (tmp_path / "derive.toml").write_text('course = "PHY141 Mechanics"\ndigits = 5\ntolerance = "2%"\noutputs = []\n')
+    solved = run_derive("solve", "rod_endpoint", "--set", "m=3", "--set", "L=2", "--format", "json", cwd=tmp_path)
+    assert json.loads(solved.stdout)["answers"]["I"]["value"] == "4.0000"  # 5 digits
+    solved = run_derive("solve", "rod_endpoint", "--set", "m=3", "--set", "L=2", "--format", "json", "--digits", "3",
+                        cwd=tmp_path)
+    assert json.loads(solved.stdout)["answers"]["I"]["value"] == "4.00"  # the option wins
+    built = run_derive("sheet", "rod_endpoint", cwd=tmp_path)
+    assert built.returncode == 0, built.stderr
+    out = tmp_path / "build" / "rod_endpoint"
+    assert {p.suffix for p in out.iterdir() if p.is_file()} == {".tex", ".csv", ".json"}  # outputs = []: no PDF, HTML
+    assert "PHY141 Mechanics" in (out / "worksheet.tex").read_text()
+    answer = _key(out)["variants"][0]["problems"]["rod_endpoint"]["answers"]["I"]
+    assert mpmath.mpf(answer["tolerance"]) == mpmath.mpf(answer["value"]) * mpmath.mpf("0.02")
+
+
+def test_course_defaults_in_pyproject(tmp_path):
+    (tmp_path / "pyproject.toml").write_text('[project]\nname = "course"\n\n[tool.derive]\ndigits = 4\n')
+    solved = run_derive("inertia", "rod", "--set", "M=3", "--set", "L=2", "--format", "json", cwd=tmp_path)
+    assert json.loads(solved.stdout)["value"] == "1.000"
+
+
+@pytest.mark.parametrize("file, text, fragment", [
+    ("derive.toml", "digitz = 5\n", "derive.toml: digitz: unknown key (allowed: course, outputs, digits, tolerance); "
+                                    "did you mean 'digits'?"),
+    ("pyproject.toml", "[tool.derive]\ncourse = 3\n", "pyproject.toml: tool.derive.course: expected text"),
+    ("derive.toml", "digits = 99\n", "derive.toml: digits: expected a whole number from 1 to 50"),
+    ("derive.toml", 'outputs = ["pfd"]\n', "derive.toml: outputs: unknown output 'pfd'"),
+    ("derive.toml", 'tolerance = "150%"\n', "derive.toml: tolerance: 150% of the answer would accept zero"),
+    ("derive.toml", "course = \n", "derive.toml: invalid TOML"),
+])
+def test_course_defaults_refused(tmp_path, file, text, fragment):
+    (tmp_path / file).write_text(text)
+    done = run_derive("solve", "rod_endpoint", cwd=tmp_path)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert str(tmp_path / fragment.split(":")[0]) in done.stderr and fragment in done.stderr

@@ -35,6 +35,11 @@ TABLE = {  # unit: (sympy quantity, dimension, exact SI factor)
     "deg": (u.degree, {}, pi / 180),
     "rev": (2 * pi * u.radian, {}, 2 * pi),
     "rpm": (2 * pi * u.radian / u.minute, {"time": -1}, pi / 30),
+    "Nm": (u.newton * u.meter, {"mass": 1, "length": 2, "time": -2}, 1),
+    "AU": (149597870700 * u.meter, {"length": 1}, 149597870700),  # the IAU's (2012); sympy's predates it
+    "au": (149597870700 * u.meter, {"length": 1}, 149597870700),
+    "astronomical_unit": (149597870700 * u.meter, {"length": 1}, 149597870700),
+    "astronomical_units": (149597870700 * u.meter, {"length": 1}, 149597870700),
 }
 
 
@@ -140,6 +145,51 @@ def test_to_unit_exact():
     assert not to_unit(2.35, "g", "kg").atoms(sympy.Float)
 
 
+@pytest.mark.parametrize("text, declared, si", [
+    ("30°", "rad", pi / 6), ("30 °", "rad", pi / 6), ("30 degrees", "rad", pi / 6), ("30 deg", "rad", pi / 6),
+    ("30 degree", "rad", pi / 6), ("90 °/s", "rad/s", pi / 2),
+    ("60 rev/min", "rad/s", 2 * pi), ("60 rpm", "rad/s", 2 * pi),
+    ("2 N m", "J", 2), ("2 Nm", "J", 2), ("2 N*m", "J", 2),
+    ("1 eV", "J", sympy.Rational("1.602176634e-19")), ("1 AU", "m", 149597870700), ("1 day", "s", 86400),
+    # any other name of sympy.physics.units, looked up as an attribute
+    ("2 inch", "m", sympy.Rational("0.0508")), ("1 lightyear", "m", 9460730472580800), ("3 hours", "s", 10800),
+    ("1 G", "m^3/(kg*s^2)", sympy.Rational("6.6743e-11")), ("5 percent", "1", sympy.Rational(1, 20)),
+])
+def test_set_spellings_give_their_si_value(text, declared, si):
+    """What `--set NAME=VALUE` takes (Problem.values: parse_quantity, then the declared unit)."""
+    value, unit = parse_quantity(text, declared)
+    assert to_unit(value, unit, declared) * si_factor(declared) == si
+
+
+def test_every_sympy_unit_converts_or_is_refused_in_one_line():
+    from derive.units import sympy_units
+
+    refused = set()
+    for name in sympy_units():
+        try:
+            factor = si_factor(name)
+        except UnitError as error:
+            assert "cannot express" in str(error) and "\n" not in str(error)
+            refused.add(name)
+            continue
+        assert not factor.atoms(sympy.Float), name  # exact: a decimal constant is taken at its digits
+    assert len(sympy_units()) - len(refused) >= 270  # sympy 1.14: 274 of 295; bits, bytes, sr, mil refused
+    assert {"bit", "byte", "steradian"} <= refused
+
+
+def test_unit_names_are_looked_up_never_evaluated():
+    for text in ("__class__", "__dict__", "Quantity", "convert_to", "si", "length"):
+        with pytest.raises(UnitError, match="unknown unit"):
+            parse_unit(text)
+
+
+def test_unknown_unit_suggests():
+    with pytest.raises(UnitError, match="did you mean 'eV'"):
+        parse_unit("eVv")
+    with pytest.raises(UnitError, match="did you mean 'day'"):
+        parse_unit("dya")
+
+
 def test_to_unit_dimension_mismatch():
     with pytest.raises(UnitError, match="cannot convert g to m: mass vs length"):
         to_unit(1, "g", "m")
@@ -236,6 +286,10 @@ LATEX = {
     "m/(kg s)": r"\mathrm{m}/(\mathrm{kg}\,\mathrm{s})",
     "deg": r"{}^{\circ}",
     "deg/s": r"{}^{\circ}/\mathrm{s}",
+    "°": r"{}^{\circ}",
+    "degrees": r"{}^{\circ}",
+    "N m": r"\mathrm{N}\,\mathrm{m}",
+    "eV": r"\mathrm{eV}",
     "um": r"\mu\mathrm{m}",
     "rad/s": r"\mathrm{rad}/\mathrm{s}",
     "N": r"\mathrm{N}",

@@ -26,6 +26,7 @@ import sympy as sp
 
 from derive.parts import AppliedForce, Part, Sign
 from derive.parts.surfaces import carried
+from derive.spelling import no_such
 
 
 @dataclass(frozen=True)
@@ -168,7 +169,7 @@ def read(reader, places, name: str, spec: dict, field: str) -> Contact:
     body, point = places.point(spec["touches"], f"{field}.touches", ground=False)
     places.on_body(body, point, f"{field}.touches")
     if spec["on"] not in places.surfaces:
-        raise reader.fail(f"{field}.on", f"no surface {spec['on']!r} (surfaces: {', '.join(places.surfaces) or 'none'})")
+        raise reader.fail(f"{field}.on", no_such("surface", spec["on"], places.surfaces, "surfaces"))
     if places.surfaces[spec["on"]].carrier == body:
         raise reader.fail(f"{field}.on", f"the {body} carries {spec['on']}: it cannot rest on it")
     grips = spec.get("grips", False)

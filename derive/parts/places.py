@@ -21,6 +21,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive import units
+from derive.spelling import did_you_mean
 
 ZERO = sp.Integer(0)
 
@@ -121,7 +122,7 @@ class Places:
         named = points_of(rigid)
         if (name or "center") not in named:
             raise self.reader.fail(field, f"a {rigid.shape} has no point {name!r} (points: {', '.join(named)}; or "
-                                          f"{{{body}: [x, y]}} in its frame)")
+                                          f"{{{body}: [x, y]}} in its frame)" + did_you_mean(name, named))
         return body, named[name or "center"]
 
     def two_points(self, value, field: str) -> list[tuple[str | None, tuple[sp.Expr, sp.Expr]]]:
@@ -143,7 +144,8 @@ class Places:
     def _body(self, name, field: str) -> None:
         if name not in self.bodies:
             known = ", ".join([*self.bodies, *self.ground]) or "none"
-            raise self.reader.fail(field, f"no body or point {name!r} (known: {known})")
+            raise self.reader.fail(field, f"no body or point {name!r} (known: {known})"
+                                   + did_you_mean(name, [*self.bodies, *self.ground]))
 
     def reader_vector(self, value, field: str) -> tuple[sp.Expr, sp.Expr]:
         if not isinstance(value, list) or len(value) != 2:
