@@ -13,7 +13,7 @@ import traceback
 
 import click
 
-from derive import MAX_VARIANTS, __version__
+from derive import MAX_DIGITS, MAX_VARIANTS, __version__
 from derive.errors import EngineLimit, InputError
 
 FORMATS = click.Choice(["text", "latex", "json"])
@@ -146,7 +146,7 @@ def main(time_limit: float | None) -> None:
 @click.option("--set", "assignments", multiple=True, metavar="NAME=VALUE",
               help='Give a parameter a value: "m=2" (in its declared unit) or "m=200 g". Repeatable.')
 @click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
-@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True,
+@click.option("--digits", type=click.IntRange(1, MAX_DIGITS), default=15, show_default=True,
               help="Significant digits of every value (each one correct to the digits shown).")
 @reports_errors
 def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> None:
@@ -156,11 +156,10 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> 
     value when every parameter it uses has one (declared in the file or given with
     --set); otherwise only its exact expression is printed.
     """
-    from derive import problem as problems
-    from derive import report
+    from derive import api
 
-    result = report.solve(problems.load(problem), parse_assignments(assignments), digits)
-    click.echo({"text": report.as_text, "latex": report.as_latex, "json": report.as_json}[fmt](result))
+    result = api.solve(problem, parse_assignments(assignments), digits)
+    click.echo({"text": result.as_text, "latex": result.as_latex, "json": result.as_json}[fmt]())
 
 
 @main.command()
@@ -179,7 +178,7 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int) -> 
                    "names as SI numbers. Repeatable; each must be positive.")
 @click.option("--tensor", "show_tensor", is_flag=True, help="Also print the inertia tensor.")
 @click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
-@click.option("--digits", type=click.IntRange(1, 50), default=15, show_default=True,
+@click.option("--digits", type=click.IntRange(1, MAX_DIGITS), default=15, show_default=True,
               help="Significant digits of the value.")
 @reports_errors
 def inertia(shape: str, axis: str | None, about: str | None, density: str | None, assignments: tuple[str, ...],
@@ -401,11 +400,10 @@ def sheet(problem_set: str, variants: int | None, seed: int | None, out_dir: str
       course: PHY141            due: 2026-12-01        variants: 30      seed: 141
       outputs: [pdf, moodle]    questions: choice      (options given here override it)
     """
-    from derive import sheet as sheets
+    from derive import api
 
-    wanted = None if formats is None else sheets.outputs(formats, "--to")
-    built = sheets.build(problem_set, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
-                         questions=questions, progress=progress)
+    built = api.sheet(problem_set, out_dir, variants=variants, seed=seed, to=formats, questions=questions,
+                      progress=progress)
     for path in built:
         click.echo(str(path))
 

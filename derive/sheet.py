@@ -5,6 +5,8 @@ seed, rounds them to their significant figures (exact decimals), and evaluates t
 answers. Everything is built in a temporary folder and moved into place only when the
 whole build succeeded, so a failed build leaves the previous one intact.
 
+Called, this module builds a set: `derive.sheet("demo", out="build/demo")` is derive.api.sheet.
+
 >>> problem_set = load_set("demo")
 >>> problem_set.problems[0]
 'rod_endpoint'
@@ -15,6 +17,8 @@ import csv
 import io
 import json
 import random
+import sys
+import types
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
@@ -134,7 +138,25 @@ def load_set(reference: str) -> ProblemSet:
             raise InputError(f"{path}: {key}: missing")
     variants = _whole(path, raw, "variants", 1, 1, MAX_VARIANTS)
     seed = _whole(path, raw, "seed", 0, 0, MAX_SEED)
-    entries = raw["problems"]
+    problems, fields = _problems(path, raw["problems"], seed)
+    listed = raw.get("outputs", ",".join(sorted(DEFAULT_OUTPUTS)))
+    if isinstance(listed, list) and all(isinstance(o, str) for o in listed):
+        listed = ",".join(listed)
+    if not isinstance(listed, str):
+        raise InputError(f"{path}: outputs: expected a list of outputs ({', '.join(OUTPUTS)})")
+    questions = raw.get("questions", "numerical")
+    if questions not in QUESTIONS:
+        raise InputError(f"{path}: questions: expected one of {', '.join(QUESTIONS)}")
+    return ProblemSet(
+        id=path.stem, title=_set_text(path, raw, "title"), course=_set_text(path, raw, "course"),
+        due=_set_text(path, raw, "due"), problems=problems, fields=fields, variants=variants, seed=seed,
+        path=path, outputs=outputs(listed, f"{path}: outputs"), questions=questions,
+    )
+
+
+def _problems(path: Path, entries, seed: int) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """A set's problems (ids, files, {topic: ...}) as problem references, each with where it comes
+    from ("problems[2]"); each problem once. Errors name `path`."""
     if not isinstance(entries, list) or not entries or not all(isinstance(p, (str, dict)) for p in entries):
         raise InputError(f"{path}: problems: expected a list of problem ids, files or {{topic: TOPIC}}")
     if len(entries) > MAX_PROBLEMS:
@@ -155,19 +177,27 @@ def load_set(reference: str) -> ProblemSet:
             files.append(file)
     if len(problems) > MAX_PROBLEMS:
         raise InputError(f"{path}: problems: {len(problems)} problems (limit {MAX_PROBLEMS})")
-    listed = raw.get("outputs", ",".join(sorted(DEFAULT_OUTPUTS)))
-    if isinstance(listed, list) and all(isinstance(o, str) for o in listed):
-        listed = ",".join(listed)
-    if not isinstance(listed, str):
-        raise InputError(f"{path}: outputs: expected a list of outputs ({', '.join(OUTPUTS)})")
-    questions = raw.get("questions", "numerical")
-    if questions not in QUESTIONS:
-        raise InputError(f"{path}: questions: expected one of {', '.join(QUESTIONS)}")
-    return ProblemSet(
-        id=path.stem, title=_set_text(path, raw, "title"), course=_set_text(path, raw, "course"),
-        due=_set_text(path, raw, "due"), problems=tuple(problems), fields=tuple(fields), variants=variants, seed=seed,
-        path=path, outputs=outputs(listed, f"{path}: outputs"), questions=questions,
-    )
+    return tuple(problems), tuple(fields)
+
+
+#: How errors name a set given as a list of problems rather than a file (derive.sheet([...])).
+LISTED = Path("derive.sheet")
+
+
+def set_of(entries: list, title: str = "Problems") -> ProblemSet:
+    """A set of the problems listed as a set file's `problems:` would list them, with a set file's
+    defaults (one variant, seed 0, pdf and html); its id, and so its folder, is `problems`.
+
+    >>> set_of(["rod_endpoint", "tugged_spool"]).fields
+    ('problems[0]', 'problems[1]')
+    >>> set_of(["rod_endpoint", "rod_endpoint"])
+    Traceback (most recent call last):
+    ...
+    derive.errors.InputError: derive.sheet: problems[1]: rod_endpoint is already problems[0]; ...
+    """
+    problems, fields = _problems(LISTED, entries, 0)
+    return ProblemSet(id="problems", title=_set_text(LISTED, {"title": title}, "title"), course="", due="",
+                      problems=problems, fields=fields, variants=1, seed=0, path=LISTED)
 
 
 def draw(problem: Problem, rng: random.Random) -> dict[str, sp.Expr]:
@@ -413,12 +443,13 @@ def _write(folder: Path, name: str, text: str) -> Path:
     return path
 
 
-def build(reference: str, *, variants: int | None = None, seed: int | None = None, out_dir: str | None = None,
-          formats: frozenset[str] | None = None, questions: str | None = None,
+def build(reference: str | ProblemSet, *, variants: int | None = None, seed: int | None = None,
+          out_dir: str | None = None, formats: frozenset[str] | None = None, questions: str | None = None,
           progress: Reporter = Reporter()) -> list[Path]:
     """Build a set into its output folder; return the files written. Arguments left None
-    take the set file's values (`variants`, `seed`, `outputs`, `questions`)."""
-    problem_set = load_set(reference)
+    take the set file's values (`variants`, `seed`, `outputs`, `questions`). `reference` is a set
+    file, the id of one, or a ProblemSet (`set_of`)."""
+    problem_set = reference if isinstance(reference, ProblemSet) else load_set(reference)
     variants = variants or problem_set.variants
     seed = problem_set.seed if seed is None else seed
     formats = problem_set.outputs if formats is None else formats
@@ -519,3 +550,15 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
                                                                    question=item.question(middle)))
         progress("compiling the PDF")
         return output_folder.commit(staging, out, [tex, export.pdf(tex)])
+
+
+class _Callable(types.ModuleType):
+    """`derive.sheet` is both this module and the Python API's function that builds a set."""
+
+    def __call__(self, *args, **kwargs) -> list[Path]:
+        from derive.api import sheet
+
+        return sheet(*args, **kwargs)
+
+
+sys.modules[__name__].__class__ = _Callable
