@@ -46,17 +46,17 @@ class Answer:
     expression: sp.Expr
     unit: str
     value: str | None
-    latex: str  # "a = expression = value unit", as the worked solutions print it
+    equation: str  # LaTeX: "a = expression = value unit", as `derive solve --format latex` prints it
 
     def __repr__(self) -> str:
         shown = f" = {self.value}{_unit_text(self.unit)}" if self.value is not None else ""
         return f"Answer({self.name} = {sp.sstr(self.expression)}{shown})"
 
     def _repr_latex_(self) -> str:
-        return f"$${self.latex}$$"
+        return f"$${self.equation}$$"
 
     def _repr_html_(self) -> str:
-        return f"<p>{html.escape(self.meaning)}: {_math(self.latex)}</p>"
+        return f"<p>{html.escape(self.meaning)}: {_math(self.equation)}</p>"
 
 
 class Result:
@@ -104,13 +104,13 @@ class Result:
                 for n, p in self.report["parameters"].items() if p["value"] is not None]
 
     def _repr_latex_(self) -> str:
-        rows = " \\\\\n".join(report.aligned(a.latex) for a in self.answers.values())
+        rows = " \\\\\n".join(report.aligned(a.equation) for a in self.answers.values())
         given = f" \\\\\n&\\text{{at }} {', '.join(self._given())}" if self._given() else ""
         return f"$$\\begin{{aligned}}\n{rows}{given}\n\\end{{aligned}}$$"
 
     def _repr_html_(self) -> str:
         rows = "".join(
-            f"<tr><td>{html.escape(a.meaning)}</td><td>{_math(a.latex)}</td></tr>" for a in self.answers.values())
+            f"<tr><td>{html.escape(a.meaning)}</td><td>{_math(a.equation)}</td></tr>" for a in self.answers.values())
         given = f"<p>at {', '.join(map(_math, self._given()))}</p>" if self._given() else ""
         return (f"<div><p><strong>{html.escape(self.problem.title)}</strong> "
                 f"(<code>{html.escape(self.problem.id)}</code>)</p><table>{rows}</table>{given}</div>")
@@ -187,8 +187,7 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
             raise InputError("title: a set file gives its own title")
         problem_set = str(ids_or_set)
     elif isinstance(ids_or_set, (list, tuple)):
-        problem_set = sheets.set_of([str(p) if isinstance(p, os.PathLike) else p for p in ids_or_set],
-                                    "Problems" if title is None else title)
+        problem_set = sheets.set_of([str(p) if isinstance(p, os.PathLike) else p for p in ids_or_set], title)
     else:
         raise InputError(f"ids_or_set: expected a set file or id, or a list of problem ids or files, got "
                          f"{type(ids_or_set).__name__}")

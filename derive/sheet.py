@@ -184,9 +184,10 @@ def _problems(path: Path, entries, seed: int) -> tuple[tuple[str, ...], tuple[st
 LISTED = Path("derive.sheet")
 
 
-def set_of(entries: list, title: str = "Problems") -> ProblemSet:
+def set_of(entries: list, title: str | None = None) -> ProblemSet:
     """A set of the problems listed as a set file's `problems:` would list them, with a set file's
-    defaults (one variant, seed 0, pdf and html); its id, and so its folder, is `problems`.
+    defaults (one variant, seed 0, pdf and html) and `title` (default "Problems"); its id, and so
+    its folder, is `problems`.
 
     >>> set_of(["rod_endpoint", "tugged_spool"]).fields
     ('problems[0]', 'problems[1]')
@@ -196,7 +197,8 @@ def set_of(entries: list, title: str = "Problems") -> ProblemSet:
     derive.errors.InputError: derive.sheet: problems[1]: rod_endpoint is already problems[0]; ...
     """
     problems, fields = _problems(LISTED, entries, 0)
-    return ProblemSet(id="problems", title=_set_text(LISTED, {"title": title}, "title"), course="", due="",
+    title = _set_text(LISTED, {"title": "Problems" if title is None else title}, "title")
+    return ProblemSet(id="problems", title=title, course="", due="",
                       problems=problems, fields=fields, variants=1, seed=0, path=LISTED)
 
 
