@@ -13,7 +13,7 @@ import traceback
 
 import click
 
-from derive import DISTRIBUTION, MAX_VARIANTS, version
+from derive import DISTRIBUTION, MAX_DIGITS, MAX_VARIANTS, version
 from derive.errors import EngineLimit, InputError, MissingTool
 
 FORMATS = click.Choice(["text", "latex", "json"])
@@ -167,7 +167,7 @@ def main(time_limit: float | None) -> None:
 @click.option("--set", "assignments", multiple=True, metavar="NAME=VALUE",
               help='Give a parameter a value: "m=2" (in its declared unit) or "m=200 g". Repeatable.')
 @click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
-@click.option("--digits", type=click.IntRange(1, 50), default=None,
+@click.option("--digits", type=click.IntRange(1, MAX_DIGITS), default=None,
               help="Significant digits of every value (each one correct to the digits shown). "
                    "[default: derive.toml's digits, else 15]")
 @reports_errors
@@ -178,11 +178,10 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | No
     value when every parameter it uses has one (declared in the file or given with
     --set); otherwise only its exact expression is printed.
     """
-    from derive import problem as problems
-    from derive import report
+    from derive import api
 
-    result = report.solve(problems.load(problem), parse_assignments(assignments), course_digits(digits))
-    click.echo({"text": report.as_text, "latex": report.as_latex, "json": report.as_json}[fmt](result))
+    result = api.solve(problem, parse_assignments(assignments), course_digits(digits))
+    click.echo({"text": result.as_text, "latex": result.as_latex, "json": result.as_json}[fmt]())
 
 
 @main.command()
@@ -201,7 +200,7 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | No
                    "names as SI numbers. Repeatable; each must be positive.")
 @click.option("--tensor", "show_tensor", is_flag=True, help="Also print the inertia tensor.")
 @click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
-@click.option("--digits", type=click.IntRange(1, 50), default=None,
+@click.option("--digits", type=click.IntRange(1, MAX_DIGITS), default=None,
               help="Significant digits of the value. [default: derive.toml's digits, else 15]")
 @reports_errors
 def inertia(shape: str, axis: str | None, about: str | None, density: str | None, assignments: tuple[str, ...],

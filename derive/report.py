@@ -160,19 +160,25 @@ def as_latex(result: dict) -> str:
             lines.append(f"{step['text']}:")
             if step["latex"]:
                 lines.append("\\begin{align*}")
-                lines.append(" \\\\\n".join(_aligned(eq) for eq in step["latex"]))
+                lines.append(" \\\\\n".join(aligned(eq) for eq in step["latex"]))
                 lines.append("\\end{align*}")
     lines.append("\\subsection*{Answers}")
     lines.append("\\begin{align*}")
-    rows = []
-    for name, a in result["answers"].items():
-        value = f" = {a['value']}\\,{units.latex_unit(a['unit'])}" if a["value"] is not None else ""
-        rows.append(f"{sp.latex(sp.Symbol(name))} &= {a['latex']}{value}")
-    lines.append(" \\\\\n".join(rows))
+    lines.append(" \\\\\n".join(aligned(answer_latex(name, a)) for name, a in result["answers"].items()))
     lines.append("\\end{align*}")
     return "\n".join(lines)
 
 
-def _aligned(latex_equation: str) -> str:
+def answer_latex(name: str, answer: dict) -> str:
+    r"""An answer of the report as one LaTeX equation: its symbol, expression and value in its unit.
+
+    >>> answer_latex("omega_0", {"latex": r"\sqrt{\frac{g}{L}}", "value": "3.13", "unit": "rad/s"})
+    '\\omega_{0} = \\sqrt{\\frac{g}{L}} = 3.13\\,\\mathrm{rad}/\\mathrm{s}'
+    """
+    value = f" = {answer['value']}\\,{units.latex_unit(answer['unit'])}" if answer["value"] is not None else ""
+    return f"{sp.latex(sp.Symbol(name))} = {answer['latex']}{value}"
+
+
+def aligned(latex_equation: str) -> str:
     """Put the alignment point at the first '=' of a LaTeX equation."""
     return latex_equation.replace("=", "&=", 1)

@@ -5,6 +5,8 @@ seed, rounds them to their significant figures (exact decimals), and evaluates t
 answers. Everything is built in a temporary folder and moved into place only when the
 whole build succeeded, so a failed build leaves the previous one intact.
 
+Called, this module builds a set: `derive.sheet("demo", out="build/demo")` is derive.api.sheet.
+
 >>> problem_set = load_set("demo")
 >>> problem_set.problems[0]
 'rod_endpoint'
@@ -16,6 +18,7 @@ import io
 import json
 import random
 import sys
+import types
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
@@ -212,6 +215,32 @@ def load_set(reference: str, defaults: Defaults = Defaults()) -> ProblemSet:
         due=_set_text(path, raw, "due"), problems=tuple(problems), fields=tuple(fields), variants=variants, seed=seed,
         path=path, outputs=outputs(listed, f"{path}: outputs"), questions=questions, tolerance=defaults.tolerance,
     )
+
+
+#: How errors name a set given as a list of problems rather than a file (derive.sheet([...])).
+LISTED = Path("derive.sheet")
+
+
+def set_of(entries: list, title: str | None = None, defaults: Defaults = Defaults()) -> ProblemSet:
+    """A set of the problems listed as a set file's `problems:` would list them, with a set file's
+    defaults (one variant, seed 0, the course defaults' outputs) and `title` (default
+    "Problems"); its id, and so its folder, is `problems`.
+
+    >>> set_of(["rod_endpoint", "tugged_spool"]).fields
+    ('problems[0]', 'problems[1]')
+    >>> set_of(["rod_endpoint", "rod_endpoint"])
+    Traceback (most recent call last):
+    ...
+    derive.errors.InputError: derive.sheet: problems[1]: rod_endpoint is already problems[0]; ...
+    """
+    if not isinstance(entries, list) or not entries or not all(isinstance(p, (str, dict)) for p in entries):
+        raise InputError(f"{LISTED}: problems: expected a list of problem ids, files or {{topic: TOPIC}}")
+    problems, fields = _problems(LISTED, entries, 0, lambda i: f"problems[{i}]")
+    title = _set_text(LISTED, {"title": "Problems" if title is None else title}, "title")
+    return ProblemSet(id="problems", title=title, course=defaults.course, due="", problems=tuple(problems),
+                      fields=tuple(fields), variants=1, seed=0, path=LISTED,
+                      outputs=DEFAULT_OUTPUTS if defaults.outputs is None else defaults.outputs,
+                      tolerance=defaults.tolerance)
 
 
 def _problems(where: Path | str, entries: list, seed: int, field_of) -> tuple[list[str], list[str]]:
@@ -504,13 +533,15 @@ def _write(folder: Path, name: str, text: str) -> Path:
     return path
 
 
-def build(references: str | Sequence[str], *, variants: int | None = None, seed: int | None = None,
+def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None = None, seed: int | None = None,
           out_dir: str | None = None, formats: frozenset[str] | None = None, questions: str | None = None,
           defaults: Defaults = Defaults(), progress: Reporter = Reporter()) -> list[Path]:
-    """Build a set (or problems given by themselves: load_sheet) into its output folder; return
-    the files written. Arguments left None take the set file's values (`variants`, `seed`,
-    `outputs`, `questions`), and where it has none, the course defaults'."""
-    problem_set = load_sheet([references] if isinstance(references, str) else references, defaults)
+    """Build a set (a set file or its id, problems given by themselves: load_sheet, or a
+    ProblemSet: set_of) into its output folder; return the files written. Arguments left None
+    take the set file's values (`variants`, `seed`, `outputs`, `questions`), and where it has
+    none, the course defaults'."""
+    problem_set = references if isinstance(references, ProblemSet) else \
+        load_sheet([references] if isinstance(references, str) else references, defaults)
     variants = variants or problem_set.variants
     seed = problem_set.seed if seed is None else seed
     formats = problem_set.outputs if formats is None else formats
@@ -615,3 +646,15 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
                                                                    question=item.question(middle)))
         progress("compiling the PDF")
         return output_folder.commit(staging, out, [tex, export.pdf(tex)])
+
+
+class _Callable(types.ModuleType):
+    """`derive.sheet` is both this module and the Python API's function that builds a set."""
+
+    def __call__(self, *args, **kwargs) -> list[Path]:
+        from derive.api import sheet
+
+        return sheet(*args, **kwargs)
+
+
+sys.modules[__name__].__class__ = _Callable

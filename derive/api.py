@@ -1,0 +1,205 @@
+r"""The Python API, for notebooks and scripts: `derive.load`, `derive.solve` and `derive.sheet`.
+
+They do what `derive solve` and `derive sheet` do (the command line calls them), and raise
+derive.errors.InputError with the command line's one-line message on bad input. A solved
+problem and each of its answers show as math in Jupyter (`_repr_latex_`, `_repr_html_`).
+
+>>> import derive
+>>> result = derive.solve("string_wrapped_disk", {"m": 2, "M": 4, "R": "30 cm"}, digits=4)
+>>> result
+Result(string_wrapped_disk: a = -4.905 m/s^2, alpha = -16.35 rad/s^2, T = 9.810 N)
+>>> result["a"]
+Answer(a = -2*g*m/(M + 2*m) = -4.905 m/s^2)
+>>> result["a"]._repr_latex_()
+'$$a = - \\frac{2 g m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}$$'
+>>> result.at({"m": 1})["T"].value  # the same derivation, m changed
+'6.540'
+"""
+from __future__ import annotations
+
+import html
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+import sympy as sp
+
+from derive import MAX_DIGITS, MAX_VARIANTS, defaults, report, units
+from derive import sheet as sheets
+from derive.answers import Solution
+from derive.errors import InputError
+from derive.problem import Problem, load
+from derive.progress import MODES, Reporter
+
+__all__ = ["load", "solve", "sheet", "Result", "Answer"]
+
+
+@dataclass(frozen=True)
+class Answer:
+    """One asked quantity at the values solved for: its exact `expression` (sympy, in the
+    parameters' symbols, SI) and its `value` in its declared `unit`, to the digits asked
+    (None when a parameter it uses has no value)."""
+
+    name: str
+    meaning: str
+    expression: sp.Expr
+    unit: str
+    value: str | None
+    equation: str  # LaTeX: "a = expression = value unit", as `derive solve --format latex` prints it
+
+    def __repr__(self) -> str:
+        shown = f" = {self.value}{_unit_text(self.unit)}" if self.value is not None else ""
+        return f"Answer({self.name} = {sp.sstr(self.expression)}{shown})"
+
+    def _repr_latex_(self) -> str:
+        return f"$${self.equation}$$"
+
+    def _repr_html_(self) -> str:
+        return f"<p>{html.escape(self.meaning)}: {_math(self.equation)}</p>"
+
+
+class Result:
+    """A problem solved at some parameter values (a variant): `result["a"]` and `result.answers`
+    (Answer), the derivation (`solution`, an answers.Solution) and the report `derive solve`
+    prints (`report`, the JSON contract; `as_text()`, `as_latex()`, `as_json()`)."""
+
+    def __init__(self, problem: Problem, solution: Solution, values: Mapping | None, digits: int):
+        self.problem, self.solution, self.digits = problem, solution, digits
+        self.values = _overrides(values)  # as `--set` takes them
+        self.report = report.solve(problem, self.values, digits, solution)
+        self.answers = {
+            name: Answer(name, a["meaning"], solution.expressions[name], a["unit"], a["value"],
+                         report.answer_latex(name, a))
+            for name, a in self.report["answers"].items()
+        }
+
+    def __getitem__(self, name: str) -> Answer:
+        if name not in self.answers:
+            raise KeyError(f"{self.problem.id} asks no {name!r} (asks: {', '.join(self.answers)})")
+        return self.answers[name]
+
+    def at(self, values: Mapping | None = None, digits: int | None = None) -> Result:
+        """The same problem with these values changed (the derivation is not repeated)."""
+        return Result(self.problem, self.solution, {**self.values, **_overrides(values)},
+                      _digits(self.digits if digits is None else digits))
+
+    def as_text(self) -> str:
+        return report.as_text(self.report)
+
+    def as_latex(self) -> str:
+        return report.as_latex(self.report)
+
+    def as_json(self) -> str:
+        return report.as_json(self.report)
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{a.name} = {a.value}{_unit_text(a.unit)}" if a.value is not None
+                          else f"{a.name} = {sp.sstr(a.expression)}" for a in self.answers.values())
+        return f"Result({self.problem.id}: {shown})"
+
+    def _given(self) -> list[str]:
+        """The parameters that have values, as LaTeX: M = 4.000\\,\\mathrm{kg}."""
+        return [f"{sp.latex(self.problem.parameters[n].symbol)} = {p['value']}\\,{units.latex_unit(p['unit'])}"
+                for n, p in self.report["parameters"].items() if p["value"] is not None]
+
+    def _repr_latex_(self) -> str:
+        rows = " \\\\\n".join(report.aligned(a.equation) for a in self.answers.values())
+        given = f" \\\\\n&\\text{{at }} {', '.join(self._given())}" if self._given() else ""
+        return f"$$\\begin{{aligned}}\n{rows}{given}\n\\end{{aligned}}$$"
+
+    def _repr_html_(self) -> str:
+        rows = "".join(
+            f"<tr><td>{html.escape(a.meaning)}</td><td>{_math(a.equation)}</td></tr>" for a in self.answers.values())
+        given = f"<p>at {', '.join(map(_math, self._given()))}</p>" if self._given() else ""
+        return (f"<div><p><strong>{html.escape(self.problem.title)}</strong> "
+                f"(<code>{html.escape(self.problem.id)}</code>)</p><table>{rows}</table>{given}</div>")
+
+
+def _math(latex: str) -> str:
+    """Inline math in HTML, which Jupyter's MathJax typesets."""
+    return f"\\({html.escape(latex)}\\)"
+
+
+def _unit_text(unit: str) -> str:
+    return "" if unit in ("", "1") else f" {unit}"
+
+
+def _overrides(values: Mapping | None) -> dict[str, str]:
+    """Parameter values as `--set` takes them: {"m": 2, "M": "200 g"} -> {"m": "2", "M": "200 g"}."""
+    if values is None:
+        return {}
+    if not isinstance(values, Mapping):
+        raise InputError(f"values: expected a mapping of parameter names to values, e.g. {{'m': 2, 'M': '200 g'}}, "
+                         f"got {type(values).__name__}")
+    return {str(name): str(value) for name, value in values.items()}
+
+
+def _whole(name: str, value, low: int | None = None, high: int | None = None) -> int:
+    """A whole number the caller gave, within [low, high] where given."""
+    if (isinstance(value, bool) or not isinstance(value, int) or (low is not None and value < low)
+            or (high is not None and value > high)):
+        within = f" from {low} to {high}" if high is not None else ""
+        raise InputError(f"{name}: expected a whole number{within}, got {value!r}")
+    return value
+
+
+def _digits(digits) -> int:
+    return _whole("digits", digits, 1, MAX_DIGITS)
+
+
+def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, digits: int = 15) -> Result:
+    """Derive a problem (a Problem, a problem file or a library id) and answer it at `values`:
+    {name: value}, a number in the parameter's declared unit or a text with a unit ("200 g"), as
+    `derive solve --set` takes them. Parameters not given keep the file's value; an answer that
+    uses one with no value has its expression only. Values have `digits` significant digits.
+
+    >>> solve("rod_endpoint", digits=3)["I"]
+    Answer(I = L**2*m/3)
+    >>> solve("rod_endpoint", {"q": 1})
+    Traceback (most recent call last):
+    ...
+    derive.errors.ProblemError: --set q: rod_endpoint has no parameter 'q' (parameters: m, L)
+    """
+    problem = problem if isinstance(problem, Problem) else load(problem)
+    return Result(problem, Solution(problem), values, _digits(digits))
+
+
+def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = None, *, variants: int | None = None,
+          seed: int | None = None, to: str | list[str] | None = None, questions: str | None = None,
+          title: str | None = None, progress: str | Reporter = "auto") -> list[Path]:
+    """Build a problem set as `derive sheet` does, into `out` (default build/<set id>); return
+    the files written.
+
+    `ids_or_set` is a set file or the id of one, or a list of problems as a set file lists them
+    (ids, files, {"topic": "rolling", "count": 2}), which builds with a set file's defaults into
+    build/problems, under `title`. `variants`, `seed`, `to` (outputs besides the .tex files and
+    the keys: "pdf,html" or a list; [] for none), `questions` ("numerical" or "choice") override
+    the set's. `progress`: "auto", "bar", "lines" or "none" (stderr).
+
+    >>> sheet(["rod_endpoint"], to="pfd")
+    Traceback (most recent call last):
+    ...
+    derive.errors.InputError: --to: unknown output 'pfd' (outputs: pdf, html, md, docx, moodle, qti, distractors); did you mean 'pdf'?
+    """
+    course = defaults.load()  # derive.toml or [tool.derive] of the working folder, as for `derive sheet`
+    if isinstance(ids_or_set, (str, os.PathLike)):
+        if title is not None:
+            raise InputError("title: a set file gives its own title")
+        problem_set = str(ids_or_set)
+    elif isinstance(ids_or_set, (list, tuple)):
+        problem_set = sheets.set_of([str(p) if isinstance(p, os.PathLike) else p for p in ids_or_set], title, course)
+    else:
+        raise InputError(f"ids_or_set: expected a set file or id, or a list of problem ids or files, got "
+                         f"{type(ids_or_set).__name__}")
+    if isinstance(progress, str):
+        if progress not in MODES:
+            raise InputError(f"progress: expected one of {', '.join(MODES)}, got {progress!r}")
+        progress = Reporter(progress)
+    if questions not in (None, *sheets.QUESTIONS):
+        raise InputError(f"questions: expected one of {', '.join(sheets.QUESTIONS)}, got {questions!r}")
+    return sheets.build(
+        problem_set, out_dir=out, questions=questions, progress=progress, defaults=course,
+        variants=None if variants is None else _whole("variants", variants, 1, MAX_VARIANTS),
+        seed=None if seed is None else _whole("seed", seed),
+        formats=None if to is None else sheets.outputs(to if isinstance(to, str) else ",".join(to), "--to"))
