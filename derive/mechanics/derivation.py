@@ -215,12 +215,33 @@ def rest_positions(coords) -> dict[sp.Symbol, sp.Expr]:
 
 
 def tidy(expr: sp.Expr) -> sp.Expr:
-    """A compact form of a solved expression: rational functions cancelled, then factored."""
+    """A compact form of a solved expression: rational functions cancelled, trigonometric
+    identities applied where every angle is a plain one, then factored.
+
+    >>> m, g, x = sp.symbols("m g x")
+    >>> tidy(m*g*sp.sin(x)**2 + m*g*sp.cos(x)**2)
+    g*m
+    """
     with limits.time_limit("simplifying"):
         expr = sp.cancel(sp.together(expr))
-        if expr.has(sp.sin, sp.cos):
+        if expr.has(sp.sin, sp.cos) and _plain_angles(expr):
             expr = sp.trigsimp(expr)
+        elif expr.has(sp.sin, sp.cos):
+            expr = sp.cancel(simplest(expr))
         return sp.factor_terms(sp.factor(expr))
+
+
+def _plain_angles(expr: sp.Expr) -> bool:
+    """Whether every sine and cosine is of an angle free of other functions (theta, 2*phi + pi/3):
+    sympy's trigsimp searches its identities there in a second; of an angle such as
+    101*acos(...)/100 it searched for minutes (a slip angle put 1% off) and found nothing to fold,
+    so those get the polynomial folding of sin^2 + cos^2 only.
+
+    >>> x = sp.Symbol("x")
+    >>> _plain_angles(sp.sin(2*x + 1)), _plain_angles(sp.cos(sp.acos(x/3)/2))
+    (True, False)
+    """
+    return all(not f.args[0].atoms(sp.Function) for f in expr.atoms(sp.sin, sp.cos))
 
 
 def root(expr: sp.Expr) -> sp.Expr:
