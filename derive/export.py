@@ -230,3 +230,35 @@ def convert(tex: Path, target: str, title: str) -> Path:
     except (RuntimeError, OSError) as error:
         raise BuildError(f"pandoc could not convert {tex.name}: {str(error).strip().splitlines()[-1]}") from None
     return out
+
+
+#: pandoc's HTML for an LMS: math as MathJax reads it (\( \) and \[ \]), no generated ids (a quiz
+#: page holds many questions), a \section one level below the page's headings (h3).
+LMS_HTML = ["--mathjax", "--section-divs", "--shift-heading-level-by=2"]
+
+
+def html_sections(tex: str) -> list[str]:
+    """The body of each \\section of a LaTeX document as an HTML fragment, in order, without the
+    section's own heading (pandoc, as `convert`, with LMS_HTML): what an LMS shows as a question's
+    feedback, each from one section of the same document (one pandoc run for them all)."""
+    import lxml.html
+    import pypandoc
+
+    try:
+        html = pypandoc.convert_text(tex, "html5", format="latex-auto_identifiers", extra_args=[*LMS_HTML, *PANDOC_SAFETY])
+    except (RuntimeError, OSError) as error:
+        raise BuildError(f"pandoc could not convert the worked solutions: {str(error).strip().splitlines()[-1]}") from None
+    fragments = []
+    for section in lxml.html.fragments_fromstring(html):
+        if isinstance(section, str) and not section.strip():
+            continue
+        if isinstance(section, str) or section.tag != "section":
+            raise BuildError(f"pandoc's HTML of the worked solutions has {str(section)[:40]!r} outside a section")
+        heading = section[0]
+        section.text = heading.tail  # the heading goes, its tail stays
+        section.remove(heading)
+        for inner in section.findall(".//section"):  # subsections: their headings and content, unwrapped
+            inner.drop_tag()
+        fragments.append((section.text or "").lstrip() + "".join(
+            lxml.html.tostring(child, encoding="unicode") for child in section))
+    return fragments

@@ -1,12 +1,18 @@
 """Learning-management-system exports: Moodle XML (cloze) and a QTI 1.2 zip for Canvas.
 
-Each problem and variant becomes one Moodle cloze question with a field per asked quantity,
-and one Canvas item per asked quantity: numerical (the answer and its tolerance) or, with
-wrong choices derived from mistaken set-ups, multiple choice. The tolerance follows the
-answer's policy: one unit in the last significant digit shown (the default), a percentage
-(`2%`) or an absolute amount in the answer's unit. Canvas keeps four decimal places of a
-numeric answer and its margin, so a quantity whose margin would fall below 1e-4 is asked in a
-scaled unit (10^-k UNIT). `check` holds every exported tolerance to the LMS's limits.
+Both are laid out for a quiz that gives each student one variant of each problem and grades it
+on import. Moodle: a question category per problem (`$course$/derive/SET/PROBLEM`) holding one
+cloze question per variant, with a field per asked quantity, for the quiz's "random question
+from category". Canvas: a question group (a `<section>` that picks 1) per problem and asked
+quantity, with one item per variant worth `POINTS` points, in a graded quiz (`assessment_meta.xml`,
+quiz type `assignment`). An item is numerical (the answer and its tolerance) or, with wrong choices
+derived from mistaken set-ups, multiple choice. Each question's general feedback is the worked
+solution of its variant (the solutions sheet's own text, as HTML with MathJax math).
+
+The tolerance follows the answer's policy: one unit in the last significant digit shown (the
+default), a percentage (`2%`) or an absolute amount in the answer's unit. Canvas keeps four decimal
+places of a numeric answer and its margin, so a quantity whose margin would fall below 1e-4 is
+asked in a scaled unit (10^-k UNIT). `check` holds every exported tolerance to the LMS's limits.
 
 Every file is built by lxml's serializer, never by string formatting: titles, meanings and the
 question's HTML (its `<p>`s serialized too) are text content or attribute values, so no text from
@@ -22,6 +28,7 @@ escaping inside that text (`_cloze_text`).
 """
 from __future__ import annotations
 
+import hashlib
 import io
 import random
 import re
@@ -49,6 +56,7 @@ class Item:
     unit: str
     tolerance: str  # absolute, in `unit`
     wrong: tuple[str, ...] = ()  # wrong choices (multiple choice); none: a numerical question
+    solution: str = ""  # the variant's worked solution, HTML with MathJax math: the general feedback
 
 
 def tolerance(value: str, policy: str | None = None) -> str:
@@ -159,44 +167,131 @@ def _cloze(item: Item) -> str:
     return f"{{1:MULTICHOICE_V:{options}}}"
 
 
+#: Characters written as numeric character references in Moodle's question HTML. Until the HTML
+#: is serialized (which would escape the `&` of a reference) each stands as a private-use mark.
+_REFERENCED = "{~\\&"
+_MARK = {c: chr(0xE000 + i) for i, c in enumerate(_REFERENCED)}
+_REFERENCE = {mark: f"&#{ord(c)};" for c, mark in _MARK.items()}
+
+
 def _cloze_text(text: str) -> str:
-    """Text inside a cloze field: Moodle's own specials (} # ~ / " \\) escaped with a backslash."""
-    return re.sub(r'([}#~/"\\])', r"\\\1", text)
+    """Text inside a cloze field (a choice), written so that Moodle reads back exactly `text`.
 
+    Moodle's parser (question/type/multianswer/questiontype.php, qtype_multianswer_extract_question
+    and ANSWER_ALTERNATIVE_ANSWER_REGEX `.+?(?<!\\\\|&|&amp;)(?=[~#}]|$)`) ends a choice at a `~`,
+    `#` or `}` that no `\\`, `&` or `&amp;` precedes, then html_entity_decode()s it and undoes two
+    escapes only: `\\}` and `\\#`. So `}` and `#` take a backslash; `~`, `\\` and `&`, which no
+    backslash escapes, become character references (&#126;: its `#` follows `&`, so it ends
+    nothing) that html_entity_decode turns back; everything else, `/` and `"` included, is written
+    as it is (a backslash before it would be shown: `m\\/s^2`).
 
-_BRACE = "\ue000"  # a literal { of a problem's text, until the question's HTML is serialized
+    >>> _cloze_text("m/s^2"), _cloze_text("a}b#c")
+    ('m/s^2', 'a\\\\}b\\\\#c')
+    """
+    marked = "".join(_MARK[c] if c in "~\\&" else c for c in text)
+    return re.sub(r"([}#])", r"\\\1", marked)
 
 
 def _literal_braces(text: str) -> str:
-    """A problem's text with each `{` marked, to become the HTML entity &#123; in Moodle's question
+    """A problem's text with each `{` marked, to become the reference &#123; in Moodle's question
     text: Moodle's cloze parser reads `{1:NUMERICAL:=0}` in the raw HTML as an answer field, so a
     meaning or question must not be able to write one; the browser shows &#123; as `{` (and
     MathJax reads the decoded text)."""
-    return text.replace("{", _BRACE)
+    return text.replace("{", _MARK["{"])
 
 
-def moodle(items: list[Item], category: str) -> str:
-    """Moodle XML: a category and one cloze question per problem and variant."""
-    groups: dict[tuple[str, int], list[Item]] = {}
+def _references(html: str) -> str:
+    """Serialized HTML with each private-use mark as its character reference."""
+    return re.sub("[" + "".join(_REFERENCE) + "]", lambda m: _REFERENCE[m.group()], html)
+
+
+def _category(*names: str) -> str:
+    """A Moodle category path in the course's context, each name's `/` doubled as Moodle's
+    question/format.php writes and reads a path (assemble_category_path, split_category_path).
+
+    >>> _category("derive", "week 3", "a/b")
+    '$course$/derive/week 3/a//b'
+    """
+    return "/".join(["$course$", *(name.replace("/", "//") for name in names)])
+
+
+# Moodle's XML import, as this export relies on it (moodle, question/format/xml/format.php):
+# import_category reads a category "question" (<category><text>PATH</text>, <info format=...>), and
+# question/format.php (create_category_path) creates the path, under the context's top category,
+# and files the questions that follow in it; import_multianswer hands the question text to
+# qtype_multianswer_extract_question (question/type/multianswer/questiontype.php, see _cloze_text)
+# and imports <generalfeedback> with its format. Moodle's MathJax filter typesets \( \) and \[ \].
+def moodle(items: list[Item], set_id: str) -> str:
+    """Moodle XML: for each problem its category, `$course$/derive/SET/PROBLEM` (a category
+    "question" before the problem's variants: Moodle files the questions after it there), then one
+    cloze question per variant with a field per asked quantity and the variant's worked solution
+    as general feedback. A quiz's "random question" from a problem's category gives each student
+    one variant of it."""
+    problems: dict[str, dict[int, list[Item]]] = {}
     for item in items:
-        groups.setdefault((item.problem, item.variant), []).append(item)
-    quiz = E.quiz(E.question(E.category(E.text(f"$course$/derive/{category}")), type="category"))
-    for (problem, variant), group in groups.items():
-        fields = [f"{_literal_braces(i.meaning)}: \\({i.name}\\) = {_cloze(i)}" for i in group]
-        html = _paragraphs(_mathjax(_literal_braces(group[0].question)), *fields).replace(_BRACE, "&#123;")
-        quiz.append(E.question(
-            E.name(E.text(f"{problem} variant {variant}")),
-            E.questiontext(E.text(html), format="html"),
-            E.generalfeedback(E.text()),
-            type="cloze"))
+        problems.setdefault(item.problem, {}).setdefault(item.variant, []).append(item)
+    quiz = E.quiz()
+    for problem, variants in problems.items():
+        title = next(iter(variants.values()))[0].title
+        quiz.append(E.question(E.category(E.text(_category("derive", set_id, problem))),
+                               E.info(E.text(_paragraphs(title)), format="html"), type="category"))
+        for variant, group in variants.items():
+            fields = [f"{_literal_braces(i.meaning)}: \\({i.name}\\) = {_cloze(i)}" for i in group]
+            html = _references(_paragraphs(_mathjax(_literal_braces(group[0].question)), *fields))
+            quiz.append(E.question(
+                E.name(E.text(f"{problem} variant {variant}")),
+                E.questiontext(E.text(html), format="html"),
+                E.generalfeedback(E.text(group[0].solution), format="html"),
+                type="cloze"))
     return _xml(quiz).decode()
 
 
+# Canvas's QTI import, as this export relies on it (canvas-lms, and the packages it reads as its own):
+# - the package: lib/cc/qti/qti_generator.rb (generate_quiz, generate_qti_only) writes a quiz as
+#   ID/ID.xml, a resource of type imsqti_xmlv1p2 with a <dependency> on a second resource, of type
+#   associatedcontent/imscc_xmlv1p1/learning-application-resource, whose file is
+#   ID/assessment_meta.xml; ID is the resource's identifier and the assessment's ident. text2qti
+#   (qti.py, xml_imsmanifest.py, xml_assessment_meta.py) and R/exams (exams2canvas ->
+#   exams2qti12, inst/xml/canvas_manifest.xml, canvas_meta.xml) write the same layout.
+# - the metadata: lib/cc/importer/canvas/quiz_metadata_converter.rb (post_process_assessments)
+#   reads only a learning-application-resource's file named ASSESSMENT_ID/assessment_meta.xml,
+#   then its quiz_type, points_possible, allowed_attempts ... and <assignment> (the gradebook
+#   column); quiz_type "assignment" is a graded quiz.
+# - the groups: gems/plugins/qti_exporter/lib/qti/assessment_test_converter.rb (process_section)
+#   makes a section with a selection into a question group that picks that many, worth
+#   points_per_item each; qti_generator.rb (add_group) writes it as
+#   <selection_ordering><selection><selection_number>/<selection_extension><points_per_item>.
+# - the items: lib/cc/qti/qti_items.rb (add_question) writes the fields question_type and
+#   points_possible in itemmetadata, and a question's general feedback as
+#   <itemfeedback ident="general_fb"> shown by a first respcondition (<other/>, continue Yes);
+#   assessment_item_converter.rb (get_feedback) reads an ident matching general_ as the
+#   question's neutral comments. Canvas typesets \( \) and \[ \] math with MathJax (exams2canvas
+#   converts with "pandoc-mathjax" for it).
 QTI_NAMESPACE = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
 MANIFEST_NAMESPACE = "http://www.imsglobal.org/xsd/imsccv1p1/imscp_v1p1"
+CANVAS_NAMESPACE = "http://canvas.instructure.com/xsd/cccv1p0"
 QTI = ElementMaker(namespace=QTI_NAMESPACE, nsmap={None: QTI_NAMESPACE})
 MANIFEST = ElementMaker(namespace=MANIFEST_NAMESPACE, nsmap={None: MANIFEST_NAMESPACE})
-ASSESSMENT = "assessment/assessment.xml"  # the zip's one resource, named in its manifest
+CANVAS = ElementMaker(namespace=CANVAS_NAMESPACE, nsmap={None: CANVAS_NAMESPACE})
+QTI_RESOURCE = "imsqti_xmlv1p2"
+META_RESOURCE = "associatedcontent/imscc_xmlv1p1/learning-application-resource"
+POINTS = 1  # an asked quantity's points, as a Moodle cloze field's default weight
+GROUP_TITLE_LIMIT = 255  # characters of a Canvas question group's name
+
+
+def identifier(*parts: object) -> str:
+    """An identifier for Canvas, from what names the thing (set, seed, problem, variant, ...): the
+    same in every export of the same set and seed, different for anything else, so that a second
+    import matches its own quiz and questions and no other export's.
+
+    >>> identifier("quiz", "demo", 4) == identifier("quiz", "demo", 4) != identifier("quiz", "demo", 5)
+    True
+    """
+    return "d" + hashlib.sha256("\x1f".join(map(str, parts)).encode()).hexdigest()[:32]
+
+
+def _field(label: str, entry: str) -> etree._Element:
+    return QTI.qtimetadatafield(QTI.fieldlabel(label), QTI.fieldentry(entry))
 
 
 def _numerical(item: Item) -> tuple[str, str, etree._Element, etree._Element]:
@@ -220,35 +315,73 @@ def _multiple_choice(item: Item) -> tuple[str, str, etree._Element, etree._Eleme
     return "multiple_choice_question", f"{item.meaning}:", response, QTI.varequal(f"choice{right}", respident="response1")
 
 
-def _qti_item(item: Item, number: int) -> etree._Element:
-    """A Canvas item: its question type, the question's HTML, the response and its scoring."""
+def _qti_item(item: Item, ident: str) -> etree._Element:
+    """A Canvas item: its question type and points, the question's HTML, the response, its scoring
+    and the worked solution as general feedback."""
     kind, prompt, response, condition = (_multiple_choice if item.wrong else _numerical)(item)
     text = _paragraphs(_mathjax(item.question), prompt)
+    scoring = [QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
+                                 {"continue": "No"})]
+    feedback = []
+    if item.solution:
+        scoring.insert(0, QTI.respcondition(QTI.conditionvar(QTI.other()),
+                                            QTI.displayfeedback(feedbacktype="Response", linkrefid="general_fb"),
+                                            {"continue": "Yes"}))
+        feedback.append(QTI.itemfeedback(QTI.flow_mat(QTI.material(QTI.mattext(item.solution, texttype="text/html"))),
+                                         ident="general_fb"))
     return QTI.item(
-        QTI.itemmetadata(QTI.qtimetadata(QTI.qtimetadatafield(QTI.fieldlabel("question_type"), QTI.fieldentry(kind)))),
+        QTI.itemmetadata(QTI.qtimetadata(_field("question_type", kind), _field("points_possible", str(POINTS)))),
         QTI.presentation(QTI.material(QTI.mattext(text, texttype="text/html")), response),
-        QTI.resprocessing(
-            QTI.outcomes(QTI.decvar(maxvalue="100", minvalue="0", varname="SCORE", vartype="Decimal")),
-            QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
-                              {"continue": "No"})),
-        ident=f"item{number}", title=f"{item.problem} v{item.variant} {item.name}")
+        QTI.resprocessing(QTI.outcomes(QTI.decvar(maxvalue="100", minvalue="0", varname="SCORE", vartype="Decimal")),
+                          *scoring),
+        *feedback,
+        ident=ident, title=f"{item.problem} v{item.variant} {item.name}")
 
 
-def qti(items: list[Item], title: str) -> bytes:
-    """A QTI 1.2 zip for Canvas: imsmanifest.xml and one assessment of numerical or
-    multiple-choice items."""
-    assessment = QTI.questestinterop(QTI.assessment(
-        QTI.section(*(_qti_item(item, n) for n, item in enumerate(items, start=1)), ident="root_section"),
-        ident="derive_assessment", title=title))
+def qti(items: list[Item], title: str, set_id: str, seed: int) -> bytes:
+    """A QTI 1.2 zip for Canvas: a graded quiz with a question group per problem and asked
+    quantity that picks one of its variants (numerical or multiple-choice items, worth POINTS
+    each), its metadata (assessment_meta.xml) and imsmanifest.xml listing both.
+
+    Canvas picks each group's item on its own, so a problem that asks for several quantities is one
+    group per quantity: a Canvas item holds one numeric answer with a tolerance."""
+    quiz = identifier("quiz", set_id, seed)
+    groups: dict[tuple[str, str], list[Item]] = {}
+    for item in items:
+        groups.setdefault((item.problem, item.name), []).append(item)
+    sections = [
+        QTI.section(
+            QTI.selection_ordering(QTI.selection(QTI.selection_number("1"),
+                                                 QTI.selection_extension(QTI.points_per_item(str(POINTS))))),
+            *(_qti_item(i, identifier("item", set_id, seed, problem, i.variant, name)) for i in group),
+            ident=identifier("group", set_id, seed, problem, name),
+            title=f"{group[0].title}: {group[0].meaning}"[:GROUP_TITLE_LIMIT])
+        for (problem, name), group in groups.items()]
+    assessment = QTI.questestinterop(QTI.assessment(QTI.section(*sections, ident="root_section"),
+                                                    ident=quiz, title=title))
+    points = str(POINTS * len(groups))
+    meta = CANVAS.quiz(
+        CANVAS.title(title), CANVAS.description(""), CANVAS.shuffle_answers("false"),
+        CANVAS.scoring_policy("keep_highest"), CANVAS.quiz_type("assignment"), CANVAS.points_possible(points),
+        CANVAS.show_correct_answers("true"), CANVAS.allowed_attempts("1"), CANVAS.one_question_at_a_time("false"),
+        CANVAS.cant_go_back("false"), CANVAS.available("false"),
+        CANVAS.assignment(CANVAS.title(title), CANVAS.workflow_state("unpublished"), CANVAS.quiz_identifierref(quiz),
+                          CANVAS.points_possible(points), CANVAS.grading_type("points"),
+                          CANVAS.submission_types("online_quiz"), identifier=identifier("assignment", set_id, seed)),
+        identifier=quiz)
+    assessment_path, meta_path = f"{quiz}/{quiz}.xml", f"{quiz}/assessment_meta.xml"
+    meta_id = identifier("metadata", set_id, seed)
     manifest = MANIFEST.manifest(
         MANIFEST.metadata(MANIFEST.schema("IMS Content"), MANIFEST.schemaversion("1.1.3")),
         MANIFEST.organizations(),
-        MANIFEST.resources(MANIFEST.resource(MANIFEST.file(href=ASSESSMENT), identifier="derive_assessment",
-                                             type="imsqti_xmlv1p2", href=ASSESSMENT)),
-        identifier="derive_manifest")
+        MANIFEST.resources(
+            MANIFEST.resource(MANIFEST.file(href=assessment_path), MANIFEST.dependency(identifierref=meta_id),
+                              identifier=quiz, type=QTI_RESOURCE),
+            MANIFEST.resource(MANIFEST.file(href=meta_path), identifier=meta_id, type=META_RESOURCE, href=meta_path)),
+        identifier=identifier("manifest", set_id, seed))
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w") as archive:  # stored, as ZipInfo entries are by default
-        for name, root in (("imsmanifest.xml", manifest), (ASSESSMENT, assessment)):
+        for name, root in (("imsmanifest.xml", manifest), (assessment_path, assessment), (meta_path, meta)):
             info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))  # the same bytes every build
             archive.writestr(info, _xml(root))
     return buffer.getvalue()

@@ -506,10 +506,26 @@ def _numerical_notes(key: dict) -> list[str]:
             f"{note}" for (problem_id, name, note), numbers in variants.items()]
 
 
-def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool) -> list[lms.Item]:
-    """Every numeric answer of every variant, with its question and tolerance, for the LMS
-    exports; with `choice`, with its distractors too (an answer with fewer than
-    distractors.WANTED stays numerical)."""
+def _worked_solutions(prepared: list[_ProblemVariants], contexts: list[dict], header: dict) -> dict[tuple[str, int], str]:
+    """Each problem's worked solution for each variant as HTML, keyed (problem id, variant): the
+    solutions sheet's own template and text, each section one problem with that variant's numbers
+    only (no figure: TikZ has no HTML), converted by pandoc in one run (export.html_sections)."""
+    keys, problems = [], []
+    for item, context in zip(prepared, contexts):
+        for variant in context["variants"]:
+            keys.append((item.problem.id, variant["number"]))
+            problems.append({**context, "figure": "", "variants": [variant]})
+    fragments = export.html_sections(render.render("solutions.tex.j2", set=header, problems=problems))
+    if len(fragments) != len(keys):
+        raise export.BuildError(f"pandoc made {len(fragments)} worked solutions of {len(keys)}")
+    return dict(zip(keys, fragments))
+
+
+def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
+               solutions: dict[tuple[str, int], str]) -> list[lms.Item]:
+    """Every numeric answer of every variant, with its question, tolerance and worked solution
+    (`solutions`, by problem id and variant), for the LMS exports; with `choice`, with its
+    distractors too (an answer with fewer than distractors.WANTED stays numerical)."""
     items = []
     for number in range(1, variants + 1):
         for item in prepared:
@@ -523,7 +539,8 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool) ->
                 choices = tuple(d["value"] for d in wrong.get(name, ()))
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
                                       answers[name], ask.unit, tolerances[name],
-                                      choices if len(choices) >= distractors.WANTED else ()))
+                                      choices if len(choices) >= distractors.WANTED else (),
+                                      solutions[item.problem.id, number]))
     return items
 
 
@@ -560,7 +577,11 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
     rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
     for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
         print(f"derive: warning: {note}", file=sys.stderr, flush=True)
-    items = _lms_items(prepared, variants, choice) if formats & {"moodle", "qti"} else []
+    contexts = [_solutions_context(i) for i in prepared]
+    items = []
+    if formats & {"moodle", "qti"}:
+        progress("the worked solutions as the LMS questions' feedback (pandoc)")
+        items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, contexts, header))
     for target in sorted(formats & {"moodle", "qti"}):
         lms.check(items, target)  # before anything is written
     key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
@@ -573,8 +594,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
             texs = [
                 _write(staging, "worksheet.tex", render.render("worksheet.tex.j2", set=header,
                                                                variants=worksheet_variants)),
-                _write(staging, "solutions.tex", render.render(
-                    "solutions.tex.j2", set=header, problems=[_solutions_context(i) for i in prepared])),
+                _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
                 _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
             ]
             products = list(texs)
@@ -602,7 +622,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
             if "qti" in formats:
                 begin("the Canvas QTI zip")
                 path = staging / "canvas-qti.zip"
-                path.write_bytes(lms.qti(items, problem_set.title))
+                path.write_bytes(lms.qti(items, problem_set.title, problem_set.id, seed))
                 products.append(path)
         return output_folder.commit(staging, out, products)
 

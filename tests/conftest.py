@@ -1,14 +1,18 @@
 """Shared helpers: run the installed `derive` console script as a user would."""
+import html
 import os
+import re
 import shutil
 import subprocess
 import sys
+import zipfile
 from contextlib import contextmanager
 from pathlib import Path
 from types import SimpleNamespace
 
 import mpmath
 import pytest
+from lxml import etree
 
 mpmath.mp.dps = 50  # references in the tests are computed at 50 digits
 
@@ -91,3 +95,54 @@ def document(body: str) -> str:
     from derive import render
 
     return render.render("preamble.tex.j2") + "\\begin{document}\n" + body + "\n\\end{document}\n"
+
+
+#: Moodle's cloze parser, question/type/multianswer/questiontype.php (qtype_multianswer_extract_question
+#: and its regexes ANSWER_REGEX, ANSWER_ALTERNATIVE_REGEX), in Python: a look-behind of one width
+#: per alternative, as Python's re wants, for PCRE's `(?<!\\|&|&amp;)`.
+_CLOZE_ALTERNATIVE = (r"(=|%(-?[0-9]+(?:[.,][0-9]*)?)%)?"
+                      r"(.+?(?<!\\)(?<!&)(?<!&amp;)(?=[~#}]|$))"
+                      r"(#(.*?(?<!\\)(?=[~}]|$)))?")
+_CLOZE_TYPES = ("(NUMERICAL|NM)|(MULTICHOICE|MC)|(MULTICHOICE_V|MCV)|(MULTICHOICE_H|MCH)|(SHORTANSWER|SA|MW)|"
+                "(SHORTANSWER_C|SAC|MWC)|(MULTICHOICE_S|MCS)|(MULTICHOICE_VS|MCVS)|(MULTICHOICE_HS|MCHS)|"
+                "(MULTIRESPONSE|MR)|(MULTIRESPONSE_H|MRH)|(MULTIRESPONSE_S|MRS)|(MULTIRESPONSE_HS|MRHS)")
+_CLOZE_FIELD = re.compile(r"\{([0-9]*):(" + _CLOZE_TYPES + r"):(?P<alternatives>" + _CLOZE_ALTERNATIVE
+                          + "(~" + _CLOZE_ALTERNATIVE + r")*)\}", re.S)
+
+
+def moodle_cloze(text: str) -> tuple[str, list[tuple[str, list[tuple[str, str]]]]]:
+    """A cloze question's HTML as Moodle reads it on import: (the text with each field as {#N},
+    [(field type, [(fraction mark, answer as Moodle stores it)])]). A choice is html_entity_decode()d
+    and only `\\}` and `\\#` are unescaped; a number is kept as written."""
+    fields = []
+    while match := _CLOZE_FIELD.search(text):
+        kind, remaining, answers = match.group(2), match.group("alternatives"), []
+        while alternative := re.search("~?" + _CLOZE_ALTERNATIVE, remaining, re.S):
+            answer = alternative.group(3)
+            if not kind.startswith(("NUMERICAL", "NM")):
+                answer = html.unescape(answer).replace("\\}", "}").replace("\\#", "#")
+            answers.append((alternative.group(1) or "", answer))
+            remaining = remaining.split(alternative.group(0), 1)[1]
+        fields.append((kind, answers))
+        text = text.replace(match.group(0), f"{{#{len(fields)}}}", 1)
+    return text, fields
+
+
+def qti_package(archive: zipfile.ZipFile) -> tuple[etree._Element, etree._Element, etree._Element]:
+    """(manifest, assessment, quiz metadata) of a Canvas QTI zip, parsed, once the manifest is found
+    to list every other file of the zip and nothing else, in Canvas's layout: the assessment
+    resource's file is ID/ID.xml (ID its identifier and the assessment's ident), with a dependency
+    on a learning-application-resource whose file is ID/assessment_meta.xml."""
+    manifest = etree.fromstring(archive.read("imsmanifest.xml"))
+    listed = [f.get("href") for f in manifest.iter("{*}file")]
+    assert sorted(listed + ["imsmanifest.xml"]) == sorted(archive.namelist())
+    (quiz,) = [r for r in manifest.iter("{*}resource") if r.get("type") == "imsqti_xmlv1p2"]
+    ident = quiz.get("identifier")
+    assert [f.get("href") for f in quiz.iter("{*}file")] == [f"{ident}/{ident}.xml"]
+    (dependency,) = quiz.iter("{*}dependency")
+    (meta,) = [r for r in manifest.iter("{*}resource") if r.get("identifier") == dependency.get("identifierref")]
+    assert meta.get("type") == "associatedcontent/imscc_xmlv1p1/learning-application-resource"
+    assert [f.get("href") for f in meta.iter("{*}file")] == [meta.get("href")] == [f"{ident}/assessment_meta.xml"]
+    assessment = etree.fromstring(archive.read(f"{ident}/{ident}.xml"))
+    assert assessment.find("{*}assessment").get("ident") == ident
+    return manifest, assessment, etree.fromstring(archive.read(meta.get("href")))

@@ -16,7 +16,7 @@ import pytest
 import yaml
 from lxml import etree
 
-from conftest import run_derive
+from conftest import qti_package, run_derive
 from derive import lms
 from derive.spreadsheet import safe_cell
 from test_hardening import problem_text
@@ -37,12 +37,11 @@ def paragraphs(fragment: str) -> list[str]:
 
 
 def qti_assessment(archive: zipfile.ZipFile) -> etree._Element:
-    """The assessment of a QTI zip, parsed, once its parsed manifest is found to list every other file."""
-    manifest = etree.fromstring(archive.read("imsmanifest.xml"))
-    listed = [f.get("href") for f in manifest.iter("{*}file")]
-    assert sorted(listed + ["imsmanifest.xml"]) == sorted(archive.namelist())
-    (resource,) = manifest.iter("{*}resource")
-    return etree.fromstring(archive.read(resource.get("href")))
+    """The assessment of a QTI zip, parsed, once its parsed manifest is found to list every other
+    file (conftest.qti_package); its quiz metadata holds the set's title as written."""
+    _, assessment, meta = qti_package(archive)
+    assert meta.findtext("{*}title") == assessment.find("{*}assessment").get("title")
+    return assessment
 
 
 @pytest.fixture(scope="module")
@@ -101,7 +100,12 @@ def test_lms_exports_parse_and_show_the_meaning(built):
     with zipfile.ZipFile(built / "canvas-qti.zip") as archive:
         assessment = qti_assessment(archive)
     assert assessment.find("{*}assessment").get("title") == SET_TITLE
-    assert [paragraphs(m.text)[1] for m in assessment.iter("{*}mattext")] == [f"{ASK} (in kg*m^2):"] * 2
+    prompts = [paragraphs(p.findtext("{*}material/{*}mattext"))[1] for p in assessment.iter("{*}presentation")]
+    assert prompts == [f"{ASK} (in kg*m^2):"] * 2
+    feedback = [q.findtext("generalfeedback/text") for q in questions] + [
+        f.findtext("{*}flow_mat/{*}material/{*}mattext") for f in assessment.iter("{*}itemfeedback")]
+    for n, html in enumerate(feedback):  # each variant's worked solution, parsed whole
+        assert f"Variant {n % 2 + 1}. Given" in shown(" ".join(paragraphs(html)))
 
 
 def test_lms_exports_of_both_question_kinds_show_hostile_text_as_written():
@@ -112,7 +116,7 @@ def test_lms_exports_of_both_question_kinds_show_hostile_text_as_written():
     assert question == f"Find \\(x\\) {HOSTILE}"
     assert field.startswith(f"{ASK}: \\(x\\) = {{1:NUMERICAL:")
     assert choice.startswith(f"{ASK}: \\(y\\) = {{1:MULTICHOICE_V:")
-    with zipfile.ZipFile(io.BytesIO(lms.qti(items, SET_TITLE))) as archive:
+    with zipfile.ZipFile(io.BytesIO(lms.qti(items, SET_TITLE, "week", 0))) as archive:
         assessment = qti_assessment(archive)
     assert assessment.find("{*}assessment").get("title") == SET_TITLE
     texts = [paragraphs(m.text) for m in assessment.iter("{*}mattext") if m.get("texttype") == "text/html"]

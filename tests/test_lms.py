@@ -10,7 +10,7 @@ import pytest
 
 from pathlib import Path
 
-from conftest import copy_library, run_derive
+from conftest import copy_library, moodle_cloze, qti_package, run_derive
 from derive import lms, sheet
 from derive.errors import InputError, ProblemError
 from derive.problem import load, parse
@@ -37,9 +37,7 @@ def test_moodle_xml_has_a_cloze_question_per_problem_and_variant_with_every_answ
 
 def test_qti_zip_has_a_manifest_and_numerical_items(exported):
     with zipfile.ZipFile(exported / "canvas-qti.zip") as archive:
-        manifest = ET.fromstring(archive.read("imsmanifest.xml"))
-        (resource,) = [e for e in manifest.iter() if e.tag.endswith("resource")]
-        assessment = ET.fromstring(archive.read(resource.get("href")))
+        _, assessment, _ = qti_package(archive)
     items = [e for e in assessment.iter() if e.tag.endswith("}item")]
     assert len(items) == 2 * (1 + 3 + 2)
     for item in items:
@@ -127,20 +125,26 @@ def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistak
     key = json.loads((out / "key.json").read_text())
     answers = [(a["value"], a["unit"], a["distractors"]) for v in key["variants"]
                for a in v["problems"]["rolling_incline"]["answers"].values()]
-    fields = re.findall(r"\{1:MULTICHOICE_V:([^}]*)\}", (out / "moodle.xml").read_text())
+    quiz = ET.parse(out / "moodle.xml").getroot()
+    fields = [f for q in quiz.iter("question") if q.get("type") == "cloze"
+              for f in moodle_cloze(q.find("questiontext/text").text)[1]]  # as Moodle reads them
     assert len(fields) == len(answers) == 2 * 5
-    for field, (value, unit, wrong) in zip(fields, answers):
-        options = field.split("~")
-        assert [o for o in options if o.startswith("=")] == [f"={value} {unit}".replace("/", "\\/")]
-        assert sorted(o[3:] for o in options if o.startswith("%0%")) == sorted(
-            f"{w['value']} {unit}".replace("/", "\\/") for w in wrong)
+    for (kind, options), (value, unit, wrong) in zip(fields, answers):
+        assert kind == "MULTICHOICE_V"
+        assert [a for mark, a in options if mark == "="] == [f"{value} {unit}"]  # m/s^2, no backslash
+        assert sorted(a for mark, a in options if mark == "%0%") == sorted(f"{w['value']} {unit}" for w in wrong)
         assert len(options) == 4  # three mistakes apply to every answer of the rolling sphere
-    assert any(not f.split("~")[0].startswith("=") for f in fields)  # the right answer is not always first
+    assert any(options[0][0] != "=" for _, options in fields)  # the right answer is not always first
     with zipfile.ZipFile(out / "canvas-qti.zip") as archive:
-        assessment = ET.fromstring(archive.read("assessment/assessment.xml"))
-    for item, (value, unit, _) in zip((e for e in assessment.iter() if e.tag.endswith("}item")), answers):
-        kinds = [e.text for e in item.iter() if e.tag.endswith("fieldentry")]
-        assert kinds == ["multiple_choice_question"]
+        _, assessment, _ = qti_package(archive)
+    titles = {f"rolling_incline v{n} {name}": (a["value"], a["unit"]) for n, v in enumerate(key["variants"], start=1)
+              for name, a in v["problems"]["rolling_incline"]["answers"].items()}
+    items = [e for e in assessment.iter() if e.tag.endswith("}item")]
+    assert sorted(i.get("title") for i in items) == sorted(titles)
+    for item in items:
+        value, unit = titles[item.get("title")]
+        fields = {f.findtext("{*}fieldlabel"): f.findtext("{*}fieldentry") for f in item.iter("{*}qtimetadatafield")}
+        assert fields == {"question_type": "multiple_choice_question", "points_possible": "1"}
         right = next(e.text for e in item.iter() if e.tag.endswith("varequal"))
         label = next(e for e in item.iter() if e.tag.endswith("response_label") and e.get("ident") == right)
         assert label.find(".//{*}mattext").text == f"{value} {unit}"
