@@ -20,13 +20,13 @@ def child(problem_set: str, variants: int, trace: bool) -> dict:
     import resource
     import tracemalloc
 
-    from derive import sheet
+    from derive import worksheets
 
     if trace:
         tracemalloc.start()
     start = time.perf_counter()
     with tempfile.TemporaryDirectory() as folder:
-        written = sheet.build(problem_set, variants=variants, seed=1, out_dir=f"{folder}/out", formats=frozenset())
+        written = worksheets.build(problem_set, variants=variants, seed=1, out_dir=f"{folder}/out", formats=frozenset())
         sizes = sum(p.stat().st_size for p in written)
     seconds = time.perf_counter() - start
     peak_traced = tracemalloc.get_traced_memory()[1] if trace else None

@@ -1,8 +1,7 @@
 """derive: a symbolic mechanics engine and worksheet generator for rigid-body rotation.
 
 The package stays light to import: `derive --help` must not load sympy. The Python API
-(derive.api: `derive.load`, `derive.solve`, `derive.sheet`) is imported on first use;
-`derive.sheet` is the module derive.sheet, which builds a set when called.
+(derive.api: `derive.load`, `derive.solve`, `derive.sheet`) is imported on first use.
 """
 from importlib import import_module as _import_module
 from pathlib import Path
@@ -40,10 +39,8 @@ MAX_DIGITS = 50
 
 def __getattr__(name: str):
     """The API's functions, imported when first used (they import sympy)."""
-    if name in ("load", "solve"):
+    if name in ("load", "solve", "sheet"):
         return getattr(_import_module("derive.api"), name)
-    if name == "sheet":
-        return _import_module("derive.sheet")
     if name == "__version__":
         return version()
     raise AttributeError(f"module 'derive' has no attribute {name!r}")

@@ -26,7 +26,7 @@ from pathlib import Path
 import sympy as sp
 
 from derive import MAX_DIGITS, MAX_VARIANTS, defaults, report, units
-from derive import sheet as sheets
+from derive import worksheets as sheets
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.problem import Problem, load

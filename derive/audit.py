@@ -97,7 +97,7 @@ def stress(references: list[str] | None, seeds: int, progress: Reporter = Report
     conditions and give a key equal to `derive solve` at those parameters."""
     import random
 
-    from derive import report, sheet
+    from derive import report, worksheets
 
     references = references or [str(p) for p in library.problem_files()]
     spreads, failures = [], []
@@ -109,12 +109,12 @@ def stress(references: list[str] | None, seeds: int, progress: Reporter = Report
         on_bound = 0
         for seed in range(seeds):
             try:
-                draw = sheet.valid_draw(p, solution, random.Random(f"{seed}/{p.id}/1"))
+                draw = worksheets.valid_draw(p, solution, random.Random(f"{seed}/{p.id}/1"))
             except InputError as error:
                 failures.append(str(error))
                 break
             on_bound += any(q.range is not None and draw[n] in q.range for n, q in p.parameters.items())
-            item = sheet._ProblemVariants(p, solution, [draw])
+            item = worksheets._ProblemVariants(p, solution, [draw])
             key = item.answers(draw)
             given = p.values({n: str(draw[n]) for n, q in p.parameters.items() if q.range is not None})
             full = report.answer_values(solution, given, 15)

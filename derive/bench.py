@@ -27,7 +27,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from derive import library, numeric, problem, sheet
+from derive import library, numeric, problem, worksheets
 from derive.answers import Solution
 
 
@@ -129,8 +129,8 @@ def answer_key(say, solutions: dict[str, Solution], variants: int) -> None:
     start = time.perf_counter()
     count = 0
     for solution in chosen:
-        draws = [sheet.valid_draw(solution.problem, solution, random.Random(f"bench/{n}")) for n in range(variants)]
-        item = sheet._ProblemVariants(solution.problem, solution, draws)
+        draws = [worksheets.valid_draw(solution.problem, solution, random.Random(f"bench/{n}")) for n in range(variants)]
+        item = worksheets._ProblemVariants(solution.problem, solution, draws)
         for draw in item.draws:
             count += sum(v is not None for v in item.answers(draw).values())
     elapsed = time.perf_counter() - start
@@ -248,7 +248,7 @@ def sheet_build(say, with_pdfs: bool) -> None:
             for formats, label in ((set(), "LaTeX, keys"), ({"pdf"}, "with the 3 PDFs")):
                 if formats and not with_pdfs:
                     continue
-                built, elapsed = _timed(lambda: sheet.build("bench", out_dir=str(Path(folder) / "out"), formats=formats))
+                built, elapsed = _timed(lambda: worksheets.build("bench", out_dir=str(Path(folder) / "out"), formats=formats))
                 line = f"  {label:<16} {elapsed:6.1f} s"
                 if formats:
                     pages = sum(int(subprocess.run(["pdfinfo", str(p)], capture_output=True, text=True).stdout

@@ -385,7 +385,7 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
     \b
     Example:  derive handout tugged_spool --out build/spool
     """
-    from derive import sheet as sheets
+    from derive import worksheets as sheets
 
     for path in sheets.handout(problem, out_dir, progress=progress):
         click.echo(str(path))
@@ -433,7 +433,7 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
       outputs: [pdf, moodle]    questions: choice      (options given here override it)
     """
     from derive import defaults
-    from derive import sheet as sheets
+    from derive import worksheets as sheets
 
     wanted = None if formats is None else sheets.outputs(formats, "--to")
     built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,

@@ -3,7 +3,7 @@ import random
 
 
 from conftest import copy_library, run_derive
-from derive import bench, problem, sheet
+from derive import bench, problem, worksheets
 from derive.answers import Solution
 
 
@@ -23,7 +23,7 @@ def test_sampler_redraws_until_the_top_can_precess():
     solution = Solution(p)
     (condition, _, _), = solution.conditions
     for n in range(20):
-        values = sheet.valid_draw(p, solution, random.Random(n))
+        values = worksheets.valid_draw(p, solution, random.Random(n))
         si = p.values({k: str(v) for k, v in values.items()})
         assert float(condition.xreplace(si)) >= 0
 

@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
-from derive import expr, sheet, units
+from derive import expr, units, worksheets
 from derive.answers import Solution
 from derive.errors import ProblemError
 from derive.problem import load, parse
@@ -62,9 +62,9 @@ def test_the_sampler_redraws_until_an_answer_condition_holds():
     mu_min = solution.expression("mu_min")
     rejected = 0
     for seed in range(40):
-        plain = sheet.draw(problem, random.Random(f"{seed}/rolling_incline/1"))
+        plain = worksheets.draw(problem, random.Random(f"{seed}/rolling_incline/1"))
         rejected += bool(plain["mu_s"] < mu_min.xreplace(_si(problem, plain)))
-        valid = sheet.valid_draw(problem, solution, random.Random(f"{seed}/rolling_incline/1"))
+        valid = worksheets.valid_draw(problem, solution, random.Random(f"{seed}/rolling_incline/1"))
         assert valid["mu_s"] >= mu_min.xreplace(_si(problem, valid))
     assert rejected > 0  # the condition did reject some plain draws
 
@@ -72,9 +72,9 @@ def test_the_sampler_redraws_until_an_answer_condition_holds():
 def test_a_parameter_condition_widens_nothing_it_should_not():
     problem = load("sticky_impact_pivoted")
     solution = Solution(problem)
-    draws = [sheet.valid_draw(problem, solution, random.Random(n)) for n in range(30)]
+    draws = [worksheets.valid_draw(problem, solution, random.Random(n)) for n in range(30)]
     assert all(d["b"] <= d["R"] for d in draws)
-    assert any(sheet.draw(problem, random.Random(n))["b"] > sheet.draw(problem, random.Random(n))["R"]
+    assert any(worksheets.draw(problem, random.Random(n))["b"] > worksheets.draw(problem, random.Random(n))["R"]
                for n in range(30))
 
 

@@ -9,7 +9,7 @@ import mpmath
 import pytest
 
 from conftest import copy_library, run_derive
-from derive import distractors, library, sheet
+from derive import distractors, library, worksheets
 from derive.answers import Solution
 from derive.problem import load
 
@@ -112,8 +112,8 @@ def _library_items(variants=3):
     for path in library.problem_files():
         problem = load(str(path))
         solution = Solution(problem)
-        draws = [sheet.valid_draw(problem, solution, random.Random(f"1/{problem.id}/{n}")) for n in range(variants)]
-        item = sheet._ProblemVariants(problem, solution, draws)
+        draws = [worksheets.valid_draw(problem, solution, random.Random(f"1/{problem.id}/{n}")) for n in range(variants)]
+        item = worksheets._ProblemVariants(problem, solution, draws)
         for draw in draws:
             answers, wrong = item.answers(draw), item.wrong(draw)
             for name in problem.asks:

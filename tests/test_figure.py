@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 from conftest import ROOT, copy_library, run_derive
-from derive import export, figure, library, problem, render, sheet
+from derive import export, figure, library, problem, render, worksheets
 from derive.figure.canvas import _f, _pt
 
 COORDINATE = re.compile(r"\((-?\d+(?:\.\d+)?),(-?\d+(?:\.\d+)?)\)")
@@ -166,11 +166,11 @@ def test_every_figure_compiles(tmp_path, problems, figures, special):
 
 
 def test_the_documents_include_the_figures(tmp_path):
-    built = sheet.build("demo", variants=2, seed=3, out_dir=str(tmp_path / "demo"), formats=set())
+    built = worksheets.build("demo", variants=2, seed=3, out_dir=str(tmp_path / "demo"), formats=set())
     folder = built[0].parent
     worksheet = (folder / "worksheet.tex").read_text()
     solutions = (folder / "solutions.tex").read_text()
-    count = len(sheet.load_set("demo").problems)
+    count = len(worksheets.load_set("demo").problems)
     assert worksheet.count("\\begin{tikzpicture}") == 2 * count
     assert solutions.count("\\begin{tikzpicture}") == count
     assert figure.tikz(problem.load("string_wrapped_disk")) in worksheet

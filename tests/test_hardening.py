@@ -600,14 +600,14 @@ def test_set_ids_from_odd_file_names_are_refused(tmp_path, stem):
 
 @pytest.mark.parametrize("reference", ["../../etc/passwd", "/etc/passwd", "..", "../x.yaml"])
 def test_set_references_that_are_no_set_files(reference):
-    from derive import sheet
+    from derive import worksheets
     with pytest.raises(InputError):
-        sheet.load_set(reference)
+        worksheets.load_set(reference)
 
 
 def _build(out):
-    from derive import sheet
-    return sheet.build("demo", variants=2, seed=1, out_dir=str(out), formats=frozenset())
+    from derive import worksheets
+    return worksheets.build("demo", variants=2, seed=1, out_dir=str(out), formats=frozenset())
 
 
 def test_build_writes_only_inside_its_output_folder(tmp_path):

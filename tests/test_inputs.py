@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from conftest import run_derive
-from derive import names, problem, sheet
+from derive import names, problem, worksheets
 from derive.errors import InputError, ProblemError
 
 
@@ -67,7 +67,7 @@ def test_every_draw_is_inside_its_range_at_its_significant_figures(low, width, s
         return  # refused when the file is read (next test)
     value = parameter.draw(random.Random(seed))
     assert bounds[0] <= value <= bounds[1]
-    assert sp.Rational(str(Decimal(sheet.numeric.significant(value, sig_figs)))) == value
+    assert sp.Rational(str(Decimal(worksheets.numeric.significant(value, sig_figs)))) == value
 
 
 def test_a_range_with_no_value_at_its_significant_figures_is_refused():
@@ -153,7 +153,7 @@ def test_two_problems_with_one_id_are_refused(tmp_path):
     path = set_file(tmp_path, f"title: t\nproblems: [rod_endpoint, {twin}]\n")
     with pytest.raises(InputError, match=rf"^{path}: problems\[1\]: {twin}: id: rod_endpoint is also the id of "
                                          r"problems\[0\]"):
-        sheet.build(str(path), out_dir=str(tmp_path / "out"), formats=frozenset())
+        worksheets.build(str(path), out_dir=str(tmp_path / "out"), formats=frozenset())
 
 
 def test_an_error_in_a_problem_names_the_set_file_the_entry_and_the_problem_file(tmp_path):

@@ -11,9 +11,9 @@ import pytest
 from lxml import etree
 
 from conftest import moodle_cloze, qti_package, run_derive
-from derive import lms, sheet
+from derive import lms, worksheets
 
-PROBLEMS = sheet.load_set("demo").problems  # rod_endpoint (asks 1), string_wrapped_disk (3), compound_pendulum (2)
+PROBLEMS = worksheets.load_set("demo").problems  # rod_endpoint (asks 1), string_wrapped_disk (3), compound_pendulum (2)
 
 
 def _build(folder, seed: int):

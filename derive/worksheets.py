@@ -18,7 +18,6 @@ import io
 import json
 import random
 import sys
-import types
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property
@@ -667,14 +666,3 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
         progress("compiling the PDF")
         return output_folder.commit(staging, out, [tex, export.pdf(tex)])
 
-
-class _Callable(types.ModuleType):
-    """`derive.sheet` is both this module and the Python API's function that builds a set."""
-
-    def __call__(self, *args, **kwargs) -> list[Path]:
-        from derive.api import sheet
-
-        return sheet(*args, **kwargs)
-
-
-sys.modules[__name__].__class__ = _Callable
