@@ -200,7 +200,7 @@ def simplest(expr: sp.Expr) -> sp.Expr:
             lambda e, f=f: e.is_Pow and e.base == f(angle) and e.exp.is_Integer and e.exp >= 2,
             lambda e, f=f, other=other: e.base ** (e.exp - 2) * (1 - other(angle) ** 2)))
             for f, other in ((sp.cos, sp.sin), (sp.sin, sp.cos))]
-        expr = min(forms, key=lambda form: (sp.count_ops(form), forms.index(form)))
+        expr = min(forms, key=sp.count_ops)  # the first of the shortest: the expanded form on a tie
     return expr
 
 
@@ -224,10 +224,8 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     """
     with limits.time_limit("simplifying"):
         expr = sp.cancel(sp.together(expr))
-        if expr.has(sp.sin, sp.cos) and _plain_angles(expr):
-            expr = sp.trigsimp(expr)
-        elif expr.has(sp.sin, sp.cos):
-            expr = sp.cancel(simplest(expr))
+        if expr.has(sp.sin, sp.cos):
+            expr = sp.trigsimp(expr) if _plain_angles(expr) else sp.cancel(simplest(expr))
         return sp.factor_terms(sp.factor(expr))
 
 

@@ -40,7 +40,7 @@ def along(expr: sp.Expr, line: dict[sp.Symbol, tuple[sp.Expr, sp.Expr]]) -> Jet:
             return seen[node]
         if node in line:
             value, rate = line[node]
-            result = (sp.sympify(value), sp.sympify(rate), sp.Integer(0))
+            result = (sp.sympify(value), sp.sympify(rate), sp.Integer(0))  # safe: a state's numbers or sympy expressions, never file text
         elif not node.free_symbols & line.keys():
             result = (node, sp.Integer(0), sp.Integer(0))
         elif node.is_Add:
@@ -92,6 +92,6 @@ def _derivatives(func, count: int):
 def _by_sympy(node: sp.Expr, line: dict) -> Jet:
     """A node with no rule here: sympy's derivatives along the line, s put to zero after."""
     s = sp.Dummy("s")
-    moved = node.xreplace({q: sp.sympify(value) + s * rate for q, (value, rate) in line.items()})
+    moved = node.xreplace({q: sp.sympify(value) + s * rate for q, (value, rate) in line.items()})  # safe: as in along
     first = sp.diff(moved, s)
     return tuple(e.subs(s, 0) for e in (moved, first, sp.diff(first, s)))  # subs: a Derivative in s stays whole
