@@ -30,6 +30,7 @@ from derive.mechanics.oscillation import (NotAPendulum, Oscillation, Oscillation
 from derive.crosschecks import CrossChecks, sample_points
 from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
+from derive.parts.surfaces import Plane
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
@@ -483,6 +484,12 @@ class Solution(StateAnswers, CrossChecks):
                                 - 4 * t.transverse_inertia * t.mass * self.scene.gravity.g * t.pivot_distance
                                 * sp.cos(t.tilt)), False,
                            "no steady precession: the spin is too slow (I3^2 w^2 < 4 I1 m g R cos(theta))"))
+        for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
+            if isinstance(surface, Plane) and surface.angle.free_symbols:
+                result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "
+                                                  "negative: a plane's angle lies in [0, pi/2) (it descends to the right)"),
+                           (sp.pi / 2 - surface.angle, True, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} "
+                                                             "is pi/2 or more: a plane's angle lies in [0, pi/2)")]
         if {a.quantity.kind for a in self.problem.asks.values()} & DYNAMIC_KINDS:
             result += self._sign_conditions()
         if any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()):

@@ -198,7 +198,7 @@ def simplest(expr: sp.Expr) -> sp.Expr:
     for angle in sorted(angles, key=sp.default_sort_key):
         forms = [expr] + [sp.expand(expr.replace(
             lambda e, f=f: e.is_Pow and e.base == f(angle) and e.exp.is_Integer and e.exp >= 2,
-            lambda e, f=f, other=other: e.base ** (e.exp - 2) * (1 - other(angle) ** 2)))
+            lambda e, f=f, other=other: e.base ** (e.exp % 2) * (1 - other(angle) ** 2) ** (e.exp // 2)))
             for f, other in ((sp.cos, sp.sin), (sp.sin, sp.cos))]
         expr = min(forms, key=sp.count_ops)  # the first of the shortest: the expanded form on a tie
     return expr
@@ -223,9 +223,11 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     g*m
     """
     with limits.time_limit("simplifying"):
-        expr = sp.cancel(sp.together(expr))
+        expr = sp.cancel(sp.together(radicals(expr)))
         if expr.has(sp.sin, sp.cos):
-            expr = sp.trigsimp(expr) if _plain_angles(expr) else sp.cancel(simplest(expr))
+            numerator, denominator = sp.fraction(expr)
+            expr = sp.cancel(simplest(numerator) / simplest(denominator))
+            expr = sp.trigsimp(expr) if _plain_angles(expr) else expr
         return sp.factor_terms(sp.factor(expr))
 
 
@@ -288,6 +290,96 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
     return Solved(values)
 
 
+def _rational_trigonometric(expr: sp.Expr) -> bool:
+    """Whether expr is a rational function of symbols and of sines and cosines of plain angles."""
+    return all(isinstance(f, (sp.sin, sp.cos)) for f in expr.atoms(sp.Function)) and _plain_angles(expr) \
+        and all(p.exp.is_Integer for p in expr.atoms(sp.Pow))
+
+
+def _positive(factor: sp.Expr) -> bool:
+    """Whether a factor is positive for every value of its symbols (positive ones) and angles: each
+    sine and cosine put in [-1, 1] by sympy's interval arithmetic (AccumBounds).
+
+    >>> R, th = sp.symbols("R theta", positive=True)
+    >>> _positive(sp.cos(th)**2 + 20*sp.cos(th) + 101), _positive(R + sp.cos(th))
+    (True, False)
+    """
+    if factor.is_positive:
+        return True
+    bounded = factor.xreplace({f: sp.AccumBounds(-1, 1) for f in factor.atoms(sp.sin, sp.cos)})
+    if bounded.free_symbols:
+        return False
+    return bool(bounded.min.is_positive) if isinstance(bounded, sp.AccumBounds) else bool(bounded.is_positive)
+
+
+def _factors(expr: sp.Expr) -> list[tuple[sp.Expr, sp.Integer]]:
+    """expr (a rational function of symbols, sines and cosines) as (factor, power) pairs, its
+    numerical coefficient first, with sin^2 + cos^2 folded first."""
+    numerator, denominator = sp.fraction(sp.together(simplest(sp.together(expr))))
+    pairs = []
+    for part, sign in ((numerator, 1), (denominator, -1)):
+        coefficient, factors = sp.factor_list(part)
+        pairs += [(coefficient, sign), *((f, sign * k) for f, k in factors)]
+    return pairs
+
+
+def _unsigned(value: sp.Expr) -> sp.Expr:
+    """|value|, with the sign of each factor taken out where it is the same for all values of its
+    symbols (sympy writes a tangent length sqrt((R*cos(theta) + 10*R)**2) as Abs(R*cos(theta) + 10*R)).
+
+    >>> R, th = sp.symbols("R theta", positive=True)
+    >>> _unsigned(-R*sp.cos(th) - 10*R), _unsigned(R*sp.cos(th))
+    (R*(cos(theta) + 10), R*Abs(cos(theta)))
+    """
+    if not _rational_trigonometric(value):
+        return sp.Abs(value)
+    signed, unknown = sp.Integer(1), sp.Integer(1)
+    for factor, power in _factors(value):
+        if _positive(factor):
+            signed *= factor ** power
+        elif _positive(-factor):
+            signed *= (-factor) ** power
+        else:
+            unknown *= factor ** power
+    return signed * sp.Abs(unknown)
+
+
+def _root_factors(base: sp.Expr, exp: sp.Rational) -> sp.Expr:
+    """base**exp with sin^2 + cos^2 folded in the base, and each factor of it that is positive for
+    all values (_positive) raised on its own: the tangent length of a cord from a pulley at
+    (R sin(theta), R cos(theta)) to a block 10 R below it, sqrt(R**2*(cos(theta) + 10)**2), is then
+    R*(cos(theta) + 10), and the run's sqrt(1 - R**2/|D|**2) shares its root with |D|**3 (as
+    separate roots of unfolded bases, an incline's pulley made a system sympy did not solve in 15
+    minutes). The rest of the base keeps one root: sqrt(x*y) is not sqrt(x)*sqrt(y) for negative x, y.
+
+    >>> R, th = sp.symbols("R theta", positive=True)
+    >>> _root_factors(R**2*sp.sin(th)**2 + R**2*sp.cos(th)**2, sp.Rational(-3, 2))
+    R**(-3)
+    """
+    whole, kept = sp.Integer(1), sp.Integer(1)
+    for factor, power in _factors(base):
+        if _positive(factor):
+            whole *= factor ** (power * exp)
+        else:
+            kept *= factor ** power
+    return whole * kept ** exp
+
+
+def radicals(expr):
+    """expr (or a matrix) with each root of a base of symbols, sines and cosines written by
+    _root_factors, and each Abs by _unsigned: what a cord's tangent geometry needs before it
+    cancels.
+
+    >>> R, th = sp.symbols("R theta", positive=True)
+    >>> radicals(sp.sqrt(R**2*sp.sin(th)**2 + R**2*sp.cos(th)**2 + 3*R**2) + sp.Abs(sp.cos(th) - 2))
+    2*R - cos(theta) + 2
+    """
+    roots = {a: _root_factors(a.base, a.exp) for a in expr.atoms(sp.Pow)
+             if a.exp.is_Rational and not a.exp.is_Integer and _rational_trigonometric(a.base)}
+    expr = expr.xreplace(roots)
+    return expr.xreplace({a: _unsigned(a.args[0]) for a in expr.atoms(sp.Abs)})
+
+
 def _as_rational(matrix: sp.Matrix) -> tuple[sp.Matrix, dict]:
     """The matrix as rational functions of new symbols (generators), and the map back.
 
@@ -298,6 +390,7 @@ def _as_rational(matrix: sp.Matrix) -> tuple[sp.Matrix, dict]:
     (R**2 + h**2)**(3/2) and sqrt(1 - R**2/(R**2 + h**2)) = h/sqrt(R**2 + h**2) cancel where
     they meet (as independent generators they made a stepped pulley's system too slow to solve).
     """
+    matrix = radicals(matrix)
     roots = {a: sp.factor(sp.together(a.base)) ** a.exp for a in matrix.atoms(sp.Pow)
              if a.exp.is_Rational and not a.exp.is_Integer and not a.base.has(sp.Function)}
     matrix = matrix.xreplace(roots)
