@@ -537,7 +537,7 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
                     continue
                 choices = tuple(d["value"] for d in wrong.get(name, ()))
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
-                                      answers[name], ask.unit, tolerances[name],
+                                      answers[name], units.unicode_unit(ask.unit), tolerances[name],
                                       choices if len(choices) >= distractors.WANTED else (),
                                       solutions[item.problem.id, number]))
     return items
@@ -612,7 +612,8 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
             writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
                                                         "meaning"], lineterminator="\n", extrasaction="ignore")
             writer.writeheader()
-            writer.writerows({k: safe_cell(v) for k, v in r.items()} for r in rows)  # no formulas
+            writer.writerows({k: safe_cell(v) for k, v in {**r, "unit": units.unicode_unit(r["unit"])}.items()}
+                             for r in rows)  # no formulas; the unit as text reads it (kg·m², none for a pure number)
             products += [_write(staging, "key.csv", buffer.getvalue()),
                          _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
             if "moodle" in formats:
