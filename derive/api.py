@@ -25,7 +25,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from derive import MAX_DIGITS, MAX_VARIANTS, defaults, report, units
+from derive import MAX_DIGITS, MAX_VARIANTS, defaults, render, report, units
 from derive import worksheets as sheets
 from derive.answers import Solution
 from derive.errors import InputError
@@ -100,7 +100,7 @@ class Result:
 
     def _given(self) -> list[str]:
         """The parameters that have values, as LaTeX: M = 4.000\\,\\mathrm{kg}."""
-        return [f"{sp.latex(self.problem.parameters[n].symbol)} = {p['value']}\\,{units.latex_unit(p['unit'])}"
+        return [f"{render.latex_of(self.problem.parameters[n].symbol)} = {p['value']}\\,{units.latex_unit(p['unit'])}"
                 for n, p in self.report["parameters"].items() if p["value"] is not None]
 
     def _repr_latex_(self) -> str:

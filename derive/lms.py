@@ -12,7 +12,12 @@ solution of its variant (the solutions sheet's own text, as HTML with MathJax ma
 The tolerance follows the answer's policy: one unit in the last significant digit shown (the
 default), a percentage (`2%`) or an absolute amount in the answer's unit. Canvas keeps four decimal
 places of a numeric answer and its margin, so a quantity whose margin would fall below 1e-4 is
-asked in a scaled unit (10^-k UNIT). `check` holds every exported tolerance to the LMS's limits.
+asked in a scaled unit (10⁻ᵏ UNIT), one for all the variants of a question (`exponent`). `check`
+holds every exported tolerance to the LMS's limits.
+
+A field is labelled as the worksheets name its symbol (render.symbol_latex: Omega_fast as
+\\(\\Omega_{\\mathrm{fast}}\\)) and its unit is text as a student reads it (kg·m², none for a pure
+number: units.unicode_unit, applied where the items are made).
 
 Every file is built by lxml's serializer, never by string formatting: titles, meanings and the
 question's HTML (its `<p>`s serialized too) are text content or attribute values, so no text from
@@ -23,8 +28,9 @@ escaping inside that text (`_cloze_text`).
 '0.01'
 >>> tolerance("250", "2%")
 '5'
->>> scaled("1.5e-05", "1e-06", "m")
-('0.015', '0.001', '10^-3 m')
+>>> k = exponent(["1e-06", "1e-08"])
+>>> k, scaled("1.5e-05", "1e-06", k), scaled_unit("m", k)
+(6, ('15', '1'), '10⁻⁶ m')
 """
 from __future__ import annotations
 
@@ -33,12 +39,14 @@ import io
 import random
 import re
 import zipfile
+from collections.abc import Iterable
 from dataclasses import dataclass
 from decimal import Decimal
 
 from lxml import etree
 from lxml.builder import E, ElementMaker
 
+from derive import render, units
 from derive.errors import InputError
 
 
@@ -53,7 +61,7 @@ class Item:
     name: str
     meaning: str
     value: str
-    unit: str
+    unit: str  # as the question shows it: "kg·m²", "" for a pure number (units.unicode_unit)
     tolerance: str  # absolute, in `unit`
     wrong: tuple[str, ...] = ()  # wrong choices (multiple choice); none: a numerical question
     solution: str = ""  # the variant's worked solution, HTML with MathJax math: the general feedback
@@ -83,15 +91,46 @@ def _plain(number: Decimal) -> str:
 CANVAS_PLACES = 4  # Canvas rounds a numeric answer and its margin to four decimal places
 
 
-def scaled(value: str, margin: str, unit: str) -> tuple[str, str, str]:
-    """(value, margin, unit) restated in a unit of 10^-k UNIT (k a multiple of 3) so that the
-    margin is at least 1e-4 and survives Canvas's rounding; unchanged when it already is."""
-    number, tol = Decimal(value), Decimal(margin)
+def exponent(margins: Iterable[str]) -> int:
+    """The k of a question's unit, 10^-k times the answer's (k a multiple of 3; 0: the unit itself):
+    the least for which every margin of its variants is at least 1e-4 and survives Canvas's
+    rounding. One unit for all the variants of a question, whichever a student is given.
+
+    >>> exponent(["0.01", "0"]), exponent(["1e-7", "1e-5"]), exponent(["1e-30", "1e-28"])
+    (0, 3, 27)
+    """
     smallest = Decimal(1).scaleb(-CANVAS_PLACES)
-    if tol == 0 or tol >= smallest:
-        return value, margin, unit
-    k = 3 * ((smallest.adjusted() - tol.adjusted() + 2) // 3)
-    return format(number.scaleb(k), "f"), format(tol.scaleb(k).normalize(), "f"), f"10^-{k} {unit}"
+    return max((3 * ((smallest.adjusted() - tol.adjusted() + 2) // 3)
+                for tol in map(Decimal, margins) if 0 < tol < smallest), default=0)
+
+
+def scaled(value: str, margin: str, k: int) -> tuple[str, str]:
+    """(value, margin) restated in a unit of 10^-k times the answer's; unchanged for k = 0."""
+    if not k:
+        return value, margin
+    return format(Decimal(value).scaleb(k), "f"), format(Decimal(margin).scaleb(k).normalize(), "f")
+
+
+def scaled_unit(unit: str, k: int) -> str:
+    """The unit 10^-k UNIT as text ("" for a pure number: 10⁻³ alone).
+
+    >>> scaled_unit("kg·m²", 45), scaled_unit("", 3), scaled_unit("m", 0)
+    ('10⁻⁴⁵ kg·m²', '10⁻³', 'm')
+    """
+    return f"10{units.superscript(str(-k))} {unit}".rstrip() if k else unit
+
+
+def _questions(items: list[Item]) -> dict[tuple[str, str], list[Item]]:
+    """The items by question (problem, asked quantity): each one's variants."""
+    questions: dict[tuple[str, str], list[Item]] = {}
+    for item in items:
+        questions.setdefault((item.problem, item.name), []).append(item)
+    return questions
+
+
+def _exponent(question: list[Item]) -> int:
+    """The exponent of a question's numerical items (multiple choice shows its values as text)."""
+    return exponent(item.tolerance for item in question if not item.wrong)
 
 
 #: Magnitudes both LMSs store as numbers (double precision, with room for the tolerance).
@@ -104,19 +143,22 @@ LIMITS = {"moodle": "a tolerance of at least 1e-14 of the answer (double precisi
 def check(items: list[Item], target: str) -> None:
     """Refuse a tolerance the LMS cannot honour, or one so wide that it accepts zero and the
     wrong sign: InputError naming the problem, the variant and the answer."""
+    scales = {question: _exponent(group) for question, group in _questions(items).items()}
     for item in items:
         value, tol = abs(Decimal(item.value)), Decimal(item.tolerance)
         if value and not DOUBLE_RANGE[0] <= value <= DOUBLE_RANGE[1]:
-            raise InputError(f"{item.problem} variant {item.variant}: ask.{item.name}: {item.value} {item.unit} lies "
-                             f"outside what an LMS stores (double precision, 1e-300 to 1e300): ask it in another unit")
+            raise InputError(f"{item.problem} variant {item.variant}: ask.{item.name}: "
+                             f"{_with_unit(item.value, item.unit)} lies outside what an LMS stores "
+                             f"(double precision, 1e-300 to 1e300): ask it in another unit")
         where = f"{item.problem} variant {item.variant}: ask.{item.name}.tolerance"
         if value and tol >= value:
-            raise InputError(f"{where}: ±{item.tolerance} {item.unit} accepts zero and the wrong sign "
+            raise InputError(f"{where}: ±{_with_unit(item.tolerance, item.unit)} accepts zero and the wrong sign "
                              f"(the answer is {item.value}); narrow it")
         if target == "moodle" and value and tol < value * Decimal("1e-14"):
-            raise InputError(f"{where}: ±{item.tolerance} {item.unit} is finer than Moodle can compare "
+            raise InputError(f"{where}: ±{_with_unit(item.tolerance, item.unit)} is finer than Moodle can compare "
                              f"({LIMITS['moodle']}); use fewer significant figures")
-        if target == "qti" and value and not _survives_canvas(*scaled(item.value, item.tolerance, item.unit)[:2]):
+        if target == "qti" and value and not _survives_canvas(*scaled(item.value, item.tolerance,
+                                                                      scales[item.problem, item.name])):
             raise InputError(f"{where}: Canvas needs {LIMITS['qti']}")
 
 
@@ -159,11 +201,30 @@ def _xml(root: etree._Element) -> bytes:
     return etree.tostring(root, encoding="UTF-8", xml_declaration=True, pretty_print=True)
 
 
+def _with_unit(text: str, unit: str) -> str:
+    """A value (or a field) followed by its unit, or alone for a pure number.
+
+    >>> _with_unit("2.13", "kg·m²"), _with_unit("0.286", "")
+    ('2.13 kg·m²', '0.286')
+    """
+    return f"{text} {unit}" if unit else text
+
+
+def _label(item: Item) -> str:
+    r"""What an asked quantity is: its meaning and its symbol in MathJax math.
+
+    >>> _label(Item("p", "P", 1, "", "Omega_fast", "fast precession rate", "1.5", "rad/s", "0.1"))
+    'fast precession rate: \\(\\Omega_{\\mathrm{fast}}\\)'
+    """
+    return f"{item.meaning}: \\({render.symbol_latex(item.name)}\\)"
+
+
 def _cloze(item: Item) -> str:
     """A cloze field: NUMERICAL with its tolerance, or MULTICHOICE with the unit on each choice."""
     if not item.wrong:
-        return f"{{1:NUMERICAL:={item.value}:{item.tolerance}}} {item.unit}"
-    options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(f'{v} {item.unit}')}" for v, right in choices(item))
+        return _with_unit(f"{{1:NUMERICAL:={item.value}:{item.tolerance}}}", item.unit)
+    options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(_with_unit(v, item.unit))}"
+                       for v, right in choices(item))
     return f"{{1:MULTICHOICE_V:{options}}}"
 
 
@@ -236,7 +297,7 @@ def moodle(items: list[Item], set_id: str) -> str:
         quiz.append(E.question(E.category(E.text(_category("derive", set_id, problem))),
                                E.info(E.text(_paragraphs(title)), format="html"), type="category"))
         for variant, group in variants.items():
-            fields = [f"{_literal_braces(i.meaning)}: \\({i.name}\\) = {_cloze(i)}" for i in group]
+            fields = [f"{_literal_braces(_label(i))} = {_cloze(i)}" for i in group]
             html = _references(_paragraphs(_mathjax(_literal_braces(group[0].question)), *fields))
             quiz.append(E.question(
                 E.name(E.text(f"{problem} variant {variant}")),
@@ -294,31 +355,34 @@ def _field(label: str, entry: str) -> etree._Element:
     return QTI.qtimetadatafield(QTI.fieldlabel(label), QTI.fieldentry(entry))
 
 
-def _numerical(item: Item) -> tuple[str, str, etree._Element, etree._Element]:
-    """(question type, prompt, response, correct condition): the answer, or within its margin."""
-    value, margin, unit = scaled(item.value, item.tolerance, item.unit)
+def _numerical(item: Item, k: int) -> tuple[str, str, etree._Element, etree._Element]:
+    """(question type, prompt, response, correct condition): the answer, or within its margin, in
+    the question's unit 10^-k UNIT."""
+    (value, margin), unit = scaled(item.value, item.tolerance, k), scaled_unit(item.unit, k)
     low, high = Decimal(value) - Decimal(margin), Decimal(value) + Decimal(margin)
     response = QTI.response_str(QTI.render_fib(QTI.response_label(ident="answer1"), fibtype="Decimal"),
                                 ident="response1", rcardinality="Single")
     within = QTI("and", QTI.vargte(str(low), respident="response1"), QTI.varlte(str(high), respident="response1"))
     condition = QTI("or", QTI.varequal(value, respident="response1"), within)
-    return "numerical_question", f"{item.meaning} (in {unit}):", response, condition
+    return "numerical_question", f"{_label(item)} (in {unit})" if unit else _label(item), response, condition
 
 
 def _multiple_choice(item: Item) -> tuple[str, str, etree._Element, etree._Element]:
-    """(question type, prompt, response, correct condition): the right choice among the wrong."""
+    """(question type, prompt, response, correct condition): the right choice among the wrong, each
+    a value in the answer's unit (text, which Canvas keeps as written: never scaled)."""
     options = choices(item)
-    labels = (QTI.response_label(QTI.material(QTI.mattext(f"{v} {item.unit}", texttype="text/plain")), ident=f"choice{n}")
+    labels = (QTI.response_label(QTI.material(QTI.mattext(_with_unit(v, item.unit), texttype="text/plain")),
+                                 ident=f"choice{n}")
               for n, (v, _) in enumerate(options))
     response = QTI.response_lid(QTI.render_choice(*labels), ident="response1", rcardinality="Single")
     (right,) = [n for n, (_, is_right) in enumerate(options) if is_right]
-    return "multiple_choice_question", f"{item.meaning}:", response, QTI.varequal(f"choice{right}", respident="response1")
+    return "multiple_choice_question", _label(item), response, QTI.varequal(f"choice{right}", respident="response1")
 
 
-def _qti_item(item: Item, ident: str) -> etree._Element:
-    """A Canvas item: its question type and points, the question's HTML, the response, its scoring
-    and the worked solution as general feedback."""
-    kind, prompt, response, condition = (_multiple_choice if item.wrong else _numerical)(item)
+def _qti_item(item: Item, k: int, ident: str) -> etree._Element:
+    """A Canvas item: its question type and points, the question's HTML, the response (numerical
+    in the question's unit 10^-k UNIT), its scoring and the worked solution as general feedback."""
+    kind, prompt, response, condition = _multiple_choice(item) if item.wrong else _numerical(item, k)
     text = _paragraphs(_mathjax(item.question), prompt)
     scoring = [QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
                                  {"continue": "No"})]
@@ -346,17 +410,15 @@ def qti(items: list[Item], title: str, set_id: str, seed: int) -> bytes:
     Canvas picks each group's item on its own, so a problem that asks for several quantities is one
     group per quantity: a Canvas item holds one numeric answer with a tolerance."""
     quiz = identifier("quiz", set_id, seed)
-    groups: dict[tuple[str, str], list[Item]] = {}
-    for item in items:
-        groups.setdefault((item.problem, item.name), []).append(item)
+    groups = _questions(items)
     sections = [
         QTI.section(
             QTI.selection_ordering(QTI.selection(QTI.selection_number("1"),
                                                  QTI.selection_extension(QTI.points_per_item(str(POINTS))))),
-            *(_qti_item(i, identifier("item", set_id, seed, problem, i.variant, name)) for i in group),
+            *(_qti_item(i, k, identifier("item", set_id, seed, problem, i.variant, name)) for i in group),
             ident=identifier("group", set_id, seed, problem, name),
             title=f"{group[0].title}: {group[0].meaning}"[:GROUP_TITLE_LIMIT])
-        for (problem, name), group in groups.items()]
+        for (problem, name), group in groups.items() for k in [_exponent(group)]]
     assessment = QTI.questestinterop(QTI.assessment(QTI.section(*sections, ident="root_section"),
                                                     ident=quiz, title=title))
     points = str(POINTS * len(groups))

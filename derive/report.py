@@ -11,7 +11,7 @@ import json
 
 import sympy as sp
 
-from derive import numeric, units
+from derive import numeric, render, units
 from derive.answers import Solution
 from derive.mechanics.derivation import at_state
 from derive.scene import DYNAMIC_KINDS
@@ -74,7 +74,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         answers[name] = {
             "meaning": ask.meaning,
             "expr": sp.sstr(expression),
-            "latex": sp.latex(expression),
+            "latex": render.latex_of(expression),
             "unit": ask.unit,
             "value": numbers[name],
         }
@@ -111,7 +111,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         "checks": checks,
         "energy": energy,
         "steps": {
-            route: [{"text": s.text, "latex": [sp.latex(e) for e in s.equations]} for s in route_steps]
+            route: [{"text": s.text, "latex": [render.latex_of(e) for e in s.equations]} for s in route_steps]
             for route, route_steps in steps.items()
         },
     }
@@ -176,7 +176,7 @@ def answer_latex(name: str, answer: dict) -> str:
     '\\omega_{0} = \\sqrt{\\frac{g}{L}} = 3.13\\,\\mathrm{rad}/\\mathrm{s}'
     """
     value = f" = {answer['value']}\\,{units.latex_unit(answer['unit'])}" if answer["value"] is not None else ""
-    return f"{sp.latex(sp.Symbol(name))} = {answer['latex']}{value}"
+    return f"{render.symbol_latex(name)} = {answer['latex']}{value}"
 
 
 def aligned(latex_equation: str) -> str:

@@ -26,13 +26,15 @@ from sympy.core.function import AppliedUndef
 from sympy.physics import units as u
 from sympy.physics.units import Quantity, convert_to
 from sympy.physics.units.systems.si import SI, dimsys_SI
+from sympy.printing.pretty import pretty_symbology
 
 from derive.errors import InputError
 from derive.expr import ExprError, _build, _rational, _syntax_tree
 from derive.spelling import did_you_mean
 
 __all__ = ["UnitError", "UNITS", "parse_unit", "dimension", "si_factor", "parse_quantity",
-           "to_unit", "expression_dimension", "same_dimension", "latex_unit", "sympy_units"]
+           "to_unit", "expression_dimension", "same_dimension", "latex_unit", "unicode_unit", "superscript",
+           "sympy_units"]
 
 
 class UnitError(InputError):
@@ -264,30 +266,77 @@ def expression_dimension(expr: sympy.Expr, symbol_units: Mapping[sympy.Symbol, s
     return walk(_exact(expr))
 
 
-def latex_unit(text: str) -> str:
-    r"""LaTeX (math mode, amsmath only) for a unit: "m/s^2" -> r"\mathrm{m}/\mathrm{s}^{2}"."""
+def _written(text: str, name, times: str, power) -> str:
+    """A unit written out by the rules given: `name(unit name)`, the product's separator and
+    `power(base, exponent)`; "" for a pure number ("" or "1"). The one walk of the unit's syntax
+    tree behind latex_unit and unicode_unit."""
     if isinstance(text, str) and text.strip() in ("", "1"):
         return ""
     parse_unit(text)  # validates everything below
     tree, source = _unit_tree(text)
-    special = {"deg": r"{}^{\circ}", "degree": r"{}^{\circ}", "degrees": r"{}^{\circ}", "um": r"\mu\mathrm{m}"}
 
-    def tex(n: ast.AST) -> str:
+    def write(n: ast.AST) -> str:
         if isinstance(n, ast.Name):
-            return special.get(n.id, rf"\mathrm{{{n.id}}}")
+            return name(n.id)
         if isinstance(n, ast.Constant):
             return ast.get_source_segment(source, n)
         if isinstance(n, ast.UnaryOp):
-            return ("-" if isinstance(n.op, ast.USub) else "") + tex(n.operand)
-        group = lambda c: f"({tex(c)})" if isinstance(c, (ast.BinOp, ast.UnaryOp)) else tex(c)  # noqa: E731
+            return ("-" if isinstance(n.op, ast.USub) else "") + write(n.operand)
+        group = lambda c: f"({write(c)})" if isinstance(c, (ast.BinOp, ast.UnaryOp)) else write(c)  # noqa: E731
         if isinstance(n.op, (ast.Pow, ast.BitXor)):
-            return f"{group(n.left)}^{{{tex(n.right)}}}"
+            return power(group(n.left), write(n.right))
         if isinstance(n.op, ast.Div):
-            right = tex(n.right) if isinstance(n.right, ast.BinOp) and isinstance(n.right.op, ast.Pow) \
+            right = write(n.right) if isinstance(n.right, ast.BinOp) and isinstance(n.right.op, ast.Pow) \
                 else group(n.right)
-            return f"{tex(n.left)}/{right}"
+            return f"{write(n.left)}/{right}"
         right = group(n.right) if isinstance(n.right, ast.BinOp) and isinstance(n.right.op, ast.Div) \
-            else tex(n.right)
-        return rf"{tex(n.left)}\,{right}"
+            else write(n.right)
+        return f"{write(n.left)}{times}{right}"
 
-    return tex(tree.body)
+    return write(tree.body)
+
+
+_DEGREES = ("deg", "degree", "degrees")
+
+
+def latex_unit(text: str) -> str:
+    r"""LaTeX (math mode, amsmath only) for a unit: "m/s^2" -> r"\mathrm{m}/\mathrm{s}^{2}".
+
+    Written here rather than by siunitx: pandoc reads these commands into HTML, Markdown and DOCX
+    math, and the preamble needs no package for them.
+
+    >>> latex_unit("kg*m^2"), latex_unit("1")
+    ('\\mathrm{kg}\\,\\mathrm{m}^{2}', '')
+    """
+    special = {**dict.fromkeys(_DEGREES, r"{}^{\circ}"), "um": r"\mu\mathrm{m}"}
+    return _written(text, lambda n: special.get(n, rf"\mathrm{{{n}}}"), r"\,", lambda b, e: f"{b}^{{{e}}}")
+
+
+def superscript(text: str) -> str | None:
+    """`text` in Unicode superscript characters (sympy's pretty printer's own table), or None
+    where one has none (a `/` or a `.`).
+
+    >>> superscript("-27"), superscript("1/2")
+    ('⁻²⁷', None)
+    """
+    written = [pretty_symbology.sup.get(c) for c in text]
+    return None if None in written else "".join(written)
+
+
+def unicode_unit(text: str) -> str:
+    """A unit as plain text reads it: "kg*m^2" -> "kg·m²", "m/s^2" -> "m/s²"; "" for a pure number.
+    An exponent with no superscript form stays `^(1/2)`.
+
+    sympy's pretty printer would spell the units out (kilogram⋅meter²) and reorder them, so the
+    unit is written as its author wrote it, by the walk that writes its LaTeX.
+
+    >>> unicode_unit("kg*m^2/s"), unicode_unit("N m"), unicode_unit("1/s"), unicode_unit("1")
+    ('kg·m²/s', 'N·m', '1/s', '')
+    """
+    special = {**dict.fromkeys(_DEGREES, "°"), "um": "μm"}
+
+    def power(base: str, exponent: str) -> str:
+        raised = superscript(exponent)
+        return base + raised if raised else f"{base}^({exponent})"
+
+    return _written(text, lambda n: special.get(n, n), "·", power)

@@ -338,7 +338,7 @@ class _ProblemVariants:
 
     def shown(self, name: str, value: str | None) -> str:
         """LaTeX of an answer: its number, or its expression when it has none (a general result)."""
-        return number_latex(value) if value is not None else sp.latex(self.solution.expressions[name])
+        return number_latex(value) if value is not None else render.latex_of(self.solution.expressions[name])
 
     @cached_property
     def in_declared_units(self) -> dict[str, sp.Expr]:
@@ -416,8 +416,8 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
 def _check_latex(check, problem: Problem) -> str:
     """A check as a worked solution prints it: its reading, the units of the answers in math."""
     if check.name == "dimensions":
-        units_of = ", ".join(f"${sp.latex(sp.Symbol(n))}$ in ${units.latex_unit(a.unit)}$" if units.latex_unit(a.unit)
-                             else f"${sp.latex(sp.Symbol(n))}$ a pure number" for n, a in problem.asks.items())
+        units_of = ", ".join(f"${render.symbol_latex(n)}$ in ${units.latex_unit(a.unit)}$" if units.latex_unit(a.unit)
+                             else f"${render.symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
         return f"Every answer has the units it should: {units_of}."
     return render.tex_escape(check.reading)
 
@@ -435,7 +435,7 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         for route, steps in solution.steps().items()
     ]
     answers = [
-        {"symbol": sp.latex(sp.Symbol(n)), "latex": sp.latex(solution.expressions[n]), "meaning": a.meaning}
+        {"symbol": render.symbol_latex(n), "latex": render.latex_of(solution.expressions[n]), "meaning": a.meaning}
         for n, a in problem.asks.items()
     ]
     variants = []
@@ -443,9 +443,9 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         results = item.answers(values)
         variants.append({
             "number": number,
-            "given": [f"${sp.latex(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
+            "given": [f"${render.latex_of(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
                       for n, p in problem.parameters.items()],
-            "results": [{"symbol": sp.latex(sp.Symbol(n)), "value": item.shown(n, results[n]),
+            "results": [{"symbol": render.symbol_latex(n), "value": item.shown(n, results[n]),
                          "unit": units.latex_unit(a.unit)} for n, a in problem.asks.items()],
         })
     checks = [_check_latex(c, problem) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
@@ -537,7 +537,7 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
                     continue
                 choices = tuple(d["value"] for d in wrong.get(name, ()))
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
-                                      answers[name], ask.unit, tolerances[name],
+                                      answers[name], units.unicode_unit(ask.unit), tolerances[name],
                                       choices if len(choices) >= distractors.WANTED else (),
                                       solutions[item.problem.id, number]))
     return items
@@ -583,7 +583,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, contexts, header))
     for target in sorted(formats & {"moodle", "qti"}):
         lms.check(items, target)  # before anything is written
-    key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
+    key_rows = [{**r, "symbol": render.symbol_latex(r["answer"]), "value": f"${r['latex']}$",
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
     with output_folder.staged(out) as staging:
@@ -612,7 +612,8 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
             writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
                                                         "meaning"], lineterminator="\n", extrasaction="ignore")
             writer.writeheader()
-            writer.writerows({k: safe_cell(v) for k, v in r.items()} for r in rows)  # no formulas
+            writer.writerows({k: safe_cell(v) for k, v in {**r, "unit": units.unicode_unit(r["unit"])}.items()}
+                             for r in rows)  # no formulas; the unit as text reads it (kg·m², none for a pure number)
             products += [_write(staging, "key.csv", buffer.getvalue()),
                          _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
             if "moodle" in formats:
@@ -643,8 +644,8 @@ def _limits_context(problem: Problem, solution: Solution, progress: Reporter) ->
     varying = {p.symbol: p.unit for p in problem.parameters.values() if p.range is not None}
     meanings = {p.symbol: p.meaning for p in problem.parameters.values()}
     point = {0: "0", sp.oo: r"\infty"}
-    return [{"equation": rf"\lim_{{{sp.latex(c.symbol)} \to {point[c.point]}}} {sp.latex(sp.Symbol(name))} "
-                         rf"&= {sp.latex(c.value)}", "meaning": meanings[c.symbol]}
+    return [{"equation": rf"\lim_{{{render.latex_of(c.symbol)} \to {point[c.point]}}} {render.symbol_latex(name)} "
+                         rf"&= {render.latex_of(c.value)}", "meaning": meanings[c.symbol]}
             for name in problem.asks
             for c in limiting_cases.limiting_cases(solution.expression(name), varying)]
 

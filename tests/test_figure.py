@@ -55,7 +55,7 @@ def test_a_pinned_body_hangs_from_a_pivot_and_an_axle_is_a_circled_dot(figures):
     pivot = re.search(r"\\draw\[fill=gray!30\] \((-?[\d.]+),(-?[\d.]+)\) -- .* -- cycle;", pendulum)
     assert pivot and "pattern=north east lines" in pendulum
     assert f"\\draw[fill=white] ({pivot[1]},{pivot[2]}) circle" in pendulum  # the pin at the triangle's apex
-    assert "{$R_{cm}$}" in pendulum or "{$Rcm$}" in pendulum
+    assert "{$R_{\\mathrm{cm}}$}" in pendulum  # Rcm, as the equations name it (render.symbol_latex)
     for free in ("rolling_incline", "kepler_orbit", "rod_midpoint"):
         assert "\\draw[fill=gray!30]" not in figures[free], free
     assert "circle (0.1); \\fill (0,0) circle (0.035);" in figures["string_wrapped_disk"]  # the axle

@@ -101,7 +101,7 @@ def test_lms_exports_parse_and_show_the_meaning(built):
         assessment = qti_assessment(archive)
     assert assessment.find("{*}assessment").get("title") == SET_TITLE
     prompts = [paragraphs(p.findtext("{*}material/{*}mattext"))[1] for p in assessment.iter("{*}presentation")]
-    assert prompts == [f"{ASK} (in kg*m^2):"] * 2
+    assert prompts == [f"{ASK}: \\(I\\) (in kg·m²)"] * 2
     feedback = [q.findtext("generalfeedback/text") for q in questions] + [
         f.findtext("{*}flow_mat/{*}material/{*}mattext") for f in assessment.iter("{*}itemfeedback")]
     for n, html in enumerate(feedback):  # each variant's worked solution, parsed whole
@@ -120,7 +120,7 @@ def test_lms_exports_of_both_question_kinds_show_hostile_text_as_written():
         assessment = qti_assessment(archive)
     assert assessment.find("{*}assessment").get("title") == SET_TITLE
     texts = [paragraphs(m.text) for m in assessment.iter("{*}mattext") if m.get("texttype") == "text/html"]
-    assert texts == [[f"Find \\(x\\) {HOSTILE}", f"{ASK} (in m):"], [f"Find \\(x\\) {HOSTILE}", f"{ASK}:"]]
+    assert texts == [[f"Find \\(x\\) {HOSTILE}", f"{ASK}: \\(x\\) (in m)"], [f"Find \\(x\\) {HOSTILE}", f"{ASK}: \\(y\\)"]]
 
 
 @pytest.mark.parametrize("text, expected", [

@@ -11,7 +11,7 @@ import pytest
 from pathlib import Path
 
 from conftest import copy_library, moodle_cloze, qti_package, run_derive
-from derive import lms, worksheets
+from derive import lms, render, units, worksheets
 from derive.errors import InputError, ProblemError
 from derive.problem import load, parse
 
@@ -62,9 +62,11 @@ def test_exports_are_deterministic(exported, tmp_path):
 
 
 def test_small_margins_are_scaled_for_canvas_and_tolerances_follow_the_policy():
-    assert lms.scaled("0.0000123", "1e-7", "m") == ("0.0123", "0.0001", "10^-3 m")
-    assert lms.scaled("0.00123", "0.00001", "m") == ("1.23", "0.01", "10^-3 m")  # 4 places would keep 0.0012
-    assert lms.scaled("0.5", "0.1", "m") == ("0.5", "0.1", "m")
+    assert lms.exponent(["1e-7"]) == 3 and lms.scaled("0.0000123", "1e-7", 3) == ("0.0123", "0.0001")
+    assert lms.exponent(["0.00001"]) == 3 and lms.scaled("0.00123", "0.00001", 3) == ("1.23", "0.01")  # not 0.0012
+    assert lms.exponent(["0.1"]) == 0 and lms.scaled("0.5", "0.1", 0) == ("0.5", "0.1")
+    assert lms.exponent(["0.1", "1e-5", "1e-8"]) == 6  # the finest margin of the question's variants decides
+    assert lms.scaled_unit("kg·m²", 3) == "10⁻³ kg·m²" and lms.scaled_unit("", 6) == "10⁻⁶"
     assert lms.tolerance("9.81") == "0.01" and lms.tolerance("1.20e+3") == "10"
     assert lms.tolerance("-250", "2%") == "5" and lms.tolerance("3.3", "0.05") == "0.05"
 
@@ -81,7 +83,8 @@ def test_tolerances_are_held_to_each_lms_limits(monkeypatch):
     with pytest.raises(InputError, match="finer than Moodle can compare"):
         lms.check([_item("2.5", "1e-15")], "moodle")
     lms.check([_item("0.00123", "0.00001")], "qti")  # scaled: survives
-    monkeypatch.setattr(lms, "scaled", lambda value, margin, unit: (value, margin, unit))
+    lms.check([_item("0.5", "0.1"), _item("0.00123", "0.00001")], "qti")  # one unit for both: both survive
+    monkeypatch.setattr(lms, "scaled", lambda value, margin, k: (value, margin))
     with pytest.raises(InputError, match="Canvas needs a margin of at least 1e-4"):
         lms.check([_item("0.00123", "0.00001")], "qti")
 
@@ -117,6 +120,11 @@ def test_a_declared_tolerance_reaches_the_key_and_both_lms(tmp_path):
     assert sorted(re.findall(r"NUMERICAL:=([^:]+):([^}]+)\}", moodle)) == sorted((r["value"], r["tolerance"]) for r in rows)
 
 
+def _choice(value: str, unit: str) -> str:
+    """A choice as shown: the value and its unit as text (kg·m²), the value alone for a pure number."""
+    return f"{value} {units.unicode_unit(unit)}".rstrip()
+
+
 def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistakes(tmp_path):
     week = _set(tmp_path, "title: T\nproblems: [rolling_incline]\nvariants: 2\nseed: 5\nquestions: choice\n")
     out = tmp_path / "out"
@@ -131,8 +139,8 @@ def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistak
     assert len(fields) == len(answers) == 2 * 5
     for (kind, options), (value, unit, wrong) in zip(fields, answers):
         assert kind == "MULTICHOICE_V"
-        assert [a for mark, a in options if mark == "="] == [f"{value} {unit}"]  # m/s^2, no backslash
-        assert sorted(a for mark, a in options if mark == "%0%") == sorted(f"{w['value']} {unit}" for w in wrong)
+        assert [a for mark, a in options if mark == "="] == [_choice(value, unit)]  # m/s², no backslash
+        assert sorted(a for mark, a in options if mark == "%0%") == sorted(_choice(w["value"], unit) for w in wrong)
         assert len(options) == 4  # three mistakes apply to every answer of the rolling sphere
     assert any(options[0][0] != "=" for _, options in fields)  # the right answer is not always first
     with zipfile.ZipFile(out / "canvas-qti.zip") as archive:
@@ -147,7 +155,7 @@ def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistak
         assert fields == {"question_type": "multiple_choice_question", "points_possible": "1"}
         right = next(e.text for e in item.iter() if e.tag.endswith("varequal"))
         label = next(e for e in item.iter() if e.tag.endswith("response_label") and e.get("ident") == right)
-        assert label.find(".//{*}mattext").text == f"{value} {unit}"
+        assert label.find(".//{*}mattext").text == _choice(value, unit)
     again = tmp_path / "again"
     assert run_derive("sheet", str(week), "--to", "moodle,qti", "--out", str(again)).returncode == 0
     assert (again / "moodle.xml").read_bytes() == (out / "moodle.xml").read_bytes()
@@ -203,3 +211,90 @@ def test_values_an_lms_cannot_store_are_refused(value):
     for target in ("moodle", "qti"):
         with pytest.raises(InputError, match=r"p variant 1: ask.a: .* lies outside what an LMS stores"):
             lms.check([item], target)
+
+
+# --- labels and units as a student reads them (issue 16, item 4) ------------------------------
+
+#: Tiny and huge answers (atoms, quanta, orbits), a pure number (share), word subscripts
+#: (Omega_fast, U_min, r_circ) and a word as a symbol (Rcm, in the pendulum's solution).
+LABELLED = ["diatomic_molecule", "angular_momentum_quantization", "rolling_kinetic_energy", "top_precession_exact",
+            "effective_potential", "compound_pendulum"]
+
+
+@pytest.fixture(scope="module")
+def labelled(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("labels")
+    week = _set(folder, f"title: Labels\nproblems: [{', '.join(LABELLED)}]\nvariants: 5\nseed: 3\n")
+    done = run_derive("sheet", str(week), "--to", "moodle,qti", "--out", str(folder / "out"))
+    assert done.returncode == 0, done.stderr
+    return folder / "out"
+
+
+def _math(label: str) -> str:
+    """The one \\( \\) math of a field's label."""
+    (math,) = re.findall(r"\\\((.*?)\\\)", label)
+    return math
+
+
+def _reads_as_math(math: str) -> bool:
+    """No word typeset as a product of italic letters: every run of two letters or more is a
+    command (\\Omega, \\mathrm) or its argument (\\mathrm{fast}), never a bare or subscripted word."""
+    return not re.search(r"(?<![\\{A-Za-z])[A-Za-z]{2,}", math) and not re.search(r"_\{?[A-Za-z]{2}", math)
+
+
+def _shown_unit(unit: str) -> bool:
+    """A unit as text shows it: no operators of the problem file's syntax, no "1" for a pure number."""
+    return not set(unit) & set("*^") and unit.strip() != "1"
+
+
+@pytest.mark.parametrize("name, latex", [
+    ("Omega_fast", r"\Omega_{\mathrm{fast}}"), ("Rcm", r"R_{\mathrm{cm}}"), ("I_cm", r"I_{\mathrm{cm}}"),
+    ("K_rot", r"K_{\mathrm{rot}}"), ("U_min", r"U_{\mathrm{min}}"), ("theta_c", r"\theta_{c}"), ("L_x", "L_{x}"),
+    ("omega0", r"\omega_{0}"), ("m1", "m_{1}"), ("a_theta", r"a_{\theta}"), ("mu_s", r"\mu_{s}"), ("alpha", r"\alpha"),
+    ("dphi", r"d\phi"), ("dtheta", r"d\theta"), ("GM", r"\mathit{GM}"), ("share", r"\mathit{share}"),
+    ("angle", r"\mathit{angle}"), ("hbar", r"\hbar"), ("v_cm_x", r"v_{\mathrm{cm},x}"), ("x", "x"),
+])
+def test_symbols_read_as_math(name, latex):
+    assert render.symbol_latex(name) == latex and _reads_as_math(latex)
+
+
+def test_lms_labels_and_units_read_as_a_student_reads_them(labelled):
+    key = json.loads((labelled / "key.json").read_text())
+    asked = {(p, n): a for v in key["variants"] for p, answers in v["problems"].items()
+             for n, a in answers["answers"].items()}
+    pure = {question for question, a in asked.items() if a["unit"] == "1"}
+    assert ("rolling_kinetic_energy", "share") in pure
+    quiz = ET.parse(labelled / "moodle.xml").getroot()
+    fields = [p for q in quiz.iter("question") if q.get("type") == "cloze"
+              for p in re.findall(r"<p>(.*?)</p>", q.find("questiontext/text").text) if "{1:NUMERICAL" in p]
+    assert len(fields) == 5 * len(asked)
+    for field in fields:
+        label, unit = re.fullmatch(r"(.*) = \{1:NUMERICAL:=[^}]*\}(.*)", field.replace("&#123;", "{")).groups()
+        assert _reads_as_math(_math(label)), label
+        assert _shown_unit(unit), field
+    assert any(r"\(\Omega_{\mathrm{fast}}\) = " in f.replace("&#123;", "{") for f in fields)
+    assert sum(f.endswith("}") for f in fields) == 5 * len(pure)  # a pure number: no unit after its field
+    with zipfile.ZipFile(labelled / "canvas-qti.zip") as archive:
+        _, assessment, _ = qti_package(archive)
+    groups = [s for s in assessment.iter("{*}section") if s.find("{*}item") is not None]
+    assert len(groups) == len(asked)
+    for group in groups:
+        prompts = {re.findall(r"<p>(.*?)</p>", item.findtext(".//{*}mattext"))[-1] for item in group.iter("{*}item")}
+        assert len(prompts) == 1, prompts  # one label, one unit for all the variants of the question
+        (prompt,) = prompts
+        assert _reads_as_math(_math(prompt)) and _shown_unit(prompt), prompt
+        unit = re.search(r"\(in (.*)\)$", prompt)
+        problem, _, name = group.find("{*}item").get("title").partition(" v1 ")
+        assert (unit is None) == ((problem, name) in pure), prompt
+        power = re.match("10([⁻⁰-⁹¹²³]+) ", unit[1]) if unit else None
+        k = -int(power[1].translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789"))) if power else 0
+        for item in group.iter("{*}item"):
+            variant = int(item.get("title").split(" v")[1].split()[0])
+            value = key["variants"][variant - 1]["problems"][problem]["answers"][name]["value"]
+            shown = next(e.text for e in item.iter("{*}varequal"))
+            assert Decimal(shown).scaleb(-k) == Decimal(value)  # the key's value, in the question's unit
+            low = next(e.text for e in item.iter("{*}vargte"))
+            assert lms._survives_canvas(shown, str(Decimal(shown) - Decimal(low)))
+    assert any("(in 10⁻²⁷ kg)" in g.findtext(".//{*}mattext") for g in groups)  # the reduced mass, every variant
+    rows = list(csv.DictReader((labelled / "key.csv").open(encoding="utf-8")))
+    assert all(_shown_unit(r["unit"]) for r in rows) and {r["unit"] for r in rows} >= {"kg·m²", "", "J·s", "kg"}

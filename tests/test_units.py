@@ -6,7 +6,7 @@ import pytest
 import sympy
 from sympy.physics import units as u
 
-from derive.units import (UNITS, UnitError, dimension, expression_dimension, latex_unit,
+from derive.units import (UNITS, UnitError, dimension, expression_dimension, latex_unit, unicode_unit,
                           parse_quantity, parse_unit, same_dimension, si_factor, to_unit)
 
 pi = sympy.pi
@@ -326,3 +326,33 @@ def test_latex_unit_readable_by_pandoc():
     source = " ".join(rf"$2\,{latex_unit(name)}$" for name in ["m/s^2", "kg m^2", "deg", "rpm"])
     text = pypandoc.convert_text(source, "plain", format="latex").replace("\u2006", " ")
     assert "m/s²" in text and "kg m²" in text and "∘" in text and "rpm" in text
+
+
+# --- unicode_unit: a unit as text shows it (LMS questions, key.csv) ------------------
+
+UNICODE = {
+    "m/s^2": "m/s²", "kg*m^2": "kg·m²", "kg m^2": "kg·m²", "N*m": "N·m", "N m": "N·m", "rad/s": "rad/s",
+    "1/s": "1/s", "J": "J", "kg*m^2/s": "kg·m²/s", "m^2/s": "m²/s", "m^3/s^2": "m³/s²", "J*s": "J·s",
+    "J/kg": "J/kg", "kg/m^3": "kg/m³", "kg*m/s": "kg·m/s", "rad/s^2": "rad/s²", "m s^-2": "m·s⁻²",
+    "m/(kg s)": "m/(kg·s)", "(kg*m)^2": "(kg·m)²", "deg": "°", "deg/s": "°/s", "°": "°", "um": "μm",
+    "eV": "eV", "rpm": "rpm", "m^(1/2)": "m^(1/2)", "": "", "1": "", " 1 ": "",
+}
+
+
+@pytest.mark.parametrize("text", sorted(UNICODE))
+def test_unicode_unit(text):
+    assert unicode_unit(text) == UNICODE[text]
+
+
+def test_every_library_unit_reads_as_text_without_operators():
+    """No `*`, `^` or a lone "1" in any unit a library problem declares, written as text."""
+    from derive import library
+    from derive.problem import load
+    problems = [load(path) for path in library.problem_files()]
+    declared = {q.unit for p in problems for q in [*p.parameters.values(), *p.asks.values()]}
+    assert {"1", "kg*m^2", "m/s^2"} <= declared
+    for unit in declared:
+        assert not set(unicode_unit(unit)) & set("*^"), unit
+    assert unicode_unit("1") == ""
+    with pytest.raises(UnitError, match="unknown unit"):
+        unicode_unit("furlong")

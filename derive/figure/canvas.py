@@ -5,7 +5,7 @@ import math
 
 import sympy as sp
 
-from derive import inertia, units
+from derive import inertia, render, units
 from derive.scene import TIME, Body
 
 #: Styles every figure declares (TikZ libraries: arrows.meta, patterns).
@@ -87,7 +87,7 @@ class _Figure:
         expression = sp.sympify(expression, strict=True)  # safe: scene values, strict refuses text
         if not expression.free_symbols <= self.parameters:
             return None
-        return sp.latex(expression)
+        return render.latex_of(expression)
 
     def m(self, expression) -> str | None:
         """The expression as inline math for a label, or None."""
@@ -104,7 +104,7 @@ class _Figure:
         for name, ask in self.problem.asks.items():
             q = ask.quantity
             if q.kind == kind and (target is None or q.target == target) and (detail is None or q.detail == detail):
-                return sp.latex(sp.Symbol(name))
+                return render.symbol_latex(name)
         return None
 
     # drawing
