@@ -51,10 +51,13 @@ def first_errors(log: str, context: int = 1) -> list[str]:
 
 
 #: The command that installs each external program derive runs (Debian; as root). TeX Live's
-#: packages are those of scripts/install-tools that a compile needs.
+#: packages are those of scripts/install-tools that a compile needs (preview-latex-style: the
+#: figures' own document, derive.figure_files).
 TEX_LIVE = ("apt-get install -y --no-install-recommends texlive-latex-base texlive-latex-recommended "
-            "texlive-pictures texlive-science texlive-luatex latexmk lmodern fonts-dejavu-core fonts-noto-cjk")
+            "texlive-pictures texlive-science texlive-luatex latexmk lmodern fonts-dejavu-core fonts-noto-cjk "
+            "preview-latex-style")
 INSTALL = {"latexmk": TEX_LIVE, "pdflatex": TEX_LIVE, "lualatex": TEX_LIVE,
+           "pdftocairo": "apt-get install -y --no-install-recommends poppler-utils",
            "pandoc": "pip install pypandoc-binary (or: apt-get install -y pandoc)"}
 
 
@@ -205,7 +208,8 @@ def pdfs(texs: list[Path]) -> list[Path]:
 #: pandoc targets: (writer, file suffix, extra arguments). Math stays math in each: MathML in
 #: HTML, $...$ in Markdown, Word equations in DOCX. No filters, and nothing from a problem file
 #: reaches pandoc's options: the title is one `--metadata=title:...` argument; and pandoc runs
-#: with --sandbox, so an \input or \includegraphics in the LaTeX reads no file.
+#: with --sandbox, so an \input or \includegraphics in the LaTeX reads no file (HTML and Markdown
+#: only refer to their figures' files; a DOCX's figures come as data URIs, which pandoc decodes).
 PANDOC_SAFETY = ["--sandbox"]
 PANDOC_TARGETS = {
     "html": ("html5", ".html", ["--standalone", "--mathml"]),
@@ -214,8 +218,9 @@ PANDOC_TARGETS = {
 }
 
 
-def convert(tex: Path, target: str, title: str) -> Path:
-    """Convert a .tex document with pandoc to html, md or docx (see PANDOC_TARGETS)."""
+def convert(tex: str, out: Path, target: str, title: str) -> Path:
+    """Convert a LaTeX document with pandoc to html, md or docx (see PANDOC_TARGETS): the file
+    `out` with the target's suffix."""
     import pypandoc
 
     try:
@@ -223,12 +228,12 @@ def convert(tex: Path, target: str, title: str) -> Path:
     except OSError:
         raise MissingTool("pandoc", INSTALL["pandoc"]) from None
     writer, suffix, extra = PANDOC_TARGETS[target]
-    out = tex.with_suffix(suffix)
+    out = out.with_suffix(suffix)
     try:
-        pypandoc.convert_file(str(tex), writer, format="latex", outputfile=str(out),
+        pypandoc.convert_text(tex, writer, format="latex", outputfile=str(out),
                               extra_args=[*extra, *PANDOC_SAFETY, f"--metadata=title:{title}"])
     except (RuntimeError, OSError) as error:
-        raise BuildError(f"pandoc could not convert {tex.name}: {str(error).strip().splitlines()[-1]}") from None
+        raise BuildError(f"pandoc could not convert {out.name}: {str(error).strip().splitlines()[-1]}") from None
     return out
 
 

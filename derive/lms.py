@@ -7,7 +7,9 @@ from category". Canvas: a question group (a `<section>` that picks 1) per proble
 quantity, with one item per variant worth `POINTS` points, in a graded quiz (`assessment_meta.xml`,
 quiz type `assignment`). An item is numerical (the answer and its tolerance) or, with wrong choices
 derived from mistaken set-ups, multiple choice. Each question's general feedback is the worked
-solution of its variant (the solutions sheet's own text, as HTML with MathJax math).
+solution of its variant (the solutions sheet's own text, as HTML with MathJax math). A problem's
+figure (a PNG, derive.figure_files) travels inside the file: in each Moodle question's text, in the
+Canvas zip once, and is shown below the question at its printed width.
 
 The tolerance follows the answer's policy: one unit in the last significant digit shown (the
 default), a percentage (`2%`) or an absolute amount in the answer's unit. Canvas keeps four decimal
@@ -34,6 +36,7 @@ escaping inside that text (`_cloze_text`).
 """
 from __future__ import annotations
 
+import base64
 import hashlib
 import io
 import random
@@ -42,12 +45,14 @@ import zipfile
 from collections.abc import Iterable
 from dataclasses import dataclass
 from decimal import Decimal
+from typing import Mapping
 
 from lxml import etree
 from lxml.builder import E, ElementMaker
 
 from derive import render, units
 from derive.errors import InputError
+from derive.figure_files import FOLDER, Image
 
 
 @dataclass(frozen=True)
@@ -196,6 +201,16 @@ def _paragraphs(*texts: str) -> str:
     return "".join(etree.tostring(E.p(text), encoding="unicode", method="html") for text in texts)
 
 
+def _figure(source: str, image: Image, title: str) -> str:
+    """HTML of a problem's figure: its image from `source` in a paragraph, at its printed width.
+
+    >>> _figure("@@PLUGINFILE@@/a.png", Image("a", b"", b"", 150), "A & B")
+    '<p><img src="@@PLUGINFILE@@/a.png" alt="Figure: A &amp; B" width="200"></p>'
+    """
+    img = E.img(src=source, alt=f"Figure: {title}", width=str(image.pixels))
+    return etree.tostring(E.p(img), encoding="unicode", method="html")
+
+
 def _xml(root: etree._Element) -> bytes:
     """A whole XML document, UTF-8 with its declaration, indented (the same bytes every build)."""
     return etree.tostring(root, encoding="UTF-8", xml_declaration=True, pretty_print=True)
@@ -282,12 +297,17 @@ def _category(*names: str) -> str:
 # and files the questions that follow in it; import_multianswer hands the question text to
 # qtype_multianswer_extract_question (question/type/multianswer/questiontype.php, see _cloze_text)
 # and imports <generalfeedback> with its format. Moodle's MathJax filter typesets \( \) and \[ \].
-def moodle(items: list[Item], set_id: str) -> str:
+# A question's files: import_multianswer reads <questiontext> with import_text_with_files, whose
+# import_files_as_draft stores each <file name=... path=... encoding="base64"> child (after
+# base64_decode) in the question text's file area as path + name, where the text refers to it as
+# @@PLUGINFILE@@/name (the form Moodle's own XML export writes, write_files); the files belong to
+# their question, so each question carries its own copy.
+def moodle(items: list[Item], set_id: str, figures: Mapping[str, Image] = {}) -> str:
     """Moodle XML: for each problem its category, `$course$/derive/SET/PROBLEM` (a category
     "question" before the problem's variants: Moodle files the questions after it there), then one
-    cloze question per variant with a field per asked quantity and the variant's worked solution
-    as general feedback. A quiz's "random question" from a problem's category gives each student
-    one variant of it."""
+    cloze question per variant with a field per asked quantity, the problem's figure (`figures`,
+    by problem id) below its text, and the variant's worked solution as general feedback. A quiz's
+    "random question" from a problem's category gives each student one variant of it."""
     problems: dict[str, dict[int, list[Item]]] = {}
     for item in items:
         problems.setdefault(item.problem, {}).setdefault(item.variant, []).append(item)
@@ -296,12 +316,17 @@ def moodle(items: list[Item], set_id: str) -> str:
         title = next(iter(variants.values()))[0].title
         quiz.append(E.question(E.category(E.text(_category("derive", set_id, problem))),
                                E.info(E.text(_paragraphs(title)), format="html"), type="category"))
+        image = figures.get(problem)
+        shown = _figure(f"@@PLUGINFILE@@/{image.file('png')}", image, _literal_braces(title)) if image else ""
         for variant, group in variants.items():
             fields = [f"{_literal_braces(_label(i))} = {_cloze(i)}" for i in group]
-            html = _references(_paragraphs(_mathjax(_literal_braces(group[0].question)), *fields))
+            html = _references(_paragraphs(_mathjax(_literal_braces(group[0].question))) + shown
+                               + _paragraphs(*fields))
+            files = [E.file(base64.b64encode(image.png).decode("ascii"), name=image.file("png"), path="/",
+                            encoding="base64")] if image else []  # an element of its own in each question
             quiz.append(E.question(
                 E.name(E.text(f"{problem} variant {variant}")),
-                E.questiontext(E.text(html), format="html"),
+                E.questiontext(E.text(html), *files, format="html"),
                 E.generalfeedback(E.text(group[0].solution), format="html"),
                 type="cloze"))
     return _xml(quiz).decode()
@@ -328,6 +353,12 @@ def moodle(items: list[Item], set_id: str) -> str:
 #   assessment_item_converter.rb (get_feedback) reads an ident matching general_ as the
 #   question's neutral comments. Canvas typesets \( \) and \[ \] math with MathJax (exams2canvas
 #   converts with "pandoc-mathjax" for it).
+# - the figures: a file of the package is a resource of type webcontent listing it (text2qti:
+#   xml_imsmanifest.py IMAGE, a resource per image with its <file>; markdown.py Image, whose src is
+#   $IMS-CC-FILEBASE$/images/NAME), referred to from the HTML as $IMS-CC-FILEBASE$/PATH
+#   (lib/cc/cc_helper.rb WEB_CONTENT_TOKEN); Canvas's link migrator (canvas_link_migrator,
+#   link_parser.rb convert_link and parse_url) reads `$IMS-CC-FILEBASE$/(.*)` (or its %24-escaped
+#   form) as a link to the imported file at that path.
 QTI_NAMESPACE = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
 MANIFEST_NAMESPACE = "http://www.imsglobal.org/xsd/imsccv1p1/imscp_v1p1"
 CANVAS_NAMESPACE = "http://canvas.instructure.com/xsd/cccv1p0"
@@ -336,6 +367,7 @@ MANIFEST = ElementMaker(namespace=MANIFEST_NAMESPACE, nsmap={None: MANIFEST_NAME
 CANVAS = ElementMaker(namespace=CANVAS_NAMESPACE, nsmap={None: CANVAS_NAMESPACE})
 QTI_RESOURCE = "imsqti_xmlv1p2"
 META_RESOURCE = "associatedcontent/imscc_xmlv1p1/learning-application-resource"
+FIGURE_RESOURCE = "webcontent"
 POINTS = 1  # an asked quantity's points, as a Moodle cloze field's default weight
 GROUP_TITLE_LIMIT = 255  # characters of a Canvas question group's name
 
@@ -379,11 +411,12 @@ def _multiple_choice(item: Item) -> tuple[str, str, etree._Element, etree._Eleme
     return "multiple_choice_question", _label(item), response, QTI.varequal(f"choice{right}", respident="response1")
 
 
-def _qti_item(item: Item, k: int, ident: str) -> etree._Element:
-    """A Canvas item: its question type and points, the question's HTML, the response (numerical
-    in the question's unit 10^-k UNIT), its scoring and the worked solution as general feedback."""
+def _qti_item(item: Item, k: int, ident: str, figure: str = "") -> etree._Element:
+    """A Canvas item: its question type and points, the question's HTML (with the problem's
+    `figure`, HTML), the response (numerical in the question's unit 10^-k UNIT), its scoring and
+    the worked solution as general feedback."""
     kind, prompt, response, condition = _multiple_choice(item) if item.wrong else _numerical(item, k)
-    text = _paragraphs(_mathjax(item.question), prompt)
+    text = _paragraphs(_mathjax(item.question)) + figure + _paragraphs(prompt)
     scoring = [QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
                                  {"continue": "No"})]
     feedback = []
@@ -402,20 +435,26 @@ def _qti_item(item: Item, k: int, ident: str) -> etree._Element:
         ident=ident, title=f"{item.problem} v{item.variant} {item.name}")
 
 
-def qti(items: list[Item], title: str, set_id: str, seed: int) -> bytes:
+def qti(items: list[Item], title: str, set_id: str, seed: int, figures: Mapping[str, Image] = {}) -> bytes:
     """A QTI 1.2 zip for Canvas: a graded quiz with a question group per problem and asked
     quantity that picks one of its variants (numerical or multiple-choice items, worth POINTS
-    each), its metadata (assessment_meta.xml) and imsmanifest.xml listing both.
+    each), its metadata (assessment_meta.xml), the problems' figures (`figures`, by problem id;
+    figures/ID.png) and imsmanifest.xml listing them all.
 
     Canvas picks each group's item on its own, so a problem that asks for several quantities is one
     group per quantity: a Canvas item holds one numeric answer with a tolerance."""
     quiz = identifier("quiz", set_id, seed)
     groups = _questions(items)
+    titles = {item.problem: item.title for item in items}
+    paths = {problem: f"{FOLDER}/{figures[problem].file('png')}" for problem in titles if problem in figures}
+    shown = {problem: _figure(f"$IMS-CC-FILEBASE$/{path}", figures[problem], titles[problem])
+             for problem, path in paths.items()}
     sections = [
         QTI.section(
             QTI.selection_ordering(QTI.selection(QTI.selection_number("1"),
                                                  QTI.selection_extension(QTI.points_per_item(str(POINTS))))),
-            *(_qti_item(i, k, identifier("item", set_id, seed, problem, i.variant, name)) for i in group),
+            *(_qti_item(i, k, identifier("item", set_id, seed, problem, i.variant, name), shown.get(problem, ""))
+              for i in group),
             ident=identifier("group", set_id, seed, problem, name),
             title=f"{group[0].title}: {group[0].meaning}"[:GROUP_TITLE_LIMIT])
         for (problem, name), group in groups.items() for k in [_exponent(group)]]
@@ -439,11 +478,15 @@ def qti(items: list[Item], title: str, set_id: str, seed: int) -> bytes:
         MANIFEST.resources(
             MANIFEST.resource(MANIFEST.file(href=assessment_path), MANIFEST.dependency(identifierref=meta_id),
                               identifier=quiz, type=QTI_RESOURCE),
-            MANIFEST.resource(MANIFEST.file(href=meta_path), identifier=meta_id, type=META_RESOURCE, href=meta_path)),
+            MANIFEST.resource(MANIFEST.file(href=meta_path), identifier=meta_id, type=META_RESOURCE, href=meta_path),
+            *(MANIFEST.resource(MANIFEST.file(href=path), identifier=identifier("figure", set_id, seed, problem),
+                                type=FIGURE_RESOURCE, href=path) for problem, path in paths.items())),
         identifier=identifier("manifest", set_id, seed))
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w") as archive:  # stored, as ZipInfo entries are by default
-        for name, root in (("imsmanifest.xml", manifest), (assessment_path, assessment), (meta_path, meta)):
+        files = [("imsmanifest.xml", _xml(manifest)), (assessment_path, _xml(assessment)), (meta_path, _xml(meta)),
+                 *((path, figures[problem].png) for problem, path in paths.items())]
+        for name, data in files:
             info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))  # the same bytes every build
-            archive.writestr(info, _xml(root))
+            archive.writestr(info, data)
     return buffer.getvalue()

@@ -213,7 +213,7 @@ def _carry_over(out: Path, staging: Path, products: set[str]) -> None:
 
 
 def commit(staging: Path, out: Path, products: list[Path]) -> list[Path]:
-    """Make the finished `products` (files in `staging`) the build at `out`, with a manifest,
+    """Make the finished `products` (files, or folders of them, in `staging`) the build at `out`, with a manifest,
     keeping the files of `out` that derive did not write; return the products' paths in `out`."""
     names = {p.name for p in products}
     if any(p.parent != staging for p in products):

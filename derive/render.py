@@ -32,19 +32,19 @@ def symbol_latex(name: str) -> str:
     sympy's own LaTeX (split_super_sub, translate) does the splitting and the Greek; it sets every
     subscript in italics (Omega_fast as f a s t) and a word as a product (Rcm as R c m), so these
     rules are written here: a subscript of two letters or more is upright (a one-letter subscript
-    may be an index, x_i, and stays italic); a capital followed by small letters is the capital
-    with them as its subscript (Rcm as R_cm); a letter then a Greek name is a product (dphi as d
-    phi); any other word is one italic symbol.
+    may be an index, x_i, and stays italic); a capital followed by one or two small letters is the
+    capital with them as its subscript (Rcm as R_cm; Mass stays a word); a letter then a Greek
+    name is a product (dphi as d phi); any other word is one italic symbol.
 
     >>> symbol_latex("Omega_fast"), symbol_latex("Rcm"), symbol_latex("theta_c"), symbol_latex("omega0")
     ('\\Omega_{\\mathrm{fast}}', 'R_{\\mathrm{cm}}', '\\theta_{c}', '\\omega_{0}')
-    >>> symbol_latex("dphi_exact"), symbol_latex("GM"), symbol_latex("a_theta"), symbol_latex("m")
-    ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', 'm')
+    >>> symbol_latex("dphi_exact"), symbol_latex("GM"), symbol_latex("a_theta"), symbol_latex("Mass")
+    ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
     """
     base, supers, subs = split_super_sub(name)
     letter = translate(base)
     if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent
-        if base[0].isupper() and base[1:].islower():
+        if base[0].isupper() and base[1:].islower() and len(base) <= 3:  # Rcm, Mp; not a word (Mass)
             letter, subs = base[0], [base[1:], *subs]
         elif translate(base[1:]) != base[1:]:
             letter = base[0] + translate(base[1:])

@@ -28,8 +28,8 @@ import sympy as sp
 import yaml
 
 from derive import MAX_VARIANTS
-from derive import (distractors, export, figure, latex_safety, library, limiting_cases, lms, numeric, output_folder,
-                    render, units)
+from derive import (distractors, export, figure, figure_files, latex_safety, library, limiting_cases, lms, numeric,
+                    output_folder, render, units)
 from derive.answers import Solution
 from derive.defaults import Defaults
 from derive.errors import InputError
@@ -508,7 +508,7 @@ def _numerical_notes(key: dict) -> list[str]:
 def _worked_solutions(prepared: list[_ProblemVariants], contexts: list[dict], header: dict) -> dict[tuple[str, int], str]:
     """Each problem's worked solution for each variant as HTML, keyed (problem id, variant): the
     solutions sheet's own template and text, each section one problem with that variant's numbers
-    only (no figure: TikZ has no HTML), converted by pandoc in one run (export.html_sections)."""
+    only (no figure: the question shows it), converted by pandoc in one run (export.html_sections)."""
     keys, problems = [], []
     for item, context in zip(prepared, contexts):
         for variant in context["variants"]:
@@ -543,6 +543,26 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
     return items
 
 
+def _worksheet(header: dict, prepared: list[_ProblemVariants], variants: int, figures: list[str | None]) -> str:
+    """The worksheet's LaTeX: each variant's problems, each shown with its figure (`figures`, one
+    per problem, None for none: TikZ for the PDF, an \\includegraphics of its image for pandoc)."""
+    return render.render("worksheet.tex.j2", set=header, variants=[
+        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1]),
+                                    "figure": drawn} for item, drawn in zip(prepared, figures)]}
+        for n in range(1, variants + 1)])
+
+
+def _shown(prepared: list[_ProblemVariants], images: dict[str, figure_files.Image], target: str) -> list[str | None]:
+    """Each problem's figure for pandoc's `target`: its SVG file beside the HTML or the Markdown, or
+    in a DOCX its PNG as a data URI (pandoc's --sandbox reads no image file); None without one."""
+    shown = []
+    for number, item in enumerate(prepared, start=1):
+        image = images.get(item.problem.id)
+        source = image and (image.data_uri() if target == "docx" else f"{figure_files.FOLDER}/{image.file('svg')}")
+        shown.append(image and image.latex(source, f"Figure of problem {number}"))
+    return shown
+
+
 def _write(folder: Path, name: str, text: str) -> Path:
     path = folder / name
     path.write_text(text, encoding="utf-8")
@@ -562,17 +582,17 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
     seed = problem_set.seed if seed is None else seed
     formats = problem_set.outputs if formats is None else formats
     choice = (questions or problem_set.questions) == "choice"
-    if "pdf" in formats:
+    if formats & ({"pdf"} | figure_files.OUTPUTS):
         export.require("latexmk")  # at once, not after the derivations
+    if formats & figure_files.OUTPUTS:
+        export.require("pdftocairo")  # the figures as images
     out = output_folder.claim(out_dir or Path("build") / problem_set.id)
     prepared = _prepare(problem_set, variants, seed, progress)
     header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
-    figures = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
-    worksheet_variants = [
-        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1]),
-                                    "figure": drawn} for item, drawn in zip(prepared, figures)]}
-        for n in range(1, variants + 1)
-    ]
+    drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
+    # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
+    figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
+        if formats & figure_files.OUTPUTS else {}
     rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
     for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
         print(f"derive: warning: {note}", file=sys.stderr, flush=True)
@@ -587,25 +607,42 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
     with output_folder.staged(out) as staging:
-        steps = 1 + len(formats & {"pdf", "html", "md", "docx", "moodle", "qti"})
+        compiling = "pdf" in formats or bool(figures)
+        steps = 1 + compiling + bool(figures) + len(formats & {"html", "md", "docx", "moodle", "qti"})
         with progress.task("writing", steps) as begin:
             begin("LaTeX")
             texs = [
-                _write(staging, "worksheet.tex", render.render("worksheet.tex.j2", set=header,
-                                                               variants=worksheet_variants)),
+                _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn)),
                 _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
                 _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
             ]
             products = list(texs)
-            if "pdf" in formats:  # each in a scratch folder of its own (export.pdf)
-                begin(f"{len(texs)} PDFs (latexmk, {export.workers()} in parallel)")
-                products += export.pdfs(texs)
+            compiled = texs if "pdf" in formats else []
+            if figures:  # a scratch document of its own, compiled with the others (no product)
+                compiled = compiled + [_write(staging, "figures.tex", figure_files.document(list(figures.values())))]
+            if compiling:  # each in a scratch folder of its own (export.pdf)
+                begin(f"{len(compiled)} PDF{'s' * (len(compiled) > 1)} (latexmk, {export.workers()} in parallel)")
+                pdfs = export.pdfs(compiled)
+            if "pdf" in formats:
+                products += pdfs[:len(texs)]
                 if variants > 1:  # each student's own worksheet: the whole set's pages, split
                     products += _per_variant(texs[0], variants)
+            images = {}
+            if figures:
+                begin(f"{len(figures)} figures as SVG and PNG (pdftocairo)")
+                images = figure_files.images(list(figures), pdfs[-1])
+            if images and formats & {"html", "md"}:  # the SVG files they refer to
+                folder = staging / figure_files.FOLDER
+                folder.mkdir()
+                for image in images.values():
+                    (folder / image.file("svg")).write_bytes(image.svg)
+                products.append(folder)
             for target in ("html", "md", "docx"):
                 if target in formats:
                     begin(f"the worksheet as {target} (pandoc)")
-                    products.append(export.convert(texs[0], target, problem_set.title))
+                    shown = _shown(prepared, images, target)
+                    products.append(export.convert(_worksheet(header, prepared, variants, shown), staging / "worksheet",
+                                                   target, problem_set.title))
             # The keys and the LMS files are written by Python after every TeX run, so no TeX run
             # could have touched them.
             buffer = io.StringIO()
@@ -618,11 +655,11 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                          _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
             if "moodle" in formats:
                 begin("Moodle XML")
-                products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id)))
+                products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id, images)))
             if "qti" in formats:
                 begin("the Canvas QTI zip")
                 path = staging / "canvas-qti.zip"
-                path.write_bytes(lms.qti(items, problem_set.title, problem_set.id, seed))
+                path.write_bytes(lms.qti(items, problem_set.title, problem_set.id, seed, images))
                 products.append(path)
         return output_folder.commit(staging, out, products)
 

@@ -146,3 +146,22 @@ def qti_package(archive: zipfile.ZipFile) -> tuple[etree._Element, etree._Elemen
     assessment = etree.fromstring(archive.read(f"{ident}/{ident}.xml"))
     assert assessment.find("{*}assessment").get("ident") == ident
     return manifest, assessment, etree.fromstring(archive.read(meta.get("href")))
+
+
+def image_kind(data: bytes) -> str:
+    """"svg" or "png" for a valid image of that kind (an SVG document that parses, with a size; a
+    PNG that Pillow reads whole, at least 16 pixels wide); an AssertionError otherwise."""
+    import io
+
+    from PIL import Image
+
+    if data.startswith(b"\x89PNG"):
+        with Image.open(io.BytesIO(data)) as image:
+            image.load()  # decodes every pixel: a truncated or corrupt PNG raises
+            assert image.format == "PNG" and image.width >= 16 and image.height >= 1, image
+        return "png"
+    root = etree.fromstring(data)
+    assert root.tag == "{http://www.w3.org/2000/svg}svg", root.tag
+    assert float(root.get("width").removesuffix("pt")) > 0 and float(root.get("height").removesuffix("pt")) > 0
+    assert len(root.findall(".//{http://www.w3.org/2000/svg}path")) > 0  # it draws something
+    return "svg"

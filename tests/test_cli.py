@@ -1,5 +1,6 @@
 """The command-line contract of DESIGN.md: solve, inertia, list, exit codes, start-up."""
 import json
+import shutil
 import subprocess
 import sys
 
@@ -247,6 +248,16 @@ def test_a_missing_tool_exits_3_with_its_install_command(tmp_path):
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
 
 
+def test_figures_as_images_need_pdftocairo(tmp_path):
+    (tmp_path / "bin").mkdir()
+    (tmp_path / "bin" / "latexmk").symlink_to(shutil.which("latexmk"))
+    done = run_derive("sheet", "rod_endpoint", "--to", "html", "--out", str(tmp_path / "out"), "--progress", "none",
+                      env={"PATH": str(tmp_path / "bin")})
+    assert done.returncode == 3 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert "pdftocairo is not installed; install it with: apt-get install -y --no-install-recommends poppler-utils" \
+        in done.stderr
+
+
 def test_missing_pandoc_is_a_missing_tool(tmp_path, monkeypatch):
     import pypandoc
 
@@ -258,7 +269,7 @@ def test_missing_pandoc_is_a_missing_tool(tmp_path, monkeypatch):
 
     monkeypatch.setattr(pypandoc, "get_pandoc_path", nowhere)
     with pytest.raises(MissingTool, match="pandoc is not installed; install it with: pip install pypandoc-binary"):
-        export.convert(tmp_path / "worksheet.tex", "html", "T")
+        export.convert("", tmp_path / "worksheet", "html", "T")
 
 
 def test_course_defaults_file(tmp_path):

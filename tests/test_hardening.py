@@ -6,6 +6,7 @@ import subprocess
 import threading
 import time
 import unicodedata
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -665,10 +666,10 @@ def test_interrupted_build_on_the_command_line(tmp_path):
 def test_pandoc_gets_no_filters_and_one_title_argument(monkeypatch, tmp_path):
     import pypandoc
     seen = []
-    monkeypatch.setattr(pypandoc, "convert_file", lambda *a, **k: seen.append(k["extra_args"]))
+    monkeypatch.setattr(pypandoc, "convert_text", lambda *a, **k: seen.append(k["extra_args"]))
     title = "Week 9 --lua-filter=evil.lua --filter x -F y"
     for target in export.PANDOC_TARGETS:
-        export.convert(tmp_path / "w.tex", target, title)
+        export.convert("", tmp_path / "w", target, title)
     for args in seen:
         assert not any(a.startswith(("--filter", "--lua-filter", "-F", "-L", "--defaults", "-d")) for a in args), args
         assert f"--metadata=title:{title}" in args and "--sandbox" in args
@@ -677,12 +678,17 @@ def test_pandoc_gets_no_filters_and_one_title_argument(monkeypatch, tmp_path):
 def test_pandoc_reads_no_file_from_raw_latex(tmp_path):
     secret = tmp_path / "secret.tex"
     secret.write_text("SECRETTEXT")
-    tex = tmp_path / "w.tex"
-    tex.write_text("\\documentclass{article}\\begin{document}Hello --lua-filter=x.lua \\input{" + str(secret)
-                   + "}\\end{document}\n")
-    html = export.convert(tex, "html", "t").read_text()
+    tex = ("\\documentclass{article}\\begin{document}Hello --lua-filter=x.lua \\input{" + str(secret)
+           + "}\\end{document}\n")
+    html = export.convert(tex, tmp_path / "w", "html", "t").read_text()
     assert "SECRETTEXT" not in html and "Hello" in html
     assert os.path.exists(secret)
+    picture = tmp_path / "secret.png"  # an image's file neither: a DOCX gets its figures as data URIs
+    picture.write_bytes(b"\x89PNG\r\n\x1a\n" + b"SECRETIMAGE")
+    docx = export.convert(f"\\documentclass{{article}}\\begin{{document}}\\includegraphics{{{picture}}}\\end{{document}}\n",
+                          tmp_path / "w", "docx", "t")
+    with zipfile.ZipFile(docx) as document:
+        assert not any(name.startswith("word/media/") for name in document.namelist())
 
 
 def test_a_compile_past_its_time_limit_is_stopped_with_its_whole_process_group(tmp_path, monkeypatch):

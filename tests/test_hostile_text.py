@@ -79,6 +79,8 @@ def test_pandoc_outputs_parse_and_show_the_titles(built):
     words = "\n".join("".join(p.itertext()) for p in parts["word/document.xml"].iter("{*}p"))
     for text in (SET_TITLE, TITLE):
         assert text in shown(page.find("body").text_content()) and text in markdown and text in shown(words)
+    assert [i.get("alt") for i in page.iter("img")] == ["Figure of problem 1"] * 2
+    assert markdown.count('![Figure of problem 1](figures/plain_disk.svg){width="') == 2
 
 
 def test_keys_show_the_meaning_and_the_csv_neutralizes_its_formula(built):
@@ -95,13 +97,17 @@ def test_lms_exports_parse_and_show_the_meaning(built):
     questions = [q for q in quiz.iter("question") if q.get("type") == "cloze"]
     assert [q.findtext("name/text") for q in questions] == ["plain_disk variant 1", "plain_disk variant 2"]
     for question in questions:
-        _, field = paragraphs(question.findtext("questiontext/text"))
+        html = question.findtext("questiontext/text")
+        _, _, field = paragraphs(html)  # the question, its figure, the answer's field
         assert field.startswith(f"{ASK}: \\(I\\) = {{1:NUMERICAL:=")
+        assert [i.get("alt") for i in lxml.html.fragment_fromstring(html, "div").iter("img")] == [f"Figure: {TITLE}"]
     with zipfile.ZipFile(built / "canvas-qti.zip") as archive:
         assessment = qti_assessment(archive)
     assert assessment.find("{*}assessment").get("title") == SET_TITLE
-    prompts = [paragraphs(p.findtext("{*}material/{*}mattext"))[1] for p in assessment.iter("{*}presentation")]
-    assert prompts == [f"{ASK}: \\(I\\) (in kg·m²)"] * 2
+    items = [p.findtext("{*}material/{*}mattext") for p in assessment.iter("{*}presentation")]
+    assert [paragraphs(html)[2] for html in items] == [f"{ASK}: \\(I\\) (in kg·m²)"] * 2
+    assert [i.get("alt") for html in items for i in lxml.html.fragment_fromstring(html, "div").iter("img")] \
+        == [f"Figure: {TITLE}"] * 2
     feedback = [q.findtext("generalfeedback/text") for q in questions] + [
         f.findtext("{*}flow_mat/{*}material/{*}mattext") for f in assessment.iter("{*}itemfeedback")]
     for n, html in enumerate(feedback):  # each variant's worked solution, parsed whole

@@ -10,7 +10,7 @@ import pytest
 
 from pathlib import Path
 
-from conftest import copy_library, moodle_cloze, qti_package, run_derive
+from conftest import copy_library, image_kind, moodle_cloze, qti_package, run_derive
 from derive import lms, render, units, worksheets
 from derive.errors import InputError, ProblemError
 from derive.problem import load, parse
@@ -51,6 +51,28 @@ def test_markdown_and_docx_keep_the_math(exported):
     assert "$" in (exported / "worksheet.md").read_text()
     with zipfile.ZipFile(exported / "worksheet.docx") as document:
         assert "m:oMath" in document.read("word/document.xml").decode()
+
+
+def test_markdown_refers_to_each_figure_in_a_file_beside_it(exported):
+    sources = re.findall(r"!\[Figure of problem \d\]\(([^)\s]+)\)\{width=", (exported / "worksheet.md").read_text())
+    assert len(sources) == 2 * 3 and len(set(sources)) == 3  # each variant's problems; one file per problem
+    for source in sources:
+        assert source.startswith("figures/") and ".." not in source
+        assert image_kind((exported / source).read_bytes()) == "svg"
+
+
+def test_docx_embeds_each_figure_as_a_png(exported):
+    with zipfile.ZipFile(exported / "worksheet.docx") as document:
+        media = [n for n in document.namelist() if n.startswith("word/media/")]
+        assert len(media) == 3  # one image per problem, shown in each variant
+        assert all(image_kind(document.read(name)) == "png" for name in media)
+        body = document.read("word/document.xml").decode()
+        relations = document.read("word/_rels/document.xml.rels").decode()
+    embedded = re.findall(r'r:embed="([^"]+)"', body)
+    assert len(embedded) == 2 * 3
+    for relation in set(embedded):
+        target = re.search(rf'Id="{relation}"[^>]*Target="([^"]+)"|Target="([^"]+)"[^>]*Id="{relation}"', relations)
+        assert f"word/{target.group(1) or target.group(2)}" in media
 
 
 def test_exports_are_deterministic(exported, tmp_path):

@@ -1,6 +1,7 @@
 """LMS exports that grade on import: Moodle categories of one cloze question per variant, Canvas
 question groups that pick one variant in a graded quiz, and each variant's worked solution as
 its feedback. The Moodle side is read as Moodle reads it (conftest.moodle_cloze)."""
+import base64
 import io
 import json
 import re
@@ -10,7 +11,7 @@ import lxml.html
 import pytest
 from lxml import etree
 
-from conftest import moodle_cloze, qti_package, run_derive
+from conftest import image_kind, moodle_cloze, qti_package, run_derive
 from derive import lms, worksheets
 
 PROBLEMS = worksheets.load_set("demo").problems  # rod_endpoint (asks 1), string_wrapped_disk (3), compound_pendulum (2)
@@ -130,6 +131,38 @@ def test_canvas_feedback_is_the_variants_worked_solution_with_its_numbers(canvas
         shown = _text(mattext.text)
         assert f"Variant {number}." in shown
         assert all(n in shown for n in _numbers(key, int(number), problem))
+
+
+def test_each_moodle_question_carries_its_problems_figure(built):
+    """As Moodle's import_text_with_files reads it: each <file> of <questiontext>, base64, stored as
+    path + name, and the text's @@PLUGINFILE@@/name refers to it."""
+    quiz = etree.parse(str(built / "moodle.xml")).getroot()
+    questions = [q for q in quiz.iter("question") if q.get("type") == "cloze"]
+    assert len(questions) == len(PROBLEMS) * 2  # every demo problem has a figure
+    for question in questions:
+        text = question.find("questiontext")
+        sources = [img.get("src") for img in lxml.html.fragment_fromstring(text.findtext("text"), "div").iter("img")]
+        files = {f.get("path") + f.get("name"): f for f in text.findall("file")}
+        assert len(sources) == len(files) == 1, sources
+        assert sources[0].startswith("@@PLUGINFILE@@/") and sources[0].removeprefix("@@PLUGINFILE@@") in files
+        (file,) = files.values()
+        assert file.get("encoding") == "base64" and file.get("name") == question.findtext("name/text").split()[0] + ".png"
+        assert image_kind(base64.b64decode(file.text, validate=True)) == "png"
+
+
+def test_the_canvas_zip_holds_and_lists_each_figure_its_items_show(built):
+    with zipfile.ZipFile(built / "canvas-qti.zip") as archive:
+        manifest, assessment, _ = qti_package(archive)  # the manifest lists every file of the zip
+        figures = [r for r in manifest.iter("{*}resource") if r.get("type") == "webcontent"]
+        paths = [r.get("href") for r in figures]
+        assert [f.get("href") for r in figures for f in r.iter("{*}file")] == paths
+        assert sorted(paths) == sorted(f"figures/{p}.png" for p in PROBLEMS)
+        assert all(image_kind(archive.read(path)) == "png" for path in paths)
+    for item in assessment.iter("{*}item"):
+        html = item.find("{*}presentation/{*}material/{*}mattext").text
+        (img,) = lxml.html.fragment_fromstring(html, "div").iter("img")
+        problem = item.get("title").split()[0]
+        assert img.get("src") == f"$IMS-CC-FILEBASE$/figures/{problem}.png" and int(img.get("width")) > 0
 
 
 def test_both_lms_show_the_same_worked_solution(built):

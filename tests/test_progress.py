@@ -28,7 +28,8 @@ def test_auto_is_lines_off_a_terminal_and_none_is_silent(tmp_path, capsys):
     assert Reporter("auto").mode == "lines"  # pytest captures stderr: not a terminal
     done = run_derive("sheet", "demo", "--variants", "1", "--to", "md", "--out", str(tmp_path / "a"))
     assert done.returncode == 0 and "deriving rod_endpoint (1/3)" in done.stderr
-    assert "writing the worksheet as md (pandoc) (2/2)" in done.stderr
+    assert "writing 3 figures as SVG and PNG (pdftocairo) (3/4)" in done.stderr
+    assert "writing the worksheet as md (pandoc) (4/4)" in done.stderr
     quiet = run_derive("sheet", "demo", "--variants", "1", "--to", "md", "--out", str(tmp_path / "b"),
                        "--progress", "none")
     assert quiet.returncode == 0 and quiet.stderr == ""

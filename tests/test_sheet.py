@@ -1,10 +1,12 @@
 """`derive sheet`: the documents, the keys, determinism, and builds that fail safely."""
 import json
 import subprocess
+from pathlib import PurePosixPath
 
+import lxml.html
 import pytest
 
-from conftest import copy_library, run_derive
+from conftest import copy_library, image_kind, run_derive
 
 
 @pytest.fixture(scope="module")
@@ -21,6 +23,21 @@ def test_documents_exist(demo):
         assert (demo / f"{name}.pdf").read_bytes().startswith(b"%PDF")
     assert "<math" in (demo / "worksheet.html").read_text()
     assert (demo / "key.csv").read_text().startswith("variant,problem,answer,value,tolerance,unit,meaning")
+
+
+def test_html_shows_each_problems_figure_from_an_svg_file_beside_it(demo):
+    page = lxml.html.parse(str(demo / "worksheet.html")).getroot()
+    sources = [img.get("src") for img in page.iter("img")]
+    assert len(sources) == 3 * 3  # each problem of each variant
+    for source in sources:
+        path = PurePosixPath(source)
+        assert not path.is_absolute() and ":" not in source and ".." not in path.parts, source
+        assert image_kind((demo / path).read_bytes()) == "svg"
+    # each figure compiled once: one file per problem, whatever the variants, and nothing else
+    assert sorted(p.name for p in (demo / "figures").iterdir()) == sorted({PurePosixPath(s).name for s in sources})
+    assert len(set(sources)) == 3
+    for center in page.find_class("center"):  # no empty placeholder where a figure was left out
+        assert center.text_content().strip() or center.find(".//img") is not None, lxml.html.tostring(center)
 
 
 def pdf_text(path):
