@@ -133,7 +133,27 @@ def test_a_plane_at_a_negative_angle_is_refused(tmp_path):
     An angle in symbols that the ranges make negative (the left face of a double incline, -alpha)
     would turn `down` up the slope; it is refused, as a number outside [0, pi/2) is."""
     path = tmp_path / "left_face.yaml"
-    path.write_text(INCLINE_AND_PULLEY.replace("SIDE", "-1").replace("angle: theta,", "angle: -theta,"))
+    path.write_text("""\
+id: left_face
+title: A block on the left face of a double incline
+topic: dynamics
+parameters:
+  m: {meaning: mass of the block, unit: kg, range: [1, 2], sig_figs: 3}
+  theta: {meaning: angle of the face, unit: rad, range: [0.2, 0.5], sig_figs: 2}
+  d: {meaning: distance of the block from the top, unit: m, value: 1}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    face: {plane: {angle: -theta, through: [0, 0]}}
+  bodies:
+    block: {shape: point, mass: m, at: [-d*cos(theta), -d*sin(theta)], on: face, contact: sliding}
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration of the block down the incline, of: block.acceleration.down_incline, unit: m/s^2}
+question: |
+  A block slides on a smooth incline.
+""")
     result = run_derive("solve", str(path))
     assert result.returncode == 2, result.stdout
-    assert "the plane ramp's angle -theta is negative" in result.stderr
+    assert "the plane face's angle -theta is negative" in result.stderr
