@@ -214,9 +214,19 @@ def rest_positions(coords) -> dict[sp.Symbol, sp.Expr]:
     return {c.q: 0 for c in coords.all}
 
 
+#: Operations past which tidy first reduces a ratio of polynomials in symbols, sines and cosines
+#: by cos^2 = 1 - sin^2 (every power): Newton–Euler's acceleration of a block pulled over a pulley
+#: up an incline came as a ratio of polynomials of degree 19 in sin(theta) that trigsimp took 225 s
+#: over (0.2 s reduced). Shorter expressions, and any with roots (trigsimp finds their perfect
+#: squares: a spring's length), go to trigsimp as they are, which keeps the textbook's forms
+#: (M g (3 sin^2 + 1)/4, not -M g (3 cos^2 - 4)/4) and the equations sympy's solve finds roots of.
+LONG = 200
+
+
 def tidy(expr: sp.Expr) -> sp.Expr:
-    """A compact form of a solved expression: rational functions cancelled, trigonometric
-    identities applied where every angle is a plain one, then factored.
+    """A compact form of a solved expression: rational functions cancelled (a long one reduced by
+    sin^2 + cos^2 = 1), trigonometric identities applied where every angle is a plain one, then
+    factored.
 
     >>> m, g, x = sp.symbols("m g x")
     >>> tidy(m*g*sp.sin(x)**2 + m*g*sp.cos(x)**2)
@@ -224,10 +234,11 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     """
     with limits.time_limit("simplifying"):
         expr = sp.cancel(sp.together(radicals(expr)))
-        if expr.has(sp.sin, sp.cos):
+        if expr.has(sp.sin, sp.cos) and _rational_trigonometric(expr) and sp.count_ops(expr) > LONG:
             numerator, denominator = sp.fraction(expr)
             expr = sp.cancel(simplest(numerator) / simplest(denominator))
-            expr = sp.trigsimp(expr) if _plain_angles(expr) else expr
+        if expr.has(sp.sin, sp.cos):
+            expr = sp.trigsimp(expr) if _plain_angles(expr) else sp.cancel(simplest(expr))
         return sp.factor_terms(sp.factor(expr))
 
 
