@@ -99,7 +99,7 @@ def _cases(pairs) -> list:
                 exact = expression.xreplace(values)
                 reference = mpmath.mpf(str(sp.N(exact, 50))) if exact != 0 else mpmath.mpf(0)
                 cases.append((expression, values, reference))
-                numeric.evaluator(expression).compile()  # before anything is timed
+                numeric.evaluator((expression,)).compile()  # before anything is timed
     return cases
 
 
