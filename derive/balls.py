@@ -257,8 +257,8 @@ class Program:
 
 def _argument(value: sp.Expr | int | float) -> arb:
     """A parameter's ball: an exact rational to the working precision, else its constant's ball."""
+    if isinstance(value, sp.Rational):
+        return arb(fmpq(value.p, value.q))
     if isinstance(value, (int, float)):
         return arb(value)
-    if value.is_Rational:
-        return arb(fmpq(int(value.p), int(value.q)))
     return constant(value)

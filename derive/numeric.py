@@ -233,13 +233,14 @@ def certify(ball: arb, digits: int, bits: int) -> Certified | None:
 
     >>> from flint import arb
     >>> certify(arb(1) / 3, 15, 53)
-    Certified(text='0.333333333333333', method='ball', radius=Decimal('5.55111516E-17'), bits=53)
+    Certified(text='0.333333333333333', method='ball', radius=Decimal('5.551117E-17'), bits=53)
     >>> certify(arb("0.125 +/- 1e-20"), 2, 64) is None  # straddles the rounding of 0.125
     True
     """
     if not ball.is_finite():
         return None
-    middle, radius, exponent = (int(n) for n in ball.mid_rad_10exp(digits + 5))
+    # as many decimal digits as the bits hold (fewer would widen the ball past a near tie)
+    middle, radius, exponent = (int(n) for n in ball.mid_rad_10exp(math.ceil(bits * math.log10(2)) + 2))
     low, high = middle - radius, middle + radius
     if radius and (low <= 0 <= high or _rounded(abs(low), digits) != _rounded(abs(high), digits)):
         return None  # an end rounds elsewhere, or the sign is not proven (a zero balls cannot prove)
@@ -311,20 +312,22 @@ class Evaluator:
     def _balls(self, rows, together: list[int], digits: list[int], results) -> None:
         """The program's answers of the rows `together`, precision doubled for what is not yet
         certified; past MAX_BITS, the exact backend."""
-        program = [i for i, m in enumerate(self.mapped) if m]  # the answers the program computes, in its order
-        pending = {r: list(enumerate(program)) for r in together}
-        bits = starting_bits(max(digits[i] for i in program))
+        program = list(enumerate(i for i, m in enumerate(self.mapped) if m))  # (place in the program, answer)
+        pending = dict.fromkeys(together, program)
+        bits = starting_bits(max(digits[i] for _, i in program))
         while pending and bits <= MAX_BITS:
-            order = list(pending)
-            outcomes = self._program.run([[rows[r][s] for s in self._program.symbols] for r in order], bits)
-            for r, outcome in zip(order, outcomes):
+            outcomes = self._program.run([[rows[r][s] for s in self._program.symbols] for r in pending], bits)
+            undecided = {}
+            for (r, wanted), outcome in zip(pending.items(), outcomes):
                 if isinstance(outcome, balls.Undecided):
+                    undecided[r] = wanted
                     continue
-                left = [(k, i) for k, i in pending[r] if not _store(results[r], i, certify(outcome[k], digits[i], bits))]
-                if left:
-                    pending[r] = left
-                else:
-                    del pending[r]
+                row = results[r]
+                for k, i in wanted:
+                    row[i] = certify(outcome[k], digits[i], bits)
+                    if row[i] is None:
+                        undecided.setdefault(r, []).append((k, i))
+            pending = undecided
             bits *= 2
         for r, left in pending.items():
             for _, i in left:
@@ -341,13 +344,6 @@ class Evaluator:
         if not expression.free_symbols or backend == "exact":
             return significant(expression.xreplace(values), digits)
         return getattr(self._lambdified[0], backend)(values, digits)
-
-
-def _store(row: list, index: int, value: Certified | None) -> bool:
-    """Put a certified value in its place; whether there was one."""
-    if value is not None:
-        row[index] = value
-    return value is not None
 
 
 def _unmapped(expression: sp.Expr) -> set[str]:
