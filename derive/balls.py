@@ -90,19 +90,27 @@ def _equal(difference) -> bool:
 _RELATIONS = {sp.StrictGreaterThan: (False, True), sp.GreaterThan: (False, False),
               sp.StrictLessThan: (True, True), sp.LessThan: (True, False)}
 
-_STRUCTURE = (sp.Add, sp.Mul, sp.Pow, sp.Piecewise, sp.And, sp.Or, sp.Not, sp.Eq, sp.Ne, *_RELATIONS)
+_STRUCTURE = (sp.Add, sp.Mul, sp.Pow, sp.Piecewise, sp.functions.elementary.piecewise.ExprCondPair,
+              sp.And, sp.Or, sp.Not, sp.Eq, sp.Ne, *_RELATIONS)
 _ATOMS = (sp.Symbol, sp.Rational, sp.Float, sp.logic.boolalg.BooleanAtom)
 
 
-def mapped(expression: sp.Basic) -> bool:
-    """Whether every node of an expression has a ball (else derive.numeric's fallback evaluates it).
+def unmapped(expression: sp.Basic) -> set[str]:
+    """The kinds of the outermost nodes of an expression that have no ball (none: it compiles;
+    derive.numeric's fallback evaluates the others).
 
     >>> t = sp.Symbol("t")
-    >>> mapped(sp.elliptic_k(sp.sin(t) ** 2)), mapped(sp.Integral(t, (t, 0, 1)))
-    (True, False)
+    >>> unmapped(sp.elliptic_k(sp.sin(t) ** 2)), unmapped(2 * sp.Integral(sp.exp(-t**2), (t, 0, 1)))
+    (set(), {'Integral'})
     """
-    return all(isinstance(node, _STRUCTURE + _ATOMS) or node is sp.pi or node is sp.E or type(node) in CALLS
-               for node in sp.preorder_traversal(expression)) and not isinstance(expression, sp.logic.boolalg.Boolean)
+    if isinstance(expression, _STRUCTURE + _ATOMS) or expression in (sp.pi, sp.E) or type(expression) in CALLS:
+        return set().union(*map(unmapped, expression.args))
+    return {type(expression).__name__}
+
+
+def mapped(expression: sp.Basic) -> bool:
+    """Whether an expression compiles into a program of balls (a condition alone is no number)."""
+    return not unmapped(expression) and not isinstance(expression, sp.logic.boolalg.Boolean)
 
 
 def constant(expression: sp.Expr) -> arb:

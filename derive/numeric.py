@@ -305,7 +305,7 @@ class Evaluator:
                     if self.mapped[i]:  # a row without some other answer's symbol: this answer alone
                         results[r][i] = evaluator((expression,)).certified([row], [digits[i]])[0][0]
                     else:
-                        FALLBACKS["agreement: " + ", ".join(sorted(_unmapped(expression)))] += 1
+                        FALLBACKS["agreement: " + ", ".join(sorted(balls.unmapped(expression)))] += 1
                         results[r][i] = Certified(self._lambdified[i].agreement(row, digits[i]), "agreement")
         return results
 
@@ -344,13 +344,6 @@ class Evaluator:
         if not expression.free_symbols or backend == "exact":
             return significant(expression.xreplace(values), digits)
         return getattr(self._lambdified[0], backend)(values, digits)
-
-
-def _unmapped(expression: sp.Expr) -> set[str]:
-    """The names of the functions in an expression that balls do not map."""
-    return {type(node).__name__ for node in sp.preorder_traversal(expression) if not balls.mapped(node)
-            and not node.args or isinstance(node, (sp.Integral, sp.Derivative, sp.Function))
-            and type(node) not in balls.CALLS} or {"?"}
 
 
 @lru_cache(maxsize=4096)
