@@ -79,7 +79,14 @@ def _context(precision: int) -> Context:
 
 
 def significant(value: sp.Expr, digits: int) -> str:
-    """An exact (or exactly evaluable) number as a decimal string with `digits` significant digits."""
+    """An exact (or exactly evaluable) number as a decimal string with `digits` significant
+    digits; a rational (a drawn parameter) by integer arithmetic, exactly.
+
+    >>> significant(sp.Rational(-7285, 10**13), 3), significant(sp.Rational(2, 3) * 10**-30, 2)
+    ('-7.28e-10', '6.7e-31')
+    """
+    if isinstance(value, sp.Rational):
+        return round_decimal(_decimal_of(value.p, value.q, digits), digits)
     try:
         approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
     except PrecisionExhausted:  # evalf cannot tell a part from zero: it may be exactly zero (a balance)
@@ -91,6 +98,21 @@ def significant(value: sp.Expr, digits: int) -> str:
     if not approx.is_real:
         raise ValueError(f"{value} is not a real number")
     return round_decimal(Decimal(str(approx)) if approx != 0 else Decimal(0), digits)
+
+
+def _decimal_of(numerator: int, denominator: int, digits: int) -> Decimal:
+    """A decimal that rounds as numerator/denominator does to `digits` significant digits: its
+    leading digits, and a last one that is 0 only where the quotient ends there (a tie stays one).
+
+    >>> _decimal_of(2, 3, 3), _decimal_of(1, 8, 2)
+    (Decimal('0.666661'), Decimal('0.12500'))
+    """
+    if numerator == 0:
+        return Decimal(0)
+    shift = digits + 2 - (len(str(abs(numerator))) - len(str(denominator)))  # digits + 2 or + 3 before the sticky one
+    whole, rest = divmod(abs(numerator) * 10**shift if shift >= 0 else abs(numerator), denominator * 10**max(-shift, 0))
+    sign = "-" if numerator < 0 else ""
+    return Decimal(f"{sign}{whole}{1 if rest else 0}e{-shift - 1}")
 
 
 def _by_identities(value: sp.Expr) -> sp.Expr:
@@ -339,10 +361,10 @@ class Evaluator:
         expression = self.expressions[0]
         if not all(s in values for s in self.symbols[0]):
             return None
+        if not self.symbols[0] or backend == "exact":  # a number (a distractor's): evalf, nothing compiled
+            return significant(expression.xreplace(values), digits)
         if backend == "auto":
             return self.certified([values], [digits] * len(self.expressions))[0][0].text
-        if not expression.free_symbols or backend == "exact":
-            return significant(expression.xreplace(values), digits)
         return getattr(self._lambdified[0], backend)(values, digits)
 
 
