@@ -264,6 +264,7 @@ def expression_dimension(expr: sympy.Expr, symbol_units: Mapping[sympy.Symbol, s
     return walk(_exact(expr))
 
 
+@lru_cache(maxsize=256)  # a unit is typeset in every variant
 def latex_unit(text: str) -> str:
     r"""LaTeX (math mode, amsmath only) for a unit: "m/s^2" -> r"\mathrm{m}/\mathrm{s}^{2}"."""
     if isinstance(text, str) and text.strip() in ("", "1"):

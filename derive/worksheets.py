@@ -20,7 +20,7 @@ import random
 import sys
 from dataclasses import dataclass, field
 from decimal import Decimal
-from functools import cached_property
+from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Sequence
 
@@ -311,6 +311,12 @@ def number_latex(text: str) -> str:
     return f"{mantissa}\\times10^{{{int(exponent)}}}" if exponent else mantissa
 
 
+@lru_cache(maxsize=None)
+def symbol_latex(name: str) -> str:
+    """LaTeX of a symbol's name (the same in every variant: printed once)."""
+    return sp.latex(sp.Symbol(name))
+
+
 def quantity_latex(value: sp.Expr, unit: str, sig_figs: int) -> str:
     number = number_latex(numeric.significant(value, sig_figs))
     unit_tex = units.latex_unit(unit)
@@ -338,7 +344,17 @@ class _ProblemVariants:
 
     def shown(self, name: str, value: str | None) -> str:
         """LaTeX of an answer: its number, or its expression when it has none (a general result)."""
-        return number_latex(value) if value is not None else sp.latex(self.solution.expressions[name])
+        return number_latex(value) if value is not None else self.expression_latexes[name]
+
+    @cached_property
+    def expression_latexes(self) -> dict[str, str]:
+        """Each answer's expression as LaTeX, for a general (symbolic) result in every variant."""
+        return {name: sp.latex(expression) for name, expression in self.solution.expressions.items()}
+
+    @cached_property
+    def expression_texts(self) -> dict[str, str]:
+        """Each answer's expression as text (sympy's str), for the keys of every variant."""
+        return {name: sp.sstr(expression) for name, expression in self.solution.expressions.items()}
 
     @cached_property
     def in_declared_units(self) -> dict[str, sp.Expr]:
@@ -431,8 +447,8 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
 def _check_latex(check, problem: Problem) -> str:
     """A check as a worked solution prints it: its reading, the units of the answers in math."""
     if check.name == "dimensions":
-        units_of = ", ".join(f"${sp.latex(sp.Symbol(n))}$ in ${units.latex_unit(a.unit)}$" if units.latex_unit(a.unit)
-                             else f"${sp.latex(sp.Symbol(n))}$ a pure number" for n, a in problem.asks.items())
+        units_of = ", ".join(f"${symbol_latex(n)}$ in ${units.latex_unit(a.unit)}$" if units.latex_unit(a.unit)
+                             else f"${symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
         return f"Every answer has the units it should: {units_of}."
     return render.tex_escape(check.reading)
 
@@ -450,7 +466,7 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         for route, steps in solution.steps().items()
     ]
     answers = [
-        {"symbol": sp.latex(sp.Symbol(n)), "latex": sp.latex(solution.expressions[n]), "meaning": a.meaning}
+        {"symbol": symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning}
         for n, a in problem.asks.items()
     ]
     variants = []
@@ -458,9 +474,9 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         results = item.answers(values)
         variants.append({
             "number": number,
-            "given": [f"${sp.latex(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
+            "given": [f"${symbol_latex(p.symbol.name)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
                       for n, p in problem.parameters.items()],
-            "results": [{"symbol": sp.latex(sp.Symbol(n)), "value": item.shown(n, results[n]),
+            "results": [{"symbol": symbol_latex(n), "value": item.shown(n, results[n]),
                          "unit": units.latex_unit(a.unit)} for n, a in problem.asks.items()],
         })
     checks = [_check_latex(c, problem) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
@@ -486,7 +502,7 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
                 "parameters": {n: {"value": numeric.significant(values[n], p.sig_figs), "unit": p.unit}
                                for n, p in item.problem.parameters.items()},
                 "answers": {n: {"value": answers[n], "tolerance": tolerances[n],
-                                "expr": sp.sstr(item.solution.expressions[n]), "unit": a.unit, "meaning": a.meaning,
+                                "expr": item.expression_texts[n], "unit": a.unit, "meaning": a.meaning,
                                 "certificate": None if certified[n] is None else certified[n].certificate()}
                             for n, a in item.problem.asks.items()},
             }
@@ -497,7 +513,7 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
                         entry["problems"][item.problem.id]["answers"][n]["numerical"] = _too_few(len(wrong))
             for n, a in item.problem.asks.items():
                 rows.append({"variant": number, "problem": item.problem.id, "answer": n,
-                             "value": answers[n] if answers[n] is not None else sp.sstr(item.solution.expressions[n]),
+                             "value": answers[n] if answers[n] is not None else item.expression_texts[n],
                              "tolerance": tolerances[n] or "", "unit": a.unit, "meaning": a.meaning,
                              "latex": item.shown(n, answers[n])})
         key["variants"].append(entry)
@@ -599,7 +615,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, contexts, header))
     for target in sorted(formats & {"moodle", "qti"}):
         lms.check(items, target)  # before anything is written
-    key_rows = [{**r, "symbol": sp.latex(sp.Symbol(r["answer"])), "value": f"${r['latex']}$",
+    key_rows = [{**r, "symbol": symbol_latex(r["answer"]), "value": f"${r['latex']}$",
                  "unit": units.latex_unit(r["unit"])} for r in rows]
 
     with output_folder.staged(out) as staging:
