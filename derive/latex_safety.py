@@ -254,7 +254,7 @@ def question_latex(text: str, values: Mapping[str, str], limit: int = QUESTION_L
     "\\\\{\\\\{ ''.\\\\_\\\\_class\\\\_\\\\_ \\\\}\\\\} costs $2$"
     """
     pieces = _pieces(text, tuple(values), limit)
-    return "".join(piece if i % 2 == 0 else "" if values[piece] is None else _Parser(values[piece], {}, limit).question()
+    return "".join(piece if i % 2 == 0 else "" if values[piece] is None else _value(values[piece], limit)
                    for i, piece in enumerate(pieces))
 
 
@@ -266,6 +266,12 @@ _SLOT = "\x00"
 def _pieces(text: str, names: tuple[str, ...], limit: int) -> tuple[str, ...]:
     """The question's LaTeX cut at its placeholders: text, name, text, ..., name, text."""
     return tuple(_Parser(text, dict.fromkeys(names, _SLOT), limit).question().split(_SLOT))
+
+
+@lru_cache(maxsize=4096)  # a value drawn to its significant figures recurs across variants
+def _value(text: str, limit: int) -> str:
+    """A placeholder's value, read as question text without placeholders."""
+    return _Parser(text, {}, limit).question()
 
 
 # --- the parser --------------------------------------------------------------------------------
