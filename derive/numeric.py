@@ -28,7 +28,7 @@ decimal), never on a float's repr.
 '-1.96199999999608e-11'
 >>> value, = evaluator((a,)).certified([{m: 1, M: 2, g: 10}], [3])[0]
 >>> value.text, value.certificate()
-('-5.00', {'method': 'ball', 'radius': '0', 'bits': 34})
+('-5.00', {'method': 'ball', 'radius': '0', 'bits': 64})
 >>> significant(sp.Rational(1, 3), 3)
 '0.333'
 """
@@ -242,12 +242,14 @@ class Certified:
 
 
 def starting_bits(digits: int) -> int:
-    """The first working precision for `digits` significant digits: theirs and 24 bits more.
+    """The first working precision for `digits` significant digits: theirs and 24 bits more, up
+    to a whole number of 64-bit words (a ball's midpoint is stored in words: the rest is free,
+    and it spares a second pass where a few digits cancel).
 
-    >>> starting_bits(15)
-    74
+    >>> starting_bits(3), starting_bits(15), starting_bits(30)
+    (64, 128, 128)
     """
-    return math.ceil(digits * math.log2(10)) + 24
+    return -(-(math.ceil(digits * math.log2(10)) + 24) // 64) * 64
 
 
 def certify(ball: arb, digits: int, bits: int) -> Certified | None:
@@ -301,6 +303,7 @@ class Evaluator:
         self.expressions = expressions
         self.symbols = [frozenset(e.free_symbols) for e in expressions]
         self.mapped = [balls.mapped(e) for e in expressions]
+        self._in_program = list(enumerate(i for i, m in enumerate(self.mapped) if m))  # (place in the program, answer)
         self._lambdified = [_Lambdified(e) for e in expressions]
 
     def compile(self) -> "Evaluator":
@@ -318,10 +321,12 @@ class Evaluator:
         """Each row's answers (rows: values of the symbols) to their digits, None where an
         answer has a symbol without a value."""
         results = [[None] * len(self.expressions) for _ in rows]
-        if any(self.mapped):
+        if self._in_program:
             self._balls(rows, [r for r, row in enumerate(rows) if all(s in row for s in self._program.symbols)],
                         digits, results)
         for r, row in enumerate(rows):
+            if None not in results[r]:
+                continue
             for i, expression in enumerate(self.expressions):
                 if results[r][i] is None and all(s in row for s in self.symbols[i]):
                     if self.mapped[i]:  # a row without some other answer's symbol: this answer alone
@@ -334,9 +339,8 @@ class Evaluator:
     def _balls(self, rows, together: list[int], digits: list[int], results) -> None:
         """The program's answers of the rows `together`, precision doubled for what is not yet
         certified; past MAX_BITS, the exact backend."""
-        program = list(enumerate(i for i, m in enumerate(self.mapped) if m))  # (place in the program, answer)
-        pending = dict.fromkeys(together, program)
-        bits = starting_bits(max(digits[i] for _, i in program))
+        pending = dict.fromkeys(together, self._in_program)
+        bits = starting_bits(max(digits[i] for _, i in self._in_program))
         while pending and bits <= MAX_BITS:
             outcomes = self._program.run([[rows[r][s] for s in self._program.symbols] for r in pending], bits)
             undecided = {}
