@@ -12,6 +12,7 @@ L**2*m/3
 from __future__ import annotations
 
 import functools
+from decimal import Decimal
 from functools import cached_property
 
 import sympy as sp
@@ -538,11 +539,12 @@ class Solution(StateAnswers, CrossChecks):
                                "mu_k > mu_s: kinetic friction cannot exceed static friction"))
         return result
 
-    def violated(self, values: dict[sp.Symbol, sp.Expr], backend: str = "auto") -> str | None:
-        """The meaning of the first condition these values break, or None."""
-        for condition, strict, meaning in self.conditions:
-            value = numeric.evaluate(condition, values, 15 if backend == "auto" else 6, backend)
-            if value is not None and (float(value) < 0 or strict and float(value) == 0):
+    def violated(self, values: dict[sp.Symbol, sp.Expr]) -> str | None:
+        """The meaning of the first condition these values break, or None (every sign certified:
+        derive.numeric, the conditions evaluated together)."""
+        signs = numeric.evaluator(tuple(c for c, _, _ in self.conditions)).certified([values], [6] * len(self.conditions))
+        for (_, strict, meaning), value in zip(self.conditions, signs[0]):
+            if value is not None and (Decimal(value.text) < 0 or strict and Decimal(value.text) == 0):
                 return meaning
         return None
 

@@ -1,8 +1,10 @@
 """`derive bench`: the speed-for-accuracy trade, measured and printed (never asserted).
 
-Figures: CLI start-up; derivation per problem, cold and cached; time per answer and the
-largest relative error of each evaluation backend against a 50-digit reference, at typical
-and extreme parameters; an answer key of 30 problems x 300 variants; the same derivations
+Figures: CLI start-up; derivation per problem, cold and cached; answers per second, the
+largest relative error and the wrong values of each evaluation method (naive evalf, the
+previous policy, balls) against a 50-digit reference, at typical and extreme parameters; an
+answer key of 30 problems x 300 variants; the marginal answers per second of a whole set
+build (300 variants against 1); the same derivations
 with sympy.physics.mechanics alone; a work-precision table of scipy's integrators and a
 symplectic one on a large-amplitude pendulum; derive against sympy.physics.mechanics'
 KanesMethod in the same run, cold, on 14 scenes checked to agree at a sample point
@@ -21,6 +23,7 @@ import statistics
 import subprocess
 import sys
 import time
+from decimal import Decimal, localcontext
 from pathlib import Path
 
 import mpmath
@@ -62,10 +65,14 @@ def _timed(function, *args):
     return result, time.perf_counter() - start
 
 
-def startup(say, runs: int = 10) -> None:
+def _command() -> list[str]:
+    """How to run derive's CLI from this interpreter."""
     script = Path(sys.executable).parent / "derive"
-    command = [str(script)] if script.exists() else [sys.executable, "-m", "derive.cli"]
-    times = [_timed(lambda: subprocess.run([*command, "--help"], capture_output=True, check=True))[1]
+    return [str(script)] if script.exists() else [sys.executable, "-m", "derive.cli"]
+
+
+def startup(say, runs: int = 10) -> None:
+    times = [_timed(lambda: subprocess.run([*_command(), "--help"], capture_output=True, check=True))[1]
              for _ in range(runs)]
     say(f"derive --help: median {statistics.median(times):.3f} s over {runs} runs (target 0.3 s)")
 
@@ -84,44 +91,111 @@ def derivations(say, ids: list[str]) -> dict[str, Solution]:
 
 
 def _typical(solution: Solution, rng: random.Random) -> dict:
-    """Parameter values (SI) drawn inside the ranges."""
-    p = solution.problem
-    return p.values({n: repr(float(q.range[0] + (q.range[1] - q.range[0]) * sp.Rational(rng.random())))
-                     for n, q in p.parameters.items() if q.range is not None})
+    """A variant's parameter values (SI), drawn as a set's are (worksheets.valid_draw)."""
+    draw = worksheets.valid_draw(solution.problem, solution, rng)
+    return worksheets._ProblemVariants(solution.problem, solution, [draw]).si_values(draw)
 
 
-def _cases(pairs) -> list:
-    """(expression, values, 50-digit reference) for every numeric answer of (solution, values) pairs."""
-    cases = []
+def _groups(pairs) -> list[tuple[tuple, list, list]]:
+    """For each (solution, values) pair: its numeric answers, the values, and each answer's
+    50-digit reference; pairs of the same solution (its variants) make one group, (answers,
+    rows, references per row)."""
+    groups: dict[int, tuple[tuple, list, list]] = {}
     for solution, values in pairs:
-        for expression in solution.expressions.values():
-            if expression.free_symbols and expression.free_symbols <= set(values):
-                exact = expression.xreplace(values)
-                reference = mpmath.mpf(str(sp.N(exact, 50))) if exact != 0 else mpmath.mpf(0)
-                cases.append((expression, values, reference))
-                numeric.evaluator(expression).compile()  # before anything is timed
-    return cases
+        expressions = tuple(e for e in solution.expressions.values() if e.free_symbols and e.free_symbols <= set(values))
+        if not expressions:
+            continue
+        group = groups.setdefault(id(solution), (expressions, [], []))
+        references = []
+        for expression in expressions:
+            exact = expression.xreplace(values)
+            references.append(Decimal(str(sp.N(exact, 50))) if exact != 0 else Decimal(0))
+        group[1].append(values)
+        group[2].append(references)
+    for expressions, _, _ in groups.values():  # compiled before anything is timed
+        numeric.evaluator(expressions).compile()
+        for expression in expressions:
+            numeric.evaluator((expression,)).compile()
+    return list(groups.values())
 
 
-def backends(say, solutions: dict[str, Solution], samples: int) -> None:
-    say("\nEvaluation backends, over every numeric answer (15 digits asked):")
-    say(f"  {'backend':<8} {'parameters':<10} {'answers':>8} {'us/answer':>10} {'worst relative error':>22}")
-    rng = random.Random(6)
-    typical = _cases((s, _typical(s, rng)) for s in solutions.values() for _ in range(samples))
-    extreme = _cases((Solution(problem.load(p)), problem.load(p).values(o)) for p, o in EXTREME_CASES)
-    for kind, cases in (("typical", typical), ("extreme", extreme)):
-        for backend in ("float", "mpmath", "auto", "exact"):
-            worst, start = mpmath.mpf(0), time.perf_counter()
-            for expression, values, reference in cases:
+def _naive(expression, values, digits):
+    return str(expression.evalf(digits, subs=values))
+
+
+def _one_at_a_time(backend: str):
+    return lambda expression, values, digits: numeric.evaluate(expression, values, digits, backend)
+
+
+#: The rows of the evaluation table: naive evalf, the float64 and mpmath backends, the policy
+#: before balls (agreement), and balls one answer at a time and over a problem's variants together.
+METHODS = {"naive evalf": _naive, **{b: _one_at_a_time(b) for b in ("float", "mpmath", "agreement", "auto")},
+           "auto, variants together": None}
+
+
+def _values(method: str, groups) -> list[list[list[str | None]]]:
+    """Each group's texts, [row][answer], by one method (None where it raised)."""
+    if METHODS[method] is None:
+        return [[[c.text for c in row] for row in numeric.evaluator(expressions).certified(rows, [15] * len(expressions))]
+                for expressions, rows, _ in groups]
+    texts = []
+    for expressions, rows, _ in groups:
+        texts.append([])
+        for values in rows:
+            row = []
+            for expression in expressions:
                 try:
-                    value = mpmath.mpf(numeric.evaluate(expression, values, 15, backend))
-                except (ValueError, ZeroDivisionError):
-                    value = mpmath.mpf("inf")
-                if reference != 0:
-                    worst = max(worst, abs(value - reference) / abs(reference))
-            elapsed = (time.perf_counter() - start) / max(len(cases), 1)
-            say(f"  {backend:<8} {kind:<10} {len(cases):>8} {elapsed * 1e6:>10.1f} {mpmath.nstr(worst, 3):>22}")
-    say("  (15 digits are correct when the relative error is below 5e-15)")
+                    row.append(METHODS[method](expression, values, 15))
+                except (ValueError, ZeroDivisionError, TypeError):
+                    row.append(None)
+            texts[-1].append(row)
+    return texts
+
+
+def _errors(groups, texts) -> tuple[Decimal, int]:
+    """The worst relative error against the references, and how many values print a digit
+    other than the reference's rounded to 15 digits (a value not given counts as both)."""
+    worst, wrong = Decimal(0), 0
+    with localcontext() as context:
+        context.prec = 60
+        for (_, _, references), group in zip(groups, texts):
+            for reference_row, row in zip(references, group):
+                for reference, text in zip(reference_row, row):
+                    given = text not in (None, "nan")
+                    value = Decimal(text) if given else Decimal("Infinity")
+                    if reference != 0:
+                        worst = max(worst, abs(value - reference) / abs(reference))
+                    wrong += not given or numeric.round_decimal(value, 15) != numeric.round_decimal(reference, 15)
+    return worst, wrong
+
+
+def backends(say, solutions: dict[str, Solution], samples: int, repeats: int = 3) -> dict:
+    """Answers per second (the best of `repeats` runs, and their range) and accuracy of each
+    method over every numeric answer of the problems at `samples` typical draws each, and at
+    the extreme cases; returns {(method, kind): answers per second}."""
+    say("\nEvaluation, over every numeric answer (15 digits asked; answers/s: the best of "
+        f"{repeats} runs, and their range; wrong: values with a digit other than the 50-digit reference's):")
+    say(f"  {'method':<24} {'parameters':<10} {'answers':>8} {'answers/s':>10} {'range':>15} {'x naive':>8} "
+        f"{'worst relative error':>21} {'wrong':>6}")
+    typical = _groups((s, _typical(s, random.Random(f"bench/{n}"))) for s in solutions.values()
+                      for n in range(samples))
+    extreme = _groups((Solution(problem.load(p)), problem.load(p).values(o)) for p, o in EXTREME_CASES)
+    rates = {}
+    numeric.FALLBACKS.clear()
+    for kind, groups in (("typical", typical), ("extreme", extreme)):
+        count = sum(len(rows) * len(expressions) for expressions, rows, _ in groups)
+        for method in METHODS:
+            runs = []
+            for _ in range(repeats):
+                texts, elapsed = _timed(_values, method, groups)
+                runs.append(count / elapsed)
+            rates[method, kind] = max(runs)
+            worst, wrong = _errors(groups, texts)
+            say(f"  {method:<24} {kind:<10} {count:>8} {max(runs):>10.0f} {f'{min(runs):.0f}-{max(runs):.0f}':>15} "
+                f"{max(runs) / rates['naive evalf', kind]:>8.1f} {worst:>21.2e} {wrong:>6}")
+    say("  (15 digits are correct when the relative error is below 5e-15; auto's fallbacks over every run: "
+        f"{dict(numeric.FALLBACKS) or 'none'})")
+    return rates
 
 
 def answer_key(say, solutions: dict[str, Solution], variants: int) -> None:
@@ -136,6 +210,45 @@ def answer_key(say, solutions: dict[str, Solution], variants: int) -> None:
     elapsed = time.perf_counter() - start
     say(f"\nAnswer key: {len(chosen)} problems x {variants} variants = {count} values in {elapsed:.2f} s "
         f"({count / elapsed:.0f} values/s, each correct to its digits; target under 10 s for 30 x 300)")
+
+
+#: The set whose build gives the marginal rate (issue 17's): a pulley, a pendulum, rolling, a
+#: collision and an orbit.
+SET_PROBLEMS = ("string_wrapped_disk", "compound_pendulum", "rolling_incline", "beetle_lazy_susan", "kepler_orbit")
+
+
+def set_rate(say, variants: int = 300, repeats: int = 3) -> float:
+    """The marginal answers per second of a whole set build: `derive sheet SET_PROBLEMS --to ''`
+    with `variants` variants against one, each run a fresh process (the two alternated,
+    `repeats` times; medians, and the range over the pairs), against naive evalf's answers per
+    second on the same answers."""
+    import csv
+    import tempfile
+
+    say(f"\nA whole set build (derive sheet {' '.join(SET_PROBLEMS)} --to ''), {variants} variants against 1:")
+    seconds: dict[int, list[float]] = {1: [], variants: []}
+    answers = {}
+    with tempfile.TemporaryDirectory() as folder:
+        for _ in range(repeats):
+            for count in (1, variants):
+                out = Path(folder) / f"set-{count}"
+                shutil.rmtree(out, ignore_errors=True)
+                command = [*_command(), "sheet", *SET_PROBLEMS, "--variants", str(count), "--to", "", "--out", str(out)]
+                seconds[count].append(_timed(lambda: subprocess.run(command, capture_output=True, check=True))[1])
+                with open(out / "key.csv", encoding="utf-8") as key:
+                    answers[count] = sum(1 for _ in csv.DictReader(key))
+    extra = answers[variants] - answers[1]
+    pairs = sorted(extra / (many - one) for one, many in zip(seconds[1], seconds[variants]))
+    marginal = extra / (statistics.median(seconds[variants]) - statistics.median(seconds[1]))
+    solutions = [Solution(problem.load(p)) for p in SET_PROBLEMS]
+    naive = _groups((s, _typical(s, random.Random(f"bench/set/{n}"))) for s in solutions for n in range(20))
+    count = sum(len(rows) * len(expressions) for expressions, rows, _ in naive)
+    naive_rate = max(count / _timed(_values, "naive evalf", naive)[1] for _ in range(repeats))
+    say(f"  1 variant: {answers[1]} answers, median {statistics.median(seconds[1]):.2f} s; {variants} variants: "
+        f"{answers[variants]} answers, median {statistics.median(seconds[variants]):.2f} s")
+    say(f"  marginal: {marginal:.0f} answers/s (pairs {pairs[0]:.0f}-{pairs[-1]:.0f}); naive evalf on these answers "
+        f"{naive_rate:.0f} answers/s: {marginal / naive_rate:.1f}x (target 10x)")
+    return marginal
 
 
 def mechanics_alone(say) -> None:
@@ -619,7 +732,8 @@ def engines(say, note=None, quick: bool = False, scenes: list[str] | None = None
 
 
 #: The sections of `derive bench`, in order (`--only` runs one).
-SECTIONS = ("startup", "derivations", "backends", "answer_key", "sheet", "mechanics_alone", "work_precision", "engines")
+SECTIONS = ("startup", "derivations", "backends", "answer_key", "set_rate", "sheet", "mechanics_alone", "work_precision",
+            "engines")
 
 
 def run(say, quick: bool = False, only: str | None = None, note=None, **engine_options) -> dict:
@@ -634,9 +748,11 @@ def run(say, quick: bool = False, only: str | None = None, note=None, **engine_o
     if only is None or only in ("derivations", "backends", "answer_key"):
         solutions = derivations(say, ids[:8] if quick else ids)
         if wanted("backends"):
-            backends(say, solutions, samples=1 if quick else 3)
+            backends(say, solutions, samples=3 if quick else 20, repeats=1 if quick else 3)
         if wanted("answer_key"):
             answer_key(say, solutions, variants=30 if quick else 300)
+    if wanted("set_rate"):
+        set_rate(say, variants=30 if quick else 300, repeats=1 if quick else 3)
     if wanted("sheet"):
         sheet_build(say, with_pdfs=not quick)
     if only == "mechanics_alone" or only is None and not quick:

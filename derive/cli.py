@@ -306,7 +306,7 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
 @main.command()
 @click.option("--quick", is_flag=True,
               help="A shorter run: fewer problems, samples and variants; 4 scenes and chains up to n = 3.")
-@click.option("--only", type=click.Choice(["startup", "derivations", "backends", "answer_key", "sheet",
+@click.option("--only", type=click.Choice(["startup", "derivations", "backends", "answer_key", "set_rate", "sheet",
                                            "mechanics_alone", "work_precision", "engines"]),
               default=None, help="Run one section (engines: derive against sympy.physics.mechanics).")
 @click.option("--json", "as_json", is_flag=True,
@@ -326,11 +326,13 @@ def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_
           limit: float | None) -> None:
     """Measure speed against accuracy and print the figures (never pass/fail).
 
-    CLI start-up; derivation per problem, cold and cached; time per answer and the worst
-    relative error of each evaluation backend (float, mpmath, auto, exact) against a
-    50-digit reference, at typical and extreme parameters; a 30-problem x 300-variant
-    answer key; sympy.physics.mechanics alone on the same systems; a work-precision table
-    of scipy's integrators and a symplectic one.
+    CLI start-up; derivation per problem, cold and cached; answers per second, worst
+    relative error and wrong values of each evaluation method (naive evalf, float, mpmath,
+    the agreement policy, auto one at a time and over variants) against a 50-digit
+    reference, at typical and extreme parameters; a 30-problem x 300-variant answer key;
+    the marginal answers per second of a whole set build (300 variants against 1);
+    sympy.physics.mechanics alone on the same systems; a work-precision table of scipy's
+    integrators and a symplectic one.
 
     \b
     Engines (derive against sympy.physics.mechanics, in the same run):

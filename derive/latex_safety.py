@@ -248,11 +248,30 @@ def question_latex(text: str, values: Mapping[str, str], limit: int = QUESTION_L
     """The question as LaTeX: refused as `check_question` would (LatexError), math kept, text
     escaped but for the allowed commands, each `{{ NAME }}` replaced by values[NAME] (itself
     read as question text, without placeholders). No template engine: nothing is evaluated.
+    The question is read once for every set of values (a set's variants: `_pieces`).
 
     >>> question_latex("{{ ''.__class__ }} costs {{ m }}", {"m": "$2$"})
     "\\\\{\\\\{ ''.\\\\_\\\\_class\\\\_\\\\_ \\\\}\\\\} costs $2$"
     """
-    return _Parser(text, values, limit).question()
+    pieces = _pieces(text, tuple(values), limit)
+    return "".join(piece if i % 2 == 0 else "" if values[piece] is None else _value(values[piece], limit)
+                   for i, piece in enumerate(pieces))
+
+
+#: Where a placeholder stands in a question read once (no question holds it: check_characters).
+_SLOT = "\x00"
+
+
+@lru_cache(maxsize=1024)
+def _pieces(text: str, names: tuple[str, ...], limit: int) -> tuple[str, ...]:
+    """The question's LaTeX cut at its placeholders: text, name, text, ..., name, text."""
+    return tuple(_Parser(text, dict.fromkeys(names, _SLOT), limit).question().split(_SLOT))
+
+
+@lru_cache(maxsize=4096)  # a value drawn to its significant figures recurs across variants
+def _value(text: str, limit: int) -> str:
+    """A placeholder's value, read as question text without placeholders."""
+    return _Parser(text, {}, limit).question()
 
 
 # --- the parser --------------------------------------------------------------------------------
@@ -379,8 +398,7 @@ class _Parser:
     def placeholder(self, name: str) -> str:
         if name not in self.values:
             raise LatexError(f"{{{{ {name} }}}}: not a parameter (parameters: {', '.join(self.values) or 'none'})")
-        value = self.values[name]
-        return "" if value is None else question_latex(value, {}, self.limit)
+        return "" if self.values[name] is None else f"{_SLOT}{name}{_SLOT}"  # a value goes in its slot
 
     def text_command(self, token: str, offset: int) -> str:
         name = token[1:]

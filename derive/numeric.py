@@ -1,38 +1,55 @@
 """Numeric values of exact answers, correct to the significant digits they show.
 
-Parameter values are exact rationals. Four backends evaluate an answer:
+Parameter values are exact rationals. Five backends evaluate an answer:
 
+- ``auto`` (the default): certified by balls. The answers are compiled once (derive.balls:
+  common subexpressions eliminated, constants folded) and evaluated in ball arithmetic, whose
+  ball holds the exact value; the value is accepted when both ends of the ball round to the same
+  decimal at the digits asked (every digit shown, and the rounding of the last, is then proven),
+  else the precision is doubled up to MAX_BITS, and past that the ``exact`` backend decides. An
+  answer with a function derive.balls does not map (an integral, a derivative) is evaluated by
+  the ``agreement`` backend. Both fallbacks are counted in FALLBACKS;
+- ``agreement`` (the policy before balls): float64 and mpmath at ``digits + 20``; when they agree
+  to two digits beyond the ones shown (possible for up to 12 digits) the mpmath value is
+  rounded; else mpmath again at twice the precision, and when that disagrees too the exact
+  backend decides. Disagreement between precisions is what cancellation looks like;
 - ``float``: float64 through lambdify (math); fast, not guaranteed (cancellation, extremes);
 - ``mpmath``: mpmath at a fixed precision (``digits + 10``) through lambdify;
 - ``exact``: sympy's evalf on the exact inputs with strict accuracy (it raises rather than
-  return digits it cannot vouch for);
-- ``auto`` (the default): float64 and mpmath at ``digits + 20``; when they agree to two digits
-  beyond the ones shown (possible for up to 12 digits) the mpmath value is rounded; else mpmath
-  again at twice the precision, and when that disagrees too the exact backend decides.
-  Disagreement between precisions is what cancellation looks like.
+  return digits it cannot vouch for).
 
-Rounding is half-to-even on the high-precision decimal value, never on a float's repr.
+Rounding is half-to-even on the exact decimal value (a ball's ends, or a high-precision
+decimal), never on a float's repr.
 
 >>> import sympy as sp
 >>> m, M, g = sp.symbols("m M g", positive=True)
 >>> a = -2*m*g/(M + 2*m)
 >>> evaluate(a, {m: sp.Rational(1, 10**12), M: 1, g: sp.Rational(981, 100)}, 15)
 '-1.96199999999608e-11'
+>>> value, = evaluator((a,)).certified([{m: 1, M: 2, g: 10}], [3])[0]
+>>> value.text, value.certificate()
+('-5.00', {'method': 'ball', 'radius': '0', 'bits': 64})
 >>> significant(sp.Rational(1, 3), 3)
 '0.333'
 """
 from __future__ import annotations
 
 import functools
-from decimal import ROUND_HALF_EVEN, Decimal, localcontext
+import math
+from collections import Counter
+from dataclasses import dataclass
+from decimal import ROUND_HALF_EVEN, ROUND_UP, Context, Decimal
 from functools import cached_property, lru_cache
 
 import mpmath
 import sympy as sp
+from flint import arb
 from sympy.core.evalf import PrecisionExhausted
 
+from derive import balls
+
 GUARD_DIGITS = 10
-BACKENDS = ("auto", "float", "mpmath", "exact")
+BACKENDS = ("auto", "agreement", "float", "mpmath", "exact")
 
 
 def round_decimal(exact: Decimal, digits: int, rounding: str = ROUND_HALF_EVEN) -> str:
@@ -45,20 +62,31 @@ def round_decimal(exact: Decimal, digits: int, rounding: str = ROUND_HALF_EVEN) 
     """
     if exact == 0:
         return "0"
-    with localcontext() as context:  # room for every digit asked (the default holds 28)
-        context.prec = max(context.prec, digits + 2)
-        quantum = Decimal(1).scaleb(exact.adjusted() - digits + 1)
-        rounded = exact.quantize(quantum, rounding=rounding)
-        if rounded.adjusted() != exact.adjusted():  # 9.995 -> 10.0: one digit fewer after the point
-            rounded = rounded.quantize(quantum.scaleb(1), rounding=rounding)
-        exponent = rounded.adjusted()
-        if -5 <= exponent < digits:
-            return f"{rounded:f}"
-        return f"{rounded.scaleb(-exponent):f}e{exponent:+03d}"
+    context = _context(max(28, digits + 2))  # room for every digit asked (the default holds 28)
+    quantum = Decimal(1).scaleb(exact.adjusted() - digits + 1, context)
+    rounded = exact.quantize(quantum, rounding, context)
+    if rounded.adjusted() != exact.adjusted():  # 9.995 -> 10.0: one digit fewer after the point
+        rounded = rounded.quantize(quantum.scaleb(1, context), rounding, context)
+    exponent = rounded.adjusted()
+    if -5 <= exponent < digits:
+        return f"{rounded:f}"
+    return f"{rounded.scaleb(-exponent, context):f}e{exponent:+03d}"
+
+
+@lru_cache(maxsize=None)
+def _context(precision: int) -> Context:
+    return Context(prec=precision)
 
 
 def significant(value: sp.Expr, digits: int) -> str:
-    """An exact (or exactly evaluable) number as a decimal string with `digits` significant digits."""
+    """An exact (or exactly evaluable) number as a decimal string with `digits` significant
+    digits; a rational (a drawn parameter) by integer arithmetic, exactly.
+
+    >>> significant(sp.Rational(-7285, 10**13), 3), significant(sp.Rational(2, 3) * 10**-30, 2)
+    ('-7.28e-10', '6.7e-31')
+    """
+    if isinstance(value, sp.Rational):
+        return round_decimal(_decimal_of(value.p, value.q, digits), digits)
     try:
         approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
     except PrecisionExhausted:  # evalf cannot tell a part from zero: it may be exactly zero (a balance)
@@ -70,6 +98,21 @@ def significant(value: sp.Expr, digits: int) -> str:
     if not approx.is_real:
         raise ValueError(f"{value} is not a real number")
     return round_decimal(Decimal(str(approx)) if approx != 0 else Decimal(0), digits)
+
+
+def _decimal_of(numerator: int, denominator: int, digits: int) -> Decimal:
+    """A decimal that rounds as numerator/denominator does to `digits` significant digits: its
+    leading digits, and a last one that is 0 only where the quotient ends there (a tie stays one).
+
+    >>> _decimal_of(2, 3, 3), _decimal_of(1, 8, 2)
+    (Decimal('0.666661'), Decimal('0.12500'))
+    """
+    if numerator == 0:
+        return Decimal(0)
+    shift = digits + 2 - (len(str(abs(numerator))) - len(str(denominator)))  # digits + 2 or + 3 before the sticky one
+    whole, rest = divmod(abs(numerator) * 10**shift if shift >= 0 else abs(numerator), denominator * 10**max(-shift, 0))
+    sign = "-" if numerator < 0 else ""
+    return Decimal(f"{sign}{whole}{1 if rest else 0}e{-shift - 1}")
 
 
 def _by_identities(value: sp.Expr) -> sp.Expr:
@@ -119,21 +162,16 @@ def quadrature(integrand, interval):
 QUADRATURE = {"quad": quadrature}
 
 
-class Evaluator:
-    """One answer, compiled once for the float and mpmath backends."""
+class _Lambdified:
+    """One answer through lambdify, for the float, mpmath and agreement backends (compiled on first use)."""
 
     def __init__(self, expression: sp.Expr):
         self.expression = expression
         self.symbols = sorted(expression.free_symbols, key=str)
 
-    def compile(self) -> "Evaluator":
-        """Compile both numeric backends now (a benchmark times evaluation, not compilation)."""
-        self._float, self._mpmath  # noqa: B018 - cached_property access compiles
-        return self
-
     @cached_property
-    def _float(self):  # compiled on first use: a general answer (with derivatives) never is
-        return sp.lambdify(self.symbols, self.expression, [QUADRATURE, "math", "mpmath"])  # mpmath: elliptic_k and the like
+    def _float(self):  # mpmath too: elliptic_k and the like
+        return sp.lambdify(self.symbols, self.expression, [QUADRATURE, "math", "mpmath"])
 
     @cached_property
     def _mpmath(self):
@@ -152,17 +190,15 @@ class Evaluator:
             return mpmath.mpf(result), Decimal(mpmath.nstr(result, precision, min_fixed=-1, max_fixed=-1)
                                                 .replace("e", "E")) if result != 0 else Decimal(0)
 
-    def value(self, values: dict[sp.Symbol, sp.Expr], digits: int, backend: str = "auto") -> str | None:
-        """The answer to `digits` significant digits, or None when a symbol has no value."""
-        if any(s not in values for s in self.symbols):
-            return None
-        if not self.symbols or backend == "exact":
-            return significant(self.expression.xreplace(values), digits)
-        if backend == "float":
-            number = float(self._float(*(float(values[s]) for s in self.symbols)))
-            return round_decimal(Decimal(repr(number)), digits) if number == number else "nan"
-        if backend == "mpmath":
-            return round_decimal(self._at(values, digits + GUARD_DIGITS)[1], digits)
+    def float(self, values, digits: int) -> str:
+        number = float(self._float(*(float(values[s]) for s in self.symbols)))
+        return round_decimal(Decimal(repr(number)), digits) if number == number else "nan"
+
+    def mpmath(self, values, digits: int) -> str:
+        return round_decimal(self._at(values, digits + GUARD_DIGITS)[1], digits)
+
+    def agreement(self, values, digits: int) -> str:
+        """The policy before balls (the module's docstring), the fallback for what balls do not map."""
         high, high_decimal = self._at(values, digits + 2 * GUARD_DIGITS)
         if digits + 2 <= 14:  # float64 can vouch for this many digits when it agrees
             try:
@@ -182,12 +218,166 @@ class Evaluator:
         return significant(self.expression.xreplace(values), digits)  # cancellation: let evalf decide
 
 
+@dataclass(frozen=True)
+class Certified:
+    """A value's text and how its digits are vouched for: `method` "ball" (radius: a bound on the
+    distance from the exact value to the ball's centre, every point of the ball rounding to
+    `text`; bits: the working precision), "exact" (sympy's strict evalf)
+    or "agreement" (two precisions agreed: the fallback for what balls do not map)."""
+
+    text: str
+    method: str
+    radius: Decimal | None = None
+    bits: int | None = None
+
+    def certificate(self) -> dict:
+        """What a key records of how the value is vouched for.
+
+        >>> Certified("0.333", "ball", Decimal("5.55111516E-17"), 53).certificate()
+        {'method': 'ball', 'radius': '5.6e-17', 'bits': 53}
+        """
+        if self.method != "ball":
+            return {"method": self.method}
+        return {"method": "ball", "radius": round_decimal(self.radius, 2, ROUND_UP), "bits": self.bits}
+
+
+def starting_bits(digits: int) -> int:
+    """The first working precision for `digits` significant digits: theirs and 24 bits more, up
+    to a whole number of 64-bit words (a ball's midpoint is stored in words: the rest is free,
+    and it spares a second pass where a few digits cancel).
+
+    >>> starting_bits(3), starting_bits(15), starting_bits(30)
+    (64, 128, 128)
+    """
+    return -(-(math.ceil(digits * math.log2(10)) + 24) // 64) * 64
+
+
+def certify(ball: arb, digits: int, bits: int) -> Certified | None:
+    """The ball's value to `digits` significant digits when both its ends round to it, else None.
+
+    >>> from flint import arb
+    >>> certify(arb(1) / 3, 15, 53)
+    Certified(text='0.333333333333333', method='ball', radius=Decimal('5.551117E-17'), bits=53)
+    >>> certify(arb("0.125 +/- 1e-20"), 2, 64) is None  # straddles the rounding of 0.125
+    True
+    """
+    if not ball.is_finite():
+        return None
+    # as many decimal digits as the bits hold (fewer would widen the ball past a near tie)
+    middle, radius, exponent = (int(n) for n in ball.mid_rad_10exp(math.ceil(bits * math.log10(2)) + 2))
+    low, high = middle - radius, middle + radius
+    if radius and (low <= 0 <= high or _rounded(abs(low), digits) != _rounded(abs(high), digits)):
+        return None  # an end rounds elsewhere, or the sign is not proven (a zero balls cannot prove)
+    return Certified(round_decimal(Decimal(f"{low}e{exponent}"), digits), "ball", Decimal(radius).scaleb(exponent), bits)
+
+
+def _rounded(whole: int, digits: int) -> tuple[int, int]:
+    """A positive whole number rounded half-to-even to `digits` significant digits, as
+    (significand, power of ten): the same pair for the same value.
+
+    >>> _rounded(12345, 3), _rounded(12350, 3), _rounded(99951, 3), _rounded(12, 3)
+    ((123, 2), (124, 2), (100, 3), (120, -1))
+    """
+    drop = len(str(whole)) - digits
+    if drop <= 0:
+        return whole * 10**-drop, drop
+    significand, rest = divmod(whole, 10**drop)
+    half = 5 * 10 ** (drop - 1)
+    if rest > half or rest == half and significand % 2:
+        significand += 1
+        if significand == 10**digits:
+            return significand // 10, drop + 1
+    return significand, drop
+
+
+#: How often each fallback decided a value: "exact" (balls undecided at MAX_BITS) and
+#: "agreement: NAME" (an answer with a function NAME that balls do not map).
+FALLBACKS: Counter = Counter()
+MAX_BITS = 4096
+
+
+class Evaluator:
+    """Answers (a problem's, or one) compiled once for every variant."""
+
+    def __init__(self, expressions: tuple[sp.Expr, ...]):
+        self.expressions = expressions
+        self.symbols = [frozenset(e.free_symbols) for e in expressions]
+        self.mapped = [balls.mapped(e) for e in expressions]
+        self._in_program = list(enumerate(i for i, m in enumerate(self.mapped) if m))  # (place in the program, answer)
+        self._lambdified = [_Lambdified(e) for e in expressions]
+
+    def compile(self) -> "Evaluator":
+        """Compile now (a benchmark times evaluation, not compilation)."""
+        self._program  # noqa: B018 - cached_property access compiles
+        for lambdified in self._lambdified:
+            lambdified._float, lambdified._mpmath  # noqa: B018
+        return self
+
+    @cached_property
+    def _program(self) -> balls.Program:
+        return balls.Program([e for e, m in zip(self.expressions, self.mapped) if m])
+
+    def certified(self, rows: list[dict[sp.Symbol, sp.Expr]], digits: list[int]) -> list[list[Certified | None]]:
+        """Each row's answers (rows: values of the symbols) to their digits, None where an
+        answer has a symbol without a value."""
+        results = [[None] * len(self.expressions) for _ in rows]
+        if self._in_program:
+            self._balls(rows, [r for r, row in enumerate(rows) if all(s in row for s in self._program.symbols)],
+                        digits, results)
+        for r, row in enumerate(rows):
+            if None not in results[r]:
+                continue
+            for i, expression in enumerate(self.expressions):
+                if results[r][i] is None and all(s in row for s in self.symbols[i]):
+                    if self.mapped[i]:  # a row without some other answer's symbol: this answer alone
+                        results[r][i] = evaluator((expression,)).certified([row], [digits[i]])[0][0]
+                    else:
+                        FALLBACKS["agreement: " + ", ".join(sorted(balls.unmapped(expression)))] += 1
+                        results[r][i] = Certified(self._lambdified[i].agreement(row, digits[i]), "agreement")
+        return results
+
+    def _balls(self, rows, together: list[int], digits: list[int], results) -> None:
+        """The program's answers of the rows `together`, precision doubled for what is not yet
+        certified; past MAX_BITS, the exact backend."""
+        pending = dict.fromkeys(together, self._in_program)
+        bits = starting_bits(max(digits[i] for _, i in self._in_program))
+        while pending and bits <= MAX_BITS:
+            outcomes = self._program.run([[rows[r][s] for s in self._program.symbols] for r in pending], bits)
+            undecided = {}
+            for (r, wanted), outcome in zip(pending.items(), outcomes):
+                if isinstance(outcome, balls.Undecided):
+                    undecided[r] = wanted
+                    continue
+                row = results[r]
+                for k, i in wanted:
+                    row[i] = certify(outcome[k], digits[i], bits)
+                    if row[i] is None:
+                        undecided.setdefault(r, []).append((k, i))
+            pending = undecided
+            bits *= 2
+        for r, left in pending.items():
+            for _, i in left:
+                FALLBACKS["exact"] += 1
+                results[r][i] = Certified(significant(self.expressions[i].xreplace(rows[r]), digits[i]), "exact")
+
+    def value(self, values: dict[sp.Symbol, sp.Expr], digits: int, backend: str = "auto") -> str | None:
+        """The (first) answer to `digits` significant digits, or None when a symbol has no value."""
+        expression = self.expressions[0]
+        if not all(s in values for s in self.symbols[0]):
+            return None
+        if not self.symbols[0] or backend == "exact":  # a number (a distractor's): evalf, nothing compiled
+            return significant(expression.xreplace(values), digits)
+        if backend == "auto":
+            return self.certified([values], [digits] * len(self.expressions))[0][0].text
+        return getattr(self._lambdified[0], backend)(values, digits)
+
+
 @lru_cache(maxsize=4096)
-def evaluator(expression: sp.Expr) -> Evaluator:
-    """The compiled evaluator of an answer (compiled once per answer, however many variants)."""
-    return Evaluator(expression)
+def evaluator(expressions: tuple[sp.Expr, ...]) -> Evaluator:
+    """The compiled evaluator of answers (compiled once, however many variants)."""
+    return Evaluator(expressions)
 
 
 def evaluate(expression: sp.Expr, values: dict[sp.Symbol, sp.Expr], digits: int, backend: str = "auto") -> str | None:
     """The value of an answer to `digits` significant digits, or None if a symbol has no value."""
-    return evaluator(expression).value(values, digits, backend)
+    return evaluator((expression,)).value(values, digits, backend)

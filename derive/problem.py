@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, InvalidOperation, localcontext
+from functools import cached_property
 from pathlib import Path
 
 import sympy as sp
@@ -61,6 +62,10 @@ class Parameter:
     def bounds(self) -> tuple[Decimal, Decimal]:
         """The range's ends rounded inward to the significant figures: every draw lies between
         them (a range that holds no such value is refused when the file is read)."""
+        return self._bounds
+
+    @cached_property
+    def _bounds(self) -> tuple[Decimal, Decimal]:  # one parameter is drawn for every variant
         low, high = (exact_decimal(v) for v in self.range)
         return (Decimal(numeric.round_decimal(low, self.sig_figs, ROUND_CEILING)),
                 Decimal(numeric.round_decimal(high, self.sig_figs, ROUND_FLOOR)))

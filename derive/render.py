@@ -25,6 +25,7 @@ def tex_escape(text: str) -> str:
     return "".join(latex_safety.SPECIALS.get(c, c) for c in str(text))
 
 
+@lru_cache(maxsize=1024)  # a symbol is typeset in every variant
 def symbol_latex(name: str) -> str:
     r"""LaTeX of a symbol's name as a reader expects it: a Greek name as its letter, a word
     subscript upright, a word as one symbol.

@@ -299,6 +299,7 @@ def _written(text: str, name, times: str, power) -> str:
 _DEGREES = ("deg", "degree", "degrees")
 
 
+@lru_cache(maxsize=256)  # a unit is typeset in every variant
 def latex_unit(text: str) -> str:
     r"""LaTeX (math mode, amsmath only) for a unit: "m/s^2" -> r"\mathrm{m}/\mathrm{s}^{2}".
 

@@ -20,7 +20,7 @@ import random
 import sys
 from dataclasses import dataclass, field
 from decimal import Decimal
-from functools import cached_property
+from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Sequence
 
@@ -287,7 +287,7 @@ def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict
     for _ in range(MAX_DRAWS):
         values = draw(problem, rng)
         si = {p.symbol: values[n] * units.si_factor(units.parse_unit(p.unit)) for n, p in problem.parameters.items()}
-        if solution.violated(si, backend="mpmath") is None:  # a sign: one precision will do
+        if solution.violated(si) is None:
             return values
     raise InputError(f"{problem.path}: parameters: no draw in {MAX_DRAWS} meets the problem's conditions "
                      f"({'; '.join(m for _, _, m in solution.conditions)}): narrow the ranges")
@@ -311,6 +311,7 @@ def number_latex(text: str) -> str:
     return f"{mantissa}\\times10^{{{int(exponent)}}}" if exponent else mantissa
 
 
+@lru_cache(maxsize=None)
 def quantity_latex(value: sp.Expr, unit: str, sig_figs: int) -> str:
     number = number_latex(numeric.significant(value, sig_figs))
     unit_tex = units.latex_unit(unit)
@@ -327,7 +328,7 @@ class _ProblemVariants:
     tolerance: str | None = None  # the policy of asks that give none (the course defaults)
     # A build reads each variant's answers for the solutions, the key and the LMS exports:
     # evaluated once per draw (keyed by the draw, which self.draws keeps alive).
-    _answers: dict[int, dict[str, str | None]] = field(default_factory=dict, repr=False)
+    _answers: dict[int, dict[str, numeric.Certified | None]] = field(default_factory=dict, repr=False)
     _wrong: dict[int, dict[str, list[dict[str, str]]]] = field(default_factory=dict, repr=False)
 
     def si_values(self, draw: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
@@ -338,7 +339,17 @@ class _ProblemVariants:
 
     def shown(self, name: str, value: str | None) -> str:
         """LaTeX of an answer: its number, or its expression when it has none (a general result)."""
-        return number_latex(value) if value is not None else render.latex_of(self.solution.expressions[name])
+        return number_latex(value) if value is not None else self.expression_latexes[name]
+
+    @cached_property
+    def expression_latexes(self) -> dict[str, str]:
+        """Each answer's expression as LaTeX, for a general (symbolic) result in every variant."""
+        return {name: render.latex_of(expression) for name, expression in self.solution.expressions.items()}
+
+    @cached_property
+    def expression_texts(self) -> dict[str, str]:
+        """Each answer's expression as text (sympy's str), for the keys of every variant."""
+        return {name: sp.sstr(expression) for name, expression in self.solution.expressions.items()}
 
     @cached_property
     def in_declared_units(self) -> dict[str, sp.Expr]:
@@ -346,13 +357,28 @@ class _ProblemVariants:
         return {name: self.solution.expressions[name] / units.si_factor(units.parse_unit(ask.unit))
                 for name, ask in self.problem.asks.items()}
 
+    @cached_property
+    def _evaluator(self) -> numeric.Evaluator:
+        return numeric.evaluator(tuple(self.in_declared_units.values()))
+
+    def certified(self, draw: dict[str, sp.Expr]) -> dict[str, numeric.Certified | None]:
+        """Each answer's value to its significant figures, with how its digits are vouched for;
+        None for a general (symbolic) result. The first time one of this object's own draws is
+        asked, every one of them is evaluated, together (one compiled program over the variants)."""
+        if id(draw) in self._answers:
+            return self._answers[id(draw)]
+        draws = self.draws if id(draw) in self._own_draws else [draw]
+        digits = [ask.sig_figs or DEFAULT_SIG_FIGS for ask in self.problem.asks.values()]
+        results = [dict(zip(self.problem.asks, row))
+                   for row in self._evaluator.certified([self.si_values(d) for d in draws], digits)]
+        if draws is not self.draws:
+            return results[0]
+        self._answers.update(zip(map(id, draws), results))
+        return self._answers[id(draw)]
+
     def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each answer's value to its significant figures; None for a general (symbolic) result."""
-        def evaluate(values: dict[sp.Symbol, sp.Expr]) -> dict[str, str | None]:
-            return {name: numeric.evaluate(self.in_declared_units[name], values, ask.sig_figs or DEFAULT_SIG_FIGS)
-                    for name, ask in self.problem.asks.items()}
-
-        return self._once(self._answers, draw, evaluate)
+        return {name: None if value is None else value.text for name, value in self.certified(draw).items()}
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
@@ -435,7 +461,7 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         for route, steps in solution.steps().items()
     ]
     answers = [
-        {"symbol": render.symbol_latex(n), "latex": render.latex_of(solution.expressions[n]), "meaning": a.meaning}
+        {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning}
         for n, a in problem.asks.items()
     ]
     variants = []
@@ -466,13 +492,14 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
         entry = {"variant": number, "problems": {}}
         for item in prepared:
             values = item.draws[number - 1]
-            answers, tolerances = item.answers(values), item.tolerances(values)
+            answers, tolerances, certified = item.answers(values), item.tolerances(values), item.certified(values)
             entry["problems"][item.problem.id] = {
                 "parameters": {n: {"value": numeric.significant(values[n], p.sig_figs), "unit": p.unit}
                                for n, p in item.problem.parameters.items()},
                 "answers": {n: {"value": answers[n], "tolerance": tolerances[n],
-                                "expr": sp.sstr(item.solution.expressions[n]), "unit": a.unit,
-                                "meaning": a.meaning} for n, a in item.problem.asks.items()},
+                                "expr": item.expression_texts[n], "unit": a.unit, "meaning": a.meaning,
+                                "certificate": None if certified[n] is None else certified[n].certificate()}
+                            for n, a in item.problem.asks.items()},
             }
             if with_distractors or choice:  # wrong answers for multiple choice, from mistaken set-ups
                 for n, wrong in item.wrong(values).items():
@@ -481,7 +508,7 @@ def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: i
                         entry["problems"][item.problem.id]["answers"][n]["numerical"] = _too_few(len(wrong))
             for n, a in item.problem.asks.items():
                 rows.append({"variant": number, "problem": item.problem.id, "answer": n,
-                             "value": answers[n] if answers[n] is not None else sp.sstr(item.solution.expressions[n]),
+                             "value": answers[n] if answers[n] is not None else item.expression_texts[n],
                              "tolerance": tolerances[n] or "", "unit": a.unit, "meaning": a.meaning,
                              "latex": item.shown(n, answers[n])})
         key["variants"].append(entry)

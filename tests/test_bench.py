@@ -10,12 +10,21 @@ from derive.answers import Solution
 def test_bench_sections_print_figures():
     lines = []
     solutions = {"string_wrapped_disk": Solution(problem.load("string_wrapped_disk"))}
-    bench.backends(lines.append, solutions, samples=1)
+    rates = bench.backends(lines.append, solutions, samples=2, repeats=1)
     bench.answer_key(lines.append, solutions, variants=5)
     text = "\n".join(lines)
-    for backend in ("float", "mpmath", "auto", "exact"):
-        assert f"  {backend} " in text
+    for method in bench.METHODS:
+        assert f"  {method} " in text
+        assert rates[method, "typical"] > 0 and rates[method, "extreme"] > 0
     assert "Answer key: 1 problems x 5 variants" in text
+
+
+def test_the_set_rate_is_printed():
+    """The figures are printed (2 variants against 1: the rate itself is noise here, never asserted)."""
+    lines = []
+    bench.set_rate(lines.append, variants=2, repeats=1)
+    assert "1 variant: 17 answers" in lines[-2] and "2 variants: 34 answers" in lines[-2]
+    assert "marginal:" in lines[-1] and "naive evalf" in lines[-1]
 
 
 def test_sampler_redraws_until_the_top_can_precess():
