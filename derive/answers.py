@@ -542,7 +542,12 @@ class Solution(StateAnswers, CrossChecks):
     def violated(self, values: dict[sp.Symbol, sp.Expr]) -> str | None:
         """The meaning of the first condition these values break, or None (every sign certified:
         derive.numeric, the conditions evaluated together)."""
-        signs = numeric.evaluator(tuple(c for c, _, _ in self.conditions)).certified([values], [6] * len(self.conditions))
+        try:
+            signs = numeric.evaluator(tuple(c for c, _, _ in self.conditions)).certified([values], [6] * len(self.conditions))
+        except ValueError:  # a later condition is not real where an earlier one breaks (an acos past 1
+            # once a swing goes over the top): in order, one at a time, the first broken one
+            return next((meaning for condition, strict, meaning in self.conditions
+                         if self.violated_at(condition, strict, values)), None)
         for (_, strict, meaning), value in zip(self.conditions, signs[0]):
             if value is not None and (Decimal(value.text) < 0 or strict and Decimal(value.text) == 0):
                 return meaning
