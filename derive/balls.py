@@ -164,7 +164,9 @@ class Program:
         source = f"def program(K, {', '.join(self._names[s] for s in self.symbols)}):\n" + "\n".join(lines)
         namespace = {"arb": arb, "_decided": _decided, "_equal": _equal, "_undefined": _undefined,
                      **{name: call for call, name in self._calls.items()}}
-        exec(compile(source, "<derive.balls>", "exec"), namespace)  # noqa: S102 - source printed above from the tree, no name
+        # safe: the source holds only generated names (x0, t0, K[0], _f0) and integers printed by
+        # int(), never a symbol's name or any text of a problem file
+        exec(compile(source, "<derive.balls>", "exec"), namespace)  # noqa: S102
         self.source = source
         self._function = namespace["program"]
         self._folded: dict[int, tuple[arb, ...]] = {}
