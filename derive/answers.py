@@ -627,9 +627,8 @@ class Solution(StateAnswers, CrossChecks):
         else:
             result = self._route_expression(ask, "lagrange")
         if result.has(sp.Piecewise):  # regimes: one case per regime, each in its simplest form
-            result = sp.piecewise_fold(result)
-            result = sp.Piecewise(*((tidy(value), where) for value, where in result.args)) \
-                if isinstance(result, sp.Piecewise) else result
+            folded = sp.piecewise_fold(result)
+            result = tidy(folded) if isinstance(folded, sp.Piecewise) else folded
         for size in ask.small:
             result = tidy(sp.limit(result, size, 0, "+"))
         if ask.zero_for:

@@ -226,12 +226,16 @@ LONG = 200
 def tidy(expr: sp.Expr) -> sp.Expr:
     """A compact form of a solved expression: rational functions cancelled (a long one reduced by
     sin^2 + cos^2 = 1), trigonometric identities applied where every angle is a plain one, then
-    factored.
+    factored; a Piecewise (friction's regimes) case by case.
 
     >>> m, g, x = sp.symbols("m g x")
     >>> tidy(m*g*sp.sin(x)**2 + m*g*sp.cos(x)**2)
     g*m
     """
+    if expr.has(sp.Piecewise):  # regimes: each case in its own simplest form
+        folded = sp.piecewise_fold(expr)
+        if isinstance(folded, sp.Piecewise):
+            return sp.Piecewise(*((tidy(value), where) for value, where in folded.args))
     with limits.time_limit("simplifying"):
         expr = sp.cancel(sp.together(radicals(expr)))
         if expr.has(sp.sin, sp.cos) and _rational_trigonometric(expr) and sp.count_ops(expr) > LONG:
