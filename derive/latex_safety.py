@@ -101,6 +101,9 @@ MATH_COMMANDS = {
     "mathrm": ("math",), "mathbf": ("math",), "mathit": ("math",), "mathsf": ("math",), "mathtt": ("math",),
     "mathcal": ("math",), "text": ("text",), "operatorname": ("name",),
 }
+#: What the values derive puts in a question may use besides (units.siunitx_unit, in the PDFs),
+#: and a question's own text may not: pandoc and MathJax, which show the other formats, read none.
+UNIT_COMMANDS = {"unit": ("math",), "degree": (), "micro": ()}
 #: Math accents: alone in a group (or a math alphabet), TeX takes one out, scripts and all.
 MATH_ACCENTS = frozenset({"hat", "bar", "vec", "dot", "ddot", "tilde", "widehat", "widetilde"})
 #: Math alphabets: their argument is a group of the list they stand in.
@@ -271,7 +274,7 @@ def _pieces(text: str, names: tuple[str, ...], limit: int) -> tuple[str, ...]:
 @lru_cache(maxsize=4096)  # a value drawn to its significant figures recurs across variants
 def _value(text: str, limit: int) -> str:
     """A placeholder's value, read as question text without placeholders."""
-    return _Parser(text, {}, limit).question()
+    return _Parser(text, {}, limit, units=True).question()
 
 
 # --- the parser --------------------------------------------------------------------------------
@@ -313,8 +316,9 @@ def math_hint(character: str) -> str:
 class _Parser:
     """One pass over a question: checks it and builds its LaTeX (see the module's policy)."""
 
-    def __init__(self, text: str, values: Mapping[str, str | None], limit: int):
+    def __init__(self, text: str, values: Mapping[str, str | None], limit: int, units: bool = False):
         _check_length(text, limit)
+        self.units = units  # a value derive wrote: its unit may be siunitx's (UNIT_COMMANDS)
         check_characters(text, newlines=True)
         _check_escapes(text)
         self.source = text
@@ -605,6 +609,8 @@ class _Parser:
                 with self.nested(start):
                     spaces += "[" + self.math_mode("]", start, index=True) + "]"
             return token + spaces + self.spaces() + self.argument(token, offset, "math")
+        if self.units and name in UNIT_COMMANDS:
+            return token + "".join(self.spaces() + self.argument(token, offset, kind) for kind in UNIT_COMMANDS[name])
         if name in MATH_COMMANDS:
             return token + "".join(self.spaces() + self.argument(token, offset, kind) for kind in MATH_COMMANDS[name])
         if name == "left":

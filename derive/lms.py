@@ -133,9 +133,30 @@ def _questions(items: list[Item]) -> dict[tuple[str, str], list[Item]]:
     return questions
 
 
-def _exponent(question: list[Item]) -> int:
-    """The exponent of a question's numerical items (multiple choice shows its values as text)."""
-    return exponent(item.tolerance for item in question if not item.wrong)
+def _exponent(question: list[Item], target: str) -> int:
+    """The k of a question's unit 10^-k UNIT, one for all its variants, numerical or multiple choice:
+    where any is numerical, Canvas's (`exponent`) or Moodle's own unit (Moodle stores doubles);
+    where every one is multiple choice, what shows its largest value between 1 and 1000 (12.3 ×
+    10⁻⁶ m, not 0.0000123 m), or the unit itself where its values read well in it (1e-3 to 1e6).
+
+    >>> item = Item("p", "P", 1, "", "I", "inertia", "1.23e-5", "kg·m²", "1e-7", ("2.46e-5", "6.1e-6", "1e-5"))
+    >>> _exponent([item], "qti"), choice_text("1.23e-5", "kg·m²", 6)
+    (6, '12.3 × 10⁻⁶ kg·m²')
+    """
+    numerical = [item.tolerance for item in question if not item.wrong]
+    if numerical:
+        return exponent(numerical) if target == "qti" else 0
+    largest = max(abs(Decimal(v)) for item in question for v in (item.value, *item.wrong))
+    if not largest or Decimal("1e-3") <= largest < Decimal("1e6"):
+        return 0
+    return -3 * (largest.adjusted() // 3)
+
+
+def choice_text(value: str, unit: str, k: int) -> str:
+    """A multiple-choice option: the value in the question's unit 10^-k UNIT (`_exponent`), as text."""
+    if not k:
+        return _with_unit(value, unit)
+    return _with_unit(f"{format(Decimal(value).scaleb(k), 'f')} × 10{units.superscript(str(-k))}", unit)
 
 
 #: Magnitudes both LMSs store as numbers (double precision, with room for the tolerance).
@@ -148,7 +169,7 @@ LIMITS = {"moodle": "a tolerance of at least 1e-14 of the answer (double precisi
 def check(items: list[Item], target: str) -> None:
     """Refuse a tolerance the LMS cannot honour, or one so wide that it accepts zero and the
     wrong sign: InputError naming the problem, the variant and the answer."""
-    scales = {question: _exponent(group) for question, group in _questions(items).items()}
+    scales = {question: _exponent(group, target) for question, group in _questions(items).items()}
     for item in items:
         value, tol = abs(Decimal(item.value)), Decimal(item.tolerance)
         if value and not DOUBLE_RANGE[0] <= value <= DOUBLE_RANGE[1]:
@@ -162,7 +183,7 @@ def check(items: list[Item], target: str) -> None:
         if target == "moodle" and value and tol < value * Decimal("1e-14"):
             raise InputError(f"{where}: ±{_with_unit(item.tolerance, item.unit)} is finer than Moodle can compare "
                              f"({LIMITS['moodle']}); use fewer significant figures")
-        if target == "qti" and value and not _survives_canvas(*scaled(item.value, item.tolerance,
+        if target == "qti" and value and not item.wrong and not _survives_canvas(*scaled(item.value, item.tolerance,
                                                                       scales[item.problem, item.name])):
             raise InputError(f"{where}: Canvas needs {LIMITS['qti']}")
 
@@ -234,11 +255,12 @@ def _label(item: Item) -> str:
     return f"{item.meaning}: \\({render.symbol_latex(item.name)}\\)"
 
 
-def _cloze(item: Item) -> str:
-    """A cloze field: NUMERICAL with its tolerance, or MULTICHOICE with the unit on each choice."""
+def _cloze(item: Item, k: int) -> str:
+    """A cloze field: NUMERICAL with its tolerance, or MULTICHOICE with the unit on each choice, in
+    the question's unit 10^-k UNIT (`_exponent`)."""
     if not item.wrong:
         return _with_unit(f"{{1:NUMERICAL:={item.value}:{item.tolerance}}}", item.unit)
-    options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(_with_unit(v, item.unit))}"
+    options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(choice_text(v, item.unit, k))}"
                        for v, right in choices(item))
     return f"{{1:MULTICHOICE_V:{options}}}"
 
@@ -309,6 +331,7 @@ def moodle(items: list[Item], set_id: str, figures: Mapping[str, Image] = {}) ->
     by problem id) below its text, and the variant's worked solution as general feedback. A quiz's
     "random question" from a problem's category gives each student one variant of it."""
     problems: dict[str, dict[int, list[Item]]] = {}
+    scales = {question: _exponent(group, "moodle") for question, group in _questions(items).items()}
     for item in items:
         problems.setdefault(item.problem, {}).setdefault(item.variant, []).append(item)
     quiz = E.quiz()
@@ -319,7 +342,7 @@ def moodle(items: list[Item], set_id: str, figures: Mapping[str, Image] = {}) ->
         image = figures.get(problem)
         shown = _figure(f"@@PLUGINFILE@@/{image.file('png')}", image, _literal_braces(title)) if image else ""
         for variant, group in variants.items():
-            fields = [f"{_literal_braces(_label(i))} = {_cloze(i)}" for i in group]
+            fields = [f"{_literal_braces(_label(i))} = {_cloze(i, scales[problem, i.name])}" for i in group]
             html = _references(_paragraphs(_mathjax(_literal_braces(group[0].question))) + shown
                                + _paragraphs(*fields))
             files = [E.file(base64.b64encode(image.png).decode("ascii"), name=image.file("png"), path="/",
@@ -399,11 +422,11 @@ def _numerical(item: Item, k: int) -> tuple[str, str, etree._Element, etree._Ele
     return "numerical_question", f"{_label(item)} (in {unit})" if unit else _label(item), response, condition
 
 
-def _multiple_choice(item: Item) -> tuple[str, str, etree._Element, etree._Element]:
+def _multiple_choice(item: Item, k: int) -> tuple[str, str, etree._Element, etree._Element]:
     """(question type, prompt, response, correct condition): the right choice among the wrong, each
-    a value in the answer's unit (text, which Canvas keeps as written: never scaled)."""
+    a value as text in the question's unit 10^-k UNIT (`choice_text`)."""
     options = choices(item)
-    labels = (QTI.response_label(QTI.material(QTI.mattext(_with_unit(v, item.unit), texttype="text/plain")),
+    labels = (QTI.response_label(QTI.material(QTI.mattext(choice_text(v, item.unit, k), texttype="text/plain")),
                                  ident=f"choice{n}")
               for n, (v, _) in enumerate(options))
     response = QTI.response_lid(QTI.render_choice(*labels), ident="response1", rcardinality="Single")
@@ -415,7 +438,7 @@ def _qti_item(item: Item, k: int, ident: str, figure: str = "") -> etree._Elemen
     """A Canvas item: its question type and points, the question's HTML (with the problem's
     `figure`, HTML), the response (numerical in the question's unit 10^-k UNIT), its scoring and
     the worked solution as general feedback."""
-    kind, prompt, response, condition = _multiple_choice(item) if item.wrong else _numerical(item, k)
+    kind, prompt, response, condition = _multiple_choice(item, k) if item.wrong else _numerical(item, k)
     text = _paragraphs(_mathjax(item.question)) + figure + _paragraphs(prompt)
     scoring = [QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
                                  {"continue": "No"})]
@@ -457,7 +480,7 @@ def qti(items: list[Item], title: str, set_id: str, seed: int, figures: Mapping[
               for i in group),
             ident=identifier("group", set_id, seed, problem, name),
             title=f"{group[0].title}: {group[0].meaning}"[:GROUP_TITLE_LIMIT])
-        for (problem, name), group in groups.items() for k in [_exponent(group)]]
+        for (problem, name), group in groups.items() for k in [_exponent(group, "qti")]]
     assessment = QTI.questestinterop(QTI.assessment(QTI.section(*sections, ident="root_section"),
                                                     ident=quiz, title=title))
     points = str(POINTS * len(groups))

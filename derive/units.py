@@ -33,7 +33,7 @@ from derive.expr import ExprError, _build, _rational, _syntax_tree
 from derive.spelling import did_you_mean
 
 __all__ = ["UnitError", "UNITS", "parse_unit", "dimension", "si_factor", "parse_quantity",
-           "to_unit", "expression_dimension", "same_dimension", "latex_unit", "unicode_unit", "superscript",
+           "to_unit", "expression_dimension", "same_dimension", "latex_unit", "siunitx_unit", "unicode_unit", "superscript",
            "sympy_units"]
 
 
@@ -299,18 +299,38 @@ def _written(text: str, name, times: str, power) -> str:
 _DEGREES = ("deg", "degree", "degrees")
 
 
+def _tex_name(name: str) -> str:
+    """A unit's name as TeX text: sympy's long names have underscores (astronomical_unit)."""
+    return name.replace("_", r"\_")
+
+
 @lru_cache(maxsize=256)  # a unit is typeset in every variant
 def latex_unit(text: str) -> str:
     r"""LaTeX (math mode, amsmath only) for a unit: "m/s^2" -> r"\mathrm{m}/\mathrm{s}^{2}".
 
-    Written here rather than by siunitx: pandoc reads these commands into HTML, Markdown and DOCX
-    math, and the preamble needs no package for them.
+    For what pandoc converts (HTML, Markdown, DOCX) and MathJax shows (the LMS questions): neither
+    reads siunitx (pandoc's texmath takes its literal units for italic letters). The PDFs use
+    siunitx_unit.
 
     >>> latex_unit("kg*m^2"), latex_unit("1")
     ('\\mathrm{kg}\\,\\mathrm{m}^{2}', '')
     """
     special = {**dict.fromkeys(_DEGREES, r"{}^{\circ}"), "um": r"\mu\mathrm{m}"}
-    return _written(text, lambda n: special.get(n, rf"\mathrm{{{n}}}"), r"\,", lambda b, e: f"{b}^{{{e}}}")
+    return _written(text, lambda n: special.get(n, rf"\mathrm{{{_tex_name(n)}}}"), r"\,", lambda b, e: f"{b}^{{{e}}}")
+
+
+@lru_cache(maxsize=256)
+def siunitx_unit(text: str) -> str:
+    r"""A unit for the documents LaTeX compiles: siunitx's ``\unit`` in its literal form (``.`` a
+    product, ``/`` as written, ``^{}`` a power; ``\degree`` and ``\micro`` its own), so the PDFs'
+    units follow one typographic convention (upright, thin spaces) and siunitx sets the spacing.
+
+    >>> siunitx_unit("kg*m^2/s"), siunitx_unit("um"), siunitx_unit("1")
+    ('\\unit{kg.m^{2}/s}', '\\unit{\\micro m}', '')
+    """
+    special = {**dict.fromkeys(_DEGREES, r"\degree"), "um": r"\micro m"}
+    written = _written(text, lambda n: special.get(n, _tex_name(n)), ".", lambda b, e: f"{b}^{{{e}}}")
+    return rf"\unit{{{written}}}" if written else ""
 
 
 def superscript(text: str) -> str | None:

@@ -311,10 +311,17 @@ def number_latex(text: str) -> str:
     return f"{mantissa}\\times10^{{{int(exponent)}}}" if exponent else mantissa
 
 
+def unit_latex(unit: str, siunitx: bool) -> str:
+    """A unit as a document typesets it: siunitx's in what LaTeX compiles (the PDFs), plain math in
+    what pandoc converts and MathJax shows (units.latex_unit says why)."""
+    return units.siunitx_unit(unit) if siunitx else units.latex_unit(unit)
+
+
 @lru_cache(maxsize=None)
-def quantity_latex(value: sp.Expr, unit: str, sig_figs: int) -> str:
+def quantity_latex(value: sp.Expr, unit: str, sig_figs: int, siunitx: bool) -> str:
+    """A given value as math, with its unit (`unit_latex`)."""
     number = number_latex(numeric.significant(value, sig_figs))
-    unit_tex = units.latex_unit(unit)
+    unit_tex = unit_latex(unit, siunitx)
     return f"{number}\\,{unit_tex}" if unit_tex else number
 
 
@@ -406,9 +413,10 @@ class _ProblemVariants:
     def _own_draws(self) -> set[int]:
         return {id(d) for d in self.draws}
 
-    def question(self, draw: dict[str, sp.Expr]) -> str:
+    def question(self, draw: dict[str, sp.Expr], siunitx: bool = False) -> str:
+        """The problem's question with the draw's values (units in siunitx for a PDF)."""
         shown = {
-            name: f"${quantity_latex(draw[name], p.unit, p.sig_figs)}$"
+            name: f"${quantity_latex(draw[name], p.unit, p.sig_figs, siunitx)}$"
             for name, p in self.problem.parameters.items()
         }
         try:
@@ -439,16 +447,18 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
     return prepared
 
 
-def _check_latex(check, problem: Problem) -> str:
+def _check_latex(check, problem: Problem, siunitx: bool) -> str:
     """A check as a worked solution prints it: its reading, the units of the answers in math."""
     if check.name == "dimensions":
-        units_of = ", ".join(f"${render.symbol_latex(n)}$ in ${units.latex_unit(a.unit)}$" if units.latex_unit(a.unit)
+        units_of = ", ".join(f"${render.symbol_latex(n)}$ in ${unit_latex(a.unit, siunitx)}$" if unit_latex(a.unit, siunitx)
                              else f"${render.symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
         return f"Every answer has the units it should: {units_of}."
     return render.tex_escape(check.reading)
 
 
-def _solutions_context(item: _ProblemVariants) -> dict:
+def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
+    """A problem's worked solution for the templates: its routes' steps, its answers, each variant's
+    numbers (units in siunitx where LaTeX compiles it: `unit_latex`), its checks."""
     problem, solution = item.problem, item.solution
     routes = [
         {
@@ -469,12 +479,12 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         results = item.answers(values)
         variants.append({
             "number": number,
-            "given": [f"${render.latex_of(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
+            "given": [f"${render.latex_of(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs, siunitx)}$"
                       for n, p in problem.parameters.items()],
             "results": [{"symbol": render.symbol_latex(n), "value": item.shown(n, results[n]),
-                         "unit": units.latex_unit(a.unit)} for n, a in problem.asks.items()],
+                         "unit": unit_latex(a.unit, siunitx)} for n, a in problem.asks.items()],
         })
-    checks = [_check_latex(c, problem) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
+    checks = [_check_latex(c, problem, siunitx) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
     return {"title": problem.title, "source": problem.source, "routes": routes, "answers": answers,
             "variants": variants, "checks": checks, "corrections": list(problem.corrections),
             "figure": figure.tikz(problem)}
@@ -570,11 +580,13 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
     return items
 
 
-def _worksheet(header: dict, prepared: list[_ProblemVariants], variants: int, figures: list[str | None]) -> str:
+def _worksheet(header: dict, prepared: list[_ProblemVariants], variants: int, figures: list[str | None],
+               siunitx: bool) -> str:
     """The worksheet's LaTeX: each variant's problems, each shown with its figure (`figures`, one
-    per problem, None for none: TikZ for the PDF, an \\includegraphics of its image for pandoc)."""
+    per problem, None for none: TikZ for the PDF, an \\includegraphics of its image for pandoc),
+    units in siunitx for the PDF."""
     return render.render("worksheet.tex.j2", set=header, variants=[
-        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1]),
+        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1], siunitx),
                                     "figure": drawn} for item, drawn in zip(prepared, figures)]}
         for n in range(1, variants + 1)])
 
@@ -623,15 +635,16 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
     rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
     for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
         print(f"derive: warning: {note}", file=sys.stderr, flush=True)
-    contexts = [_solutions_context(i) for i in prepared]
+    contexts = [_solutions_context(i, siunitx=True) for i in prepared]
     items = []
     if formats & {"moodle", "qti"}:
         progress("the worked solutions as the LMS questions' feedback (pandoc)")
-        items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, contexts, header))
+        shown = [_solutions_context(i, siunitx=False) for i in prepared]  # MathJax reads no siunitx
+        items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, shown, header))
     for target in sorted(formats & {"moodle", "qti"}):
         lms.check(items, target)  # before anything is written
     key_rows = [{**r, "symbol": render.symbol_latex(r["answer"]), "value": f"${r['latex']}$",
-                 "unit": units.latex_unit(r["unit"])} for r in rows]
+                 "unit": units.siunitx_unit(r["unit"])} for r in rows]
 
     with output_folder.staged(out) as staging:
         compiling = "pdf" in formats or bool(figures)
@@ -639,7 +652,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         with progress.task("writing", steps) as begin:
             begin("LaTeX")
             texs = [
-                _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn)),
+                _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, siunitx=True)),
                 _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
                 _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
             ]
@@ -668,7 +681,8 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                 if target in formats:
                     begin(f"the worksheet as {target} (pandoc)")
                     shown = _shown(prepared, images, target)
-                    products.append(export.convert(_worksheet(header, prepared, variants, shown), staging / "worksheet",
+                    products.append(export.convert(_worksheet(header, prepared, variants, shown, siunitx=False),
+                                                   staging / "worksheet",
                                                    target, problem_set.title))
             # The keys and the LMS files are written by Python after every TeX run, so no TeX run
             # could have touched them.
@@ -723,11 +737,11 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
     solution = Solution(problem)
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
     item = _ProblemVariants(problem, solution, [middle])
-    context = {**_solutions_context(item), "limits": _limits_context(problem, solution, progress)}
+    context = {**_solutions_context(item, siunitx=True), "limits": _limits_context(problem, solution, progress)}
     out = output_folder.claim(out_dir or Path("build") / "handouts" / problem.id)
     with output_folder.staged(out) as staging:
         tex = _write(staging, f"{problem.id}.tex", render.render("handout.tex.j2", problem=context,
-                                                                   question=item.question(middle)))
+                                                                   question=item.question(middle, siunitx=True)))
         progress("compiling the PDF")
         return output_folder.commit(staging, out, [tex, export.pdf(tex)])
 

@@ -737,3 +737,15 @@ def test_tex_time_limit_setting(monkeypatch):
         export.tex_time_limit()
     monkeypatch.setenv("DERIVE_TEX_TIME_LIMIT", "45")
     assert export.tex_time_limit() == 45
+
+
+def test_siunitx_units_come_only_from_derives_own_values():
+    """A value derive writes may carry siunitx's \\unit (the PDFs); a question's own text may not,
+    since pandoc and MathJax, which show the other formats, read none of it."""
+    for text in ("$2\\,\\unit{kg}$", "$\\degree$", "$\\micro m$"):
+        with pytest.raises(latex_safety.LatexError, match="not allowed in math"):
+            latex_safety.check_question(text, ())
+    shown = latex_safety.question_latex("A mass {{ m }}.", {"m": "$2\\,\\unit{kg.m^{2}/s}$"})
+    assert shown == "A mass $2\\,\\unit{kg.m^{2}/s}$."
+    with pytest.raises(latex_safety.LatexError):  # inside a value, \unit's argument is still checked math
+        latex_safety.question_latex("{{ m }}", {"m": "$\\unit{\\input{x}}$"})

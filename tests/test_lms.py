@@ -1,5 +1,6 @@
 """The exports instructors import: Markdown, DOCX, Moodle XML and a QTI zip for Canvas."""
 import csv
+import io
 import json
 import re
 import xml.etree.ElementTree as ET
@@ -320,3 +321,28 @@ def test_lms_labels_and_units_read_as_a_student_reads_them(labelled):
     assert any("(in 10⁻²⁷ kg)" in g.findtext(".//{*}mattext") for g in groups)  # the reduced mass, every variant
     rows = list(csv.DictReader((labelled / "key.csv").open(encoding="utf-8")))
     assert all(_shown_unit(r["unit"]) for r in rows) and {r["unit"] for r in rows} >= {"kg·m²", "", "J·s", "kg"}
+
+
+def test_multiple_choice_options_share_one_scaled_unit_per_question_in_both_lms():
+    """Small answers' options read 12.3 × 10⁻⁶ kg·m², one power of ten over all the variants of a
+    question (not 0.0000123 kg·m² in one and 4.5e-7 in another); where a variant is numerical, its
+    Canvas unit and the options share the power."""
+    def item(variant, value, wrong=(), tolerance="1e-7"):
+        return lms.Item("disk", "Disk", variant, "q", "I", "inertia", value, "kg·m²", tolerance, wrong)
+    chosen = [item(1, "1.23e-5", ("2.46e-5", "6.15e-6", "1.64e-5")), item(2, "4.5e-7", ("9e-7", "2.25e-7", "6e-7"))]
+    quiz = ET.fromstring(lms.moodle(chosen, "s"))
+    options = [a for q in quiz.iter("question") if q.get("type") == "cloze"
+               for _, field in moodle_cloze(q.find("questiontext/text").text)[1] for _, a in field]
+    assert len(options) == 8 and all(re.fullmatch(r"\d+(\.\d+)? × 10⁻⁶ kg·m²", o) for o in options), options
+    assert "12.3 × 10⁻⁶ kg·m²" in options and "0.45 × 10⁻⁶ kg·m²" in options
+    with zipfile.ZipFile(io.BytesIO(lms.qti(chosen, "T", "s", 1))) as archive:
+        _, assessment, _ = qti_package(archive)
+    shown = [e.text for e in assessment.iter("{*}mattext") if e.get("texttype") == "text/plain"]
+    assert sorted(shown) == sorted(options)
+    mixed = [item(1, "1.23e-5", ("2.46e-5", "6.15e-6", "1.64e-5")), item(2, "4.5e-7", tolerance="1e-11")]
+    with zipfile.ZipFile(io.BytesIO(lms.qti(mixed, "T", "s", 1))) as archive:
+        _, assessment, _ = qti_package(archive)
+    texts = [e.text for e in assessment.iter("{*}mattext")]
+    assert any(t.endswith("(in 10⁻⁹ kg·m²)</p>") for t in texts)  # the numerical variant's margin needs 10⁻⁹
+    assert "12300 × 10⁻⁹ kg·m²" in texts  # and the other variant's options use it too
+    assert lms._exponent(mixed, "moodle") == 0  # Moodle stores the numerical answer as it is

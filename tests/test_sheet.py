@@ -62,6 +62,17 @@ def test_worksheet_pdf_shows_each_variants_numbers(demo):
         assert f"{m} kg" in text
 
 
+def test_units_are_siunitx_in_the_pdfs_and_plain_math_where_pandoc_and_mathjax_read_them(demo):
+    """siunitx sets the PDFs' units; pandoc's texmath and MathJax read none of it, so the HTML and
+    the LMS files get the plain form (units.latex_unit), typeset as math."""
+    for name in ("worksheet", "solutions", "key"):
+        tex = (demo / f"{name}.tex").read_text()
+        assert "\\usepackage{siunitx}" in tex and "\\unit{" in tex and "\\,\\mathrm{" not in tex, name
+    assert "g = 9.81 m/s2" in pdf_text(demo / "solutions.pdf")  # \unit{m/s^{2}} as siunitx sets it
+    html = (demo / "worksheet.html").read_text()
+    assert "\\unit" not in html and "\\,\\mathrm{kg}</annotation>" in html  # MathML, from plain math
+
+
 def _pages(path) -> int:
     info = subprocess.run(["pdfinfo", str(path)], capture_output=True, text=True, check=True).stdout
     return int(next(line.split()[1] for line in info.splitlines() if line.startswith("Pages:")))

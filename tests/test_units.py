@@ -6,7 +6,7 @@ import pytest
 import sympy
 from sympy.physics import units as u
 
-from derive.units import (UNITS, UnitError, dimension, expression_dimension, latex_unit, unicode_unit,
+from derive.units import (UNITS, UnitError, dimension, expression_dimension, latex_unit, siunitx_unit, unicode_unit,
                           parse_quantity, parse_unit, same_dimension, si_factor, to_unit)
 
 pi = sympy.pi
@@ -319,6 +319,30 @@ def test_latex_unit_compiles(tmp_path):
     run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "u.tex"],
                          cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stdout[-2000:]
+
+
+SIUNITX = {"m/s^2": r"\unit{m/s^{2}}", "kg m^2": r"\unit{kg.m^{2}}", "m/(kg s)": r"\unit{m/(kg.s)}",
+           "deg/s": r"\unit{\degree/s}", "um": r"\unit{\micro m}", "astronomical_unit": r"\unit{astronomical\_unit}",
+           "1": "", "": ""}
+
+
+@pytest.mark.parametrize("text", sorted(SIUNITX))
+def test_siunitx_unit(text):
+    assert siunitx_unit(text) == SIUNITX[text]
+
+
+def test_siunitx_units_compile_and_read_as_written(tmp_path):
+    """Every unit of the table in the PDFs' form compiles with siunitx and reads as it should."""
+    names = [*TABLE, *LATEX, *SIUNITX]
+    body = "\n".join(rf"$2\,{siunitx_unit(name)}$\par" for name in names)
+    (tmp_path / "u.tex").write_text("\\documentclass{article}\\usepackage[T1]{fontenc}\\usepackage{lmodern}"
+                                    "\\usepackage{amsmath}\\usepackage{siunitx}\\begin{document}\n" + body + "\n\\end{document}\n")
+    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "u.tex"],
+                         cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stdout[-2000:]
+    text = subprocess.run(["pdftotext", "u.pdf", "-"], cwd=tmp_path, capture_output=True, text=True).stdout
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    assert "2 kg m2" in lines and "2 m/s2" in lines and "2 µm" in lines and "2 astronomical_unit" in lines
 
 
 def test_latex_unit_readable_by_pandoc():
