@@ -488,7 +488,7 @@ class Solution(StateAnswers, CrossChecks):
         for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
             if isinstance(surface, Plane) and surface.angle.free_symbols:
                 result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "
-                                                  "negative: a plane's angle lies in [0, pi/2) (it descends to the right)"),
+                                                  "negative: a plane's angle lies in [0, pi/2) (`descends: left` for one that goes down to the left)"),
                            (sp.pi / 2 - surface.angle, True, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} "
                                                              "is pi/2 or more: a plane's angle lies in [0, pi/2)")]
         if {a.quantity.kind for a in self.problem.asks.values()} & DYNAMIC_KINDS:

@@ -287,7 +287,8 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
 
 
 def _surfaces(reader: Reader, raw) -> dict:
-    """`plane: {angle, through, height}` (`incline` is the same), `circle: {radius, center, side}`
+    """`plane: {angle, descends, through, height}` (`incline` is the same; `descends: left` or
+    `right`, the default), `circle: {radius, center, side}`
     (`loop: {radius}` is a circle ridden inside), `wall: {facing: left|right, through}` (a vertical
     plane; bodies touch it from the side it faces)."""
     raw = reader.mapping(raw or {}, "scene.surfaces", free=True)
@@ -309,8 +310,8 @@ def _surfaces(reader: Reader, raw) -> dict:
                 raise reader.fail(f"{where}.facing", "left or right (the side bodies touch it from)")
             through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
                 if "through" in details else (sp.Integer(0), sp.Integer(0))
-            # A vertical plane: its normal (sin angle, cos angle) points to the side it faces.
-            result[name] = Plane(name, sp.pi / 2 if details["facing"] == "right" else -sp.pi / 2, None, through, carrier)
+            # A vertical plane: its normal points the way it "descends", to the side it faces.
+            result[name] = Plane(name, sp.pi / 2, None, through, carrier, descends=details["facing"])
             continue
         if kind in ("circle", "loop"):
             details = reader.mapping(details, where, required=("radius",),
@@ -323,17 +324,21 @@ def _surfaces(reader: Reader, raw) -> dict:
             result[name] = Circle(name, reader.positive(details["radius"], f"{where}.radius", "m", "a radius"),
                                   center, side, carrier)
             continue
-        details = reader.mapping(details or {}, where, optional=("angle", "height", "through"))
+        details = reader.mapping(details or {}, where, optional=("angle", "descends", "height", "through"))
+        descends = details.get("descends", "right")
+        if descends not in ("left", "right"):
+            raise reader.fail(f"{where}.descends", "left or right (the way the plane goes down)")
         if "angle" in details:
             angle = reader.dimensioned(details["angle"], f"{where}.angle", "rad", "an angle")
             if not (angle.is_nonnegative and (sp.pi / 2 - angle).is_positive) and not angle.free_symbols:
-                raise reader.fail(f"{where}.angle", "a plane's angle lies in [0, pi/2) (it descends to the right)")
+                raise reader.fail(f"{where}.angle", "a plane's angle lies in [0, pi/2) "
+                                                    "(`descends: left` for one that goes down to the left)")
         else:
             angle = reader.unspecified(f"angle_{name}", "rad")
         height = reader.positive(details["height"], f"{where}.height", "m", "a height") if "height" in details else None
         through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
             if "through" in details else (sp.Integer(0), sp.Integer(0))
-        result[name] = Plane(name, angle, height, through, carrier)
+        result[name] = Plane(name, angle, height, through, carrier, descends)
     return result
 
 

@@ -556,5 +556,5 @@ def test_the_handouts_checks_read_as_sentences_with_units_in_math(tmp_path):
     assert done.returncode == 0, done.stderr
     text = (tmp_path / "h" / "string_wrapped_disk.tex").read_text()
     checks = text.split(r"\section*{Checks}")[1]
-    assert r"$T$ in $\mathrm{N}$" in checks and "Energy is conserved: the constraint forces do no work." in checks
+    assert r"$T$ in $\unit{N}$" in checks and "Energy is conserved: the constraint forces do no work." in checks
     assert "(numeric)" not in checks and "work_energy" not in checks and "T + V" not in checks

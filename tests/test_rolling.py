@@ -1,6 +1,7 @@
 """Rolling without slipping at a given speed (notes §2, §2.1): the rotation rate, the distance
 per turn and the kinetic-energy split, by the center of mass and by the contact point."""
 import dataclasses
+from pathlib import Path
 
 import pytest
 import sympy as sp
@@ -89,3 +90,23 @@ def test_a_ball_sliding_without_friction_in_a_loop_needs_five_halves_of_its_path
     rough = dataclasses.replace(problem, scene=dataclasses.replace(problem.scene, constraints=(rough,)))
     with pytest.raises(ProblemError, match="energy is not conserved"):
         Solution(rough).expression("h_roll")
+
+
+def test_an_incline_that_descends_to_the_left_is_the_mirror_image(tmp_path):
+    """The same sphere rolling down a plane that descends to the left: the same acceleration down
+    the slope and friction, its center moving left and turning counter-clockwise (the mirror image)."""
+    source = (Path(__file__).parent / "textbook" / "sphere_rolls_incline.yaml").read_text()
+    mirrored = source.replace("{incline: {angle: theta}}", "{incline: {angle: theta, descends: left}}")
+    mirrored = mirrored.replace("ask:\n", "ask:\n  ax: {meaning: horizontal acceleration, of: hoop.acceleration.x, "
+                                "unit: m/s^2}\n  alpha: {meaning: angular acceleration, of: hoop.angular_acceleration, "
+                                "unit: rad/s^2}\n", 1)
+    assert mirrored.count("descends: left") == 1
+    right = Solution(parse(source, tmp_path / "right.yaml"))
+    left = Solution(parse(mirrored, tmp_path / "left.yaml"))
+    R, theta, g = (sp.Symbol(n, positive=True) for n in ("R", "theta", "g"))
+    for name in ("a", "f", "mu_min"):
+        assert sp.simplify(left.expression(name) - right.expression(name)) == 0, name
+    assert sp.simplify(left.expression("a") - 5 * g * sp.sin(theta) / 7) == 0
+    assert sp.simplify(left.expression("ax") + 5 * g * sp.sin(theta) * sp.cos(theta) / 7) == 0  # to the left
+    assert sp.simplify(left.expression("alpha") - 5 * g * sp.sin(theta) / (7 * R)) == 0  # counter-clockwise
+    assert all(c.passed for c in left.checks())

@@ -59,6 +59,19 @@ EXPECTED = {
         "ay": lambda s: -(s.M + s.m) * s.g * _sin(s.theta) ** 2 / (s.M + s.m * _sin(s.theta) ** 2),
         "N": lambda s: s.M * s.m * s.g * _cos(s.theta) / (s.M + s.m * _sin(s.theta) ** 2),
     },
+    # Serway & Jewett ch. 5 (two blocks on the smooth faces of a double incline, joined over the
+    # apex): the left face descends to the left (`descends: left`).
+    "double_incline_peg": {
+        "a": lambda s: s.g * (s.m1 * _sin(s.alpha) - s.m2 * _sin(s.beta)) / (s.m1 + s.m2),
+        "T": lambda s: s.m1 * s.m2 * s.g * (_sin(s.alpha) + _sin(s.beta)) / (s.m1 + s.m2),
+    },
+    # Kleppner & Kolenkow ch. 7 (torques about a fixed pivot): a block on the smooth face of a
+    # plank pivoted at its center and tilted phi below the horizontal, at release; the surface turns
+    # with the plank (it was turned the wrong way, and the routes disagreed).
+    "plank_block_tilted": {
+        "alpha": lambda s: -s.m * s.g * s.d * _cos(s.phi) / (s.M * s.L**2 / 12 + s.m * s.d**2),
+        "N": lambda s: s.m * s.g * _cos(s.phi) * s.M * s.L**2 / (s.M * s.L**2 + 12 * s.m * s.d**2),
+    },
     # The same at release for a bead in a cart's circular track, where the track is inclined at
     # phi: the cart moves toward the bead's side (+x).
     "cart_track_bead": {

@@ -37,6 +37,8 @@ def _on_one_surface(problem) -> bool:
     if isinstance(surface, Circle):  # the loop-the-loop schematic: a body released on a ramp into a loop
         return surface.side == "inside" and not scene.loads and all(
             a.quantity.kind == "contact" and a.quantity.detail == "min_release_height" for a in problem.asks.values())
+    if isinstance(surface, Plane) and surface.descends == "left":  # the schematic's incline goes down to the right
+        return False
     level = isinstance(surface, Plane) and surface.angle == 0
     for load in scene.loads:
         pulled = isinstance(load, Cord) and len(load.path) == 2 and load.path[0].kind == "wound" \

@@ -958,9 +958,11 @@ class _Layout:
                                  f"\\fill[pattern=north east lines] {_pt(_add(corner, (0, -0.15)))} rectangle {_pt(b)};")
             view.ground_ink([a, b, corner, a])
             radius = min(0.8, 0.45 * math.hypot(*_sub(b, corner)))
-            view.draw("surfaces", self.fig.arc, b, radius, 180 - angle, 180)
-            view.ink += [_add(b, _unit(180 - angle + angle * k / 6), radius) for k in range(7)]
-            self.later(self.fig.m(plane.angle), _add(b, _unit(180 - angle / 2), radius + 0.02), 0.03)
+            # at the foot b, between the ground and the slope: toward the upper end a, left or right
+            start, end = (180 - angle, 180) if down[0] > 0 else (0, 180 - angle)
+            view.draw("surfaces", self.fig.arc, b, radius, start, end)
+            view.ink += [_add(b, _unit(start + (end - start) * k / 6), radius) for k in range(7)]
+            self.later(self.fig.m(plane.angle), _add(b, _unit((start + end) / 2), radius + 0.02), 0.03)
         else:  # at a corner the hatching runs on past it, under the other plane's
             under = (-normal[0], -normal[1])
             ha, hb = (_add(a, down, -0.16) if -1 in corners else a), (_add(b, down, 0.16) if 1 in corners else b)
@@ -1012,7 +1014,7 @@ class _Layout:
             return
         toward = drawn.body.angle + self._direction(drawn, contact.point)  # along the body, from the point
         parameters = {p.symbol for p in self.fig.problem.parameters.values()}
-        for line in (-plane.angle, sp.pi - plane.angle):  # along the plane, down- and up-slope
+        for line in (plane.line_angle, sp.pi + plane.line_angle):  # along the plane, down- and up-slope
             turn = toward - line
             turn -= 2 * sp.pi * round(view.value(turn) / (2 * math.pi))  # within half a turn
             swept = turn if view.value(turn) >= 0 else -turn
@@ -1164,8 +1166,9 @@ def _crossing(p, u, q, v):
 
 
 def _wedge(down) -> bool:
-    """Whether a plane descending along `down` is drawn as an incline's wedge (else a hatched line)."""
-    return 0.5 < math.degrees(math.atan2(-down[1], down[0])) < 89.5
+    """Whether a plane descending along `down` is drawn as an incline's wedge (else a hatched line):
+    to the right or to the left."""
+    return 0.5 < abs(90 - math.degrees(math.atan2(-down[1], down[0]))) < 89.5
 
 
 def _scale_vec(p, k: float):

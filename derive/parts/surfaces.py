@@ -6,7 +6,7 @@ reference configuration; `carried` moves it with its carrier.
 Each gives, for a round body of radius r whose center is at C: `gap` (how far the body stands off
 the surface; zero when it touches), `normal_at` (the unit vector from the surface toward the
 center: the normal force's direction), `tangent_at` (t = (n_y, -n_x): down a plane that descends
-to the right, counter-clockwise inside a circle) and `arc` (the distance the center has travelled
+to the right, up one that descends to the left, counter-clockwise inside a circle) and `arc` (the distance the center has travelled
 along t: its rate is t . v). A point mass is a body of radius 0.
 
 >>> import sympy as sp
@@ -27,23 +27,39 @@ from derive.parts.places import turned
 
 @dataclass(frozen=True)
 class Plane:
-    """A fixed plane through `through`, descending to the right at `angle` (0 is a level floor).
-    Down-slope unit vector (cos angle, -sin angle), normal (sin angle, cos angle). `height` is the
-    drop from where bodies start to the bottom, when given."""
+    """A fixed plane through `through`, descending at `angle` (0 is a level floor) to the right
+    or, `descends="left"`, to the left (s = -1): down-slope unit vector (s cos angle, -sin angle),
+    normal (s sin angle, cos angle). `height` is the drop from where bodies start to the bottom,
+    when given. A wall is a plane at pi/2: its normal points the way it descends.
+
+    >>> Plane("left_face", sp.pi / 3, descends="left").down.T
+    Matrix([[-1/2, -sqrt(3)/2]])
+    """
 
     name: str
     angle: sp.Expr
     height: sp.Expr | None = None
     through: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
     carrier: str | None = None
+    descends: str = "right"
+
+    @property
+    def _sign(self) -> int:
+        return 1 if self.descends == "right" else -1
+
+    @property
+    def line_angle(self) -> sp.Expr:
+        """The angle of its down-slope direction from +x, counter-clockwise, less pi where it
+        descends to the left (the plane's line either way)."""
+        return -self._sign * self.angle
 
     @property
     def down(self) -> sp.Matrix:
-        return sp.Matrix([sp.cos(self.angle), -sp.sin(self.angle)])
+        return sp.Matrix([self._sign * sp.cos(self.angle), -sp.sin(self.angle)])
 
     @property
     def normal(self) -> sp.Matrix:
-        return sp.Matrix([sp.sin(self.angle), sp.cos(self.angle)])
+        return sp.Matrix([self._sign * sp.sin(self.angle), sp.cos(self.angle)])
 
     def touching(self, radius: sp.Expr) -> sp.Matrix:
         """Where a body of this radius has its center when it touches the plane at `through`."""
@@ -56,10 +72,10 @@ class Plane:
         return self.normal
 
     def tangent_at(self, center: sp.Matrix, radius: sp.Expr) -> sp.Matrix:
-        return self.down
+        return self._sign * self.down
 
     def arc(self, center: sp.Matrix, radius: sp.Expr) -> sp.Expr:
-        return self.down.dot(center - sp.Matrix(self.through))
+        return self.tangent_at(center, radius).dot(center - sp.Matrix(self.through))
 
 
 @dataclass(frozen=True)
@@ -138,7 +154,7 @@ def carried(surface: Surface, coords) -> Surface:
         local = turned(-body.angle, sp.Matrix(point) - sp.Matrix(body.at))  # in the carrier's own frame
         return tuple(coords.position(surface.carrier, local))
 
-    turn = coords.angle(surface.carrier)
-    if isinstance(surface, Plane):
-        return dataclasses.replace(surface, through=moved(surface.through), angle=surface.angle + turn)
+    turn = coords.angle(surface.carrier)  # counter-clockwise, since the reference configuration
+    if isinstance(surface, Plane):  # its normal turns with the carrier: it descends less to the right
+        return dataclasses.replace(surface, through=moved(surface.through), angle=surface.angle - surface._sign * turn)
     return dataclasses.replace(surface, center=moved(surface.middle), turn=turn)
