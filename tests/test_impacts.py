@@ -80,6 +80,29 @@ def test_a_clutch_takes_the_energy_of_the_difference_of_the_rates(tmp_path):
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
 
 
+def test_the_change_of_kinetic_energy_and_the_velocity_of_the_center_of_mass_in_a_state(tmp_path):
+    """kinetic_energy_change in a state is its kinetic energy minus that of the state it comes from;
+    center_of_mass.velocity.x|y is the total momentum over the total mass (the disks' centers stay
+    on the axle: zero)."""
+    text = DISKS.replace("EVENT", "{lock: upper, to: lower}").replace("question:", (
+        "  dK: {meaning: change of kinetic energy, of: kinetic_energy_change, in: coupled, unit: J}\n"
+        "  V: {meaning: velocity of the center of mass, of: center_of_mass.velocity.x, in: coupled, unit: m/s}\n"
+        "question:"))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    assert sp.simplify(solution.expression("dK") - solution.expression("K1") + solution.expression("K0")) == 0
+    assert solution.expression("dK") != 0 and solution.expression("V") == 0
+
+
+@pytest.mark.parametrize("ask, field, words", [
+    ("{meaning: change, of: kinetic_energy_change, in: spinning, unit: J}", "ask.dK.in", "comes from no other state"),
+    ("{meaning: change, of: kinetic_energy_change.x, in: coupled, unit: J}", "ask.dK.of", "in that state minus"),
+    ("{meaning: velocity, of: center_of_mass.speed, in: coupled, unit: m/s}", "ask.dK.of", "velocity.x and velocity.y"),
+])
+def test_a_change_or_a_center_of_mass_asked_where_it_means_nothing_is_refused(tmp_path, ask, field, words):
+    text = DISKS.replace("EVENT", "{lock: upper, to: lower}").replace("question:", f"  dK: {ask}\nquestion:")
+    assert words in refused(tmp_path, text, field)
+
+
 def test_a_weld_at_the_impact_agrees_with_a_clutch_on_a_shared_axle(tmp_path):
     """Two disks that stick (a weld) on a shared axle turn as two that lock: the weld's force is
     redundant with the shaft's pin, which the impact's solve refuses as indeterminate."""
