@@ -231,43 +231,6 @@ question: |
     assert sp.simplify(solution.expression("C") - M2 * R**2 / 2 * alpha) == 0
 
 
-@pytest.mark.parametrize("problem_id", ["sticky_impact_pivoted", "sticky_impact_free", "beetle_lazy_susan"])
-def test_the_librarys_sticky_impacts_agree_with_the_impacts_of_states(problem_id):
-    """The library's `events: stick` (derive.mechanics.events: a point mass, pins at one point)
-    restated as an impact of the general parts (each body placed where the event has it, moving
-    as it does, the joint the impact makes): the velocities after and the energy change agree,
-    by both routes of each."""
-    from dataclasses import replace
-
-    from derive import library
-    from derive.mechanics import events
-    from derive.mechanics.kinematics import Coordinates
-    from derive.scene import Event, Motion, Scene
-
-    old = problem.load(library.find_problem(problem_id)).scene
-    (stick,) = old.events
-    motions = {name: old.motions.get(name, Motion()) for name in old.bodies}
-    bodies = {name: replace(body, at=motions[name].position) for name, body in old.bodies.items()}
-    scene = Scene(bodies, old.constraints)
-    coords = Coordinates(scene)
-    before = {s: sp.Integer(0) for s in coords.state}
-    for name, motion in motions.items():
-        before[coords.of(name, "x").u], before[coords.of(name, "y").u] = motion.velocity
-        if bodies[name].rotates:
-            before[coords.of(name, "theta").u] = motion.spin
-    after = Scene(bodies, old.constraints + (impacts.joint(scene, coords, before, Event("stick", stick.body, stick.to),
-                                                          "hit"),))
-    expected = events.by_conservation(old)
-    for route in ("lagrange", "newton_euler"):
-        result = impacts.impact(after, coords, before, route)
-        for name, velocities in expected.after.items():
-            kinds = ("x", "y", "theta") if bodies[name].rotates else ("x", "y")
-            for kind, value in zip(kinds, velocities):
-                assert sp.simplify(result.velocities[coords.of(name, kind).u] - value) == 0, (route, name, kind)
-        lost = impacts.energy_lost(after, coords, before, {**before, **result.velocities})
-        assert sp.simplify(lost + events.energy_change(old, expected)) == 0
-
-
 WHEEL = """\
 id: ball_off_wheel
 title: A ball bounces off the rim of a wheel on a fixed axle
