@@ -362,10 +362,6 @@ class Solution(StateAnswers, CrossChecks):
             return result.turn
         if q.detail == "energy_change":
             return events.energy_change(self.scene, result)
-        if q.detail in ("duration", "distance"):
-            if q.detail not in result.extras:
-                raise self.problem.error("ask", f"event.{q.detail} is for a skid")
-            return result.extras[q.detail]
         return events.velocity_of_center(self.scene, result)[0 if q.detail.endswith("x") else 1]
 
     def _orbit(self, detail: str, route: str) -> sp.Expr:

@@ -114,7 +114,7 @@ class Orbit:
 
 #: What an event can be asked: the change of kinetic energy, the velocity of the center of mass
 #: of the bodies after it, and (an internal turn) how far the other body turned.
-EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn", "duration", "distance")
+EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn")
 AFTER_QUANTITIES = ("velocity.x", "velocity.y", "angular_velocity")
 
 #: What an orbit can be asked, and what each needs of the orbit's description.
@@ -166,18 +166,8 @@ class Bounce:
     restitution: sp.Expr
 
 
-@dataclass(frozen=True)
-class Skid:
-    """A round `body` on a level floor, launched with a velocity and spin that do not roll, slides
-    under kinetic friction `friction` (a coefficient) until it rolls without slipping."""
-
-    name: str
-    body: str
-    friction: sp.Expr
-
-
 #: An entry of the scene's `events:` section (the states' events, derive.scene.Event, are the general form).
-LibraryEvent = Stick | InternalTurn | Bounce | Skid
+LibraryEvent = Stick | InternalTurn | Bounce
 
 
 @dataclass(frozen=True)
