@@ -362,10 +362,6 @@ class Solution(StateAnswers, CrossChecks):
             return result.turn
         if q.detail == "energy_change":
             return events.energy_change(self.scene, result)
-        if q.detail in ("duration", "distance"):
-            if q.detail not in result.extras:
-                raise self.problem.error("ask", f"event.{q.detail} is for a skid")
-            return result.extras[q.detail]
         return events.velocity_of_center(self.scene, result)[0 if q.detail.endswith("x") else 1]
 
     def _orbit(self, detail: str, route: str) -> sp.Expr:
@@ -474,7 +470,9 @@ class Solution(StateAnswers, CrossChecks):
             return self._conditions()
 
     def _conditions(self) -> list[tuple[sp.Expr, bool, str]]:
-        result = []
+        # the file's own conditions on parameters alone first: where one breaks, its words say why
+        # (an impact parameter beyond the sphere's radius, before the engine finds the hit off it)
+        result = self._declared(answers=False)
         orbit = self.scene.orbit
         if orbit is not None and orbit.eccentricity is not None:
             result.append((1 - orbit.eccentricity, True, "e >= 1 is not an ellipse but a parabola or a hyperbola"))
@@ -503,10 +501,16 @@ class Solution(StateAnswers, CrossChecks):
                 result.append((tidy(oscillation.stiffness - oscillation.damping**2 / 4), True,
                                "the damping is too strong at these parameters: it does not oscillate "
                                "(overdamped, c^2/4 >= k)"))
-        for declared in self.problem.conditions:  # the problem file's own, answers substituted
-            answers = {d: self.expression(name) for d, name in declared.answers.items()}
-            result += [(difference.xreplace(answers), strict, f"{declared.text} does not hold: {declared.because}")
-                       for difference, strict in declared.parts]
+        return result + self._declared(answers=True)
+
+    def _declared(self, answers: bool) -> list[tuple[sp.Expr, bool, str]]:
+        """The problem file's own conditions that read answers (substituted), or those that do not."""
+        result = []
+        for declared in self.problem.conditions:
+            if bool(declared.answers) == answers:
+                values = {d: self.expression(name) for d, name in declared.answers.items()}
+                result += [(difference.xreplace(values), strict, f"{declared.text} does not hold: {declared.because}")
+                           for difference, strict in declared.parts]
         return result
 
     def _sample(self, expr: sp.Expr) -> float:

@@ -35,7 +35,7 @@ from derive.parts.pin import Pin
 from derive.parts.surfaces import Plane
 from derive.parts.torque import Torque
 from derive.problem import Problem
-from derive.scene import Bounce, Quantity, Stick
+from derive.scene import Event, Quantity
 
 #: Round shapes whose moments students mix up (same size name: radius).
 ROUND = ("ring", "disk", "sphere", "spherical_shell", "cylinder", "cylindrical_shell")
@@ -193,18 +193,22 @@ def _angles(problem: Problem) -> Mistakes:
     return result
 
 
+def _impacts(problem: Problem) -> list[Event]:
+    """The impacts of the scene's states (`event:`) of one body on another: sticks and bounces."""
+    return [s.event for s in problem.scene.states.values() if s.event and s.event.kind in ("stick", "bounce")]
+
+
 def _points(problem: Problem) -> Mistakes:
     """The wrong point for angular momentum in an impact: a free body's center taken as fixed
     (an axle added), or a pivoted body's momentum conserved as if free (its axle removed)."""
     scene = problem.scene
-    if not scene.events:
+    if not _impacts(problem):
         return []
     result = [(f"angular momentum about the {pin.body}'s {pin.name} conserved as if it were free",
                _with_scene(problem, constraints=tuple(c for c in scene.constraints if c is not pin)))
               for pin in _pins(problem)]
     pinned = {pin.body for pin in _pins(problem)}
-    struck = {e.to for e in scene.events if isinstance(e, Stick)} | {e.off for e in scene.events if isinstance(e, Bounce)}
-    for name in sorted(struck - pinned):
+    for name in sorted({e.to for e in _impacts(problem)} - pinned):
         if scene.bodies[name].rotates:
             axle = Pin("axle", name, (sp.Integer(0), sp.Integer(0)))
             result.append((f"angular momentum about the {name}'s center, as if it were fixed",
@@ -214,14 +218,14 @@ def _points(problem: Problem) -> Mistakes:
 
 def _collisions(problem: Problem) -> Mistakes:
     """A bounce taken as elastic (e = 1) or as perfectly inelastic (e = 0)."""
-    events, result = problem.scene.events, []
-    for event in events:
-        if isinstance(event, Bounce):
-            for e, kind in ((1, "elastic"), (0, "perfectly inelastic")):
-                if event.restitution != e:
-                    changed = dataclasses.replace(event, restitution=sp.Integer(e))
-                    result.append((f"the collision taken as {kind}",
-                                   _with_scene(problem, events=_replaced(events, event, changed))))
+    states, result = problem.scene.states, []
+    for name, state in states.items():
+        if state.event is None or state.event.kind != "bounce":
+            continue
+        for e, kind in ((1, "elastic"), (0, "perfectly inelastic")):
+            if state.event.restitution != e:
+                changed = dataclasses.replace(state, event=dataclasses.replace(state.event, restitution=sp.Integer(e)))
+                result.append((f"the collision taken as {kind}", _with_scene(problem, states={**states, name: changed})))
     return result
 
 

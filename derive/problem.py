@@ -281,8 +281,12 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
     if quantity.kind == "time" and scene.states[raw].rates:
         raise reader.fail(field, f"the state {raw} is the placement, at time zero: ask the time in a state the "
                                  "motion gets to (when:)")
+    if quantity.kind == "kinetic_energy_change" and scene.states[raw].start is None:
+        raise reader.fail(field, f"the state {raw} comes from no other state: ask the change of kinetic energy in a "
+                                 "state with from:")
     event = scene.states[raw].event
-    if event and event.kind == "move" and quantity.kind not in ("angular_velocity", "kinetic_energy", "speed"):
+    if event and event.kind == "move" and quantity.kind not in ("angular_velocity", "kinetic_energy",
+                                                                "kinetic_energy_change", "speed"):
         raise reader.fail(field, f"after a move, where the bodies are depends on how it is made (a turntable turns "
                                  f"while a child walks on it), and so do the directions of their velocities and "
                                  f"forces: in the state {raw} ask an angular velocity, a speed or the kinetic energy")

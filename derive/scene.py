@@ -114,7 +114,7 @@ class Orbit:
 
 #: What an event can be asked: the change of kinetic energy, the velocity of the center of mass
 #: of the bodies after it, and (an internal turn) how far the other body turned.
-EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn", "duration", "distance")
+EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn")
 AFTER_QUANTITIES = ("velocity.x", "velocity.y", "angular_velocity")
 
 #: What an orbit can be asked, and what each needs of the orbit's description.
@@ -166,18 +166,8 @@ class Bounce:
     restitution: sp.Expr
 
 
-@dataclass(frozen=True)
-class Skid:
-    """A round `body` on a level floor, launched with a velocity and spin that do not roll, slides
-    under kinetic friction `friction` (a coefficient) until it rolls without slipping."""
-
-    name: str
-    body: str
-    friction: sp.Expr
-
-
 #: An entry of the scene's `events:` section (the states' events, derive.scene.Event, are the general form).
-LibraryEvent = Stick | InternalTurn | Bounce | Skid
+LibraryEvent = Stick | InternalTurn | Bounce
 
 
 @dataclass(frozen=True)
@@ -346,12 +336,14 @@ class Scene:
 
 #: Quantities that come out of the equations of motion (both routes).
 DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation",
-                 "equilibrium", "velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy"}
+                 "equilibrium", "velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
+                 "kinetic_energy_change", "center_of_mass_velocity"}
 #: Read in a state (`in: STATE`): the rates only there, the others at the placement at rest without it.
 STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velocity", "angular_velocity", "speed",
-               "position", "angle", "time", "kinetic_energy"}
+               "position", "angle", "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass_velocity"}
 #: What a state gives: read only with `in: STATE` (positions and times only in a state reached).
-RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy"}
+RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
+              "kinetic_energy_change", "center_of_mass_velocity"}
 #: Answered by a small system of derive.mechanics, with a second route of its own.
 SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rotation", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
@@ -372,7 +364,9 @@ class Quantity:
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "rotation" (a turning body; ROTATION_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
-    the scene rests: derive.mechanics.equilibrium).
+    the scene rests: derive.mechanics.equilibrium); read in a state (RATE_KINDS) also
+    "kinetic_energy_change" (every body's, in the state minus in the state it comes from) and
+    "center_of_mass_velocity" (of every body; x or y).
     """
 
     kind: str
@@ -383,7 +377,7 @@ class Quantity:
 
 #: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
 RESERVED_NAMES = ("top", "spinning_wheel", "system", "event", "orbit", "oscillation", "small_oscillation", "ground",
-                  "time", "kinetic_energy")
+                  "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass")
 
 #: What a body on a surface can be asked, besides what every body can.
 CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
@@ -457,6 +451,17 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError("kinetic_energy is asked as of: kinetic_energy, in: STATE (of every body, in that state)"
                              if scene.states else "kinetic_energy needs a state: add scene.states")
         return Quantity("kinetic_energy", None, None)
+    if head == "kinetic_energy_change":
+        if rest or not scene.states:
+            raise ValueError("kinetic_energy_change is asked as of: kinetic_energy_change, in: STATE (of every body, "
+                             "in that state minus in the state it comes from)" if scene.states else
+                             "kinetic_energy_change needs a state: add scene.states")
+        return Quantity("kinetic_energy_change", None, None)
+    if head == "center_of_mass":
+        if rest not in ("velocity.x", "velocity.y") or not scene.states:
+            raise ValueError("the center of mass of every body has velocity.x and velocity.y, asked in: STATE"
+                             if scene.states else "center_of_mass.velocity needs a state: add scene.states")
+        return Quantity("center_of_mass_velocity", None, rest[-1])
     if head == "oscillation":
         if rest != "period":
             raise ValueError("an oscillation at a given amplitude has period (give amplitude:)")

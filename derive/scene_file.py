@@ -26,7 +26,7 @@ from derive.reader import Reader, describe
 from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
 from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Bounce, InternalTurn, Motion, Orbit,
-                          Rotation, Scene, Skid, SpinningWheel, StandingWave, Stick, Top)
+                          Rotation, Scene, SpinningWheel, StandingWave, Stick, Top)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
@@ -201,21 +201,18 @@ def _events(reader: Reader, raw, bodies: dict[str, Body]) -> tuple:
     result = []
     for i, spec in enumerate(raw):
         field = f"scene.events[{i}]"
-        spec = reader.mapping(spec, field, optional=("stick", "internal_turn", "bounce", "skid"))
+        spec = reader.mapping(spec, field, optional=("stick", "internal_turn", "bounce"))
         if len(spec) != 1:
-            raise reader.fail(field, "expected one event kind (stick, bounce, internal_turn, skid)")
+            raise reader.fail(field, "expected one event kind (stick, bounce, internal_turn)")
         (kind, detail), = spec.items()
-        keys = {"stick": ("body", "to"), "bounce": ("body", "off", "restitution"), "skid": ("body", "friction"),
+        keys = {"stick": ("body", "to"), "bounce": ("body", "off", "restitution"),
                 "internal_turn": ("body", "relative_to", "angle")}[kind]
         detail = reader.mapping(detail, f"{field}.{kind}", required=keys)
-        for key in keys[:1] if kind == "skid" else keys[:2]:
+        for key in keys[:2]:
             if detail[key] not in bodies:
                 raise reader.fail(f"{field}.{kind}.{key}", no_such("body", detail[key], bodies, "bodies"))
         if kind == "stick":
             result.append(Stick(f"event{i}", detail["body"], detail["to"]))
-        elif kind == "skid":
-            mu = reader.positive(detail["friction"], f"{field}.skid.friction", "1", "a coefficient of friction")
-            result.append(Skid(f"event{i}", detail["body"], mu))
         elif kind == "bounce":
             e = reader.dimensioned(detail["restitution"], f"{field}.bounce.restitution", "1", "a restitution")
             bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]

@@ -306,12 +306,21 @@ class StateAnswers:
 
     def _rate(self, q: Quantity, name: str) -> sp.Expr:
         """A body's velocity, speed, angular velocity, position or angle in a named state, the
-        kinetic energy of every body there, or the time the motion takes to get there."""
+        kinetic energy of every body there (or its change from the state it comes from), the
+        velocity of their center of mass, or the time the motion takes to get there."""
         values, coords = self.states[name].values, self.coordinates
         if q.kind == "time":
             return self._duration(name)[0]
+        kinetic = lagrange.energies(self.dynamics_scene, coords)[0]
         if q.kind == "kinetic_energy":
-            return tidy(lagrange.energies(self.dynamics_scene, coords)[0].xreplace(values))
+            return tidy(kinetic.xreplace(values))
+        if q.kind == "kinetic_energy_change":
+            before = self.states[self.scene.states[name].start].values
+            return tidy(kinetic.xreplace(values) - kinetic.xreplace(before))
+        if q.kind == "center_of_mass_velocity":
+            bodies = self.scene.bodies.values()
+            momentum = sum((b.mass * values[coords.of(b.name, q.detail).u] for b in bodies), sp.Integer(0))
+            return tidy(momentum / sum((b.mass for b in bodies), sp.Integer(0)))
         if q.kind in ("angle", "position"):
             kind = "theta" if q.kind == "angle" else q.detail
             return tidy(self.scene.bodies[q.target].placed(kind) + values[coords.of(q.target, kind).q])

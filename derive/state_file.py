@@ -124,9 +124,17 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
         if "restitution" not in raw:
             raise reader.fail(f"{field}.event.restitution", "missing: a bounce gives its coefficient of restitution "
                                                              "(1 elastic, 0 they move together along the normal)")
-        restitution = reader.dimensioned(raw["restitution"], f"{field}.event.restitution", "1",
-                                         "a coefficient of restitution")
+        restitution = _restitution(reader, raw["restitution"], f"{field}.event.restitution")
     return State(name, start=spec["from"], event=Event(kind, body, to, restitution))
+
+
+def _restitution(reader: Reader, raw, field: str):
+    """A coefficient of restitution: a number, or parameters whose ranges keep it, in [0, 1]."""
+    e = reader.dimensioned(raw, field, "1", "a coefficient of restitution")
+    bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]
+    if e.is_negative or (not e.free_symbols and e > 1) or any(b[0] < 0 or b[1] > 1 for b in bounds):
+        raise reader.fail(field, "a coefficient of restitution lies in [0, 1]")
+    return e
 
 
 def _move(reader: Reader, body: str, to, field: str, places, constraints: list, start: str,

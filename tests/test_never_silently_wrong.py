@@ -177,7 +177,7 @@ def test_a_cord_that_would_push_is_refused(tmp_path):
 @pytest.mark.parametrize("change, field", [
     (lambda t: t.replace("  g: {meaning: grav", "  H: {meaning: height, unit: m, value: 1}\n  g: {meaning: grav"),
      "parameters.H: no part of the scene"),
-    (lambda t: t.replace("ask:", "  events:\n    - skid: {body: ball, friction: mu_k}\nask:"), "scene.events: no ask"),
+    (lambda t: t.replace("ask:", "  events:\n    - stick: {body: ball, to: ball}\nask:"), "scene.events: no ask"),
     (lambda t: t.split("ask:")[0] + "ask:\n  I: {meaning: inertia, of: ball.inertia, unit: kg*m^2}\n"
      "question: |\n  A sphere of mass {{ M }}, {{ R }}, {{ theta }}, {{ mu_s }}, {{ mu_k }}.\n",
      "scene.bodies.ball.friction: nothing asked depends on the motion"),

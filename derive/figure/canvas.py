@@ -6,7 +6,7 @@ import math
 import sympy as sp
 
 from derive import inertia, render, units
-from derive.scene import TIME, Body
+from derive.scene import TIME, Body, Motion
 
 #: Styles every figure declares (TikZ libraries: arrows.meta, patterns).
 STYLES = (r"font=\small, >={Stealth[length=2mm]}, "
@@ -18,6 +18,21 @@ STYLES = (r"font=\small, >={Stealth[length=2mm]}, "
 #: TikZ libraries the figures use (the preamble loads them).
 LIBRARIES = ("arrows.meta", "patterns")
 WIDTH = 6.0  # cm, the figure's overall width
+
+
+def given_motion(scene, name: str) -> Motion | None:
+    """A body's motion as the file gives it: its `velocity:` (a body rolling at a given speed),
+    else its rates in the first state given by rates (`states:`), where it is placed; None where
+    neither moves it."""
+    given = scene.motions.get(name)
+    if given is not None and (given.spin != 0 or any(v != 0 for v in given.velocity)):
+        return given
+    first = next((s for s in scene.states.values() if s.rates), None)
+    rates = {kind: value for body, kind, value in (first.rates if first else ()) if body == name}
+    if not any(v != 0 for v in rates.values()):
+        return None
+    zero = sp.Integer(0)
+    return Motion(scene.bodies[name].at, (rates.get("x", zero), rates.get("y", zero)), rates.get("theta", zero))
 
 
 def _f(x: float) -> str:
@@ -251,14 +266,11 @@ def _label_mass(fig: _Figure, body: Body, at, direction) -> None:
     fig.label(at, direction, f"${text}$" if text else None)
 
 
-def regime_text(fig: _Figure, contact, skid=None) -> str:
+def regime_text(fig: _Figure, contact) -> str:
     """What a textbook writes at a contact: "no slip" (rolling without slipping, with mu_s when
-    given), "smooth" (sliding without friction), "rough, mu_s, mu_k" (the coefficients the file gives); a body that
-    skids before it rolls (a Skid event), "rough" with the skid's coefficient."""
+    given), "smooth" (sliding without friction), "rough, mu_s, mu_k" (the coefficients the file gives)."""
     static, kinetic = fig.tex(contact.static), fig.tex(contact.kinetic)
-    if skid is not None:
-        words = ["rough"] + [f"${t}$" for t in (fig.tex(skid.friction),) if t]
-    elif contact.rolling:
+    if contact.rolling:
         words = ["no slip"] + [f"${t}$" for t in (static, kinetic) if t]
     elif contact.has_friction:  # the engine decides whether it holds: both coefficients the file gives
         words = ["rough"] + [f"${t}$" for t in (static, kinetic) if t]

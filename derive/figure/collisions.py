@@ -5,21 +5,29 @@ import math
 
 import sympy as sp
 
-from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt
+from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt, given_motion
 from derive.parts.pin import Pin
-from derive.scene import Bounce, Stick
+from derive.scene import Event
+
+
+def struck(scene) -> Event | None:
+    """The scene's first impact (a stick or a bounce, a state's `event:`) in a state given by
+    rates, where the striking body moves: what a collision figure draws; None for none."""
+    return next((s.event for s in scene.states.values() if s.event and s.event.kind in ("stick", "bounce")
+                 and scene.states[s.start].rates and given_motion(scene, s.event.body) is not None), None)
 
 
 def _impact(fig: _Figure) -> None:
     """A collision: the struck body at the origin, the incoming body on its line of motion with its
     velocity, and the impact parameter (the line's distance from the struck body's center)."""
     scene = fig.scene
-    event = next(e for e in scene.events if isinstance(e, (Stick, Bounce)))
-    target_name = event.to if isinstance(event, Stick) else event.off
+    event = struck(scene)
+    target_name = event.to
     target, mover = scene.bodies[target_name], scene.bodies[event.body]
-    motion = scene.motions[event.body]
+    motion = given_motion(scene, event.body)
+    x, y = (p - o for p, o in zip(motion.position, target.at))  # from the struck body's center
     # the drawing scale: the struck body (or the farthest contact point) is about 1.3 cm
-    position = [fig.num(p, 0) for p in motion.position]
+    position = [fig.num(x, 0), fig.num(y, 0)]
     reach = max(math.hypot(*position), fig.size(target, "radius", 0), fig.size(target, "length", 0) / 2, 1e-9)
     scale = (2.4 if target.shape == "rod" else 1.3) / reach
     size = target.sizes.get("radius") or (target.sizes.get("length", 0) / 2)
@@ -33,7 +41,7 @@ def _impact(fig: _Figure) -> None:
         fig.dimension((-drawn, 0), (drawn, 0), fig.tex(target.sizes["length"]), side=-1, gap=0.3)
     if pin is not None:
         fig.axle((0, 0))
-    spin = scene.motions.get(target_name)
+    spin = given_motion(scene, target_name)
     if spin is not None and spin.spin != 0:
         sign = 1 if fig.num(spin.spin, 1) > 0 else -1
         fig.spin((0, 0), drawn + 0.25, sign, fig.tex(sp.Abs(spin.spin)), at=135)
@@ -54,7 +62,6 @@ def _impact(fig: _Figure) -> None:
     fig.arrow(_add(incoming, along, 0.15), (0.85 * along[0], 0.85 * along[1]), "velocity",
               fig.m(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2)), toward=left)
     fig.add(f"\\fill[red!70!black] {_pt(hit)} circle (0.04);")
-    x, y = motion.position
     distance = sp.simplify(abs(x * motion.velocity[1] - y * motion.velocity[0])
                            / sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2))
     foot_length = hit[0] * (-along[1]) + hit[1] * along[0]

@@ -9,7 +9,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.figure.bodies import _placed
-from derive.figure.collisions import _impact
+from derive.figure.collisions import _impact, struck
 from derive.figure.inertia import _specimens
 from derive.figure.joints import _pinned
 from derive.figure.orbits import _orbit
@@ -21,7 +21,6 @@ from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin
 from derive.parts.surfaces import Circle, Plane
-from derive.scene import Bounce, Stick
 
 
 def _on_one_surface(problem) -> bool:
@@ -51,11 +50,10 @@ def _on_one_surface(problem) -> bool:
 def _collision(problem) -> bool:
     """A body struck by another on its line of motion, the struck one free or on an axle at its center."""
     scene = problem.scene
-    events = [e for e in scene.events if isinstance(e, (Stick, Bounce))]
-    if not events or not any(e.body in scene.motions for e in events) or scene.loads:
+    event = struck(scene)
+    if event is None or scene.loads:
         return False
-    target = events[0].to if isinstance(events[0], Stick) else events[0].off
-    return all(isinstance(c, Pin) and c.body == target and c.to is None and all(o == 0 for o in c.offset)
+    return all(isinstance(c, Pin) and c.body == event.to and c.to is None and all(o == 0 for o in c.offset)
                for c in scene.constraints)
 
 

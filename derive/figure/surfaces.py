@@ -1,21 +1,21 @@
-"""Bodies on a surface: an incline, a level floor (with a pulled spool or a skid), a loop-the-loop."""
+"""Bodies on a surface: an incline, a level floor (with a pulled spool or a body that skids), a loop-the-loop."""
 from __future__ import annotations
 
 import math
 
 import sympy as sp
 
-from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit, regime_text
+from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit, given_motion, regime_text
 from derive.render import tex_escape
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.surfaces import Circle
-from derive.scene import Body, Skid
+from derive.scene import Body
 
 
 def _on_surface(fig: _Figure) -> None:
     """Bodies on an incline or a level floor: the surface, each body touching it, gravity,
-    pulls, velocities and a skid's friction."""
+    pulls, velocities and the kinetic friction of a skid."""
     scene = fig.scene
     contacts = [c for c in scene.constraints if isinstance(c, Contact)]
     surface = scene.surfaces[contacts[0].surface]
@@ -48,7 +48,7 @@ def _on_surface(fig: _Figure) -> None:
         foot = _add((0, height), down, along)
         center = _add(foot, normal, r)
         fig.body(body, center, r, -math.degrees(angle), block=body.shape == "point")
-        regime = regime_text(fig, contact, _skid(scene, body))
+        regime = regime_text(fig, contact)
         if several:  # each body's name above it, its regime along the slope under it
             fig.label(_add(center, normal, r + 0.05), normal, f"\\scriptsize {tex_escape(body.name)}")
             fig.label(_add(foot, normal, -0.03), (0, -1), regime, f"rotate={_f(-math.degrees(angle))}")
@@ -60,11 +60,6 @@ def _on_surface(fig: _Figure) -> None:
         along += r + 0.4
     if several and scene.gravity is not None:
         fig.arrow((width, 0.85 * height), (0, -0.7), "force", "$\\vec g$")
-
-
-def _skid(scene, body: Body):
-    """The body's skid (it slides before it rolls), if the scene has one."""
-    return next((e for e in scene.events if isinstance(e, Skid) and e.body == body.name), None)
 
 
 def _reference_size(fig: _Figure, size_expr, drawn: float):
@@ -84,7 +79,7 @@ def _drawn_radius(fig: _Figure, body: Body, reference, low: float = 0.18, high: 
 
 
 def _floor(fig: _Figure, contacts: list[Contact]) -> None:
-    """A level floor: each body on it, with its pulls, launch velocity and a skid's friction."""
+    """A level floor: each body on it, with its pulls, launch velocity and the kinetic friction of a skid."""
     scene = fig.scene
     fig.ground(-0.4, 5.4)
     x = 1.4
@@ -95,22 +90,24 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
         r = 1.0 if pull else 0.7
         center = (x, r)
         fig.body(body, center, r, block=body.shape == "point")
-        fig.label((x + r + 0.12, 0.02), (1, 1), regime_text(fig, contact, _skid(scene, body)))
+        fig.label((x + r + 0.12, 0.02), (1, 1), regime_text(fig, contact))
         if pull:
             _spool(fig, body, pull, center, r)
         if scene.gravity is not None:
             fig.gravity_arrow(center, body, r * 0.55, toward=(-1, 0) if pull else (1, 0))
-        motion = scene.motions.get(body.name)
+        motion = given_motion(scene, body.name)
         if motion is not None and any(v != 0 for v in motion.velocity):
             v = (fig.num(motion.velocity[0], 1), fig.num(motion.velocity[1], 0))
             n = math.hypot(*v) or 1.0
             fig.arrow(_add(center, (0, r + 0.25)), (1.2 * v[0] / n, 1.2 * v[1] / n), "velocity",
                       fig.m(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2)))
-            skid = next((e for e in scene.events if isinstance(e, Skid) and e.body == body.name), None)
-            if skid is not None:
-                text = fig.product(skid.friction, body.mass, scene.gravity.g) if scene.gravity else fig.tex(skid.friction)
-                fig.arrow((x - 0.05, 0.08), (-1.0 * v[0] / n, 0), "force", f"${text}$" if text else None,
-                          toward=(-v[0] / n, 1))
+        if motion is not None and contact.kinetic is not None and not contact.rolling:
+            # kinetic friction against the slip of the contact point, a radius below the center
+            slip = fig.num(motion.velocity[0] + motion.spin * body.sizes.get("radius", 0), 0)
+            way = -1 if slip > 0 else 1
+            text = fig.product(contact.kinetic, body.mass, scene.gravity.g) if scene.gravity else fig.tex(contact.kinetic)
+            fig.arrow((x + 0.05 * way, 0.08), (way * 1.0, 0), "force", f"${text}$" if text else None,
+                      toward=(way, 1))
         if "radius" in body.sizes and fig.tex(body.sizes["radius"]) and not pull:
             fig.line(center, _add(center, _unit(150), r), "thin")
             fig.label(_add(center, _unit(150), r * 0.55), (0, 1), fig.m(body.sizes['radius']))
@@ -161,7 +158,7 @@ def _loop(fig: _Figure, loop: Circle, contacts: list[Contact]) -> None:
         normal = (-tangent[1], tangent[0])
         centre = _add(point, normal, r)
         fig.body(body, centre, r, block=body.shape == "point")
-        regime = regime_text(fig, contact, _skid(scene, body))
+        regime = regime_text(fig, contact)
         if len(contacts) > 1:
             regime = regime.replace("scriptsize ", f"scriptsize {tex_escape(body.name)}: ")
         fig.label(_add(centre, normal, r + 0.05), (1, 0.4), regime)

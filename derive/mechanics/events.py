@@ -21,14 +21,13 @@ R*m*v/(I + R**2*m)
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import sympy as sp
 
 from derive.mechanics.derivation import Step, solve_linear, tidy
-from derive.mechanics import skid
 from derive.parts.pin import Pin
-from derive.scene import Bounce, InternalTurn, Motion, Scene, Skid, Stick
+from derive.scene import Bounce, InternalTurn, Motion, Scene, Stick
 
 
 class EventError(ValueError):
@@ -43,7 +42,6 @@ class EventResult:
     after: dict[str, tuple[sp.Expr, sp.Expr, sp.Expr]]
     turn: sp.Expr | None
     steps: tuple[Step, ...]
-    extras: dict[str, sp.Expr] = field(default_factory=dict)  # duration, distance, energy_change
 
 
 def _cross(r, v) -> sp.Expr:
@@ -145,11 +143,9 @@ class _Event:
 
 
 def _not_an_impact(scene: Scene, by_conservation: bool) -> EventResult | None:
-    """Internal turns and skids have routes of their own; None for an impact."""
+    """Internal turns have routes of their own; None for an impact."""
     if any(isinstance(e, InternalTurn) for e in scene.events):
         return _turn(scene, "conservation" if by_conservation else "torques")
-    if any(isinstance(e, Skid) for e in scene.events):
-        return _skid(scene, "conservation" if by_conservation else "newton_euler")
     return None
 
 
@@ -206,8 +202,6 @@ def by_impulses(scene: Scene) -> EventResult:
 
 def energy_change(scene: Scene, result: EventResult) -> sp.Expr:
     """Kinetic energy after minus before, in a factored form (no cancelling difference)."""
-    if "energy_change" in result.extras:
-        return result.extras["energy_change"]
     def kinetic(states):
         return sum((scene.bodies[n].mass * (vx**2 + vy**2) / 2
                     + (scene.bodies[n].inertia * w**2 / 2 if scene.bodies[n].rotates else 0))
@@ -247,25 +241,3 @@ def _turn(scene: Scene, route: str) -> EventResult:
     steps = (Step(text, equations), Step("Over the whole internal turn", (sp.Eq(sp.Symbol("Delta_theta"), total),)))
     zero = (sp.Integer(0),) * 3
     return EventResult(route, {turn.body: zero, turn.relative_to: zero}, total, steps)
-
-
-def _skid(scene: Scene, route: str) -> EventResult:
-    """Skidding to rolling on a level floor (see derive.mechanics.skid)."""
-    (event,) = [e for e in scene.events if isinstance(e, Skid)]
-    body = scene.bodies[event.body]
-    contact = scene.contact_of(event.body)
-    if "radius" not in body.sizes or contact is None or not contact.rolling:
-        raise EventError("a skid is for a round body on a floor (on: FLOOR, contact: rolling)")
-    floor = scene.surfaces[contact.surface]
-    if getattr(floor, "angle", None) != 0:
-        raise EventError("a skid is on a level floor (an incline of angle 0)")
-    motion = scene.motions.get(event.body, Motion())
-    if motion.velocity[1] != 0:
-        raise EventError("a skid starts along the floor: give velocity [v0, 0]")
-    result = skid.skid(body.mass, body.inertia, body.sizes["radius"], motion.velocity[0], motion.spin,
-                       event.friction, scene.gravity.g, route)
-    steps = (Step("Until it rolls: speed, spin, time, distance and energy",
-                  tuple(sp.Eq(sp.Symbol(k), v) for k, v in result.items())),)
-    after = {event.body: (result["speed"], sp.Integer(0), result["spin"])}
-    extras = {k: result[k] for k in ("duration", "distance", "energy_change")}
-    return EventResult(route, after, None, steps, extras)
