@@ -64,7 +64,7 @@ class Result:
     (Answer), the derivation (`solution`, an answers.Solution) and the report `derive solve`
     prints (`report`, the JSON contract; `as_text()`, `as_latex()`, `as_json()`)."""
 
-    def __init__(self, problem: Problem, solution: Solution, values: Mapping | None, digits: int):
+    def __init__(self, problem: Problem, solution: Solution, values: Mapping | None, digits: int | None):
         self.problem, self.solution, self.digits = problem, solution, digits
         self.values = _overrides(values)  # as `--set` takes them
         self.report = report.solve(problem, self.values, digits, solution)
@@ -85,7 +85,7 @@ class Result:
                       _digits(self.digits if digits is None else digits))
 
     def as_text(self) -> str:
-        return report.as_text(self.report)
+        return report.as_text(self.report, self.solution)
 
     def as_latex(self) -> str:
         return report.as_latex(self.report)
@@ -144,15 +144,16 @@ def _whole(name: str, value, low: int | None = None, high: int | None = None) ->
     return value
 
 
-def _digits(digits) -> int:
-    return _whole("digits", digits, 1, MAX_DIGITS)
+def _digits(digits) -> int | None:
+    return None if digits is None else _whole("digits", digits, 1, MAX_DIGITS)
 
 
-def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, digits: int = 15) -> Result:
+def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, digits: int | None = 15) -> Result:
     """Derive a problem (a Problem, a problem file or a library id) and answer it at `values`:
     {name: value}, a number in the parameter's declared unit or a text with a unit ("200 g"), as
     `derive solve --set` takes them. Parameters not given keep the file's value; an answer that
-    uses one with no value has its expression only. Values have `digits` significant digits.
+    uses one with no value has its expression only. Values have `digits` significant digits
+    (None: each answer the significant figures its inputs support).
 
     >>> solve("rod_endpoint", digits=3)["I"]
     Answer(I = L**2*m/3)

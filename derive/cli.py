@@ -102,13 +102,13 @@ def _show_version(ctx: click.Context, _param, shown: bool) -> None:
         ctx.exit()
 
 
-def course_digits(digits: int | None) -> int:
-    """--digits, else the course defaults' (derive.toml), else 15."""
+def course_digits(digits: int | None, otherwise: int | None = 15) -> int | None:
+    """--digits, else the course defaults' (derive.toml), else `otherwise`."""
     if digits is not None:
         return digits
     from derive import defaults  # light: no sympy
 
-    return defaults.load().digits or 15
+    return defaults.load().digits or otherwise
 
 
 class DeriveGroup(click.Group):
@@ -169,7 +169,8 @@ def main(time_limit: float | None) -> None:
 @click.option("--format", "fmt", type=FORMATS, default="text", show_default=True, help="Output format.")
 @click.option("--digits", type=click.IntRange(1, MAX_DIGITS), default=None,
               help="Significant digits of every value (each one correct to the digits shown). "
-                   "[default: derive.toml's digits, else 15]")
+                   "[default: derive.toml's digits, else the significant figures the inputs support "
+                   "(15 in JSON)]")
 @reports_errors
 def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | None) -> None:
     """Derive a problem and print its equations of motion, answers and checks.
@@ -180,7 +181,7 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | No
     """
     from derive import api
 
-    result = api.solve(problem, parse_assignments(assignments), course_digits(digits))
+    result = api.solve(problem, parse_assignments(assignments), course_digits(digits, 15 if fmt == "json" else None))
     click.echo({"text": result.as_text, "latex": result.as_latex, "json": result.as_json}[fmt]())
 
 
@@ -265,9 +266,9 @@ def list_problems(topic: str | None) -> None:
             rows.append((p.id, p.topic, p.title))
     if not rows:
         raise BadInput(f"no problems of topic {topic!r}")
-    width = max(len(r[0]) for r in rows)
+    widths = [max(len(r[k]) for r in rows) for k in (0, 1)]  # aligned columns, the title last
     for problem_id, problem_topic, title in rows:
-        click.echo(f"{problem_id:<{width}}  {problem_topic:<8}  {title}")
+        click.echo(f"{problem_id:<{widths[0]}}  {problem_topic:<{widths[1]}}  {title}")
 
 
 @main.command()

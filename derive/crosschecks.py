@@ -116,7 +116,9 @@ class CrossChecks:
                 )
             found[name] = ask.unit
         return Check("dimensions", True, "dimensional analysis", ", ".join(f"{k} [{v}]" for k, v in found.items()),
-                     "Every answer has the units it should: " + ", ".join(f"{k} in {v}" for k, v in found.items()) + ".")
+                     "Every answer has the units it should: " + ", ".join(
+                         f"{k} in {units.unicode_unit(v)}" if units.unicode_unit(v) else f"{k} a pure number"
+                         for k, v in found.items()) + ".")
 
     def _routes_check(self) -> Check:
         """Lagrange's method and Newton–Euler give the same answers (symbolically) and the same

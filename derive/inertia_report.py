@@ -18,6 +18,7 @@ import sympy as sp
 
 from derive import expr, inertia, numeric, units
 from derive.errors import InputError
+from derive.terminal import indented, pretty
 from derive.spelling import did_you_mean
 
 JSON_KEYS = ("shape", "axis", "integral", "mass", "I", "ratio", "tensor", "value")
@@ -120,6 +121,8 @@ def report(shape: str, axis: str | None, assignments: dict[str, str], digits: in
         "value": numeric.evaluate(result.I, values, digits),
         "size": sp.sstr(inertia.M * body.scale**2),
         "tensor_about": f"({about})" if about else f"the center of mass {tuple(center)}",
+        "expressions": {"integral": result.integral, "mass_integral": result.mass_integral, "mass": result.mass,
+                        "I": result.I, "ratio": result.ratio, "size": inertia.M * body.scale**2, "tensor": tensor},
         "latex": {"mass_integral": sp.latex(result.mass_integral), "mass": sp.latex(result.mass),
                   "I": sp.latex(result.I), "ratio": sp.latex(result.ratio), "size": sp.latex(inertia.M * body.scale**2),
                   "tensor": None if tensor is None else sp.latex(tensor)},
@@ -127,15 +130,18 @@ def report(shape: str, axis: str | None, assignments: dict[str, str], digits: in
 
 
 def as_text(r: dict) -> str:
-    lines = [f"{r['shape']}, axis {r['axis']}",
-             f"  integral : {r['integral']}",
-             f"  mass     : M = {r['latex']['mass_integral']} = {r['mass']}",
-             f"  I        = {r['I']}  ({r['ratio']} times {r['size']})"]
-    if r["tensor"] is not None:
+    """The report for a terminal: its integrals and results drawn by sympy's pretty-printer."""
+    e = r["expressions"]
+    lines = [f"{r['shape']}, axis {r['axis']}"]
+    chain = list(dict.fromkeys([e["integral"], e["I"]]))  # a point mass has no integral to show
+    lines += indented(pretty("I = ", *[part for x in chain for part in (x, " = ")], e["ratio"], "⋅", e["size"]))
+    if e["mass_integral"] != e["mass"]:
+        lines += indented(pretty("M = ", e["mass_integral"], " = ", e["mass"]))
+    if e["tensor"] is not None:
         lines.append(f"  tensor about {r['tensor_about']}:")
-        lines += [f"    [{', '.join(row)}]" for row in r["tensor"]]
+        lines += indented(pretty("I = ", e["tensor"]), "    ")
     if r["value"] is not None:
-        lines.append(f"  value    = {r['value']} kg*m^2")
+        lines.append(f"  value: I = {r['value']} kg·m²")
     return "\n".join(lines)
 
 

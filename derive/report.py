@@ -1,9 +1,15 @@
 """A solved problem as the command line prints it: text, LaTeX or the JSON contract.
 
+The text is for a terminal: equations as sympy's unicode pretty-printer draws them, units as a
+student reads them (m/s²). Values have the digits asked for, or, given `digits=None`, each
+answer the significant figures its inputs support (`figures_supported`).
+
 >>> from derive.problem import load
 >>> result = solve(load("string_wrapped_disk"), {"m": "2", "M": "4", "R": "0.3"}, 6)
 >>> result["answers"]["a"]["value"]
 '-4.90500'
+>>> solve(load("string_wrapped_disk"), {"m": "2", "M": "4", "R": "0.3"}, None)["answers"]["a"]["value"]
+'-4.90'
 """
 from __future__ import annotations
 
@@ -12,10 +18,11 @@ import json
 import sympy as sp
 
 from derive import numeric, render, units
+from derive.terminal import indented, pretty
 from derive.answers import Solution
 from derive.mechanics.derivation import at_state
 from derive.scene import DYNAMIC_KINDS
-from derive.problem import Problem
+from derive.problem import DEFAULT_SIG_FIGS, Problem
 
 _ROUTE_TITLES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler", "integration": "Integration"}
 
@@ -29,10 +36,21 @@ def _in_unit(value_si: sp.Expr, unit: str) -> sp.Expr:
     return value_si / units.si_factor(units.parse_unit(unit))
 
 
-def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: int,
+def figures_supported(solution: Solution, name: str) -> int:
+    """The significant figures an answer's inputs support: its ask's `sig_figs`, else the fewest
+    of the parameters its expression uses (each declares its own), else DEFAULT_SIG_FIGS."""
+    problem = solution.problem
+    if problem.asks[name].sig_figs:
+        return problem.asks[name].sig_figs
+    used = solution.expression(name).free_symbols
+    return min((p.sig_figs for p in problem.parameters.values() if p.symbol in used), default=DEFAULT_SIG_FIGS)
+
+
+def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: int | None,
                   names: list[str] | None = None) -> dict[str, str | None]:
     """Each answer's value (or those `names`) in its declared unit, to `digits` significant
-    digits (the numbers of `derive solve`), after the problem's conditions are checked."""
+    digits (None: those its inputs support, `figures_supported`), the numbers of `derive solve`,
+    after the problem's conditions are checked."""
     problem = solution.problem
     broken = solution.violated(values)
     if broken:
@@ -47,23 +65,27 @@ def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: 
             continue
         expression = solution.expression(name)  # its errors (a time limit) say what they are
         try:
-            result[name] = numeric.evaluate(_in_unit(expression, ask.unit), values, digits)
+            shown = figures_supported(solution, name) if digits is None else digits
+            result[name] = numeric.evaluate(_in_unit(expression, ask.unit), values, shown)
         except (ValueError, ZeroDivisionError) as error:  # outside where the answer exists
             raise problem.error(f"ask.{name}", f"no real value at these parameters ({error})") from None
     return result
 
 
-def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int = 15,
+def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int | None = 15,
           solution: Solution | None = None) -> dict:
-    """The JSON contract of `derive solve`: parameters, answers, equations of motion, checks.
-    A Solution already derived for the problem may be passed in (it is the same derivation)."""
+    """The JSON contract of `derive solve`: parameters, answers, equations of motion, checks;
+    values to `digits` significant digits (None: each parameter its own, each answer what its
+    inputs support). A Solution already derived for the problem may be passed in (it is the same
+    derivation)."""
     solution = solution or Solution(problem)
     values = problem.values(overrides)
     parameters = {
         name: {
             "meaning": p.meaning,
             "unit": p.unit,
-            "value": numeric.significant(_in_unit(values[p.symbol], p.unit), digits) if p.symbol in values else None,
+            "value": numeric.significant(_in_unit(values[p.symbol], p.unit), p.sig_figs if digits is None else digits)
+            if p.symbol in values else None,
         }
         for name, p in problem.parameters.items()
     }
@@ -88,9 +110,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
             answers[name]["approximation"] = {"exact": ask.exact, "relative_error": error}
     steps = solution.steps()
     kinds = {a.quantity.kind for a in problem.asks.values()}
-    rest = solution.coordinates.at_rest_in_reference()
-    equations = ({route: [sp.sstr(at_state(e, rest)) for e in d.at_rest_equations] for route, d in solution.derivations.items()}
-                 if kinds & DYNAMIC_KINDS else {})
+    equations = {route: [sp.sstr(e) for e in route_equations]
+                 for route, route_equations in equations_of_motion(solution).items()}
     checks = {c.name: {"passed": c.passed, "method": c.method, "detail": c.detail, "reading": c.reading}
               for c in solution.checks()}
     energy = ({k: sp.sstr(v) for k, v in solution.energy_ledger().items()} if kinds & DYNAMIC_KINDS else {})
@@ -117,38 +138,51 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
     }
 
 
+def equations_of_motion(solution: Solution) -> dict[str, list[sp.Eq]]:
+    """Each route's equations of motion in the reference configuration at rest (none where no
+    ask is dynamic)."""
+    if not {a.quantity.kind for a in solution.problem.asks.values()} & DYNAMIC_KINDS:
+        return {}
+    rest = solution.coordinates.at_rest_in_reference()
+    return {route: [at_state(e, rest) for e in d.at_rest_equations] for route, d in solution.derivations.items()}
+
+
 def as_json(result: dict) -> str:
     return json.dumps(result, indent=2, ensure_ascii=False)
 
 
-def as_text(result: dict) -> str:
+def as_text(result: dict, solution: Solution) -> str:
+    """The report for a terminal: `result` (the JSON contract) with the expressions of `solution`
+    drawn by sympy's unicode pretty-printer and units as text reads them."""
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
-    for route, equations in result["equations_of_motion"].items():
+    for route, equations in equations_of_motion(solution).items():
         lines.append(f"Equations of motion, {route_title(route)} (in the reference configuration, at rest):")
-        lines += [f"  {e.replace('Eq(', '', 1)[:-1].replace(', ', ' = ', 1)}" for e in equations]
+        for equation in equations:
+            lines += indented(pretty(equation))
         lines.append("")
     lines.append("Answers:")
-    width = max(len(n) for n in result["answers"])
     for name, a in result["answers"].items():
-        unit = "" if a["unit"] in ("1", "") else f" {a['unit']}"
-        value = f" = {a['value']}{unit}" if a["value"] is not None else f"  [{a['unit']}]"
-        lines.append(f"  {name:<{width}} = {a['expr']}{value}")
-        lines.append(f"  {'':<{width}}   ({a['meaning']})")
+        unit = units.unicode_unit(a["unit"])
+        value = f" = {a['value']}{' ' + unit if unit else ''}" if a["value"] is not None else \
+            (f"  [{unit}]" if unit else "")
+        lines += indented(pretty(sp.Symbol(name), " = ", solution.expression(name), value))
+        lines.append(f"    ({a['meaning']})")
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:
-            lines.append(f"  {'':<{width}}   approximates {a['approximation']['exact']}: relative error "
+            lines.append(f"    approximates {a['approximation']['exact']}: relative error "
                          f"{a['approximation']['relative_error']}")
     if result.get("regimes"):
         lines += ["", "Friction regimes (each where those above do not hold):"]
-        lines += [f"  {c['regime']}: where {c['where']}" for c in result["regimes"]["cases"]]
+        for regime, where in zip(solution.regimes, solution.regime_conditions()):
+            lines += indented(pretty(f"{regime.name}: where ", where))
         if result["regimes"]["applies"]:
             lines.append(f"  at these parameters the body {result['regimes']['applies']}")
     if result["energy"]:
         lines += ["", "Energy:"]
-        lines += [f"  {k.replace('_', ' ')}: {v}" for k, v in result["energy"].items()]
-    lines += ["", "Checks:"]
+        for kind, expression in solution.energy_ledger().items():
+            lines += indented(pretty(f"{kind.replace('_', ' ')}: ", expression))
+    lines += ["", "Checks (the detail: derive check, or --format json):"]
     for name, c in result["checks"].items():
-        mark = "ok" if c["passed"] else "FAILED"
-        lines.append(f"  [{mark}] {name} ({c['method']}): {c['detail']}")
+        lines.append(f"  [{'ok' if c['passed'] else 'FAILED'}] {name}: {c['reading']}")
     return "\n".join(lines)
 
 

@@ -716,16 +716,32 @@ def _per_variant(worksheet: Path, variants: int) -> list[Path]:
             for n in range(1, variants + 1)]
 
 
-def _limits_context(problem: Problem, solution: Solution, progress: Reporter) -> list[dict[str, str]]:
-    """Each answer's limiting cases as parameters with a range go to 0 (or infinity), for the handout."""
+def _limits_context(item: _ProblemVariants, middle: dict[str, sp.Expr], progress: Reporter) -> list[dict[str, str]]:
+    """The handout's limiting cases (limiting_cases.chosen): each answer's as a parameter with a
+    range goes to 0 (or infinity), where the problem's conditions still hold close to it, the
+    other parameters at `middle` (a millionth of its range's low end, or a million times its high
+    end, stands for the limit)."""
     progress("limiting cases")
-    varying = {p.symbol: p.unit for p in problem.parameters.values() if p.range is not None}
-    meanings = {p.symbol: p.meaning for p in problem.parameters.values()}
+    problem, solution = item.problem, item.solution
+    ranged = {p.symbol: (name, p) for name, p in problem.parameters.items() if p.range is not None}
+    varying = {symbol: p.unit for symbol, (_, p) in ranged.items()}
+
+    def allowed(symbol: sp.Symbol, point: sp.Expr) -> bool:
+        name, p = ranged[symbol]
+        low, high = p.bounds()
+        near = sp.Rational(str(low)) / 10**6 if point == 0 else sp.Rational(str(high)) * 10**6
+        try:
+            return solution.violated(item.si_values({**middle, name: near})) is None
+        except (ArithmeticError, ValueError):  # a condition with no value there: no case to show
+            return False
+
+    cases = [(name, c) for name in problem.asks
+             for c in limiting_cases.limiting_cases(solution.expression(name), varying, allowed)]
     point = {0: "0", sp.oo: r"\infty"}
     return [{"equation": rf"\lim_{{{render.latex_of(c.symbol)} \to {point[c.point]}}} {render.symbol_latex(name)} "
-                         rf"&= {render.latex_of(c.value)}", "meaning": meanings[c.symbol]}
-            for name in problem.asks
-            for c in limiting_cases.limiting_cases(solution.expression(name), varying)]
+                         rf"&= {render.latex_of(c.value)}",
+             "meaning": limiting_cases.reading(c, ranged[c.symbol][1].meaning)}
+            for name, c in limiting_cases.chosen(cases, varying)]
 
 
 def handout(reference: str, out_dir: str | None = None, progress: Reporter = Reporter()) -> list[Path]:
@@ -737,7 +753,7 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
     solution = Solution(problem)
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
     item = _ProblemVariants(problem, solution, [middle])
-    context = {**_solutions_context(item, siunitx=True), "limits": _limits_context(problem, solution, progress)}
+    context = {**_solutions_context(item, siunitx=True), "limits": _limits_context(item, middle, progress)}
     out = output_folder.claim(out_dir or Path("build") / "handouts" / problem.id)
     with output_folder.staged(out) as staging:
         tex = _write(staging, f"{problem.id}.tex", render.render("handout.tex.j2", problem=context,

@@ -125,7 +125,7 @@ def test_a_tee_of_two_rods_swings_about_its_junction(tmp_path):
     assert sp.simplify(solution.expression("w") - sp.sqrt(6 * g / (5 * L))) == 0
     result = run_derive("solve", str(problem.path))
     assert result.returncode == 0, result.stderr
-    assert "[ok] lagrange_vs_newton_euler" in result.stdout and "[ok] tensor_vs_integral (symbolic): I" in result.stdout
+    assert "[ok] lagrange_vs_newton_euler" in result.stdout and "[ok] tensor_vs_integral:" in result.stdout
 
 
 def test_a_part_s_named_point_is_a_point_of_the_composite(tmp_path):

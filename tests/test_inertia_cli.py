@@ -110,7 +110,7 @@ def test_density_parameters_and_digits():
 
 def test_point_mass_at_a_distance_in_text():
     text = invoke("point", "--axis", "0,0,1", "--about", "d,0,0", "--set", "M=2", "--set", "d=20 cm")
-    assert "I        = M*d**2" in text and "value    = 0.0800000000000000 kg*m^2" in text
+    assert text.splitlines()[1:] == ["         2    2", "  I = M⋅d  = d ⋅M", "  value: I = 0.0800000000000000 kg·m²"]
 
 
 def test_latex_format():

@@ -85,7 +85,7 @@ def test_fifty_digits_at_any_magnitude(tmp_path):
     result = run_derive("solve", "string_wrapped_disk", "--set", "m=1", "--set", "M=2", "--set", "R=0.2",
                         "--digits", "50")
     assert result.returncode == 0, result.stderr
-    assert "-24.525000000000000000000000000000000000000000000000 rad/s^2" in result.stdout
+    assert "-24.525000000000000000000000000000000000000000000000 rad/s²" in result.stdout
 
 
 # --- names -------------------------------------------------------------------------------------
