@@ -16,8 +16,9 @@ from decimal import Decimal
 from functools import cached_property
 
 import sympy as sp
+from flint import ctx
 
-from derive import composite, inertia, limits, numeric
+from derive import balls, composite, inertia, limits, numeric
 from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
@@ -514,9 +515,18 @@ class Solution(StateAnswers, CrossChecks):
         return result
 
     def _sample(self, expr: sp.Expr) -> float:
-        """The value of an expression at the middle of the parameter ranges (SI)."""
-        point = sample_points(self.problem, expr, count=1)[0]
-        return float(sp.N(expr.xreplace(point), 30))
+        """The value of an expression at the middle of the parameter ranges (SI), to 30 digits:
+        its ball (derive.balls) where it has one narrow enough, else sympy's evalf (slower: most
+        of the time a motion along a line in several coordinates took, derive.mechanics.states)."""
+        value = expr.xreplace(sample_points(self.problem, expr, count=1)[0])
+        try:
+            with ctx.workprec(128):
+                ball = balls.constant(value)
+        except ValueError:  # no ball for it (a Piecewise, an integral)
+            return float(sp.N(value, 30))
+        if ball.is_finite() and float(ball.rad()) <= 1e-30 * (1 + abs(float(ball.mid()))):
+            return float(ball.mid())
+        return float(sp.N(value, 30))
 
     def _sign_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """The signs the parts' forces must keep in the reference configuration at rest (a taut

@@ -48,6 +48,24 @@ def _undefined():
     raise Undecided("no piece of the Piecewise holds")
 
 
+def power(base, exponent: int) -> arb:
+    """base**exponent for an integer exponent: python-flint's ** gives nan for a ball around 0
+    (sqrt(x^2)**2 where x vanishes), so such a ball is raised by products (square and multiply).
+
+    >>> power(arb("0 +/- 1e-20"), 3).contains(0), power(arb(-2), -3)
+    (True, -0.125000000000000)
+    """
+    base = arb(base)
+    if not base.contains(0) or exponent < 0:
+        return base ** exponent
+    result = arb(1)
+    for bit in bin(exponent)[2:]:
+        result = result * result
+        if bit == "1":
+            result = result * base
+    return result
+
+
 def _max(*values) -> arb:
     return functools.reduce(lambda a, b: arb(a).max(b), values)
 
@@ -137,7 +155,7 @@ def constant(expression: sp.Expr) -> arb:
     if isinstance(expression, sp.Pow):
         base, exponent = arguments
         if expression.exp.is_Integer:
-            return base ** int(expression.exp)
+            return power(base, int(expression.exp))
         if expression.exp == sp.S.Half:
             return base.sqrt()
         return base ** exponent
@@ -162,7 +180,7 @@ class Program:
             self._names[temporary] = f"t{i}"
         lines.append(f"    return ({''.join(f'arb({self._code(e)}), ' for e in reduced)})")  # a piece may be an integer
         source = f"def program(K, {', '.join(self._names[s] for s in self.symbols)}):\n" + "\n".join(lines)
-        namespace = {"arb": arb, "_decided": _decided, "_equal": _equal, "_undefined": _undefined,
+        namespace = {"arb": arb, "_power": power, "_decided": _decided, "_equal": _equal, "_undefined": _undefined,
                      **{name: call for call, name in self._calls.items()}}
         # safe: the source holds only generated names (x0, t0, K[0], _f0) and integers printed by
         # int(), never a symbol's name or any text of a problem file
@@ -255,18 +273,20 @@ class Program:
         if exponent == 1:
             return code
         if exponent.is_Integer:
-            return f"{code}**{int(exponent)}"
+            return f"_power({code}, {int(exponent)})"
         if exponent.is_Rational and exponent.q == 2:
             root = f"{code}.sqrt()" if exponent > 0 else f"{code}.rsqrt()"
-            return root if abs(exponent.p) == 1 else f"{root}**{abs(int(exponent.p))}"
+            return root if abs(exponent.p) == 1 else f"_power({root}, {abs(int(exponent.p))})"
         if exponent.is_Rational:
-            root = f"{code}.root({int(exponent.q)})"
-            return f"{root}**{int(exponent.p)}"
+            return f"_power({code}.root({int(exponent.q)}), {int(exponent.p)})"
         return f"{code}**{self._code(exponent)}"
 
 
-def _argument(value: sp.Expr | int | float) -> arb:
-    """A parameter's ball: an exact rational to the working precision, else its constant's ball."""
+def _argument(value: sp.Expr | arb | int | float) -> arb:
+    """A parameter's ball: an exact rational to the working precision, a ball as it is (a value
+    solved in balls), else its constant's ball."""
+    if isinstance(value, arb):
+        return value
     if isinstance(value, sp.Rational):
         return arb(fmpq(value.p, value.q))
     if isinstance(value, (int, float)):

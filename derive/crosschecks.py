@@ -20,9 +20,10 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive import inertia, limits, numeric, units
+from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
 from derive.mechanics import gyroscope, impacts, integrated_motion, lagrange, many_bodies, orbits, paths, states, top
 from derive.mechanics.oscillation import NotAPendulum, exact_period
-from derive.mechanics.derivation import tidy
+from derive.mechanics.derivation import row_reduced, tidy
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
 
@@ -121,32 +122,50 @@ class CrossChecks:
                          for k, v in found.items()) + ".")
 
     def _routes_check(self) -> Check:
-        """Lagrange's method and Newton–Euler give the same answers (symbolically) and the same
-        value of every acceleration and constraint force, at random states (numerically: simplifying
-        them all would cost far more than the question)."""
-        lag, ne = self.derivations["lagrange"], self.derivations["newton_euler"]
-        methods = set()
+        """Lagrange's method and Newton–Euler give the same answers (symbolically where that is
+        cheap, else certified by balls at points of the ranges: derive.agreement) and the same
+        value of every acceleration and constraint force at random states (each route's linear
+        system solved in balls: simplifying them all would cost far more than the question)."""
+        methods, by_balls = set(), True
         for name, ask in self.problem.asks.items():
             if ask.quantity.kind not in DYNAMIC_KINDS:
                 continue
             a, b = (self._route_expression(ask, r) for r in ROUTES)
-            method = agree(a, b, points=sample_points(self.problem, a - b, count=4))
+            method = agree(a, b, points=sample_points(self.problem, sp.Tuple(a, b), count=MIN_POINTS))
             if method is None:
                 raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {name}: {a} vs {b}")
             methods.add(method)
         for index, regime in enumerate(self.regimes):  # every friction regime, each on its own motions
-            lag, ne = (self._regime_derivations(index)[r] for r in ROUTES)
+            where = f" where the {regime.name}" if regime.name else ""
             for state in self._check_states(index):
-                for unknown in lag.unknowns:  # at the state's parameters, inside the ranges (R > r, say)
-                    if agree(lag.at(state).raw[unknown].xreplace(state), ne.at(state).raw[unknown].xreplace(state),
-                             symbolic=False) is None:
-                        raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {unknown}"
-                                           + (f" where the {regime.name}" if regime.name else ""))
-        asked = "symbolic" if methods <= {"symbolic"} else "symbolic or numeric"
-        return Check("lagrange_vs_newton_euler", True, f"answers {asked}, all unknowns numeric",
-                     f"answers and {len(lag.unknowns)} accelerations and forces agree",
+                by_balls &= self._unknowns_agree(index, state, where)
+        asked = " or ".join(m if m != "balls" else "by balls at 30 digits" for m in METHODS if m in methods)
+        unknowns = "by balls" if by_balls else "numeric"
+        return Check("lagrange_vs_newton_euler", True, f"answers {asked}, all unknowns {unknowns}",
+                     f"answers and {len(self._regime_derivations(0)['lagrange'].unknowns)} accelerations and forces "
+                     "agree" + ("" if methods <= {"symbolic"} else " (answers at 30 digits at points of the ranges)"),
                      "Lagrange's method and the Newton–Euler equations (the forces and torques on each body) give "
                      "the same accelerations and forces.")
+
+    def _unknowns_agree(self, index: int, state: dict, where: str) -> bool:
+        """Every unknown of both routes at a state of the index-th regime, in balls (True), or
+        where balls cannot tell, from the exact solutions at 30 digits (False); a difference
+        raises CheckFailure."""
+        routes = self._regime_derivations(index)
+        try:
+            solved = [routes[r].balls_at(state) for r in ROUTES]
+        except ValueError:
+            solved = None
+        by_balls = True
+        for unknown in routes["lagrange"].unknowns:
+            verdict = None if solved is None else same_ball(solved[0][unknown], solved[1][unknown], BITS[-1])
+            if verdict is None:
+                by_balls = False
+                exact = [routes[r].at(state).raw[unknown].xreplace(state) for r in ROUTES]
+                verdict = agree(*exact, symbolic=False) is not None
+            if not verdict:
+                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {unknown}{where}")
+        return by_balls
 
     def energy_ledger(self, scene=None) -> dict[str, sp.Expr]:
         """Kinetic energy (translational, rotational), potential energy and the power of the
@@ -287,18 +306,24 @@ class CrossChecks:
 
     def _work_energy_check(self) -> Check:
         """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,
-        on motions the constraints allow: the constraint forces do no work."""
+        on motions the constraints allow: the constraint forces do no work. Each side in balls,
+        with Lagrange's accelerations and forces solved in balls (else exactly, at 30 digits)."""
         coords = self.coordinates
         kinds = set()
         for index, regime in enumerate(self.regimes):
             ledger = self.energy_ledger(regime.scene)
             rate = coords.ddt(ledger["kinetic_translational"] + ledger["kinetic_rotational"] + ledger["potential"])
+            lagrange_route = self._regime_derivations(index)["lagrange"]
             for state in self._check_states(index):
-                solved = self._regime_derivations(index)["lagrange"].at(state).raw
-                forces = {u: v for u, v in solved.items() if u not in coords.accelerations}
-                left = rate.xreplace(state).xreplace({c.a: solved[c.a] for c in coords.all})
-                right = ledger["power_nonconservative"].xreplace(state).xreplace(forces)
-                if agree(left, right, symbolic=False) is None:
+                left, right = rate.xreplace(state), ledger["power_nonconservative"].xreplace(state)
+                try:
+                    verdict = by_balls(left, right, [lagrange_route.balls_at(state)])
+                except ValueError:
+                    verdict = None
+                if verdict is None:
+                    solved = lagrange_route.at(state).raw
+                    verdict = agree(left.xreplace(solved), right.xreplace(solved), symbolic=False) is not None
+                if not verdict:
                     raise CheckFailure(f"{self.problem.id}: the work-energy theorem fails"
                                        + (f" where the {regime.name}" if regime.name else ""))
             kinds.add(ledger["power_nonconservative"] == 0)
@@ -330,16 +355,19 @@ class CrossChecks:
         rates = [coords.ddt(g).xreplace(parameters) for c in (scene or self.dynamics_scene).constraints
                  for g in c.gaps(coords)]
         at_reference = {c.q: 0 for c in coords.all}
+        velocities = [c.u for c in coords.all]
+        matrix, rhs = sp.linear_eq_to_matrix([r.xreplace(at_reference) for r in rates], velocities)
+        reduced, pivots = row_reduced(matrix.row_join(rhs))  # once: the free velocities, the rest in them
+        free = [u for i, u in enumerate(velocities) if i not in pivots]
+        solvable = len(velocities) not in pivots
         rng = random.Random(2)
         states = []
         for _ in range(count):
-            matrix, rhs = sp.linear_eq_to_matrix([r.xreplace(at_reference) for r in rates], [c.u for c in coords.all])
-            reduced, pivots = matrix.rref()
-            free = [c.u for i, c in enumerate(coords.all) if i not in pivots]
             chosen = {u: sp.Rational(rng.randint(-90, 90), 37) for u in free}
-            solved = sp.solve([r.xreplace(at_reference).xreplace(chosen) for r in rates],
-                              [c.u for c in coords.all if c.u not in chosen], dict=True)
-            states.append({**parameters, **at_reference, **chosen, **(solved[0] if solved else {})})
+            solved = {velocities[p]: reduced(row, len(velocities)) - sum(
+                (reduced(row, velocities.index(u)) * value for u, value in chosen.items()), sp.Integer(0))
+                for row, p in enumerate(pivots)} if solvable else {}
+            states.append({**parameters, **at_reference, **chosen, **solved})
         return states
 
     def _event_check(self) -> Check:
@@ -500,22 +528,3 @@ def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[
                 point[s] = sp.Rational(rng.randint(5, 145), 100)  # open sizes; below pi/2 for angles
         points.append(point)
     return points
-
-
-def agree(a: sp.Expr, b: sp.Expr, trials: int = 4, symbolic: bool = True, points=None) -> str | None:
-    """'symbolic' when a - b simplifies to zero, 'numeric' when it vanishes at random points
-    (to 30 digits) or at the `points` given (inside a problem's ranges, where two routes may
-    agree only there: sqrt(-g/(r - R)) is sqrt(g |R - r|)/|R - r| where R > r), None when they
-    differ. `symbolic=False` skips the simplification."""
-    difference = sp.simplify(a - b) if symbolic else a - b
-    if difference == 0:
-        return "symbolic"
-    symbols = sorted(difference.free_symbols, key=str)
-    rng = random.Random(0)
-    if not points:  # numbers need one look; expressions a few random points
-        points = [{s: sp.Rational(rng.randint(11, 99), 37) for s in symbols} for _ in range(trials if symbols else 1)]
-    for point in points:
-        first, second = (sp.N(e.xreplace(point), 30) for e in (a, b))  # each tree walked once
-        if abs(first - second) > (abs(first) + 1) * sp.Float("1e-25"):
-            return None
-    return "numeric"

@@ -311,6 +311,15 @@ EXPECTED = {
         "v": lambda s: sp.sqrt(10 * s.g * s.h / 7),
         "t": lambda s: sp.sqrt(2 * s.h / _sin(s.theta) / (5 * s.g * _sin(s.theta) / 7)),
     },
+    # Serway & Jewett ch. 10 (a block on a rough incline pulled up over a disk pulley by a hanging
+    # block): up the incline a = g (m2 - m1 (sin(theta) + mu_k cos(theta)))/(m1 + m2 + M/2), so down
+    # it -a; the incline's run holds T1 = m1 (a + g sin(theta) + mu_k g cos(theta)). The file's
+    # ranges always slip up the incline.
+    "incline_friction_pulley": {
+        "a": lambda s: -s.g * (s.m2 - s.m1 * (_sin(s.theta) + s.mu_k * _cos(s.theta))) / (s.m1 + s.m2 + s.M / 2),
+        "T1": lambda s: s.m1 * s.g * ((s.m2 - s.m1 * (_sin(s.theta) + s.mu_k * _cos(s.theta))) / (s.m1 + s.m2 + s.M / 2)
+                                      + _sin(s.theta) + s.mu_k * _cos(s.theta)),
+    },
     # Halliday ch. 6 (kinetic friction on an incline; the file's ranges always slide):
     # a = g (sin(theta) - mu_k cos(theta)), N = m g cos(theta).
     "block_incline_kinetic": {
@@ -454,6 +463,11 @@ EXPECTED.update({
     # Serway & Jewett ch. 10 (a block on a frictionless table pulled over a uniform disk pulley by
     # a hanging block): (m1 + m2 + M/2) v^2/2 = m2 g h; the block on the table has moved h toward
     # the pulley, and the table holds its weight.
+    # Serway & Jewett ch. 10 (by energy, a block pulled up a smooth incline over a disk pulley):
+    # (m1 + m2 + M/2) v^2/2 = m2 g h - m1 g h sin(theta); the hanging block moves down (y up).
+    "incline_pulley_speed": {
+        "v": lambda s: -sp.sqrt(2 * s.g * s.h * (s.m2 - s.m1 * _sin(s.theta)) / (s.m1 + s.m2 + s.M / 2)),
+    },
     "table_block_pulley_speed": {
         "v": lambda s: sp.sqrt(2 * s.m2 * s.g * s.h / (s.m1 + s.m2 + s.M / 2)),
         "x": lambda s: -10 * s.R + s.h,
