@@ -160,6 +160,7 @@ class Solution(StateAnswers, CrossChecks):
 
     def _route_expression(self, ask: Ask, route: str) -> sp.Expr:
         q = ask.quantity
+        self._refuse_undetermined(ask)
         if q.kind == "equilibrium":
             return self.equilibria[route].position(self.scene, q.target, q.detail)
         if q.kind == "small_oscillation":
@@ -170,7 +171,6 @@ class Solution(StateAnswers, CrossChecks):
         if q.kind == "oscillation":
             return self._exact_period(ask.amplitude, route)[0]
         if q.kind in RATE_KINDS:
-            self._refuse_speed_after_a_shift(ask)
             return self._rate(q, ask.state)
         derivation = self.derivations[route]
         solved = self.in_state(route, ask.state)

@@ -173,7 +173,7 @@ class CrossChecks:
             if state.rates:
                 continue
             if state.event:
-                (self._move_check if state.event.kind == "move" else self._impact_check)(name)
+                (self._move_check if state.event.kind in ("move", "turn") else self._impact_check)(name)
                 impacts += 1
                 continue
             gripping = state.until is not None and state.until[0] == "grips"  # the motion: with the clutch slipping
@@ -272,15 +272,19 @@ class CrossChecks:
                                    f"{now.rhs} after")
 
     def _move_check(self, name: str) -> None:
-        """The state after a move by Lagrange (momenta of the rigid motions that leave the
+        """The state after a move or a turn by Lagrange (momenta of the rigid motions that leave the
         Lagrangian and the gaps unchanged) and by Newton–Euler (angular momenta about points where
         the forces from outside have no moment) agree, symbolically."""
         by_lagrange = self._chain.impacts[name]
         start = self.scene.states[name].start
         by_moments = self._move(name, self.states[start].values, self._chain.joints[start], "newton_euler")
+        kind = self.scene.states[name].event.kind
+        if by_lagrange.loose != by_moments.loose:
+            raise CheckFailure(f"{self.problem.id}: after the {kind} {name}, the Lagrangian's symmetries leave "
+                               f"{by_lagrange.loose} loose and moments about points {by_moments.loose}")
         for key, a in by_lagrange.values.items():
             if agree(a, by_moments.values[key]) is None:
-                raise CheckFailure(f"{self.problem.id}: after the move {name}, {key} is {a} by the Lagrangian's "
+                raise CheckFailure(f"{self.problem.id}: after the {kind} {name}, {key} is {a} by the Lagrangian's "
                                    f"symmetries and {by_moments.values[key]} by moments about points")
 
     def _work_energy_check(self) -> Check:

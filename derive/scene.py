@@ -235,8 +235,9 @@ def constraint_bodies(part: Part) -> tuple[str, ...]:
 class Event:
     """What happens to the scene in an instant, or by its own forces, between two states: an
     impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
-    `restitution`), or a move (`kind` move: the point mass `body` carried to `place` on the body
-    `to`, in its frame, where the pin `joint` holds it).
+    `restitution`), a move (`kind` move: the point mass `body` carried to `place` on the body
+    `to`, in its frame, where the pin `joint` holds it), or a turn (`kind` turn: the body `body`
+    turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie).
 
     >>> Event("stick", "bullet", "rod").restitution is None
     True
@@ -248,6 +249,7 @@ class Event:
     restitution: sp.Expr | None = None
     place: tuple[sp.Expr, sp.Expr] | None = None
     joint: str | None = None
+    angle: sp.Expr | None = None
 
 
 @dataclass(frozen=True)
