@@ -18,7 +18,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import composite, inertia, limits, numeric
-from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
+from derive.mechanics import (gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
@@ -346,24 +346,6 @@ class Solution(StateAnswers, CrossChecks):
                                      f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
         return tidy(roots[0])
 
-    @cached_property
-    def event_results(self) -> dict[str, events.EventResult]:
-        try:
-            return {"conservation": events.by_conservation(self.scene), "impulses": events.by_impulses(self.scene)}
-        except (events.EventError, ValueError) as error:
-            raise self.problem.error("scene.events", str(error)) from None
-
-    def _event(self, q, result: events.EventResult) -> sp.Expr:
-        if q.kind == "after":
-            return result.after[q.target][("velocity.x", "velocity.y", "angular_velocity").index(q.detail)]
-        if q.detail == "turn":
-            if result.turn is None:
-                raise self.problem.error("ask", "event.turn is for an internal turn")
-            return result.turn
-        if q.detail == "energy_change":
-            return events.energy_change(self.scene, result)
-        return events.velocity_of_center(self.scene, result)[0 if q.detail.endswith("x") else 1]
-
     def _orbit(self, detail: str, route: str) -> sp.Expr:
         orbit = self.scene.orbit
         if detail in ("circular_radius", "effective_potential_minimum"):
@@ -610,8 +592,6 @@ class Solution(StateAnswers, CrossChecks):
             result = self._path(ask)
         elif ask.quantity.kind == "orbit":
             result = self._orbit(ask.quantity.detail, "lagrange")
-        elif ask.quantity.kind in ("event", "after"):
-            result = self._event(ask.quantity, self.event_results["conservation"])
         elif ask.quantity.kind == "mass":
             result = self.scene.bodies[ask.quantity.target].mass
         elif ask.quantity.kind == "position_cm":
@@ -668,8 +648,6 @@ class Solution(StateAnswers, CrossChecks):
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}
-        if kinds <= {"event", "after"}:
-            return {f"by {route}": list(r.steps) for route, r in self.event_results.items()}
         needed = self._needed_unknowns()
         # The general equations only when an asked quantity is read from them (a release height
         # needs the normal force at one point of the loop, shown in its own steps).
