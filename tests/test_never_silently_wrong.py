@@ -411,7 +411,7 @@ def test_a_pull_that_lifts_a_body_off_its_surface_is_refused():
 
 
 def test_a_velocity_of_a_body_that_does_not_roll_is_refused_with_the_states_form(tmp_path):
-    write(tmp_path, SPHERE.replace("contact: rolling, FRICTION", "contact: sliding, velocity: [1, 0]"))
+    write(tmp_path, SPHERE.replace("contact: rolling, FRICTION", "contact: sliding, velocity: [sqrt(g*R), 0]"))
     result = run_derive("solve", str(tmp_path / "problem.yaml"))
     assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert "scene.bodies.ball.velocity: a velocity is the speed of a body rolling without slipping" in result.stderr
