@@ -21,6 +21,13 @@ the time a problem has). The rates after solve the kept momenta with the joints'
 conditions after the move; where they do not fix every rate (a weight's moment about the pivot
 of a swing), the move is refused. The bodies are where they were, the mover at its new place.
 
+A turn (Elroy's beanie) is the same with a couple of any size between two turning bodies as the
+moving force, one turned through an angle relative to the other and at rest relative to it
+after: where a kept momentum is zero and its coefficients are constant (the linear joints
+applied), it is the rate of sum_j c_j q_j, so that sum is unchanged and, with the turn and the
+joints, fixes where the bodies end (from rest: I1 dtheta1 + I2 dtheta2 = 0). Otherwise where
+they end depends on how long the turn takes: those coordinates are `loose`.
+
 >>> import sympy as sp
 >>> from derive.mechanics.kinematics import Coordinates
 >>> from derive.parts.pin import Pin
