@@ -198,3 +198,18 @@ def test_a_turn_refuses_what_it_cannot_turn(tmp_path):
     assert "relative to another" in refused(tmp_path, text, "scene.states.turned.event")
     text = SPINNING_BEANIE.replace("relative_to: outer", "to: outer")
     assert "a turn has no to" in refused(tmp_path, text, "scene.states.turned.event.to")
+
+
+def test_the_second_route_catches_a_wrong_turn(monkeypatch):
+    """Elroy's beanie: Newton–Euler's angular momentum with the outer oval's spin counted twice
+    puts the outer oval elsewhere after the turn, and the check says so."""
+    original = moves.Symmetry.momentum
+
+    def first_spin_twice(self, coords):
+        first = coords.scene.bodies[self.moved[0]]
+        extra = first.inertia * coords.angular_velocity(first.name) if first.rotates and self.about is not None else 0
+        return original(self, coords) + extra
+
+    monkeypatch.setattr(moves.Symmetry, "momentum", first_spin_twice)
+    with pytest.raises(CheckFailure, match="after the turn turned, theta_outer"):
+        report.solve(problem.load("elroys_beanie"), {}, 4)
