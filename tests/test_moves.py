@@ -1,7 +1,8 @@
 """Moves in a chain of states (`event: {move: BODY, to: POINT}`; derive.mechanics.moves): the
 textbook closed forms are in tests/textbook/states (a child walking to a turntable's center, a
 student on a stool pulling in two weights); here a free body, each refusal, and the second
-route shown to catch a wrong move."""
+route shown to catch a wrong move; and turns (`event: {turn: BODY, relative_to: OTHER, angle:
+psi}`), with Elroy's beanie's closed forms in tests/test_events.py."""
 from pathlib import Path
 
 import pytest
@@ -213,3 +214,12 @@ def test_the_second_route_catches_a_wrong_turn(monkeypatch):
     monkeypatch.setattr(moves.Symmetry, "momentum", first_spin_twice)
     with pytest.raises(CheckFailure, match="after the turn turned, theta_outer"):
         report.solve(problem.load("elroys_beanie"), {}, 4)
+
+
+def test_no_state_follows_a_turn_that_leaves_the_bodies_loose(tmp_path):
+    text = SPINNING_BEANIE.replace(
+        "    turned: {from: spinning, event: {turn: inner, relative_to: outer, angle: pi}}\n",
+        "    turned: {from: spinning, event: {turn: inner, relative_to: outer, angle: pi}}\n"
+        "    back: {from: turned, event: {turn: inner, relative_to: outer, angle: -pi}}\n").replace(
+        "in: turned", "in: back")
+    assert "no state may follow it" in refused(tmp_path, text, "scene.states.back")
