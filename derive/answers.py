@@ -19,7 +19,7 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (events, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
+from derive.mechanics import (gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
                               rigid_rotation, rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
@@ -161,6 +161,7 @@ class Solution(StateAnswers, CrossChecks):
 
     def _route_expression(self, ask: Ask, route: str) -> sp.Expr:
         q = ask.quantity
+        self._refuse_undetermined(ask)
         if q.kind == "equilibrium":
             return self.equilibria[route].position(self.scene, q.target, q.detail)
         if q.kind == "small_oscillation":
@@ -171,7 +172,6 @@ class Solution(StateAnswers, CrossChecks):
         if q.kind == "oscillation":
             return self._exact_period(ask.amplitude, route)[0]
         if q.kind in RATE_KINDS:
-            self._refuse_speed_after_a_shift(ask)
             return self._rate(q, ask.state)
         derivation = self.derivations[route]
         solved = self.in_state(route, ask.state)
@@ -346,24 +346,6 @@ class Solution(StateAnswers, CrossChecks):
             raise self.problem.error(f"ask.{ask.name}.zero_for", f"{ask.path} vanishes at {len(roots)} values of "
                                      f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
         return tidy(roots[0])
-
-    @cached_property
-    def event_results(self) -> dict[str, events.EventResult]:
-        try:
-            return {"conservation": events.by_conservation(self.scene), "impulses": events.by_impulses(self.scene)}
-        except (events.EventError, ValueError) as error:
-            raise self.problem.error("scene.events", str(error)) from None
-
-    def _event(self, q, result: events.EventResult) -> sp.Expr:
-        if q.kind == "after":
-            return result.after[q.target][("velocity.x", "velocity.y", "angular_velocity").index(q.detail)]
-        if q.detail == "turn":
-            if result.turn is None:
-                raise self.problem.error("ask", "event.turn is for an internal turn")
-            return result.turn
-        if q.detail == "energy_change":
-            return events.energy_change(self.scene, result)
-        return events.velocity_of_center(self.scene, result)[0 if q.detail.endswith("x") else 1]
 
     def _orbit(self, detail: str, route: str) -> sp.Expr:
         orbit = self.scene.orbit
@@ -620,8 +602,6 @@ class Solution(StateAnswers, CrossChecks):
             result = self._path(ask)
         elif ask.quantity.kind == "orbit":
             result = self._orbit(ask.quantity.detail, "lagrange")
-        elif ask.quantity.kind in ("event", "after"):
-            result = self._event(ask.quantity, self.event_results["conservation"])
         elif ask.quantity.kind == "mass":
             result = self.scene.bodies[ask.quantity.target].mass
         elif ask.quantity.kind == "position_cm":
@@ -678,8 +658,6 @@ class Solution(StateAnswers, CrossChecks):
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}
-        if kinds <= {"event", "after"}:
-            return {f"by {route}": list(r.steps) for route, r in self.event_results.items()}
         needed = self._needed_unknowns()
         # The general equations only when an asked quantity is read from them (a release height
         # needs the normal force at one point of the loop, shown in its own steps).

@@ -430,7 +430,7 @@ def parse(text: str, path: Path) -> Problem:
 
 def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters: dict, conditions) -> None:
     """Every key is used or refused by name: a parameter that neither the scene, the asks, the
-    conditions nor the question names; events no ask reads; friction coefficients where
+    conditions nor the question names; states no ask reads; friction coefficients where
     nothing asked depends on the motion."""
     used = reader.used | {s for c in conditions for difference, _ in c.parts for s in difference.free_symbols}
     shown = set(re.findall(r"\{\{\s*([A-Za-z][A-Za-z0-9_]*)\s*\}\}", str(raw["question"])))
@@ -438,9 +438,6 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
         if p.symbol not in used and name not in shown:
             raise reader.fail(f"parameters.{name}", "no part of the scene, no ask, condition or the question uses it")
     kinds = {a.quantity.kind for a in asks.values()}
-    if scene.events and not kinds & {"event", "after"}:
-        raise reader.fail("scene.events", "no ask reads the event (event.QUANTITY or BODY.after.QUANTITY): "
-                                          "remove it, or ask what it changes")
     read = {a.state for a in asks.values()} | {s.start for s in scene.states.values()}
     unread = next((name for name in scene.states if name not in read), None)
     if unread is not None:

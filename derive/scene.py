@@ -112,11 +112,6 @@ class Orbit:
     eccentricity: sp.Expr | None = None
 
 
-#: What an event can be asked: the change of kinetic energy, the velocity of the center of mass
-#: of the bodies after it, and (an internal turn) how far the other body turned.
-EVENT_QUANTITIES = ("energy_change", "velocity_cm.x", "velocity_cm.y", "turn")
-AFTER_QUANTITIES = ("velocity.x", "velocity.y", "angular_velocity")
-
 #: What an orbit can be asked, and what each needs of the orbit's description.
 ORBIT_QUANTITIES = {
     "circular_radius": "angular_momentum", "effective_potential_minimum": "angular_momentum",
@@ -127,47 +122,12 @@ ORBIT_QUANTITIES = {
 
 @dataclass(frozen=True)
 class Motion:
-    """A body's state just before an event: center position, velocity and spin (rad/s, +z)."""
+    """A body's given placement and motion: center position, velocity (a body rolling at a given
+    speed) and spin (rad/s, +z; the figures take a state's rates so)."""
 
     position: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
     velocity: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
     spin: sp.Expr = sp.Integer(0)
-
-
-@dataclass(frozen=True)
-class Stick:
-    """A point mass `body` sticks to `to` where it is (a perfectly inelastic event)."""
-
-    name: str
-    body: str
-    to: str
-
-
-@dataclass(frozen=True)
-class InternalTurn:
-    """`body` turns through `angle` relative to `relative_to` on a shared axle, driven by the
-    torques between them only (Elroy's beanie)."""
-
-    name: str
-    body: str
-    relative_to: str
-    angle: sp.Expr
-
-
-@dataclass(frozen=True)
-class Bounce:
-    """A point mass `body` strikes `off` at a smooth contact: the impulse is along the contact
-    normal (radial on a round body, across a rod), and the normal relative velocity reverses,
-    scaled by the coefficient of restitution (1 elastic, 0 they move together along the normal)."""
-
-    name: str
-    body: str
-    off: str
-    restitution: sp.Expr
-
-
-#: An entry of the scene's `events:` section (the states' events, derive.scene.Event, are the general form).
-LibraryEvent = Stick | InternalTurn | Bounce
 
 
 @dataclass(frozen=True)
@@ -235,8 +195,9 @@ def constraint_bodies(part: Part) -> tuple[str, ...]:
 class Event:
     """What happens to the scene in an instant, or by its own forces, between two states: an
     impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
-    `restitution`), or a move (`kind` move: the point mass `body` carried to `place` on the body
-    `to`, in its frame, where the pin `joint` holds it).
+    `restitution`), a move (`kind` move: the point mass `body` carried to `place` on the body
+    `to`, in its frame, where the pin `joint` holds it), or a turn (`kind` turn: the body `body`
+    turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie).
 
     >>> Event("stick", "bullet", "rod").restitution is None
     True
@@ -248,6 +209,7 @@ class Event:
     restitution: sp.Expr | None = None
     place: tuple[sp.Expr, sp.Expr] | None = None
     joint: str | None = None
+    angle: sp.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -261,7 +223,8 @@ class State:
     None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD); or the state
     just after an `event` in the state `start`: an impact (a stick, the body held where it is; a
     lock, the two turning together from then on, the scene keeping the joint the impact made; a
-    bounce off a body) or a move of a point mass on the body that holds it.
+    bounce off a body), a move of a point mass on the body that holds it, or a turn of one body
+    relative to another.
 
     >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
     True
@@ -288,7 +251,6 @@ class Scene:
     loads: tuple[Part, ...] = ()
     orbit: Orbit | None = None
     motions: dict[str, Motion] = field(default_factory=dict)
-    events: tuple[LibraryEvent, ...] = ()
     top: Top | None = None
     wheel: SpinningWheel | None = None
     wave: StandingWave | None = None
@@ -357,9 +319,7 @@ class Quantity:
     kinds: "inertia" (target a body, detail an axis), "acceleration" (a body; x or y),
     "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
     "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
-    prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "event"
-    (one of EVENT_QUANTITIES), "after" (a body's state after the event; AFTER_QUANTITIES),
-    "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
+    prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
     "system" (inertia about the center of mass, reduced_mass of two bodies), "top" (TOP_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "rotation" (a turning body; ROTATION_QUANTITIES),
@@ -376,7 +336,7 @@ class Quantity:
 
 
 #: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
-RESERVED_NAMES = ("top", "spinning_wheel", "system", "event", "orbit", "oscillation", "small_oscillation", "ground",
+RESERVED_NAMES = ("top", "spinning_wheel", "system", "orbit", "oscillation", "small_oscillation", "ground",
                   "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass")
 
 #: What a body on a surface can be asked, besides what every body can.
@@ -423,16 +383,6 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         return Quantity("system", None, rest)
     if head in scene.bodies and rest in ("mass", "position_cm.x", "position_cm.y"):
         return Quantity(rest.partition(".")[0], head, rest.partition(".")[2] or None)
-    if head == "event":
-        if not scene.events:
-            raise ValueError("the scene has no event")
-        if rest not in EVENT_QUANTITIES:
-            raise ValueError(f"an event has {', '.join(EVENT_QUANTITIES)}; not {rest!r}")
-        return Quantity("event", None, rest)
-    if head in scene.bodies and rest.startswith("after.") and scene.events:
-        if rest[len("after."):] not in AFTER_QUANTITIES:
-            raise ValueError(f"after an event a body has {', '.join('after.' + q for q in AFTER_QUANTITIES)}")
-        return Quantity("after", head, rest[len("after."):])
     if head == "orbit":
         if scene.orbit is None:
             raise ValueError("the scene has no orbit")

@@ -1,5 +1,5 @@
-"""The scene section of a problem file: bodies, joints, contacts, surfaces, loads, events and
-the scene-level systems (orbit, top, spinning wheel, standing wave, internal forces); its states
+"""The scene section of a problem file: bodies, joints, contacts, surfaces, loads and the
+scene-level systems (orbit, top, spinning wheel, standing wave, internal forces); its states
 are read by derive.state_file.
 
 Every field goes through the `derive.reader.Reader`, so errors name the file and the field.
@@ -25,8 +25,8 @@ from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Bounce, InternalTurn, Motion, Orbit,
-                          Rotation, Scene, SpinningWheel, StandingWave, Stick, Top)
+from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Motion, Orbit, Rotation, Scene,
+                          SpinningWheel, StandingWave, Top)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
@@ -155,7 +155,7 @@ def _density(reader: Reader, raw, field: str, shape: str, sizes: dict, mass: sp.
     return density, derived
 
 
-MOTION_KEYS = ("at", "velocity", "spin", "hits")
+MOTION_KEYS = ("at", "velocity")
 
 
 def _vector(reader: Reader, value, field: str, unit: str, what: str) -> tuple[sp.Expr, sp.Expr]:
@@ -165,64 +165,13 @@ def _vector(reader: Reader, value, field: str, unit: str, what: str) -> tuple[sp
 
 
 def _motion(reader: Reader, name: str, spec: dict, bodies: dict[str, Body]) -> Motion | None:
-    """The state of a body just before an event: at, velocity, spin — or `hits`, which places a
-    projectile where its line of motion first meets the rim of a round body."""
+    """A body placed at a given point (`at`), or rolling at a given `velocity`."""
     field = f"scene.bodies.{name}"
     if not any(k in spec for k in MOTION_KEYS):
         return None
     velocity = _vector(reader, spec["velocity"], f"{field}.velocity", "m/s", "a velocity") if "velocity" in spec \
         else (sp.Integer(0), sp.Integer(0))
-    spin = reader.dimensioned(spec["spin"], f"{field}.spin", "rad/s", "a spin") if "spin" in spec else sp.Integer(0)
-    position = bodies[name].at  # the center of mass (a composite's `at` is its parts' origin)
-    if "hits" in spec:
-        if "at" in spec:
-            raise reader.fail(f"{field}.hits", "give at or hits, not both")
-        hits = reader.mapping(spec["hits"], f"{field}.hits", required=("body",), optional=("impact_parameter",))
-        target = bodies.get(hits["body"])
-        if target is None or "radius" not in target.sizes:
-            raise reader.fail(f"{field}.hits.body", "expected a round body of the scene")
-        radius = target.sizes["radius"]
-        b = reader.dimensioned(hits.get("impact_parameter", 0), f"{field}.hits.impact_parameter", "m",
-                               "an impact parameter")
-        speed = sp.sqrt(velocity[0] ** 2 + velocity[1] ** 2)
-        if speed == 0:
-            raise reader.fail(f"{field}.velocity", "a projectile needs a velocity")
-        along = sp.Matrix(velocity) / speed
-        left = sp.Matrix([-along[1], along[0]])
-        # The first point of the circle on the line at distance b (to the left of the motion).
-        point = -sp.sqrt(radius**2 - b**2) * along + b * left
-        position = (sp.simplify(point[0]), sp.simplify(point[1]))
-    return Motion(position, velocity, spin)
-
-
-def _events(reader: Reader, raw, bodies: dict[str, Body]) -> tuple:
-    if not isinstance(raw, list):
-        raise reader.fail("scene.events", "expected a list")
-    result = []
-    for i, spec in enumerate(raw):
-        field = f"scene.events[{i}]"
-        spec = reader.mapping(spec, field, optional=("stick", "internal_turn", "bounce"))
-        if len(spec) != 1:
-            raise reader.fail(field, "expected one event kind (stick, bounce, internal_turn)")
-        (kind, detail), = spec.items()
-        keys = {"stick": ("body", "to"), "bounce": ("body", "off", "restitution"),
-                "internal_turn": ("body", "relative_to", "angle")}[kind]
-        detail = reader.mapping(detail, f"{field}.{kind}", required=keys)
-        for key in keys[:2]:
-            if detail[key] not in bodies:
-                raise reader.fail(f"{field}.{kind}.{key}", no_such("body", detail[key], bodies, "bodies"))
-        if kind == "stick":
-            result.append(Stick(f"event{i}", detail["body"], detail["to"]))
-        elif kind == "bounce":
-            e = reader.dimensioned(detail["restitution"], f"{field}.bounce.restitution", "1", "a restitution")
-            bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]
-            if e.is_negative or (not e.free_symbols and e > 1) or any(b[0] < 0 or b[1] > 1 for b in bounds):
-                raise reader.fail(f"{field}.bounce.restitution", "a coefficient of restitution lies in [0, 1]")
-            result.append(Bounce(f"event{i}", detail["body"], detail["off"], e))
-        else:
-            angle = reader.dimensioned(detail["angle"], f"{field}.{kind}.angle", "rad", "an angle")
-            result.append(InternalTurn(f"event{i}", detail["body"], detail["relative_to"], angle))
-    return tuple(result)
+    return Motion(bodies[name].at, velocity)  # the center of mass (a composite's `at` is its parts' origin)
 
 
 PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
@@ -491,6 +440,9 @@ def read_scene(reader: Reader, raw) -> Scene:
     raw = reader.mapping(raw, "scene", optional=("bodies", "points", "surfaces", "joints", "cords", "constraints",
                                                  "loads", "orbit", "events", "top", "spinning_wheel", "standing_wave",
                                                  "internal_forces", "states"))
+    if "events" in raw:
+        raise reader.fail("scene.events", "write events as states: `struck: {from: flying, event: {stick: bullet, "
+                                          "to: rod}}` (stick, lock, bounce, move or turn; see the README's states)")
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     top = _top(reader, raw["top"]) if "top" in raw else None
     wheel = _wheel(reader, raw["spinning_wheel"]) if "spinning_wheel" in raw else None
@@ -551,22 +503,21 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene", f"the name {reserved!r} is reserved for asks ({reserved}.…): name the part "
                                    "otherwise")
     motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
-    events = _events(reader, raw.get("events") or [], bodies)
-    # A velocity is the state before an event, or the speed of a body rolling without slipping.
+    # A velocity is the speed of a body rolling without slipping; other rates are a state's.
     rolling_at = {c.body for c in constraints if isinstance(c, Contact) and c.rolling}
-    moving = [n for n, spec in bodies_raw.items() if any(k in spec for k in ("velocity", "spin", "hits"))
-              and not (n in rolling_at and set(spec) & {"spin", "hits"} == set())]
-    if moving and not events:
-        raise reader.fail(f"scene.bodies.{moving[0]}", "velocities and spins describe the state before an event: "
-                          "add the event")
+    moving = next((n for n, spec in bodies_raw.items() if "velocity" in spec and n not in rolling_at), None)
+    if moving:
+        raise reader.fail(f"scene.bodies.{moving}.velocity", "a velocity is the speed of a body rolling without "
+                          f"slipping; give other rates in a state: states: {{moving: {{rates: "
+                          f"{{{moving}.velocity.x: v}}}}}}")
     gravity_part = found[0] if found else None
     if top is not None and gravity_part is None:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
     rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
                  for n, spec in bodies_raw.items() if "rotation" in spec}
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
-    scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, events, top, wheel,
-                  wave, internal, rotations, states)
+    scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, top, wheel, wave,
+                  internal, rotations, states)
     _check_geometry(reader, places, scene)
     return scene
 

@@ -76,6 +76,10 @@ class StateAnswers:
         for name, state in self.scene.states.items():
             joints[name] = joints[state.start] if state.start else self._slides_from(result)
             try:
+                if isinstance(solved.get(state.start), moves.Moved) and solved[state.start].loose:
+                    raise state_motion.StateError(f"where the bodies are after the turn {state.start} depends on how "
+                                                  "long it takes (it keeps a momentum that is not zero): no state may "
+                                                  "follow it")
                 with limits.time_limit(f"finding the state {name}"):
                     if state.until and state.until[0] == "grips":
                         start = result[state.start].values if state.start else state_motion.rest(self.coordinates)
@@ -89,6 +93,9 @@ class StateAnswers:
                         made[name] = moves.moved_pin(self._scene_with(joints[name]), state.event, state.event.place)
                         joints[name] = _in_place(joints[name], made[name])
                         solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
+                        reached = self._after_move(name, result[state.start].values, solved[name])
+                    elif state.event.kind == "turn":
+                        solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name])
                     else:
                         made[name] = self._joint(state, result)
@@ -214,18 +221,21 @@ class StateAnswers:
         return state_motion.Reached(values, (), steps)
 
     def _move(self, name: str, before: dict, joints: tuple, route: str) -> moves.Moved:
-        """The move of the state `name` by `route`, in the scene with the joints before it."""
-        return moves.move(self._scene_with(joints), self.coordinates, before, self.scene.states[name].event, route,
-                          self._sample)
+        """The move or turn of the state `name` by `route`, in the scene with the joints before it."""
+        event = self.scene.states[name].event
+        return (moves.turn if event.kind == "turn" else moves.move)(self._scene_with(joints), self.coordinates, before,
+                                                                   event, route, self._sample)
 
     def _after_move(self, name: str, before: dict, moved: moves.Moved) -> state_motion.Reached:
-        """The state after a move, with the kinetic energy the forces that make it add."""
+        """The state after a move or a turn, with the kinetic energy the forces that make it add."""
         event = self.scene.states[name].event
         added = tidy(-impacts.energy_lost(self.dynamics_scene, self.coordinates, before, moved.values))
-        steps = (Step(f"The move: the {event.body} is carried to {sp.sstr(tuple(event.place))} on the {event.to} "
-                      "by forces inside the scene (they come in equal and opposite pairs)", ()),
+        what = (f"The turn: the {event.body} turns through {sp.sstr(event.angle)} relative to the {event.to}"
+                if event.kind == "turn" else
+                f"The move: the {event.body} is carried to {sp.sstr(tuple(event.place))} on the {event.to}")
+        steps = (Step(f"{what} by forces inside the scene (they come in equal and opposite pairs)", ()),
                  *moved.steps,
-                 Step("Kinetic energy the move adds (the work of the forces that make it)",
+                 Step(f"Kinetic energy the {event.kind} adds (the work of the forces that make it)",
                       (sp.Eq(sp.Symbol("Delta_K"), added),)))
         return state_motion.Reached(moved.values, (), steps)
 
@@ -294,15 +304,25 @@ class StateAnswers:
         at = {where: reached.values[path.s], rate: reached.values[path.coordinate.u]}
         return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general, path.frozen).raw.items()})
 
-    def _refuse_speed_after_a_shift(self, ask) -> None:
+    def _refuse_undetermined(self, ask) -> None:
         """A body's speed after a move is the same however the move is made where the bodies can
         only turn about the ground's pins (a turntable); where a set of them was free to shift (a
-        bead on a free rod) it is not, and the ask is refused."""
+        bead on a free rod) it is not, and the ask is refused. After a turn that leaves coordinates
+        loose (moves.turn), only what does not depend on where the bodies are is asked."""
         moved = self._chain.impacts.get(ask.state) if ask.state else None
-        if ask.quantity.kind == "speed" and isinstance(moved, moves.Moved) and any(s.along for s in moved.kept):
+        if not isinstance(moved, moves.Moved):
+            return
+        if ask.quantity.kind == "speed" and any(s.along for s in moved.kept):
             raise self.problem.error(f"ask.{ask.name}.in", f"after the move {ask.state} the bodies are free to shift, "
                                                            "so their speeds depend on how the move is made: ask an "
                                                            "angular velocity or the kinetic energy")
+        if moved.loose and ask.quantity.kind not in ("angular_velocity", "kinetic_energy", "kinetic_energy_change",
+                                                     "speed"):
+            loose = ", ".join(sorted(str(q) for q in moved.loose))
+            raise self.problem.error(f"ask.{ask.name}.of", f"after the turn {ask.state}, {loose} depend on how long it "
+                                                           "takes (it keeps a momentum that is not zero, or whose "
+                                                           "coefficients change): ask an angular velocity, a speed or "
+                                                           "the kinetic energy there")
 
     def _rate(self, q: Quantity, name: str) -> sp.Expr:
         """A body's velocity, speed, angular velocity, position or angle in a named state, the

@@ -28,7 +28,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
     stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`), a cord goes slack
     (`{slack: CORD}`), a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static:
     mu_s}) or a slipping clutch or a sliding body grips (`{grips: CLUTCH or BODY}`). `event:` is
-    an impact or a move in the state from: (see EVENTS), and the state is the one just after it."""
+    an impact, a move or a turn in the state from: (see EVENTS), and the state is the one just
+    after it."""
     result, bodies = {}, places.bodies
     taken = {*bodies, *(p.name for p in constraints), "placement", "ground"}  # an impact's joint is named so
     for name, spec in reader.named(raw, "states").items():
@@ -37,14 +38,14 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
         spec = reader.mapping(spec, field, optional=("rates", "when", "from", "event"))
         earlier = result.get(spec.get("from"))
-        moves_on = isinstance(spec.get("event"), dict) and "move" in spec["event"]
+        moves_on = isinstance(spec.get("event"), dict) and {"move", "turn"} & set(spec["event"])
         if earlier and earlier.event and earlier.event.kind == "move" and not moves_on:
             raise reader.fail(f"{field}.from", f"where the bodies are after the move {earlier.name} depends on how it "
                                                "is made (a turntable turns while a child walks on it): only another "
-                                               "move may follow it")
+                                               "move or a turn may follow it")
         if sum(key in spec for key in ("rates", "when", "event")) != 1:
             raise reader.fail(field, "a state gives rates: (at the placement), when: (a position reached) or event: "
-                                     "(an impact or a move in the state from:)")
+                                     "(an impact, a move or a turn in the state from:)")
         if "event" in spec:
             result[name] = _event(reader, name, spec, field, places, constraints, result)
             continue
@@ -86,27 +87,39 @@ EVENTS = {"stick": "the body sticks to the other where it touches it",
           "lock": "the two turning bodies turn together from then on (a clutch)",
           "bounce": "a point mass bounces off a rod or a round body, smooth, with restitution: e",
           "move": "a point mass pinned to a body is carried to the point to: of that body by the scene's own forces "
-                  "(a child walking to a turntable's center)"}
+                  "(a child walking to a turntable's center)",
+          "turn": "a turning body turns through angle: relative to the body relative_to: by a couple between them "
+                  "(Elroy's beanie)"}
 
 
 def _event(reader: Reader, name: str, spec: dict, field: str, places, constraints: list,
            found: dict[str, State]) -> State:
     """`{from: STATE, event: {stick: BODY, to: OTHER}}`, `{lock: BODY, to: OTHER}`, `{bounce:
-    BODY, to: OTHER, restitution: e}` (the state just after an impact in the state from:) or
-    `{move: BODY, to: OTHER.POINT}` (the state after the move)."""
+    BODY, to: OTHER, restitution: e}` (the state just after an impact in the state from:),
+    `{move: BODY, to: OTHER.POINT}` (the state after the move) or `{turn: BODY, relative_to:
+    OTHER, angle: psi}` (the state after the turn)."""
     bodies = places.bodies
     if spec.get("from") not in found:
         raise reader.fail(f"{field}.from", f"an event happens in a state: give from: a state named above this one "
                                            f"(states: {', '.join(found) or 'none'})")
-    raw = reader.mapping(spec["event"], f"{field}.event", required=("to",), optional=(*EVENTS, "restitution"),
-                         points=("to",))
+    raw = reader.mapping(spec["event"], f"{field}.event", optional=(*EVENTS, "to", "restitution", "relative_to",
+                                                                     "angle"), points=("to",))
     kinds = [k for k in EVENTS if k in raw]
     if len(kinds) != 1:
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
     kind = kinds[0]
-    body, to = raw[kind], raw["to"]
+    body = raw[kind]
     if not isinstance(body, str) or body not in bodies:
         raise reader.fail(f"{field}.event.{kind}", no_such("body", body, bodies, "bodies"))
+    wanted = ("relative_to", "angle") if kind == "turn" else ("to",)
+    for key in ("to", "relative_to", "angle"):
+        if key in raw and key not in wanted:
+            raise reader.fail(f"{field}.event.{key}", f"a {kind} has no {key}: it gives {' and '.join(wanted)}")
+        if key not in raw and key in wanted:
+            raise reader.fail(f"{field}.event.{key}", f"missing: a {kind} gives {' and '.join(wanted)}")
+    if kind == "turn":
+        return State(name, start=spec["from"], event=_turn(reader, body, raw, f"{field}.event", bodies))
+    to = raw["to"]
     if "restitution" in raw and kind != "bounce":
         raise reader.fail(f"{field}.event.restitution", f"a {kind} has no restitution (a bounce has)")
     if kind == "move":
@@ -126,6 +139,16 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
                                                              "(1 elastic, 0 they move together along the normal)")
         restitution = _restitution(reader, raw["restitution"], f"{field}.event.restitution")
     return State(name, start=spec["from"], event=Event(kind, body, to, restitution))
+
+
+def _turn(reader: Reader, body: str, raw: dict, field: str, bodies: dict[str, Body]) -> Event:
+    """A turn of one turning body through an angle relative to another, by a couple between them."""
+    other = raw["relative_to"]
+    if not isinstance(other, str) or other not in bodies:
+        raise reader.fail(f"{field}.relative_to", no_such("body", other, bodies, "bodies"))
+    if other == body or not (bodies[body].rotates and bodies[other].rotates):
+        raise reader.fail(field, "a turn is of one turning body relative to another (a point mass does not turn)")
+    return Event("turn", body, other, angle=reader.dimensioned(raw["angle"], f"{field}.angle", "rad", "an angle"))
 
 
 def _restitution(reader: Reader, raw, field: str):

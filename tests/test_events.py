@@ -2,8 +2,8 @@
 sticky impact with a pivoted sphere (§6.4.1) and with a free one (§6.4.2, by the parallel-axis
 route), a ball bouncing off a free rod (the effective-mass formula of an impact with restitution),
 Elroy's beanie (§6.5, against a simulation) and a skid that turns into rolling (against a
-simulation of the slipping phase). All but Elroy's are impacts and grips of scene.states
-(derive.mechanics.impacts, grips); Elroy's is the internal turn of derive.mechanics.events."""
+simulation of the slipping phase), all events of scene.states: impacts and grips
+(derive.mechanics.impacts, grips) and Elroy's turn (derive.mechanics.moves)."""
 import math
 
 import mpmath
@@ -87,6 +87,17 @@ def test_notes_6_5_elroy_numerator_is_I2():
     assert math.isclose(theta1, -2 * math.pi * I2 / (I1 + I2), rel_tol=1e-6)
     assert math.isclose(float(answers["dtheta"]), theta1, rel_tol=1e-6)
     assert not math.isclose(theta1, -2 * math.pi * I1 / (I1 + I2), rel_tol=1e-2)
+
+
+def test_notes_6_5_elroy_from_the_notes_equation():
+    """The notes' I1 d(theta) + I2 (d(psi) + d(theta)) = 0, integrated over psi from 0 to 2 pi, is
+    the derived expression exactly."""
+    solution = Solution(problem.load("elroys_beanie"))
+    I1, I2 = (solution.problem.parameters[n].symbol for n in ("I1", "I2"))
+    dtheta, dpsi, psi = sp.symbols("dtheta dpsi psi")
+    rate = sp.solve(I1 * dtheta + I2 * (dpsi + dtheta), dtheta)[0] / dpsi
+    assert sp.simplify(solution.expression("dtheta") - sp.integrate(rate, (psi, 0, 2 * sp.pi))) == 0
+    assert solution.problem.corrections[0]["where"].startswith("§6.5")
 
 
 def test_bounce_off_a_rod_against_the_effective_mass_formula():

@@ -1,7 +1,8 @@
 """Moves in a chain of states (`event: {move: BODY, to: POINT}`; derive.mechanics.moves): the
 textbook closed forms are in tests/textbook/states (a child walking to a turntable's center, a
 student on a stool pulling in two weights); here a free body, each refusal, and the second
-route shown to catch a wrong move."""
+route shown to catch a wrong move; and turns (`event: {turn: BODY, relative_to: OTHER, angle:
+psi}`), with Elroy's beanie's closed forms in tests/test_events.py."""
 from pathlib import Path
 
 import pytest
@@ -117,7 +118,7 @@ def test_only_a_move_follows_a_move(tmp_path):
     text = FREE.replace("MIDDLE", "rod.center").replace(
         "    middle: {from: spinning, event: {move: bead, to: rod.center}}\n",
         "    middle: {from: spinning, event: {move: bead, to: rod.center}}\n    later: {from: middle, when: stops}\n")
-    assert "only another move may follow it" in refused(tmp_path, text, "scene.states.later.from")
+    assert "only another move or a turn may follow it" in refused(tmp_path, text, "scene.states.later.from")
 
 
 def test_a_state_may_not_take_a_joints_name(tmp_path):
@@ -153,3 +154,72 @@ def test_a_speed_after_a_move_is_asked_only_where_nothing_shifts(tmp_path):
     free = FREE.replace("MIDDLE", "{rod: [L/4, 0]}").replace(
         "ask:\n", "ask:\n  v: {meaning: the bead's speed, of: bead.speed, in: middle, unit: m/s}\n")
     assert "free to shift" in refused(tmp_path, free, "ask.v.in")
+
+
+SPINNING_BEANIE = """\
+id: spinning_beanie
+title: Elroy's beanie, spinning
+topic: conservation
+parameters:
+  I1: {meaning: moment of inertia of the outer oval, unit: kg*m^2, range: [0.01, 0.1], sig_figs: 2}
+  I2: {meaning: moment of inertia of the inner oval, unit: kg*m^2, range: [0.001, 0.05], sig_figs: 2}
+  w0: {meaning: angular velocity of the outer oval, unit: rad/s, range: [1, 2], sig_figs: 2}
+scene:
+  bodies:
+    outer: {shape: custom, inertia: I1, joint: fixed_axle}
+    inner: {shape: custom, inertia: I2, joint: fixed_axle}
+  states:
+    spinning: {rates: {outer.angular_velocity: w0, inner.angular_velocity: 0}}
+    turned: {from: spinning, event: {turn: inner, relative_to: outer, angle: pi}}
+ask:
+  omega: {meaning: angular velocity of the outer oval after, of: outer.angular_velocity, in: turned, unit: rad/s}
+question: |
+  The inner oval of a spinning beanie is turned half around relative to the outer one.
+"""
+
+
+def test_a_turn_keeps_the_angular_momentum_and_ends_with_the_bodies_turning_together(tmp_path):
+    """I1 w0 = (I1 + I2) omega: the turn ends with the inner oval at rest relative to the outer."""
+    solution = Solution(problem.load(write_problem(tmp_path, SPINNING_BEANIE)))
+    I1, I2, w0 = (solution.problem.parameters[n].symbol for n in ("I1", "I2", "w0"))
+    assert sp.simplify(solution.expression("omega") - I1 * w0 / (I1 + I2)) == 0
+
+
+def test_an_angle_after_a_turn_that_keeps_a_momentum_is_refused(tmp_path):
+    """With angular momentum, where the ovals end depends on how long the turn takes."""
+    text = SPINNING_BEANIE.replace("of: outer.angular_velocity, in: turned, unit: rad/s",
+                                   "of: outer.angle, in: turned, unit: rad")
+    assert "depend on how long it takes" in refused(tmp_path, text, "ask.omega.of")
+
+
+def test_a_turn_refuses_what_it_cannot_turn(tmp_path):
+    text = SPINNING_BEANIE.replace("angle: pi}", "}")
+    assert "missing: a turn gives relative_to and angle" in refused(tmp_path, text, "scene.states.turned.event.angle")
+    text = SPINNING_BEANIE.replace("relative_to: outer", "relative_to: inner")
+    assert "relative to another" in refused(tmp_path, text, "scene.states.turned.event")
+    text = SPINNING_BEANIE.replace("relative_to: outer", "to: outer")
+    assert "a turn has no to" in refused(tmp_path, text, "scene.states.turned.event.to")
+
+
+def test_the_second_route_catches_a_wrong_turn(monkeypatch):
+    """Elroy's beanie: Newton–Euler's angular momentum with the outer oval's spin counted twice
+    puts the outer oval elsewhere after the turn, and the check says so."""
+    original = moves.Symmetry.momentum
+
+    def first_spin_twice(self, coords):
+        first = coords.scene.bodies[self.moved[0]]
+        extra = first.inertia * coords.angular_velocity(first.name) if first.rotates and self.about is not None else 0
+        return original(self, coords) + extra
+
+    monkeypatch.setattr(moves.Symmetry, "momentum", first_spin_twice)
+    with pytest.raises(CheckFailure, match="after the turn turned, theta_outer"):
+        report.solve(problem.load("elroys_beanie"), {}, 4)
+
+
+def test_no_state_follows_a_turn_that_leaves_the_bodies_loose(tmp_path):
+    text = SPINNING_BEANIE.replace(
+        "    turned: {from: spinning, event: {turn: inner, relative_to: outer, angle: pi}}\n",
+        "    turned: {from: spinning, event: {turn: inner, relative_to: outer, angle: pi}}\n"
+        "    back: {from: turned, event: {turn: inner, relative_to: outer, angle: -pi}}\n").replace(
+        "in: turned", "in: back")
+    assert "no state may follow it" in refused(tmp_path, text, "scene.states.back")

@@ -177,16 +177,24 @@ def test_a_cord_that_would_push_is_refused(tmp_path):
 @pytest.mark.parametrize("change, field", [
     (lambda t: t.replace("  g: {meaning: grav", "  H: {meaning: height, unit: m, value: 1}\n  g: {meaning: grav"),
      "parameters.H: no part of the scene"),
-    (lambda t: t.replace("ask:", "  events:\n    - stick: {body: ball, to: ball}\nask:"), "scene.events: no ask"),
     (lambda t: t.split("ask:")[0] + "ask:\n  I: {meaning: inertia, of: ball.inertia, unit: kg*m^2}\n"
      "question: |\n  A sphere of mass {{ M }}, {{ R }}, {{ theta }}, {{ mu_s }}, {{ mu_k }}.\n",
      "scene.bodies.ball.friction: nothing asked depends on the motion"),
-], ids=["parameter", "event", "friction"])
+], ids=["parameter", "friction"])
 def test_a_key_nothing_uses_is_refused(tmp_path, change, field):
     write(tmp_path, change(SPHERE.replace("FRICTION", "friction: {static: mu_s, kinetic: mu_k}")))
     result = run_derive("solve", str(tmp_path / "problem.yaml"))
     assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert field in result.stderr
+
+
+def test_the_old_events_list_is_refused_with_how_to_write_it_as_states(tmp_path):
+    text = SPHERE.replace("FRICTION", "friction: {static: mu_s, kinetic: mu_k}")
+    write(tmp_path, text.replace("ask:", "  events:\n    - stick: {body: ball, to: ball}\nask:"))
+    result = run_derive("solve", str(tmp_path / "problem.yaml"))
+    assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert "problem.yaml" in result.stderr and "scene.events: write events as states:" in result.stderr
+    assert "event: {stick: bullet, to: rod}" in result.stderr
 
 
 def test_kinetic_friction_above_static_is_refused(tmp_path):
@@ -400,3 +408,11 @@ def test_a_pull_that_lifts_a_body_off_its_surface_is_refused():
     result = run_derive("solve", path, "--set", "F=10", "--set", "M=0.3")
     assert result.returncode == 2 and "normal" in result.stderr, result.stdout + result.stderr
     assert run_derive("solve", path, "--set", "F=1", "--set", "M=0.3").returncode == 0
+
+
+def test_a_velocity_of_a_body_that_does_not_roll_is_refused_with_the_states_form(tmp_path):
+    write(tmp_path, SPHERE.replace("contact: rolling, FRICTION", "contact: sliding, velocity: [sqrt(g*R), 0]"))
+    result = run_derive("solve", str(tmp_path / "problem.yaml"))
+    assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert "scene.bodies.ball.velocity: a velocity is the speed of a body rolling without slipping" in result.stderr
+    assert "states: {moving: {rates: {ball.velocity.x: v}}}" in result.stderr

@@ -25,7 +25,7 @@ def given_motion(scene, name: str) -> Motion | None:
     else its rates in the first state given by rates (`states:`), where it is placed; None where
     neither moves it."""
     given = scene.motions.get(name)
-    if given is not None and (given.spin != 0 or any(v != 0 for v in given.velocity)):
+    if given is not None and any(v != 0 for v in given.velocity):
         return given
     first = next((s for s in scene.states.values() if s.rates), None)
     rates = {kind: value for body, kind, value in (first.rates if first else ()) if body == name}

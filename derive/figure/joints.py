@@ -6,7 +6,7 @@ import math
 from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt, _unit
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin
-from derive.scene import Body, InternalTurn
+from derive.scene import Body
 
 
 def _pinned(fig: _Figure) -> None:
@@ -70,7 +70,7 @@ def _axles(fig: _Figure, bodies: list[Body], at) -> None:
             fig.label(_add(at, where), (0, 0), fig.m(body.inertia))
     fig.axle(at)
     reel, r = ordered[0], radii[0]
-    for turn in (e for e in scene.events if isinstance(e, InternalTurn)):
+    for turn in (s.event for s in scene.states.values() if s.event and s.event.kind == "turn"):
         k = next((i for i, b in enumerate(ordered) if b.name == turn.body), 0)
         fig.spin(at, radii[k] * aspect * 0.75, 1, fig.tex(turn.angle), at=-90)
     strings = [c for c in scene.constraints if isinstance(c, Cord) and c.path[0].kind == "wound"

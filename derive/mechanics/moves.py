@@ -21,6 +21,13 @@ the time a problem has). The rates after solve the kept momenta with the joints'
 conditions after the move; where they do not fix every rate (a weight's moment about the pivot
 of a swing), the move is refused. The bodies are where they were, the mover at its new place.
 
+A turn (Elroy's beanie) is the same with a couple of any size between two turning bodies as the
+moving force, one turned through an angle relative to the other and at rest relative to it
+after: where a kept momentum is zero and its coefficients are constant (the linear joints
+applied), it is the rate of sum_j c_j q_j, so that sum is unchanged and, with the turn and the
+joints, fixes where the bodies end (from rest: I1 dtheta1 + I2 dtheta2 = 0). Otherwise where
+they end depends on how long the turn takes: those coordinates are `loose`.
+
 >>> import sympy as sp
 >>> from derive.mechanics.kinematics import Coordinates
 >>> from derive.parts.pin import Pin
@@ -50,7 +57,7 @@ import sympy as sp
 from derive.mechanics.derivation import Step, solve_linear, tidy
 from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, generalized_forces
-from derive.parts import AppliedForce, AppliedTorque
+from derive.parts import AppliedForce, AppliedTorque, Part
 from derive.parts.pin import Pin
 from derive.scene import Event, Scene
 
@@ -123,12 +130,14 @@ class Symmetry:
 
 @dataclass(frozen=True)
 class Moved:
-    """One route's state after a move: every coordinate and rate (`values`), the momenta it kept
-    and the steps that found them."""
+    """One route's state after a move or a turn: every coordinate and rate (`values`), the momenta
+    it kept, the steps that found them, and the coordinates it leaves `loose` (a turn's, where
+    they depend on how long it takes: their values are those before, and no rate depends on them)."""
 
     values: dict[sp.Symbol, sp.Expr]
     kept: tuple[Symmetry, ...]
     steps: tuple[Step, ...]
+    loose: tuple[sp.Symbol, ...] = ()
 
 
 def moved_pin(scene: Scene, event: Event, place) -> Pin:
@@ -151,35 +160,136 @@ def move(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
     place = sp.symbols("sigma_x sigma_y", real=True)  # the mover's place on its body, anywhere
     anywhere = with_pin(scene, moved_pin(scene, event, place))
     after = with_pin(scene, moved_pin(scene, event, event.place))
-    zero = _zero_test(anywhere, coords, sample, place)
-    test = _kept_by_lagrange if route == "lagrange" else _kept_by_newton_euler
-    kept = [s for s in _candidates(scene, coords, before) if test(anywhere, coords, s, zero)]
+    kept = _kept(anywhere, coords, before, route, sample, place)
     positions = _placed(scene, coords, before, event, kept)
+    return _after(scene, after, coords, before, kept, positions, route, sample, "move")
+
+
+def turn(scene: Scene, coords: Coordinates, before: dict, event: Event, route: str, sample) -> Moved:
+    """The state after the turn `event` (the body `event.body` turned through `event.angle`
+    relative to `event.to` by a couple between them, and at rest relative to it again) from the
+    state `before` of `scene`, by `route` ("lagrange" or "newton_euler"): the momenta the couple
+    and the scene's forces keep, as for a move. Where a kept momentum is zero and its
+    coefficients are constant, sum_j c_j dq_j = 0 over the turn however it is made (Elroy's
+    beanie: I1 dtheta1 + I2 (dtheta1 + psi) = 0): with the turn itself and the joints that are
+    linear in the coordinates, these fix where the bodies are. Coordinates they do not fix are
+    `loose` (where they end depends on how long the turn takes).
+
+    Raises MoveLimit where the rates after depend on a loose coordinate, where the joints do not
+    let the body turn so, or where the kept momenta do not fix every rate."""
+    couple = _Couple(event.body, event.to)
+    driven = dataclasses.replace(scene, loads=scene.loads + (couple,))
+    kept = _kept(driven, coords, before, route, sample, (couple.torque,))
+    momenta = [_momentum(scene, coords, s, route) for s in kept]
+    relative = coords.angle(event.body) - coords.angle(event.to)
+    earlier = {c.q: before[c.q] for c in coords.all}
+    turned = sp.Eq(relative - relative.xreplace(earlier), event.angle)
+    steps = [Step(f"The angle of the {event.body} relative to the {event.to} grows by the turn", (turned,))]
+    gaps = [g for part in scene.constraints for g in part.gaps(coords)
+            if not any(sp.diff(g, q).has(*earlier) for q in earlier)]  # linear in the coordinates
+    held = _solved(gaps, list(earlier))  # on them, the momenta in the coordinates they leave free
+    rates = _solved([coords.ddt(g) for g in gaps], [c.u for c in coords.all])
+    displaced = []
+    for p in momenta:
+        reduced = p.xreplace(held).xreplace(rates)
+        if tidy(p.xreplace(before)) == 0 and not any(sp.diff(reduced, c.u).has(*earlier) for c in coords.all):
+            displaced.append(sp.Eq(sum((sp.diff(reduced, c.u) * (c.q - before[c.q]) for c in coords.all),
+                                       sp.Integer(0)), 0))
+    if displaced:
+        steps.append(Step("A kept momentum that is zero, with constant coefficients, is the rate of sum_j c_j q_j: "
+                          "that sum is the same after the turn, however it is made", tuple(displaced)))
+    solutions = sp.linsolve([turned, *displaced, *(sp.Eq(g, 0) for g in gaps)], list(earlier))
+    if solutions == sp.S.EmptySet:
+        raise MoveLimit(f"turn the {event.body} relative to the {event.to}: the joints do not let it turn so")
+    (solution,) = solutions
+    positions = {q: tidy(v) if not v.has(*earlier) else before[q] for q, v in zip(earlier, solution)}
+    loose = tuple(q for q, v in zip(earlier, solution) if v.has(*earlier))
+    steps.append(Step("Where the bodies are after the turn", tuple(sp.Eq(q, v) for q, v in positions.items()
+                                                                 if q not in loose and v != before[q])))
+    if loose:
+        needed = [*momenta, *(v for part in scene.constraints for v in part.conditions(coords)),
+                  *(coords.ddt(g) for part in scene.constraints for g in part.gaps(coords))]
+        if any(e.has(*loose) for e in needed):
+            raise MoveLimit(f"find the rates after the turn of the {event.body}: they depend on where the bodies are "
+                            "after it, which depends on how long it takes (it keeps a momentum that is not zero, or "
+                            "whose coefficients change as they move)")
+    stop = coords.angular_velocity(event.body) - coords.angular_velocity(event.to)  # at rest relative to it
+    return _after(scene, scene, coords, before, kept, positions, route, sample, "turn", tuple(steps), (stop,), loose)
+
+
+@dataclass(frozen=True)
+class _Couple(Part):
+    """The couple that turns `body` relative to `to`: a torque of any size on it, and the
+    opposite one on `to` (Lagrange: its power; Newton–Euler: the two torques)."""
+
+    body: str
+    to: str
+    name: str = "couple"
+    torque: sp.Symbol = sp.Symbol("tau_turn", real=True)
+
+    def bodies(self) -> tuple[str, ...]:
+        return (self.body, self.to)
+
+    def power(self, coords) -> sp.Expr:
+        return self.torque * (coords.angular_velocity(self.body) - coords.angular_velocity(self.to))
+
+    def loads(self, coords) -> list[AppliedTorque]:
+        return [AppliedTorque(self.body, self.torque, "couple"), AppliedTorque(self.to, -self.torque, "couple")]
+
+
+def _solved(equations: list[sp.Expr], unknowns: list[sp.Symbol]) -> dict:
+    """The unknowns that linear `equations` (= 0) fix in terms of the others, as a substitution."""
+    (solution,) = sp.linsolve(equations, unknowns) if equations else [unknowns]
+    return {u: v for u, v in zip(unknowns, solution) if v != u}
+
+
+def _kept(scene: Scene, coords: Coordinates, before: dict, route: str, sample, free) -> list[Symmetry]:
+    """The rigid motions whose momenta the scene keeps by `route`, whatever the symbols `free`
+    (the mover's place, the couple of a turn)."""
+    zero = _zero_test(scene, coords, sample, free)
+    test = _kept_by_lagrange if route == "lagrange" else _kept_by_newton_euler
+    return [s for s in _candidates(scene, coords, before) if test(scene, coords, s, zero)]
+
+
+def _momentum(scene: Scene, coords: Coordinates, symmetry: Symmetry, route: str) -> sp.Expr:
+    """Lagrange: p_xi = sum_j dT/du_j xi_j. Newton–Euler: the angular momentum about the point
+    (the momentum along the shift) of the moved bodies."""
+    if route != "lagrange":
+        return symmetry.momentum(coords)
+    kinetic, _ = energies(scene, coords)
+    xi = symmetry.field(coords)
+    return sum((sp.diff(kinetic, c.u) * xi[c.q] for c in coords.all), sp.Integer(0))
+
+
+def _after(scene: Scene, after: Scene, coords: Coordinates, before: dict, kept: list[Symmetry], positions: dict,
+           route: str, sample, what: str, steps: tuple = (), extra=(), loose=()) -> Moved:
+    """The rates after a move or a turn: the kept momenta as before, with the joints' velocity
+    conditions of the scene `after` and the `extra` rates that vanish, at `positions`; `steps`
+    shown after the kept momenta."""
+    momenta = [_momentum(scene, coords, s, route) for s in kept]
     if route == "lagrange":
-        kinetic, _ = energies(scene, coords)
-        momenta = [sum((sp.diff(kinetic, c.u) * s.field(coords)[c.q] for c in coords.all), sp.Integer(0))
-                   for s in kept]
         conditions = [coords.ddt(g) for part in after.constraints for g in part.gaps(coords)]
     else:
-        momenta = [s.momentum(coords) for s in kept]
         conditions = [v for part in after.constraints for v in part.conditions(coords)]
     earlier = {**{c.u: before[c.u] for c in coords.all}, **{c.q: before[c.q] for c in coords.all}}
-    equations = [sp.Eq(c.xreplace(positions), 0) for c in conditions]
+    equations = [sp.Eq(c.xreplace(positions), 0) for c in [*conditions, *extra]]
     equations += [sp.Eq(p.xreplace(positions), tidy(p.xreplace(earlier))) for p in momenta]
     chosen = _independent(equations, [c.u for c in coords.all], sample)
     if len(chosen) < len(coords.all):
-        what = "; ".join(s.describe(scene) for s in kept) or "no momentum"
-        raise MoveLimit(f"find the rates after this move: it keeps {what}, and with the joints that does not fix "
-                        "them (derive models moves during which no force from outside changes a momentum; a "
+        named = "; ".join(s.describe(scene) for s in kept) or "no momentum"
+        raise MoveLimit(f"find the rates after this {what}: it keeps {named}, and with the joints that does not fix "
+                        f"them (derive models {what}s during which no force from outside changes a momentum; a "
                         "weight's moment about a pivot does)")
     solution = solve_linear([equations[i] for i in chosen], [c.u for c in coords.all])
     values = {**positions, **{c.u: tidy(solution.raw[c.u]) for c in coords.all}}
-    used = [(kept[i - len(conditions)], equations[i]) for i in chosen if i >= len(conditions)]
-    steps = (Step("Forces from outside the moving bodies have no moment (no component) here, so the move keeps "
+    fixed = len(conditions) + len(extra)
+    used = [(kept[i - fixed], equations[i]) for i in chosen if i >= fixed]
+    steps = (Step(f"Forces from outside the moving bodies have no moment (no component) here, so the {what} keeps "
                   + "; ".join(s.describe(scene) for s, _ in used) + " (before, and after)",
                   tuple(eq for s, e in used for eq in (sp.Eq(s.symbol, e.rhs), sp.Eq(s.symbol, tidy(e.lhs))))),
-             Step("After the move", tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0)))
-    return Moved(values, tuple(s for s, _ in used), steps)
+             *steps,
+             Step(f"After the {what}", tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0)))
+    return Moved(values, tuple(s for s, _ in used), steps, loose)
 
 
 def _placed(scene: Scene, coords: Coordinates, before: dict, event: Event, kept: list[Symmetry]) -> dict:
@@ -228,13 +338,13 @@ def _kept_by_newton_euler(scene: Scene, coords: Coordinates, symmetry: Symmetry,
                for part in scene.parts)
 
 
-def _zero_test(scene: Scene, coords: Coordinates, sample, place) -> callable:
+def _zero_test(scene: Scene, coords: Coordinates, sample, free) -> callable:
     """expr -> whether it vanishes wherever the scene's gaps hold: at three random configurations
-    on them (the dependent coordinates solved from the gaps), with random rates, places and
-    forces, the parameters at the middle of their ranges."""
+    on them (the dependent coordinates solved from the gaps), with random rates, forces and
+    values of the symbols `free`, the parameters at the middle of their ranges."""
     solved = solve_gaps(scene, coords, sample)
     forces = [f for part in scene.parts for f in part.unknowns().values()]
-    free = [*(c.q for c in coords.all if c.q not in solved), *(c.u for c in coords.all), *place, *forces]
+    free = [*(c.q for c in coords.all if c.q not in solved), *(c.u for c in coords.all), *free, *forces]
     rng = random.Random(0)
     points = [{s: sp.Rational(rng.randint(-400, 400), 1000) for s in free} for _ in range(3)]
 
