@@ -301,7 +301,8 @@ class Solution(StateAnswers, CrossChecks):
         height = tidy(needed + top[1] - (loop.middle[1] - loop.path_radius(radius)))  # above the lowest point
         steps = (
             Step(f"Normal force on the {body} at the top of the loop, at speed s", (sp.Eq(sp.Symbol("N"), normal),)),
-            Step("It stays on the track while N >= 0: the least speed at the top", (sp.Eq(speed, critical[0]),)),
+            Step("It stays on the track while the normal force is not negative: the least speed at the top",
+                 (sp.Eq(speed, critical[0]),)),
             *balance.steps,
             Step("The least drop to the top, and the release height above the lowest point",
                  (sp.Eq(drop, tidy(needed)), sp.Eq(sp.Symbol("h"), height))),
@@ -695,8 +696,10 @@ class Solution(StateAnswers, CrossChecks):
         held = self.regimes[0].name
         result = {f"which regime: {held} or slips": [Step(
             f"Held without slip, the {contact.body} needs the friction f and the normal force N found above; it "
-            f"{held} while mu_s N >= |f|, that is while mu_s is at least", (sp.Eq(sp.Symbol("mu_min"), least),)),
-            Step("Otherwise it slips, and kinetic friction mu_k N acts the way f would: against the slip")]}
+            f"{held} while static friction can supply f, that is while the coefficient of static friction is at least",
+            (sp.Eq(sp.Symbol("mu_min"), least),)),
+            Step("Otherwise it slips, and kinetic friction, N times the coefficient of kinetic friction, acts the way f "
+                 "would: against the slip")]}
         ratio = grip / normal
         points = sample_points(self.problem, ratio + friction.static_coefficient(contact), count=20)
         for index, regime in enumerate(self.regimes[1:], start=1):
@@ -743,10 +746,11 @@ class Solution(StateAnswers, CrossChecks):
         rr = sp.Symbol("rddot")
         conic, e = orbits.conic(orbit.GM, l)
         steps = [
-            Step("Radial equation (Lagrange in polar coordinates; l = r^2 phi' conserved)",
+            Step("Radial equation (Lagrange in polar coordinates; the angular momentum per unit mass, l, is conserved)",
                  (sp.Eq(rr, orbits.radial_acceleration(orbit.GM, l, "lagrange")),)),
             Step("Effective potential per unit mass", (sp.Eq(sp.Symbol("U_eff"), orbits.effective_potential(orbit.GM, l)),)),
-            Step("Orbit from u'' + u = GM/l^2 with u = 1/r", (sp.Eq(sp.Function("r")(f), conic),)),
+            Step("The orbit, from the radial equation written in the reciprocal of the radius (Binet's equation)",
+                 (sp.Eq(sp.Function("r")(f), conic),)),
         ]
         steps += [Step(a.meaning, (sp.Eq(sp.Symbol(n), self.expressions[n]),)) for n, a in self.problem.asks.items()]
         return steps
@@ -770,8 +774,8 @@ class Solution(StateAnswers, CrossChecks):
             return Step(ask.meaning, (sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name]),))
         body = self.scene.bodies[ask.quantity.target]
         if body.density is not None:
-            return Step(f"Integrate the density {sp.sstr(body.density)} over the {body.shape}",
-                        (sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name]),))
+            return Step(f"Integrate the density over the {body.shape}",
+                        (sp.Eq(sp.Symbol("rho"), body.density), sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name])))
         derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
         shape = inertia.SHAPES[body.shape]
         mapping = {inertia.M: body.mass, **{shape.sizes[k]: v for k, v in body.sizes.items()}}

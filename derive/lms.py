@@ -6,7 +6,8 @@ cloze question per variant, with a field per asked quantity, for the quiz's "ran
 from category". Canvas: a question group (a `<section>` that picks 1) per problem and asked
 quantity, with one item per variant worth `POINTS` points, in a graded quiz (`assessment_meta.xml`,
 quiz type `assignment`). An item is numerical (the answer and its tolerance) or, with wrong choices
-derived from mistaken set-ups, multiple choice. Each question's general feedback is the worked
+derived from mistaken set-ups, multiple choice, each wrong choice's feedback naming the mistake that
+gives it. Each question's general feedback is the worked
 solution of its variant (the solutions sheet's own text, as HTML with MathJax math). A problem's
 figure (a PNG, derive.figure_files) travels inside the file: in each Moodle question's text, in the
 Canvas zip once, and is shown below the question at its printed width.
@@ -70,6 +71,7 @@ class Item:
     tolerance: str  # absolute, in `unit`
     wrong: tuple[str, ...] = ()  # wrong choices (multiple choice); none: a numerical question
     solution: str = ""  # the variant's worked solution, HTML with MathJax math: the general feedback
+    mistakes: tuple[str, ...] = ()  # what gives each wrong choice (distractors): its feedback
 
 
 def tolerance(value: str, policy: str | None = None) -> str:
@@ -196,10 +198,12 @@ def _survives_canvas(value: str, margin: str) -> bool:
     return kept_margin > 0 and abs(kept - Decimal(value)) <= kept_margin
 
 
-def choices(item: Item) -> list[tuple[str, bool]]:
-    """The right value among the wrong ones, (value, right), in an order fixed by the item
-    (the same every build, different between items)."""
-    result = [(item.value, True)] + [(w, False) for w in item.wrong]
+def choices(item: Item) -> list[tuple[str, bool, str]]:
+    """The right value among the wrong ones, (value, right, feedback), in an order fixed by the item
+    (the same every build, different between items). A wrong one's feedback names the mistake that
+    gives it (`Item.mistakes`); the right one has none."""
+    why = [f"Not this one: it is what {m} gives." for m in item.mistakes] or [""] * len(item.wrong)
+    result = [(item.value, True, "")] + [(w, False, reason) for w, reason in zip(item.wrong, why)]
     random.Random(f"{item.problem}/{item.variant}/{item.name}").shuffle(result)
     return result
 
@@ -261,7 +265,7 @@ def _cloze(item: Item, k: int) -> str:
     if not item.wrong:
         return _with_unit(f"{{1:NUMERICAL:={item.value}:{item.tolerance}}}", item.unit)
     options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(choice_text(v, item.unit, k))}"
-                       for v, right in choices(item))
+                       + (f"#{_cloze_text(why)}" if why else "") for v, right, why in choices(item))
     return f"{{1:MULTICHOICE_V:{options}}}"
 
 
@@ -411,38 +415,47 @@ def _field(label: str, entry: str) -> etree._Element:
 
 
 def _numerical(item: Item, k: int) -> tuple[str, str, etree._Element, etree._Element]:
-    """(question type, prompt, response, correct condition): the answer, or within its margin, in
-    the question's unit 10^-k UNIT."""
+    """(question type, prompt, response, correct condition, feedback by choice: none): the answer, or
+    within its margin, in the question's unit 10^-k UNIT."""
     (value, margin), unit = scaled(item.value, item.tolerance, k), scaled_unit(item.unit, k)
     low, high = Decimal(value) - Decimal(margin), Decimal(value) + Decimal(margin)
     response = QTI.response_str(QTI.render_fib(QTI.response_label(ident="answer1"), fibtype="Decimal"),
                                 ident="response1", rcardinality="Single")
     within = QTI("and", QTI.vargte(str(low), respident="response1"), QTI.varlte(str(high), respident="response1"))
     condition = QTI("or", QTI.varequal(value, respident="response1"), within)
-    return "numerical_question", f"{_label(item)} (in {unit})" if unit else _label(item), response, condition
+    return "numerical_question", f"{_label(item)} (in {unit})" if unit else _label(item), response, condition, {}
 
 
-def _multiple_choice(item: Item, k: int) -> tuple[str, str, etree._Element, etree._Element]:
-    """(question type, prompt, response, correct condition): the right choice among the wrong, each
-    a value as text in the question's unit 10^-k UNIT (`choice_text`)."""
+def _multiple_choice(item: Item, k: int) -> tuple[str, str, etree._Element, etree._Element, dict[str, str]]:
+    """(question type, prompt, response, correct condition, feedback by choice): the right choice
+    among the wrong, each a value as text in the question's unit 10^-k UNIT (`choice_text`), each
+    wrong one with the mistake that gives it."""
     options = choices(item)
     labels = (QTI.response_label(QTI.material(QTI.mattext(choice_text(v, item.unit, k), texttype="text/plain")),
                                  ident=f"choice{n}")
-              for n, (v, _) in enumerate(options))
+              for n, (v, _, _) in enumerate(options))
     response = QTI.response_lid(QTI.render_choice(*labels), ident="response1", rcardinality="Single")
-    (right,) = [n for n, (_, is_right) in enumerate(options) if is_right]
-    return "multiple_choice_question", _label(item), response, QTI.varequal(f"choice{right}", respident="response1")
+    (right,) = [n for n, (_, is_right, _) in enumerate(options) if is_right]
+    return ("multiple_choice_question", _label(item), response, QTI.varequal(f"choice{right}", respident="response1"),
+            {f"choice{n}": why for n, (_, _, why) in enumerate(options) if why})
 
 
 def _qti_item(item: Item, k: int, ident: str, figure: str = "") -> etree._Element:
     """A Canvas item: its question type and points, the question's HTML (with the problem's
     `figure`, HTML), the response (numerical in the question's unit 10^-k UNIT), its scoring and
-    the worked solution as general feedback."""
-    kind, prompt, response, condition = _multiple_choice(item, k) if item.wrong else _numerical(item, k)
+    the worked solution as general feedback; a wrong choice's feedback (`{choice}_fb`, as text2qti
+    writes it and Canvas's assessment_item_converter reads it) names its mistake."""
+    kind, prompt, response, condition, mistaken = _multiple_choice(item, k) if item.wrong else _numerical(item, k)
     text = _paragraphs(_mathjax(item.question)) + figure + _paragraphs(prompt)
     scoring = [QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
                                  {"continue": "No"})]
     feedback = []
+    for choice, why in mistaken.items():
+        scoring.insert(0, QTI.respcondition(QTI.conditionvar(QTI.varequal(choice, respident="response1")),
+                                            QTI.displayfeedback(feedbacktype="Response", linkrefid=f"{choice}_fb"),
+                                            {"continue": "Yes"}))
+        feedback.append(QTI.itemfeedback(QTI.flow_mat(QTI.material(QTI.mattext(why, texttype="text/plain"))),
+                                         ident=f"{choice}_fb"))
     if item.solution:
         scoring.insert(0, QTI.respcondition(QTI.conditionvar(QTI.other()),
                                             QTI.displayfeedback(feedbacktype="Response", linkrefid="general_fb"),

@@ -42,6 +42,8 @@ def symbol_latex(name: str) -> str:
     >>> symbol_latex("dphi_exact"), symbol_latex("GM"), symbol_latex("a_theta"), symbol_latex("Mass")
     ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
     """
+    if name.startswith("\\"):  # a name the engine gives in LaTeX (derivation.LAGRANGIAN)
+        return name
     base, supers, subs = split_super_sub(name)
     letter = translate(base)
     if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent

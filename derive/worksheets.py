@@ -573,10 +573,11 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
                 if answers[name] is None:
                     continue
                 choices = tuple(d["value"] for d in wrong.get(name, ()))
+                asked = len(choices) >= distractors.WANTED
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
                                       answers[name], units.unicode_unit(ask.unit), tolerances[name],
-                                      choices if len(choices) >= distractors.WANTED else (),
-                                      solutions[item.problem.id, number]))
+                                      choices if asked else (), solutions[item.problem.id, number],
+                                      tuple(d["mistake"] for d in wrong.get(name, ())) if asked else ()))
     return items
 
 

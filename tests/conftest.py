@@ -110,10 +110,11 @@ _CLOZE_FIELD = re.compile(r"\{([0-9]*):(" + _CLOZE_TYPES + r"):(?P<alternatives>
                           + "(~" + _CLOZE_ALTERNATIVE + r")*)\}", re.S)
 
 
-def moodle_cloze(text: str) -> tuple[str, list[tuple[str, list[tuple[str, str]]]]]:
+def moodle_cloze(text: str, feedback: bool = False) -> tuple[str, list[tuple[str, list[tuple[str, ...]]]]]:
     """A cloze question's HTML as Moodle reads it on import: (the text with each field as {#N},
-    [(field type, [(fraction mark, answer as Moodle stores it)])]). A choice is html_entity_decode()d
-    and only `\\}` and `\\#` are unescaped; a number is kept as written."""
+    [(field type, [(fraction mark, answer as Moodle stores it)])]), each answer with its feedback
+    too where `feedback`. A choice and a feedback are html_entity_decode()d and only `\\}` and `\\#`
+    are unescaped; a number is kept as written."""
     fields = []
     while match := _CLOZE_FIELD.search(text):
         kind, remaining, answers = match.group(2), match.group("alternatives"), []
@@ -121,7 +122,8 @@ def moodle_cloze(text: str) -> tuple[str, list[tuple[str, list[tuple[str, str]]]
             answer = alternative.group(3)
             if not kind.startswith(("NUMERICAL", "NM")):
                 answer = html.unescape(answer).replace("\\}", "}").replace("\\#", "#")
-            answers.append((alternative.group(1) or "", answer))
+            said = html.unescape(alternative.group(5) or "").replace("\\}", "}").replace("\\#", "#")
+            answers.append((alternative.group(1) or "", answer, said) if feedback else (alternative.group(1) or "", answer))
             remaining = remaining.split(alternative.group(0), 1)[1]
         fields.append((kind, answers))
         text = text.replace(match.group(0), f"{{#{len(fields)}}}", 1)

@@ -166,6 +166,12 @@ def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistak
         assert sorted(a for mark, a in options if mark == "%0%") == sorted(_choice(w["value"], unit) for w in wrong)
         assert len(options) == 4  # three mistakes apply to every answer of the rolling sphere
     assert any(options[0][0] != "=" for _, options in fields)  # the right answer is not always first
+    said = [f for q in quiz.iter("question") if q.get("type") == "cloze"
+            for f in moodle_cloze(q.find("questiontext/text").text, feedback=True)[1]]
+    for (_, options), (_, unit, wrong) in zip(said, answers):  # each wrong choice says which mistake gives it
+        assert sorted((a, f) for mark, a, f in options if mark == "%0%") == sorted(
+            (_choice(w["value"], unit), f"Not this one: it is what {w['mistake']} gives.") for w in wrong)
+        assert [f for mark, _, f in options if mark == "="] == [""]
     with zipfile.ZipFile(out / "canvas-qti.zip") as archive:
         _, assessment, _ = qti_package(archive)
     titles = {f"rolling_incline v{n} {name}": (a["value"], a["unit"]) for n, v in enumerate(key["variants"], start=1)
@@ -176,9 +182,14 @@ def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistak
         value, unit = titles[item.get("title")]
         fields = {f.findtext("{*}fieldlabel"): f.findtext("{*}fieldentry") for f in item.iter("{*}qtimetadatafield")}
         assert fields == {"question_type": "multiple_choice_question", "points_possible": "1"}
-        right = next(e.text for e in item.iter() if e.tag.endswith("varequal"))
+        (scored,) = [c for c in item.iter("{*}respcondition") if c.find("{*}setvar") is not None]
+        right = scored.findtext(".//{*}varequal")
         label = next(e for e in item.iter() if e.tag.endswith("response_label") and e.get("ident") == right)
         assert label.find(".//{*}mattext").text == _choice(value, unit)
+        shown = {f.get("ident"): f.findtext(".//{*}mattext") for f in item.iter("{*}itemfeedback")}
+        linked = {d.get("linkrefid") for d in item.iter("{*}displayfeedback")}
+        assert set(shown) == linked == {"general_fb"} | {f"choice{n}_fb" for n in range(4) if f"choice{n}" != right}
+        assert all(shown[f].startswith("Not this one: it is what ") for f in shown if f != "general_fb")
     again = tmp_path / "again"
     assert run_derive("sheet", str(week), "--to", "moodle,qti", "--out", str(again)).returncode == 0
     assert (again / "moodle.xml").read_bytes() == (out / "moodle.xml").read_bytes()

@@ -73,6 +73,15 @@ def test_units_are_siunitx_in_the_pdfs_and_plain_math_where_pandoc_and_mathjax_r
     assert "\\unit" not in html and "\\,\\mathrm{kg}</annotation>" in html  # MathML, from plain math
 
 
+def test_each_problem_and_its_figure_are_one_box_that_no_page_break_splits(demo):
+    tex = (demo / "worksheet.tex").read_text()
+    items = tex.split("\\item ")[1:]
+    assert len(items) == 3 * 3
+    for item in items:
+        box = item.split("\\end{minipage}")[0]
+        assert item.startswith("\\begin{minipage}[t]{\\linewidth}") and "\\begin{tikzpicture}" in box
+
+
 def _pages(path) -> int:
     info = subprocess.run(["pdfinfo", str(path)], capture_output=True, text=True, check=True).stdout
     return int(next(line.split()[1] for line in info.splitlines() if line.startswith("Pages:")))

@@ -18,6 +18,14 @@ from derive import balls, limits
 from derive.mechanics import jets
 
 
+
+#: The symbols the steps name energies by: K for the kinetic energy (T is a tension in most
+#: problems) and a script L for the Lagrangian (L is often a length). render.symbol_latex prints
+#: a name that starts with a backslash as it is (a problem file's names are identifiers).
+KINETIC = sp.Symbol("K")
+LAGRANGIAN = sp.Symbol(r"\mathcal{L}")
+
+
 @dataclass(frozen=True)
 class Step:
     """One step of a derivation as the lecture notes would write it: a sentence and equations."""
@@ -211,6 +219,22 @@ class Derivation:
     def solving_step(self, unknowns, state: dict[sp.Symbol, sp.Expr], where: str) -> Step:
         solved = self.at(state)
         return Step(f"Solving {where}", tuple(sp.Eq(u, solved[u]) for u in unknowns))
+
+
+def worth_showing(equations) -> tuple[sp.Eq, ...]:
+    """The constraint equations a worked solution writes out: one that only says a coordinate's
+    rate or acceleration is zero (an axle holding a center in place) is said in the step's words
+    (FIXED_LEFT_OUT) instead.
+
+    >>> x, y = sp.symbols("xdot_disk ydot_block")
+    >>> worth_showing([sp.Eq(x, 0), sp.Eq(-x + y, 0)])
+    (Eq(-xdot_disk + ydot_block, 0),)
+    """
+    return tuple(e for e in equations if not (e.rhs == 0 and (-e.lhs if e.lhs.could_extract_minus_sign() else e.lhs).is_Symbol))
+
+
+#: What a constraints step says of the equations `worth_showing` leaves out.
+FIXED_LEFT_OUT = "; a coordinate a constraint simply holds fixed, such as a center on an axle, stays at its place"
 
 
 def simplest(expr: sp.Expr) -> sp.Expr:

@@ -41,8 +41,8 @@ def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
         else:
             time = tidy((path.rate(end) - path.rate(s0)) / acceleration)
         symbol = sp.Symbol("t")
-        return time, Step(f"The acceleration along {s} is constant, {s}'' = {sp.sstr(acceleration)}, so "
-                          f"t = ({s}'1 - {s}'0)/{s}''", (sp.Eq(symbol, time),))
+        return time, Step(f"The acceleration along {s} is constant, so the time is the change in the rate of {s} "
+                          "divided by it", (sp.Eq(symbol, time),))
     # Over w in [0, 1], the fraction of the way w^2 (3 - 2 w), flat at both ends: the 1/sqrt
     # singularities where the motion starts from rest or ends at a turning point become smooth
     # (mpmath's tanh-sinh quadrature then gives 20 digits at 35 where over the fraction itself it
@@ -53,8 +53,8 @@ def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
     # the integral into, diverges at a turning point in each part.
     integrand = 6 * sp.sqrt(path.inertia.xreplace({s: where}) * (w * (1 - w)) ** 2 / path.kinetic.xreplace({s: where}))
     time = sp.Abs(end - s0) * sp.Integral(integrand, (w, 0, 1))
-    return time, Step(f"The acceleration along {s} is not constant: t is the integral of d{s}/|{s}'| from the "
-                      "start, evaluated numerically", (sp.Eq(sp.Symbol("t"), time),))
+    return time, Step(f"The acceleration along {s} is not constant: the time is the integral, along the way "
+                      f"from the start, of each step in {s} divided by the rate of {s} there, evaluated numerically", (sp.Eq(sp.Symbol("t"), time),))
 
 
 def period(scene: Scene, coords: Coordinates, coordinate: Coordinate, amplitude: sp.Expr, derivation: Derivation,
@@ -69,7 +69,7 @@ def period(scene: Scene, coords: Coordinates, coordinate: Coordinate, amplitude:
     start = {**released, **{c.u: sp.Integer(0) for c in coords.all}}
     turned = reach(scene, coords, start, Stops(), derivation, sample)
     half, step = duration(turned.path, turned.end)
-    steps = (Step(f"Released from rest at {coordinate.q} = {sp.sstr(amplitude)}, the turning point on the other side",
+    steps = (Step("Released from rest at the amplitude, the turning point on the other side",
                   tuple(sp.Eq(c.q, turned.values[c.q]) for c in coords.all if c == coordinate)),
              *turned.steps, step,
              Step("It comes back the same way: the period is twice that time", (sp.Eq(sp.Symbol("T"), 2 * half),)))

@@ -100,7 +100,7 @@ def equilibrium(scene: Scene, derivation: Derivation, sample=None, resolve=None)
     steps = (
         Step(f"The constraints solved for the other coordinates, the acceleration of {q} from rest at any {q}",
              (sp.Eq(coordinate.a, acceleration),)),
-        Step(f"It rests where that vanishes, and stays where the acceleration pulls back (d{q}''/d{q} < 0)",
+        Step(f"It rests where that vanishes, and stays where the acceleration pulls back (it falls as {q} grows)",
              (sp.Eq(q, value),)),
     )
     return Equilibrium(coordinate, value, configuration, steps)

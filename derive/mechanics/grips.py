@@ -67,13 +67,12 @@ def grip(coords: Coordinates, start: dict, part, derivation: Derivation, decide)
         raise StateLimit(f"find where {_named(part)} grips where the accelerations change while it slips (only "
                          "constant ones are followed, as of disks on axles or a ball on a level floor)")
     t = sp.Symbol("t")
-    timing = Step(f"The slip rate {sp.sstr(slip)} = {sp.sstr(s0)} + ({sp.sstr(rate)}) t falls to zero at",
-                  (sp.Eq(t, took),))
+    timing = Step("The slip rate falls steadily from where it starts, and reaches zero at", (sp.Eq(t, took),))
     steps = (Step(f"While {_named(part)} slips, {_friction(part)} acts against the slip, the way it slips at the "
                   "start; the accelerations are then constant",
                   tuple(sp.Eq(c.a, a) for c, a in accelerations.items() if a != 0)),
              timing,
-             Step("Then, with constant accelerations (q = q0 + u0 t + a t^2/2, u = u0 + a t)",
+             Step("Then, at constant accelerations, each rate changes in proportion to the time",
                   tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0)))
     positive = ((way * s0, f"{_named(part)} slips the other way at these values"),
                 (took, f"the friction of {_named(part)} does not slow its slipping: it never grips"))

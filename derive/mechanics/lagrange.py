@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, at_state, rest_positions, simplest
+from derive.mechanics.derivation import (FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, Derivation, Step, at_state, rest_positions,
+                                        simplest, worth_showing)
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 
@@ -66,18 +67,18 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     # show them where the answers are read, in the reference configuration at rest.
     rest = coords.at_rest_in_reference()
     steps = [
-        Step("Kinetic and potential energy", (sp.Eq(sp.Symbol("T"), kinetic), sp.Eq(sp.Symbol("V"), potential))),
-        Step("The Lagrangian", (sp.Eq(sp.Symbol("L"), lagrangian),)),
+        Step("Kinetic and potential energy", (sp.Eq(KINETIC, kinetic), sp.Eq(sp.Symbol("V"), potential))),
+        Step("The Lagrangian, kinetic less potential energy", (sp.Eq(LAGRANGIAN, lagrangian),)),
     ]
+    shown = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in rates])
     if pairs:
-        steps.append(Step("Constraints g = 0, each with a multiplier equal to the force it exerts (their rates, "
-                          "in the reference configuration)",
-                          tuple(sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in rates)))
+        steps.append(Step("The constraints, each held by a multiplier equal to the force it exerts (their rates, "
+                          "in the reference configuration" + FIXED_LEFT_OUT + ")", shown))
     derivation = Derivation("lagrange", equations, unknowns, steps, rates, coords, [gap for gap, _ in pairs])
-    steps += [
-        Step("Euler–Lagrange equations, d/dt(dL/dq') - dL/dq = Q + sum of multiplier times dg/dq (in the reference "
-             "configuration, at rest)", tuple(at_state(e, rest) for e in equations)),
-        Step("Constraints at acceleration level",
-             tuple(at_state(e, rest) for e in derivation.at_rest_equations[len(equations):])),
-    ]
+    steps.append(Step("The Euler–Lagrange equation of each coordinate: the rate of change of its generalized momentum, "
+                      "less the Lagrangian's derivative in it, equals the applied forces and the constraint forces along "
+                      "it (in the reference configuration, at rest)", tuple(at_state(e, rest) for e in equations)))
+    if shown:
+        steps.append(Step("Constraints at acceleration level",
+                          worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]])))
     return derivation

@@ -196,8 +196,8 @@ def turn(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
             displaced.append(sp.Eq(sum((sp.diff(reduced, c.u) * (c.q - before[c.q]) for c in coords.all),
                                        sp.Integer(0)), 0))
     if displaced:
-        steps.append(Step("A kept momentum that is zero, with constant coefficients, is the rate of sum_j c_j q_j: "
-                          "that sum is the same after the turn, however it is made", tuple(displaced)))
+        steps.append(Step("A kept momentum that is zero, with constant coefficients, is the rate of a fixed sum of "
+                          "the coordinates: that sum is the same after the turn, however it is made", tuple(displaced)))
     solutions = sp.linsolve([turned, *displaced, *(sp.Eq(g, 0) for g in gaps)], list(earlier))
     if solutions == sp.S.EmptySet:
         raise MoveLimit(f"turn the {event.body} relative to the {event.to}: the joints do not let it turn so")

@@ -17,7 +17,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.parts import AppliedForce, AppliedTorque
-from derive.mechanics.derivation import Derivation, Step, at_state, rest_positions, simplest
+from derive.mechanics.derivation import FIXED_LEFT_OUT, Derivation, Step, at_state, rest_positions, simplest, worth_showing
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 
@@ -54,9 +54,9 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     conditions = [v for c in scene.constraints for v in c.conditions(coords)]
     unknowns = coords.accelerations + [f for c in scene.constraints for f in c.unknowns().values()]
     derivation = Derivation("newton_euler", equations, unknowns, steps, conditions, coords)
+    shown = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in conditions]
+                          + [at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]])
     if conditions:
-        where = rest_positions(coords)
-        steps.append(Step("Kinematic constraints (velocities, then accelerations, in the reference configuration)",
-                          tuple(sp.Eq(simplest(v.xreplace(where)), 0) for v in conditions)
-                          + tuple(at_state(e, rest) for e in derivation.at_rest_equations[len(equations):])))
+        steps.append(Step("Kinematic constraints (velocities, then accelerations, in the reference configuration"
+                          + FIXED_LEFT_OUT + ")", shown))
     return derivation

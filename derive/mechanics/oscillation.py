@@ -121,16 +121,17 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
         stable = sample(stiffness) > 0
     damping = _damping(scene, derivation, coords, direction, coordinate)
     q, rate = coordinate.q, sp.Symbol(str(coordinate.u))
-    linear = Step(f"Linearize about {q} = 0 at rest" + (" (the damping to first order in the rate)" if damping else ""),
+    linear = Step("The equation of motion to first order in a small displacement from rest"
+                  + (" and in its rate (the damping)" if damping else ""),
                   (sp.Eq(coordinate.a, -stiffness * q - damping * rate),))
     oscillation = Oscillation(coordinate, stiffness, (), stable, tuple(direction), proven, damping)
     if stable:
         steps = (linear, Step("Angular frequency and period of small oscillations" +
-                              (", damped: omega^2 = k - c^2/4" if damping else ""),
+                              (", the damping lowering the frequency" if damping else ""),
                               (sp.Eq(sp.Symbol("omega"), oscillation.quantity("omega")),
                                sp.Eq(sp.Symbol("T"), oscillation.quantity("period")))))
     else:
-        steps = (linear, Step("Unstable: the deviation grows as exp(a t) with growth rate",
+        steps = (linear, Step("Unstable: a small displacement grows exponentially, at the rate",
                               (sp.Eq(sp.Symbol("a"), oscillation.quantity("growth_rate")),)))
     return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping)
 
@@ -168,8 +169,8 @@ def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tu
     chi, k = sp.symbols("chi k", positive=True)
     steps = (
         Step("The equation of motion has the pendulum form", (sp.Eq(linear.coordinate.a, ratio * sp.sin(q)),)),
-        Step("Energy from the turning point, and the substitution sin(q/2) = k sin(chi), k = sin(A/2)",
-             (sp.Eq(sp.Symbol("T"), 4 * sp.Integral(1 / (rate * sp.sqrt(1 - k**2 * sp.sin(chi) ** 2)),
+        Step("Energy from the turning point; the substitution below makes the time an elliptic integral",
+             (sp.Eq(sp.sin(q / 2), k * sp.sin(chi)), sp.Eq(sp.Symbol("T"), 4 * sp.Integral(1 / (rate * sp.sqrt(1 - k**2 * sp.sin(chi) ** 2)),
                                                      (chi, 0, sp.pi / 2))),)),
         Step("The complete elliptic integral of the first kind", (sp.Eq(sp.Symbol("T"), period),)),
     )

@@ -39,10 +39,11 @@ def rolling(scene: Scene, body: str, route: str) -> tuple[dict[str, sp.Expr], tu
     spin = coords.of(body, "theta").u
     if route == "center of mass":
         condition = contact.conditions(coords)[-1]
-        reason = "The point touching the surface is at rest: (v_cm + omega z x r) along the surface = 0"
+        reason = ("The point touching the surface is at rest: the center's velocity plus the turn's velocity "
+                  "there adds to nothing along the surface")
     else:
         condition = coords.ddt(contact.gaps(coords)[-1])
-        reason = "The rolling constraint's rate vanishes: d/dt (distance rolled + R theta) = 0"
+        reason = "The rolling constraint's rate vanishes: the distance rolled plus the radius times the turn stays fixed"
     (omega,) = sp.solve(condition.xreplace(state), spin)
     omega = tidy(omega)
     speed = tidy(sp.sqrt(velocity[0] ** 2 + velocity[1] ** 2))
@@ -58,7 +59,8 @@ def rolling(scene: Scene, body: str, route: str) -> tuple[dict[str, sp.Expr], tu
         about_contact = tidy(rigid.inertia + rigid.mass * radius**2)
         total = tidy(about_contact * omega**2 / 2)
         translational = tidy(total - rotational)
-        energy = Step("Kinetic energy: rotation about the contact point, I_P = I_cm + M R^2 (parallel axes)",
+        energy = Step("Kinetic energy as a rotation about the contact point, its moment of inertia by the "
+                      "parallel-axis theorem",
                       (sp.Eq(sp.Symbol("I_P"), about_contact), sp.Eq(sp.Symbol("K"), total)))
     values = {
         "angular_velocity": omega,
@@ -70,7 +72,7 @@ def rolling(scene: Scene, body: str, route: str) -> tuple[dict[str, sp.Expr], tu
     }
     steps = (
         Step(reason, (sp.Eq(condition.xreplace(state), 0), sp.Eq(w, omega))),
-        Step("One turn takes 2 pi / |omega|, in which the center covers", (
+        Step("In one turn the center covers", (
             sp.Eq(sp.Symbol("d"), values["distance_per_turn"]),)),
         energy,
         Step("The share of the kinetic energy in rotation", (
