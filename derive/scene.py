@@ -375,6 +375,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
                              + did_you_mean(rest, BEARING_QUANTITIES))
         if rest == "bearings.force" and scene.bearings[head].apart is None:
             raise ValueError(f"{head}.bearings.force needs the distance between the bearings: bearings: {{apart: d}}")
+        if rest.startswith("bearings.") and scene.parts:
+            raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body alone: a scene with loads or "
+                             "joints (gravity's share of the bearings' forces) is not modelled")
         return Quantity("bearings", head, rest)
     if head == "spinning_wheel":
         if scene.wheel is None or rest not in WHEEL_QUANTITIES:

@@ -75,6 +75,8 @@ question: A rod spins.
     ("bearings: {rate: omega, tilt: alpha}, joint: fixed_axle", "rod.angle_L_omega", "rad", "scene.bodies.rod.joint"),
     ("rotation: {rate: omega, tilt: alpha}", "rod.angle_L_omega", "rad", "scene.bodies.rod"),  # retired
     ("bearings: {rate: omega, tilt: alpha}", "rod.acceleration.x", "m/s^2", "ask.x"),
+    ("bearings: {rate: omega, tilt: alpha, apart: L}}\n  loads:\n    - gravity: omega**2*L\n#", "rod.bearings.force", "N",
+     "ask.x"),  # the weight's share of the bearings' forces
 ])
 def test_what_bearings_do_not_model_is_refused(tmp_path, bearings_key, ask, unit, field):
     refused(tmp_path, ROD.replace("BEARINGS", bearings_key).replace("ASK", ask).replace("UNIT", unit), field)
