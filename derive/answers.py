@@ -19,8 +19,8 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
-                              rigid_rotation, rolling, top)
+from derive.mechanics import (bearings, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
+                              rolling, top)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion
@@ -422,19 +422,20 @@ class Solution(StateAnswers, CrossChecks):
         if q.kind == "rolling":
             return (*(rolling.rolling(self.scene, q.target, route)[0][q.detail] for route in rolling.ROUTES),
                     "center_of_mass_vs_contact_point")
-        if q.kind == "internal_forces":
-            count = self.scene.internal_forces
-            return (*(many_bodies.internal_torque(count, r) for r in ("direct", "pairs")), "direct_vs_pairs")
-        body = self.scene.bodies[q.target]
-        turn = self.scene.rotations[q.target]
-        arguments = (body.shape, body.mass, body.sizes, turn.rate, turn.tilt)
-        if q.detail == "angle_L_omega":
-            integral = rigid_rotation.angular_momentum(*arguments, "integral")
-            other = sp.acos(sp.refine(tidy(integral[2] / sp.sqrt(integral.dot(integral))), sp.Q.positive(sp.sin(turn.tilt))))
-            return rigid_rotation.angle_to_spin(*arguments), other, "tensor_vs_integral"
-        index = 0 if q.detail.endswith("x") else 2
-        return (*(rigid_rotation.angular_momentum(*arguments, r)[index] for r in ("tensor", "integral")),
-                "tensor_vs_integral")
+        count = self.scene.internal_forces
+        return (*(many_bodies.internal_torque(count, r) for r in ("direct", "pairs")), "direct_vs_pairs")
+
+    def bearing_motion(self, name: str, route: str) -> dict:
+        """L, the bearings' torque and the kinetic energy of a body in bearings by one route
+        (derive.mechanics.bearings.ROUTES)."""
+        body, held = self.scene.bodies[name], self.scene.bearings[name]
+        parts = body.composite.parts if body.composite is not None else None
+        tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
+        return bearings.motion(tensor, held.rate, held.tilt, held.roll, bearings.own_axis(body.shape), route)
+
+    def _bearings(self, q: Quantity, route: str) -> sp.Expr:
+        held = self.scene.bearings[q.target]
+        return bearings.quantity(self.bearing_motion(q.target, route), q.detail, held.tilt, held.apart)
 
     def _top_arguments(self) -> tuple:
         t = self.scene.top
@@ -614,6 +615,8 @@ class Solution(StateAnswers, CrossChecks):
             result = self._top(ask.quantity.detail)
         elif ask.quantity.kind in SECOND_ROUTE_KINDS:
             result = self._second_routes(ask.quantity)[0]
+        elif ask.quantity.kind == "bearings":
+            result = self._bearings(ask.quantity, "newton_euler")
         elif ask.quantity.kind == "wheel":
             w = self.scene.wheel
             arguments = (w.torque, w.duration, w.inertia, w.spin)

@@ -21,7 +21,7 @@ import sympy as sp
 
 from derive import inertia, limits, numeric, units
 from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
-from derive.mechanics import gyroscope, impacts, integrated_motion, lagrange, many_bodies, orbits, paths, states, top
+from derive.mechanics import bearings, gyroscope, impacts, integrated_motion, lagrange, many_bodies, orbits, paths, states, top
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import row_reduced, tidy
 from derive.problem import Ask, Problem
@@ -84,6 +84,8 @@ class CrossChecks:
             result.append(self._top_check())
         if "wheel" in kinds:
             result.append(self._wheel_check())
+        if "bearings" in kinds:
+            result += self._bearings_checks()
         agreed: dict[str, list[str]] = {}
         for ask in self.problem.asks.values():
             if ask.quantity.kind in SECOND_ROUTE_KINDS:
@@ -418,6 +420,47 @@ class CrossChecks:
         return Check("vector_vs_rate", True, "numeric", f"exact turns agree; small-angle / exact - 1 = {sp.sstr(error)}",
                      "The turn of the axis from the change of the angular momentum vector agrees with the one from "
                      "its rate.")
+
+    def _bearings_checks(self) -> list[Check]:
+        """For every body in bearings, Newton–Euler's and Lagrange's L, bearing torque and kinetic
+        energy agree component by component, and each asked quantity by both; a uniform shape's L
+        again by integrating r x (omega x r) dm."""
+        integrated, methods = [], set()
+
+        def differ(a, b) -> bool:
+            methods.add(agree(a, b))
+            return None in methods
+
+        for name, held in self.scene.bearings.items():
+            found = {route: self.bearing_motion(name, route) for route in bearings.ROUTES}
+            for key in ("angular_momentum", "torque", "kinetic_energy"):
+                pairs = zip(*(sp.Matrix([found[r][key]]) for r in bearings.ROUTES))
+                if any(differ(a, b) for a, b in pairs):
+                    raise CheckFailure(f"{self.problem.id}: the {name}'s {key.replace('_', ' ')} is "
+                                       f"{found['newton_euler'][key]} by Newton–Euler, {found['lagrange'][key]} "
+                                       "by Lagrange")
+            body = self.scene.bodies[name]
+            if body.composite is None:
+                by_integral = bearings.angular_momentum_by_integral(body.shape, body.mass, tuple(body.sizes.items()),
+                                                                    held.rate, held.tilt, held.roll)
+                if any(differ(a, b) for a, b in zip(by_integral, found["newton_euler"]["angular_momentum"])):
+                    raise CheckFailure(f"{self.problem.id}: the {name}'s L is {list(by_integral)} integrated, "
+                                       f"{list(found['newton_euler']['angular_momentum'])} from the tensor")
+                integrated.append(name)
+        for ask_name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "bearings" and differ(*(self._bearings(ask.quantity, r) for r in bearings.ROUTES)):
+                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {ask_name}")
+        method = " or ".join(m for m in METHODS if m in methods)
+        result = [Check("lagrange_vs_newton_euler", True, method,
+                        "angular momentum, bearing torque and kinetic energy agree, every component",
+                        "Lagrange's method, with the bearings' torques as multipliers, and dL/dt = torque give the "
+                        "same angular momentum, bearing torque and kinetic energy.")]
+        if integrated:
+            result.append(Check("angular_momentum_by_integral", True, method,
+                                f"L of {', '.join(integrated)} agrees, every component",
+                                "Integrating r × (ω × r) over the body's mass gives the same angular momentum as "
+                                "the inertia tensor."))
+        return result
 
     def _top_check(self) -> Check:
         """Lagrange's and Newton–Euler's (dH/dt = torque) precession conditions agree; the fast-top

@@ -170,12 +170,15 @@ class StandingWave:
 
 
 @dataclass(frozen=True)
-class Rotation:
-    """A body turning at `rate` about the fixed z axis through its center of mass, its long
-    (or symmetry) axis tilted by `tilt` from z."""
+class Bearings:
+    """A body turning at the constant `rate` about a fixed shaft through its center of mass, its own
+    axis (derive.mechanics.bearings.own_axis) tilted by `tilt` from the shaft, the body turned by
+    `roll` about that axis; `apart` is the distance between the two bearings (None: not given)."""
 
     rate: sp.Expr
     tilt: sp.Expr
+    roll: sp.Expr = sp.Integer(0)
+    apart: sp.Expr | None = None
 
 
 #: Scene-level systems and what each can be asked: (scene attribute, quantities).
@@ -183,7 +186,10 @@ SYSTEMS = {
     "standing_wave": ("wave", ("momentum", "angular_momentum")),
     "internal_forces": ("internal_forces", ("torque",)),
 }
-ROTATION_QUANTITIES = ("angular_momentum.x", "angular_momentum.z", "angle_L_omega")
+#: What a body in bearings can be asked (derive.mechanics.bearings); bearings.force needs `apart`.
+BEARING_QUANTITIES = ("angular_momentum.x", "angular_momentum.y", "angular_momentum.z", "angular_momentum.magnitude",
+                      "angle_L_omega", "kinetic_energy", "bearings.torque.x", "bearings.torque.y",
+                      "bearings.torque.z", "bearings.torque.magnitude", "bearings.force")
 
 
 def constraint_bodies(part: Part) -> tuple[str, ...]:
@@ -255,7 +261,7 @@ class Scene:
     wheel: SpinningWheel | None = None
     wave: StandingWave | None = None
     internal_forces: int | None = None
-    rotations: dict[str, Rotation] = field(default_factory=dict)
+    bearings: dict[str, Bearings] = field(default_factory=dict)
     states: dict[str, State] = field(default_factory=dict)
 
     @property
@@ -307,7 +313,7 @@ STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velo
 RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
               "kinetic_energy_change", "center_of_mass_velocity"}
 #: Answered by a small system of derive.mechanics, with a second route of its own.
-SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rotation", "rolling")
+SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
 STATIC_KINDS = {"inertia", "mass", "position_cm", "system"}
 
@@ -322,7 +328,7 @@ class Quantity:
     prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
     "system" (inertia about the center of mass, reduced_mass of two bodies), "top" (TOP_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
-    ("standing_wave", "internal_forces"), "rotation" (a turning body; ROTATION_QUANTITIES),
+    ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
     the scene rests: derive.mechanics.equilibrium); read in a state (RATE_KINDS) also
     "kinetic_energy_change" (every body's, in the state minus in the state it comes from) and
@@ -363,10 +369,16 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if getattr(scene, attribute) is None or rest not in allowed:
             raise ValueError(f"a scene's {head} has {', '.join(allowed)}")
         return Quantity(head, None, rest)
-    if head in scene.rotations:
-        if rest not in ROTATION_QUANTITIES:
-            raise ValueError(f"a turning body has {', '.join(ROTATION_QUANTITIES)}")
-        return Quantity("rotation", head, rest)
+    if head in scene.bearings and rest not in ("mass", "inertia"):
+        if rest not in BEARING_QUANTITIES:
+            raise ValueError(f"a body in bearings has {', '.join(BEARING_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, BEARING_QUANTITIES))
+        if rest == "bearings.force" and scene.bearings[head].apart is None:
+            raise ValueError(f"{head}.bearings.force needs the distance between the bearings: bearings: {{apart: d}}")
+        if rest.startswith("bearings.") and scene.parts:
+            raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body alone: a scene with loads or "
+                             "joints (gravity's share of the bearings' forces) is not modelled")
+        return Quantity("bearings", head, rest)
     if head == "spinning_wheel":
         if scene.wheel is None or rest not in WHEEL_QUANTITIES:
             raise ValueError(f"a scene's spinning_wheel has {', '.join(WHEEL_QUANTITIES)}")
@@ -487,4 +499,4 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         return Quantity("contact" if rest == "min_friction_coefficient" else "force", head, rest)
     known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
     raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})"
-                     + did_you_mean(head, [*known, *SYSTEMS, *scene.rotations]))
+                     + did_you_mean(head, [*known, *SYSTEMS]))

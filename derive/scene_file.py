@@ -25,7 +25,7 @@ from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Motion, Orbit, Rotation, Scene,
+from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Bearings, Body, Motion, Orbit, Scene,
                           SpinningWheel, StandingWave, Top)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
@@ -41,7 +41,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
                           optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
-                                    "path", "rotation", "angle", "parts", *MOTION_KEYS, *all_sizes))
+                                    "path", "bearings", "angle", "parts", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
@@ -104,7 +104,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
 
 def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body, Pin | None]:
     """A body made of parts (derive.composite): `at` places the origin of the parts' frame."""
-    for key in ("mass", "density", "inertia", "inertia_about", "path", "rotation"):
+    for key in ("mass", "density", "inertia", "inertia_about", "path"):
         if key in spec:
             raise reader.fail(f"{field}.{key}", f"a composite's {key.replace('_', ' ')} comes from its parts"
                               if key in ("mass", "density", "inertia", "inertia_about") else
@@ -513,11 +513,11 @@ def read_scene(reader: Reader, raw) -> Scene:
     gravity_part = found[0] if found else None
     if top is not None and gravity_part is None:
         raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
-    rotations = {n: _rotation(reader, spec["rotation"], f"scene.bodies.{n}.rotation", bodies[n])
-                 for n, spec in bodies_raw.items() if "rotation" in spec}
+    held = {n: _bearings(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
+            if "bearings" in spec}
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, top, wheel, wave,
-                  internal, rotations, states)
+                  internal, held, states)
     _check_geometry(reader, places, scene)
     return scene
 
@@ -539,12 +539,29 @@ def _internal_forces(reader: Reader, raw) -> int:
     return raw["bodies"]
 
 
-def _rotation(reader: Reader, raw, field: str, body: Body) -> Rotation:
-    if body.shape not in ("rod", "cylinder", "cone", "disk", "ring", "cylindrical_shell") or body.density is not None:
-        raise reader.fail(field, "a turning body is a uniform rod, or a body with a symmetry axis")
-    raw = reader.mapping(raw, field, required=("rate", "tilt"))
-    return Rotation(reader.positive(raw["rate"], f"{field}.rate", "rad/s", "a rotation rate"),
-                    reader.dimensioned(raw["tilt"], f"{field}.tilt", "rad", "a tilt"))
+def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
+    """`bearings: {rate: omega, tilt: alpha, roll: psi, apart: d}`: the body turns at a constant rate
+    about a fixed shaft through its center of mass (derive.mechanics.bearings), a uniform shape of
+    the inertia module or a composite of them, held by nothing else."""
+    field_here = f"{field}.bearings"
+    if body.shape in ("point", "custom") or body.density is not None:
+        raise reader.fail(field_here, "a body in bearings is a uniform shape of derive inertia (not a point or a "
+                                      "custom body, no density) or a composite of them")
+    other = next((k for k in ("joint", "on", "path", "velocity") if k in spec), None)
+    if other:
+        raise reader.fail(f"{field}.{other}", "a body in bearings is held by its shaft alone")
+    raw = reader.mapping(spec["bearings"], field_here, required=("rate", "tilt"), optional=("roll", "apart"))
+    tilt = reader.dimensioned(raw["tilt"], f"{field_here}.tilt", "rad", "a tilt")
+    corners = [{}]  # the tilt at the ends of its parameters' ranges
+    for p in (p for p in reader.parameters.values() if p.symbol in tilt.free_symbols):
+        corners = [{**c, p.symbol: end} for c in corners for end in (p.range or (p.value, p.value))]
+    if not all((v := tilt.xreplace(c)).is_number and 0 <= v <= sp.pi for c in corners):
+        raise reader.fail(f"{field_here}.tilt", "the tilt from the shaft is between 0 and pi (turn the body by "
+                                                "roll: for the rest)")
+    return Bearings(reader.positive(raw["rate"], f"{field_here}.rate", "rad/s", "a rotation rate"), tilt,
+                    reader.dimensioned(raw.get("roll", 0), f"{field_here}.roll", "rad", "an angle"),
+                    reader.positive(raw["apart"], f"{field_here}.apart", "m", "a distance")
+                    if "apart" in raw else None)
 
 
 def _wheel(reader: Reader, raw) -> SpinningWheel:

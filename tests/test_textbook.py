@@ -590,6 +590,29 @@ EXPECTED.update({
     "torsion_pendulum_wide_swing": {
         "T": lambda s: 2 * sp.pi * sp.sqrt(s.M * s.R**2 / (2 * s.kappa)),
     },
+    # Bearings (3D; derive.mechanics.bearings). Kleppner & Kolenkow ch. 7: a dumbbell (m at l either
+    # side of the center) on a shaft at alpha: |L| = 2 m l^2 omega sin(alpha), the bearings' torque
+    # omega |L| cos(alpha), a couple of forces tau/d from bearings d apart.
+    "dumbbell_tilted_shaft": {
+        "L": lambda s: 2 * s.m * s.l**2 * s.omega * _sin(s.alpha),
+        "tau": lambda s: 2 * s.m * s.l**2 * s.omega**2 * _sin(s.alpha) * _cos(s.alpha),
+        "F": lambda s: 2 * s.m * s.l**2 * s.omega**2 * _sin(s.alpha) * _cos(s.alpha) / s.d,
+    },
+    # Taylor ch. 10 / Goldstein ch. 5 (dynamic imbalance): tau = (I3 - I1) omega^2 sin(beta) cos(beta),
+    # I3 = M R^2/2, I1 = M R^2/4.
+    "disk_tilted_on_shaft": {
+        "tau": lambda s: s.M * s.R**2 / 4 * s.omega**2 * _sin(s.beta) * _cos(s.beta),
+        "F": lambda s: s.M * s.R**2 / 4 * s.omega**2 * _sin(s.beta) * _cos(s.beta) / s.d,
+    },
+    # Kleppner & Kolenkow ch. 7 (the skew rod), a uniform rod: L = (M L^2/12) omega sin(alpha),
+    # perpendicular to the rod, so pi/2 - alpha from omega; tau = (M L^2/12) omega^2 sin(alpha) cos(alpha);
+    # T = omega L_z/2 = (M L^2/24) omega^2 sin^2(alpha).
+    "rod_tilted_on_shaft": {
+        "Lmag": lambda s: s.M * s.L**2 / 12 * s.omega * _sin(s.alpha),
+        "angle": lambda s: sp.pi / 2 - s.alpha,
+        "tau": lambda s: s.M * s.L**2 / 12 * s.omega**2 * _sin(s.alpha) * _cos(s.alpha),
+        "K": lambda s: s.M * s.L**2 / 24 * s.omega**2 * _sin(s.alpha) ** 2,
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))

@@ -16,7 +16,7 @@ from derive.figure.orbits import _orbit
 from derive.figure.parts import _parts
 from derive.figure.paths import _paths
 from derive.figure.surfaces import _on_surface
-from derive.figure.systems import _internal, _rotation, _top, _wave, _wheel
+from derive.figure.systems import _bearings, _internal, _top, _wave, _wheel
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin
@@ -105,7 +105,7 @@ _LAYOUTS = (
     (lambda p: p.scene.wave is not None, _wave),
     (lambda p: p.scene.orbit is not None, _orbit),
     (lambda p: p.scene.internal_forces is not None, _internal),
-    (lambda p: bool(p.scene.rotations), _rotation),
+    (lambda p: bool(p.scene.bearings), _bearings),
     (lambda p: any(b.path is not None for b in p.scene.bodies.values()), _paths),
     (lambda p: any(b.composite is not None for b in p.scene.bodies.values()), _parts),  # drawn part by part
     (_on_one_surface, _on_surface),

@@ -94,9 +94,9 @@ def _internal(fig: _Figure) -> None:
                 fig.arrow(points[i], (0.55 * d[0] / length, 0.55 * d[1] / length), "force", text)
 
 
-def _rotation(fig: _Figure) -> None:
-    """A body turning about the vertical axis through its center, tilted from it; L for a rod."""
-    name, rotation = next(iter(fig.scene.rotations.items()))
+def _bearings(fig: _Figure) -> None:
+    """A body turning about the vertical shaft through its center, tilted from it; L for a rod."""
+    name, rotation = next(iter(fig.scene.bearings.items()))
     body = fig.scene.bodies[name]
     tilt = _clamp(fig.num(rotation.tilt, 0.6), 0.25, 1.35)
     fig.add("\\draw[axis, ->] (0,-2) -- (0,2.2);")
