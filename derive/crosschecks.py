@@ -484,8 +484,8 @@ class CrossChecks:
                     raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} by projection, "
                                        f"{other} by sympy.physics.mechanics")
         return Check("path_vs_mechanics", True, "symbolic", "every path quantity agrees",
-                     "The kinematics of sympy.physics.mechanics give the same velocities and accelerations on the "
-                     "path.")
+                     "The kinematics of SymPy's mechanics package (rotating frames) give the same velocities and "
+                     "accelerations on the path.")
 
     def _system_check(self) -> Check:
         """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,

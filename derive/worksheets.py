@@ -29,7 +29,7 @@ import yaml
 
 from derive import MAX_VARIANTS
 from derive import (distractors, export, figure, figure_files, latex_safety, library, limiting_cases, lms, numeric,
-                    output_folder, render, units)
+                    output_folder, render, typesetting, units)
 from derive.answers import Solution
 from derive.defaults import Defaults
 from derive.errors import InputError
@@ -296,13 +296,13 @@ def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict
 LONGEST_EQUATION = 700  # characters of LaTeX; longer would overflow the page
 
 
-def typeset(equation: sp.Eq) -> str:
-    """An equation for an align environment; one too long to typeset becomes a short note."""
-    text = render.latex_of(equation)
-    if len(text) > LONGEST_EQUATION:
+def typeset(equation: sp.Eq, beside: str = "") -> str:
+    """An equation for an align environment, a long sum broken across lines (typesetting.rows),
+    `beside` a note at its first row; one too long to typeset at all becomes a short note."""
+    if len(render.latex_of(equation)) > LONGEST_EQUATION:
         return (render.latex_of(equation.lhs) + r" &= \text{(too long to typeset here: see derive solve "
-                r"--format latex)}")
-    return text.replace("=", "&=", 1)
+                r"--format latex)}" + beside)
+    return typesetting.rows(equation.lhs, equation.rhs, beside=beside)
 
 
 def number_latex(text: str) -> str:
@@ -471,7 +471,9 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
         for route, steps in solution.steps().items()
     ]
     answers = [
-        {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning}
+        {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
+         "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
+                         typesetting.note(render.tex_escape(a.meaning)))}
         for n, a in problem.asks.items()
     ]
     variants = []
@@ -740,8 +742,8 @@ def _limits_context(item: _ProblemVariants, middle: dict[str, sp.Expr], progress
              for c in limiting_cases.limiting_cases(solution.expression(name), varying, allowed)]
     point = {0: "0", sp.oo: r"\infty"}
     return [{"equation": rf"\lim_{{{render.latex_of(c.symbol)} \to {point[c.point]}}} {render.symbol_latex(name)} "
-                         rf"&= {render.latex_of(c.value)}",
-             "meaning": limiting_cases.reading(c, ranged[c.symbol][1].meaning)}
+                         rf"&= {render.latex_of(c.value)}"
+                         + typesetting.note(render.tex_escape(limiting_cases.reading(c, ranged[c.symbol][1].meaning)))}
             for name, c in limiting_cases.chosen(cases, varying)]
 
 

@@ -1,11 +1,12 @@
 """Every library problem renders and compiles, and its key equals `derive solve` at its parameters."""
 import json
 import subprocess
+from pathlib import Path
 
 import pytest
 
 from conftest import copy_library, run_derive
-from derive import library, problem, report
+from derive import export, library, problem, report
 
 
 @pytest.fixture(scope="module")
@@ -42,3 +43,31 @@ def test_the_key_equals_derive_solve_at_its_parameters(everything):
             digits = p.asks[name].sig_figs or 3
             solved = report.solve(p, given, digits)["answers"][name]["value"]
             assert answer["value"] == solved, (problem_id, name)
+
+
+def _overfull(tex: Path, folder: Path) -> list[str]:
+    """The lines a LaTeX run reports as running off the page (Overfull \\hbox), for `tex` compiled
+    afresh in `folder` by the engine derive uses for it."""
+    text = tex.read_text()
+    (folder / tex.name).write_text(text)
+    subprocess.run([export.engine(text), "-interaction=nonstopmode", tex.name], cwd=folder, capture_output=True,
+                   timeout=300)
+    log = (folder / tex.with_suffix(".log").name).read_text(errors="replace")
+    return [line for line in log.splitlines() if line.startswith("Overfull \\hbox")]
+
+
+def test_no_line_of_the_library_documents_runs_off_the_page(everything, tmp_path):
+    """Issue 15: no overfull box in the logs of the worksheet, solutions and key of the whole
+    library: long sums broken across lines (derive.typesetting), meanings in narrow boxes beside
+    their equations, paragraphs of text and math allowed to stretch."""
+    _, out = everything
+    for name in ("worksheet", "solutions", "key"):
+        assert _overfull(out / f"{name}.tex", tmp_path) == [], name
+
+
+@pytest.mark.parametrize("problem_id", ["skid_to_roll", "tugged_spool", "kepler_orbit", "restitution_rod",
+                                        "string_wrapped_disk", "compound_pendulum"])
+def test_no_line_of_a_handout_runs_off_the_page(problem_id, tmp_path):
+    done = run_derive("handout", problem_id, "--out", str(tmp_path / "h"), "--progress", "none")
+    assert done.returncode == 0, done.stderr
+    assert _overfull(tmp_path / "h" / f"{problem_id}.tex", tmp_path) == []
