@@ -406,6 +406,23 @@ class StateAnswers:
                        if not sign.expression.has(*reached.vanished)]
         return result + self._ramp_conditions()
 
+    def impact_regimes(self) -> dict[str, tuple]:
+        """The regimes (impacts.Regime: grips, slides either way) of each rough bounce whose
+        regime is decided per variant, in the states asks are read in or come from."""
+        return {name: self._chain.impacts[name].regimes for name in self._on_the_way()
+                if isinstance(self._chain.impacts.get(name), impacts.Impact) and self._chain.impacts[name].regimes}
+
+    def impact_regime_at(self, name: str, values: dict) -> str | None:
+        """What the contact does in the bounce `name` at these parameter values (grips, slides);
+        None when a parameter it depends on has no value."""
+        for regime in self.impact_regimes()[name]:
+            decided = regime.where.xreplace(values)
+            if decided not in (sp.true, sp.false):
+                return None
+            if decided == sp.true:
+                return regime.name
+        raise AssertionError("the last regime holds wherever the others do not")
+
     def _rough_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
         """A rough bounce slides the one way throughout where it slides (impacts.regime_conditions),
         and takes kinetic energy (with Newton's restitution and friction at a contact whose normal and
