@@ -428,5 +428,6 @@ def test_a_wrong_rough_bounce_is_refused_naming_its_field(tmp_path, old, new, fi
 
 def test_a_state_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
     text = GRIPPING.read_text().replace(
-        "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    top: {from: bounced, when: stops}\n")
+        "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    top: {from: bounced, when: stops}\n").replace(
+        "ask:\n", "ask:\n  h: {meaning: highest point, of: ball.position.y, in: top, unit: m}\n")
     assert "grips or slides by the variant" in refused(tmp_path, text, "scene.states.top", exit_code=1)
