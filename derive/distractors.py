@@ -208,7 +208,7 @@ def _points(problem: Problem) -> Mistakes:
                _with_scene(problem, constraints=tuple(c for c in scene.constraints if c is not pin)))
               for pin in _pins(problem)]
     pinned = {pin.body for pin in _pins(problem)}
-    for name in sorted({e.to for e in _impacts(problem)} - pinned):
+    for name in sorted({e.to for e in _impacts(problem) if e.to in scene.bodies} - pinned):  # not a surface
         if scene.bodies[name].rotates:
             axle = Pin("axle", name, (sp.Integer(0), sp.Integer(0)))
             result.append((f"angular momentum about the {name}'s center, as if it were fixed",

@@ -121,6 +121,9 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         regimes = {"cases": [{"regime": r.name, "where": sp.sstr(w)}
                              for r, w in zip(solution.regimes, solution.regime_conditions())],
                    "applies": solution.regime_at(values)}
+    for state, cases in solution.impact_regimes().items():  # a rough bounce asked in: grips or slides
+        regimes[state] = {"cases": [{"regime": r.name, "where": sp.sstr(r.where)} for r in cases],
+                          "applies": solution.impact_regime_at(state, values)}
     return {
         "id": problem.id,
         "title": problem.title,
@@ -170,12 +173,18 @@ def as_text(result: dict, solution: Solution) -> str:
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:
             lines.append(f"    approximates {a['approximation']['exact']}: relative error "
                          f"{a['approximation']['relative_error']}")
-    if result.get("regimes"):
+    if result["regimes"].get("cases"):
         lines += ["", "Friction regimes (each where those above do not hold):"]
         for regime, where in zip(solution.regimes, solution.regime_conditions()):
             lines += indented(pretty(f"{regime.name}: where ", where))
         if result["regimes"]["applies"]:
             lines.append(f"  at these parameters the body {result['regimes']['applies']}")
+    for state, cases in solution.impact_regimes().items():
+        lines += ["", f"In the bounce {state} the contact (each where those above do not hold):"]
+        for regime in cases:
+            lines += indented(pretty(f"{regime.name}: where ", regime.where))
+        if result["regimes"][state]["applies"]:
+            lines.append(f"  at these parameters it {result['regimes'][state]['applies']}")
     if result["energy"]:
         lines += ["", "Energy:"]
         for kind, expression in solution.energy_ledger().items():

@@ -201,7 +201,8 @@ def constraint_bodies(part: Part) -> tuple[str, ...]:
 class Event:
     """What happens to the scene in an instant, or by its own forces, between two states: an
     impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
-    `restitution`), a move (`kind` move: the point mass `body` carried to `place` on the body
+    `restitution` and, rough, its `friction` (mu for the grip, mu for the slide) or `grips`
+    always; a bounce's `to` may be a fixed surface), a move (`kind` move: the point mass `body` carried to `place` on the body
     `to`, in its frame, where the pin `joint` holds it), or a turn (`kind` turn: the body `body`
     turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie).
 
@@ -213,6 +214,8 @@ class Event:
     body: str
     to: str
     restitution: sp.Expr | None = None
+    friction: tuple[sp.Expr, sp.Expr] | None = None
+    grips: bool = False
     place: tuple[sp.Expr, sp.Expr] | None = None
     joint: str | None = None
     angle: sp.Expr | None = None

@@ -76,6 +76,9 @@ class StateAnswers:
         for name, state in self.scene.states.items():
             joints[name] = joints[state.start] if state.start else self._slides_from(result)
             try:
+                if isinstance(solved.get(state.start), impacts.Impact) and solved[state.start].regimes:
+                    raise state_motion.StateLimit(f"derive the motion after the bounce {state.start}, which grips or "
+                                                  "slides by the variant: ask in its state, or give grips: true")
                 if isinstance(solved.get(state.start), moves.Moved) and solved[state.start].loose:
                     raise state_motion.StateError(f"where the bodies are after the turn {state.start} depends on how "
                                                   "long it takes (it keeps a momentum that is not zero): no state may "
@@ -104,9 +107,12 @@ class StateAnswers:
                         if state.event.kind != "bounce":  # a bounce's touch lasts the instant only
                             joints[name] += (made[name],)
                         reached = self._after_impact(name, result[state.start].values, solved[name],
-                                                     self._scene_with(joints[name]))
-                # (what must stay positive is evaluated per variant, Abs and all: left as it is)
-                result[name] = dataclasses.replace(reached, values={k: resolve(v) for k, v in reached.values.items()})
+                                                     self._scene_with(_in_place(joints[name], made[name])))
+                # (what must stay positive is evaluated per variant, Abs and all: left as it is; so is
+                # the regime a rough bounce takes)
+                if not (isinstance(solved.get(name), impacts.Impact) and solved[name].regimes):
+                    reached = dataclasses.replace(reached, values={k: resolve(v) for k, v in reached.values.items()})
+                result[name] = reached
                 if state.start is None and self._sliding is not None:  # its friction against the slip found
                     joints[name] = self._slides_from(result)
             except (state_motion.StateLimit, moves.MoveLimit) as error:
@@ -168,8 +174,11 @@ class StateAnswers:
     def _joint(self, state, found: dict):
         """The joint the impact of `state` makes, where the bodies are in the state it happens in
         (refused where, at the middle of the ranges, they do not touch there)."""
-        joint = impacts.joint(self.scene, self.coordinates, found[state.start].values, state.event, state.name,
-                              self._sample)
+        try:
+            joint = impacts.joint(self.scene, self.coordinates, found[state.start].values, state.event, state.name,
+                                  self._sample)
+        except impacts.ImpactError as error:
+            raise state_motion.StateLimit(str(error)) from None
         for gap, meaning in self._apart(joint, state.start):
             if self._sample(gap) < -1e-12 * (1 + abs(self._sample(gap + 1))):
                 raise state_motion.StateError(meaning)
@@ -200,7 +209,7 @@ class StateAnswers:
         """The impact of the state `name` by `route`, in the scene with the joints before it and the
         one it makes (`made`)."""
         event = self.scene.states[name].event
-        bounce = (made, event.restitution) if event.kind == "bounce" else ()
+        bounce = impacts.Bounce(made, event.restitution, event.friction) if event.kind == "bounce" else None
         try:
             return impacts.impact(self._scene_with(joints + (made,)), self.coordinates, before, route, bounce)
         except impacts.ImpactError as error:
@@ -213,7 +222,10 @@ class StateAnswers:
         event = self.scene.states[name].event
         body, to = event.body, event.to
         what = {"stick": f"the {body} sticks to the {to}", "lock": f"the {body} and the {to} lock together",
-                "bounce": f"the {body} bounces off the {to} (coefficient of restitution {event.restitution})"}
+                "bounce": f"the {body} bounces off the {to} (coefficient of restitution {event.restitution}"
+                          + (", gripping at the contact" if event.grips else
+                             f", friction coefficient {sp.sstr(event.friction[0])} at the contact" if event.friction
+                             else "") + ")"}
         what = what[event.kind]
         kept = impacts.conserved(scene, self.coordinates, before, values)
         steps = (Step(f"The impact: {what}", ()), *impact.steps, *((kept,) if kept else ()),
@@ -371,6 +383,8 @@ class StateAnswers:
                 impulses = self._chain.impacts[name].impulses
                 result += [(sign.expression.xreplace(impulses), False, f"{sign.meaning} (in the impact {name})")
                            for part in (*self.scene_in(start).constraints, made) for sign in part.signs()]
+                if isinstance(made, impacts.Touch) and made.rough:
+                    result += self._rough_conditions(name)
             forces = self.in_state("lagrange", name).raw
             # the state is real, first: where a formula puts it off the scene's geometry (a ball
             # higher than its cord reaches, a swing that would stop above the top), the motion
@@ -391,6 +405,35 @@ class StateAnswers:
                        for part in (*scene.constraints, *scene.loads) for sign in part.signs()
                        if not sign.expression.has(*reached.vanished)]
         return result + self._ramp_conditions()
+
+    def impact_regimes(self) -> dict[str, tuple]:
+        """The regimes (impacts.Regime: grips, slides either way) of each rough bounce whose
+        regime is decided per variant, in the states asks are read in or come from."""
+        return {name: self._chain.impacts[name].regimes for name in self._on_the_way()
+                if isinstance(self._chain.impacts.get(name), impacts.Impact) and self._chain.impacts[name].regimes}
+
+    def impact_regime_at(self, name: str, values: dict) -> str | None:
+        """What the contact does in the bounce `name` at these parameter values (grips, slides);
+        None when a parameter it depends on has no value."""
+        for regime in self.impact_regimes()[name]:
+            decided = regime.where.xreplace(values)
+            if decided not in (sp.true, sp.false):
+                return None
+            if decided == sp.true:
+                return regime.name
+        raise AssertionError("the last regime holds wherever the others do not")
+
+    def _rough_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
+        """A rough bounce slides the one way throughout where it slides (impacts.regime_conditions),
+        and takes kinetic energy (with Newton's restitution and friction at a contact whose normal and
+        tangential motions are coupled it could give some, which is not physical)."""
+        start = self.scene.states[name].start
+        before, after = self.states[start].values, self.states[name].values
+        lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, after)
+        return [*impacts.regime_conditions(self._chain.impacts[name], self._chain.made[name], self.coordinates,
+                                           before),
+                (lost, False, f"the bounce {name} would give the bodies kinetic energy (Newton's restitution with "
+                              "friction where the normal and tangential motions are coupled): not modelled")]
 
     def _slip_conditions(self, name: str, scene, forces: dict) -> list[tuple[sp.Expr, bool, str]]:
         """A slipping clutch slips in the state, the way it does at the middle of the ranges, and a

@@ -8,6 +8,7 @@ zero). derive.mechanics.states finds them; derive.state_answers answers in them.
 """
 from __future__ import annotations
 
+from derive.parts import contact
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.reader import Reader
@@ -85,7 +86,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
 #: The events a state may follow: what each makes of the two bodies.
 EVENTS = {"stick": "the body sticks to the other where it touches it",
           "lock": "the two turning bodies turn together from then on (a clutch)",
-          "bounce": "a point mass bounces off a rod or a round body, smooth, with restitution: e",
+          "bounce": "a point mass bounces off a rod or a round body, or a round body or a point mass off a fixed "
+                    "surface, with restitution: e; smooth, or rough with friction: {static: mu} or grips: true",
           "move": "a point mass pinned to a body is carried to the point to: of that body by the scene's own forces "
                   "(a child walking to a turntable's center)",
           "turn": "a turning body turns through angle: relative to the body relative_to: by a couple between them "
@@ -95,7 +97,8 @@ EVENTS = {"stick": "the body sticks to the other where it touches it",
 def _event(reader: Reader, name: str, spec: dict, field: str, places, constraints: list,
            found: dict[str, State]) -> State:
     """`{from: STATE, event: {stick: BODY, to: OTHER}}`, `{lock: BODY, to: OTHER}`, `{bounce:
-    BODY, to: OTHER, restitution: e}` (the state just after an impact in the state from:),
+    BODY, to: OTHER or SURFACE, restitution: e}` with, rough, `friction: {static: mu}` or `grips:
+    true` (the state just after an impact in the state from:),
     `{move: BODY, to: OTHER.POINT}` (the state after the move) or `{turn: BODY, relative_to:
     OTHER, angle: psi}` (the state after the turn)."""
     bodies = places.bodies
@@ -103,7 +106,7 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
         raise reader.fail(f"{field}.from", f"an event happens in a state: give from: a state named above this one "
                                            f"(states: {', '.join(found) or 'none'})")
     raw = reader.mapping(spec["event"], f"{field}.event", optional=(*EVENTS, "to", "restitution", "relative_to",
-                                                                     "angle"), points=("to",))
+                                                                     "angle", "friction", "grips"), points=("to",))
     kinds = [k for k in EVENTS if k in raw]
     if len(kinds) != 1:
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
@@ -120,11 +123,14 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     if kind == "turn":
         return State(name, start=spec["from"], event=_turn(reader, body, raw, f"{field}.event", bodies))
     to = raw["to"]
-    if "restitution" in raw and kind != "bounce":
-        raise reader.fail(f"{field}.event.restitution", f"a {kind} has no restitution (a bounce has)")
+    for key in ("restitution", "friction", "grips"):
+        if key in raw and kind != "bounce":
+            raise reader.fail(f"{field}.event.{key}", f"a {kind} has no {key} (a bounce has)")
     if kind == "move":
         return State(name, start=spec["from"], event=_move(reader, body, to, f"{field}.event", places, constraints,
                                                            spec["from"], found))
+    if kind == "bounce" and isinstance(to, str) and to not in bodies and to in places.surfaces:
+        return State(name, start=spec["from"], event=_bounce(reader, body, to, raw, f"{field}.event"))
     if not isinstance(to, str) or to not in bodies:
         raise reader.fail(f"{field}.event.to", no_such("body", to, bodies, "bodies"))
     if body == to:
@@ -132,13 +138,30 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     if kind == "lock" and not (bodies[body].rotates and bodies[to].rotates):
         raise reader.fail(f"{field}.event", "lock joins two turning bodies (a point mass does not turn): "
                                             "a point mass sticks (stick:)")
-    restitution = None
     if kind == "bounce":
-        if "restitution" not in raw:
-            raise reader.fail(f"{field}.event.restitution", "missing: a bounce gives its coefficient of restitution "
-                                                             "(1 elastic, 0 they move together along the normal)")
-        restitution = _restitution(reader, raw["restitution"], f"{field}.event.restitution")
-    return State(name, start=spec["from"], event=Event(kind, body, to, restitution))
+        return State(name, start=spec["from"], event=_bounce(reader, body, to, raw, f"{field}.event"))
+    return State(name, start=spec["from"], event=Event(kind, body, to))
+
+
+def _bounce(reader: Reader, body: str, to: str, raw: dict, field: str) -> Event:
+    """A bounce off a body or a surface: its coefficient of restitution and, rough, the friction
+    at the contact (`friction: {static: mu_s, kinetic: mu_k}`: it grips where that needs at most
+    mu_s times the normal impulse, else slides with mu_k, mu_s where only that is given) or
+    `grips: true` (a contact that always grips)."""
+    if "restitution" not in raw:
+        raise reader.fail(f"{field}.restitution", "missing: a bounce gives its coefficient of restitution "
+                                                  "(1 elastic, 0 they move together along the normal)")
+    restitution = _restitution(reader, raw["restitution"], f"{field}.restitution")
+    if "grips" in raw and "friction" in raw:
+        raise reader.fail(f"{field}.grips", "a rough bounce gives friction: {static: mu} (it grips or slides, "
+                                            "decided per variant) or grips: true (it always grips), not both")
+    if "grips" in raw and raw["grips"] is not True:
+        raise reader.fail(f"{field}.grips", "expected true (a contact that always grips); leave it out for a "
+                                            "smooth one")
+    static, kinetic = contact.coefficients(reader, raw, field)
+    friction = None if static is None and kinetic is None else (
+        static if static is not None else kinetic, kinetic if kinetic is not None else static)
+    return Event("bounce", body, to, restitution, friction=friction, grips="grips" in raw)
 
 
 def _turn(reader: Reader, body: str, raw: dict, field: str, bodies: dict[str, Body]) -> Event:

@@ -2,6 +2,7 @@
 forms are in the textbook suite (tests/textbook/states: a bullet into a rod and into a block on a
 cord, a child onto a turntable, a clutch and a brake); here the rules a user meets, each refusal,
 and the second route shown to catch a wrong impact."""
+import dataclasses
 import json
 from pathlib import Path
 
@@ -337,3 +338,96 @@ def test_a_stop_after_a_bounce_that_sets_a_ball_flying_is_an_engine_limit(tmp_pa
     text = text.replace("ask:\n", "ask:\n  angle: {meaning: the rod's highest angle, of: rod.angle, in: highest, unit: rad}\n")
     stderr = refused(tmp_path, text, "scene.states.highest", exit_code=1)
     assert "whose motion is not a straight line in its coordinates" in stderr
+
+
+GRIPPING = Path(__file__).parent / "textbook/states/sphere_bounces_gripping.yaml"
+
+
+def _symbols(solution, *names):
+    return [next(p.symbol for n, p in solution.problem.parameters.items() if n == name) for name in names]
+
+
+def test_a_rough_bounce_at_the_boundary_grips_and_just_past_it_slides():
+    """The grip needs |J_t| = (2/7) m v_x of mu J_n = mu m (1 + e) v_y: at theta = pi/4, e = 1/2 the
+    boundary is mu = 4/21, where it still grips (|J_t| <= mu J_n) and both regimes give 5 v_x/7;
+    just below it, it slides, the spin then 5 mu (1 + e) v_y/(2 R) < 5 v_x/(7 R)."""
+    solution = Solution(problem.load(GRIPPING))
+    m, R, v, theta, e, mu = _symbols(solution, "m", "R", "v", "theta", "e", "mu")
+    at = {m: sp.Rational(1, 5), R: sp.Rational(1, 20), v: 3, theta: sp.pi / 4, e: sp.Rational(1, 2)}
+    boundary, below = {**at, mu: sp.Rational(4, 21)}, {**at, mu: sp.Rational(4, 21) - sp.Rational(1, 1000)}
+    assert solution.impact_regime_at("bounced", boundary) == "grips"
+    assert solution.impact_regime_at("bounced", below) == "slides (friction along -t)"
+    assert sp.simplify(solution.expression("vx").xreplace(boundary) - 5 * 3 * sp.sin(sp.pi / 4) / 7) == 0
+    spin = solution.expression("omega").xreplace(below)
+    assert sp.simplify(spin + 5 * below[mu] * sp.Rational(3, 2) * 3 * sp.cos(sp.pi / 4) / (2 * at[R])) == 0
+    assert solution.violated(below) is None and solution.violated(boundary) is None
+    result = report.solve(solution.problem, {"mu": "0.05", "theta": "0.5", "v": "5", "e": "0.5", "m": "0.2", "R": "0.05"},
+                           6)
+    assert result["regimes"]["bounced"]["applies"] == "slides (friction along -t)"
+    assert [c["regime"] for c in result["regimes"]["bounced"]["cases"]][0] == "grips"
+
+
+def test_the_second_route_catches_a_wrong_sliding_bounce(monkeypatch):
+    """Newton–Euler's impulses with the sliding friction doubled: the ranges reach only the grip,
+    but each regime is compared on its own, so the wrong one is caught."""
+    original = impacts._impulses
+
+    def wrong(scene, coords, before, at, bounce):
+        if bounce is not None and bounce.slides is not None:
+            bounce = dataclasses.replace(bounce, slides=2 * bounce.slides)
+        return original(scene, coords, before, at, bounce)
+
+    monkeypatch.setattr(impacts, "_impulses", wrong)
+    with pytest.raises(CheckFailure, match="in the impact bounced"):
+        report.solve(problem.load(GRIPPING), {}, 4)
+
+
+def test_a_ball_that_always_grips_leaves_rolling_and_keeps_its_angular_momentum_about_the_contact(tmp_path):
+    """grips: true: no regimes; v_x' = -R omega' (rolling), and the worked solution shows the
+    angular momentum about the point of contact kept, m v_x R before and after."""
+    text = GRIPPING.read_text().replace("friction: {static: mu}", "grips: true").replace(
+        "  mu: {meaning: coefficient of friction at the contact, unit: 1, range: [0.6, 1], sig_figs: 2}\n", "").replace(
+        " and the\n  coefficient of friction {{ mu }}.", ", and it grips.")
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m, R, v, theta = _symbols(solution, "m", "R", "v", "theta")
+    assert not solution.expression("vx").has(sp.Piecewise) and not solution.impact_regimes()
+    assert sp.simplify(solution.expression("vx") + R * solution.expression("omega")) == 0
+    (kept,) = [s for s in solution.steps()["the state bounced"] if "about the point of contact" in s.text]
+    assert [sp.simplify(eq.rhs + m * v * R * sp.sin(theta)) for eq in kept.equations] == [0, 0]
+
+
+def test_a_rough_bounce_off_a_wheel_on_its_axle_turns_it(tmp_path):
+    """Gripping on the rim, the ball leaves with the rim's velocity along the tangent, and the
+    wheel turns: about the axle m (r x v) is shared with M R^2/2 omega (both routes agree)."""
+    solution = Solution(problem.load(write_problem(tmp_path, WHEEL.replace(
+        "EVENT", "{bounce: ball, to: wheel, restitution: e, grips: true}"))))
+    m, M, R, v = _symbols(solution, "m", "M", "R", "v")
+    omega, vx, vy = (solution.expression(n) for n in ("omega", "vx", "vy"))
+    r = sp.Matrix([-R * sp.cos(sp.pi / 6), R * sp.sin(sp.pi / 6)])
+    t = sp.Matrix([r[1], -r[0]]) / R
+    rim = omega * sp.Matrix([-r[1], r[0]])
+    assert omega != 0 and sp.simplify((sp.Matrix([vx, vy]) - rim).dot(t)) == 0
+    moment = lambda u: m * (r[0] * u[1] - r[1] * u[0])  # noqa: E731
+    assert sp.simplify(moment(sp.Matrix([v, 0])) - moment(sp.Matrix([vx, vy])) - M * R**2 / 2 * omega) == 0
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+@pytest.mark.parametrize("old, new, field, words", [
+    ("friction: {static: mu}", "friction: {static: mu}, grips: true", "bounced.event.grips", "not both"),
+    ("friction: {static: mu}", "grips: false", "bounced.event.grips", "expected true"),
+    ("ball: {shape: sphere, mass: m, radius: R, at: [0, R]}", "ball: {shape: sphere, mass: m, radius: R, at: [0, 2*R]}",
+     "scene.states.bounced", "does not touch floor"),
+    ("ball: {shape: sphere, mass: m, radius: R, at: [0, R]}", "ball: {shape: rod, mass: m, length: R, at: [0, R]}",
+     "scene.states.bounced", "a bounce off a surface is of a round body or a point mass"),
+    ("    bounced:", "    landed: {from: falling, event: {stick: ball, to: floor, friction: {static: mu}}}\n    bounced:",
+     "scene.states.landed.event.friction", "a stick has no friction"),
+])
+def test_a_wrong_rough_bounce_is_refused_naming_its_field(tmp_path, old, new, field, words):
+    assert words in refused(tmp_path, GRIPPING.read_text().replace(old, new), field)
+
+
+def test_a_state_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
+    text = GRIPPING.read_text().replace(
+        "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    top: {from: bounced, when: stops}\n").replace(
+        "ask:\n", "ask:\n  h: {meaning: highest point, of: ball.position.y, in: top, unit: m}\n")
+    assert "grips or slides by the variant" in refused(tmp_path, text, "scene.states.top", exit_code=1)

@@ -531,6 +531,28 @@ EXPECTED.update({
         + s.M * s.L**2 / 6 * (3 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 3 * s.m))) ** 2,
     },
     # Serway & Jewett ch. 11: about the axle (M R^2/2 + m R^2) w0 = (M R^2/2) omega.
+    # Kleppner & Kolenkow ch. 7 / Morin ch. 8: the floor's impulse acts at the point of contact,
+    # so the angular momentum about it is kept, m v_x R = m v_x' R + (2/5) m R^2 (-omega'), and
+    # gripping it leaves rolling, v_x' = -R omega': v_x' = 5 v_x/7; v_y' = e v_y (up); the energy
+    # taken is m v_x^2/7 of the spin-up and m (1 - e^2) v_y^2/2 of the normal impulse.
+    "sphere_bounces_gripping": {
+        "vx": lambda s: 5 * s.v * _sin(s.theta) / 7,
+        "vy": lambda s: s.e * s.v * _cos(s.theta),
+        "omega": lambda s: -5 * s.v * _sin(s.theta) / (7 * s.R),
+        "dK": lambda s: -s.m * (s.v * _sin(s.theta)) ** 2 / 7 - s.m * (1 - s.e**2) * (s.v * _cos(s.theta)) ** 2 / 2,
+    },
+    # Derived here from impulse and momentum (the file's source): the normal impulse is
+    # J_n = m (1 + e) v_y; sliding throughout, the tangential one is mu J_n against the slip, so
+    # m v_x' = m v_x - mu J_n and, about the center, (2/5) m R^2 omega' = -R mu J_n; it slides
+    # while 2 v_x/7 > mu (1 + e) v_y (the ranges keep it there).
+    "sphere_bounces_sliding": {
+        "vx": lambda s: s.v * _sin(s.theta) - s.mu * (1 + s.e) * s.v * _cos(s.theta),
+        "vy": lambda s: s.e * s.v * _cos(s.theta),
+        "omega": lambda s: -5 * s.mu * (1 + s.e) * s.v * _cos(s.theta) / (2 * s.R),
+        "dK": lambda s: s.m / 2 * ((s.v * _sin(s.theta) - s.mu * (1 + s.e) * s.v * _cos(s.theta)) ** 2
+                                   + (s.e * s.v * _cos(s.theta)) ** 2)
+        + s.m * s.R**2 / 5 * (5 * s.mu * (1 + s.e) * s.v * _cos(s.theta) / (2 * s.R)) ** 2 - s.m * s.v**2 / 2,
+    },
     "child_walks_to_center": {
         "omega": lambda s: s.w0 * (s.M + 2 * s.m) / s.M,
         "K0": lambda s: (s.M * s.R**2 / 2 + s.m * s.R**2) * s.w0**2 / 2,

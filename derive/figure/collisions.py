@@ -12,8 +12,10 @@ from derive.scene import Event
 
 def struck(scene) -> Event | None:
     """The scene's first impact (a stick or a bounce, a state's `event:`) in a state given by
-    rates, where the striking body moves: what a collision figure draws; None for none."""
+    rates, where the striking body moves, on another body (not a surface): what a collision figure
+    draws; None for none."""
     return next((s.event for s in scene.states.values() if s.event and s.event.kind in ("stick", "bounce")
+                 and s.event.to in scene.bodies
                  and scene.states[s.start].rates and given_motion(scene, s.event.body) is not None), None)
 
 

@@ -1,11 +1,15 @@
 """Impacts in a state of a scene: a point mass that sticks to a body (a bullet into a hanging
 rod, a child jumping onto a turntable), a body that sticks to another, two turning bodies that
 lock together (a clutch, a disk dropped onto another), a point mass that bounces off a body
-with a coefficient of restitution (a ball off the end of a hanging rod).
+with a coefficient of restitution (a ball off the end of a hanging rod), a round body or a
+point mass that bounces off a fixed surface (a ball off a floor).
 
 The impact makes a joint (`joint`): a pin holding the point mass where it struck, a weld, a
-clutch, or for a bounce a smooth touch along the normal that lasts the instant only (its
-normal rate after is -e times the one before). In the instant of the impact the configuration q* does not change, and forces that stay
+clutch, or for a bounce a touch that lasts the instant only (`Bounce`: its normal rate after is
+-e times the one before). A rough touch also takes a tangential impulse J_t: it grips (the
+contact point's tangential rate is zero after) where that needs |J_t| <= mu J_n, else it
+slides throughout with J_t = mu J_n the way the grip's would point, the regime decided per
+variant (a Piecewise; `regime_conditions` refuses a variant where the slip would reverse). In the instant of the impact the configuration q* does not change, and forces that stay
 finite (weights, springs, given loads) give no impulse: only the joints' forces do, the new one
 and those already there (a hinge's). The velocities just after, u+, are solved by two routes
 from the velocities just before, u- (`impact`):
@@ -16,6 +20,8 @@ from the velocities just before, u- (`impact`):
 - Newton–Euler: impulse and momentum of each body, m (v+ - v-) = sum J and
   I (omega+ - omega-) = sum r x J (+ the couples' impulses), the impulses those of the parts'
   forces at their points, and the parts' velocity conditions after.
+
+A sliding touch closes either route with J_t = +-mu J_n in place of its tangential rate.
 
 Kinetic energy is not conserved in such an impact: `energy_lost` is the ledger's entry.
 
@@ -36,6 +42,7 @@ Kinetic energy is not conserved in such an impact: `energy_lost` is the ledger's
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import sympy as sp
@@ -52,39 +59,66 @@ from derive.scene import Event, Scene
 
 @dataclass(frozen=True)
 class Touch(Part):
-    """A point mass `body` striking `to`'s material point at `to_offset` (its frame) along the
-    world direction `normal` (from `to` toward the point mass), smooth: for the instant of a
-    bounce only. Lagrange: the gap n . (P_body - P_to); Newton–Euler: the impulse J n on the
-    point mass, -J n on the other body there; their normal velocities."""
+    """`body`'s material point at `body_offset` (its frame) striking `to`'s at `to_offset` (its
+    frame; with `to` None, a point of the ground, on the fixed `surface`) along the world
+    direction `normal` (from `to` toward `body`): for the instant of a bounce only. Smooth, the
+    impulse J n on `body` and -J n on `to` there; `rough`, also J_t t along t = (n_y, -n_x).
+    Lagrange: the gaps n . (P_body - P_to) and t . (P_body - P_to); Newton–Euler: the impulses
+    at the points; their normal (and tangential) relative velocities."""
 
     name: str
     body: str
-    to: str
+    to: str | None
     to_offset: tuple[sp.Expr, sp.Expr]
     normal: tuple[sp.Expr, sp.Expr]
+    body_offset: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    rough: bool = False
+    surface: str | None = None
 
     def bodies(self) -> tuple[str, ...]:
-        return (self.body, self.to)
+        return (self.body,) if self.to is None else (self.body, self.to)
 
     def unknowns(self) -> dict[str, sp.Symbol]:
-        return {"impulse": sp.Symbol(f"J^{self.name}", real=True)}
+        impulse = {"impulse": sp.Symbol(f"J^{self.name}", real=True)}
+        return {**impulse, "friction": sp.Symbol(f"J_t^{self.name}", real=True)} if self.rough else impulse
+
+    def _directions(self) -> list[sp.Matrix]:
+        n = sp.Matrix(self.normal)
+        return [n, sp.Matrix([n[1], -n[0]])][:2 if self.rough else 1]
 
     def gaps(self, coords) -> list[sp.Expr]:
-        return [sp.Matrix(self.normal).dot(coords.position(self.body) - coords.position(self.to, self.to_offset))]
+        apart = coords.position(self.body, self.body_offset) - coords.position(self.to, self.to_offset)
+        return [d.dot(apart) for d in self._directions()]
 
     def loads(self, coords) -> list[AppliedForce]:
-        push = self.unknowns()["impulse"] * sp.Matrix(self.normal)
+        push = sum((f * d for f, d in zip(self.unknowns().values(), self._directions())), sp.zeros(2, 1))
         label = f"impact {self.name}"
-        return [AppliedForce(self.body, sp.zeros(2, 1), push, label),
-                AppliedForce(self.to, coords.rotated(self.to, self.to_offset), -push, label)]
+        result = [AppliedForce(self.body, coords.rotated(self.body, self.body_offset), push, label)]
+        if self.to is not None:
+            result.append(AppliedForce(self.to, coords.rotated(self.to, self.to_offset), -push, label))
+        return result
 
     def conditions(self, coords) -> list[sp.Expr]:
-        there = coords.velocity(self.to, coords.rotated(self.to, self.to_offset))
-        return [sp.Matrix(self.normal).dot(coords.velocity(self.body, sp.zeros(2, 1)) - there)]
+        here = coords.velocity(self.body, coords.rotated(self.body, self.body_offset))
+        there = coords.velocity(self.to, coords.rotated(self.to, self.to_offset)) if self.to else sp.zeros(2, 1)
+        return [d.dot(here - there) for d in self._directions()]
 
     def signs(self) -> list[Sign]:
-        return [Sign(self.unknowns()["impulse"], f"the {self.body} would pull on the {self.to} in the bounce (they "
-                                                 "are not moving toward each other)")]
+        return [Sign(self.unknowns()["impulse"], f"the {self.body} would pull on the {self.to or self.surface} in "
+                                                 "the bounce (they are not moving toward each other)")]
+
+
+@dataclass(frozen=True)
+class Bounce:
+    """How a bounce's `touch` ends: its normal rate after is -`restitution` times the one before;
+    a rough touch's tangential rate is zero (it grips), or with `friction` (mu for the grip, mu
+    for the slide) zero where that needs at most mu J_n, else it slides (`slides`: one regime's
+    J_t / J_n, +-mu, which `impact` sets)."""
+
+    touch: Touch
+    restitution: sp.Expr
+    friction: tuple[sp.Expr, sp.Expr] | None = None
+    slides: sp.Expr | None = None
 
 
 class ImpactError(ValueError):
@@ -94,11 +128,24 @@ class ImpactError(ValueError):
 @dataclass(frozen=True)
 class Impact:
     """One route's velocities just after the impact (every coordinate's u), the joints' impulses
-    (by their forces' symbols), and the steps that found them."""
+    (by their forces' symbols), and the steps that found them; for a rough bounce that grips or
+    slides, each a Piecewise over its `regimes`."""
 
     velocities: dict[sp.Symbol, sp.Expr]
     impulses: dict[sp.Symbol, sp.Expr]
     steps: tuple[Step, ...]
+    regimes: tuple[Regime, ...] = ()
+
+
+@dataclass(frozen=True)
+class Regime:
+    """A rough bounce's regime: `name`, where it holds (`where`, given those before it do not),
+    the `direction` of its sliding friction along t (0: it grips), and its `impact`."""
+
+    name: str
+    where: sp.Basic
+    direction: int
+    impact: Impact
 
 
 def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: str, decide=None) -> Part:
@@ -106,29 +153,31 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: s
     `values`: a clutch (`lock`, at the turn between them then); for `stick` a pin holding a point
     mass where it is on the other body, or a weld of two turning bodies; for `bounce` the touch
     of a point mass on the other body, for the instant (along the rod's normal, or a round
-    body's radius).
+    body's radius), or of a body on a fixed surface (`to` names one of the scene's surfaces).
 
     Raises ValueError where two point masses that are apart would stick (a particle has no frame
     to hold another in), or a bounce has no normal derive knows. `decide` (an expression's value
     at the middle of the ranges) turns a rod's normal toward the side the point mass comes from."""
     kind, body, to = event.kind, event.body, event.to
     at = {c.q: values[c.q] for c in coords.all}
+    rough = event.grips or event.friction is not None
 
     def turn(a: str, b: str) -> sp.Expr:
         return tidy((coords.angle(a) - coords.angle(b)).xreplace(at))
 
     if kind == "lock":
         return Clutch(name, body, to, turn(body, to))
+    if kind == "bounce" and to not in scene.bodies:
+        return _on_surface(scene, coords, at, name, body, to, rough)
     point, host = (body, to) if not scene.bodies[body].rotates else (to, body)
     between = (coords.position(point) - coords.position(host)).xreplace(at)
     angle = -coords.orientation(host).xreplace(at)
-    offset = tuple(tidy(e) for e in sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
-                   * between)
+    offset = _in_frame(angle, between)
     if kind == "bounce":
-        touch = _touch(scene, coords, at, name, point, host, offset)
+        touch = _touch(scene, coords, at, name, point, host, offset, rough)
         approach = touch.conditions(coords)[0].xreplace(values)  # negative while they close in
         if decide is not None and scene.bodies[host].shape == "rod" and decide(approach) > 0:
-            touch = Touch(name, point, host, offset, tuple(-e for e in touch.normal))
+            touch = dataclasses.replace(touch, normal=tuple(-e for e in touch.normal))
         return touch
     if not scene.bodies[point].rotates:
         if not scene.bodies[host].rotates and any(e != 0 for e in offset):
@@ -138,11 +187,42 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: s
     return Weld(name, point, host, offset, turn(point, host))
 
 
-def _touch(scene: Scene, coords: Coordinates, at: dict, name: str, point: str, host: str, offset) -> Touch:
+def _in_frame(angle: sp.Expr, vector: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
+    """A world vector turned through `angle`: in the frame of a body at -angle, as its offsets are."""
+    return tuple(tidy(e) for e in sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
+                 * vector)
+
+
+def _on_surface(scene: Scene, coords: Coordinates, at: dict, name: str, body: str, surface: str,
+                rough: bool) -> Touch:
+    """The touch of a bounce on a fixed surface: the body's point nearest it (a round body's rim
+    below its center, a point mass itself) on the surface's point there, along its normal."""
+    plane = scene.surfaces[surface]
+    if plane.carrier is not None:
+        raise ImpactError(f"solve a bounce off {surface}, which the {plane.carrier} carries (a bounce is off a fixed "
+                          "surface or off a body)")
+    shape = scene.bodies[body]
+    if shape.rotates and "radius" not in shape.sizes:
+        raise ValueError(f"a bounce off a surface is of a round body or a point mass: where a {shape.shape} touches "
+                         f"{surface} is not known")
+    radius = shape.sizes.get("radius", sp.Integer(0))
+    center = coords.position(body).xreplace(at)
+    if tidy(plane.gap(center, radius)) != 0:
+        raise ValueError(f"the {body} does not touch {surface} where it is in the state it bounces in (it stands "
+                         f"{sp.sstr(tidy(plane.gap(center, radius)))} off it): place it touching")
+    normal = sp.Matrix([tidy(e) for e in plane.normal_at(center, radius)])
+    offset = _in_frame(-coords.orientation(body).xreplace(at), -radius * normal)
+    return Touch(name, body, None, tuple(tidy(e) for e in center - radius * normal), tuple(normal), offset, rough,
+                 surface)
+
+
+def _touch(scene: Scene, coords: Coordinates, at: dict, name: str, point: str, host: str, offset,
+           rough: bool) -> Touch:
     """The touch of a bounce: a point mass on a rod's axis (normal across the rod) or on a round
     body's rim (normal along the radius)."""
     if scene.bodies[point].rotates:
-        raise ValueError("a bounce is of a point mass off a body (or a body off a point mass)")
+        raise ValueError("a bounce off a body is of a point mass (or a body off a point mass); a round body "
+                         "bounces off a fixed surface")
     shape = scene.bodies[host]
     if "radius" in shape.sizes:
         out = sp.Matrix(coords.rotated(host, offset)).xreplace(at)
@@ -152,14 +232,40 @@ def _touch(scene: Scene, coords: Coordinates, at: dict, name: str, point: str, h
         normal = sp.Matrix([-sp.sin(angle), sp.cos(angle)])
     else:
         raise ValueError(f"a bounce off a {shape.shape}: the normal is known for round bodies and rods")
-    return Touch(name, point, host, offset, tuple(tidy(e) for e in normal))
+    return Touch(name, point, host, offset, tuple(tidy(e) for e in normal), rough=rough)
 
 
-def impact(scene: Scene, coords: Coordinates, before: dict, route: str, bounce: tuple = ()) -> Impact:
+def impact(scene: Scene, coords: Coordinates, before: dict, route: str, bounce: Bounce | None = None) -> Impact:
     """The velocities just after an impulsive change in `scene` (the scene after the impact, with
     the joint it made), from the state `before` (every coordinate and velocity), by `route`
-    ("lagrange" or "newton_euler"; see the module). `bounce` (a Touch of the scene, the
-    coefficient of restitution e): its normal rate after is -e times the one before, not zero."""
+    ("lagrange" or "newton_euler"; see the module). `bounce`: how a bounce's touch of the scene
+    ends; with friction, its regimes each solved, and the answer a Piecewise over them: it grips
+    where mu J_n >= |J_t| of the grip, else slides the way J_t points."""
+    if bounce is None or bounce.friction is None:
+        return _solve(scene, coords, before, route, bounce)
+    grip, (held, sliding) = _solve(scene, coords, before, route, bounce), bounce.friction
+    forces = bounce.touch.unknowns()
+    normal, tangential = grip.impulses[forces["impulse"]], grip.impulses[forces["friction"]]
+    regimes = (Regime("grips", sp.Ge(held * normal, sp.Abs(tangential)), 0, grip),
+               *(Regime(f"slides (friction along {'+' if d > 0 else '-'}t)", tangential > 0 if d > 0 else sp.true, d,
+                        _solve(scene, coords, before, route, dataclasses.replace(bounce, slides=d * sliding)))
+                 for d in (1, -1)))
+
+    def piecewise(field: str, key: sp.Symbol) -> sp.Expr:
+        return sp.Piecewise(*((getattr(r.impact, field)[key], r.where) for r in regimes))
+
+    steps = (Step("Gripping: the contact point's tangential velocity is zero just after", ()), *grip.steps,
+             Step(f"It grips where the friction it needs is at most {sp.sstr(held)} times the normal impulse",
+                  (regimes[0].where,)),
+             Step(f"Elsewhere it slides throughout, its tangential impulse {sp.sstr(sliding)} times the normal one "
+                  "the way the grip's would point (+t where it is positive)", ()),
+             *(step for r in regimes[1:] for step in (Step(f"Where it {r.name}", ()), *r.impact.steps)))
+    return Impact({u: piecewise("velocities", u) for u in grip.velocities},
+                  {f: piecewise("impulses", f) for f in grip.impulses}, steps, regimes)
+
+
+def _solve(scene: Scene, coords: Coordinates, before: dict, route: str, bounce: Bounce | None) -> Impact:
+    """One regime's impact by one route (see `impact`)."""
     at = {c.q: before[c.q] for c in coords.all}
     forces = [f for part in scene.constraints for f in part.unknowns().values()]
     power = sum((part.power(coords) for part in scene.parts), sp.Integer(0))
@@ -183,15 +289,23 @@ def impact(scene: Scene, coords: Coordinates, before: dict, route: str, bounce: 
     return Impact(velocities, impulses, steps)
 
 
-def _after(rate: sp.Expr, part: Part, coords: Coordinates, before: dict, at: dict, bounce: tuple) -> sp.Eq:
-    """A joint's rate just after the impact: zero, or for the bounce -e times the one before."""
-    rate = rate.xreplace(at)
-    if not bounce or part is not bounce[0]:
-        return sp.Eq(rate, 0)
-    return sp.Eq(rate, -bounce[1] * rate.xreplace({c.u: before[c.u] for c in coords.all}))
+def _after(part: Part, rates: list[sp.Expr], coords: Coordinates, before: dict, at: dict,
+           bounce: Bounce | None) -> list[sp.Eq]:
+    """A joint's rates just after the impact: zero; for the bounce's touch, its normal rate -e
+    times the one before, and its tangential one zero, or where it slides J_t = +-mu J_n."""
+    rates = [rate.xreplace(at) for rate in rates]
+    if bounce is None or part is not bounce.touch:
+        return [sp.Eq(rate, 0) for rate in rates]
+    earlier = {c.u: before[c.u] for c in coords.all}
+    result = [sp.Eq(rates[0], -bounce.restitution * rates[0].xreplace(earlier))]
+    if part.rough:
+        forces = part.unknowns()
+        result.append(sp.Eq(rates[1], 0) if bounce.slides is None
+                      else sp.Eq(forces["friction"], bounce.slides * forces["impulse"]))
+    return result
 
 
-def _momenta(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce: tuple) -> list[sp.Eq]:
+def _momenta(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce: Bounce | None) -> list[sp.Eq]:
     kinetic, _ = energies(scene, coords)
     earlier = {c.u: before[c.u] for c in coords.all}
     gaps = [(part, f, g) for part in scene.constraints for f, g in zip(part.unknowns().values(), part.gaps(coords))]
@@ -200,10 +314,11 @@ def _momenta(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce: 
         momentum = sp.diff(kinetic, c.u)
         impulse = sum((f * sp.diff(g, c.q) for _, f, g in gaps), sp.Integer(0))
         equations.append(sp.Eq((momentum - momentum.xreplace(earlier)).xreplace(at), impulse.xreplace(at)))
-    return equations + [_after(coords.ddt(g), part, coords, before, at, bounce) for part, _, g in gaps]
+    return equations + [e for part in scene.constraints
+                        for e in _after(part, [coords.ddt(g) for g in part.gaps(coords)], coords, before, at, bounce)]
 
 
-def _impulses(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce: tuple) -> list[sp.Eq]:
+def _impulses(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce: Bounce | None) -> list[sp.Eq]:
     loads = []
     for part in scene.constraints:
         unknowns = list(part.unknowns().values())
@@ -226,8 +341,34 @@ def _impulses(scene: Scene, coords: Coordinates, before: dict, at: dict, bounce:
             moment = sum((f.offset[0] * f.force[1] - f.offset[1] * f.force[0] for f in pushes), sp.Integer(0))
             moment += sum((f.torque for f in on_body if isinstance(f, AppliedTorque)), sp.Integer(0))
             equations.append(sp.Eq(body.inertia * (u - before[u]), moment.xreplace(at)))
-    return equations + [_after(v, part, coords, before, at, bounce)
-                        for part in scene.constraints for v in part.conditions(coords)]
+    return equations + [e for part in scene.constraints
+                        for e in _after(part, part.conditions(coords), coords, before, at, bounce)]
+
+
+def regime_conditions(impact: Impact, touch: Touch, coords: Coordinates, before: dict) -> list[tuple]:
+    """(expression, strict, meaning) for a rough bounce's sliding regimes, each where it holds:
+    the contact slips against its friction at the start (a contact at rest that the grip cannot
+    hold would start to slip during the impact, which derive does not model), and still at
+    separation. Its slip rate is linear in the normal impulse, so one that keeps its sign at
+    both ends never reversed (where it would, the contact grips part way, not modelled)."""
+    at = {c.q: before[c.q] for c in coords.all}
+    slip = touch.conditions(coords)[1].xreplace(at)
+    result = []
+    for k, regime in enumerate(impact.regimes):
+        if regime.direction == 0:
+            continue
+        earlier = [(sp.Integer(1), r.where) for r in impact.regimes[:k]]
+
+        def there(expr: sp.Expr) -> sp.Expr:
+            return sp.Piecewise(*earlier, (-regime.direction * tidy(expr), regime.where), (sp.Integer(1), True))
+
+        result += [(there(slip.xreplace(before)), True,
+                    f"the {touch.body}'s contact point does not slip on the {touch.to or touch.surface} at the start "
+                    "of the bounce, which its grip cannot hold: a slip that starts during the impact is not modelled"),
+                   (there(slip.xreplace(regime.impact.velocities)), False,
+                    f"the {touch.body}'s slip on the {touch.to or touch.surface} would reverse during the bounce, which "
+                    "derive does not model (it takes the slip one way throughout)")]
+    return result
 
 
 def energy_lost(scene: Scene, coords: Coordinates, before: dict, after: dict) -> sp.Expr:
@@ -240,13 +381,15 @@ def conserved(scene: Scene, coords: Coordinates, before: dict, after: dict) -> S
     """The momentum the impact keeps, as a text names it, with its value before and after. The
     joints between bodies give equal and opposite impulses at one point (or couples), so only the
     ground's matter: with none, the total momentum and the angular momentum about the origin; with
-    pins to the ground all at one point (a hinge, an axle), the angular momentum about it; with
-    another joint to the ground (a floor, a weld), none is named (None)."""
+    pins to the ground and a bounce's touch on a surface all at one point (a hinge, an axle, where
+    a ball strikes the floor), the angular momentum about it; with another joint to the ground (a
+    block's floor, a weld), none is named (None)."""
     grounded = [p for p in scene.constraints if len(p.bodies()) == 1]
-    if any(not isinstance(p, Pin) or p.to is not None for p in grounded):
+    if any(not isinstance(p, (Pin, Touch)) for p in grounded):
         return None
     at = {c.q: before[c.q] for c in coords.all}
-    points = {tuple(tidy(e) for e in coords.position(p.body, p.offset).xreplace(at)) for p in grounded}
+    points = {tuple(tidy(e) for e in (coords.position(p.body, p.offset) if isinstance(p, Pin) else
+                                      sp.Matrix(p.to_offset)).xreplace(at)) for p in grounded}
     if len(points) > 1:
         return None
     about = sp.Matrix(points.pop()) if points else sp.zeros(2, 1)
@@ -265,7 +408,8 @@ def conserved(scene: Scene, coords: Coordinates, before: dict, after: dict) -> S
     (px0, py0, l0), (px1, py1, l1) = momenta(before), momenta(after)
     L, px, py = sp.Symbol("L_O"), sp.Symbol("p_x"), sp.Symbol("p_y")  # L_O: not the length L
     if grounded:
-        where = f"about the pin at {sp.sstr(tuple(about))}, where the only impulse from outside acts"
+        joint = "pin" if isinstance(grounded[0], Pin) else "point of contact"
+        where = f"about the {joint} at {sp.sstr(tuple(about))}, where the only impulse from outside acts"
         return Step(f"Check: the angular momentum {where}, before and after", (sp.Eq(L, l0), sp.Eq(L, l1)))
     return Step("Check: no impulse from outside, so the momentum and the angular momentum about the origin, before "
                 "and after", (sp.Eq(px, px0), sp.Eq(px, px1), sp.Eq(py, py0), sp.Eq(py, py1), sp.Eq(L, l0),
