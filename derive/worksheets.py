@@ -281,16 +281,35 @@ def draw(problem: Problem, rng: random.Random) -> dict[str, sp.Expr]:
 MAX_DRAWS = 200
 
 
-def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict[str, sp.Expr]:
-    """A draw that meets every condition the answers need (a fast enough top, say): redrawn,
-    at most MAX_DRAWS times, else an error naming the problem."""
+def si_values(problem: Problem, values: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
+    """A draw's values (in their declared units) in SI, by symbol."""
+    factors = ((name, p.symbol, units.si_factor(units.parse_unit(p.unit))) for name, p in problem.parameters.items())
+    return {symbol: values[name] if factor is sp.S.One else values[name] * factor for name, symbol, factor in factors}
+
+
+def valid_draws(problem: Problem, solution: Solution, rngs: Sequence[random.Random]) -> list[dict[str, sp.Expr]]:
+    """A draw from each generator (a variant's own) that meets every condition the answers need
+    (a fast enough top, say): every variant drawn, their conditions certified together, and
+    each variant whose draw breaks one redrawn from its own generator, at most MAX_DRAWS times
+    (else an error naming the problem). A variant's draw is the same however many are drawn."""
+    draws: list[dict[str, sp.Expr] | None] = [None] * len(rngs)
+    pending = list(range(len(rngs)))
     for _ in range(MAX_DRAWS):
-        values = draw(problem, rng)
-        si = {p.symbol: values[n] * units.si_factor(units.parse_unit(p.unit)) for n, p in problem.parameters.items()}
-        if solution.violated(si) is None:
-            return values
+        candidates = {i: draw(problem, rngs[i]) for i in pending}
+        broken = solution.violations([si_values(problem, values) for values in candidates.values()])
+        for (i, values), meaning in zip(candidates.items(), broken):
+            if meaning is None:
+                draws[i] = values
+        pending = [i for i in pending if draws[i] is None]
+        if not pending:
+            return draws
     raise InputError(f"{problem.path}: parameters: no draw in {MAX_DRAWS} meets the problem's conditions "
                      f"({'; '.join(m for _, _, m in solution.conditions)}): narrow the ranges")
+
+
+def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict[str, sp.Expr]:
+    """One variant's valid_draws."""
+    return valid_draws(problem, solution, [rng])[0]
 
 
 LONGEST_EQUATION = 700  # characters of LaTeX; longer would overflow the page
@@ -332,10 +351,7 @@ class _ProblemVariants:
     _wrong: dict[int, dict[str, list[dict[str, str]]]] = field(default_factory=dict, repr=False)
 
     def si_values(self, draw: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
-        return {
-            p.symbol: draw[name] * units.si_factor(units.parse_unit(p.unit))
-            for name, p in self.problem.parameters.items()
-        }
+        return si_values(self.problem, draw)
 
     def shown(self, name: str, value: str | None) -> str:
         """LaTeX of an answer: its number, or its expression when it has none (a general result)."""
@@ -431,8 +447,8 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
                 solution = Solution(problem)
                 solution.expressions  # derive once, for every variant
                 solution.checks()
-                draws = [valid_draw(problem, solution, random.Random(f"{seed}/{problem.id}/{n}"))
-                         for n in range(1, variants + 1)]
+                draws = valid_draws(problem, solution, [random.Random(f"{seed}/{problem.id}/{n}")
+                                                        for n in range(1, variants + 1)])
             except InputError as error:
                 raise InputError(f"{problem_set.path}: {where}: {error}") from None
             prepared.append(_ProblemVariants(problem, solution, draws, problem_set.tolerance))
@@ -464,12 +480,13 @@ def _solutions_context(item: _ProblemVariants) -> dict:
         {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning}
         for n, a in problem.asks.items()
     ]
+    symbols = {n: render.latex_of(p.symbol) for n, p in problem.parameters.items()}
     variants = []
     for number, values in enumerate(item.draws, start=1):
         results = item.answers(values)
         variants.append({
             "number": number,
-            "given": [f"${render.latex_of(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
+            "given": [f"${symbols[n]} = {quantity_latex(values[n], p.unit, p.sig_figs)}$"
                       for n, p in problem.parameters.items()],
             "results": [{"symbol": render.symbol_latex(n), "value": item.shown(n, results[n]),
                          "unit": units.latex_unit(a.unit)} for n, a in problem.asks.items()],
