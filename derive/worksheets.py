@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import random
 import sys
 from dataclasses import dataclass, field
@@ -28,8 +27,8 @@ import sympy as sp
 import yaml
 
 from derive import MAX_VARIANTS
-from derive import (distractors, export, figure, figure_files, latex_safety, library, limiting_cases, lms, numeric,
-                    output_folder, render, units)
+from derive import (distractors, export, figure, figure_files, json_text, latex_safety, library, limiting_cases, lms,
+                    numeric, output_folder, render, units)
 from derive.answers import Solution
 from derive.defaults import Defaults
 from derive.errors import InputError
@@ -283,7 +282,7 @@ MAX_DRAWS = 200
 
 def si_values(problem: Problem, values: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
     """A draw's values (in their declared units) in SI, by symbol."""
-    factors = ((name, p.symbol, units.si_factor(units.parse_unit(p.unit))) for name, p in problem.parameters.items())
+    factors = ((name, p.symbol, units.si_factor(p.unit)) for name, p in problem.parameters.items())
     return {symbol: values[name] if factor is sp.S.One else values[name] * factor for name, symbol, factor in factors}
 
 
@@ -696,7 +695,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
             writer.writerows({k: safe_cell(v) for k, v in {**r, "unit": units.unicode_unit(r["unit"])}.items()}
                              for r in rows)  # no formulas; the unit as text reads it (kg·m², none for a pure number)
             products += [_write(staging, "key.csv", buffer.getvalue()),
-                         _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
+                         _write(staging, "key.json", json_text.dumps(key) + "\n")]
             if "moodle" in formats:
                 begin("Moodle XML")
                 products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id, images)))
