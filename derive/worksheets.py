@@ -17,6 +17,7 @@ import csv
 import io
 import random
 import sys
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property, lru_cache
@@ -432,11 +433,22 @@ class _ProblemVariants:
             raise self.problem.error("question", f"{type(error).__name__}: {error}") from None
 
 
+@contextmanager
+def _entry(problem_set: ProblemSet, where: str):
+    """An error about a problem of the set names the set file and the entry first."""
+    try:
+        yield
+    except InputError as error:
+        raise InputError(f"{problem_set.path}: {where}: {error}") from None
+
+
 def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Reporter) -> list[_ProblemVariants]:
-    prepared, ids = [], {}
+    """Each problem derived (its answers and checks), then its variants drawn: the derivations
+    are the set's fixed cost, the draws the first step of its cost per variant."""
+    derived, ids = [], {}
     with progress.task("deriving", len(problem_set.problems)) as begin:
         for reference, where in zip(problem_set.problems, problem_set.fields):
-            try:  # an error names the set file and the entry, then the problem file and its field
+            with _entry(problem_set, where):  # then the problem file and its field
                 problem = load(reference)
                 if problem.id in ids:
                     raise InputError(f"{problem.path}: id: {problem.id} is also the id of {ids[problem.id]}; "
@@ -446,11 +458,14 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
                 solution = Solution(problem)
                 solution.expressions  # derive once, for every variant
                 solution.checks()
-                draws = valid_draws(problem, solution, [random.Random(f"{seed}/{problem.id}/{n}")
-                                                        for n in range(1, variants + 1)])
-            except InputError as error:
-                raise InputError(f"{problem_set.path}: {where}: {error}") from None
-            prepared.append(_ProblemVariants(problem, solution, draws, problem_set.tolerance))
+            derived.append((problem, solution, where))
+    progress(f"drawing {variants} variant{'s' * (variants > 1)} of each problem")
+    prepared = []
+    for problem, solution, where in derived:
+        with _entry(problem_set, where):
+            draws = valid_draws(problem, solution, [random.Random(f"{seed}/{problem.id}/{n}")
+                                                    for n in range(1, variants + 1)])
+        prepared.append(_ProblemVariants(problem, solution, draws, problem_set.tolerance))
     return prepared
 
 
@@ -643,6 +658,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
     # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
     figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
         if formats & figure_files.OUTPUTS else {}
+    progress("each variant's answers, certified, and the keys")
     rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
     for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
         print(f"derive: warning: {note}", file=sys.stderr, flush=True)
