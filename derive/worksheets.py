@@ -398,8 +398,8 @@ class _ProblemVariants:
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
-        return {name: None if value is None else lms.tolerance(value, self.problem.asks[name].tolerance or self.tolerance)
-                for name, value in self.answers(draw).items()}
+        return {name: None if value is None else lms.tolerance(value.text, self.problem.asks[name].tolerance or self.tolerance)
+                for name, value in self.certified(draw).items()}
 
     def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
         """Each answer's distractors (value, mistake) for multiple choice."""
@@ -421,6 +421,11 @@ class _ProblemVariants:
     @cached_property
     def _own_draws(self) -> set[int]:
         return {id(d) for d in self.draws}
+
+    @cached_property
+    def questions(self) -> list[str]:
+        """Each variant's question, read once for the worksheet, its pandoc outputs and the LMS exports."""
+        return [self.question(draw) for draw in self.draws]
 
     def question(self, draw: dict[str, sp.Expr]) -> str:
         shown = {
@@ -589,7 +594,7 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
             values = item.draws[number - 1]
             answers, tolerances = item.answers(values), item.tolerances(values)
             wrong = item.wrong(values) if choice else {}
-            question = item.question(values)
+            question = item.questions[number - 1]
             for name, ask in item.problem.asks.items():
                 if answers[name] is None:
                     continue
@@ -612,7 +617,7 @@ def _worksheet(header: dict, prepared: list[_ProblemVariants], variants: int, fi
     boxes = [{"name": name, "figure": drawn} for name, drawn in zip(names, figures) if drawn and boxed]
     shown = [rf"\usebox{{{name}}}" if drawn and boxed else drawn for name, drawn in zip(names, figures)]
     return render.render("worksheet.tex.j2", set=header, boxes=boxes, variants=[
-        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1]),
+        {"number": n, "problems": [{"title": item.problem.title, "question": item.questions[n - 1],
                                     "figure": figure} for item, figure in zip(prepared, shown)]}
         for n in range(1, variants + 1)])
 
