@@ -220,8 +220,8 @@ def answer_key(say, solutions: dict[str, Solution], variants: int) -> None:
 SET_PROBLEMS = ("string_wrapped_disk", "compound_pendulum", "rolling_incline", "beetle_lazy_susan", "kepler_orbit")
 #: The 10-problem set of the sheet section: those and a top, a spool, a loop, a large swing and a
 #: collision with a rod, every one with its figure.
-SHEET_PROBLEMS = SET_PROBLEMS + ("top_precession_exact", "tugged_spool", "loop_the_loop_ball", "compound_pendulum_large",
-                                 "restitution_rod")
+SHEET_PROBLEMS = SET_PROBLEMS + ("top_precession_exact", "tugged_spool", "loop_the_loop_ball",
+                                 "compound_pendulum_large", "restitution_rod")
 
 
 class _Clock(Reporter):
@@ -256,7 +256,8 @@ def _build_steps(references, variants: int, formats, out: Path) -> list[tuple[st
     import json
     import os
 
-    job = json.dumps({"references": list(references), "variants": variants, "formats": sorted(formats), "out": str(out)})
+    job = json.dumps({"references": list(references), "variants": variants, "formats": sorted(formats),
+                      "out": str(out)})
     began = time.time()
     done = subprocess.run([sys.executable, "-c", f"from derive.bench import _timed_build; _timed_build({job!r})"],
                           capture_output=True, text=True, check=True, env={**os.environ, "PYTHONHASHSEED": "0"})
