@@ -12,7 +12,6 @@ L**2*m/3
 from __future__ import annotations
 
 import functools
-from decimal import Decimal
 from functools import cached_property
 
 import sympy as sp
@@ -540,16 +539,21 @@ class Solution(StateAnswers, CrossChecks):
     def violated(self, values: dict[sp.Symbol, sp.Expr]) -> str | None:
         """The meaning of the first condition these values break, or None (every sign certified:
         derive.numeric, the conditions evaluated together)."""
+        return self.violations([values])[0]
+
+    def violations(self, rows: list[dict[sp.Symbol, sp.Expr]]) -> list[str | None]:
+        """violated() of each row of values, the rows evaluated together (a set's variants: one
+        compiled program over them all)."""
         try:
-            signs = numeric.evaluator(tuple(c for c, _, _ in self.conditions)).certified([values], [6] * len(self.conditions))
+            signs = numeric.evaluator(tuple(c for c, _, _ in self.conditions)).signs(rows)
         except ValueError:  # a later condition is not real where an earlier one breaks (an acos past 1
-            # once a swing goes over the top): in order, one at a time, the first broken one
-            return next((meaning for condition, strict, meaning in self.conditions
-                         if self.violated_at(condition, strict, values)), None)
-        for (_, strict, meaning), value in zip(self.conditions, signs[0]):
-            if value is not None and (Decimal(value.text) < 0 or strict and Decimal(value.text) == 0):
-                return meaning
-        return None
+            # once a swing goes over the top): row by row, and in that row in order, one at a time
+            if len(rows) > 1:
+                return [self.violated(values) for values in rows]
+            return [next((meaning for condition, strict, meaning in self.conditions
+                          if self.violated_at(condition, strict, rows[0])), None)]
+        return [next((meaning for (_, strict, meaning), sign in zip(self.conditions, row)
+                      if sign is not None and (sign < 0 or strict and sign == 0)), None) for row in signs]
 
     def never_holds(self, values: dict[sp.Symbol, sp.Expr]) -> str | None:
         """The meaning of the first condition that the given values leave open and that every

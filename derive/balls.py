@@ -127,8 +127,9 @@ def unmapped(expression: sp.Basic) -> set[str]:
 
 
 def mapped(expression: sp.Basic) -> bool:
-    """Whether an expression compiles into a program of balls (a condition alone is no number)."""
-    return not unmapped(expression) and not isinstance(expression, sp.logic.boolalg.Boolean)
+    """Whether an expression compiles into a program of balls (a condition alone is no number; a
+    symbol, which sympy counts as a Boolean too, is one: an eccentricity's e >= 0)."""
+    return not unmapped(expression) and (expression.is_Symbol or not isinstance(expression, sp.logic.boolalg.Boolean))
 
 
 def constant(expression: sp.Expr) -> arb:

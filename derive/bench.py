@@ -4,7 +4,8 @@ Figures: CLI start-up; derivation per problem, cold and cached; answers per seco
 largest relative error and the wrong values of each evaluation method (naive evalf, the
 previous policy, balls) against a 50-digit reference, at typical and extreme parameters; an
 answer key of 30 problems x 300 variants; the marginal answers per second of a whole set
-build (300 variants against 1); the same derivations
+build (300 variants against 1, per CPU second); a 10-problem set of 30 variants with its PDFs,
+step by step (derivations, answers and keys, LaTeX, PDF compiles, pandoc); the same derivations
 with sympy.physics.mechanics alone; a work-precision table of scipy's integrators and a
 symplectic one on a large-amplitude pendulum; derive against sympy.physics.mechanics'
 KanesMethod in the same run, cold, on 14 scenes checked to agree at a sample point
@@ -18,6 +19,7 @@ True
 from __future__ import annotations
 
 import random
+import re
 import shutil
 import statistics
 import subprocess
@@ -30,8 +32,9 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from derive import library, numeric, problem, worksheets
+from derive import export, library, numeric, problem, worksheets
 from derive.answers import Solution
+from derive.progress import Reporter
 
 
 _CRITICAL = mpmath.nstr(mpmath.acos(mpmath.mpf(1) / 3) + mpmath.mpf("1e-10"), 45)
@@ -215,39 +218,103 @@ def answer_key(say, solutions: dict[str, Solution], variants: int) -> None:
 #: The set whose build gives the marginal rate (issue 17's): a pulley, a pendulum, rolling, a
 #: collision and an orbit.
 SET_PROBLEMS = ("string_wrapped_disk", "compound_pendulum", "rolling_incline", "beetle_lazy_susan", "kepler_orbit")
+#: The 10-problem set of the sheet section: those and a top, a spool, a loop, a large swing and a
+#: collision with a rod, every one with its figure.
+SHEET_PROBLEMS = SET_PROBLEMS + ("top_precession_exact", "tugged_spool", "loop_the_loop_ball",
+                                 "compound_pendulum_large", "restitution_rod")
+
+
+class _Clock(Reporter):
+    """A silent Reporter that notes when each step of a build begins: (step, wall clock, CPU
+    seconds of this process)."""
+
+    def __init__(self):
+        super().__init__("none")
+        self.steps: list[tuple[str, float, float]] = []
+
+    def __call__(self, message: str) -> None:
+        self.steps.append((message, time.time(), time.process_time()))
+
+
+def _timed_build(job: str) -> None:
+    """Run in a fresh process by _build_steps: build the set of `job` (JSON: references,
+    variants, formats, out) and print its steps as one JSON line."""
+    import json
+
+    options = json.loads(job)
+    clock = _Clock()
+    worksheets.build(options["references"], variants=options["variants"], out_dir=options["out"],
+                     formats=frozenset(options["formats"]), progress=clock)
+    clock("end")
+    print(json.dumps(clock.steps))
+
+
+def _build_steps(references, variants: int, formats, out: Path) -> list[tuple[str, float, float]]:
+    """A set build in a fresh process (`derive sheet` as a function, its hash seed fixed): each step
+    as (name, wall seconds, CPU seconds of the Python process; TeX's and pandoc's own CPU is not
+    counted), "start-up" first (the interpreter and the imports), the derivations as one step."""
+    import json
+    import os
+
+    job = json.dumps({"references": list(references), "variants": variants, "formats": sorted(formats),
+                      "out": str(out)})
+    began = time.time()
+    done = subprocess.run([sys.executable, "-c", f"from derive.bench import _timed_build; _timed_build({job!r})"],
+                          capture_output=True, text=True, check=True, env={**os.environ, "PYTHONHASHSEED": "0"})
+    events = json.loads(done.stdout.splitlines()[-1])
+    steps = [("start-up", events[0][1] - began, events[0][2])]
+    for (name, wall, cpu), (_, next_wall, next_cpu) in zip(events, events[1:]):
+        name = "derivations" if name.startswith("deriving ") else re.sub(r" \(\d+/\d+\)$", "", name)
+        if steps[-1][0] == name:
+            steps[-1] = (name, steps[-1][1] + next_wall - wall, steps[-1][2] + next_cpu - cpu)
+        else:
+            steps.append((name, next_wall - wall, next_cpu - cpu))
+    return steps
+
+
+def _per_variant(steps) -> tuple[float, float]:
+    """Wall and CPU seconds of a build from drawing its variants on (what grows with them)."""
+    first = next(i for i, (name, _, _) in enumerate(steps) if name.startswith("drawing "))
+    return sum(wall for _, wall, _ in steps[first:]), sum(cpu for _, _, cpu in steps[first:])
 
 
 def set_rate(say, variants: int = 300, repeats: int = 3) -> float:
-    """The marginal answers per second of a whole set build: `derive sheet SET_PROBLEMS --to ''`
-    with `variants` variants against one, each run a fresh process (the two alternated,
-    `repeats` times; medians, and the range over the pairs), against naive evalf's answers per
-    second on the same answers."""
+    """The marginal answers per second of a whole set build (`derive sheet SET_PROBLEMS --to ''`):
+    its cost per variant (drawing, conditions, answers, keys, the .tex files: every step from the
+    draws on; the derivations and the start-up are the same for 1 variant and for 300) with
+    `variants` variants against one, each build a fresh process (the two alternated, `repeats`
+    times; medians). CPU seconds are the headline (two shared cores make wall time noisy), against
+    naive evalf's answers per CPU second on the same answers; returns that marginal rate."""
     import csv
     import tempfile
 
-    say(f"\nA whole set build (derive sheet {' '.join(SET_PROBLEMS)} --to ''), {variants} variants against 1:")
-    seconds: dict[int, list[float]] = {1: [], variants: []}
+    say(f"\nA whole set build (derive sheet {' '.join(SET_PROBLEMS)} --to ''), {variants} variants against 1, "
+        "from the draws on:")
+    costs: dict[int, list[tuple[float, float]]] = {1: [], variants: []}
     answers = {}
     with tempfile.TemporaryDirectory() as folder:
         for _ in range(repeats):
             for count in (1, variants):
                 out = Path(folder) / f"set-{count}"
                 shutil.rmtree(out, ignore_errors=True)
-                command = [*_command(), "sheet", *SET_PROBLEMS, "--variants", str(count), "--to", "", "--out", str(out)]
-                seconds[count].append(_timed(lambda: subprocess.run(command, capture_output=True, check=True))[1])
+                costs[count].append(_per_variant(_build_steps(SET_PROBLEMS, count, (), out)))
                 with open(out / "key.csv", encoding="utf-8") as key:
                     answers[count] = sum(1 for _ in csv.DictReader(key))
     extra = answers[variants] - answers[1]
-    pairs = sorted(extra / (many - one) for one, many in zip(seconds[1], seconds[variants]))
-    marginal = extra / (statistics.median(seconds[variants]) - statistics.median(seconds[1]))
+    wall, cpu = ([statistics.median(c[k] for c in costs[count]) for count in (1, variants)] for k in (0, 1))
+    marginal, marginal_wall = extra / (cpu[1] - cpu[0]), extra / (wall[1] - wall[0])
     solutions = [Solution(problem.load(p)) for p in SET_PROBLEMS]
     naive = _groups((s, _typical(s, random.Random(f"bench/set/{n}"))) for s in solutions for n in range(20))
     count = sum(len(rows) * len(expressions) for expressions, rows, _ in naive)
-    naive_rate = max(count / _timed(_values, "naive evalf", naive)[1] for _ in range(repeats))
-    say(f"  1 variant: {answers[1]} answers, median {statistics.median(seconds[1]):.2f} s; {variants} variants: "
-        f"{answers[variants]} answers, median {statistics.median(seconds[variants]):.2f} s")
-    say(f"  marginal: {marginal:.0f} answers/s (pairs {pairs[0]:.0f}-{pairs[-1]:.0f}); naive evalf on these answers "
-        f"{naive_rate:.0f} answers/s: {marginal / naive_rate:.1f}x (target 10x)")
+    naive_rate = 0.0
+    for _ in range(repeats):
+        started = time.process_time()
+        _values("naive evalf", naive)
+        naive_rate = max(naive_rate, count / (time.process_time() - started))
+    say(f"  1 variant: {answers[1]} answers, median {cpu[0]:.3f} s CPU ({wall[0]:.3f} s wall); {variants} variants: "
+        f"{answers[variants]} answers, median {cpu[1]:.3f} s CPU ({wall[1]:.3f} s wall)")
+    say(f"  marginal: {marginal:.0f} answers per CPU second ({marginal_wall:.0f} per wall second); naive evalf on "
+        f"these answers {naive_rate:.0f} per CPU second: {marginal / naive_rate:.1f}x (target 10x)")
     return marginal
 
 
@@ -344,37 +411,26 @@ def work_precision(say) -> None:
 
 
 def sheet_build(say, with_pdfs: bool) -> None:
-    """A 10-problem set with 30 variants: LaTeX only, and with PDFs (pages per second)."""
-    import os
+    """SHEET_PROBLEMS with 30 variants, as `derive sheet` builds them by default (the PDFs and the
+    HTML; LaTeX and the keys only without `with_pdfs`), in a fresh process: where the time goes,
+    step by step (the start-up, the derivations, drawing the variants with their answers and
+    keys, the .tex files, the PDF compiles, the figures' images, pandoc, writing the files)."""
     import tempfile
 
-    ids = [p.stem for p in library.problem_files()][:10]
+    formats = worksheets.DEFAULT_OUTPUTS if with_pdfs else frozenset()
     with tempfile.TemporaryDirectory() as folder:
-        sets = Path(folder) / "library"
-        shutil.copytree(library.problems_dir(), sets)
-        (sets / "sets" / "bench.yaml").write_text(f"title: Bench\nproblems: [{', '.join(ids)}]\nvariants: 30\n")
-        previous = os.environ.get("DERIVE_LIBRARY")
-        os.environ["DERIVE_LIBRARY"] = str(sets)
-        try:
-            say("\nA 10-problem set with 30 variants:")
-            latex_only = None
-            for formats, label in ((set(), "LaTeX, keys"), ({"pdf"}, "with the 3 PDFs")):
-                if formats and not with_pdfs:
-                    continue
-                built, elapsed = _timed(lambda: worksheets.build("bench", out_dir=str(Path(folder) / "out"), formats=formats))
-                line = f"  {label:<16} {elapsed:6.1f} s"
-                if formats:
-                    pages = sum(int(subprocess.run(["pdfinfo", str(p)], capture_output=True, text=True).stdout
-                                    .split("Pages:")[1].split()[0]) for p in built if p.suffix == ".pdf")
-                    step = max(elapsed - latex_only, 1e-3)
-                    line += f"  ({pages} pages; the PDF step {step:.1f} s, {pages / step:.0f} pages/s, in parallel)"
-                latex_only = elapsed
-                say(line)
-        finally:
-            if previous is None:
-                os.environ.pop("DERIVE_LIBRARY")
-            else:
-                os.environ["DERIVE_LIBRARY"] = previous
+        out = Path(folder) / "out"
+        steps = _build_steps(SHEET_PROBLEMS, 30, formats, out)
+        total = sum(wall for _, wall, _ in steps)
+        outputs = ", ".join(sorted(formats)) or "LaTeX and keys only"
+        say(f"\nA 10-problem set with 30 variants ({outputs}): {total:.1f} s wall on {export.workers()} cores "
+            "(target 15 s with the PDFs); where the time goes (wall, and CPU of the Python process):")
+        for name, wall, cpu in steps:
+            say(f"  {name:<58} {wall:6.2f} s  {cpu:6.2f} s CPU")
+        if with_pdfs:
+            pages = sum(int(subprocess.run(["pdfinfo", str(p)], capture_output=True, text=True).stdout
+                            .split("Pages:")[1].split()[0]) for p in out.glob("*.pdf") if p.stem in ("worksheet", "solutions", "key"))
+            say(f"  ({pages} pages in the worksheet, the solutions and the key)")
 
 
 # --- derive against sympy.physics.mechanics, cold, in the same run (derive.bench_anchors) -------

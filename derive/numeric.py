@@ -336,6 +336,28 @@ class Evaluator:
                         results[r][i] = Certified(self._lambdified[i].agreement(row, digits[i]), "agreement")
         return results
 
+    def signs(self, rows: list[dict[sp.Symbol, sp.Expr]]) -> list[list[int | None]]:
+        """Each row's answers' signs (1, 0 or -1; None where an answer has a symbol without a
+        value), certified: a sign is read from the balls at the first working precision where
+        they exclude zero (a condition asks no digits), and from certified()'s digits otherwise
+        (a zero, a ball that straddles it, what balls do not map)."""
+        results: list[list[int | None]] = [[None] * len(self.expressions) for _ in rows]
+        if self._in_program:
+            together = [r for r, row in enumerate(rows) if all(s in row for s in self._program.symbols)]
+            outcomes = self._program.run([[rows[r][s] for s in self._program.symbols] for r in together],
+                                         starting_bits(1))
+            for r, outcome in zip(together, outcomes):
+                if not isinstance(outcome, balls.Undecided):
+                    for k, i in self._in_program:
+                        results[r][i] = 1 if outcome[k] > 0 else -1 if outcome[k] < 0 else None
+        undecided = [r for r, row in enumerate(results) if None in row]
+        for r, row in zip(undecided, self.certified([rows[r] for r in undecided], [6] * len(self.expressions))):
+            for i, value in enumerate(row):
+                if results[r][i] is None and value is not None:
+                    number = Decimal(value.text)
+                    results[r][i] = (number > 0) - (number < 0)
+        return results
+
     def _balls(self, rows, together: list[int], digits: list[int], results) -> None:
         """The program's answers of the rows `together`, precision doubled for what is not yet
         certified; past MAX_BITS, the exact backend."""

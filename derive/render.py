@@ -20,6 +20,7 @@ from sympy.printing.latex import translate
 
 from derive import latex_safety, library
 
+@lru_cache(maxsize=1024)  # a problem's id, title and the set's are escaped in every variant
 def tex_escape(text: str) -> str:
     """Plain text made safe to typeset: LaTeX's special characters escaped."""
     return "".join(latex_safety.SPECIALS.get(c, c) for c in str(text))

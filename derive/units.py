@@ -344,6 +344,7 @@ def superscript(text: str) -> str | None:
     return None if None in written else "".join(written)
 
 
+@lru_cache(maxsize=256)  # a unit is written in every row of key.csv
 def unicode_unit(text: str) -> str:
     """A unit as plain text reads it: "kg*m^2" -> "kg·m²", "m/s^2" -> "m/s²"; "" for a pure number.
     An exponent with no superscript form stays `^(1/2)`.

@@ -14,10 +14,11 @@ Called, this module builds a set: `derive.sheet("demo", out="build/demo")` is de
 from __future__ import annotations
 
 import csv
+import gc
 import io
-import json
 import random
 import sys
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property, lru_cache
@@ -28,8 +29,8 @@ import sympy as sp
 import yaml
 
 from derive import MAX_VARIANTS
-from derive import (distractors, export, figure, figure_files, latex_safety, library, limiting_cases, lms, numeric,
-                    output_folder, render, typesetting, units)
+from derive import (distractors, export, figure, figure_files, json_text, latex_safety, library, limiting_cases, lms,
+                    numeric, output_folder, render, typesetting, units)
 from derive.answers import Solution
 from derive.defaults import Defaults
 from derive.errors import InputError
@@ -281,16 +282,35 @@ def draw(problem: Problem, rng: random.Random) -> dict[str, sp.Expr]:
 MAX_DRAWS = 200
 
 
-def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict[str, sp.Expr]:
-    """A draw that meets every condition the answers need (a fast enough top, say): redrawn,
-    at most MAX_DRAWS times, else an error naming the problem."""
+def si_values(problem: Problem, values: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
+    """A draw's values (in their declared units) in SI, by symbol."""
+    factors = ((name, p.symbol, units.si_factor(p.unit)) for name, p in problem.parameters.items())
+    return {symbol: values[name] if factor is sp.S.One else values[name] * factor for name, symbol, factor in factors}
+
+
+def valid_draws(problem: Problem, solution: Solution, rngs: Sequence[random.Random]) -> list[dict[str, sp.Expr]]:
+    """A draw from each generator (a variant's own) that meets every condition the answers need
+    (a fast enough top, say): every variant drawn, their conditions certified together, and
+    each variant whose draw breaks one redrawn from its own generator, at most MAX_DRAWS times
+    (else an error naming the problem). A variant's draw is the same however many are drawn."""
+    draws: list[dict[str, sp.Expr] | None] = [None] * len(rngs)
+    pending = list(range(len(rngs)))
     for _ in range(MAX_DRAWS):
-        values = draw(problem, rng)
-        si = {p.symbol: values[n] * units.si_factor(units.parse_unit(p.unit)) for n, p in problem.parameters.items()}
-        if solution.violated(si) is None:
-            return values
+        candidates = {i: draw(problem, rngs[i]) for i in pending}
+        broken = solution.violations([si_values(problem, values) for values in candidates.values()])
+        for (i, values), meaning in zip(candidates.items(), broken):
+            if meaning is None:
+                draws[i] = values
+        pending = [i for i in pending if draws[i] is None]
+        if not pending:
+            return draws
     raise InputError(f"{problem.path}: parameters: no draw in {MAX_DRAWS} meets the problem's conditions "
                      f"({'; '.join(m for _, _, m in solution.conditions)}): narrow the ranges")
+
+
+def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict[str, sp.Expr]:
+    """One variant's valid_draws."""
+    return valid_draws(problem, solution, [rng])[0]
 
 
 LONGEST_EQUATION = 700  # characters of LaTeX; longer would overflow the page
@@ -337,12 +357,10 @@ class _ProblemVariants:
     # evaluated once per draw (keyed by the draw, which self.draws keeps alive).
     _answers: dict[int, dict[str, numeric.Certified | None]] = field(default_factory=dict, repr=False)
     _wrong: dict[int, dict[str, list[dict[str, str]]]] = field(default_factory=dict, repr=False)
+    _questions: dict[bool, list[str]] = field(default_factory=dict, repr=False)  # by siunitx
 
     def si_values(self, draw: dict[str, sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
-        return {
-            p.symbol: draw[name] * units.si_factor(units.parse_unit(p.unit))
-            for name, p in self.problem.parameters.items()
-        }
+        return si_values(self.problem, draw)
 
     def shown(self, name: str, value: str | None) -> str:
         """LaTeX of an answer: its number, or its expression when it has none (a general result)."""
@@ -389,8 +407,9 @@ class _ProblemVariants:
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
-        return {name: None if value is None else lms.tolerance(value, self.problem.asks[name].tolerance or self.tolerance)
-                for name, value in self.answers(draw).items()}
+        return {name: None if value is None else
+                lms.tolerance(value.text, self.problem.asks[name].tolerance or self.tolerance)
+                for name, value in self.certified(draw).items()}
 
     def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
         """Each answer's distractors (value, mistake) for multiple choice."""
@@ -413,6 +432,13 @@ class _ProblemVariants:
     def _own_draws(self) -> set[int]:
         return {id(d) for d in self.draws}
 
+    def questions(self, siunitx: bool) -> list[str]:
+        """Each variant's question, read once per form for the worksheet, its pandoc outputs and the
+        LMS exports (`siunitx`: the PDF's units)."""
+        if siunitx not in self._questions:
+            self._questions[siunitx] = [self.question(draw, siunitx) for draw in self.draws]
+        return self._questions[siunitx]
+
     def question(self, draw: dict[str, sp.Expr], siunitx: bool = False) -> str:
         """The problem's question with the draw's values (units in siunitx for a PDF)."""
         shown = {
@@ -425,11 +451,23 @@ class _ProblemVariants:
             raise self.problem.error("question", f"{type(error).__name__}: {error}") from None
 
 
+@contextmanager
+def _entry(problem_set: ProblemSet, where: str):
+    """An error about a problem of the set names the set file and the entry first."""
+    try:
+        yield
+    except InputError as error:
+        raise InputError(f"{problem_set.path}: {where}: {error}") from None
+
+
 def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Reporter) -> list[_ProblemVariants]:
-    prepared, ids = [], {}
+    """Each problem derived (its answers and checks), then its variants drawn: the derivations
+    are the set's fixed cost, the draws the first step of its cost per variant. The objects alive
+    once the problems are derived are frozen (gc.freeze): the caller unfreezes them."""
+    derived, ids = [], {}
     with progress.task("deriving", len(problem_set.problems)) as begin:
         for reference, where in zip(problem_set.problems, problem_set.fields):
-            try:  # an error names the set file and the entry, then the problem file and its field
+            with _entry(problem_set, where):  # then the problem file and its field
                 problem = load(reference)
                 if problem.id in ids:
                     raise InputError(f"{problem.path}: id: {problem.id} is also the id of {ids[problem.id]}; "
@@ -439,11 +477,15 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
                 solution = Solution(problem)
                 solution.expressions  # derive once, for every variant
                 solution.checks()
-                draws = [valid_draw(problem, solution, random.Random(f"{seed}/{problem.id}/{n}"))
-                         for n in range(1, variants + 1)]
-            except InputError as error:
-                raise InputError(f"{problem_set.path}: {where}: {error}") from None
-            prepared.append(_ProblemVariants(problem, solution, draws, problem_set.tolerance))
+            derived.append((problem, solution, where))
+    gc.freeze()  # every full pass of the collector rescanned them: a fifth of the time per variant
+    progress(f"drawing {variants} variant{'s' * (variants > 1)} of each problem")
+    prepared = []
+    for problem, solution, where in derived:
+        with _entry(problem_set, where):
+            draws = valid_draws(problem, solution, [random.Random(f"{seed}/{problem.id}/{n}")
+                                                    for n in range(1, variants + 1)])
+        prepared.append(_ProblemVariants(problem, solution, draws, problem_set.tolerance))
     return prepared
 
 
@@ -476,12 +518,13 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
                          typesetting.note(render.tex_escape(a.meaning)))}
         for n, a in problem.asks.items()
     ]
+    symbols = {n: render.latex_of(p.symbol) for n, p in problem.parameters.items()}
     variants = []
     for number, values in enumerate(item.draws, start=1):
         results = item.answers(values)
         variants.append({
             "number": number,
-            "given": [f"${render.latex_of(p.symbol)} = {quantity_latex(values[n], p.unit, p.sig_figs, siunitx)}$"
+            "given": [f"${symbols[n]} = {quantity_latex(values[n], p.unit, p.sig_figs, siunitx)}$"
                       for n, p in problem.parameters.items()],
             "results": [{"symbol": render.symbol_latex(n), "value": item.shown(n, results[n]),
                          "unit": unit_latex(a.unit, siunitx)} for n, a in problem.asks.items()],
@@ -570,7 +613,7 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
             values = item.draws[number - 1]
             answers, tolerances = item.answers(values), item.tolerances(values)
             wrong = item.wrong(values) if choice else {}
-            question = item.question(values)
+            question = item.questions(siunitx=False)[number - 1]  # MathJax reads no siunitx
             for name, ask in item.problem.asks.items():
                 if answers[name] is None:
                     continue
@@ -584,13 +627,19 @@ def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
 
 
 def _worksheet(header: dict, prepared: list[_ProblemVariants], variants: int, figures: list[str | None],
-               siunitx: bool) -> str:
+               tex: bool) -> str:
     """The worksheet's LaTeX: each variant's problems, each shown with its figure (`figures`, one
-    per problem, None for none: TikZ for the PDF, an \\includegraphics of its image for pandoc),
-    units in siunitx for the PDF."""
-    return render.render("worksheet.tex.j2", set=header, variants=[
-        {"number": n, "problems": [{"title": item.problem.title, "question": item.question(item.draws[n - 1], siunitx),
-                                    "figure": drawn} for item, drawn in zip(prepared, figures)]}
+    per problem, None for none: TikZ for the PDF, an \\includegraphics of its image for pandoc).
+    `tex` (for LaTeX to compile, not for pandoc, which reads neither): units in siunitx, and each
+    figure drawn once, into a box at the start
+    of the document that every variant shows (TikZ drew the 300 pictures of 10 problems x 30
+    variants in 5 s a pass, the 10 boxes in a tenth of that)."""
+    names = [rf"\derivefigure{''.join(chr(ord('A') + int(d)) for d in str(n))}" for n in range(len(figures))]
+    boxes = [{"name": name, "figure": drawn} for name, drawn in zip(names, figures) if drawn and tex]
+    shown = [rf"\usebox{{{name}}}" if drawn and tex else drawn for name, drawn in zip(names, figures)]
+    return render.render("worksheet.tex.j2", set=header, boxes=boxes, variants=[
+        {"number": n, "problems": [{"title": item.problem.title, "question": item.questions(tex)[n - 1],
+                                    "figure": figure} for item, figure in zip(prepared, shown)]}
         for n in range(1, variants + 1)])
 
 
@@ -629,83 +678,87 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
     if formats & figure_files.OUTPUTS:
         export.require("pdftocairo")  # the figures as images
     out = output_folder.claim(out_dir or Path("build") / problem_set.id)
-    prepared = _prepare(problem_set, variants, seed, progress)
-    header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
-    drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
-    # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
-    figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
-        if formats & figure_files.OUTPUTS else {}
-    rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
-    for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
-        print(f"derive: warning: {note}", file=sys.stderr, flush=True)
-    contexts = [_solutions_context(i, siunitx=True) for i in prepared]
-    items = []
-    if formats & {"moodle", "qti"}:
-        progress("the worked solutions as the LMS questions' feedback (pandoc)")
-        shown = [_solutions_context(i, siunitx=False) for i in prepared]  # MathJax reads no siunitx
-        items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, shown, header))
-    for target in sorted(formats & {"moodle", "qti"}):
-        lms.check(items, target)  # before anything is written
-    key_rows = [{**r, "symbol": render.symbol_latex(r["answer"]), "value": f"${r['latex']}$",
-                 "unit": units.siunitx_unit(r["unit"])} for r in rows]
+    try:  # _prepare froze the derivations (alive to the end of the build) out of the collector's passes
+        prepared = _prepare(problem_set, variants, seed, progress)
+        header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
+        drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
+        # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
+        figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
+            if formats & figure_files.OUTPUTS else {}
+        progress("each variant's answers, certified, and the keys")
+        rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
+        for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
+            print(f"derive: warning: {note}", file=sys.stderr, flush=True)
+        contexts = [_solutions_context(i, siunitx=True) for i in prepared]
+        items = []
+        if formats & {"moodle", "qti"}:
+            progress("the worked solutions as the LMS questions' feedback (pandoc)")
+            shown = [_solutions_context(i, siunitx=False) for i in prepared]  # MathJax reads no siunitx
+            items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, shown, header))
+        for target in sorted(formats & {"moodle", "qti"}):
+            lms.check(items, target)  # before anything is written
+        key_rows = [{**r, "symbol": render.symbol_latex(r["answer"]), "value": f"${r['latex']}$",
+                     "unit": units.siunitx_unit(r["unit"])} for r in rows]
 
-    with output_folder.staged(out) as staging:
-        compiling = "pdf" in formats or bool(figures)
-        steps = 1 + compiling + bool(figures) + len(formats & {"html", "md", "docx", "moodle", "qti"})
-        with progress.task("writing", steps) as begin:
-            begin("LaTeX")
-            texs = [
-                _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, siunitx=True)),
-                _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
-                _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
-            ]
-            products = list(texs)
-            compiled = texs if "pdf" in formats else []
-            if figures:  # a scratch document of its own, compiled with the others (no product)
-                compiled = compiled + [_write(staging, "figures.tex", figure_files.document(list(figures.values())))]
-            if compiling:  # each in a scratch folder of its own (export.pdf)
-                begin(f"{len(compiled)} PDF{'s' * (len(compiled) > 1)} (latexmk, {export.workers()} in parallel)")
-                pdfs = export.pdfs(compiled)
-            if "pdf" in formats:
-                products += pdfs[:len(texs)]
-                if variants > 1:  # each student's own worksheet: the whole set's pages, split
-                    products += _per_variant(texs[0], variants)
-            images = {}
-            if figures:
-                begin(f"{len(figures)} figures as SVG and PNG (pdftocairo)")
-                images = figure_files.images(list(figures), pdfs[-1])
-            if images and formats & {"html", "md"}:  # the SVG files they refer to
-                folder = staging / figure_files.FOLDER
-                folder.mkdir()
-                for image in images.values():
-                    (folder / image.file("svg")).write_bytes(image.svg)
-                products.append(folder)
-            for target in ("html", "md", "docx"):
-                if target in formats:
-                    begin(f"the worksheet as {target} (pandoc)")
-                    shown = _shown(prepared, images, target)
-                    products.append(export.convert(_worksheet(header, prepared, variants, shown, siunitx=False),
-                                                   staging / "worksheet",
-                                                   target, problem_set.title))
-            # The keys and the LMS files are written by Python after every TeX run, so no TeX run
-            # could have touched them.
-            buffer = io.StringIO()
-            writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
-                                                        "meaning"], lineterminator="\n", extrasaction="ignore")
-            writer.writeheader()
-            writer.writerows({k: safe_cell(v) for k, v in {**r, "unit": units.unicode_unit(r["unit"])}.items()}
-                             for r in rows)  # no formulas; the unit as text reads it (kg·m², none for a pure number)
-            products += [_write(staging, "key.csv", buffer.getvalue()),
-                         _write(staging, "key.json", json.dumps(key, indent=2, ensure_ascii=False) + "\n")]
-            if "moodle" in formats:
-                begin("Moodle XML")
-                products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id, images)))
-            if "qti" in formats:
-                begin("the Canvas QTI zip")
-                path = staging / "canvas-qti.zip"
-                path.write_bytes(lms.qti(items, problem_set.title, problem_set.id, seed, images))
-                products.append(path)
-        return output_folder.commit(staging, out, products)
+        with output_folder.staged(out) as staging:
+            compiling = "pdf" in formats or bool(figures)
+            steps = 1 + compiling + bool(figures) + len(formats & {"html", "md", "docx", "moodle", "qti"})
+            with progress.task("writing", steps) as begin:
+                begin("LaTeX")
+                texs = [
+                    _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, tex=True)),
+                    _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
+                    _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=key_rows)),
+                ]
+                products = list(texs)
+                compiled = texs if "pdf" in formats else []
+                if figures:  # a scratch document of its own, compiled with the others (no product)
+                    compiled = compiled + [_write(staging, "figures.tex", figure_files.document(list(figures.values())))]
+                if compiling:  # each in a scratch folder of its own (export.pdf)
+                    begin(f"{len(compiled)} PDF{'s' * (len(compiled) > 1)} (latexmk, {export.workers()} in parallel)")
+                    pdfs = export.pdfs(compiled)
+                if "pdf" in formats:
+                    products += pdfs[:len(texs)]
+                    if variants > 1:  # each student's own worksheet: the whole set's pages, split
+                        products += _per_variant(texs[0], variants)
+                images = {}
+                if figures:
+                    begin(f"{len(figures)} figures as SVG and PNG (pdftocairo)")
+                    images = figure_files.images(list(figures), pdfs[-1])
+                if images and formats & {"html", "md"}:  # the SVG files they refer to
+                    folder = staging / figure_files.FOLDER
+                    folder.mkdir()
+                    for image in images.values():
+                        (folder / image.file("svg")).write_bytes(image.svg)
+                    products.append(folder)
+                for target in ("html", "md", "docx"):
+                    if target in formats:
+                        begin(f"the worksheet as {target} (pandoc)")
+                        shown = _shown(prepared, images, target)
+                        products.append(export.convert(_worksheet(header, prepared, variants, shown, tex=False),
+                                                       staging / "worksheet",
+                                                       target, problem_set.title))
+                # The keys and the LMS files are written by Python after every TeX run, so no TeX run
+                # could have touched them.
+                buffer = io.StringIO()
+                writer = csv.DictWriter(buffer, fieldnames=["variant", "problem", "answer", "value", "tolerance", "unit",
+                                                            "meaning"], lineterminator="\n", extrasaction="ignore")
+                writer.writeheader()
+                writer.writerows({k: safe_cell(v) for k, v in {**r, "unit": units.unicode_unit(r["unit"])}.items()}
+                                 for r in rows)  # no formulas; the unit as text reads it (kg·m², none for a pure number)
+                products += [_write(staging, "key.csv", buffer.getvalue()),
+                             _write(staging, "key.json", json_text.dumps(key) + "\n")]
+                if "moodle" in formats:
+                    begin("Moodle XML")
+                    products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id, images)))
+                if "qti" in formats:
+                    begin("the Canvas QTI zip")
+                    path = staging / "canvas-qti.zip"
+                    path.write_bytes(lms.qti(items, problem_set.title, problem_set.id, seed, images))
+                    products.append(path)
+            return output_folder.commit(staging, out, products)
+    finally:
+        gc.unfreeze()
 
 
 def _per_variant(worksheet: Path, variants: int) -> list[Path]:

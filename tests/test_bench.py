@@ -27,6 +27,14 @@ def test_the_set_rate_is_printed():
     assert "marginal:" in lines[-1] and "naive evalf" in lines[-1]
 
 
+def test_the_sheet_section_says_where_the_time_goes():
+    lines = []
+    bench.sheet_build(lines.append, with_pdfs=False)
+    steps = [line.split()[0] for line in lines[1:]]
+    assert "30 variants" in lines[0] and steps[:3] == ["start-up", "derivations", "drawing"]
+    assert "each variant's answers, certified, and the keys" in "\n".join(lines)
+
+
 def test_sampler_redraws_until_the_top_can_precess():
     p = problem.load("top_precession_exact")
     solution = Solution(p)

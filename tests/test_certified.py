@@ -77,3 +77,19 @@ def test_a_piece_is_chosen_by_a_certified_comparison_else_by_sympy():
     edge = {mu: sp.Rational(1, 2), x: sp.atan(sp.Rational(1, 2))}
     value, = numeric.evaluator((slips,)).certified([edge], [15])[0]
     assert (value.text, value.method) == ("0", "exact")
+
+
+def test_a_conditions_sign_is_read_from_its_ball_else_from_its_digits():
+    """signs() (a draw's conditions): a ball that excludes zero gives its sign; a zero (exact, or
+    at the edge of a Piecewise that no ball decides) and an unmapped function go through
+    certified(); an answer with a symbol without a value has no sign."""
+    x, y, t = sp.symbols("x y t", positive=True)
+    slips = sp.Piecewise((0, y >= sp.tan(x)), (sp.sin(x) - y * sp.cos(x), True))
+    integral = sp.Integral(sp.exp(-x * t**2), (t, 0, 1)) - y
+    evaluator = numeric.evaluator((x - 1, x - y, slips, integral))
+    rows = [{x: sp.Integer(2), y: sp.Rational(1, 2)}, {x: sp.Integer(1), y: sp.Integer(1)},
+            {x: sp.atan(sp.Rational(1, 2)), y: sp.Rational(1, 2)}, {x: sp.Integer(1)}]
+    assert evaluator.signs(rows) == [[1, 1, 0, 1], [0, 0, 1, -1], [-1, -1, 0, 1], [0, None, None, None]]
+    for row, signs in zip(rows, evaluator.signs(rows)):
+        for value, sign in zip(evaluator.certified([row], [6] * 4)[0], signs):
+            assert sign == (None if value is None else (Decimal(value.text) > 0) - (Decimal(value.text) < 0))

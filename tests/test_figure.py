@@ -171,7 +171,8 @@ def test_the_documents_include_the_figures(tmp_path):
     worksheet = (folder / "worksheet.tex").read_text()
     solutions = (folder / "solutions.tex").read_text()
     count = len(worksheets.load_set("demo").problems)
-    assert worksheet.count("\\begin{tikzpicture}") == 2 * count
+    assert worksheet.count("\\begin{tikzpicture}") == count  # each drawn once, into a box
+    assert worksheet.count("\\usebox{") == 2 * count  # that each variant shows
     assert solutions.count("\\begin{tikzpicture}") == count
     assert figure.tikz(problem.load("string_wrapped_disk")) in worksheet
     assert "\\usetikzlibrary{" in worksheet

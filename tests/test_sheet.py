@@ -79,7 +79,7 @@ def test_each_problem_and_its_figure_are_one_box_that_no_page_break_splits(demo)
     assert len(items) == 3 * 3
     for item in items:
         box = item.split("\\end{minipage}")[0]
-        assert item.startswith("\\begin{minipage}[t]{\\linewidth}") and "\\begin{tikzpicture}" in box
+        assert item.startswith("\\begin{minipage}[t]{\\linewidth}") and "\\usebox{\\derivefigure" in box
 
 
 def _pages(path) -> int:
@@ -138,3 +138,14 @@ def test_the_same_build_twice_gives_the_same_pdfs(demo, tmp_path):
     assert len(pdfs) == 3 + 3  # the whole worksheet, the solutions, the key, and each variant's worksheet
     for name in pdfs:
         assert (again / name).read_bytes() == (demo / name).read_bytes(), name
+
+
+def test_a_build_leaves_nothing_frozen_out_of_the_collector(tmp_path):
+    """A build freezes its derivations (gc.freeze) for its per-variant work, and unfreezes them:
+    a notebook that builds again and again collects the cycles of the builds before."""
+    import gc
+
+    from derive import worksheets
+
+    worksheets.build("demo", variants=2, out_dir=str(tmp_path / "out"), formats=frozenset())
+    assert gc.get_freeze_count() == 0
