@@ -485,7 +485,16 @@ class Solution(StateAnswers, CrossChecks):
                 result.append((tidy(oscillation.stiffness - oscillation.damping**2 / 4), True,
                                "the damping is too strong at these parameters: it does not oscillate "
                                "(overdamped, c^2/4 >= k)"))
-        return result + self._declared(answers=True)
+        return result + self._magnitudes() + self._declared(answers=True)
+
+    def _magnitudes(self) -> list[tuple[sp.Expr, bool, str]]:
+        """A magnitude whose sign `_magnitude` read off samples of the ranges (its formula without
+        Abs) must not be negative at a variant's parameters: where it is, the sign changed between
+        the samples and the formula does not hold there."""
+        return [(self.expression(name), False, f"{name}, a magnitude, comes out negative here: its formula holds only "
+                                               "where the sign it had at the samples of the ranges holds")
+                for name, ask in self.problem.asks.items()
+                if ask.magnitude and not self.expression(name).has(sp.Abs, sp.Piecewise)]
 
     def _declared(self, answers: bool) -> list[tuple[sp.Expr, bool, str]]:
         """The problem file's own conditions that read answers (substituted), or those that do not."""

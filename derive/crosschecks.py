@@ -553,7 +553,7 @@ def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[
     points = []
     for i in range(count):
         point = {}
-        for s in expr.free_symbols:
+        for s in sorted(expr.free_symbols, key=str):  # in one order whatever the hash seed: the same points
             p = by_symbol.get(s)
             si = units.si_factor(units.parse_unit(p.unit)) if p is not None else 1
             if p is not None and p.range is not None:

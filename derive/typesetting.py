@@ -32,7 +32,9 @@ def width(expression) -> float:
     >>> width(sp.Symbol("x")), width(sp.Symbol("theta_disk")), width(sp.Symbol("a") / 2)
     (1.0, 3.8, 2.0)
     """
-    e = sp.sympify(expression)
+    e = expression  # a sympy expression (never text: nothing here parses)
+    if isinstance(e, int):
+        return float(len(str(e)))
     if isinstance(e, sp.Symbol):
         base, supers, subs = split_super_sub(e.name)
         letter = 1 if render.symbol_latex(base).startswith("\\") or len(base) == 1 else len(base)

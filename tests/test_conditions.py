@@ -1,7 +1,11 @@
 """Conditions declared in problem files: parsed safely, checked in SI units, enforced by the
 sampler (redraws), by `derive solve` and by `derive check --seeds`."""
+import os
 import random
 import re
+import subprocess
+import sys
+from decimal import Decimal
 
 import pytest
 import sympy as sp
@@ -94,3 +98,28 @@ def test_unsatisfiable_conditions_are_an_error_naming_the_problem(tmp_path):
     assert done.returncode == 1
     assert "tugged_spool.yaml: parameters: no draw in 200 meets the problem's conditions" in done.stdout
     assert "r > R does not hold" in done.stdout
+
+
+def test_a_magnitude_whose_sign_was_read_at_samples_is_checked_at_each_variant(monkeypatch):
+    """rolling_incline's f (magnitude: true) is 2 M g sin(theta)/7, its sign read at samples of the
+    ranges: every variant checks that it is not negative there, so a formula whose sign changed
+    between the samples is refused, never printed as a magnitude."""
+    solution = Solution(load("rolling_incline"))
+    (condition,) = [c for c, _, meaning in solution.conditions if meaning.startswith("f, a magnitude")]
+    assert sp.simplify(condition - solution.expression("f")) == 0
+    values = worksheets._ProblemVariants(solution.problem, solution, []).si_values(
+        {n: p.value if p.range is None else p.at(Decimal("0.5")) for n, p in solution.problem.parameters.items()})
+    assert solution.violated(values) is None
+    theta = solution.problem.parameters["theta"].symbol
+    assert solution.violated_at(condition, False, {**values, theta: -values[theta]})  # f < 0 there: refused
+
+
+def test_sample_points_are_the_same_whatever_the_hash_seed():
+    """The points a sign is read at (a magnitude, a root in range) do not depend on the order of a
+    set of symbols, which changes with PYTHONHASHSEED: a key built twice is the same."""
+    script = ("from derive.crosschecks import sample_points; from derive.problem import load; import sympy as sp; "
+              "p = load('tugged_spool'); e = sum(q.symbol for q in p.parameters.values()); "
+              "print(sorted((str(k), str(v)) for point in sample_points(p, e) for k, v in point.items()))")
+    runs = {subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                           env={**os.environ, "PYTHONHASHSEED": str(seed)}).stdout for seed in (0, 3, 7)}
+    assert len(runs) == 1 and runs != {""}
