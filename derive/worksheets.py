@@ -17,6 +17,7 @@ import csv
 import gc
 import io
 import random
+import re
 import sys
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -42,7 +43,9 @@ from derive.spreadsheet import safe_cell
 from derive.spelling import did_you_mean
 
 SET_REQUIRED = ("title", "problems")
-SET_OPTIONAL = ("course", "due", "variants", "seed", "outputs", "questions")
+SET_OPTIONAL = ("course", "due", "variants", "seed", "outputs", "questions", "answer_space")
+#: `answer_space:` of a set file: room left under each problem of the printed worksheet.
+ANSWER_SPACE = re.compile(r"(?:\d+(?:\.\d+)?)(?:cm|mm|in)")
 #: What `derive sheet --to` (or a set's `outputs:`) can add to the .tex files and the keys.
 OUTPUTS = ("pdf", "html", "md", "docx", "moodle", "qti", "distractors")
 DEFAULT_OUTPUTS = frozenset({"pdf", "html"})
@@ -64,6 +67,7 @@ class ProblemSet:
     outputs: frozenset[str] = DEFAULT_OUTPUTS
     questions: str = "numerical"
     tolerance: str | None = None  # the LMS tolerance of asks that give none (derive.defaults)
+    answer_space: str = ""  # a TeX length left under each problem of the worksheet ("6cm"), or none
 
 
 def outputs(text: str, where: str) -> frozenset[str]:
@@ -209,11 +213,15 @@ def load_set(reference: str, defaults: Defaults = Defaults()) -> ProblemSet:
     questions = raw.get("questions", "numerical")
     if questions not in QUESTIONS:
         raise InputError(f"{path}: questions: expected one of {', '.join(QUESTIONS)}")
+    space = raw.get("answer_space", "")
+    if not isinstance(space, str) or space and not ANSWER_SPACE.fullmatch(space):
+        raise InputError(f"{path}: answer_space: expected a length in cm, mm or in, such as 6cm")
     return ProblemSet(
         id=path.stem, title=_set_text(path, raw, "title"),
         course=_set_text(path, raw, "course") if "course" in raw else defaults.course,
         due=_set_text(path, raw, "due"), problems=tuple(problems), fields=tuple(fields), variants=variants, seed=seed,
         path=path, outputs=outputs(listed, f"{path}: outputs"), questions=questions, tolerance=defaults.tolerance,
+        answer_space=space,
     )
 
 
@@ -680,7 +688,8 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
     out = output_folder.claim(out_dir or Path("build") / problem_set.id)
     try:  # _prepare froze the derivations (alive to the end of the build) out of the collector's passes
         prepared = _prepare(problem_set, variants, seed, progress)
-        header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due}
+        header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due,
+                  "answer_space": problem_set.answer_space}
         drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
         # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
         figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \

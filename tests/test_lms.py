@@ -217,6 +217,7 @@ def test_set_files_pick_problems_by_topic_and_the_command_line_overrides_outputs
     ("problems: [{subject: orbits}]", "week.yaml: problems[0]: expected a library id"),
     ("problems: [rod_endpoint]\noutputs: [pdf, fax]", "week.yaml: outputs: unknown output 'fax'"),
     ("problems: [rod_endpoint]\nquestions: essay", "week.yaml: questions: expected one of numerical, choice"),
+    ("problems: [rod_endpoint]\nanswer_space: a lot", "week.yaml: answer_space: expected a length in cm, mm or in"),
     ("problems: [rod_endpoint]\ncourse: &a PHY\ndue: *a", "week.yaml: invalid set file: aliases (*name) are not allowed"),
 ])
 def test_bad_set_files_name_the_field(body, message, tmp_path):

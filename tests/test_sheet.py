@@ -149,3 +149,12 @@ def test_a_build_leaves_nothing_frozen_out_of_the_collector(tmp_path):
 
     worksheets.build("demo", variants=2, out_dir=str(tmp_path / "out"), formats=frozenset())
     assert gc.get_freeze_count() == 0
+
+
+def test_a_set_may_leave_room_to_answer_under_each_problem(tmp_path):
+    week = tmp_path / "week.yaml"
+    week.write_text("title: T\nproblems: [rod_endpoint, string_wrapped_disk]\nanswer_space: 6cm\n")
+    done = run_derive("sheet", str(week), "--to", "pdf", "--out", str(tmp_path / "out"))
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "out" / "worksheet.tex").read_text().count("\\vspace{6cm}") == 2
+    assert (tmp_path / "out" / "worksheet.pdf").read_bytes().startswith(b"%PDF")
