@@ -461,6 +461,9 @@ class Solution(StateAnswers, CrossChecks):
             else:
                 slow, fast = fixed_point.roots(*top, point.spin, point.tilt, route)
                 exact = fast if q.detail == "precession.fast" else slow
+                if exact is None:
+                    raise self.problem.error(f"scene.bodies.{q.target}.pivot_point.tilt", "a horizontal axis has one "
+                                             "steady precession, the slow one: the fast one runs off to infinity")
         except fixed_point.NotSymmetric as error:
             raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
         return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact

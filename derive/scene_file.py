@@ -548,6 +548,14 @@ def _internal_forces(reader: Reader, raw) -> int:
     return raw["bodies"]
 
 
+def _at_range_ends(reader: Reader, value: sp.Expr) -> list[sp.Expr]:
+    """The value at every corner of its parameters' ranges (a fixed parameter at its value)."""
+    corners = [{}]
+    for p in (p for p in reader.parameters.values() if p.symbol in value.free_symbols):
+        corners = [{**c, p.symbol: end} for c in corners for end in (p.range or (p.value, p.value))]
+    return [value.xreplace(c) for c in corners]
+
+
 def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
     """`bearings: {rate: omega, tilt: alpha, roll: psi, apart: d}`: the body turns at a constant rate
     about a fixed shaft through its center of mass (derive.mechanics.bearings), a uniform shape of
@@ -561,10 +569,7 @@ def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
         raise reader.fail(f"{field}.{other}", "a body in bearings is held by its shaft alone")
     raw = reader.mapping(spec["bearings"], field_here, required=("rate", "tilt"), optional=("roll", "apart"))
     tilt = reader.dimensioned(raw["tilt"], f"{field_here}.tilt", "rad", "a tilt")
-    corners = [{}]  # the tilt at the ends of its parameters' ranges
-    for p in (p for p in reader.parameters.values() if p.symbol in tilt.free_symbols):
-        corners = [{**c, p.symbol: end} for c in corners for end in (p.range or (p.value, p.value))]
-    if not all((v := tilt.xreplace(c)).is_number and 0 <= v <= sp.pi for c in corners):
+    if not all(v.is_number and 0 <= v <= sp.pi for v in _at_range_ends(reader, tilt)):
         raise reader.fail(f"{field_here}.tilt", "the tilt from the shaft is between 0 and pi (turn the body by "
                                                 "roll: for the rest)")
     return Bearings(reader.positive(raw["rate"], f"{field_here}.rate", "rad/s", "a rotation rate"), tilt,
@@ -599,7 +604,8 @@ def _pivot_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.
 
 def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoint:
     """`pivot_point: {at: tip, tilt: theta, spin: omega}`: the body turns about a fixed point under
-    gravity (derive.mechanics.fixed_point). `at`: a distance along the body's own axis (a rod's
+    gravity (derive.mechanics.fixed_point); a tilt or spin left out is open (the asks that need it
+    are refused). `at`: a distance along the body's own axis (a rod's
     length, a composite's x, the symmetry axis z of other shapes) from the center of mass, on its
     negative side; or `tip` (a cone's apex), `end` (a rod's), a composite's named point."""
     here = f"{field}.pivot_point"
@@ -609,7 +615,7 @@ def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoi
     other = next((k for k in ("joint", "on", "path", "velocity", "bearings") if k in spec), None)
     if other:
         raise reader.fail(f"{field}.{other}", "a body on a fixed point is held by that point alone")
-    raw = reader.mapping(spec["pivot_point"], here, required=("at", "spin"), optional=("tilt",))
+    raw = reader.mapping(spec["pivot_point"], here, required=("at",), optional=("tilt", "spin"))
     at = raw["at"]
     axis = own_axis(body.shape)
     named = {"cone": {"tip": (0, 0, 3 * body.sizes.get("height", 0) / 4)},
@@ -624,12 +630,9 @@ def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoi
         offset = tuple(-distance if a == axis else sp.Integer(0) for a in "xyz")
     tilt = (reader.dimensioned(raw["tilt"], f"{here}.tilt", "rad", "a tilt") if "tilt" in raw
             else reader.unspecified(f"tilt_{body.name}", "rad"))
-    corners = [{}]  # the tilt at the ends of its parameters' ranges
-    for p in (p for p in reader.parameters.values() if p.symbol in tilt.free_symbols):
-        corners = [{**c, p.symbol: end} for c in corners for end in (p.range or (p.value, p.value))]
-    if "tilt" in raw and not all((v := tilt.xreplace(c)).is_number and 0 < v < sp.pi / 2 for c in corners):
-        raise reader.fail(f"{here}.tilt", "the axis leans from the vertical by more than 0 and less than pi/2 (a top "
-                                          "below its point, or upright, is not modelled by a tilt)")
+    if "tilt" in raw and not all(v.is_number and 0 < v <= sp.pi / 2 for v in _at_range_ends(reader, tilt)):
+        raise reader.fail(f"{here}.tilt", "the axis leans from the vertical by more than 0 and at most pi/2 (a "
+                                          "body hanging below its point is not modelled; an upright one has no tilt)")
     about = spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and body.shape != "custom":
         raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body's transverse moment")
@@ -638,7 +641,9 @@ def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoi
         transverse, axial = _pivot_inertia(reader, spec, field)
         distance_squared = sum(c**2 for c in offset)
         moments = (transverse - body.mass * distance_squared if about == "pivot" else transverse, axial)
-    return PivotPoint(offset, tilt, reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin"), moments)
+    spin = (reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin") if "spin" in raw
+            else reader.unspecified(f"spin_{body.name}", "rad/s"))  # a sleeping top's least spin needs none
+    return PivotPoint(offset, tilt, spin, moments)
 
 
 def _orbit(reader: Reader, raw) -> Orbit:

@@ -137,7 +137,8 @@ def _steady(angles, spin, tilt, rate):
 
 @lru_cache(maxsize=None)
 def precession_condition(tensor, mass, g, distance, spin, tilt, route: str) -> sp.Expr:
-    """The condition on a steady precession rate, Omega^2 + p Omega + q = 0, from theta's equation."""
+    """The condition on a steady precession rate, Omega^2 + p Omega + q = 0, from theta's equation
+    (at a tilt with cos(tilt) != 0; `roots` takes a horizontal axis as the limit)."""
     moments(tensor, mass, distance)
     theta_equation = equations(tensor, mass, g, distance, route)[1]
     condition = sp.expand(sp.simplify(me.msubs(theta_equation, _steady(_angles(), spin, tilt, OMEGA)) / sp.sin(tilt)))
@@ -145,15 +146,17 @@ def precession_condition(tensor, mass, g, distance, spin, tilt, route: str) -> s
 
 
 def roots(tensor, mass, g, distance, spin, tilt, route: str = "lagrange") -> tuple[sp.Expr, sp.Expr]:
-    """(slow, fast) steady precession rates; the slow one rationalized (no cancellation)."""
+    """(slow, fast) steady precession rates; the slow one rationalized (no cancellation), which
+    stays finite for a horizontal axis (m g l / (I3 omega3) there, where the fast one is None)."""
     # cos(theta) > 0 for a top tilted less than 90 degrees: a positive stand-in lets roots simplify.
-    cosine = sp.Symbol("cos_tilt", positive=True)
-    condition = precession_condition(tensor, mass, g, distance, spin, tilt, route).subs(sp.cos(tilt), cosine)
+    cosine, leaning = sp.Symbol("cos_tilt", positive=True), sp.Symbol("theta_tilt", positive=True)
+    condition = precession_condition(tensor, mass, g, distance, spin, leaning, route).subs(sp.cos(leaning), cosine)
     p, q = condition.coeff(OMEGA, 1), condition.coeff(OMEGA, 0)  # p = -I3 w / (I1 cos), q = m g l / (I1 cos)
     root = sp.sqrt(tidy(p**2 - 4 * q))
     slow = tidy(2 * q / (-p + root))  # = (-p - root)/2, without the cancellation
     fast = tidy((-p + root) / 2)
-    return slow.subs(cosine, sp.cos(tilt)), fast.subs(cosine, sp.cos(tilt))
+    slow, fast = (r.subs(cosine, sp.cos(leaning)).subs(leaning, tilt) for r in (slow, fast))
+    return slow, (None if sp.cos(tilt) == 0 else fast)
 
 
 def fast_top(exact: sp.Expr, spin, tilt) -> sp.Expr:
