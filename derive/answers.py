@@ -18,8 +18,8 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (bearings, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum,
-                              rolling, top)
+from derive.mechanics import (bearings, fixed_point, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths,
+                              quantum, rolling)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion
@@ -436,15 +436,36 @@ class Solution(StateAnswers, CrossChecks):
         held = self.scene.bearings[q.target]
         return bearings.quantity(self.bearing_motion(q.target, route), q.detail, held.tilt, held.apart)
 
-    def _top_arguments(self) -> tuple:
-        t = self.scene.top
-        return (t.mass, self.scene.gravity.g, t.pivot_distance, t.transverse_inertia, t.spin_inertia, t.spin, t.tilt)
+    def standing_top(self, name: str) -> tuple:
+        """(tensor about the center of mass in the top frame, mass, g, l) of a body on a fixed point
+        (derive.mechanics.fixed_point)."""
+        body, point = self.scene.bodies[name], self.scene.pivot_points[name]
+        if point.inertia is not None:  # a custom body: its symmetry axis is its own z
+            tensor = sp.diag(point.inertia[0], point.inertia[0], point.inertia[1])
+        else:
+            parts = body.composite.parts if body.composite is not None else None
+            tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
+        standing, distance = fixed_point.standing(tensor, point.offset)
+        return standing, body.mass, self.scene.gravity.g, distance
 
-    def _top(self, detail: str, route: str = "lagrange") -> sp.Expr:
-        if detail == "precession.fast_top":
-            return top.fast_top_limit(*self._top_arguments())
-        slow, fast = top.roots(*self._top_arguments(), route)
-        return slow if detail == "precession.slow" else fast
+    def _pivot_point(self, q: Quantity, route: str = "lagrange") -> sp.Expr:
+        """A steady motion of a body on a fixed point by one route; refused for a body that is not
+        a symmetric top about the point."""
+        point, top = self.scene.pivot_points[q.target], self.standing_top(q.target)
+        try:
+            if q.detail == "sleeping.min_spin":
+                return fixed_point.min_spin(*top, route)
+            if q.detail.startswith("nutation."):
+                exact = fixed_point.nutation_frequency(*top, point.spin, point.tilt, route)
+            else:
+                slow, fast = fixed_point.roots(*top, point.spin, point.tilt, route)
+                exact = fast if q.detail == "precession.fast" else slow
+                if exact is None:
+                    raise self.problem.error(f"scene.bodies.{q.target}.pivot_point.tilt", "a horizontal axis has one "
+                                             "steady precession, the slow one: the fast one runs off to infinity")
+        except fixed_point.NotSymmetric as error:
+            raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
+        return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
 
     @cached_property
     def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
@@ -461,12 +482,16 @@ class Solution(StateAnswers, CrossChecks):
         if orbit is not None and orbit.eccentricity is not None:
             result.append((1 - orbit.eccentricity, True, "e >= 1 is not an ellipse but a parabola or a hyperbola"))
             result.append((orbit.eccentricity, False, "an eccentricity cannot be negative"))
-        if any(a.quantity.kind == "top" and a.quantity.detail != "precession.fast_top" for a in self.problem.asks.values()):
-            t = self.scene.top
-            result.append((tidy(t.spin_inertia**2 * t.spin**2
-                                - 4 * t.transverse_inertia * t.mass * self.scene.gravity.g * t.pivot_distance
-                                * sp.cos(t.tilt)), False,
-                           "no steady precession: the spin is too slow (I3^2 w^2 < 4 I1 m g R cos(theta))"))
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "pivot_point"
+                     and a.quantity.detail not in ("sleeping.min_spin", "precession.fast_top", "nutation.fast_top")}:
+            point, (tensor, mass, g, distance) = self.scene.pivot_points[name], self.standing_top(name)
+            try:
+                I1, I3 = fixed_point.moments(tensor, mass, distance)
+            except fixed_point.NotSymmetric as error:
+                raise self.problem.error(f"scene.bodies.{name}", f"a steady motion is asked: {error}") from None
+            result.append((tidy(I3**2 * point.spin**2 - 4 * I1 * mass * g * distance * sp.cos(point.tilt)), False,
+                           f"no steady precession of the {name}: the spin is too slow "
+                           "(I3^2 w^2 < 4 I1 m g l cos(theta))"))
         for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
             if isinstance(surface, Plane) and surface.angle.free_symbols:
                 result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "
@@ -624,8 +649,8 @@ class Solution(StateAnswers, CrossChecks):
             result = tidy(offset[0 if ask.quantity.detail == "x" else 1])
         elif ask.quantity.kind == "system":
             result = self._system(ask.quantity.detail, "sum")
-        elif ask.quantity.kind == "top":
-            result = self._top(ask.quantity.detail)
+        elif ask.quantity.kind == "pivot_point":
+            result = self._pivot_point(ask.quantity)
         elif ask.quantity.kind in SECOND_ROUTE_KINDS:
             result = self._second_routes(ask.quantity)[0]
         elif ask.quantity.kind == "bearings":

@@ -15,13 +15,14 @@ from __future__ import annotations
 
 import functools
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
 from derive import inertia, limits, numeric, units
 from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
-from derive.mechanics import bearings, gyroscope, impacts, integrated_motion, lagrange, many_bodies, orbits, paths, states, top
+from derive.mechanics import (bearings, fixed_point, gyroscope, impacts, integrated_motion, lagrange, many_bodies,
+                              orbits, paths, states)
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import row_reduced, tidy
 from derive.problem import Ask, Problem
@@ -80,8 +81,8 @@ class CrossChecks:
             result.append(self._tensor_check())
         if "path" in kinds:
             result.append(self._path_check())
-        if "top" in kinds:
-            result.append(self._top_check())
+        if "pivot_point" in kinds:
+            result.append(self._pivot_point_check())
         if "wheel" in kinds:
             result.append(self._wheel_check())
         if "bearings" in kinds:
@@ -467,17 +468,31 @@ class CrossChecks:
                                 "the inertia tensor."))
         return result
 
-    def _top_check(self) -> Check:
-        """Lagrange's and Newton–Euler's (dH/dt = torque) precession conditions agree; the fast-top
-        rate's relative error against the slow root is reported."""
-        conditions = [top.precession_condition(*self._top_arguments(), route) for route in ROUTES]
-        if agree(*conditions) is None:
-            raise CheckFailure(f"{self.problem.id}: the precession conditions differ: {conditions}")
-        slow = self._top("precession.slow")
-        error = tidy(self._top("precession.fast_top") / slow - 1)
-        return Check("lagrange_vs_newton_euler", True, "symbolic",
-                     f"precession conditions agree; fast-top rate / slow root - 1 = {sp.sstr(error)}",
-                     "Lagrange's method and the torque equation give the same steady precession.")
+    def _pivot_point_check(self) -> Check:
+        """For every body on a fixed point asked, the equations of motion by Lagrange, Newton–Euler
+        (Euler's equations about the point) and Kane agree term by term, and each asked quantity by
+        Lagrange and Newton–Euler; the fast-top rate's relative error against the slow root is reported."""
+        methods, notes = {"symbolic"}, []
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "pivot_point"}:
+            top = self.standing_top(name)
+            found = {route: fixed_point.equations(*top, route) for route in fixed_point.ROUTES}
+            for route in fixed_point.ROUTES[1:]:
+                if any(tidy(a - b) != 0 for a, b in zip(found["lagrange"], found[route])):
+                    raise CheckFailure(f"{self.problem.id}: the {name}'s equations of motion are "
+                                       f"{list(found['lagrange'])} by Lagrange, {list(found[route])} by {route}")
+        for ask_name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "pivot_point":
+                methods.add(agree(*(self._pivot_point(ask.quantity, r) for r in ("lagrange", "newton_euler"))))
+                if None in methods:
+                    raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {ask_name}")
+                if ask.quantity.detail == "precession.fast_top":
+                    slow = self._pivot_point(replace(ask.quantity, detail="precession.slow"))
+                    error = tidy(self.expressions[ask_name] / slow - 1)
+                    notes.append(f"fast-top rate / slow root - 1 = {sp.sstr(error)}")
+        return Check("lagrange_vs_newton_euler", True, " or ".join(m for m in METHODS if m in methods),
+                     "; ".join(["equations of motion agree (Lagrange, Newton–Euler, Kane)", *notes]),
+                     "Lagrange's method, Euler's equations about the fixed point and Kane's method give the same "
+                     "equations of motion, and the same steady motions.")
 
     def _path_check(self) -> Check:
         """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""

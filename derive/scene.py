@@ -131,22 +131,6 @@ class Motion:
 
 
 @dataclass(frozen=True)
-class Top:
-    """A symmetric top spinning on a fixed tip: mass, tip-to-center distance, moment about the
-    symmetry axis, moment about a transverse axis through the tip, tilt from the vertical, spin."""
-
-    mass: sp.Expr
-    pivot_distance: sp.Expr
-    spin_inertia: sp.Expr
-    transverse_inertia: sp.Expr
-    tilt: sp.Expr
-    spin: sp.Expr
-
-
-TOP_QUANTITIES = ("precession.slow", "precession.fast", "precession.fast_top")
-
-
-@dataclass(frozen=True)
 class SpinningWheel:
     """A wheel spinning at `spin` (moment `inertia` about its axle) under a torque `torque`,
     perpendicular to the spin axis and fixed in direction, for a time `duration`."""
@@ -179,6 +163,24 @@ class Bearings:
     tilt: sp.Expr
     roll: sp.Expr = sp.Integer(0)
     apart: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class PivotPoint:
+    """A body on a fixed point under gravity (a top's tip, a gyroscope's pivot): the point's
+    `offset` (x, y, z) from the center of mass in the body's own frame; the axis from it through
+    the center tilted by `tilt` from the vertical; `spin`, omega's component along that axis.
+    `inertia`: a custom body's (transverse, axial) moments about its center of mass, else None."""
+
+    offset: tuple[sp.Expr, sp.Expr, sp.Expr]
+    tilt: sp.Expr
+    spin: sp.Expr
+    inertia: tuple[sp.Expr, sp.Expr] | None = None
+
+
+#: What a body on a fixed point can be asked (derive.mechanics.fixed_point).
+PIVOT_POINT_QUANTITIES = ("precession.slow", "precession.fast", "precession.fast_top", "sleeping.min_spin",
+                          "nutation.frequency", "nutation.fast_top")
 
 
 #: Scene-level systems and what each can be asked: (scene attribute, quantities).
@@ -260,11 +262,11 @@ class Scene:
     loads: tuple[Part, ...] = ()
     orbit: Orbit | None = None
     motions: dict[str, Motion] = field(default_factory=dict)
-    top: Top | None = None
     wheel: SpinningWheel | None = None
     wave: StandingWave | None = None
     internal_forces: int | None = None
     bearings: dict[str, Bearings] = field(default_factory=dict)
+    pivot_points: dict[str, PivotPoint] = field(default_factory=dict)
     states: dict[str, State] = field(default_factory=dict)
 
     @property
@@ -329,7 +331,8 @@ class Quantity:
     "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
     "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
     prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
-    "system" (inertia about the center of mass, reduced_mass of two bodies), "top" (TOP_QUANTITIES),
+    "system" (inertia about the center of mass, reduced_mass of two bodies), "pivot_point" (a body on a
+    fixed point; PIVOT_POINT_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
@@ -345,7 +348,7 @@ class Quantity:
 
 
 #: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
-RESERVED_NAMES = ("top", "spinning_wheel", "system", "orbit", "oscillation", "small_oscillation", "ground",
+RESERVED_NAMES = ("spinning_wheel", "system", "orbit", "oscillation", "small_oscillation", "ground",
                   "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass")
 
 #: What a body on a surface can be asked, besides what every body can.
@@ -386,10 +389,11 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if scene.wheel is None or rest not in WHEEL_QUANTITIES:
             raise ValueError(f"a scene's spinning_wheel has {', '.join(WHEEL_QUANTITIES)}")
         return Quantity("wheel", None, rest)
-    if head == "top":
-        if scene.top is None or rest not in TOP_QUANTITIES:
-            raise ValueError(f"a scene's top has {', '.join(TOP_QUANTITIES)}")
-        return Quantity("top", None, rest)
+    if head in scene.pivot_points and rest not in ("mass", "inertia"):
+        if rest not in PIVOT_POINT_QUANTITIES:
+            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, PIVOT_POINT_QUANTITIES))
+        return Quantity("pivot_point", head, rest)
     if head == "system":
         if rest not in ("inertia", "reduced_mass"):
             raise ValueError("the system has inertia (about its center of mass) and reduced_mass")

@@ -1,5 +1,5 @@
 """The scene section of a problem file: bodies, joints, contacts, surfaces, loads and the
-scene-level systems (orbit, top, spinning wheel, standing wave, internal forces); its states
+scene-level systems (orbit, spinning wheel, standing wave, internal forces); its states
 are read by derive.state_file.
 
 Every field goes through the `derive.reader.Reader`, so errors name the file and the field.
@@ -16,6 +16,7 @@ import sympy as sp
 
 from derive import composite, inertia, state_file, units
 from derive.errors import EngineLimit, InputError
+from derive.mechanics.bearings import own_axis
 from derive.parts import clutch, contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
@@ -25,8 +26,8 @@ from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Bearings, Body, Motion, Orbit, Scene,
-                          SpinningWheel, StandingWave, Top)
+from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Bearings, Body, Motion, Orbit, PivotPoint,
+                          Scene, SpinningWheel, StandingWave)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
@@ -41,7 +42,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
                           optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
-                                    "path", "bearings", "angle", "parts", *MOTION_KEYS, *all_sizes))
+                                    "path", "bearings", "pivot_point", "angle", "parts", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
@@ -69,7 +70,9 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         elif size in spec:
             raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
     given = None
-    if shape == "custom":
+    if shape == "custom" and "pivot_point" in spec:
+        given = _pivot_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the point
+    elif shape == "custom":
         if "inertia" not in spec:
             raise reader.fail(f"{field}.inertia", "a custom body needs its moment of inertia about its center of mass")
         given = reader.dimensioned(spec["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia")
@@ -92,7 +95,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         raise reader.fail(f"{field}.angle", "a point mass has no orientation")
     body = Body(name, shape, mass, sizes, given, path, density, at, angle)
     joint = _joint(reader, body, spec.get("joint"), f"{field}.joint")
-    about = spec.get("inertia_about", "center")
+    about = "center" if "pivot_point" in spec else spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and (given is None or joint is None or joint.name != "pivot"):
         raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body on a pivot joint")
     if about == "pivot":
@@ -444,7 +447,10 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.events", "write events as states: `struck: {from: flying, event: {stick: bullet, "
                                           "to: rod}}` (stick, lock, bounce, move or turn; see the README's states)")
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
-    top = _top(reader, raw["top"]) if "top" in raw else None
+    if "top" in raw:
+        raise reader.fail("scene.top", "a top is a body on a fixed point: bodies: {top: {shape: custom, mass: m, "
+                                       "inertia: {axial: I3, transverse: I1}, pivot_point: {at: l, tilt: theta, "
+                                       "spin: omega}}} (or any shape of derive inertia), with - gravity: g")
     wheel = _wheel(reader, raw["spinning_wheel"]) if "spinning_wheel" in raw else None
     wave = _wave(reader, raw["standing_wave"]) if "standing_wave" in raw else None
     internal = _internal_forces(reader, raw["internal_forces"]) if "internal_forces" in raw else None
@@ -452,8 +458,8 @@ def read_scene(reader: Reader, raw) -> Scene:
     ground = {name: _vector(reader, v, f"scene.points.{name}", "m", "a position")
               for name, v in reader.named(raw.get("points"), "points").items()}
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
-    if not bodies_raw and all(s is None for s in (orbit, top, wheel, wave, internal)):
-        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a top, a spinning_wheel)")
+    if not bodies_raw and all(s is None for s in (orbit, wheel, wave, internal)):
+        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a spinning_wheel)")
     bodies, pins = {}, []
     for name, spec in bodies_raw.items():
         reader.name(name, f"scene.bodies.{name}", "a body name")
@@ -511,13 +517,16 @@ def read_scene(reader: Reader, raw) -> Scene:
                           f"slipping; give other rates in a state: states: {{moving: {{rates: "
                           f"{{{moving}.velocity.x: v}}}}}}")
     gravity_part = found[0] if found else None
-    if top is not None and gravity_part is None:
-        raise reader.fail("scene.loads", "a top precesses under gravity: add - gravity: g")
+    pivoted = {n: _pivot_point(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
+               if "pivot_point" in spec}
+    if pivoted and (gravity_part is None or len(bodies) > 1 or constraints or loads):
+        raise reader.fail("scene.loads" if gravity_part is None else "scene", "a body on a fixed point turns under "
+                          "gravity alone: one body, - gravity: g, no other loads, joints or cords")
     held = {n: _bearings(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
             if "bearings" in spec}
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
-    scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, top, wheel, wave,
-                  internal, held, states)
+    scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wheel, wave,
+                  internal, held, pivoted, states)
     _check_geometry(reader, places, scene)
     return scene
 
@@ -539,6 +548,14 @@ def _internal_forces(reader: Reader, raw) -> int:
     return raw["bodies"]
 
 
+def _at_range_ends(reader: Reader, value: sp.Expr) -> list[sp.Expr]:
+    """The value at every corner of its parameters' ranges (a fixed parameter at its value)."""
+    corners = [{}]
+    for p in (p for p in reader.parameters.values() if p.symbol in value.free_symbols):
+        corners = [{**c, p.symbol: end} for c in corners for end in (p.range or (p.value, p.value))]
+    return [value.xreplace(c) for c in corners]
+
+
 def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
     """`bearings: {rate: omega, tilt: alpha, roll: psi, apart: d}`: the body turns at a constant rate
     about a fixed shaft through its center of mass (derive.mechanics.bearings), a uniform shape of
@@ -552,10 +569,7 @@ def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
         raise reader.fail(f"{field}.{other}", "a body in bearings is held by its shaft alone")
     raw = reader.mapping(spec["bearings"], field_here, required=("rate", "tilt"), optional=("roll", "apart"))
     tilt = reader.dimensioned(raw["tilt"], f"{field_here}.tilt", "rad", "a tilt")
-    corners = [{}]  # the tilt at the ends of its parameters' ranges
-    for p in (p for p in reader.parameters.values() if p.symbol in tilt.free_symbols):
-        corners = [{**c, p.symbol: end} for c in corners for end in (p.range or (p.value, p.value))]
-    if not all((v := tilt.xreplace(c)).is_number and 0 <= v <= sp.pi for c in corners):
+    if not all(v.is_number and 0 <= v <= sp.pi for v in _at_range_ends(reader, tilt)):
         raise reader.fail(f"{field_here}.tilt", "the tilt from the shaft is between 0 and pi (turn the body by "
                                                 "roll: for the rest)")
     return Bearings(reader.positive(raw["rate"], f"{field_here}.rate", "rad/s", "a rotation rate"), tilt,
@@ -573,19 +587,63 @@ def _wheel(reader: Reader, raw) -> SpinningWheel:
                          reader.positive(raw["duration"], f"{field}.duration", "s", "a duration"))
 
 
-def _top(reader: Reader, raw) -> Top:
-    field = "scene.top"
-    raw = reader.mapping(raw, field, required=("mass", "pivot_distance", "spin_inertia", "spin"),
-                         optional=("transverse_inertia", "tilt"))
-    transverse = (reader.positive(raw["transverse_inertia"], f"{field}.transverse_inertia", "kg*m^2", "a moment of inertia")
-                  if "transverse_inertia" in raw else reader.unspecified("I_transverse", "kg*m^2"))
-    tilt = (reader.dimensioned(raw["tilt"], f"{field}.tilt", "rad", "a tilt") if "tilt" in raw
-            else reader.unspecified("tilt", "rad"))
-    return Top(reader.positive(raw["mass"], f"{field}.mass", "kg", "a mass"),
-               reader.positive(raw["pivot_distance"], f"{field}.pivot_distance", "m", "a distance"),
-               reader.positive(raw["spin_inertia"], f"{field}.spin_inertia", "kg*m^2", "a moment of inertia"),
-               transverse, tilt,
-               reader.positive(raw["spin"], f"{field}.spin", "rad/s", "a spin"))
+def _pivot_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.Expr]:
+    """A custom body's `inertia: {axial: I3, transverse: I1}` on a fixed point, (transverse, axial)
+    as given (`inertia_about: pivot`: the transverse one about the point; the axial one is the same
+    there). Without `transverse` it is left open (a fast top's rate does not need it)."""
+    if "inertia" not in spec:
+        raise reader.fail(f"{field}.inertia", "a custom body on a fixed point needs inertia: {axial: I3, "
+                                              "transverse: I1}")
+    raw = reader.mapping(spec["inertia"], f"{field}.inertia", required=("axial",), optional=("transverse",))
+    axial = reader.positive(raw["axial"], f"{field}.inertia.axial", "kg*m^2", "a moment of inertia")
+    if "transverse" not in raw:
+        return reader.unspecified(f"I_transverse_{field.rpartition('.')[2]}", "kg*m^2"), axial
+    transverse = reader.positive(raw["transverse"], f"{field}.inertia.transverse", "kg*m^2", "a moment of inertia")
+    return transverse, axial
+
+
+def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoint:
+    """`pivot_point: {at: tip, tilt: theta, spin: omega}`: the body turns about a fixed point under
+    gravity (derive.mechanics.fixed_point); a tilt or spin left out is open (the asks that need it
+    are refused). `at`: a distance along the body's own axis (a rod's
+    length, a composite's x, the symmetry axis z of other shapes) from the center of mass, on its
+    negative side; or `tip` (a cone's apex), `end` (a rod's), a composite's named point."""
+    here = f"{field}.pivot_point"
+    if body.shape == "point" or body.density is not None:
+        raise reader.fail(here, "a body on a fixed point is a uniform shape of derive inertia, a composite of them "
+                                "or a custom body with inertia: {axial, transverse} (not a point, no density)")
+    other = next((k for k in ("joint", "on", "path", "velocity", "bearings") if k in spec), None)
+    if other:
+        raise reader.fail(f"{field}.{other}", "a body on a fixed point is held by that point alone")
+    raw = reader.mapping(spec["pivot_point"], here, required=("at",), optional=("tilt", "spin"))
+    at = raw["at"]
+    axis = own_axis(body.shape)
+    named = {"cone": {"tip": (0, 0, 3 * body.sizes.get("height", 0) / 4)},
+             "rod": {"end": (-body.sizes.get("length", 0) / 2, 0, 0)}}.get(body.shape, {})
+    if body.composite is not None:
+        named = {n: (*p, 0) for n, p in body.composite.points().items() if n != "center"}
+    if isinstance(at, str) and at in named:
+        offset = tuple(sp.sympify(c) for c in named[at])
+    else:
+        distance = reader.positive(at, f"{here}.at", "m", f"a distance from the center of mass along the {axis} "
+                                   f"axis{' or a point: ' + ', '.join(named) if named else ''}")
+        offset = tuple(-distance if a == axis else sp.Integer(0) for a in "xyz")
+    tilt = (reader.dimensioned(raw["tilt"], f"{here}.tilt", "rad", "a tilt") if "tilt" in raw
+            else reader.unspecified(f"tilt_{body.name}", "rad"))
+    if "tilt" in raw and not all(v.is_number and 0 < v <= sp.pi / 2 for v in _at_range_ends(reader, tilt)):
+        raise reader.fail(f"{here}.tilt", "the axis leans from the vertical by more than 0 and at most pi/2 (a "
+                                          "body hanging below its point is not modelled; an upright one has no tilt)")
+    about = spec.get("inertia_about", "center")
+    if about not in ("center", "pivot") or about == "pivot" and body.shape != "custom":
+        raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body's transverse moment")
+    moments = None
+    if body.shape == "custom":
+        transverse, axial = _pivot_inertia(reader, spec, field)
+        distance_squared = sum(c**2 for c in offset)
+        moments = (transverse - body.mass * distance_squared if about == "pivot" else transverse, axial)
+    spin = (reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin") if "spin" in raw
+            else reader.unspecified(f"spin_{body.name}", "rad/s"))  # a sleeping top's least spin needs none
+    return PivotPoint(offset, tilt, spin, moments)
 
 
 def _orbit(reader: Reader, raw) -> Orbit:

@@ -635,6 +635,26 @@ EXPECTED.update({
         "tau": lambda s: s.M * s.L**2 / 12 * s.omega**2 * _sin(s.alpha) * _cos(s.alpha),
         "K": lambda s: s.M * s.L**2 / 24 * s.omega**2 * _sin(s.alpha) ** 2,
     },
+    # A body on a fixed point (derive.mechanics.fixed_point). Halliday ch. 11 / Serway & Jewett ch. 11:
+    # a disk on a light horizontal axle of length d precesses at Omega = M g d/(I omega), I = M R^2/2.
+    "gyroscope_wheel": {
+        "Omega": lambda s: s.M * s.g * s.d / (s.M * s.R**2 / 2 * s.omega),
+    },
+    # Taylor ch. 10: steady precession where I1 Omega^2 cos(theta) - I3 omega3 Omega + M g R = 0;
+    # Kleppner & Kolenkow ch. 8: a fast top nutates at I3 omega3/I1.
+    "top_two_precessions": {
+        "slow": lambda s: (s.I3 * s.omega3 - sp.sqrt(s.I3**2 * s.omega3**2 - 4 * s.I1 * s.M * s.g * s.R * _cos(s.theta)))
+        / (2 * s.I1 * _cos(s.theta)),
+        "fast": lambda s: (s.I3 * s.omega3 + sp.sqrt(s.I3**2 * s.omega3**2 - 4 * s.I1 * s.M * s.g * s.R * _cos(s.theta)))
+        / (2 * s.I1 * _cos(s.theta)),
+        "nutation": lambda s: s.I3 * s.omega3 / s.I1,
+    },
+    # Taylor ch. 10 (Example 10.3, the cone about its apex; the sleeping top): stable for
+    # omega^2 > 4 lambda1 M g l/lambda3^2, lambda1 = 3/20 M (R^2 + 4 h^2), lambda3 = 3/10 M R^2, l = 3h/4.
+    "sleeping_cone": {
+        "omega_min": lambda s: 2 * sp.sqrt(sp.Rational(3, 20) * s.M * (s.R**2 + 4 * s.h**2) * s.M * s.g * 3 * s.h / 4)
+        / (sp.Rational(3, 10) * s.M * s.R**2),
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))

@@ -1,15 +1,17 @@
-"""Scene-level systems: a top, a spinning wheel, a standing wave, internal forces, a turning body."""
+"""Scene-level systems: a top (a body on a fixed point), a spinning wheel, a standing wave, internal forces, a turning body."""
 from __future__ import annotations
 
 import math
 
+import sympy as sp
+
 from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit
-from derive.scene import Body
 
 
-def _top(fig: _Figure) -> None:
-    """A top on its tip: the tilted axis, the body around the center of mass, mg, spin and precession."""
-    top = fig.scene.top
+def _pivot_point(fig: _Figure) -> None:
+    """A body on a fixed point, drawn as a top on its tip: the tilted axis, the body around the
+    center of mass, mg, spin and precession."""
+    name, top = next(iter(fig.scene.pivot_points.items()))
     tilt = _clamp(fig.num(top.tilt, 0.5), 0.4, 1.0)
     axis = (math.sin(tilt), math.cos(tilt))
     across = (axis[1], -axis[0])
@@ -23,16 +25,17 @@ def _top(fig: _Figure) -> None:
     fig.add(f"\\draw[line width=1.5pt] {_pt(cm)} -- {_pt(_add(tip, axis, 3.3))};")
     fig.line(tip, cm, "thin, dashed")
     fig.add(f"\\fill {_pt(cm)} circle (0.05); \\fill {_pt(tip)} circle (0.05);")
-    fig.label(_add(_add(tip, axis, 1.0), across, -0.08), (-across[0], -across[1]), fig.m(top.pivot_distance))
+    distance = sp.sqrt(sum(c**2 for c in top.offset))
+    fig.label(_add(_add(tip, axis, 1.0), across, -0.08), (-across[0], -across[1]), fig.m(distance))
     fig.arc(tip, 2.5, axis_degrees, 90, fig.tex(top.tilt), label_radius=2.55)
-    fig.gravity_arrow(cm, Body("top", "custom", top.mass, {}), 1.1, toward=(1, 0))
+    fig.gravity_arrow(cm, fig.scene.bodies[name], 1.1, toward=(1, 0))
     # the spin about the axis near the top of the stem, and the precession about the vertical
     spin_at = _add(tip, axis, 3.0)
     fig.add(f"\\draw[->, thick, rotate around={{{_f(axis_degrees)}:{_pt(spin_at)}}}] "
             f"{_pt(_add(spin_at, (0, -0.3)))} arc[start angle=-90, end angle=200, x radius=0.1, y radius=0.3];")
     fig.label(_add(spin_at, across, 0.35), across, fig.m(top.spin))
     fig.add("\\draw[->, thick] (0.45,3.2) arc[start angle=0, end angle=300, x radius=0.45, y radius=0.13];")
-    precession = fig.ask_symbol("top") or r"\Omega"
+    precession = fig.ask_symbol("pivot_point", name) or r"\Omega"
     fig.label((-0.5, 3.2), (-1, 0), f"${precession}$")
 
 
