@@ -324,13 +324,36 @@ def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict
 LONGEST_EQUATION = 700  # characters of LaTeX; longer would overflow the page
 
 
-def typeset(equation: sp.Eq, beside: str = "") -> str:
+def typeset(equation: sp.Eq, beside: str = "", tag: str = "") -> str:
     """An equation for an align environment, a long sum broken across lines (typesetting.rows),
-    `beside` a note at its first row; one too long to typeset at all becomes a short note."""
+    `beside` a note at its first row, `tag` its number at its last (`tag`); one too long to
+    typeset at all becomes a short note."""
     if len(render.latex_of(equation)) > LONGEST_EQUATION:
         return (render.latex_of(equation.lhs) + r" &= \text{(too long to typeset here: see derive solve "
-                r"--format latex)}" + beside)
-    return typesetting.rows(equation.lhs, equation.rhs, beside=beside)
+                r"--format latex)}" + beside + tag)
+    return typesetting.rows(equation.lhs, equation.rhs, beside=beside) + tag
+
+
+def tag(number: int, tex: bool) -> str:
+    """An equation's number: amsmath's \\tag where LaTeX compiles it, else "(n)" after it, which
+    pandoc (which drops a \\tag from MathML) and MathJax both show."""
+    return rf" \tag{{{number}}}" if tex else rf" \qquad \text{{({number})}}"
+
+
+def equation_numbers(numbers: list[int]) -> str:
+    """Equation numbers as a worked solution refers to them, runs joined.
+
+    >>> equation_numbers([4, 5, 6, 7, 9, 10]), equation_numbers([3])
+    ('(4)–(7) and (9)–(10)', '(3)')
+    """
+    runs: list[list[int]] = []
+    for n in numbers:
+        if runs and n == runs[-1][-1] + 1:
+            runs[-1].append(n)
+        else:
+            runs.append([n])
+    shown = [f"({r[0]})" if len(r) == 1 else f"({r[0]})–({r[-1]})" for r in runs]
+    return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
 
 
 def number_latex(text: str) -> str:
@@ -510,16 +533,16 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
     """A problem's worked solution for the templates: its routes' steps, its answers, each variant's
     numbers (units in siunitx where LaTeX compiles it: `unit_latex`), its checks."""
     problem, solution = item.problem, item.solution
-    routes = [
-        {
-            "title": route_title(route),
-            "steps": [
-                {"text": s.text, "equations": [typeset(e) for e in s.equations]}
-                for s in steps
-            ],
-        }
-        for route, steps in solution.steps().items()
-    ]
+    numbered = iter(range(1, 10**6))  # the problem's equations, numbered through its routes
+    routes = []
+    for route, steps in solution.steps().items():
+        shown, solved = [], []  # the numbers of the equations this route solves
+        for s in steps:
+            numbers = [next(numbered) for _ in s.equations]
+            solved += numbers if s.role == "equations" else []
+            text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
+            shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)]})
+        routes.append({"title": route_title(route), "steps": shown})
     answers = [
         {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
          "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),

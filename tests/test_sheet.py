@@ -158,3 +158,17 @@ def test_a_set_may_leave_room_to_answer_under_each_problem(tmp_path):
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "out" / "worksheet.tex").read_text().count("\\vspace{6cm}") == 2
     assert (tmp_path / "out" / "worksheet.pdf").read_bytes().startswith(b"%PDF")
+
+
+def test_worked_solutions_number_their_equations_and_say_which_the_solving_uses(demo):
+    """Issue 15: equations numbered through a problem, and each route's solving step names the
+    equations it solves ("from (5)–(10)"), each of them one the page numbers."""
+    import re
+    tex = (demo / "solutions.tex").read_text()
+    tags = [int(n) for n in re.findall(r"\\tag\{(\d+)\}", tex)]
+    assert tags[:3] == [1, 2, 3] and 1 in tags
+    referred = re.findall(r"Solving in the reference configuration, at rest, from ([()0-9–, and]+):", tex)
+    assert len(referred) >= 2  # each route of the string wrapped around a disk, at least
+    for reference in referred:
+        for first, last in re.findall(r"\((\d+)\)(?:–\((\d+)\))?", reference):
+            assert int(first) in tags and (not last or int(last) in tags)

@@ -28,10 +28,14 @@ LAGRANGIAN = sp.Symbol(r"\mathcal{L}")
 
 @dataclass(frozen=True)
 class Step:
-    """One step of a derivation as the lecture notes would write it: a sentence and equations."""
+    """One step of a derivation as the lecture notes would write it: a sentence and equations.
+    `role`: "equations" for the equations a route solves (its equations of motion and its
+    constraints), "solve" for the solving of them, which a worked solution refers back to by
+    their numbers ("from (4) to (11)"); "" for any other step."""
 
     text: str
     equations: tuple[sp.Eq, ...] = ()
+    role: str = ""
 
 
 class Solved(Mapping):
@@ -218,7 +222,7 @@ class Derivation:
 
     def solving_step(self, unknowns, state: dict[sp.Symbol, sp.Expr], where: str) -> Step:
         solved = self.at(state)
-        return Step(f"Solving {where}", tuple(sp.Eq(u, solved[u]) for u in unknowns))
+        return Step(f"Solving {where}", tuple(sp.Eq(u, solved[u]) for u in unknowns), role="solve")
 
 
 def worth_showing(equations) -> tuple[sp.Eq, ...]:

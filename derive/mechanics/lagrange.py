@@ -77,8 +77,10 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     derivation = Derivation("lagrange", equations, unknowns, steps, rates, coords, [gap for gap, _ in pairs])
     steps.append(Step("The Euler–Lagrange equation of each coordinate: the rate of change of its generalized momentum, "
                       "less the Lagrangian's derivative in it, equals the applied forces and the constraint forces along "
-                      "it (in the reference configuration, at rest)", tuple(at_state(e, rest) for e in equations)))
+                      "it (in the reference configuration, at rest)", tuple(at_state(e, rest) for e in equations),
+                      role="equations"))
     if shown:
         steps.append(Step("Constraints at acceleration level",
-                          worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]])))
+                          worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
+                          role="equations"))
     return derivation

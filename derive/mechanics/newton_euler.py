@@ -50,13 +50,15 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         equations += balances
         labels = ", ".join(sorted({f.label for f in on_body})) or "none"
         steps.append(Step(f"Forces and torques on the {body.name} ({labels})",
-                          tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances)))
+                          tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances), role="equations"))
     conditions = [v for c in scene.constraints for v in c.conditions(coords)]
     unknowns = coords.accelerations + [f for c in scene.constraints for f in c.unknowns().values()]
     derivation = Derivation("newton_euler", equations, unknowns, steps, conditions, coords)
-    shown = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in conditions]
-                          + [at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]])
-    if conditions:
-        steps.append(Step("Kinematic constraints (velocities, then accelerations, in the reference configuration"
-                          + FIXED_LEFT_OUT + ")", shown))
+    velocities = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in conditions])
+    if velocities:
+        steps += [Step("Kinematic constraints on the velocities (in the reference configuration" + FIXED_LEFT_OUT + ")",
+                       velocities),
+                  Step("and, their rates, on the accelerations",
+                       worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
+                       role="equations")]
     return derivation
