@@ -28,7 +28,7 @@ spin omega3 = psi' + phi' cos(theta), the component of omega along the axis):
 >>> m, g, l, I1, I3, w = sp.symbols("m g l I_1 I_3 omega", positive=True)
 >>> tensor = sp.diag(I1 - m * l**2, I1 - m * l**2, I3)  # about the center of mass, in B
 >>> min_spin(tensor, m, g, l, "newton_euler")
-2*sqrt(I_1*g*l*m)/I_3
+2*sqrt(I_1)*sqrt(g)*sqrt(l)*sqrt(m)/I_3
 """
 from __future__ import annotations
 
