@@ -338,8 +338,10 @@ class CrossChecks:
                                        + (f" where the {regime.name}" if regime.name else ""))
             kinds.add(ledger["power_nonconservative"] == 0)
         kind = "conserved" if kinds == {True} else "changes by the work of the applied forces"
+        sliding = " and of kinetic friction where it slides" if any("slip" in r.name for r in self.regimes) else ""
         reading = ("Energy is conserved: the constraint forces do no work." if kinds == {True} else
-                   "The energy changes only by the work of the applied forces: the constraint forces do no work.")
+                   f"The energy changes only by the work of the applied forces{sliding}: the constraint forces do "
+                   "no work.")
         return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work", reading)
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, three regimes at most

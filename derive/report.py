@@ -154,6 +154,11 @@ def as_json(result: dict) -> str:
     return json.dumps(result, indent=2, ensure_ascii=False)
 
 
+def _where(condition) -> tuple:
+    """A regime's condition as the text prints it: "where ..." or, for the last, "otherwise"."""
+    return ("otherwise",) if condition == sp.true else ("where ", condition)
+
+
 def as_text(result: dict, solution: Solution) -> str:
     """The report for a terminal: `result` (the JSON contract) with the expressions of `solution`
     drawn by sympy's unicode pretty-printer and units as text reads them."""
@@ -176,13 +181,13 @@ def as_text(result: dict, solution: Solution) -> str:
     if result["regimes"].get("cases"):
         lines += ["", "Friction regimes (each where those above do not hold):"]
         for regime, where in zip(solution.regimes, solution.regime_conditions()):
-            lines += indented(pretty(f"{regime.name}: where ", where))
+            lines += indented(pretty(f"{regime.name}: ", *_where(where)))
         if result["regimes"]["applies"]:
             lines.append(f"  at these parameters the body {result['regimes']['applies']}")
     for state, cases in solution.impact_regimes().items():
         lines += ["", f"In the bounce {state} the contact (each where those above do not hold):"]
         for regime in cases:
-            lines += indented(pretty(f"{regime.name}: where ", regime.where))
+            lines += indented(pretty(f"{regime.name}: ", *_where(regime.where)))
         if result["regimes"][state]["applies"]:
             lines.append(f"  at these parameters it {result['regimes'][state]['applies']}")
     if result["energy"]:

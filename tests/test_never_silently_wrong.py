@@ -83,6 +83,7 @@ def test_a_sphere_rolls_or_slips_as_its_friction_allows(tmp_path):
     assert result.returncode == 0, result.stderr
     assert "rolls: where μₛ ≥" in result.stdout and "2⋅│tan(θ)│" in result.stdout  # mu_s >= 2 |tan(theta)|/7
     assert "at these parameters the body slips" in result.stdout
+    assert ": where True" not in result.stdout and "otherwise" in result.stdout  # the last regime, the rest
 
 
 def test_the_simulation_follows_the_regime_that_applies(tmp_path):
