@@ -29,6 +29,7 @@ from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.oscillation import (NotAPendulum, Oscillation, OscillationError, OscillationLimit,
                                          exact_period, small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
+from derive.errors import InputError
 from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
 from derive.parts.surfaces import Plane
@@ -516,10 +517,18 @@ class Solution(StateAnswers, CrossChecks):
         """A magnitude whose sign `_magnitude` read off samples of the ranges (its formula without
         Abs) must not be negative at a variant's parameters: where it is, the sign changed between
         the samples and the formula does not hold there."""
-        return [(self.expression(name), False, f"{name}, a magnitude, comes out negative here: its formula holds only "
-                                               "where the sign it had at the samples of the ranges holds")
-                for name, ask in self.problem.asks.items()
-                if ask.magnitude and not self.expression(name).has(sp.Abs, sp.Piecewise)]
+        result = []
+        for name, ask in self.problem.asks.items():
+            if not ask.magnitude:
+                continue
+            try:
+                magnitude = self.expression(name)
+            except (InputError, KeyError, ValueError):  # no answer here (a mistaken set-up's friction with
+                continue  # none to give it, derive.distractors): asking it says why; nothing to check
+            if not magnitude.has(sp.Abs, sp.Piecewise):
+                result.append((magnitude, False, f"{name}, a magnitude, comes out negative here: its formula holds "
+                                                 "only where the sign it had at the samples of the ranges holds"))
+        return result
 
     def _declared(self, answers: bool) -> list[tuple[sp.Expr, bool, str]]:
         """The problem file's own conditions that read answers (substituted), or those that do not."""

@@ -194,9 +194,10 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
             if not isinstance(spec["range"], list) or len(spec["range"]) != 2:
                 raise reader.fail(f"{field}.range", "expected [low, high]")
             bounds = tuple(reader.expression(v, f"{field}.range", {}) for v in spec["range"])
-            if not bounds[0] < bounds[1]:
-                raise reader.fail(f"{field}.range", f"low ({bounds[0]}) must be below high ({bounds[1]})")
-            if value is not None and not bounds[0] <= value <= bounds[1]:
+            if (bounds[1] - bounds[0]).is_positive is not True:  # sympy decides it, or the range is refused
+                raise reader.fail(f"{field}.range", f"low ({bounds[0]}) must be below high ({bounds[1]}), by a "
+                                                    "difference that can be told from zero")
+            if value is not None and not ((value - bounds[0]).is_nonnegative and (bounds[1] - value).is_nonnegative):
                 raise reader.fail(f"{field}.value", f"{value} lies outside the range")
         sig_figs = spec.get("sig_figs", DEFAULT_SIG_FIGS)
         if not isinstance(sig_figs, int) or isinstance(sig_figs, bool) or not 1 <= sig_figs <= 15:

@@ -163,3 +163,12 @@ def test_an_error_in_a_problem_names_the_set_file_the_entry_and_the_problem_file
     stderr = one_line_exit_2(run_derive("sheet", str(path), "--out", str(tmp_path / "out"), "--to", "",
                                         "--progress", "none"))
     assert stderr.startswith(f"derive: error: {path}: problems[1]: {broken}: ask.I.of: "), stderr
+
+
+def test_a_range_whose_ends_cannot_be_told_apart_is_refused(tmp_path):
+    """1/tanh(1000) lies 2e-869 above 1: sympy cannot order the two, and the range is refused
+    naming it (found by the fuzz test: it raised a TypeError)."""
+    path = tmp_path / "narrow.yaml"
+    path.write_text(disk_problem("[1/tanh(1000), 1]"))
+    result = run_derive("solve", str(path))
+    assert result.returncode == 2 and "narrow.yaml: parameters.M.range: low" in result.stderr, result.stderr

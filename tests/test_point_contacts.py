@@ -115,7 +115,7 @@ def test_a_wall_that_would_have_to_pull_is_refused(tmp_path):
     ({"grips: true": "grips: yes please"}, "scene.joints.foot.grips", "expected true or false"),
     ({"grips: true": "grips: true, friction: {kinetic: 0.2}"}, "scene.joints.foot.grips", "give friction.static"),
     ({"grips: true": "grips: true, friction: {static: 0.5}"}, "scene.joints.foot.grips", "leave grips out"),
-    ({"head: {touches": "top: {touches", "of: head.normal": "of: top.normal"}, "scene", "reserved"),
+    ({"head: {touches": "orbit: {touches", "of: head.normal": "of: orbit.normal"}, "scene", "reserved"),
 ])
 def test_a_touching_point_that_does_not_fit_is_refused_naming_the_field(tmp_path, change, field, reason):
     result = run_derive("solve", str(ladder(tmp_path, **change)))
