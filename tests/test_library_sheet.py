@@ -71,3 +71,16 @@ def test_no_line_of_a_handout_runs_off_the_page(problem_id, tmp_path):
     done = run_derive("handout", problem_id, "--out", str(tmp_path / "h"), "--progress", "none")
     assert done.returncode == 0, done.stderr
     assert _overfull(tmp_path / "h" / f"{problem_id}.tex", tmp_path) == []
+
+
+def test_a_handouts_pages_are_kept_as_images_for_a_reviewer(tmp_path):
+    """Issue 15: the pages of one handout, rendered to PNG (pdftoppm) in the test's folder (its path
+    is printed) so that a reviewer can look at them; each page has ink on it."""
+    done = run_derive("handout", "string_wrapped_disk", "--out", str(tmp_path / "h"), "--progress", "none")
+    assert done.returncode == 0, done.stderr
+    subprocess.run(["pdftoppm", "-png", "-r", "60", str(tmp_path / "h" / "string_wrapped_disk.pdf"),
+                    str(tmp_path / "page")], check=True, timeout=120)
+    pages = sorted(tmp_path.glob("page-*.png"))
+    print(f"the handout's pages as images: {', '.join(map(str, pages))}")
+    assert len(pages) >= 2
+    assert all(page.stat().st_size > 5000 for page in pages)  # a blank page compresses to far less
