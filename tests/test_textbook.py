@@ -357,6 +357,13 @@ EXPECTED["stepped_pulley_deep"] = EXPECTED["stepped_pulley"]
 EXPECTED.update({
     # Serway & Jewett Ex. 10.11: omega = sqrt(3g/L) at the lowest position; the hinge then holds
     # M g + M omega^2 L/2 = 5 M g/2 (Newton's second law toward the pin); no torque: alpha = 0.
+    # The same rod released at a symbolic angle theta0 below the horizontal (a new-user trial: the
+    # placement's angle made the pin's gap slow to solve for an angle, 106 s; 2 s once the roots
+    # are found lazily): alpha = -3 g cos(theta0)/(2 L), omega = -sqrt(3 g (1 - sin(theta0))/L).
+    "rod_released_below_swings": {
+        "alpha": lambda s: -3 * s.g * _cos(s.theta0) / (2 * s.L),
+        "omega": lambda s: -sp.sqrt(3 * s.g * (1 - _sin(s.theta0)) / s.L),
+    },
     "rod_swings_down": {
         "omega": lambda s: sp.sqrt(3 * s.g / s.L),
         "v": lambda s: sp.sqrt(3 * s.g / s.L) * s.L / 2,

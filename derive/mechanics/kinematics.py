@@ -15,6 +15,8 @@ thetadot_wheel*cos(theta_wheel)
 """
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass
 
 import sympy as sp
@@ -149,13 +151,21 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
             # through the reference configuration, where every coordinate is zero, or else the one
             # that moves the way `heading` says; `keep` last of all.
             candidates = [k for k in order if k.q not in solved and gap.has(k.q)]
-            found = {k: _turned_back(roots(gap, k.q), reference, sample) if k.kind == "theta" else roots(gap, k.q)
-                     for k in candidates}
-            through = {k: [r for r in roots if _through(r.xreplace(reference) - reference[k.q], sample)]
-                       for k, roots in found.items()}
-            picks = [lambda k: found[k][0] if len(found[k]) == 1 else None,
-                     lambda k: through[k][0] if len(through[k]) == 1 else None,
-                     lambda k: _heading(through[k], k, heading, sample, reference)]
+
+            # Each candidate's roots only when a pick asks for them, in the picks' order: sympy's
+            # solve for an angle in a trigonometric gap with a symbolic placement takes minutes,
+            # and a translation that solves the gap alone (a pin's x) makes it unneeded.
+            @functools.cache
+            def found(k: Coordinate) -> list[sp.Expr]:
+                return _turned_back(roots(gap, k.q), reference, sample) if k.kind == "theta" else roots(gap, k.q)
+
+            @functools.cache
+            def through(k: Coordinate) -> list[sp.Expr]:
+                return [r for r in found(k) if _through(r.xreplace(reference) - reference[k.q], sample)]
+
+            picks = [lambda k: found(k)[0] if len(found(k)) == 1 else None,
+                     lambda k: through(k)[0] if len(through(k)) == 1 else None,
+                     lambda k: _heading(through(k), k, heading, sample, reference)]
             chosen = next(((k, root) for pick in picks for k in candidates if k != keep
                            if (root := pick(k)) is not None), None)
             chosen = chosen or next(((k, root) for pick in picks for k in candidates if k == keep
