@@ -26,6 +26,7 @@ from pathlib import Path
 import sympy as sp
 
 from derive import MAX_DIGITS, MAX_VARIANTS, defaults, render, report, units
+from derive import problem_sets
 from derive import worksheets as sheets
 from derive.answers import Solution
 from derive.errors import InputError
@@ -189,7 +190,7 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
             raise InputError("title: a set file gives its own title")
         problem_set = str(ids_or_set)
     elif isinstance(ids_or_set, (list, tuple)):
-        problem_set = sheets.set_of([str(p) if isinstance(p, os.PathLike) else p for p in ids_or_set], title, course)
+        problem_set = problem_sets.set_of([str(p) if isinstance(p, os.PathLike) else p for p in ids_or_set], title, course)
     else:
         raise InputError(f"ids_or_set: expected a set file or id, or a list of problem ids or files, got "
                          f"{type(ids_or_set).__name__}")
@@ -197,10 +198,10 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
         if progress not in MODES:
             raise InputError(f"progress: expected one of {', '.join(MODES)}, got {progress!r}")
         progress = Reporter(progress)
-    if questions not in (None, *sheets.QUESTIONS):
-        raise InputError(f"questions: expected one of {', '.join(sheets.QUESTIONS)}, got {questions!r}")
+    if questions not in (None, *problem_sets.QUESTIONS):
+        raise InputError(f"questions: expected one of {', '.join(problem_sets.QUESTIONS)}, got {questions!r}")
     return sheets.build(
         problem_set, out_dir=out, questions=questions, progress=progress, defaults=course,
         variants=None if variants is None else _whole("variants", variants, 1, MAX_VARIANTS),
         seed=None if seed is None else _whole("seed", seed),
-        formats=None if to is None else sheets.outputs(to if isinstance(to, str) else ",".join(to), "--to"))
+        formats=None if to is None else problem_sets.outputs(to if isinstance(to, str) else ",".join(to), "--to"))

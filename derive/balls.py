@@ -185,7 +185,7 @@ class Program:
                      **{name: call for call, name in self._calls.items()}}
         # safe: the source holds only generated names (x0, t0, K[0], _f0) and integers printed by
         # int(), never a symbol's name or any text of a problem file
-        exec(compile(source, "<derive.balls>", "exec"), namespace)  # noqa: S102
+        exec(compile(source, "<derive.balls>", "exec"), namespace)  # noqa: S102  # safe: generated source only (above)
         self.source = source
         self._function = namespace["program"]
         self._folded: dict[int, tuple[arb, ...]] = {}

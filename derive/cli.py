@@ -435,10 +435,10 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
       course: PHY141            due: 2026-12-01        variants: 30      seed: 141
       outputs: [pdf, moodle]    questions: choice      (options given here override it)
     """
-    from derive import defaults
+    from derive import defaults, problem_sets
     from derive import worksheets as sheets
 
-    wanted = None if formats is None else sheets.outputs(formats, "--to")
+    wanted = None if formats is None else problem_sets.outputs(formats, "--to")
     built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
                          questions=questions, defaults=defaults.load(), progress=progress)
     for path in built:

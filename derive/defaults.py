@@ -81,7 +81,7 @@ def _read(path: Path, table, prefix: str) -> Defaults:
     if outputs is not None:
         if not isinstance(outputs, list) or not all(isinstance(o, str) for o in outputs):
             raise fail("outputs", 'expected a list such as ["pdf", "moodle"]')
-        from derive.worksheets import outputs as checked  # light files, heavy checks: only when given
+        from derive.problem_sets import outputs as checked  # light files, heavy checks: only when given
 
         outputs = checked(",".join(outputs), f"{path}: {prefix}outputs")
     digits = table.get("digits")

@@ -618,12 +618,13 @@ def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoi
     raw = reader.mapping(spec["pivot_point"], here, required=("at",), optional=("tilt", "spin"))
     at = raw["at"]
     axis = own_axis(body.shape)
-    named = {"cone": {"tip": (0, 0, 3 * body.sizes.get("height", 0) / 4)},
-             "rod": {"end": (-body.sizes.get("length", 0) / 2, 0, 0)}}.get(body.shape, {})
+    zero = sp.Integer(0)  # the named points' offsets are the engine's own expressions (`at` only picks one)
+    named = {"cone": {"tip": (zero, zero, 3 * body.sizes.get("height", zero) / 4)},
+             "rod": {"end": (-body.sizes.get("length", zero) / 2, zero, zero)}}.get(body.shape, {})
     if body.composite is not None:
-        named = {n: (*p, 0) for n, p in body.composite.points().items() if n != "center"}
+        named = {n: (*p, zero) for n, p in body.composite.points().items() if n != "center"}
     if isinstance(at, str) and at in named:
-        offset = tuple(sp.sympify(c) for c in named[at])
+        offset = named[at]
     else:
         distance = reader.positive(at, f"{here}.at", "m", f"a distance from the center of mass along the {axis} "
                                    f"axis{' or a point: ' + ', '.join(named) if named else ''}")

@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 from conftest import ROOT, copy_library, run_derive
-from derive import export, figure, library, problem, render, worksheets
+from derive import export, figure, library, problem, problem_sets, render, worksheets
 from derive.figure.canvas import _f, _pt
 
 COORDINATE = re.compile(r"\((-?\d+(?:\.\d+)?),(-?\d+(?:\.\d+)?)\)")
@@ -170,7 +170,7 @@ def test_the_documents_include_the_figures(tmp_path):
     folder = built[0].parent
     worksheet = (folder / "worksheet.tex").read_text()
     solutions = (folder / "solutions.tex").read_text()
-    count = len(worksheets.load_set("demo").problems)
+    count = len(problem_sets.load_set("demo").problems)
     assert worksheet.count("\\begin{tikzpicture}") == count  # each drawn once, into a box
     assert worksheet.count("\\usebox{") == 2 * count  # that each variant shows
     assert solutions.count("\\begin{tikzpicture}") == count

@@ -14,7 +14,7 @@ import yaml
 from jinja2.exceptions import SecurityError, TemplateNotFound, UndefinedError
 
 from conftest import ROOT, document, kept_scratch, run_derive
-from derive import export, latex_safety, library, limits, problem, render
+from derive import export, latex_safety, library, limits, problem, problem_sets, render
 from derive.answers import Solution
 from derive.errors import InputError, ProblemError
 
@@ -601,9 +601,8 @@ def test_set_ids_from_odd_file_names_are_refused(tmp_path, stem):
 
 @pytest.mark.parametrize("reference", ["../../etc/passwd", "/etc/passwd", "..", "../x.yaml"])
 def test_set_references_that_are_no_set_files(reference):
-    from derive import worksheets
     with pytest.raises(InputError):
-        worksheets.load_set(reference)
+        problem_sets.load_set(reference)
 
 
 def _build(out):

@@ -12,7 +12,7 @@ import pytest
 from pathlib import Path
 
 from conftest import copy_library, image_kind, moodle_cloze, qti_package, run_derive
-from derive import lms, render, units, worksheets
+from derive import lms, problem_sets, render, units
 from derive.errors import InputError, ProblemError
 from derive.problem import load, parse
 
@@ -198,11 +198,11 @@ def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistak
 def test_set_files_pick_problems_by_topic_and_the_command_line_overrides_outputs(tmp_path):
     week = _set(tmp_path, "title: T\nproblems: [{topic: rolling, count: 2}, rod_endpoint]\noutputs: [pdf]\n"
                           "questions: numerical\n")
-    chosen = worksheets.load_set(str(week))
+    chosen = problem_sets.load_set(str(week))
     assert len(chosen.problems) == 3 and chosen.problems[-1] == "rod_endpoint"
     assert all(load(p).topic == "rolling" for p in chosen.problems[:2])
     assert chosen.outputs == {"pdf"}
-    everything = worksheets.load_set(str(_set(tmp_path, "title: T\nproblems: [{topic: orbits}]\n")))
+    everything = problem_sets.load_set(str(_set(tmp_path, "title: T\nproblems: [{topic: orbits}]\n")))
     assert sorted(load(p).id for p in everything.problems) == ["effective_potential", "kepler_orbit"]
     assert everything.outputs == {"pdf", "html"} and everything.questions == "numerical"
     done = run_derive("sheet", str(_set(tmp_path, "title: T\nproblems: [rod_endpoint]\noutputs: [pdf]\n")),

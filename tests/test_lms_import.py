@@ -12,9 +12,9 @@ import pytest
 from lxml import etree
 
 from conftest import image_kind, moodle_cloze, qti_package, run_derive
-from derive import lms, worksheets
+from derive import lms, problem_sets
 
-PROBLEMS = worksheets.load_set("demo").problems  # rod_endpoint (asks 1), string_wrapped_disk (3), compound_pendulum (2)
+PROBLEMS = problem_sets.load_set("demo").problems  # rod_endpoint (asks 1), string_wrapped_disk (3), compound_pendulum (2)
 
 
 def _build(folder, seed: int):
