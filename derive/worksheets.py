@@ -29,6 +29,7 @@ from derive import (distractors, export, figure, figure_files, json_text, limiti
 from derive.answers import Solution
 from derive.defaults import Defaults
 from derive.errors import InputError
+from derive.figure import free_body
 from derive.problem import DEFAULT_SIG_FIGS, Problem, load
 from derive.problem_sets import ProblemSet, load_sheet
 from derive.progress import Reporter
@@ -297,13 +298,16 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
     problem, solution = item.problem, item.solution
     numbered = iter(range(1, 10**6))  # the problem's equations, numbered through its routes
     routes = []
-    for route, steps in solution.steps().items():
+    all_steps = solution.steps()
+    diagrams = _free_body_diagrams(solution) if "newton_euler" in all_steps else {}
+    for route, steps in all_steps.items():
         shown, solved = [], []  # the numbers of the equations this route solves
         for s in steps:
             numbers = [next(numbered) for _ in s.equations]
             solved += numbers if s.role == "equations" else []
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
-            shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)]})
+            shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
+                          "diagram": diagrams.get(id(s), "")})
         routes.append({"title": route_title(route), "steps": shown})
     answers = [
         {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
@@ -326,6 +330,14 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
     return {"title": problem.title, "source": problem.source, "routes": routes, "answers": answers,
             "variants": variants, "checks": checks, "corrections": list(problem.corrections),
             "figure": figure.tikz(problem)}
+
+
+def _free_body_diagrams(solution: Solution) -> dict[int, str]:
+    """The free-body diagram of each body (derive.figure.free_body) by the id of the step of
+    Newton–Euler's own derivation that states its balance; a body it cannot draw has none."""
+    drawn = free_body.free_bodies(solution.problem, solution.dynamics_scene, solution.coordinates)
+    return {id(s): drawn[s.body].tikz for s in solution.derivations["newton_euler"].steps
+            if s.body and drawn.get(s.body) is not None}
 
 
 def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int,
@@ -383,12 +395,14 @@ def _numerical_notes(key: dict) -> list[str]:
 def _worked_solutions(prepared: list[_ProblemVariants], contexts: list[dict], header: dict) -> dict[tuple[str, int], str]:
     """Each problem's worked solution for each variant as HTML, keyed (problem id, variant): the
     solutions sheet's own template and text, each section one problem with that variant's numbers
-    only (no figure: the question shows it), converted by pandoc in one run (export.html_sections)."""
+    only (no figure: the question shows it; no free-body diagram: pandoc reads no TikZ), converted by
+    pandoc in one run (export.html_sections)."""
     keys, problems = [], []
     for item, context in zip(prepared, contexts):
         for variant in context["variants"]:
             keys.append((item.problem.id, variant["number"]))
-            problems.append({**context, "figure": "", "variants": [variant]})
+            routes = [{**r, "steps": [{**s, "diagram": ""} for s in r["steps"]]} for r in context["routes"]]
+            problems.append({**context, "figure": "", "routes": routes, "variants": [variant]})
     fragments = export.html_sections(render.render("solutions.tex.j2", set=header, problems=problems))
     if len(fragments) != len(keys):
         raise export.BuildError(f"pandoc made {len(fragments)} worked solutions of {len(keys)}")

@@ -31,11 +31,13 @@ class Step:
     """One step of a derivation as the lecture notes would write it: a sentence and equations.
     `role`: "equations" for the equations a route solves (its equations of motion and its
     constraints), "solve" for the solving of them, which a worked solution refers back to by
-    their numbers ("from (4) to (11)"); "" for any other step."""
+    their numbers ("from (4) to (11)"); "" for any other step. `body`: the body whose balance a
+    Newton–Euler step states (its free-body diagram goes beside it), "" for any other step."""
 
     text: str
     equations: tuple[sp.Eq, ...] = ()
     role: str = ""
+    body: str = ""
 
 
 class Solved(Mapping):

@@ -50,7 +50,8 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         equations += balances
         labels = ", ".join(sorted({f.label for f in on_body})) or "none"
         steps.append(Step(f"Forces and torques on the {body.name} ({labels})",
-                          tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances), role="equations"))
+                          tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances), role="equations",
+                          body=body.name))
     conditions = [v for c in scene.constraints for v in c.conditions(coords)]
     unknowns = coords.accelerations + [f for c in scene.constraints for f in c.unknowns().values()]
     derivation = Derivation("newton_euler", equations, unknowns, steps, conditions, coords)
