@@ -19,8 +19,9 @@ weight, an applied force, a stretched spring) is one arrow along itself labelled
 step and is not drawn. An arrow pulls from its point, or pushes into it where it points into the
 body from the rim (a normal force at a contact). Labels are `render.latex_of`, as the equations
 print them. Arrows are of one length: their sizes are not to scale. A force not linear in the
-unknowns, or a direction that does not evaluate to a real nonzero vector, leaves that body without
-a diagram (None) rather than with a wrong one. Same problem, same bytes.
+unknowns, one that changes with time (`t`: its sense may too), or a direction that does not
+evaluate to a real nonzero vector leaves that body without a diagram (None) rather than with a
+wrong one. Same problem, same bytes.
 
 >>> from derive.answers import Solution
 >>> from derive.problem import load
@@ -44,6 +45,7 @@ from derive.figure.parts import ARROW, DIRECTIONS, LAYERS, Undrawable, _Body, _d
     _Scene, _sub
 from derive.mechanics.newton_euler import all_forces
 from derive.parts import AppliedForce, AppliedTorque
+from derive.scene import TIME
 
 REACH = {"round": 0.7, "point": 1.0}  # cm: how far the body's outline and loads reach from its center (else 1.1)
 OUTSIDE = 0.75  # cm: how far an arrow from a point of the body reaches beyond its outline
@@ -124,6 +126,8 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
 def _split(force: sp.Matrix, unknowns) -> list[tuple[sp.Matrix, sp.Expr]]:
     """A force (or a couple) as (coefficient, amount) pairs: each unknown with its coefficient, and
     the known rest with the amount 1; a force zero in the reference configuration has none."""
+    if TIME in force.free_symbols:
+        raise Undrawable("a force that changes with time (its sense may too)")
     present = [u for u in unknowns if u in force.free_symbols]
     pairs = []
     for u in present:
