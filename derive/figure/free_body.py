@@ -163,8 +163,11 @@ def _draw(fig: _Figure, view: _Scene, name: str, arrows: list[Arrow], turns: lis
     drawn.shape()
     drawn_at: list = []  # (label, free end, its side)
     placed: list = []  # (point, direction, length) of the arrows drawn so far
-    for arrow in arrows:
-        _arrow(view, drawn, arrow, placed, drawn_at)
+    ways = [_way(view, drawn, arrow) for arrow in arrows]
+    pushing = [(point, direction) for point, direction, pushes in ways if pushes]
+    for arrow, (point, direction, pushes) in zip(arrows, ways):
+        _arrow(view, arrow.label, point, direction, pushes, ARROW if pushes else _pull_length(drawn, point, direction, pushing),
+               placed, drawn_at)
     for turn in turns:
         _turn(view, drawn, turn)
     for text, point, direction in drawn_at:
@@ -185,13 +188,31 @@ def _bar_or_oval(view: _Scene, drawn: _Body, offsets) -> None:
             (o[0] * math.cos(back) - o[1] * math.sin(back), o[0] * math.sin(back) + o[1] * math.cos(back)) for o in (p, q))
 
 
-def _arrow(view: _Scene, drawn: _Body, arrow: Arrow, placed: list, labels: list) -> None:
-    """A force's arrow from its point out of the body, or into the point from outside where it
-    pushes on the rim (ARROW long); its label goes at the free end (placed once everything is drawn)."""
+def _way(view: _Scene, drawn: _Body, arrow: Arrow) -> tuple[tuple[float, float], tuple[float, float], bool]:
+    """(its point on the figure, its direction, whether it pushes): a force pushes where it points
+    into the body at a point away from its center (a normal force at the rim), else it pulls."""
     point, direction = view.at(_add(drawn.world, arrow.offset)), arrow.direction
     offset = _sub(point, drawn.center)
     pushes = math.hypot(*offset) > 0.5 * drawn.extent > 0 and offset[0] * direction[0] + offset[1] * direction[1] < -1e-9
-    length = ARROW if pushes else max(0.0, drawn.reach(point, direction)) + OUTSIDE  # out of the body
+    return point, direction, pushes
+
+
+def _pull_length(drawn: _Body, point, direction, pushing) -> float:
+    """A pull reaches OUTSIDE beyond the outline, unless it would run into a push along its line the
+    other way (a weight down from the center onto a floor's normal force): it stops short of that."""
+    length = max(0.0, drawn.reach(point, direction)) + OUTSIDE
+    for tip, other in pushing:
+        ahead = _sub(tip, point)
+        along = ahead[0] * direction[0] + ahead[1] * direction[1]
+        if other[0] * direction[0] + other[1] * direction[1] < -0.99 and 0 < along < length and \
+                abs(ahead[0] * direction[1] - ahead[1] * direction[0]) < 0.05:
+            length = max(0.3, along - 0.12)
+    return length
+
+
+def _arrow(view: _Scene, label: str, point, direction, pushes: bool, length: float, placed: list, labels: list) -> None:
+    """A force's arrow from its point, or into it from outside where it pushes; its label goes at
+    the free end (placed once everything is drawn)."""
     while any(math.hypot(*_sub(point, p)) < 0.02 and math.hypot(*_sub(direction, d)) < 0.02 and abs(length - k) < 1e-9
               for p, d, k in placed):
         length *= REPEAT  # two forces along one line from one point: both show
@@ -202,7 +223,7 @@ def _arrow(view: _Scene, drawn: _Body, arrow: Arrow, placed: list, labels: list)
     view.ink_line(start, end)
     view.put("joints", f"\\fill[red!70!black] {_pt(point)} circle (0.035);")
     free = start if pushes else end
-    labels.append((arrow.label, free, direction if not pushes else (-direction[0], -direction[1])))
+    labels.append((label, free, direction if not pushes else (-direction[0], -direction[1])))
 
 
 def _turn(view: _Scene, drawn: _Body, turn: Turn) -> None:
