@@ -173,7 +173,8 @@ def test_the_documents_include_the_figures(tmp_path):
     count = len(problem_sets.load_set("demo").problems)
     assert worksheet.count("\\begin{tikzpicture}") == count  # each drawn once, into a box
     assert worksheet.count("\\usebox{") == 2 * count  # that each variant shows
-    assert solutions.count("\\begin{tikzpicture}") == count
+    free_bodies = 3  # after each Newton–Euler balance: the disk and the block, the pendulum (test_free_body)
+    assert solutions.count("\\begin{tikzpicture}") == count + free_bodies
     assert figure.tikz(problem.load("string_wrapped_disk")) in worksheet
     assert "\\usetikzlibrary{" in worksheet
 
