@@ -142,10 +142,12 @@ def _split(force: sp.Matrix, unknowns) -> list[tuple[sp.Matrix, sp.Expr]]:
 
 
 def _size(vector: sp.Matrix, length: float) -> sp.Expr:
-    """A coefficient's length, exact: 1 for a unit direction (as `length`, its value, says)."""
-    if abs(length - 1) < 1e-12:
+    """A coefficient's length, exact: 1 for a unit direction (where its value, `length`, is 1 and
+    so is its square, not only at these parameters: mu_k may be 1 in the middle of its range)."""
+    square = vector.dot(vector)
+    if abs(length - 1) < 1e-12 and (sp.simplify(square) == 1 or square.equals(1)):
         return sp.Integer(1)
-    return sp.simplify(sp.sqrt(vector.dot(vector)))
+    return sp.simplify(sp.sqrt(square))
 
 
 def _draw(fig: _Figure, view: _Scene, name: str, arrows: list[Arrow], turns: list[Turn]) -> FreeBody:
