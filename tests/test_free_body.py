@@ -3,6 +3,7 @@ forces, checked against the scene's geometry (each force at its point, along its
 problem file places the bodies), labelled as the equations name the forces, beside the balance step
 of the worked solutions and the handout, compiling with nothing off the page."""
 import hashlib
+import html
 import math
 import os
 import re
@@ -198,3 +199,17 @@ def test_the_handout_shows_the_diagrams_and_compiles_with_nothing_off_the_page(d
     for diagram in drawn["rolling_incline"][1].values():
         assert text.index(diagram.tikz) > newton_euler
     assert _overfull(tex, tmp_path) == []
+
+
+def test_the_lms_feedback_goes_without_the_diagrams(drawn, tmp_path):
+    """The worked solutions pandoc turns into each question's feedback carry no TikZ (pandoc reads
+    none, and would leave an empty block where each was): the balance steps are there, their
+    diagrams are not (PDF only, for now)."""
+    solution, _ = drawn["string_wrapped_disk"]
+    built = worksheets.build(["string_wrapped_disk"], out_dir=str(tmp_path / "lms"), formats=frozenset({"moodle"}))
+    xml = next(p for p in built if p.name == "moodle.xml").read_text()
+    feedback = re.search(r"<generalfeedback format=\"html\">\s*<text>(.*?)</text>", xml, re.S)[1]
+    heading = next(s.text for s in solution.derivations["newton_euler"].steps if s.body == "block")
+    assert heading.split(" (")[0] in html.unescape(feedback)
+    assert "tikzpicture" not in xml and "draw[force]" not in xml
+    assert 'class="center"' not in html.unescape(feedback)  # pandoc leaves a diagram's centering, empty
