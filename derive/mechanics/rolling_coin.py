@@ -1,0 +1,168 @@
+"""A thin axially symmetric body (a coin, a disk, a hoop) rolling without slipping on its rim on
+a horizontal plane: nonholonomic, 3D (Routh's rolling disk; Kleppner & Kolenkow ch. 8, the
+rolling coin; Morin ch. 9).
+
+The coin frame follows sympy's rolling disc: the heading frame Y turned about the vertical N.z
+by psi, the lean frame L turned about the heading Y.x by the lean theta (from the vertical), the
+coin turned about its symmetry axis L.y by phi; the center of mass G is a above the contact
+point P, along L.z. I1 is the moment about a diameter through G, I3 about the symmetry axis.
+Two routes give the equations of motion in (psi, theta, phi), in Lagrange's form (the generalized
+speeds are the rates q'):
+
+- kane: KanesMethod with G's velocity as three dependent speeds and the rolling constraints
+  v_P = 0 as velocity constraints, -(Fr + Fr*); the contact force by auxiliary speeds at P;
+- newton_euler: dH_G/dt = r_GP x F about the center of mass with the contact force from Newton's
+  law, F = m a_G + m g z, a_G the derivative of v_G = omega x r_PG, projected on d omega/d q'_i.
+
+Their consequences, each read from one route's own equations and kinematics:
+
+- steady motion on a circle: lean theta fixed, heading turning at Omega, the contact point on a
+  circle of radius `circle` about a vertical axis on the side the coin leans to; the lean
+  equation gives Omega^2, the rolling kinematics the spin and the speed, the contact force F;
+- upright rolling in a straight line at the speed v = a omega: the lean and heading equations
+  linearized about it, stable where the lean's characteristic roots are imaginary.
+
+>>> m, g, a = sp.symbols("m g a", positive=True)
+>>> min_speed(m * a**2 / 4, m * a**2 / 2, m, g, a, "kane")  # a uniform disk: v^2 > g a/3
+sqrt(3)*sqrt(a)*sqrt(g)/3
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+import sympy as sp
+from sympy.physics import mechanics as me
+
+from derive.mechanics.derivation import tidy
+
+ROUTES = ("kane", "newton_euler")
+#: What a steady motion on a circle gives (each a magnitude; `friction` points to the circle's axis).
+STEADY = ("precession", "speed", "spin", "normal_force", "friction")
+OMEGA = sp.Symbol("Omega", positive=True)  # the heading's rate in the steady motion
+S = sp.Symbol("s")  # the exponent of a small motion, e^(s t)
+_T = me.dynamicsymbols._t
+
+
+def _frames(psi, theta, phi):
+    """The ground N, the heading Y, the lean L and the coin frame B."""
+    ground = me.ReferenceFrame("N")
+    heading = ground.orientnew("Y", "Axis", [psi, ground.z])
+    lean = heading.orientnew("L", "Axis", [theta, heading.x])
+    return ground, heading, lean, lean.orientnew("B", "Axis", [phi, lean.y])
+
+
+def _coordinates():
+    return me.dynamicsymbols("psi theta phi")
+
+
+def _kane(I1, I3, mass, g, radius):
+    """KanesMethod's equations with the rolling constraints, and the contact force's components
+    in L by auxiliary speeds at P, both with u = q' and G's dependent speeds eliminated."""
+    q = _coordinates()
+    u, v, aux = me.dynamicsymbols("u1:4"), me.dynamicsymbols("v1:4"), me.dynamicsymbols("w1:4")
+    force = sp.symbols("F_1:4")
+    ground, heading, lean, coin = _frames(*q)
+    coin.set_ang_vel(ground, coin.ang_vel_in(ground).xreplace({c.diff(_T): s for c, s in zip(q, u)}))
+    center = me.Point("G")
+    center.set_vel(ground, sum((s * e for s, e in zip(v, lean)), me.Vector(0)))
+    contact = center.locatenew("P", -radius * lean.z)
+    contact.v2pt_theory(center, ground, coin)
+    rolling = [contact.vel(ground).dot(e) for e in lean]  # the coin's point at P does not move
+    shift = sum((s * e for s, e in zip(aux, lean)), me.Vector(0))  # auxiliary: the contact force's work
+    center.set_vel(ground, center.vel(ground) + shift)
+    contact.set_vel(ground, contact.vel(ground) + shift)
+    body = me.RigidBody("coin", center, coin, mass, (me.inertia(coin, I1, I3, I1), center))
+    method = me.KanesMethod(ground, q_ind=q, u_ind=u, u_dependent=v, kd_eqs=[c.diff(_T) - s for c, s in zip(q, u)],
+                            velocity_constraints=rolling, u_auxiliary=aux)
+    loads = [(center, -mass * g * ground.z), (contact, sum((f * e for f, e in zip(force, lean)), me.Vector(0)))]
+    active, inertial = method.kanes_equations([body], loads)
+    back = {**{s.diff(_T): c.diff(_T, 2) for c, s in zip(q, u)}, **{s: c.diff(_T) for c, s in zip(q, u)}}
+    dependent = {k: e.xreplace(back) for k, e in sp.solve(rolling, v, dict=True)[0].items()}
+    dependent = {**{k.diff(_T): e.diff(_T) for k, e in dependent.items()}, **dependent}
+
+    def eliminate(e):
+        return e.xreplace(back).xreplace(dependent).xreplace(back)
+
+    equations = (-(active + inertial)).applyfunc(lambda e: sp.expand(eliminate(e)))
+    contact_force = [sp.solve(eliminate(e), f)[0] for e, f in zip(method.auxiliary_eqs, force)]
+    velocity = sum((dependent[s] * e for s, e in zip(v, lean)), me.Vector(0))
+    return (equations, coin.ang_vel_in(ground).xreplace(back), velocity,
+            sum((f * e for f, e in zip(contact_force, lean)), me.Vector(0)), (ground, heading, lean))
+
+
+def _newton_euler(I1, I3, mass, g, radius):
+    """Euler's equations about the center of mass with the contact force from Newton's law."""
+    q = _coordinates()
+    ground, heading, lean, coin = _frames(*q)
+    omega = coin.ang_vel_in(ground)
+    velocity = omega.cross(radius * lean.z)  # v_G = omega x r_PG: P at rest
+    force = mass * velocity.dt(ground) + mass * g * ground.z  # on the coin at P
+    momentum = me.inertia(coin, I1, I3, I1).dot(omega)
+    balance = momentum.dt(ground) - (-radius * lean.z).cross(force)
+    equations = sp.Matrix([balance.dot(omega.diff(c.diff(_T), ground)) for c in q]).applyfunc(sp.expand)
+    return equations, omega, velocity, force, (ground, heading, lean)
+
+
+@lru_cache(maxsize=None)
+def motion(I1, I3, mass, g, radius, route: str) -> dict:
+    """By one route: the equations of motion d/dt dL/dq' - dL/dq = 0 in Lagrange's form (comparable
+    term by term), the coin's angular velocity, v_G, the contact force on the coin and the frames
+    (N, Y, L)."""
+    found = (_kane if route == "kane" else _newton_euler)(I1, I3, mass, g, radius)
+    return dict(zip(("equations", "omega", "velocity", "force", "frames"), found))
+
+
+@lru_cache(maxsize=None)
+def steady(I1, I3, mass, g, radius, tilt, circle, route: str) -> dict:
+    """The steady motion on a circle by one route, each a magnitude: {precession, speed, spin (omega
+    along the axis), normal_force, friction (toward the axis)}; and `squared`, Omega^2, which must be
+    positive (the caller's condition), and `tangential`, the contact force along the heading (zero)."""
+    found = motion(I1, I3, mass, g, radius, route)
+    ground, heading, lean = found["frames"]
+    rate = sp.Symbol("phi_dot", real=True)
+    now = {**{c.diff(_T, 2): 0 for c in _coordinates()}, **_steady_angles(tilt, OMEGA, rate)}
+
+    def steady_value(vector, direction):  # a component in the steady motion, Omega and the spin open
+        return me.msubs(vector.dot(direction), now)
+
+    inward = circle - radius * sp.sin(tilt)  # G's distance from the axis, which is at P - circle Y.y
+    wanted = -OMEGA * inward  # v_G along Y.x: Omega N.z x (G - axis)
+    spin_rate = {rate: sp.solve(steady_value(found["velocity"], heading.x) - wanted, rate)[0]}
+    lean_equation = me.msubs(found["equations"][1], now).subs(spin_rate)  # A Omega^2 + B
+    weight_term = lean_equation.subs(OMEGA, 0)
+    squared = tidy(-weight_term / tidy((lean_equation - weight_term) / OMEGA**2))
+    at_rate = {OMEGA: sp.sqrt(squared)}
+
+    def value(vector, direction):
+        return tidy(steady_value(vector, direction).subs(spin_rate).subs(at_rate))
+
+    return {"precession": tidy(sp.sqrt(squared)), "speed": tidy((OMEGA * inward).subs(at_rate)),
+            "spin": -value(found["omega"], lean.y),  # a omega3 Y.x = v_G = -Omega inward Y.x
+            "normal_force": value(found["force"], ground.z), "friction": -value(found["force"], heading.y),
+            "squared": squared, "tangential": value(found["force"], heading.x)}
+
+
+def _steady_angles(tilt, heading_rate, spin_rate) -> dict:
+    psi, theta, phi = _coordinates()
+    return {theta.diff(_T): 0, psi.diff(_T): heading_rate, phi.diff(_T): spin_rate, theta: tilt}
+
+
+@lru_cache(maxsize=None)
+def min_speed(I1, I3, mass, g, radius, route: str) -> sp.Expr:
+    """The least speed a = omega a at which upright rolling in a straight line is stable, by one
+    route: the lean and heading equations linearized about it (small theta, psi'; phi' = omega),
+    det = s (A s^2 + C), stable where C/A > 0 (the lean oscillates; the heading drifts)."""
+    equations = motion(I1, I3, mass, g, radius, route)["equations"]
+    psi, theta, phi = _coordinates()
+    spin = sp.Symbol("omega", positive=True)
+    small = {theta: 1, theta.diff(_T): S, theta.diff(_T, 2): S**2, psi.diff(_T): 1, psi.diff(_T, 2): S}
+    upright = {**_steady_angles(0, 0, spin), phi.diff(_T, 2): 0, **{x: 0 for x in reversed(list(small))}}
+    linear = sp.Matrix([[sum((me.msubs(e.diff(x), upright) * small[x] for x in group), sp.Integer(0))
+                         for group in ((theta, theta.diff(_T), theta.diff(_T, 2)), (psi.diff(_T), psi.diff(_T, 2)))]
+                        for e in (equations[0], equations[1])])
+    characteristic = sp.Poly(sp.cancel(sp.expand(linear.det()) / S), S)
+    A, C = characteristic.coeff_monomial(S**2), characteristic.coeff_monomial(1)
+    if characteristic.coeff_monomial(S) != 0:
+        raise ValueError(f"upright rolling's lean is not a pure oscillation: {characteristic}")
+    least = [r for r in sp.solve(C / A, spin) if r.is_positive]
+    return tidy(radius * least[0])
