@@ -83,7 +83,7 @@ def _kane(I1, I3, mass, g, radius):
     def eliminate(e):
         return e.xreplace(back).xreplace(dependent).xreplace(back)
 
-    equations = (-(active + inertial)).applyfunc(lambda e: sp.expand(eliminate(e)))
+    equations = (-(active + inertial))[:3, :].applyfunc(lambda e: sp.expand(eliminate(e)))  # then the auxiliary rows
     contact_force = [sp.solve(eliminate(e), f)[0] for e, f in zip(method.auxiliary_eqs, force)]
     velocity = sum((dependent[s] * e for s, e in zip(v, lean)), me.Vector(0))
     return (equations, coin.ang_vel_in(ground).xreplace(back), velocity,
@@ -134,12 +134,12 @@ def steady(I1, I3, mass, g, radius, tilt, circle, route: str) -> dict:
     at_rate = {OMEGA: sp.sqrt(squared)}
 
     def value(vector, direction):
-        return tidy(steady_value(vector, direction).subs(spin_rate).subs(at_rate))
+        return steady_value(vector, direction).subs(spin_rate).subs(at_rate)
 
-    return {"precession": tidy(sp.sqrt(squared)), "speed": tidy((OMEGA * inward).subs(at_rate)),
-            "spin": -value(found["omega"], lean.y),  # a omega3 Y.x = v_G = -Omega inward Y.x
-            "normal_force": value(found["force"], ground.z), "friction": -value(found["force"], heading.y),
-            "squared": squared, "tangential": value(found["force"], heading.x)}
+    found = {"precession": sp.sqrt(squared), "speed": OMEGA * inward, "normal_force": value(found["force"], ground.z),
+             "spin": -value(found["omega"], lean.y),  # a omega3 Y.x = v_G = -Omega inward Y.x
+             "friction": -value(found["force"], heading.y), "tangential": value(found["force"], heading.x)}
+    return {"squared": squared, **{k: sp.simplify(tidy(v.subs(at_rate))) for k, v in found.items()}}
 
 
 def _steady_angles(tilt, heading_rate, spin_rate) -> dict:
