@@ -171,3 +171,18 @@ def test_a_second_body_or_no_gravity_is_refused(tmp_path):
     text = COIN_FILE.replace("KEY", "{}").replace("ASK", "coin.upright.min_speed").replace("UNIT", "m/s")
     refused(tmp_path, text.replace("  loads:\n    - gravity: g\n", ""), "scene.loads")
     refused(tmp_path, text.replace("    coin:", "    other: {shape: point, mass: m, at: [1, 0]}\n    coin:"), "scene")
+
+
+def test_the_figure_draws_the_coin_leaning_toward_its_circles_axis(tmp_path):
+    from derive import figure
+    path = tmp_path / "coin.yaml"
+    path.write_text(COIN_FILE.replace("ASK", "coin.steady.precession").replace("KEY", "{tilt: theta, circle: R}")
+                    .replace("UNIT", "rad/s"))
+    drawn = figure.tikz(problem.load(path))
+    assert "rotate around={17.19:(-0.3,0.96)}" in drawn and "ellipse (0.12 and 1)" in drawn  # theta = 0.3 rad
+    assert "{$\\theta$}" in drawn and "{$R$}" in drawn and "{$x$}" in drawn and "$m\\,g$" in drawn
+    path.write_text(COIN_FILE.replace("ASK", "coin.upright.min_speed").replace("KEY", "{}").replace("UNIT", "m/s")
+                    .replace(" of {{ R }} leaning {{ theta }}", "").replace("  R: {meaning: circle, unit: m, value: 0.2}\n"
+                                                                            "  theta: {meaning: lean, unit: rad, value: 0.3}\n", ""))
+    drawn = figure.tikz(problem.load(path))
+    assert "circle (1)" in drawn and "[velocity]" in drawn and "{$x$}" in drawn and "{$a$}" in drawn
