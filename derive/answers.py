@@ -728,6 +728,12 @@ class Solution(StateAnswers, CrossChecks):
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
             return {"orbit": self._orbit_steps()}
+        if kinds <= {"rolls_on_edge", *STATIC_KINDS}:
+            upright = {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "rolls_on_edge"
+                       and a.quantity.detail.startswith("upright.")}
+            return {f"{name}, by {route.replace('_', '–')}": rolling_coin.steps(
+                *self.rolling_coin(name), coin.tilt, coin.circle, route, name in upright)
+                for name, coin in self.scene.rolls_on_edge.items() for route in rolling_coin.ROUTES}
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}

@@ -5,7 +5,8 @@ rolling coin; Morin ch. 9).
 The coin frame follows sympy's rolling disc: the heading frame Y turned about the vertical N.z
 by psi, the lean frame L turned about the heading Y.x by the lean theta (from the vertical), the
 coin turned about its symmetry axis L.y by phi; the center of mass G is a above the contact
-point P, along L.z. I1 is the moment about a diameter through G, I3 about the symmetry axis.
+point P, along L.z. I1 is the moment about a diameter through G, I3 about the symmetry axis (the
+inertia dyadic is the same in L as in the coin's frame, so no spin angle enters the equations).
 Two routes give the equations of motion in (psi, theta, phi), in Lagrange's form (the generalized
 speeds are the rates q'):
 
@@ -33,13 +34,14 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive.mechanics.derivation import tidy
+from derive.mechanics.derivation import Step, tidy
 
 ROUTES = ("kane", "newton_euler")
 #: What a steady motion on a circle gives (each a magnitude; `friction` points to the circle's axis).
 STEADY = ("precession", "speed", "spin", "normal_force", "friction")
 OMEGA = sp.Symbol("Omega", positive=True)  # the heading's rate in the steady motion
 S = sp.Symbol("s")  # the exponent of a small motion, e^(s t)
+SPIN = sp.Symbol("omega", positive=True)  # the spin of upright rolling
 _T = me.dynamicsymbols._t
 
 
@@ -52,7 +54,8 @@ def _frames(psi, theta, phi):
 
 
 def _coordinates():
-    return me.dynamicsymbols("psi theta phi")
+    """The heading, the lean and the spin angle (named apart from a file's parameters, theta or phi)."""
+    return me.dynamicsymbols("psi_coin theta_coin phi_coin")
 
 
 def _kane(I1, I3, mass, g, radius):
@@ -71,7 +74,7 @@ def _kane(I1, I3, mass, g, radius):
     shift = sum((s * e for s, e in zip(aux, lean)), me.Vector(0))  # auxiliary: the contact force's work
     center.set_vel(ground, center.vel(ground) + shift)
     contact.set_vel(ground, contact.vel(ground) + shift)
-    body = me.RigidBody("coin", center, coin, mass, (me.inertia(coin, I1, I3, I1), center))
+    body = me.RigidBody("coin", center, coin, mass, (me.inertia(lean, I1, I3, I1), center))
     method = me.KanesMethod(ground, q_ind=q, u_ind=u, u_dependent=v, kd_eqs=[c.diff(_T) - s for c, s in zip(q, u)],
                             velocity_constraints=rolling, u_auxiliary=aux)
     loads = [(center, -mass * g * ground.z), (contact, sum((f * e for f, e in zip(force, lean)), me.Vector(0)))]
@@ -96,8 +99,8 @@ def _newton_euler(I1, I3, mass, g, radius):
     ground, heading, lean, coin = _frames(*q)
     omega = coin.ang_vel_in(ground)
     velocity = omega.cross(radius * lean.z)  # v_G = omega x r_PG: P at rest
-    force = mass * velocity.dt(ground) + mass * g * ground.z  # on the coin at P
-    momentum = me.inertia(coin, I1, I3, I1).dot(omega)
+    force = mass * velocity.dt(ground) + mass * g * heading.z  # on the coin at P (N.z is Y.z)
+    momentum = me.inertia(lean, I1, I3, I1).dot(omega)
     balance = momentum.dt(ground) - (-radius * lean.z).cross(force)
     equations = sp.Matrix([balance.dot(omega.diff(c.diff(_T), ground)) for c in q]).applyfunc(sp.expand)
     return equations, omega, velocity, force, (ground, heading, lean)
@@ -115,8 +118,9 @@ def motion(I1, I3, mass, g, radius, route: str) -> dict:
 @lru_cache(maxsize=None)
 def steady(I1, I3, mass, g, radius, tilt, circle, route: str) -> dict:
     """The steady motion on a circle by one route, each a magnitude: {precession, speed, spin (omega
-    along the axis), normal_force, friction (toward the axis)}; and `squared`, Omega^2, which must be
-    positive (the caller's condition), and `tangential`, the contact force along the heading (zero)."""
+    along the axis), normal_force, friction (toward the axis)}; and `squared`, Omega^2, positive
+    where the center lies inside the circle (the caller's condition), `spin_rate`, phi' in terms of
+    Omega, and `tangential`, the contact force along the heading (zero)."""
     found = motion(I1, I3, mass, g, radius, route)
     ground, heading, lean = found["frames"]
     rate = sp.Symbol("phi_dot", real=True)
@@ -139,7 +143,8 @@ def steady(I1, I3, mass, g, radius, tilt, circle, route: str) -> dict:
     found = {"precession": sp.sqrt(squared), "speed": OMEGA * inward, "normal_force": value(found["force"], ground.z),
              "spin": -value(found["omega"], lean.y),  # a omega3 Y.x = v_G = -Omega inward Y.x
              "friction": -value(found["force"], heading.y), "tangential": value(found["force"], heading.x)}
-    return {"squared": squared, **{k: sp.simplify(tidy(v.subs(at_rate))) for k, v in found.items()}}
+    return {"squared": squared, "spin_rate": tidy(spin_rate[rate]),
+            **{k: sp.simplify(tidy(v.subs(at_rate))) for k, v in found.items()}}
 
 
 def _steady_angles(tilt, heading_rate, spin_rate) -> dict:
@@ -148,21 +153,54 @@ def _steady_angles(tilt, heading_rate, spin_rate) -> dict:
 
 
 @lru_cache(maxsize=None)
-def min_speed(I1, I3, mass, g, radius, route: str) -> sp.Expr:
-    """The least speed a = omega a at which upright rolling in a straight line is stable, by one
-    route: the lean and heading equations linearized about it (small theta, psi'; phi' = omega),
-    det = s (A s^2 + C), stable where C/A > 0 (the lean oscillates; the heading drifts)."""
+def upright(I1, I3, mass, g, radius, route: str) -> tuple[sp.Poly, sp.Expr]:
+    """Upright rolling in a straight line at the spin omega, by one route: the lean and heading
+    equations linearized about it (small theta, psi'; phi' = omega), det = s (A s^2 + C) as a Poly
+    in s after the factor s (the heading's drift), and the least speed a omega, stable where
+    C/A > 0 (the lean oscillates)."""
     equations = motion(I1, I3, mass, g, radius, route)["equations"]
     psi, theta, phi = _coordinates()
-    spin = sp.Symbol("omega", positive=True)
     small = {theta: 1, theta.diff(_T): S, theta.diff(_T, 2): S**2, psi.diff(_T): 1, psi.diff(_T, 2): S}
-    upright = {**_steady_angles(0, 0, spin), phi.diff(_T, 2): 0, **{x: 0 for x in reversed(list(small))}}
-    linear = sp.Matrix([[sum((me.msubs(e.diff(x), upright) * small[x] for x in group), sp.Integer(0))
+    upright_rolling = {**_steady_angles(0, 0, SPIN), phi.diff(_T, 2): 0, **{x: 0 for x in reversed(list(small))}}
+    linear = sp.Matrix([[sum((me.msubs(e.diff(x), upright_rolling) * small[x] for x in group), sp.Integer(0))
                          for group in ((theta, theta.diff(_T), theta.diff(_T, 2)), (psi.diff(_T), psi.diff(_T, 2)))]
                         for e in (equations[0], equations[1])])
     characteristic = sp.Poly(sp.cancel(sp.expand(linear.det()) / S), S)
     A, C = characteristic.coeff_monomial(S**2), characteristic.coeff_monomial(1)
     if characteristic.coeff_monomial(S) != 0:
         raise ValueError(f"upright rolling's lean is not a pure oscillation: {characteristic}")
-    least = [r for r in sp.solve(C / A, spin) if r.is_positive]
-    return tidy(radius * least[0])
+    least = [r for r in sp.solve(C / A, SPIN) if r.is_positive]
+    return characteristic, tidy(radius * least[0])
+
+
+def min_speed(I1, I3, mass, g, radius, route: str) -> sp.Expr:
+    """The least speed a omega at which upright rolling in a straight line is stable, by one route."""
+    return upright(I1, I3, mass, g, radius, route)[1]
+
+
+def steps(I1, I3, mass, g, radius, tilt, circle, route: str, upright_asked: bool) -> list[Step]:
+    """The worked solution by one route: its lean equation, and from it the steady motion (where a
+    tilt is given) and upright rolling's least speed (where asked)."""
+    phi = _coordinates()[2]
+    lean_equation = motion(I1, I3, mass, g, radius, route)["equations"][1]
+    how = ("Kane's method: the center's velocity three dependent speeds, held by the rolling constraints (the "
+           "coin's point at the contact does not move); with the rates of the heading psi, the lean theta and "
+           "the spin phi as the independent speeds, the lean's equation is" if route == "kane" else
+           "Newton–Euler about the center of mass G: v_G = omega x r_PG (the contact point P at rest), the contact "
+           "force F = m a_G + m g z from Newton's law, and dH_G/dt = r_GP x F; projected on the lean's partial "
+           "angular velocity, that is")
+    result = [Step(how, (sp.Eq(lean_equation, 0),), "equations")]
+    if tilt is not None:
+        found = steady(I1, I3, mass, g, radius, tilt, circle, route)
+        result.append(Step("In the steady motion on the circle the lean stays at its tilt and the heading turns at "
+                           "Omega; the center circling the axis needs the spin rate phi' below, and the lean's "
+                           "equation then gives Omega", (sp.Eq(phi.diff(_T), found["spin_rate"]),
+                                                         sp.Eq(OMEGA**2, found["squared"])), "solve"))
+    if not upright_asked:
+        return result
+    characteristic, least = upright(I1, I3, mass, g, radius, route)
+    result.append(Step("Upright, rolling straight at the spin omega, small leans and heading rates go as e^(s t): "
+                       "the lean oscillates, and upright rolling is stable, where both coefficients of "
+                       "A s^2 + C have one sign, that is above the least speed",
+                       (sp.Eq(characteristic.as_expr(), 0), sp.Eq(sp.Symbol("v_min"), least)), "solve"))
+    return result
