@@ -473,7 +473,7 @@ class Solution(StateAnswers, CrossChecks):
         coin = self.scene.rolls_on_edge[name]
         return (*coin.moments, self.scene.bodies[name].mass, self.scene.gravity.g, coin.radius)
 
-    def _rolls_on_edge(self, q: Quantity, route: str = "kane") -> sp.Expr:
+    def _rolls_on_edge(self, q: Quantity, route: str = "lagrange") -> sp.Expr:
         """A steady motion on a circle or upright rolling's least speed or spin, by one route."""
         coin, body = self.scene.rolls_on_edge[q.target], self.rolling_coin(q.target)
         group, _, what = q.detail.partition(".")
@@ -733,7 +733,7 @@ class Solution(StateAnswers, CrossChecks):
                        and a.quantity.detail.startswith("upright.")}
             return {f"{name}, by {route.replace('_', '–')}": rolling_coin.steps(
                 *self.rolling_coin(name), coin.tilt, coin.circle, route, name in upright)
-                for name, coin in self.scene.rolls_on_edge.items() for route in rolling_coin.ROUTES}
+                for name, coin in self.scene.rolls_on_edge.items() for route in ("lagrange", "newton_euler")}
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}

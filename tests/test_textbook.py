@@ -727,7 +727,7 @@ def test_textbook_closed_form(path):
                 assert abs(value - book) <= 1e-14 * max(1, abs(book)), f"{name} at {point}: {value} vs {book}"
     # What `derive solve` reports, from the same derivation: the two routes agree, every check passes.
     checks = report.solve(problem, solution=solution)["checks"]
-    assert (checks.get("lagrange_vs_newton_euler") or checks["kane_vs_newton_euler"])["passed"], checks
+    assert checks["lagrange_vs_newton_euler"]["passed"], checks
     assert all(c["passed"] for c in checks.values()), checks
     # what a worked solution prints of them: sentences a student can read
     assert all(c["reading"][:1].isupper() and c["reading"].endswith(".") and "_vs_" not in c["reading"]

@@ -7,9 +7,12 @@ by psi, the lean frame L turned about the heading Y.x by the lean theta (from th
 coin turned about its symmetry axis L.y by phi; the center of mass G is a above the contact
 point P, along L.z. I1 is the moment about a diameter through G, I3 about the symmetry axis (the
 inertia dyadic is the same in L as in the coin's frame, so no spin angle enters the equations).
-Two routes give the equations of motion in (psi, theta, phi), in Lagrange's form (the generalized
+Three routes give the equations of motion in (psi, theta, phi), in Lagrange's form (the generalized
 speeds are the rates q'):
 
+- lagrange: LagrangesMethod in (psi, theta, phi) and G's x, y, z, the height z = a cos(theta) a
+  holonomic constraint and v_P = 0 along the ground two nonholonomic ones; the multipliers, found
+  from the equations of x, y, z, are the contact force, and the constraints give G's rates;
 - kane: KanesMethod with G's velocity as three dependent speeds and the rolling constraints
   v_P = 0 as velocity constraints, -(Fr + Fr*); the contact force by auxiliary speeds at P;
 - newton_euler: dH_G/dt = r_GP x F about the center of mass with the contact force from Newton's
@@ -36,7 +39,7 @@ from sympy.physics import mechanics as me
 
 from derive.mechanics.derivation import Step, tidy
 
-ROUTES = ("kane", "newton_euler")
+ROUTES = ("lagrange", "kane", "newton_euler")
 #: What a steady motion on a circle gives (each a magnitude; `friction` points to the circle's axis).
 STEADY = ("precession", "speed", "spin", "normal_force", "friction")
 OMEGA = sp.Symbol("Omega", positive=True)  # the heading's rate in the steady motion
@@ -93,6 +96,40 @@ def _kane(I1, I3, mass, g, radius):
             sum((f * e for f, e in zip(contact_force, lean)), me.Vector(0)), (ground, heading, lean))
 
 
+def _lagrange(I1, I3, mass, g, radius):
+    """LagrangesMethod with the rolling constraints as multipliers: the angles' equations with the
+    multipliers and G's rates eliminated, and the contact force, the multipliers' generalized forces
+    along G's x, y and z."""
+    q = _coordinates()
+    place = me.dynamicsymbols("x_coin y_coin z_coin")
+    ground, heading, lean, coin = _frames(*q)
+    origin = me.Point("O")
+    origin.set_vel(ground, 0)
+    center = origin.locatenew("G", sum((c * e for c, e in zip(place, ground)), me.Vector(0)))
+    center.set_vel(ground, center.pos_from(origin).dt(ground))
+    contact = center.locatenew("P", -radius * lean.z)
+    contact.v2pt_theory(center, ground, coin)
+    body = me.RigidBody("coin", center, coin, mass, (me.inertia(lean, I1, I3, I1), center))
+    body.potential_energy = mass * g * place[2]
+    height = place[2] - radius * sp.cos(q[1])
+    rolling = [contact.vel(ground).dot(ground.x), contact.vel(ground).dot(ground.y)]
+    method = me.LagrangesMethod(me.Lagrangian(ground, body), [*q, *place], hol_coneqs=[height],
+                                nonhol_coneqs=rolling, frame=ground)
+    rows = method.form_lagranges_equations()
+    rates = sp.solve([*rolling, height.diff(_T)], [c.diff(_T) for c in place], dict=True)[0]
+    rates = {**{k.diff(_T): e.diff(_T) for k, e in rates.items()}, **rates}  # in the angles alone
+    multipliers = sp.solve(list(rows[3:, 0]), list(method.lam_vec), dict=True)[0]
+
+    def eliminate(e):
+        return sp.expand(e.xreplace(multipliers).xreplace(rates))
+
+    equations = rows[:3, :].applyfunc(eliminate)
+    generalized = method.lam_coeffs.T * method.lam_vec  # rows - (d/dt dL/dq' - dL/dq) = -these
+    force = sum((eliminate(generalized[3 + i]) * e for i, e in enumerate(ground)), me.Vector(0))
+    velocity = sum((rates[c.diff(_T)] * e for c, e in zip(place, ground)), me.Vector(0))
+    return equations, coin.ang_vel_in(ground), velocity, force, (ground, heading, lean)
+
+
 def _newton_euler(I1, I3, mass, g, radius):
     """Euler's equations about the center of mass with the contact force from Newton's law."""
     q = _coordinates()
@@ -111,7 +148,7 @@ def motion(I1, I3, mass, g, radius, route: str) -> dict:
     """By one route: the equations of motion d/dt dL/dq' - dL/dq = 0 in Lagrange's form (comparable
     term by term), the coin's angular velocity, v_G, the contact force on the coin and the frames
     (N, Y, L)."""
-    found = (_kane if route == "kane" else _newton_euler)(I1, I3, mass, g, radius)
+    found = {"lagrange": _lagrange, "kane": _kane, "newton_euler": _newton_euler}[route](I1, I3, mass, g, radius)
     return dict(zip(("equations", "omega", "velocity", "force", "frames"), found))
 
 
@@ -183,7 +220,11 @@ def steps(I1, I3, mass, g, radius, tilt, circle, route: str, upright_asked: bool
     tilt is given) and upright rolling's least speed (where asked)."""
     phi = _coordinates()[2]
     lean_equation = motion(I1, I3, mass, g, radius, route)["equations"][1]
-    how = ("Kane's method: the center's velocity three dependent speeds, held by the rolling constraints (the "
+    how = ("Lagrange's method in the heading psi, the lean theta, the spin phi and the center's x, y, z: the "
+           "height z = a cos(theta) and the rolling (the coin's point at the contact does not move along the "
+           "floor) held by multipliers, which the equations of x, y, z give; with them and the center's rates "
+           "eliminated, the lean's equation is" if route == "lagrange" else
+           "Kane's method: the center's velocity three dependent speeds, held by the rolling constraints (the "
            "coin's point at the contact does not move); with the rates of the heading psi, the lean theta and "
            "the spin phi as the independent speeds, the lean's equation is" if route == "kane" else
            "Newton–Euler about the center of mass G: v_G = omega x r_PG (the contact point P at rest), the contact "
