@@ -469,9 +469,12 @@ class Solution(StateAnswers, CrossChecks):
         return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
 
     def rolling_coin(self, name: str) -> tuple:
-        """(I1, I3, mass, g, radius) of a body rolling on its edge (derive.mechanics.rolling_coin)."""
-        coin = self.scene.rolls_on_edge[name]
-        return (*coin.moments, self.scene.bodies[name].mass, self.scene.gravity.g, coin.radius)
+        """(I1, I3, mass, g, radius) of a body rolling on its edge (derive.mechanics.rolling_coin): a
+        custom body's moments as given, a shape's from its tensor (the symmetry axis its own z)."""
+        coin, body = self.scene.rolls_on_edge[name], self.scene.bodies[name]
+        tensor = (sp.diag(coin.inertia[0], coin.inertia[0], coin.inertia[1]) if coin.inertia is not None
+                  else bearings.body_tensor(body.shape, body.mass, body.sizes))
+        return tensor[0, 0], tensor[2, 2], body.mass, self.scene.gravity.g, coin.radius
 
     def _rolls_on_edge(self, q: Quantity, route: str = "lagrange") -> sp.Expr:
         """A steady motion on a circle or upright rolling's least speed or spin, by one route."""

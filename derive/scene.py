@@ -181,15 +181,15 @@ class PivotPoint:
 @dataclass(frozen=True)
 class RollsOnEdge:
     """A thin axially symmetric body rolling without slipping on its rim on a horizontal plane
-    (derive.mechanics.rolling_coin): `radius`, the rim's; `moments`, (I1 about a diameter, I3 about
-    the axis) through the center of mass; in the steady motion its plane leans by `tilt` from the
-    vertical toward the axis of the circle of radius `circle` its contact point traces (None: not
-    given, and no steady motion is asked)."""
+    (derive.mechanics.rolling_coin): `radius`, the rim's; in the steady motion its plane leans by
+    `tilt` from the vertical toward the axis of the circle of radius `circle` its contact point
+    traces (None: not given, and no steady motion is asked); `inertia`: a custom body's (I1 about a
+    diameter, I3 about the axis) through the center of mass, else None (the shape's)."""
 
     radius: sp.Expr
-    moments: tuple[sp.Expr, sp.Expr]
     tilt: sp.Expr | None = None
     circle: sp.Expr | None = None
+    inertia: tuple[sp.Expr, sp.Expr] | None = None
 
 
 #: What a body rolling on its edge can be asked: its steady motion on a circle, upright rolling's stability.

@@ -16,7 +16,7 @@ import sympy as sp
 
 from derive import composite, inertia, state_file, units
 from derive.errors import EngineLimit, InputError
-from derive.mechanics.bearings import body_tensor, own_axis
+from derive.mechanics.bearings import own_axis
 from derive.parts import clutch, contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
@@ -608,11 +608,7 @@ def _rolls_on_edge(reader: Reader, spec: dict, field: str, body: Body) -> RollsO
                                               "and friction coefficients are not modelled)")
     if RIMS[body.shape] not in body.sizes:
         raise reader.fail(f"{field}.radius", "a custom body rolling on its edge needs the radius of its rim")
-    if body.shape == "custom":
-        moments = _axial_inertia(reader, spec, field)
-    else:
-        tensor = body_tensor(body.shape, body.mass, body.sizes)
-        moments = (tensor[0, 0], tensor[2, 2])  # the symmetry axis is the shape's own z
+    moments = _axial_inertia(reader, spec, field) if body.shape == "custom" else None
     raw = reader.mapping(spec["rolls_on_edge"] or {}, here, optional=("tilt", "circle"))
     if ("tilt" in raw) != ("circle" in raw):
         raise reader.fail(here, "the steady motion needs both the lean and the circle: {tilt: theta, circle: R}")
@@ -623,7 +619,7 @@ def _rolls_on_edge(reader: Reader, spec: dict, field: str, body: Body) -> RollsO
             raise reader.fail(f"{here}.tilt", "the lean from the vertical lies between 0 and pi/2 (upright rolling "
                                               "in a circle, and a body lying flat, are not modelled)")
         circle = reader.positive(raw["circle"], f"{here}.circle", "m", "the radius of the contact point's circle")
-    return RollsOnEdge(body.sizes[RIMS[body.shape]], moments, tilt, circle)
+    return RollsOnEdge(body.sizes[RIMS[body.shape]], tilt, circle, moments)
 
 
 def _wheel(reader: Reader, raw) -> SpinningWheel:
