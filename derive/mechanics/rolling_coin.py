@@ -171,7 +171,7 @@ def steady(I1, I3, mass, g, radius, tilt, circle, route: str) -> dict:
     spin_rate = {rate: sp.solve(steady_value(found["velocity"], heading.x) - wanted, rate)[0]}
     lean_equation = me.msubs(found["equations"][1], now).subs(spin_rate)  # A Omega^2 + B
     weight_term = lean_equation.subs(OMEGA, 0)
-    squared = tidy(-weight_term / tidy((lean_equation - weight_term) / OMEGA**2))
+    squared = sp.simplify(tidy(-weight_term / tidy((lean_equation - weight_term) / OMEGA**2)))
     at_rate = {OMEGA: sp.sqrt(squared)}
 
     def value(vector, direction):
