@@ -19,7 +19,7 @@ from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
 from derive.mechanics import (bearings, fixed_point, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths,
-                              quantum, rolling)
+                              quantum, rolling, rolling_coin)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion
@@ -468,6 +468,23 @@ class Solution(StateAnswers, CrossChecks):
             raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
         return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
 
+    def rolling_coin(self, name: str) -> tuple:
+        """(I1, I3, mass, g, radius) of a body rolling on its edge (derive.mechanics.rolling_coin): a
+        custom body's moments as given, a shape's from its tensor (the symmetry axis its own z)."""
+        coin, body = self.scene.rolls_on_edge[name], self.scene.bodies[name]
+        tensor = (sp.diag(coin.inertia[0], coin.inertia[0], coin.inertia[1]) if coin.inertia is not None
+                  else bearings.body_tensor(body.shape, body.mass, body.sizes))
+        return tensor[0, 0], tensor[2, 2], body.mass, self.scene.gravity.g, coin.radius
+
+    def _rolls_on_edge(self, q: Quantity, route: str = "lagrange") -> sp.Expr:
+        """A steady motion on a circle or upright rolling's least speed or spin, by one route."""
+        coin, body = self.scene.rolls_on_edge[q.target], self.rolling_coin(q.target)
+        group, _, what = q.detail.partition(".")
+        if group == "upright":
+            speed = rolling_coin.min_speed(*body, route)
+            return speed if what == "min_speed" else tidy(speed / coin.radius)
+        return rolling_coin.steady(*body, coin.tilt, coin.circle, route)[what]
+
     @cached_property
     def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """(expression, strict, meaning): each expression must be positive (strict) or not
@@ -493,6 +510,12 @@ class Solution(StateAnswers, CrossChecks):
             result.append((tidy(I3**2 * point.spin**2 - 4 * I1 * mass * g * distance * sp.cos(point.tilt)), False,
                            f"no steady precession of the {name}: the spin is too slow "
                            "(I3^2 w^2 < 4 I1 m g l cos(theta))"))
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "rolls_on_edge"
+                     and a.quantity.detail.startswith("steady.")}:
+            coin = self.scene.rolls_on_edge[name]  # then Omega^2 > 0 too (tests/test_rolling_coin.py)
+            result.append((tidy(coin.circle - coin.radius * sp.sin(coin.tilt)), True,
+                           f"the {name}'s center would be on or across the axis of its contact point's circle "
+                           "(circle <= radius sin(tilt)): not modelled"))
         for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
             if isinstance(surface, Plane) and surface.angle.free_symbols:
                 result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "
@@ -660,6 +683,8 @@ class Solution(StateAnswers, CrossChecks):
             result = self._system(ask.quantity.detail, "sum")
         elif ask.quantity.kind == "pivot_point":
             result = self._pivot_point(ask.quantity)
+        elif ask.quantity.kind == "rolls_on_edge":
+            result = self._rolls_on_edge(ask.quantity)
         elif ask.quantity.kind in SECOND_ROUTE_KINDS:
             result = self._second_routes(ask.quantity)[0]
         elif ask.quantity.kind == "bearings":
@@ -706,6 +731,12 @@ class Solution(StateAnswers, CrossChecks):
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
             return {"orbit": self._orbit_steps()}
+        if kinds <= {"rolls_on_edge", *STATIC_KINDS}:
+            upright = {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "rolls_on_edge"
+                       and a.quantity.detail.startswith("upright.")}
+            return {f"{name}, by {route.replace('_', '–')}": rolling_coin.steps(
+                *self.rolling_coin(name), coin.tilt, coin.circle, route, name in upright)
+                for name, coin in self.scene.rolls_on_edge.items() for route in ("lagrange", "newton_euler")}
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}

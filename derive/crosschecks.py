@@ -22,7 +22,7 @@ import sympy as sp
 from derive import inertia, limits, numeric, units
 from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
 from derive.mechanics import (bearings, fixed_point, gyroscope, impacts, integrated_motion, lagrange, many_bodies,
-                              orbits, paths, states)
+                              orbits, paths, rolling_coin, states)
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import row_reduced, tidy
 from derive.problem import Ask, Problem
@@ -83,6 +83,8 @@ class CrossChecks:
             result.append(self._path_check())
         if "pivot_point" in kinds:
             result.append(self._pivot_point_check())
+        if "rolls_on_edge" in kinds:
+            result.append(self._rolls_on_edge_check())
         if "wheel" in kinds:
             result.append(self._wheel_check())
         if "bearings" in kinds:
@@ -495,6 +497,38 @@ class CrossChecks:
                      "; ".join(["equations of motion agree (Lagrange, Newton–Euler, Kane)", *notes]),
                      "Lagrange's method, Euler's equations about the fixed point and Kane's method give the same "
                      "equations of motion, and the same steady motions.")
+
+    def _rolls_on_edge_check(self) -> Check:
+        """For every body rolling on its edge that is asked, Lagrange's method and Kane's with the
+        rolling constraints and Newton–Euler about the center of mass agree term by term, each asked
+        quantity by all three, and in a steady motion the contact force along the heading is zero."""
+        methods = {"symbolic"}
+        routes = rolling_coin.ROUTES
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "rolls_on_edge"}:
+            coin = self.scene.rolls_on_edge[name]
+            found = {route: rolling_coin.motion(*self.rolling_coin(name), route)["equations"] for route in routes}
+            for route in routes[1:]:
+                if any(tidy(a - b) != 0 for a, b in zip(found["lagrange"], found[route])):
+                    raise CheckFailure(f"{self.problem.id}: the {name}'s equations of motion are "
+                                       f"{list(found['lagrange'])} by Lagrange, {list(found[route])} by {route}")
+            if coin.tilt is not None:
+                along = [rolling_coin.steady(*self.rolling_coin(name), coin.tilt, coin.circle, r)["tangential"]
+                         for r in routes]
+                if any(a != 0 for a in along):
+                    raise CheckFailure(f"{self.problem.id}: the {name}'s steady motion needs a force along its "
+                                       f"heading: {along}")
+        for ask_name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "rolls_on_edge":
+                first, *others = (self._rolls_on_edge(ask.quantity, r) for r in routes)
+                methods.update(agree(first, other) for other in others)
+                if None in methods:
+                    raise CheckFailure(f"{self.problem.id}: Lagrange, Kane and Newton–Euler disagree on {ask_name}")
+        return Check("lagrange_vs_newton_euler", True, " or ".join(m for m in METHODS if m in methods),
+                     "equations of motion agree (Lagrange and Kane with the rolling constraints, Newton–Euler about "
+                     "the center of mass), and every asked quantity",
+                     "Lagrange's method and Kane's with the rolling constraints, and Newton–Euler about the center of "
+                     "mass with the contact force from Newton's law, give the same equations of motion, steady "
+                     "motion and stability.")
 
     def _path_check(self) -> Check:
         """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""

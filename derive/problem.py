@@ -444,6 +444,11 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
     if unread is not None:
         raise reader.fail(f"scene.states.{unread}", "no ask is read in this state (in: STATE) and no state starts "
                                                     "from it: remove it, or ask what it holds")
+    for name, coin in scene.rolls_on_edge.items():
+        if coin.tilt is not None and not any(a.quantity.kind == "rolls_on_edge" and a.quantity.target == name
+                                             and a.quantity.detail.startswith("steady.") for a in asks.values()):
+            raise reader.fail(f"scene.bodies.{name}.rolls_on_edge.tilt", "no ask reads the steady motion on a circle "
+                                                                          "(steady.*): leave out tilt and circle")
     if not kinds & DYNAMIC_KINDS:
         for c in scene.constraints:
             if isinstance(c, Contact) and c.has_friction:

@@ -178,6 +178,25 @@ class PivotPoint:
     inertia: tuple[sp.Expr, sp.Expr] | None = None
 
 
+@dataclass(frozen=True)
+class RollsOnEdge:
+    """A thin axially symmetric body rolling without slipping on its rim on a horizontal plane
+    (derive.mechanics.rolling_coin): `radius`, the rim's; in the steady motion its plane leans by
+    `tilt` from the vertical toward the axis of the circle of radius `circle` its contact point
+    traces (None: not given, and no steady motion is asked); `inertia`: a custom body's (I1 about a
+    diameter, I3 about the axis) through the center of mass, else None (the shape's)."""
+
+    radius: sp.Expr
+    tilt: sp.Expr | None = None
+    circle: sp.Expr | None = None
+    inertia: tuple[sp.Expr, sp.Expr] | None = None
+
+
+#: What a body rolling on its edge can be asked: its steady motion on a circle, upright rolling's stability.
+ROLLING_COIN_QUANTITIES = ("steady.precession", "steady.speed", "steady.spin", "steady.normal_force",
+                           "steady.friction", "upright.min_speed", "upright.min_spin")
+
+
 #: What a body on a fixed point can be asked (derive.mechanics.fixed_point).
 PIVOT_POINT_QUANTITIES = ("precession.slow", "precession.fast", "precession.fast_top", "sleeping.min_spin",
                           "nutation.frequency", "nutation.fast_top")
@@ -267,6 +286,7 @@ class Scene:
     internal_forces: int | None = None
     bearings: dict[str, Bearings] = field(default_factory=dict)
     pivot_points: dict[str, PivotPoint] = field(default_factory=dict)
+    rolls_on_edge: dict[str, RollsOnEdge] = field(default_factory=dict)
     states: dict[str, State] = field(default_factory=dict)
 
     @property
@@ -332,7 +352,7 @@ class Quantity:
     "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
     prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
     "system" (inertia about the center of mass, reduced_mass of two bodies), "pivot_point" (a body on a
-    fixed point; PIVOT_POINT_QUANTITIES),
+    fixed point; PIVOT_POINT_QUANTITIES), "rolls_on_edge" (a coin rolling on its rim; ROLLING_COIN_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
@@ -394,6 +414,15 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, mass and inertia"
                              + did_you_mean(rest, PIVOT_POINT_QUANTITIES))
         return Quantity("pivot_point", head, rest)
+    if head in scene.rolls_on_edge and rest not in ("mass", "inertia"):
+        if rest not in ROLLING_COIN_QUANTITIES:
+            raise ValueError(f"a body rolling on its edge has {', '.join(ROLLING_COIN_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, ROLLING_COIN_QUANTITIES))
+        rolling = scene.rolls_on_edge[head]
+        if rest.startswith("steady.") and (rolling.tilt is None or rolling.circle is None):
+            raise ValueError(f"{head}.{rest} is read in the steady motion on a circle: give its lean and the contact "
+                             "point's circle, rolls_on_edge: {tilt: theta, circle: R}")
+        return Quantity("rolls_on_edge", head, rest)
     if head == "system":
         if rest not in ("inertia", "reduced_mass"):
             raise ValueError("the system has inertia (about its center of mass) and reduced_mass")

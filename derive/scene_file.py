@@ -27,7 +27,7 @@ from derive.reader import Reader, describe
 from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
 from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Bearings, Body, Motion, Orbit, PivotPoint,
-                          Scene, SpinningWheel, StandingWave)
+                          RollsOnEdge, Scene, SpinningWheel, StandingWave)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
@@ -42,7 +42,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
                           optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
-                                    "path", "bearings", "pivot_point", "angle", "parts", *MOTION_KEYS, *all_sizes))
+                                    "path", "bearings", "pivot_point", "rolls_on_edge", "angle", "parts", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
@@ -70,8 +70,8 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         elif size in spec:
             raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
     given = None
-    if shape == "custom" and "pivot_point" in spec:
-        given = _pivot_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the point
+    if shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec):
+        given = _axial_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the key
     elif shape == "custom":
         if "inertia" not in spec:
             raise reader.fail(f"{field}.inertia", "a custom body needs its moment of inertia about its center of mass")
@@ -468,6 +468,8 @@ def read_scene(reader: Reader, raw) -> Scene:
         body, joint = _body(reader, name, spec)
         bodies[name] = body
         pins += [joint] if joint else []
+    rolling = {n: _rolls_on_edge(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
+               if "rolls_on_edge" in spec}
     for name, surface in surfaces.items():
         if surface.carrier is not None and surface.carrier not in bodies:
             raise reader.fail(f"scene.surfaces.{name}.carried_by", no_such("body", surface.carrier, bodies, "bodies"))
@@ -524,9 +526,14 @@ def read_scene(reader: Reader, raw) -> Scene:
                           "gravity alone: one body, - gravity: g, no other loads, joints or cords")
     held = {n: _bearings(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
             if "bearings" in spec}
+    if rolling and (gravity_part is None or len(bodies) > 1 or constraints or loads or surfaces):
+        raise reader.fail("scene.loads" if gravity_part is None else "scene.surfaces" if surfaces else "scene",
+                          "a body rolling on its edge rolls on the horizontal plane its key stands for, under gravity "
+                          "alone: one body, - gravity: g, no surfaces (an inclined plane is not modelled), other "
+                          "loads, joints or cords")
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wheel, wave,
-                  internal, held, pivoted, states)
+                  internal, held, pivoted, rolling, states)
     _check_geometry(reader, places, scene)
     return scene
 
@@ -578,6 +585,43 @@ def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
                     if "apart" in raw else None)
 
 
+#: The thin axially symmetric shapes that roll on their rim, and the size that is the rim's radius.
+RIMS = {"disk": "radius", "ring": "radius", "annulus": "outer_radius", "custom": "radius"}
+
+
+def _rolls_on_edge(reader: Reader, spec: dict, field: str, body: Body) -> RollsOnEdge:
+    """`rolls_on_edge: {tilt: theta, circle: R}`: the body rolls without slipping on its rim on a
+    horizontal plane (derive.mechanics.rolling_coin); a thin axially symmetric body (a disk, a ring,
+    an annulus, or a custom body with a radius and inertia: {axial, transverse}). In the steady
+    motion its plane leans by `tilt` from the vertical toward the axis of the circle of radius
+    `circle` its contact point traces; both are left out where only upright rolling is asked."""
+    here = f"{field}.rolls_on_edge"
+    if body.shape not in RIMS or body.density is not None:
+        raise reader.fail(here, "a body rolling on its edge is a thin axially symmetric body with its rim in the "
+                                "plane of its center: a disk, ring or annulus of derive inertia (no density), or a "
+                                "custom body with radius: a and inertia: {axial: I3, transverse: I1}")
+    other = next((k for k in ("joint", "on", "contact", "friction", "path", "velocity", "bearings", "pivot_point",
+                              "inertia_about") if k in spec), None)
+    if other:
+        raise reader.fail(f"{field}.{other}", "a body rolling on its edge rolls without slipping on the horizontal "
+                                              "plane its key stands for, held by nothing else (a surface, slipping "
+                                              "and friction coefficients are not modelled)")
+    if RIMS[body.shape] not in body.sizes:
+        raise reader.fail(f"{field}.radius", "a custom body rolling on its edge needs the radius of its rim")
+    moments = _axial_inertia(reader, spec, field) if body.shape == "custom" else None
+    raw = reader.mapping(spec["rolls_on_edge"] or {}, here, optional=("tilt", "circle"))
+    if ("tilt" in raw) != ("circle" in raw):
+        raise reader.fail(here, "the steady motion needs both the lean and the circle: {tilt: theta, circle: R}")
+    tilt = circle = None
+    if "tilt" in raw:
+        tilt = reader.dimensioned(raw["tilt"], f"{here}.tilt", "rad", "a tilt")
+        if not all(v.is_number and 0 < v < sp.pi / 2 for v in _at_range_ends(reader, tilt)):
+            raise reader.fail(f"{here}.tilt", "the lean from the vertical lies between 0 and pi/2 (upright rolling "
+                                              "in a circle, and a body lying flat, are not modelled)")
+        circle = reader.positive(raw["circle"], f"{here}.circle", "m", "the radius of the contact point's circle")
+    return RollsOnEdge(body.sizes[RIMS[body.shape]], tilt, circle, moments)
+
+
 def _wheel(reader: Reader, raw) -> SpinningWheel:
     field = "scene.spinning_wheel"
     raw = reader.mapping(raw, field, required=("inertia", "spin", "torque", "duration"))
@@ -587,13 +631,14 @@ def _wheel(reader: Reader, raw) -> SpinningWheel:
                          reader.positive(raw["duration"], f"{field}.duration", "s", "a duration"))
 
 
-def _pivot_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.Expr]:
-    """A custom body's `inertia: {axial: I3, transverse: I1}` on a fixed point, (transverse, axial)
-    as given (`inertia_about: pivot`: the transverse one about the point; the axial one is the same
-    there). Without `transverse` it is left open (a fast top's rate does not need it)."""
+def _axial_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.Expr]:
+    """An axially symmetric custom body's `inertia: {axial: I3, transverse: I1}` (on a fixed point, or
+    rolling on its edge), (transverse, axial) as given (`inertia_about: pivot`: the transverse one
+    about the point; the axial one is the same there). Without `transverse` it is left open (a fast
+    top's rate does not need it)."""
     if "inertia" not in spec:
-        raise reader.fail(f"{field}.inertia", "a custom body on a fixed point needs inertia: {axial: I3, "
-                                              "transverse: I1}")
+        raise reader.fail(f"{field}.inertia", "an axially symmetric custom body (on a fixed point, rolling on its "
+                                              "edge) needs inertia: {axial: I3, transverse: I1}")
     raw = reader.mapping(spec["inertia"], f"{field}.inertia", required=("axial",), optional=("transverse",))
     axial = reader.positive(raw["axial"], f"{field}.inertia.axial", "kg*m^2", "a moment of inertia")
     if "transverse" not in raw:
@@ -639,7 +684,7 @@ def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoi
         raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body's transverse moment")
     moments = None
     if body.shape == "custom":
-        transverse, axial = _pivot_inertia(reader, spec, field)
+        transverse, axial = _axial_inertia(reader, spec, field)
         distance_squared = sum(c**2 for c in offset)
         moments = (transverse - body.mass * distance_squared if about == "pivot" else transverse, axial)
     spin = (reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin") if "spin" in raw

@@ -662,6 +662,23 @@ EXPECTED.update({
         "omega_min": lambda s: 2 * sp.sqrt(sp.Rational(3, 20) * s.M * (s.R**2 + 4 * s.h**2) * s.M * s.g * 3 * s.h / 4)
         / (sp.Rational(3, 10) * s.M * s.R**2),
     },
+    # A body rolling on its edge (derive.mechanics.rolling_coin). Kleppner & Kolenkow ch. 8 (the
+    # rolling coin, small against its circle): tan(phi) = 3 V^2/(2 g R); N = M g and the friction is
+    # the centripetal force M V^2/R.
+    "coin_rolls_in_circle": {
+        "V": lambda s: sp.sqrt(2 * s.g * s.R * sp.tan(s.phi) / 3),
+        "N": lambda s: s.M * s.g,
+        "f": lambda s: 2 * s.M * s.g * sp.tan(s.phi) / 3,
+    },
+    # Routh art. 244 (the rolling disk and hoop): upright rolling is stable for v^2 > g a/3 (a
+    # uniform disk; the spin v/a) and v^2 > g a/4 (a hoop).
+    "disk_rolls_upright": {
+        "v_min": lambda s: sp.sqrt(s.g * s.a / 3),
+        "omega_min": lambda s: sp.sqrt(s.g / (3 * s.a)),
+    },
+    "hoop_rolls_upright": {
+        "v_min": lambda s: sp.sqrt(s.g * s.a / 4),
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))

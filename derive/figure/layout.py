@@ -16,7 +16,7 @@ from derive.figure.orbits import _orbit
 from derive.figure.parts import _parts
 from derive.figure.paths import _paths
 from derive.figure.surfaces import _on_surface
-from derive.figure.systems import _bearings, _internal, _pivot_point, _wave, _wheel
+from derive.figure.systems import _bearings, _internal, _pivot_point, _rolls_on_edge, _wave, _wheel
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin
@@ -101,6 +101,7 @@ def _has_parts(problem) -> bool:
 #: (applies to the problem, draws the figure), the first that applies wins.
 _LAYOUTS = (
     (lambda p: bool(p.scene.pivot_points), _pivot_point),
+    (lambda p: bool(p.scene.rolls_on_edge), _rolls_on_edge),
     (lambda p: p.scene.wheel is not None, _wheel),
     (lambda p: p.scene.wave is not None, _wave),
     (lambda p: p.scene.orbit is not None, _orbit),

@@ -1,4 +1,5 @@
-"""Scene-level systems: a top (a body on a fixed point), a spinning wheel, a standing wave, internal forces, a turning body."""
+"""Scene-level systems: a top (a body on a fixed point), a coin rolling on its edge, a spinning wheel, a
+standing wave, internal forces, a turning body."""
 from __future__ import annotations
 
 import math
@@ -37,6 +38,41 @@ def _pivot_point(fig: _Figure) -> None:
     fig.add("\\draw[->, thick] (0.45,3.2) arc[start angle=0, end angle=300, x radius=0.45, y radius=0.13];")
     precession = fig.ask_symbol("pivot_point", name) or r"\Omega"
     fig.label((-0.5, 3.2), (-1, 0), f"${precession}$")
+
+
+def _rolls_on_edge(fig: _Figure) -> None:
+    """A body rolling on its edge on a level floor. In a steady motion on a circle, seen along its
+    heading: the coin edge-on, leaning by its tilt toward the circle's axis (dashed), the circle's
+    radius from the axis to the contact point, mg and the turning rate. Upright, seen from the side:
+    the disk on the floor, its radius and its velocity."""
+    name, coin = next(iter(fig.scene.rolls_on_edge.items()))
+    body = fig.scene.bodies[name]
+    if coin.tilt is None:
+        fig.ground(-1.6, 1.6)
+        fig.add("\\draw[body] (0,1) circle (1); \\fill (0,1) circle (0.04);")
+        fig.line((0, 1), (0.71, 1.71), "thin")
+        fig.label((0.3, 1.4), (1, -1), fig.m(coin.radius))
+        speed = fig.ask_symbol("rolls_on_edge", name, "upright.min_speed") or "v"
+        fig.arrow((0, 1), (1.3, 0), "velocity", f"${speed}$")
+        fig.gravity_arrow((0, 1), body, 0.8, toward=(-1, 0))
+        return
+    tilt = _clamp(fig.num(coin.tilt, 0.4), 0.25, 0.8)
+    lean = (-math.sin(tilt), math.cos(tilt))  # from the contact point to the center, toward the axis
+    center = _add((0.0, 0.0), lean, 1.0)
+    axis_x = -_clamp(fig.num(coin.circle, 3.0) / fig.num(coin.radius, 1.0), 1.6, 3.0)
+    fig.ground(axis_x - 0.6, 1.2)
+    fig.line((axis_x, 0), (axis_x, 2.6), "axis")
+    fig.add(f"\\draw[body, rotate around={{{_f(math.degrees(tilt))}:{_pt(center)}}}] {_pt(center)} "
+            "ellipse (0.12 and 1);")
+    fig.add(f"\\fill {_pt(center)} circle (0.04); \\fill (0,0) circle (0.04);")
+    fig.line((0, 0), (0, 1.6), "thin, dashed")
+    fig.arc((0, 0), 1.35, 90, 90 + math.degrees(tilt), fig.tex(coin.tilt), label_radius=1.4)
+    fig.dimension((axis_x, 0), (0, 0), fig.tex(coin.circle), side=-1, gap=0.45)
+    fig.gravity_arrow(center, body, 0.8, toward=(1, 0))
+    fig.add(f"\\draw[->, thick] ({_f(axis_x + 0.4)},2.4) arc[start angle=0, end angle=300, x radius=0.4, "
+            "y radius=0.12];")
+    rate = fig.ask_symbol("rolls_on_edge", name, "steady.precession") or r"\Omega"
+    fig.label((axis_x - 0.45, 2.4), (-1, 0), f"${rate}$")
 
 
 def _wheel(fig: _Figure) -> None:
