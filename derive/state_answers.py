@@ -20,7 +20,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import durations, friction, grips, impacts, lagrange, moves, newton_euler
+from derive.mechanics import durations, friction, grips, impacts, impulses, lagrange, moves, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.clutch import Clutch
@@ -214,6 +214,33 @@ class StateAnswers:
             return impacts.impact(self._scene_with(joints + (made,)), self.coordinates, before, route, bounce)
         except impacts.ImpactError as error:
             raise state_motion.StateLimit(str(error)) from None
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
+    def _impact_by(self, name: str, route: str) -> impacts.Impact:
+        """The impact of the state `name` by `route` (Lagrange's is the chain's own)."""
+        if route == "lagrange":
+            return self._chain.impacts[name]
+        start = self.scene.states[name].start
+        return self._impact(name, self.states[start].values, self._chain.joints[start], self._chain.made[name], route)
+
+    def _impulse(self, q: Quantity, name: str, route: str) -> sp.Expr:
+        """The impulse a body takes in the impact of the state `name`, or a joint gives the body it
+        holds (derive.mechanics.impulses): by Lagrange's route from the changes of momentum, by
+        Newton–Euler's from the impact's impulse equations."""
+        start = self.scene.states[name].start
+        before, coords = self.states[start].values, self.coordinates
+        scene = self._scene_with((*self._chain.joints[start], self._chain.made[name]))
+        solved = self._impact_by(name, route)
+        joint = next((p for p in scene.constraints if p.name == q.target), None)
+        if route == "lagrange":
+            after = self.states[name].values
+            vector = (impulses.by_momentum(scene, coords, before, after, q.target) if joint is None else
+                      impulses.joint_by_momentum(scene, coords, before, after, solved.impulses, joint))
+        else:
+            at = {c.q: before[c.q] for c in coords.all}
+            vector = impulses.on_body(scene.constraints if joint is None else [joint], coords, at, solved.impulses,
+                                      q.target if joint is None else joint.body)
+        return vector[0 if q.detail == "x" else 1]
 
     def _after_impact(self, name: str, before: dict, impact: impacts.Impact, scene) -> state_motion.Reached:
         """The state just after an impact: where the bodies were, at the velocities the impact leaves."""

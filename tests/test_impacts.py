@@ -431,3 +431,86 @@ def test_a_state_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine
         "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    top: {from: bounced, when: stops}\n").replace(
         "ask:\n", "ask:\n  h: {meaning: highest point, of: ball.position.y, in: top, unit: m}\n")
     assert "grips or slides by the variant" in refused(tmp_path, text, "scene.states.top", exit_code=1)
+
+
+DROPPED = """\
+id: ball_dropped_on_floor
+title: A ball bounces on a floor
+topic: conservation
+parameters:
+  m: {meaning: mass of the ball, unit: kg, range: [0.1, 0.5], sig_figs: 2}
+  v: {meaning: speed of the ball as it strikes, unit: m/s, range: [1, 5], sig_figs: 2}
+  e: {meaning: coefficient of restitution, unit: 1, range: [0.3, 0.9], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    floor: {plane: {angle: 0, through: [0, 0]}}
+  bodies:
+    ball: {shape: point, mass: m, at: [0, 0]}
+  loads:
+    - gravity: g
+  states:
+    falling: {rates: {ball.velocity.x: 0, ball.velocity.y: -v}}
+    bounced: {from: falling, event: {bounce: ball, to: floor, restitution: e}}
+ask:
+  Jy: {meaning: the floor's impulse on the ball, of: ball.impulse.y, in: bounced, unit: N*s}
+  Jx: {meaning: the horizontal impulse, of: ball.impulse.x, in: bounced, unit: N*s}
+question: |
+  A ball of mass {{ m }} strikes a floor at {{ v }}; the coefficient of restitution is {{ e }}.
+"""
+
+
+def test_a_ball_bouncing_on_a_floor_takes_the_impulse_m_1_plus_e_v(tmp_path):
+    """Serway & Jewett ch. 9 (the impulse-momentum theorem): a ball that meets a floor at v and
+    leaves at e v takes m (1 + e) v, up; by its momentum and by the impact's impulse equations."""
+    solution = Solution(problem.load(write_problem(tmp_path, DROPPED)))
+    m, v, e = _symbols(solution, "m", "v", "e")
+    assert sp.simplify(solution.expression("Jy") - m * (1 + e) * v) == 0 and solution.expression("Jx") == 0
+    checks = report.solve(solution.problem, solution=solution)["checks"]
+    assert all(c["passed"] for c in checks.values()) and "Jy in N·s" in checks["dimensions"]["reading"]
+
+
+def test_the_pin_of_a_struck_rod_takes_the_change_of_momentum_of_the_rod_and_the_bullet(tmp_path):
+    """A bullet that sticks in the end of a hanging rod (Serway & Jewett ch. 11: omega = 3 m v/(L (M +
+    3 m))): the hinge's impulse is the change of momentum of both, (M L/2 + m L) omega - m v, which
+    m M v/(2 (M + 3 m)), the way the bullet went (the end is below the center of percussion, where
+    the pin would take none); the bullet takes m (L omega - v)."""
+    text = Path("tests/textbook/states/rod_ballistic_pendulum.yaml").read_text().replace("ask:\n", (
+        "ask:\n  P: {meaning: the hinge's impulse, of: hinge.impulse.x, in: struck, unit: N*s}\n"
+        "  Jb: {meaning: the bullet's impulse, of: bullet.impulse.x, in: struck, unit: N*s}\n"))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m, M, L, v = _symbols(solution, "m", "M", "L", "v")
+    omega = 3 * m * v / (L * (M + 3 * m))
+    assert sp.simplify(solution.expression("P") - ((M * L / 2 + m * L) * omega - m * v)) == 0
+    assert sp.simplify(solution.expression("Jb") - m * (L * omega - v)) == 0
+    assert sp.simplify(solution.expression("P") - m * M * v / (2 * (M + 3 * m))) == 0
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_the_second_route_catches_a_wrong_impulse(tmp_path, monkeypatch):
+    """The impulse equations' side doubled for the joints' forces on a body: the momentum route
+    disagrees, and the routes check names the ask."""
+    from derive.mechanics import impulses
+    original = impulses.on_body
+    monkeypatch.setattr(impulses, "on_body", lambda parts, coords, at, values, body:
+                        (2 if len(parts) == 1 else 1) * original(parts, coords, at, values, body))
+    with pytest.raises(CheckFailure, match="disagree on P"):
+        report.solve(problem.load("tests/textbook/states/rod_center_of_percussion.yaml"), {}, 4)
+
+
+@pytest.mark.parametrize("ask, field, words", [
+    ("{meaning: impulse, of: ball.impulse.y, in: falling, unit: N*s}", "ask.Jy.in", "not just after one"),
+    ("{meaning: impulse, of: ball.impulse.y, unit: N*s}", "ask.Jy.in", "is read in a state"),
+    ("{meaning: impulse, of: ball.impulse.z, in: bounced, unit: N*s}", "ask.Jy.of", "impulse.x, impulse.y"),
+])
+def test_an_impulse_asked_where_it_means_nothing_is_refused(tmp_path, ask, field, words):
+    text = DROPPED.replace("{meaning: the floor's impulse on the ball, of: ball.impulse.y, in: bounced, unit: N*s}", ask)
+    assert words in refused(tmp_path, text, field)
+
+
+def test_a_clutch_gives_no_impulse_of_a_force(tmp_path):
+    text = DISKS.replace("EVENT", "{lock: upper, to: lower}").replace(
+        "    shaft: {pin: upper.center, to: lower.center}\n",
+        "    shaft: {pin: upper.center, to: lower.center}\n    brake: {clutch: lower, to: ground}\n").replace(
+        "of: kinetic_energy, in: coupled, unit: J", "of: brake.impulse.x, in: coupled, unit: N*s")
+    assert "gives no force at a point" in refused(tmp_path, text, "ask.K1.of")

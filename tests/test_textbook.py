@@ -537,6 +537,18 @@ EXPECTED.update({
         "K1": lambda s: s.m * (s.v * (3 * s.m - s.M * s.e) / (s.M + 3 * s.m)) ** 2 / 2
         + s.M * s.L**2 / 6 * (3 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 3 * s.m))) ** 2,
     },
+    # Kleppner & Kolenkow ch. 7: the blow J_b = (1 + e) m v I_p/(I_p + m d^2), I_p = M L^2/3, from
+    # I_p omega = J_b d and the ends' relative speed reversed, d omega - v' = e v; the ball takes
+    # -J_b, the rod M omega L/2 = 3 J_b d/(2 L), the pin the rest, J_b (3 d/(2 L) - 1): none at the
+    # center of percussion, d = 2 L/3, and none upward (finite forces give no impulse).
+    "rod_center_of_percussion": {
+        "J": lambda s: -(1 + s.e) * s.m * s.v * s.M * s.L**2 / (s.M * s.L**2 + 3 * s.m * s.d**2),
+        "Jrod": lambda s: 3 * s.d / (2 * s.L) * (1 + s.e) * s.m * s.v * s.M * s.L**2 / (s.M * s.L**2 + 3 * s.m * s.d**2),
+        "P": lambda s: (3 * s.d / (2 * s.L) - 1) * (1 + s.e) * s.m * s.v * s.M * s.L**2
+        / (s.M * s.L**2 + 3 * s.m * s.d**2),
+        "Py": lambda s: sp.Integer(0),
+        "dp": lambda s: 2 * s.L / 3,
+    },
     # Serway & Jewett ch. 11: about the axle (M R^2/2 + m R^2) w0 = (M R^2/2) omega.
     # Kleppner & Kolenkow ch. 7 / Morin ch. 8: the floor's impulse acts at the point of contact,
     # so the angular momentum about it is kept, m v_x R = m v_x' R + (2/5) m R^2 (-omega'), and
