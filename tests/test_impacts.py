@@ -514,3 +514,76 @@ def test_a_clutch_gives_no_impulse_of_a_force(tmp_path):
         "    shaft: {pin: upper.center, to: lower.center}\n    brake: {clutch: lower, to: ground}\n").replace(
         "of: kinetic_energy, in: coupled, unit: J", "of: brake.impulse.x, in: coupled, unit: N*s")
     assert "gives no force at a point" in refused(tmp_path, text, "ask.K1.of")
+
+
+GLANCING = Path(__file__).parent / "textbook/states/disks_glancing_collision.yaml"
+
+
+def test_two_rough_pucks_that_grip_share_the_tangential_impulse_of_their_effective_mass(tmp_path):
+    """Gripping, the contact points leave with no relative tangential velocity; the tangential
+    impulse is then the slip times the effective mass 1/(1/m1 + R1^2/I1 + 1/m2 + R2^2/I2) = m1 m2/(3
+    (m1 + m2)) for disks (Kleppner & Kolenkow ch. 7: impulse and angular impulse about each center),
+    and each puck keeps its angular momentum about the point of contact, where its only impulse
+    acts; the worked solution shows the momentum and the angular momentum about the origin kept."""
+    text = GLANCING.read_text().replace("restitution: e}}", "restitution: e, grips: true}}").replace(
+        "ask:\n", "ask:\n  w1: {meaning: spin, of: striker.angular_velocity, in: struck, unit: rad/s}\n"
+                  "  w2: {meaning: spin, of: target.angular_velocity, in: struck, unit: rad/s}\n")
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m1, m2, R1, R2, phi, v = _symbols(solution, "m1", "m2", "R1", "R2", "phi", "v")
+    x = {n: solution.expression(n) for n in ("v1x", "v1y", "v2x", "v2y", "w1", "w2")}
+    n, contact = sp.Matrix([-sp.cos(phi), sp.sin(phi)]), R2 * sp.Matrix([-sp.cos(phi), sp.sin(phi)])
+    t = sp.Matrix([n[1], -n[0]])
+    centers = {1: (R1 + R2) * n, 2: sp.zeros(2, 1)}
+    after = {1: sp.Matrix([x["v1x"], x["v1y"]]), 2: sp.Matrix([x["v2x"], x["v2y"]])}
+    spin = {1: x["w1"], 2: x["w2"]}
+
+    def at_contact(i):  # the velocity of puck i's point at the contact
+        r = contact - centers[i]
+        return after[i] + spin[i] * sp.Matrix([-r[1], r[0]])
+
+    assert sp.simplify((at_contact(1) - at_contact(2)).dot(t)) == 0
+    slip = sp.Matrix([v, 0]).dot(t)
+    assert sp.simplify(m2 * after[2].dot(t) - m1 * m2 * slip / (3 * (m1 + m2))) == 0  # dragged along the slip
+    for i, (mass, radius, before) in {1: (m1, R1, sp.Matrix([v, 0])), 2: (m2, R2, sp.zeros(2, 1))}.items():
+        r = centers[i] - contact
+        moment = lambda u, w: mass * (r[0] * u[1] - r[1] * u[0]) + mass * radius**2 / 2 * w  # noqa: E731
+        assert sp.simplify(moment(after[i], spin[i]) - moment(before, 0)) == 0
+    (kept,) = [s for s in solution.steps()["the state struck"] if s.text.startswith("Check: no impulse from outside")]
+    assert all(sp.simplify(a.rhs - b.rhs) == 0 for a, b in zip(kept.equations[::2], kept.equations[1::2]))
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_a_puck_off_a_rod_on_a_pin_keeps_the_angular_momentum_about_the_pin(tmp_path):
+    """A puck strikes a hanging rod's side: the only impulse from outside is at the pin, so the
+    angular momentum about it is kept (m v d before, shared after), shown and checked."""
+    text = (Path(__file__).parent / "textbook/states/rod_center_of_percussion.yaml").read_text().replace(
+        "    ball: {shape: point, mass: m, at: [0, -d]}",
+        "    ball: {shape: disk, mass: m, radius: r, at: [-r, -d]}").replace(
+        "rod.angular_velocity: 0}}", "rod.angular_velocity: 0, ball.angular_velocity: 0}}").replace(
+        "  e: {", "  r: {meaning: radius of the puck, unit: m, range: [0.02, 0.05], sig_figs: 2}\n  e: {")
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m, M, L, d, v, e = _symbols(solution, "m", "M", "L", "d", "v", "e")
+    assert sp.simplify(solution.expression("dp") - 2 * L / 3) == 0  # a smooth puck: as a point mass
+    (kept,) = [s for s in solution.steps()["the state bounced"] if "about the pin" in s.text]
+    assert [sp.simplify(eq.rhs - m * v * d) for eq in kept.equations] == [0, 0]
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("at: [-(R1 + R2)*cos(phi), (R1 + R2)*sin(phi)]", "at: [-(R1 + 2*R2)*cos(phi), (R1 + 2*R2)*sin(phi)]",
+     "does not touch the target"),
+    ("shape: disk, mass: m", "shape: rod, mass: m", "a bounce off a body is of a point mass or a round body"),
+    ("target: {shape: disk, mass: m2, radius: R2,", "target: {shape: box, mass: m2, side_a: R2, side_b: R2, side_c: R2,",
+     "the normal is known for round bodies and rods"),
+])
+def test_a_bounce_of_bodies_that_do_not_touch_or_of_unknown_shapes_is_refused(tmp_path, old, new, words):
+    text = GLANCING.read_text().replace(old, new)
+    if "rod" in new:  # two rods
+        text = text.replace("radius: R", "length: R")
+    assert words in refused(tmp_path, text, "scene.states.struck")
+
+
+def test_a_puck_beside_a_rod_but_not_touching_it_is_refused(tmp_path):
+    text = (Path(__file__).parent / "textbook/states/disk_strikes_free_rod.yaml").read_text().replace(
+        "at: [-r, L/2]", "at: [-2*r, L/2]")
+    assert "from the rod's axis, not its radius" in refused(tmp_path, text, "scene.states.struck")

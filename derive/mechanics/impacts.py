@@ -1,8 +1,9 @@
 """Impacts in a state of a scene: a point mass that sticks to a body (a bullet into a hanging
 rod, a child jumping onto a turntable), a body that sticks to another, two turning bodies that
-lock together (a clutch, a disk dropped onto another), a point mass that bounces off a body
-with a coefficient of restitution (a ball off the end of a hanging rod), a round body or a
-point mass that bounces off a fixed surface (a ball off a floor).
+lock together (a clutch, a disk dropped onto another), a point mass or a round body that
+bounces off a body with a coefficient of restitution (a ball off the end of a hanging rod, a
+puck off a free rod or another puck), a round body or a point mass that bounces off a fixed
+surface (a ball off a floor).
 
 The impact makes a joint (`joint`): a pin holding the point mass where it struck, a weld, a
 clutch, or for a bounce a touch that lasts the instant only (`Bounce`: its normal rate after is
@@ -152,11 +153,13 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: s
     """The joint an impact (derive.scene.Event) makes as the bodies are in the state
     `values`: a clutch (`lock`, at the turn between them then); for `stick` a pin holding a point
     mass where it is on the other body, or a weld of two turning bodies; for `bounce` the touch
-    of a point mass on the other body, for the instant (along the rod's normal, or a round
-    body's radius), or of a body on a fixed surface (`to` names one of the scene's surfaces).
+    of a point mass or a round body's rim on the other body, for the instant (along the rod's
+    normal, or the line of centers), or of a body on a fixed surface (`to` names one of the
+    scene's surfaces).
 
     Raises ValueError where two point masses that are apart would stick (a particle has no frame
-    to hold another in), or a bounce has no normal derive knows. `decide` (an expression's value
+    to hold another in), a round body that bounces does not touch the other, or a bounce has no
+    normal derive knows. `decide` (an expression's value
     at the middle of the ranges) turns a rod's normal toward the side the point mass comes from."""
     kind, body, to = event.kind, event.body, event.to
     at = {c.q: values[c.q] for c in coords.all}
