@@ -4,6 +4,7 @@ cord, a child onto a turntable, a clutch and a brake); here the rules a user mee
 and the second route shown to catch a wrong impact."""
 import dataclasses
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -426,11 +427,49 @@ def test_a_wrong_rough_bounce_is_refused_naming_its_field(tmp_path, old, new, fi
     assert words in refused(tmp_path, GRIPPING.read_text().replace(old, new), field)
 
 
-def test_a_state_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
+def test_a_flight_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
+    """The ball flies off the floor in a parabola, whatever the bounce's regime: not a straight line
+    of its coordinates, which derive cannot yet follow (exit 1, naming the state)."""
     text = GRIPPING.read_text().replace(
         "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    top: {from: bounced, when: stops}\n").replace(
         "ask:\n", "ask:\n  h: {meaning: highest point, of: ball.position.y, in: top, unit: m}\n")
-    assert "grips or slides by the variant" in refused(tmp_path, text, "scene.states.top", exit_code=1)
+    assert "not a straight line" in refused(tmp_path, text, "scene.states.top", exit_code=1)
+
+
+def test_an_event_just_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
+    text = GRIPPING.read_text().replace(
+        "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    again: {from: bounced, event: {bounce: ball, "
+                                       "to: floor, restitution: e}}\n").replace(
+        "ask:\n", "ask:\n  w: {meaning: spin, of: ball.angular_velocity, in: again, unit: rad/s}\n")
+    assert "only a state the motion gets to (when:) may follow it" in refused(tmp_path, text, "scene.states.again",
+                                                                             exit_code=1)
+
+
+def test_the_motion_after_a_bounce_is_answered_in_the_variants_regime_or_refused_naming_it(tmp_path):
+    """A ball strikes a wheel's rim with friction: at the middle of the ranges it grips, and the
+    wheel turns at m v/(R (M + 2 m)) (its angular momentum about the axle, m v R/2, shared with the
+    ball gripping at the rim), a quarter turn in pi R (M + 2 m)/(2 m v). A variant where the bounce
+    slides is refused, naming what the bounce does there, not given the gripping wheel's time;
+    the worked solution says which regime the motion after was derived in."""
+    text = WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e, friction: {static: mu}}").replace(
+        "  e: {", "  mu: {meaning: coefficient of friction at the rim, unit: 1, range: [0.1, 0.9], sig_figs: 2}\n  e: {"
+    ).replace("    bounced: {from: coming, event: {bounce: ball, to: wheel, restitution: e, friction: {static: mu}}}\n",
+              "    bounced: {from: coming, event: {bounce: ball, to: wheel, restitution: e, friction: {static: mu}}}\n"
+              "    turned: {from: bounced, when: {wheel.angle: -pi/2}}\n").replace(
+        "ask:\n", "ask:\n  t: {meaning: time to turn a quarter, of: time, in: turned, unit: s}\n")
+    path = write_problem(tmp_path, text)
+    solution = Solution(problem.load(path))
+    m, M, R, v = _symbols(solution, "m", "M", "R", "v")
+    assert sp.simplify(solution.expression("t") - sp.pi * R * (M + 2 * m) / (2 * m * v)) == 0
+    assert any("where it grips, as at the middle" in s.text for s in solution.steps()["the state turned"])
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+    fixed = ["--set", "m=0.1", "--set", "M=3", "--set", "R=0.3", "--set", "v=2", "--set", "e=0.3"]
+    gripping = run_derive("solve", str(path), *fixed, "--set", "mu=0.9", "--format", "json")
+    assert gripping.returncode == 0, gripping.stderr
+    assert float(json.loads(gripping.stdout)["answers"]["t"]["value"]) == pytest.approx(math.pi * 0.3 * 3.2 / 0.4)
+    sliding = run_derive("solve", str(path), *fixed, "--set", "mu=0.1")
+    assert sliding.returncode == 2 and "the bounce bounced slides (friction along -t) at these values, and the motion " \
+        "after it to the state turned is derived where it grips" in sliding.stderr, sliding.stderr
 
 
 DROPPED = """\
