@@ -502,8 +502,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     names = {c.name: c for c in scene.constraints}
     if head in names:
         part = names[head]
+        pushes = any(k.startswith("reaction") or k == "normal" for k in part.unknowns())  # a force at a point
         if rest in IMPULSES:
-            if not any(k.startswith("reaction") or k in ("normal", "impulse") for k in part.unknowns()):
+            if not pushes:
                 raise ValueError(f"{head} gives no force at a point, so no impulse of one: a body's impulse is asked "
                                  "as BODY.impulse.x|y")
             return Quantity("impulse", head, rest[-1])
@@ -513,7 +514,7 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if isinstance(part, Contact) and part.point is not None and "friction" in allowed:
             allowed += ("min_friction_coefficient",)
         if rest not in allowed:
-            raise ValueError(f"{head} has {', '.join(allowed)}, impulse.x, impulse.y; not {rest!r}")
+            raise ValueError(f"{head} has {', '.join(allowed + (IMPULSES if pushes else ()))}; not {rest!r}")
         return Quantity("contact" if rest == "min_friction_coefficient" else "force", head, rest)
     known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
     raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})"

@@ -626,3 +626,13 @@ def test_a_puck_beside_a_rod_but_not_touching_it_is_refused(tmp_path):
     text = (Path(__file__).parent / "textbook/states/disk_strikes_free_rod.yaml").read_text().replace(
         "at: [-r, L/2]", "at: [-2*r, L/2]")
     assert "from the rod's axis, not its radius" in refused(tmp_path, text, "scene.states.struck")
+
+
+def test_a_wheel_named_first_bounces_a_ball_as_the_ball_off_the_wheel(tmp_path):
+    """`{bounce: wheel, to: ball}` is the same touch as `{bounce: ball, to: wheel}`: the point mass
+    on the wheel's rim, along its radius."""
+    (tmp_path / "a").mkdir(), (tmp_path / "b").mkdir()
+    one, two = (Solution(problem.load(write_problem(tmp_path / name, WHEEL.replace("EVENT", event))))
+                for name, event in (("a", "{bounce: ball, to: wheel, restitution: e}"),
+                                    ("b", "{bounce: wheel, to: ball, restitution: e}")))
+    assert all(sp.simplify(one.expression(n) - two.expression(n)) == 0 for n in ("omega", "vx", "vy"))

@@ -223,8 +223,10 @@ def _bounce(scene: Scene, coords: Coordinates, values: dict, name: str, body: st
             decide) -> Touch:
     """The touch of a bounce off a body: the bouncer (a point mass, or a round body by its rim) on a
     rod's side (the normal across the rod) or on a round body's rim (the normal along the line of
-    centers); `body` bounces off `to`, or where only `to` is round or a point, `to` off `body`."""
-    bouncer, host = (body, to) if _round(scene.bodies[body]) else (to, body)
+    centers); a point mass bounces off the other body, else a round body off the other."""
+    first, second = scene.bodies[body], scene.bodies[to]
+    bouncer, host = ((body, to) if not first.rotates else (to, body) if not second.rotates
+                     else (body, to) if _round(first) else (to, body))
     if not _round(scene.bodies[bouncer]):
         raise ValueError(f"a bounce off a body is of a point mass or a round body: where a {scene.bodies[body].shape} "
                          f"and a {scene.bodies[to].shape} touch is not known")
