@@ -636,3 +636,22 @@ def test_a_wheel_named_first_bounces_a_ball_as_the_ball_off_the_wheel(tmp_path):
                 for name, event in (("a", "{bounce: ball, to: wheel, restitution: e}"),
                                     ("b", "{bounce: wheel, to: ball, restitution: e}")))
     assert all(sp.simplify(one.expression(n) - two.expression(n)) == 0 for n in ("omega", "vx", "vy"))
+
+
+def test_a_rough_bounces_impulses_are_given_in_each_regime(tmp_path):
+    """Off a rough floor the ball takes m (1 + e) v_y up and, gripping, (2/7) m v_x back (Kleppner &
+    Kolenkow ch. 7: it leaves rolling at 5 v_x/7); sliding, mu times the normal one: each regime's
+    impulse by both routes, the answer a Piecewise over them."""
+    text = GRIPPING.read_text().replace("ask:\n", (
+        "ask:\n  Jx: {meaning: impulse along the floor, of: ball.impulse.x, in: bounced, unit: N*s}\n"
+        "  Jy: {meaning: impulse up, of: ball.impulse.y, in: bounced, unit: N*s}\n"))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m, v, theta, e, mu, R = _symbols(solution, "m", "v", "theta", "e", "mu", "R")
+    at = {m: sp.Rational(1, 5), R: sp.Rational(1, 20), v: 3, theta: sp.pi / 4, e: sp.Rational(1, 2)}
+    grips, slides = {**at, mu: sp.Rational(4, 5)}, {**at, mu: sp.Rational(1, 10)}
+    jx, jy = solution.expression("Jx"), solution.expression("Jy")
+    vx, vy = 3 * sp.sin(sp.pi / 4), 3 * sp.cos(sp.pi / 4)
+    assert sp.simplify(jy.xreplace(grips) - sp.Rational(1, 5) * sp.Rational(3, 2) * vy) == 0
+    assert sp.simplify(jx.xreplace(grips) + sp.Rational(2, 7) * sp.Rational(1, 5) * vx) == 0
+    assert sp.simplify(jx.xreplace(slides) + sp.Rational(1, 10) * jy.xreplace(slides)) == 0
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
