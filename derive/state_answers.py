@@ -229,6 +229,12 @@ class StateAnswers:
             return extent(body.shape, body.sizes) if body.composite is None else body.composite.extent()
 
         offset = joint.offset if isinstance(joint, Weld) else joint.to_offset
+        if isinstance(joint, impacts.Touch):  # the point struck, on the body struck
+            struck = reach(joint.to)
+            where = sum((e**2 for e in offset), sp.Integer(0))
+            return [] if struck is None else [(tidy(struck**2 - where), (
+                f"the {joint.body} would strike the {joint.to} {sp.sstr(tidy(sp.sqrt(where)))} from its center in the "
+                f"state {start}, beyond its end: a bounce off a rod's end or corner is not modelled"))]
         reaches = [reach(joint.to), reach(joint.body)]
         if any(r is None for r in reaches):
             return []

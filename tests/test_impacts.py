@@ -655,3 +655,12 @@ def test_a_rough_bounces_impulses_are_given_in_each_regime(tmp_path):
     assert sp.simplify(jx.xreplace(grips) + sp.Rational(2, 7) * sp.Rational(1, 5) * vx) == 0
     assert sp.simplify(jx.xreplace(slides) + sp.Rational(1, 10) * jy.xreplace(slides)) == 0
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_a_puck_that_would_strike_beyond_the_rods_end_is_refused(tmp_path):
+    """Its center a radius from the rod's axis but past the end: it would meet the end's corner,
+    which is not modelled (the smooth side's normal would be wrong there)."""
+    text = (Path(__file__).parent / "textbook/states/disk_strikes_free_rod.yaml").read_text().replace(
+        "at: [-r, L/2]", "at: [-r, L/2 + r/2]")
+    assert "beyond its end: a bounce off a rod's end or corner is not modelled" in refused(
+        tmp_path, text, "scene.states.struck")
