@@ -171,6 +171,8 @@ class Solution(StateAnswers, CrossChecks):
                 raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
         if q.kind == "oscillation":
             return self._exact_period(ask.amplitude, route)[0]
+        if q.kind == "impulse":
+            return self._impulse(q, ask.state, route)
         if q.kind in RATE_KINDS:
             return self._rate(q, ask.state)
         derivation = self.derivations[route]

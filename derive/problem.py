@@ -291,6 +291,9 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
         raise reader.fail(field, f"after a move, where the bodies are depends on how it is made (a turntable turns "
                                  f"while a child walks on it), and so do the directions of their velocities and "
                                  f"forces: in the state {raw} ask an angular velocity, a speed or the kinetic energy")
+    if quantity.kind == "impulse" and not (event and event.kind in ("stick", "lock", "bounce")):
+        raise reader.fail(field, f"an impulse is given in an impact: the state {raw} is not just after one (a state "
+                                 "with event: {stick|lock|bounce: ...})")
     if quantity.kind == "time" and event:
         raise reader.fail(field, f"the state {raw} is just after an impact, which takes no time: ask the time in a "
                                  "state the motion gets to (when:)")

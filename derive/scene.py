@@ -330,13 +330,14 @@ class Scene:
 #: Quantities that come out of the equations of motion (both routes).
 DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation",
                  "equilibrium", "velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
-                 "kinetic_energy_change", "center_of_mass_velocity"}
+                 "kinetic_energy_change", "center_of_mass_velocity", "impulse"}
 #: Read in a state (`in: STATE`): the rates only there, the others at the placement at rest without it.
 STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velocity", "angular_velocity", "speed",
-               "position", "angle", "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass_velocity"}
+               "position", "angle", "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass_velocity",
+               "impulse"}
 #: What a state gives: read only with `in: STATE` (positions and times only in a state reached).
 RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
-              "kinetic_energy_change", "center_of_mass_velocity"}
+              "kinetic_energy_change", "center_of_mass_velocity", "impulse"}
 #: Answered by a small system of derive.mechanics, with a second route of its own.
 SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
@@ -357,8 +358,9 @@ class Quantity:
     ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
     the scene rests: derive.mechanics.equilibrium); read in a state (RATE_KINDS) also
-    "kinetic_energy_change" (every body's, in the state minus in the state it comes from) and
-    "center_of_mass_velocity" (of every body; x or y).
+    "kinetic_energy_change" (every body's, in the state minus in the state it comes from),
+    "center_of_mass_velocity" (of every body; x or y) and, just after an impact, "impulse" (a
+    body's, or a joint's on the body it holds; x or y: derive.mechanics.impulses).
     """
 
     kind: str
@@ -377,6 +379,8 @@ CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "
 #: Of a body rolling without slipping at its given velocity (derive.mechanics.rolling).
 ROLLING_QUANTITIES = ("angular_velocity", "distance_per_turn", "kinetic_energy", "translational_energy",
                       "rotational_energy", "rotational_fraction")
+#: A body's impulse, or a joint's on the body it holds, just after an impact.
+IMPULSES = ("impulse.x", "impulse.y")
 INCLINE_ONLY = ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom")
 
 def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity:
@@ -486,6 +490,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             return Quantity("acceleration", head, rest[-1])
         if rest in ("velocity.x", "velocity.y"):
             return Quantity("velocity", head, rest[-1])
+        if rest in IMPULSES:
+            return Quantity("impulse", head, rest[-1])
         if rest == "speed" or rest in ("angular_velocity", "angle") and body.rotates:
             return Quantity(rest, head, None)
         if rest in ("position.x", "position.y"):
@@ -517,7 +523,7 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
             return Quantity("contact", head, rest)
         known = ("inertia, acceleration.x, acceleration.y, velocity.x, velocity.y, speed, position.x, position.y, "
-                 "equilibrium.x, equilibrium.y"
+                 "equilibrium.x, equilibrium.y, impulse.x, impulse.y"
                  + (", angular_acceleration, angular_velocity, angle, equilibrium.angle" if body.rotates else ""))
         if contact:
             known += ", " + ", ".join(CONTACT_QUANTITIES)
@@ -525,13 +531,19 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     names = {c.name: c for c in scene.constraints}
     if head in names:
         part = names[head]
+        pushes = any(k.startswith("reaction") or k == "normal" for k in part.unknowns())  # a force at a point
+        if rest in IMPULSES:
+            if not pushes:
+                raise ValueError(f"{head} gives no force at a point, so no impulse of one: a body's impulse is asked "
+                                 "as BODY.impulse.x|y")
+            return Quantity("impulse", head, rest[-1])
         allowed = tuple(part.unknowns())
         if isinstance(part, Contact) and part.has_friction and "friction" not in allowed:
             allowed += ("friction",)
         if isinstance(part, Contact) and part.point is not None and "friction" in allowed:
             allowed += ("min_friction_coefficient",)
         if rest not in allowed:
-            raise ValueError(f"{head} has {', '.join(allowed)}; not {rest!r}")
+            raise ValueError(f"{head} has {', '.join(allowed + (IMPULSES if pushes else ()))}; not {rest!r}")
         return Quantity("contact" if rest == "min_friction_coefficient" else "force", head, rest)
     known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
     raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})"

@@ -20,7 +20,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import durations, friction, grips, impacts, lagrange, moves, newton_euler
+from derive.mechanics import durations, friction, grips, impacts, impulses, lagrange, moves, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.clutch import Clutch
@@ -39,12 +39,14 @@ class Chain:
     events made on the way to each (`joints`: the scene in a state has them, a moved pin in place
     of the pin it was); and per event, its solution by Lagrange (`impacts`: an impact's or a
     move's) and the joint it made (`made`: a bounce's touch lasts its instant only, in no state's
-    scene)."""
+    scene); per state whose motion starts just after a bounce that grips or slides by the variant,
+    the bounce's regime it was derived in (`followed`: the one at the middle of the ranges)."""
 
     reached: dict[str, state_motion.Reached]
     joints: dict[str, tuple]
     impacts: dict[str, impacts.Impact | moves.Moved]
     made: dict[str, object]
+    followed: dict[str, impacts.Regime] = dataclasses.field(default_factory=dict)
 
 
 def _in_place(joints: tuple, made) -> tuple:
@@ -69,16 +71,22 @@ class StateAnswers:
         if self.scene.states and len(self.regimes) > 1 and self._sliding is None:
             raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
                                      "give contact: rolling or sliding")
-        result, joints, solved, made = {}, {}, {}, {}
+        result, joints, solved, made, followed = {}, {}, {}, {}, {}
 
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
         for name, state in self.scene.states.items():
             joints[name] = joints[state.start] if state.start else self._slides_from(result)
             try:
+                found = result
                 if isinstance(solved.get(state.start), impacts.Impact) and solved[state.start].regimes:
-                    raise state_motion.StateLimit(f"derive the motion after the bounce {state.start}, which grips or "
-                                                  "slides by the variant: ask in its state, or give grips: true")
+                    if state.event is not None or state.until and state.until[0] == "grips":
+                        raise state_motion.StateLimit(f"derive an event or a grip just after the bounce {state.start}, "
+                                                      "which grips or slides by the variant: only a state the motion "
+                                                      "gets to (when:) may follow it, or give grips: true")
+                    followed[name] = self._middle_regime(solved[state.start])
+                    found = {**result, state.start: dataclasses.replace(result[state.start], values={
+                        **result[state.start].values, **followed[name].impact.velocities})}
                 if isinstance(solved.get(state.start), moves.Moved) and solved[state.start].loose:
                     raise state_motion.StateError(f"where the bodies are after the turn {state.start} depends on how "
                                                   "long it takes (it keeps a momentum that is not zero): no state may "
@@ -91,7 +99,11 @@ class StateAnswers:
                         made[name] = self._gripped(state.until[1], reached.values)
                         joints[name] = _in_place(joints[name], made[name])
                     elif state.event is None:
-                        reached = self._state(state, result, joints[name])
+                        reached = self._state(state, found, joints[name])
+                        if name in followed:
+                            reached = dataclasses.replace(reached, steps=(Step(
+                                f"The motion after the bounce {state.start} where it {followed[name].name}, as at the "
+                                "middle of the ranges (a variant where it does otherwise is refused)"), *reached.steps))
                     elif state.event.kind == "move":
                         made[name] = moves.moved_pin(self._scene_with(joints[name]), state.event, state.event.place)
                         joints[name] = _in_place(joints[name], made[name])
@@ -119,7 +131,27 @@ class StateAnswers:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
-        return Chain(result, joints, solved, made)
+        return Chain(result, joints, solved, made, followed)
+
+    def _middle_regime(self, impact: impacts.Impact) -> impacts.Regime:
+        """The regime a rough bounce takes at the middle of the parameter ranges."""
+        which = sp.Piecewise(*((sp.Integer(k), r.where) for k, r in enumerate(impact.regimes)))
+        return impact.regimes[round(self._sample(which))]
+
+    def _regime_followed_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
+        """A state whose motion starts after a bounce that grips or slides by the variant was
+        derived in the bounce's regime at the middle of the ranges: a variant where the bounce does
+        otherwise is refused (its motion after is another one)."""
+        regime = self._chain.followed.get(name)
+        if regime is None:
+            return []
+        start = self.scene.states[name].start
+        regimes = self._chain.impacts[start].regimes
+        return [(sp.Piecewise(*((sp.Integer(1), r.where) for r in regimes[:k]), (sp.Integer(-1), other.where),
+                              (sp.Integer(1), True)), True,
+                 f"the bounce {start} {other.name} at these values, and the motion after it to the state {name} is "
+                 f"derived where it {regime.name}, as at the middle of the ranges: narrow the ranges")
+                for k, other in enumerate(regimes) if other is not regime]
 
     def _state(self, state, found: dict, joints: tuple) -> state_motion.Reached:
         coords = self.coordinates
@@ -197,6 +229,12 @@ class StateAnswers:
             return extent(body.shape, body.sizes) if body.composite is None else body.composite.extent()
 
         offset = joint.offset if isinstance(joint, Weld) else joint.to_offset
+        if isinstance(joint, impacts.Touch):  # the point struck, on the body struck
+            struck = reach(joint.to)
+            where = sum((e**2 for e in offset), sp.Integer(0))
+            return [] if struck is None else [(tidy(struck**2 - where), (
+                f"the {joint.body} would strike the {joint.to} {sp.sstr(tidy(sp.sqrt(where)))} from its center in the "
+                f"state {start}, beyond its end: a bounce off a rod's end or corner is not modelled"))]
         reaches = [reach(joint.to), reach(joint.body)]
         if any(r is None for r in reaches):
             return []
@@ -214,6 +252,33 @@ class StateAnswers:
             return impacts.impact(self._scene_with(joints + (made,)), self.coordinates, before, route, bounce)
         except impacts.ImpactError as error:
             raise state_motion.StateLimit(str(error)) from None
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
+    def _impact_by(self, name: str, route: str) -> impacts.Impact:
+        """The impact of the state `name` by `route` (Lagrange's is the chain's own)."""
+        if route == "lagrange":
+            return self._chain.impacts[name]
+        start = self.scene.states[name].start
+        return self._impact(name, self.states[start].values, self._chain.joints[start], self._chain.made[name], route)
+
+    def _impulse(self, q: Quantity, name: str, route: str) -> sp.Expr:
+        """The impulse a body takes in the impact of the state `name`, or a joint gives the body it
+        holds (derive.mechanics.impulses): by Lagrange's route from the changes of momentum, by
+        Newton–Euler's from the impact's impulse equations."""
+        start = self.scene.states[name].start
+        before, coords = self.states[start].values, self.coordinates
+        scene = self._scene_with((*self._chain.joints[start], self._chain.made[name]))
+        solved = self._impact_by(name, route)
+        joint = next((p for p in scene.constraints if p.name == q.target), None)
+        if route == "lagrange":
+            after = self.states[name].values
+            vector = (impulses.by_momentum(scene, coords, before, after, q.target) if joint is None else
+                      impulses.joint_by_momentum(scene, coords, before, after, solved.impulses, joint))
+        else:
+            at = {c.q: before[c.q] for c in coords.all}
+            vector = impulses.on_body(scene.constraints if joint is None else [joint], coords, at, solved.impulses,
+                                      q.target if joint is None else joint.body)
+        return vector[0 if q.detail == "x" else 1]
 
     def _after_impact(self, name: str, before: dict, impact: impacts.Impact, scene) -> state_motion.Reached:
         """The state just after an impact: where the bodies were, at the velocities the impact leaves."""
@@ -385,6 +450,7 @@ class StateAnswers:
                            for part in (*self.scene_in(start).constraints, made) for sign in part.signs()]
                 if isinstance(made, impacts.Touch) and made.rough:
                     result += self._rough_conditions(name)
+            result += self._regime_followed_conditions(name)  # first: the other conditions are of its regime
             forces = self.in_state("lagrange", name).raw
             # the state is real, first: where a formula puts it off the scene's geometry (a ball
             # higher than its cord reaches, a swing that would stop above the top), the motion

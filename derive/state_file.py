@@ -86,8 +86,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
 #: The events a state may follow: what each makes of the two bodies.
 EVENTS = {"stick": "the body sticks to the other where it touches it",
           "lock": "the two turning bodies turn together from then on (a clutch)",
-          "bounce": "a point mass bounces off a rod or a round body, or a round body or a point mass off a fixed "
-                    "surface, with restitution: e; smooth, or rough with friction: {static: mu} or grips: true",
+          "bounce": "a point mass or a round body bounces off a rod or a round body, or off a fixed surface, with "
+                    "restitution: e; smooth, or rough with friction: {static: mu} or grips: true",
           "move": "a point mass pinned to a body is carried to the point to: of that body by the scene's own forces "
                   "(a child walking to a turntable's center)",
           "turn": "a turning body turns through angle: relative to the body relative_to: by a couple between them "

@@ -560,3 +560,11 @@ def test_the_handouts_checks_read_as_sentences_with_units_in_math(tmp_path):
     checks = text.split(r"\section*{Checks}")[1]
     assert r"$T$ in $\unit{N}$" in checks and "Energy is conserved: the constraint forces do no work." in checks
     assert "(numeric)" not in checks and "work_energy" not in checks and "T + V" not in checks
+
+
+def test_a_puck_striking_a_rod_across_its_path_is_drawn_to_scale():
+    """The struck rod lies at its angle (here along y, across the puck's path) and a round body
+    that strikes is a circle of its radius, not a dot."""
+    tikz = figure.tikz(problem.load(ROOT / "tests/textbook/states/disk_strikes_free_rod.yaml"))
+    assert "(0,-2.39) -- (0,2.39);" in tikz  # the rod, vertical
+    assert "\\draw[body] (-1.59,2.39) circle (0.19);" in tikz  # the puck, its radius to the rod's scale

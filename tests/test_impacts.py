@@ -4,6 +4,7 @@ cord, a child onto a turntable, a clutch and a brake); here the rules a user mee
 and the second route shown to catch a wrong impact."""
 import dataclasses
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -426,8 +427,240 @@ def test_a_wrong_rough_bounce_is_refused_naming_its_field(tmp_path, old, new, fi
     assert words in refused(tmp_path, GRIPPING.read_text().replace(old, new), field)
 
 
-def test_a_state_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
+def test_a_flight_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
+    """The ball flies off the floor in a parabola, whatever the bounce's regime: not a straight line
+    of its coordinates, which derive cannot yet follow (exit 1, naming the state)."""
     text = GRIPPING.read_text().replace(
         "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    top: {from: bounced, when: stops}\n").replace(
         "ask:\n", "ask:\n  h: {meaning: highest point, of: ball.position.y, in: top, unit: m}\n")
-    assert "grips or slides by the variant" in refused(tmp_path, text, "scene.states.top", exit_code=1)
+    assert "not a straight line" in refused(tmp_path, text, "scene.states.top", exit_code=1)
+
+
+def test_an_event_just_after_a_bounce_that_grips_or_slides_by_the_variant_is_an_engine_limit(tmp_path):
+    text = GRIPPING.read_text().replace(
+        "friction: {static: mu}}}\n", "friction: {static: mu}}}\n    again: {from: bounced, event: {bounce: ball, "
+                                       "to: floor, restitution: e}}\n").replace(
+        "ask:\n", "ask:\n  w: {meaning: spin, of: ball.angular_velocity, in: again, unit: rad/s}\n")
+    assert "only a state the motion gets to (when:) may follow it" in refused(tmp_path, text, "scene.states.again",
+                                                                             exit_code=1)
+
+
+def test_the_motion_after_a_bounce_is_answered_in_the_variants_regime_or_refused_naming_it(tmp_path):
+    """A ball strikes a wheel's rim with friction: at the middle of the ranges it grips, and the
+    wheel turns at m v/(R (M + 2 m)) (its angular momentum about the axle, m v R/2, shared with the
+    ball gripping at the rim), a quarter turn in pi R (M + 2 m)/(2 m v). A variant where the bounce
+    slides is refused, naming what the bounce does there, not given the gripping wheel's time;
+    the worked solution says which regime the motion after was derived in."""
+    text = WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e, friction: {static: mu}}").replace(
+        "  e: {", "  mu: {meaning: coefficient of friction at the rim, unit: 1, range: [0.1, 0.9], sig_figs: 2}\n  e: {"
+    ).replace("    bounced: {from: coming, event: {bounce: ball, to: wheel, restitution: e, friction: {static: mu}}}\n",
+              "    bounced: {from: coming, event: {bounce: ball, to: wheel, restitution: e, friction: {static: mu}}}\n"
+              "    turned: {from: bounced, when: {wheel.angle: -pi/2}}\n").replace(
+        "ask:\n", "ask:\n  t: {meaning: time to turn a quarter, of: time, in: turned, unit: s}\n")
+    path = write_problem(tmp_path, text)
+    solution = Solution(problem.load(path))
+    m, M, R, v = _symbols(solution, "m", "M", "R", "v")
+    assert sp.simplify(solution.expression("t") - sp.pi * R * (M + 2 * m) / (2 * m * v)) == 0
+    assert any("where it grips, as at the middle" in s.text for s in solution.steps()["the state turned"])
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+    fixed = ["--set", "m=0.1", "--set", "M=3", "--set", "R=0.3", "--set", "v=2", "--set", "e=0.3"]
+    gripping = run_derive("solve", str(path), *fixed, "--set", "mu=0.9", "--format", "json")
+    assert gripping.returncode == 0, gripping.stderr
+    assert float(json.loads(gripping.stdout)["answers"]["t"]["value"]) == pytest.approx(math.pi * 0.3 * 3.2 / 0.4)
+    sliding = run_derive("solve", str(path), *fixed, "--set", "mu=0.1")
+    assert sliding.returncode == 2 and "the bounce bounced slides (friction along -t) at these values, and the motion " \
+        "after it to the state turned is derived where it grips" in sliding.stderr, sliding.stderr
+
+
+DROPPED = """\
+id: ball_dropped_on_floor
+title: A ball bounces on a floor
+topic: conservation
+parameters:
+  m: {meaning: mass of the ball, unit: kg, range: [0.1, 0.5], sig_figs: 2}
+  v: {meaning: speed of the ball as it strikes, unit: m/s, range: [1, 5], sig_figs: 2}
+  e: {meaning: coefficient of restitution, unit: 1, range: [0.3, 0.9], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    floor: {plane: {angle: 0, through: [0, 0]}}
+  bodies:
+    ball: {shape: point, mass: m, at: [0, 0]}
+  loads:
+    - gravity: g
+  states:
+    falling: {rates: {ball.velocity.x: 0, ball.velocity.y: -v}}
+    bounced: {from: falling, event: {bounce: ball, to: floor, restitution: e}}
+ask:
+  Jy: {meaning: the floor's impulse on the ball, of: ball.impulse.y, in: bounced, unit: N*s}
+  Jx: {meaning: the horizontal impulse, of: ball.impulse.x, in: bounced, unit: N*s}
+question: |
+  A ball of mass {{ m }} strikes a floor at {{ v }}; the coefficient of restitution is {{ e }}.
+"""
+
+
+def test_a_ball_bouncing_on_a_floor_takes_the_impulse_m_1_plus_e_v(tmp_path):
+    """Serway & Jewett ch. 9 (the impulse-momentum theorem): a ball that meets a floor at v and
+    leaves at e v takes m (1 + e) v, up; by its momentum and by the impact's impulse equations."""
+    solution = Solution(problem.load(write_problem(tmp_path, DROPPED)))
+    m, v, e = _symbols(solution, "m", "v", "e")
+    assert sp.simplify(solution.expression("Jy") - m * (1 + e) * v) == 0 and solution.expression("Jx") == 0
+    checks = report.solve(solution.problem, solution=solution)["checks"]
+    assert all(c["passed"] for c in checks.values()) and "Jy in N·s" in checks["dimensions"]["reading"]
+
+
+def test_the_pin_of_a_struck_rod_takes_the_change_of_momentum_of_the_rod_and_the_bullet(tmp_path):
+    """A bullet that sticks in the end of a hanging rod (Serway & Jewett ch. 11: omega = 3 m v/(L (M +
+    3 m))): the hinge's impulse is the change of momentum of both, (M L/2 + m L) omega - m v, which
+    m M v/(2 (M + 3 m)), the way the bullet went (the end is below the center of percussion, where
+    the pin would take none); the bullet takes m (L omega - v)."""
+    text = Path("tests/textbook/states/rod_ballistic_pendulum.yaml").read_text().replace("ask:\n", (
+        "ask:\n  P: {meaning: the hinge's impulse, of: hinge.impulse.x, in: struck, unit: N*s}\n"
+        "  Jb: {meaning: the bullet's impulse, of: bullet.impulse.x, in: struck, unit: N*s}\n"))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m, M, L, v = _symbols(solution, "m", "M", "L", "v")
+    omega = 3 * m * v / (L * (M + 3 * m))
+    assert sp.simplify(solution.expression("P") - ((M * L / 2 + m * L) * omega - m * v)) == 0
+    assert sp.simplify(solution.expression("Jb") - m * (L * omega - v)) == 0
+    assert sp.simplify(solution.expression("P") - m * M * v / (2 * (M + 3 * m))) == 0
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_the_second_route_catches_a_wrong_impulse(tmp_path, monkeypatch):
+    """The impulse equations' side doubled for the joints' forces on a body: the momentum route
+    disagrees, and the routes check names the ask."""
+    from derive.mechanics import impulses
+    original = impulses.on_body
+    monkeypatch.setattr(impulses, "on_body", lambda parts, coords, at, values, body:
+                        (2 if len(parts) == 1 else 1) * original(parts, coords, at, values, body))
+    with pytest.raises(CheckFailure, match="disagree on P"):
+        report.solve(problem.load("tests/textbook/states/rod_center_of_percussion.yaml"), {}, 4)
+
+
+@pytest.mark.parametrize("ask, field, words", [
+    ("{meaning: impulse, of: ball.impulse.y, in: falling, unit: N*s}", "ask.Jy.in", "not just after one"),
+    ("{meaning: impulse, of: ball.impulse.y, unit: N*s}", "ask.Jy.in", "is read in a state"),
+    ("{meaning: impulse, of: ball.impulse.z, in: bounced, unit: N*s}", "ask.Jy.of", "impulse.x, impulse.y"),
+])
+def test_an_impulse_asked_where_it_means_nothing_is_refused(tmp_path, ask, field, words):
+    text = DROPPED.replace("{meaning: the floor's impulse on the ball, of: ball.impulse.y, in: bounced, unit: N*s}", ask)
+    assert words in refused(tmp_path, text, field)
+
+
+def test_a_clutch_gives_no_impulse_of_a_force(tmp_path):
+    text = DISKS.replace("EVENT", "{lock: upper, to: lower}").replace(
+        "    shaft: {pin: upper.center, to: lower.center}\n",
+        "    shaft: {pin: upper.center, to: lower.center}\n    brake: {clutch: lower, to: ground}\n").replace(
+        "of: kinetic_energy, in: coupled, unit: J", "of: brake.impulse.x, in: coupled, unit: N*s")
+    assert "gives no force at a point" in refused(tmp_path, text, "ask.K1.of")
+
+
+GLANCING = Path(__file__).parent / "textbook/states/disks_glancing_collision.yaml"
+
+
+def test_two_rough_pucks_that_grip_share_the_tangential_impulse_of_their_effective_mass(tmp_path):
+    """Gripping, the contact points leave with no relative tangential velocity; the tangential
+    impulse is then the slip times the effective mass 1/(1/m1 + R1^2/I1 + 1/m2 + R2^2/I2) = m1 m2/(3
+    (m1 + m2)) for disks (Kleppner & Kolenkow ch. 7: impulse and angular impulse about each center),
+    and each puck keeps its angular momentum about the point of contact, where its only impulse
+    acts; the worked solution shows the momentum and the angular momentum about the origin kept."""
+    text = GLANCING.read_text().replace("restitution: e}}", "restitution: e, grips: true}}").replace(
+        "ask:\n", "ask:\n  w1: {meaning: spin, of: striker.angular_velocity, in: struck, unit: rad/s}\n"
+                  "  w2: {meaning: spin, of: target.angular_velocity, in: struck, unit: rad/s}\n")
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m1, m2, R1, R2, phi, v = _symbols(solution, "m1", "m2", "R1", "R2", "phi", "v")
+    x = {n: solution.expression(n) for n in ("v1x", "v1y", "v2x", "v2y", "w1", "w2")}
+    n, contact = sp.Matrix([-sp.cos(phi), sp.sin(phi)]), R2 * sp.Matrix([-sp.cos(phi), sp.sin(phi)])
+    t = sp.Matrix([n[1], -n[0]])
+    centers = {1: (R1 + R2) * n, 2: sp.zeros(2, 1)}
+    after = {1: sp.Matrix([x["v1x"], x["v1y"]]), 2: sp.Matrix([x["v2x"], x["v2y"]])}
+    spin = {1: x["w1"], 2: x["w2"]}
+
+    def at_contact(i):  # the velocity of puck i's point at the contact
+        r = contact - centers[i]
+        return after[i] + spin[i] * sp.Matrix([-r[1], r[0]])
+
+    assert sp.simplify((at_contact(1) - at_contact(2)).dot(t)) == 0
+    slip = sp.Matrix([v, 0]).dot(t)
+    assert sp.simplify(m2 * after[2].dot(t) - m1 * m2 * slip / (3 * (m1 + m2))) == 0  # dragged along the slip
+    for i, (mass, radius, before) in {1: (m1, R1, sp.Matrix([v, 0])), 2: (m2, R2, sp.zeros(2, 1))}.items():
+        r = centers[i] - contact
+        moment = lambda u, w: mass * (r[0] * u[1] - r[1] * u[0]) + mass * radius**2 / 2 * w  # noqa: E731
+        assert sp.simplify(moment(after[i], spin[i]) - moment(before, 0)) == 0
+    (kept,) = [s for s in solution.steps()["the state struck"] if s.text.startswith("Check: no impulse from outside")]
+    assert all(sp.simplify(a.rhs - b.rhs) == 0 for a, b in zip(kept.equations[::2], kept.equations[1::2]))
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_a_puck_off_a_rod_on_a_pin_keeps_the_angular_momentum_about_the_pin(tmp_path):
+    """A puck strikes a hanging rod's side: the only impulse from outside is at the pin, so the
+    angular momentum about it is kept (m v d before, shared after), shown and checked."""
+    text = (Path(__file__).parent / "textbook/states/rod_center_of_percussion.yaml").read_text().replace(
+        "    ball: {shape: point, mass: m, at: [0, -d]}",
+        "    ball: {shape: disk, mass: m, radius: r, at: [-r, -d]}").replace(
+        "rod.angular_velocity: 0}}", "rod.angular_velocity: 0, ball.angular_velocity: 0}}").replace(
+        "  e: {", "  r: {meaning: radius of the puck, unit: m, range: [0.02, 0.05], sig_figs: 2}\n  e: {")
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m, M, L, d, v, e = _symbols(solution, "m", "M", "L", "d", "v", "e")
+    assert sp.simplify(solution.expression("dp") - 2 * L / 3) == 0  # a smooth puck: as a point mass
+    (kept,) = [s for s in solution.steps()["the state bounced"] if "about the pin" in s.text]
+    assert [sp.simplify(eq.rhs - m * v * d) for eq in kept.equations] == [0, 0]
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("at: [-(R1 + R2)*cos(phi), (R1 + R2)*sin(phi)]", "at: [-(R1 + 2*R2)*cos(phi), (R1 + 2*R2)*sin(phi)]",
+     "does not touch the target"),
+    ("shape: disk, mass: m", "shape: rod, mass: m", "a bounce off a body is of a point mass or a round body"),
+    ("target: {shape: disk, mass: m2, radius: R2,", "target: {shape: box, mass: m2, side_a: R2, side_b: R2, side_c: R2,",
+     "the normal is known for round bodies and rods"),
+])
+def test_a_bounce_of_bodies_that_do_not_touch_or_of_unknown_shapes_is_refused(tmp_path, old, new, words):
+    text = GLANCING.read_text().replace(old, new)
+    if "rod" in new:  # two rods
+        text = text.replace("radius: R", "length: R")
+    assert words in refused(tmp_path, text, "scene.states.struck")
+
+
+def test_a_puck_beside_a_rod_but_not_touching_it_is_refused(tmp_path):
+    text = (Path(__file__).parent / "textbook/states/disk_strikes_free_rod.yaml").read_text().replace(
+        "at: [-r, L/2]", "at: [-2*r, L/2]")
+    assert "from the rod's axis, not its radius" in refused(tmp_path, text, "scene.states.struck")
+
+
+def test_a_wheel_named_first_bounces_a_ball_as_the_ball_off_the_wheel(tmp_path):
+    """`{bounce: wheel, to: ball}` is the same touch as `{bounce: ball, to: wheel}`: the point mass
+    on the wheel's rim, along its radius."""
+    (tmp_path / "a").mkdir(), (tmp_path / "b").mkdir()
+    one, two = (Solution(problem.load(write_problem(tmp_path / name, WHEEL.replace("EVENT", event))))
+                for name, event in (("a", "{bounce: ball, to: wheel, restitution: e}"),
+                                    ("b", "{bounce: wheel, to: ball, restitution: e}")))
+    assert all(sp.simplify(one.expression(n) - two.expression(n)) == 0 for n in ("omega", "vx", "vy"))
+
+
+def test_a_rough_bounces_impulses_are_given_in_each_regime(tmp_path):
+    """Off a rough floor the ball takes m (1 + e) v_y up and, gripping, (2/7) m v_x back (Kleppner &
+    Kolenkow ch. 7: it leaves rolling at 5 v_x/7); sliding, mu times the normal one: each regime's
+    impulse by both routes, the answer a Piecewise over them."""
+    text = GRIPPING.read_text().replace("ask:\n", (
+        "ask:\n  Jx: {meaning: impulse along the floor, of: ball.impulse.x, in: bounced, unit: N*s}\n"
+        "  Jy: {meaning: impulse up, of: ball.impulse.y, in: bounced, unit: N*s}\n"))
+    solution = Solution(problem.load(write_problem(tmp_path, text)))
+    m, v, theta, e, mu, R = _symbols(solution, "m", "v", "theta", "e", "mu", "R")
+    at = {m: sp.Rational(1, 5), R: sp.Rational(1, 20), v: 3, theta: sp.pi / 4, e: sp.Rational(1, 2)}
+    grips, slides = {**at, mu: sp.Rational(4, 5)}, {**at, mu: sp.Rational(1, 10)}
+    jx, jy = solution.expression("Jx"), solution.expression("Jy")
+    vx, vy = 3 * sp.sin(sp.pi / 4), 3 * sp.cos(sp.pi / 4)
+    assert sp.simplify(jy.xreplace(grips) - sp.Rational(1, 5) * sp.Rational(3, 2) * vy) == 0
+    assert sp.simplify(jx.xreplace(grips) + sp.Rational(2, 7) * sp.Rational(1, 5) * vx) == 0
+    assert sp.simplify(jx.xreplace(slides) + sp.Rational(1, 10) * jy.xreplace(slides)) == 0
+    assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
+
+
+def test_a_puck_that_would_strike_beyond_the_rods_end_is_refused(tmp_path):
+    """Its center a radius from the rod's axis but past the end: it would meet the end's corner,
+    which is not modelled (the smooth side's normal would be wrong there)."""
+    text = (Path(__file__).parent / "textbook/states/disk_strikes_free_rod.yaml").read_text().replace(
+        "at: [-r, L/2]", "at: [-r, L/2 + r/2]")
+    assert "beyond its end: a bounce off a rod's end or corner is not modelled" in refused(
+        tmp_path, text, "scene.states.struck")

@@ -537,6 +537,41 @@ EXPECTED.update({
         "K1": lambda s: s.m * (s.v * (3 * s.m - s.M * s.e) / (s.M + 3 * s.m)) ** 2 / 2
         + s.M * s.L**2 / 6 * (3 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 3 * s.m))) ** 2,
     },
+    # Kleppner & Kolenkow ch. 7: the blow J_b = (1 + e) m v I_p/(I_p + m d^2), I_p = M L^2/3, from
+    # I_p omega = J_b d and the ends' relative speed reversed, d omega - v' = e v; the ball takes
+    # -J_b, the rod M omega L/2 = 3 J_b d/(2 L), the pin the rest, J_b (3 d/(2 L) - 1): none at the
+    # center of percussion, d = 2 L/3, and none upward (finite forces give no impulse).
+    "rod_center_of_percussion": {
+        "J": lambda s: -(1 + s.e) * s.m * s.v * s.M * s.L**2 / (s.M * s.L**2 + 3 * s.m * s.d**2),
+        "Jrod": lambda s: 3 * s.d / (2 * s.L) * (1 + s.e) * s.m * s.v * s.M * s.L**2 / (s.M * s.L**2 + 3 * s.m * s.d**2),
+        "P": lambda s: (3 * s.d / (2 * s.L) - 1) * (1 + s.e) * s.m * s.v * s.M * s.L**2
+        / (s.M * s.L**2 + 3 * s.m * s.d**2),
+        "Py": lambda s: sp.Integer(0),
+        "dp": lambda s: 2 * s.L / 3,
+    },
+    # Kleppner & Kolenkow ch. 7 problems: the impulse J at the rod's end gives V = J/M and, about its
+    # center, omega = -6 J/(M L) (the end above the center, pushed +x); the end's speed V + 3 J/M
+    # less the puck's v - J/m is e v: J = (1 + e) m M v/(M + 4 m). A smooth puck does not spin; the
+    # energy taken is (1 - e^2) M m v^2/(2 (M + 4 m)).
+    "disk_strikes_free_rod": {
+        "u": lambda s: s.v * (4 * s.m - s.e * s.M) / (s.M + 4 * s.m),
+        "V": lambda s: (1 + s.e) * s.m * s.v / (s.M + 4 * s.m),
+        "omega": lambda s: -6 * (1 + s.e) * s.m * s.v / (s.L * (s.M + 4 * s.m)),
+        "spin": lambda s: sp.Integer(0),
+        "J": lambda s: (1 + s.e) * s.m * s.M * s.v / (s.M + 4 * s.m),
+        "dK": lambda s: -(1 - s.e**2) * s.M * s.m * s.v**2 / (2 * (s.M + 4 * s.m)),
+    },
+    # Serway & Jewett ch. 9 (two dimensions): along the line of centers n = (cos(phi), -sin(phi))
+    # the target leaves at (1 + e) m1 v cos(phi)/(m1 + m2); the striker keeps its velocity across n
+    # and loses the target's momentum along it; the energy taken is (1 - e^2) mu (v cos(phi))^2/2.
+    "disks_glancing_collision": {
+        "v1x": lambda s: s.v - (1 + s.e) * s.m2 * s.v * _cos(s.phi) ** 2 / (s.m1 + s.m2),
+        "v1y": lambda s: (1 + s.e) * s.m2 * s.v * _cos(s.phi) * _sin(s.phi) / (s.m1 + s.m2),
+        "v2x": lambda s: (1 + s.e) * s.m1 * s.v * _cos(s.phi) ** 2 / (s.m1 + s.m2),
+        "v2y": lambda s: -(1 + s.e) * s.m1 * s.v * _cos(s.phi) * _sin(s.phi) / (s.m1 + s.m2),
+        "Jy": lambda s: -(1 + s.e) * s.m1 * s.m2 * s.v * _cos(s.phi) * _sin(s.phi) / (s.m1 + s.m2),
+        "dK": lambda s: -(1 - s.e**2) * s.m1 * s.m2 / (s.m1 + s.m2) * (s.v * _cos(s.phi)) ** 2 / 2,
+    },
     # Serway & Jewett ch. 11: about the axle (M R^2/2 + m R^2) w0 = (M R^2/2) omega.
     # Kleppner & Kolenkow ch. 7 / Morin ch. 8: the floor's impulse acts at the point of contact,
     # so the angular momentum about it is kept, m v_x R = m v_x' R + (2/5) m R^2 (-omega'), and

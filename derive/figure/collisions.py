@@ -5,7 +5,7 @@ import math
 
 import sympy as sp
 
-from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt, given_motion
+from derive.figure.canvas import _add, _f, _Figure, _label_mass, _pt, _unit, given_motion
 from derive.parts.pin import Pin
 from derive.scene import Event
 
@@ -35,12 +35,14 @@ def _impact(fig: _Figure) -> None:
     size = target.sizes.get("radius") or (target.sizes.get("length", 0) / 2)
     drawn = fig.num(size, 0) * scale or 1.3
     pin = next((c for c in scene.constraints if isinstance(c, Pin) and c.body == target_name), None)
+    tilt = math.degrees(fig.num(target.angle, 0))  # a rod lies at its angle
+    end = _add((0, 0), _unit(tilt), drawn)
     if target.shape == "custom" and "radius" not in target.sizes:
         fig.add(f"\\draw[body] (0,0) circle ({_f(drawn)}); \\fill (0,0) circle (0.04);")
     else:
-        fig.body(target, (0, 0), drawn)
+        fig.body(target, (0, 0), drawn, angle=tilt)
     if target.shape == "rod" and fig.tex(target.sizes.get("length")):
-        fig.dimension((-drawn, 0), (drawn, 0), fig.tex(target.sizes["length"]), side=-1, gap=0.3)
+        fig.dimension((-end[0], -end[1]), end, fig.tex(target.sizes["length"]), side=-1, gap=0.3)
     if pin is not None:
         fig.axle((0, 0))
     spin = given_motion(scene, target_name)
@@ -48,7 +50,7 @@ def _impact(fig: _Figure) -> None:
         sign = 1 if fig.num(spin.spin, 1) > 0 else -1
         fig.spin((0, 0), drawn + 0.25, sign, fig.tex(sp.Abs(spin.spin)), at=135)
     if target.shape == "rod":
-        _label_mass(fig, target, (-drawn, 0.12), (1, 1))
+        _label_mass(fig, target, _add((-end[0], -end[1]), _unit(tilt + 90), 0.12), (1, 1))
     else:
         _label_mass(fig, target, (-0.15, -0.15), (-1, -1))
     v = (fig.num(motion.velocity[0], 1), fig.num(motion.velocity[1], 0))
@@ -58,10 +60,14 @@ def _impact(fig: _Figure) -> None:
     back = 1.4 if target.shape == "rod" else 1.9
     incoming = _add(hit, along, -back)
     fig.line(incoming, hit, "dashed, gray")
-    fig.dot(incoming, 0.09)
+    rim = max(fig.num(mover.sizes.get("radius", 0), 0) * scale, 0.09)  # a round body to scale, a point a dot
+    if mover.rotates:
+        fig.body(mover, incoming, rim)
+    else:
+        fig.dot(incoming, rim)
     left = (-along[1], along[0])
-    _label_mass(fig, mover, _add(incoming, left, -0.12), (along[1], -along[0]))
-    fig.arrow(_add(incoming, along, 0.15), (0.85 * along[0], 0.85 * along[1]), "velocity",
+    _label_mass(fig, mover, _add(incoming, left, -rim - 0.03), (along[1], -along[0]))
+    fig.arrow(_add(incoming, along, rim + 0.06), (0.85 * along[0], 0.85 * along[1]), "velocity",
               fig.m(sp.sqrt(motion.velocity[0] ** 2 + motion.velocity[1] ** 2)), toward=left)
     fig.add(f"\\fill[red!70!black] {_pt(hit)} circle (0.04);")
     distance = sp.simplify(abs(x * motion.velocity[1] - y * motion.velocity[0])

@@ -1,8 +1,9 @@
 """Impacts in a state of a scene: a point mass that sticks to a body (a bullet into a hanging
 rod, a child jumping onto a turntable), a body that sticks to another, two turning bodies that
-lock together (a clutch, a disk dropped onto another), a point mass that bounces off a body
-with a coefficient of restitution (a ball off the end of a hanging rod), a round body or a
-point mass that bounces off a fixed surface (a ball off a floor).
+lock together (a clutch, a disk dropped onto another), a point mass or a round body that
+bounces off a body with a coefficient of restitution (a ball off the end of a hanging rod, a
+puck off a free rod or another puck), a round body or a point mass that bounces off a fixed
+surface (a ball off a floor).
 
 The impact makes a joint (`joint`): a pin holding the point mass where it struck, a weld, a
 clutch, or for a bounce a touch that lasts the instant only (`Bounce`: its normal rate after is
@@ -152,11 +153,13 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: s
     """The joint an impact (derive.scene.Event) makes as the bodies are in the state
     `values`: a clutch (`lock`, at the turn between them then); for `stick` a pin holding a point
     mass where it is on the other body, or a weld of two turning bodies; for `bounce` the touch
-    of a point mass on the other body, for the instant (along the rod's normal, or a round
-    body's radius), or of a body on a fixed surface (`to` names one of the scene's surfaces).
+    of a point mass or a round body's rim on the other body, for the instant (along the rod's
+    normal, or the line of centers), or of a body on a fixed surface (`to` names one of the
+    scene's surfaces).
 
     Raises ValueError where two point masses that are apart would stick (a particle has no frame
-    to hold another in), or a bounce has no normal derive knows. `decide` (an expression's value
+    to hold another in), a round body that bounces does not touch the other, or a bounce has no
+    normal derive knows. `decide` (an expression's value
     at the middle of the ranges) turns a rod's normal toward the side the point mass comes from."""
     kind, body, to = event.kind, event.body, event.to
     at = {c.q: values[c.q] for c in coords.all}
@@ -169,16 +172,11 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: s
         return Clutch(name, body, to, turn(body, to))
     if kind == "bounce" and to not in scene.bodies:
         return _on_surface(scene, coords, at, name, body, to, rough)
-    point, host = (body, to) if not scene.bodies[body].rotates else (to, body)
-    between = (coords.position(point) - coords.position(host)).xreplace(at)
-    angle = -coords.orientation(host).xreplace(at)
-    offset = _in_frame(angle, between)
     if kind == "bounce":
-        touch = _touch(scene, coords, at, name, point, host, offset, rough)
-        approach = touch.conditions(coords)[0].xreplace(values)  # negative while they close in
-        if decide is not None and scene.bodies[host].shape == "rod" and decide(approach) > 0:
-            touch = dataclasses.replace(touch, normal=tuple(-e for e in touch.normal))
-        return touch
+        return _bounce(scene, coords, values, name, body, to, rough, decide)
+    point, host = (body, to) if not scene.bodies[body].rotates else (to, body)
+    offset = _in_frame(-coords.orientation(host).xreplace(at),
+                       (coords.position(point) - coords.position(host)).xreplace(at))
     if not scene.bodies[point].rotates:
         if not scene.bodies[host].rotates and any(e != 0 for e in offset):
             raise ValueError(f"the {point} and the {to if point == body else body} are point masses apart from "
@@ -216,23 +214,55 @@ def _on_surface(scene: Scene, coords: Coordinates, at: dict, name: str, body: st
                  surface)
 
 
-def _touch(scene: Scene, coords: Coordinates, at: dict, name: str, point: str, host: str, offset,
-           rough: bool) -> Touch:
-    """The touch of a bounce: a point mass on a rod's axis (normal across the rod) or on a round
-    body's rim (normal along the radius)."""
-    if scene.bodies[point].rotates:
-        raise ValueError("a bounce off a body is of a point mass (or a body off a point mass); a round body "
-                         "bounces off a fixed surface")
-    shape = scene.bodies[host]
+def _round(body) -> bool:
+    """A body that bounces by its rim or as a point: a point mass, or a round body (a radius)."""
+    return not body.rotates or "radius" in body.sizes
+
+
+def _bounce(scene: Scene, coords: Coordinates, values: dict, name: str, body: str, to: str, rough: bool,
+            decide) -> Touch:
+    """The touch of a bounce off a body: the bouncer (a point mass, or a round body by its rim) on a
+    rod's side (the normal across the rod) or on a round body's rim (the normal along the line of
+    centers); a point mass bounces off the other body, else a round body off the other."""
+    first, second = scene.bodies[body], scene.bodies[to]
+    bouncer, host = ((body, to) if not first.rotates else (to, body) if not second.rotates
+                     else (body, to) if _round(first) else (to, body))
+    if not _round(scene.bodies[bouncer]):
+        raise ValueError(f"a bounce off a body is of a point mass or a round body: where a {scene.bodies[body].shape} "
+                         f"and a {scene.bodies[to].shape} touch is not known")
+    at = {c.q: values[c.q] for c in coords.all}
+    radius, shape = scene.bodies[bouncer].sizes.get("radius", sp.Integer(0)), scene.bodies[host]
+    between = (coords.position(bouncer) - coords.position(host)).xreplace(at)
+    offset = _in_frame(-coords.orientation(host).xreplace(at), between)  # the bouncer's center, in the host's frame
     if "radius" in shape.sizes:
-        out = sp.Matrix(coords.rotated(host, offset)).xreplace(at)
-        normal = out / sp.sqrt(out.dot(out))
+        reach = shape.sizes["radius"] + radius
+        if radius != 0 and tidy(between.dot(between) - reach**2) != 0:
+            raise ValueError(f"the {bouncer} does not touch the {host} where they are in the state it bounces in (their "
+                             f"centers are {sp.sstr(tidy(sp.sqrt(between.dot(between))))} apart, not "
+                             f"{sp.sstr(reach)}): place them touching")
+        normal = between / sp.sqrt(between.dot(between))
+        to_offset = offset if radius == 0 else _in_frame(-coords.orientation(host).xreplace(at),
+                                                         shape.sizes["radius"] * normal)
     elif shape.shape == "rod":
         angle = coords.orientation(host).xreplace(at)
         normal = sp.Matrix([-sp.sin(angle), sp.cos(angle)])
+        to_offset = offset
+        if radius != 0:
+            if tidy(offset[1] ** 2 - radius**2) != 0:
+                raise ValueError(f"the {bouncer} does not touch the {host} where they are in the state it bounces in "
+                                 f"(its center is {sp.sstr(tidy(sp.Abs(offset[1])))} from the rod's axis, not its "
+                                 f"radius {sp.sstr(radius)}): place it touching")
+            side = decide(offset[1]) if decide is not None else offset[1]  # the bouncer's side of the axis
+            normal, to_offset = normal * (1 if side > 0 else -1), (offset[0], sp.Integer(0))
     else:
         raise ValueError(f"a bounce off a {shape.shape}: the normal is known for round bodies and rods")
-    return Touch(name, point, host, offset, tuple(tidy(e) for e in normal), rough=rough)
+    normal = sp.Matrix([tidy(e) for e in normal])
+    own = _in_frame(-coords.orientation(bouncer).xreplace(at), -radius * normal)
+    touch = Touch(name, bouncer, host, to_offset, tuple(normal), own, rough)
+    approach = touch.conditions(coords)[0].xreplace(values)  # negative while they close in
+    if radius == 0 and decide is not None and shape.shape == "rod" and decide(approach) > 0:
+        touch = dataclasses.replace(touch, normal=tuple(-e for e in touch.normal))
+    return touch
 
 
 def impact(scene: Scene, coords: Coordinates, before: dict, route: str, bounce: Bounce | None = None) -> Impact:
