@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedTorque, Part
+from derive.parts import AppliedTorque, Part, at_placement
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -43,6 +44,13 @@ class TorsionalSpring(Part):
         if self.to is not None:
             result.append(AppliedTorque(self.to, -couple, f"torsional spring {self.name}"))
         return result
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence((f"The torsional spring {self.name} stores half its stiffness times the square of the "
+                              f"{self.body}'s twist from its rest angle: ", self.potential(coords), "."))]
+        return [Sentence((f"The torsional spring {self.name} turns the {load.body} back toward its rest angle with the "
+                          "couple ", at_placement(load.torque, coords), "."), load.body) for load in self.loads(coords)]
 
 
 def read(reader, places, name: str, spec: dict, field: str) -> TorsionalSpring:
