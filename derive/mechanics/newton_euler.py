@@ -4,9 +4,7 @@ m a_cm = sum F and I_cm alpha = sum (r x F)_z, with the constraint forces as unk
 and the loads of every part (`derive.parts`), and the constraints' velocity conditions
 differentiated once to relate the accelerations.
 
->>> import dataclasses
-
-import sympy as sp
+>>> import sympy as sp
 >>> from derive.parts.gravity import Gravity
 >>> from derive.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
@@ -15,6 +13,8 @@ import sympy as sp
 -g
 """
 from __future__ import annotations
+
+import dataclasses
 
 import sympy as sp
 
