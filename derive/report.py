@@ -166,9 +166,8 @@ def as_text(result: dict, solution: Solution) -> str:
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
     for route, equations in equations_of_motion(solution).items():
         lines.append(f"Equations of motion, {route_title(route)} (in the reference configuration, at rest):")
-        for step in solution.derivations[route].steps:
-            for sentence in step.sentences:
-                lines += indented(sentence.text().splitlines())
+        said = [line for step in solution.derivations[route].steps for s in step.sentences for line in s.text().splitlines()]
+        lines += indented(said) + ([""] if said else [])
         for equation in equations:
             lines += indented(pretty(equation))
         lines.append("")

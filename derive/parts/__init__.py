@@ -155,6 +155,10 @@ def listed(items: list) -> tuple:
     return tuple(pieces)
 
 
+#: Operations below which `acting` folds sin^2 + cos^2 in a torque (trigsimp is slow on long ones).
+SHORT = 60
+
+
 def acting(load: AppliedForce | AppliedTorque, coords) -> tuple:
     """The end of a sentence saying where a load acts on its body and, on a turning body, the
     torque about its center of mass it exerts: radius times force, r_x F_y - r_y F_x, with the
@@ -175,8 +179,9 @@ def acting(load: AppliedForce | AppliedTorque, coords) -> tuple:
     if offset == sp.zeros(2, 1):
         return (" at its center of mass, so it exerts no torque about it",) if body.rotates else ("",)
     force = at_placement(load.force, coords)
-    torque = sp.expand(offset[0] * force[1] - offset[1] * force[0])
-    distance = sp.sqrt(sp.trigsimp(sp.expand(offset.dot(offset))))
+    torque, distance = (sp.expand(e) for e in (offset[0] * force[1] - offset[1] * force[0], offset.dot(offset)))
+    torque, distance = (sp.trigsimp(e) if sp.count_ops(e) < SHORT else e for e in (torque, distance))
+    distance = sp.sqrt(distance)
     sense = "" if isinstance(torque, sp.Add) or torque == 0 else \
         ", negative: it turns the body clockwise" if torque.could_extract_minus_sign() else \
         ", positive: it turns the body counter-clockwise"

@@ -154,32 +154,36 @@ class Contact(Part):
 
     def sentences(self, route: str, coords) -> list[Sentence]:
         f = self.unknowns()
-        who = f"the {self.body}" if self.point is None else f"the point {self.name} of the {self.body}"
+        who = f"the {self.body}" if self.point is None else f"the {self.body}'s {self.name}"
         on = f"the {self.surface}" + ("" if self.carrier is None else f", which the {self.carrier} carries")
         if route == "lagrange":
-            held = {"rolling": (" and does not slip: it keeps touching it, a gap held by the normal force ", f["normal"],
-                                ", and the distance along it, with its radius times its turn, stays what it is, held by "
-                                "the friction ", f["friction"]),
-                    "sliding": (" without friction: it keeps touching it, a gap held by the normal force ", f["normal"]),
-                    "kinetic": (" and slides: it keeps touching it, a gap held by the normal force ", f["normal"],
-                                "; kinetic friction, ", self.kinetic * f["normal"], ", acts against the slip, its power ",
-                                at_placement(self.power(coords), coords))}[self.regime]
+            touching = ("it keeps touching it, a gap held by the normal force ", f["normal"])
+            if self.rolling:
+                along = "it does not slide along it" if self.point is not None else \
+                    "the distance along it, with its radius times its turn, stays what it is"
+                held = (" and does not slip: ", *touching, f", and {along}, held by the friction ", f["friction"])
+            elif self.regime == "kinetic":
+                held = (" and slides: ", *touching, "; kinetic friction, ", self.kinetic * f["normal"], ", acts against "
+                        "the slip, its power ", at_placement(self.power(coords), coords))
+            else:
+                held = (" without friction: ", *touching)
             return [Sentence((f"{who.capitalize()} rests on {on}", *held, "."))]
-        words = {"normal force": ("The {surface} pushes {who} with the normal force ", f["normal"]),
+        words = {"normal force": ("The {surface} pushes {who} with the normal force ", f["normal"], ""),
                  "static friction": ("Static friction ", f.get("friction"), " acts on {who} along the {surface}"),
                  "kinetic friction": ("Kinetic friction, ", None, ", acts on {who} along the {surface}, against the slip")}
         result = []
         for load in self.loads(coords):
             if load.body == self.body:
                 first, math, rest = words[load.label]
-                math = math if math is not None else self.kinetic * f["normal"]
+                math = self.kinetic * f["normal"] if math is None else math
                 result.append(Sentence((first.format(surface=self.surface, who=who), math,
                                         rest.format(surface=self.surface, who=who), *acting(load, coords), "."), load.body))
             else:
                 result.append(Sentence((f"{who.capitalize()} pushes back on the {self.carrier} with the opposite "
                                         f"{load.label.split(' of ')[0]}", *acting(load, coords), "."), load.body))
         along = ", nor along it: it grips" if self.rolling else ""
-        return result + [Sentence((f"The point of contact of {who} does not move into {on}{along}.",))]
+        touching = who if self.point is not None else f"the point of contact of {who}"
+        return result + [Sentence((f"{touching.capitalize()} does not move into {on}{along}.",))]
 
     def signs(self) -> list[Sign]:
         normal = self.unknowns()["normal"]

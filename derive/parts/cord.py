@@ -37,7 +37,7 @@ the body's material point at the tangent point (a gripping circle: the cord move
 >>> from derive.mechanics.kinematics import Coordinates
 >>> scene = Scene({"disk": Body("disk", "disk", m, {"radius": R}), "block": Body("block", "point", m, {})})
 >>> cord.sentences("lagrange", Coordinates(scene))[1].latex()
-'It does not slip on the disk, so the arc it unwinds there, $R \\\\theta_{\\\\mathrm{disk}}$, counts in its length.'
+"It does not slip on the disk, so the disk's rim moves with it: the arc of its turn, $R \\\\theta_{\\\\mathrm{disk}}$, counts in the length."
 """
 from __future__ import annotations
 
@@ -256,16 +256,18 @@ class Cord(Part):
             gripping = [a for a in s.attachments if a.grips or a.kind == "wound"]
             if route == "lagrange":
                 path = ", ".join(_where(a, i == 0) for i, a in enumerate(s.attachments))
+                subject = f"The cord {self.name}" if len(self.segments()) == 1 else f"The part of the cord {self.name} that"
                 if s.symbol is None:
-                    result.append(Sentence((f"The cord {self.name} runs {path}; the force ", s.pulled.force, " that pulls "
+                    result.append(Sentence((f"{subject} runs {path}; the force ", s.pulled.force, " that pulls "
                                             "its free end does work at the rate of the force times how fast the end "
                                             "moves out: its power.")))
                 else:
-                    result.append(Sentence((f"The cord {self.name} runs {path}; it does not stretch, so its length "
+                    result.append(Sentence((f"{subject} runs {path}; it does not stretch, so its length "
                                             "stays what it is, and the multiplier of that constraint is its tension ",
                                             s.symbol, ".")))
-                result += [Sentence((f"It does not slip on the {a.body}, so the arc it unwinds there, ",
-                                     a.radius * coords.angle(a.body), ", counts in its length.")) for a in gripping]
+                result += [Sentence((f"It does not slip on the {a.body}, so the {a.body}'s rim moves with it: the arc of "
+                                     "its turn, ", a.radius * coords.angle(a.body), ", counts in the length."))
+                           for a in gripping]
                 continue
             for r in s.runs(coords):
                 for a, point, sign in ((r.start, r.start_point, 1), (r.end, r.end_point, -1)):

@@ -64,6 +64,9 @@ class Spring(Part):
             return [Sentence((f"The spring {self.name} stores half its stiffness times the square of its stretch: ",
                               self.potential(coords), "."))]
         pull = at_placement(self.tension(coords), coords)
+        if pull == 0:
+            return [Sentence((f"The spring {self.name} has its rest length where the {body} is placed, so it pulls it with "
+                              "no force there (its stiffness times its stretch).",), body) for body in self.bodies()]
         return [Sentence((f"The spring {self.name} pulls the {load.body} toward its other end with its stiffness times "
                           "its stretch, ", pull, *acting(load, coords), "."), load.body) for load in self.loads(coords)]
 
