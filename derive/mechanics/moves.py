@@ -59,6 +59,7 @@ from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, generalized_forces
 from derive.parts import AppliedForce, AppliedTorque, Part
 from derive.parts.pin import Pin
+from derive.prose import Sentence
 from derive.scene import Event, Scene
 
 
@@ -235,6 +236,14 @@ class _Couple(Part):
 
     def loads(self, coords) -> list[AppliedTorque]:
         return [AppliedTorque(self.body, self.torque, "couple"), AppliedTorque(self.to, -self.torque, "couple")]
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence((f"The couple that turns the {self.body} relative to the {self.to}, of any size ", self.torque,
+                              ", does work at the rate of the couple times their relative angular velocity: ",
+                              self.power(coords), "."))]
+        return [Sentence(("The couple ", self.torque, f" turns the {self.body}, pushing its center nowhere.",), self.body),
+                Sentence((f"The opposite couple turns the {self.to}.",), self.to)]
 
 
 def _solved(equations: list[sp.Expr], unknowns: list[sp.Symbol]) -> dict:
