@@ -270,14 +270,8 @@ def at_state(equation: sp.Eq, state: dict) -> sp.Eq:
 
 
 def part_sentences(scene, coords, route: str) -> list:
-    """What each part of the scene contributes to `route`: its math in the reference configuration
-    (forces, rates) in its simplest form, functions of the coordinates (energies) as the part
-    writes them."""
-    positions = set(rest_positions(coords))
-
-    def shown(expression: sp.Expr) -> sp.Expr:
-        return expression if expression.free_symbols & positions else simplest(expression)
-    return [s.with_math(shown) for part in scene.parts for s in part.sentences(route, coords)]
+    """What each part of the scene contributes to `route`, in its words (derive.parts)."""
+    return [s for part in scene.parts for s in part.sentences(route, coords)]
 
 
 def rest_positions(coords) -> dict[sp.Symbol, sp.Expr]:

@@ -130,17 +130,36 @@ class Part:
         shares = [(f"The {name} adds to the potential energy ", self.potential(coords)),
                   (f"The {name} has the power ", self.power(coords)),
                   (f"The {name} dissipates energy at half the rate ", self.dissipation(coords))]
-        result = [Sentence((words, math, ".")) for words, math in shares if math != 0]
+        result = [Sentence((words, math, ".")) for words, math in shares if math != 0]  # energies in the coordinates
         if self.unknowns():
             result.append(Sentence((f"The {name}'s constraints are held by the multipliers ",
                                     *listed(list(self.unknowns().values())), ".")))
         return result or [Sentence((f"The {name} adds nothing to the Lagrangian.",))]
 
 
+#: Operations below which `at_placement` folds sin^2 + cos^2, cancels and factors (slow on long ones).
+SHORT = 60
+
+
 def at_placement(expression: sp.Expr, coords) -> sp.Expr:
-    """`expression` in the reference configuration: every coordinate where the file places it
-    (zero), the velocities left free."""
-    return sp.sympify(expression).xreplace({c.q: 0 for c in coords.all})
+    """`expression` in the reference configuration (every coordinate where the file places it,
+    zero; the velocities left free): a short one in compact form (sin^2 + cos^2 folded,
+    cancelled, factored), a long one expanded.
+
+    >>> from derive.scene import Body, Scene
+    >>> from derive.mechanics.kinematics import Coordinates
+    >>> h, r = sp.symbols("h r", positive=True)
+    >>> coords = Coordinates(Scene({"disk": Body("disk", "disk", h, {"radius": r})}))
+    >>> theta = sp.Symbol("theta_disk", real=True)
+    >>> at_placement((h**2 * r**2 + r**4) / (h**2 + r**2) * sp.cos(theta)**2 + r**2 * sp.sin(theta)**2, coords)
+    r**2
+    """
+    if isinstance(expression, sp.MatrixBase):
+        return expression.applyfunc(lambda e: at_placement(e, coords))
+    expression = sp.sympify(expression).xreplace({c.q: 0 for c in coords.all})
+    if sp.count_ops(expression) >= SHORT:
+        return sp.expand(expression)
+    return sp.factor(sp.cancel(sp.trigsimp(expression)))
 
 
 def listed(items: list) -> tuple:
@@ -155,21 +174,19 @@ def listed(items: list) -> tuple:
     return tuple(pieces)
 
 
-#: Operations below which `acting` folds sin^2 + cos^2 in a torque (trigsimp is slow on long ones).
-SHORT = 60
-
-
-def acting(load: AppliedForce | AppliedTorque, coords) -> tuple:
+def acting(load: AppliedForce | AppliedTorque, coords, signed: tuple = ()) -> tuple:
     """The end of a sentence saying where a load acts on its body and, on a turning body, the
-    torque about its center of mass it exerts: radius times force, r_x F_y - r_y F_x, with the
-    sense of a single term (a minus sign: clockwise). In the reference configuration.
+    torque about its center of mass it exerts: radius times force, r_x F_y - r_y F_x, in the
+    reference configuration. Its sense is said where its sign is known: a product of positive
+    factors and forces that keep their sign (`signed`: a tension, a normal force), less a minus
+    sign, which is clockwise (an angle's cosine, of either sign to sympy, leaves it unsaid).
 
     >>> from derive.scene import Body, Scene
     >>> from derive.mechanics.kinematics import Coordinates
     >>> R, T, M = sp.symbols("R T M", positive=True)
     >>> coords = Coordinates(Scene({"disk": Body("disk", "disk", M, {"radius": R})}))
     >>> pull = AppliedForce("disk", sp.Matrix([R, 0]), sp.Matrix([0, -T]), "tension")
-    >>> "".join(map(str, acting(pull, coords)))
+    >>> "".join(map(str, acting(pull, coords, signed=(T,))))
     ' at a distance R from its center of mass; its torque about it is -R*T, negative: it turns the body clockwise'
     """
     body = coords.scene.bodies[load.body]
@@ -179,13 +196,13 @@ def acting(load: AppliedForce | AppliedTorque, coords) -> tuple:
     if offset == sp.zeros(2, 1):
         return (" at its center of mass, so it exerts no torque about it",) if body.rotates else ("",)
     force = at_placement(load.force, coords)
-    torque, distance = (sp.expand(e) for e in (offset[0] * force[1] - offset[1] * force[0], offset.dot(offset)))
-    torque, distance = (sp.trigsimp(e) if sp.count_ops(e) < SHORT else e for e in (torque, distance))
-    distance = sp.sqrt(distance)
-    sense = "" if isinstance(torque, sp.Add) or torque == 0 else \
-        ", negative: it turns the body clockwise" if torque.could_extract_minus_sign() else \
-        ", positive: it turns the body counter-clockwise"
+    torque = at_placement(offset[0] * force[1] - offset[1] * force[0], coords)
+    distance = sp.sqrt(at_placement(offset.dot(offset), coords))
     if torque == 0:
         return (" at a distance ", distance, " from its center of mass, along a line through it, so it exerts no "
                 "torque about it")
+    known = all(f.is_positive or f in signed for f in sp.Mul.make_args(-torque if torque.could_extract_minus_sign()
+                                                                        else torque))
+    sense = ("" if not known else ", negative: it turns the body clockwise" if torque.could_extract_minus_sign()
+             else ", positive: it turns the body counter-clockwise")
     return (" at a distance ", distance, " from its center of mass; its torque about it is ", torque, sense)

@@ -157,9 +157,10 @@ class Contact(Part):
         who = f"the {self.body}" if self.point is None else f"the {self.body}'s {self.name}"
         on = f"the {self.surface}" + ("" if self.carrier is None else f", which the {self.carrier} carries")
         if route == "lagrange":
+            radius = self._geometry(coords)[2]
             touching = ("it keeps touching it, a gap held by the normal force ", f["normal"])
             if self.rolling:
-                along = "it does not slide along it" if self.point is not None else \
+                along = "it does not slide along it" if radius == 0 else \
                     "the distance along it, with its radius times its turn, stays what it is"
                 held = (" and does not slip: ", *touching, f", and {along}, held by the friction ", f["friction"])
             elif self.regime == "kinetic":
@@ -177,7 +178,8 @@ class Contact(Part):
                 first, math, rest = words[load.label]
                 math = self.kinetic * f["normal"] if math is None else math
                 result.append(Sentence((first.format(surface=self.surface, who=who), math,
-                                        rest.format(surface=self.surface, who=who), *acting(load, coords), "."), load.body))
+                                        rest.format(surface=self.surface, who=who), *acting(load, coords, (f["normal"],)),
+                                        "."), load.body))
             else:
                 result.append(Sentence((f"{who.capitalize()} pushes back on the {self.carrier} with the opposite "
                                         f"{load.label.split(' of ')[0]}", *acting(load, coords), "."), load.body))

@@ -275,7 +275,7 @@ class Cord(Part):
                         continue
                     load = AppliedForce(a.body, point - coords.position(a.body), sign * s.tension * r.direction, "")
                     result.append(Sentence((f"The cord {self.name} pulls the {a.body} along its run with the tension ",
-                                            s.tension, *acting(load, coords), "."), a.body))
+                                            s.tension, *acting(load, coords, (s.tension,)), "."), a.body))
             if s.symbol is not None:
                 slip = ", and does not slip on the " + " or the ".join(a.body for a in gripping) if gripping else ""
                 rate = at_placement(s.rate(coords), coords)

@@ -38,7 +38,7 @@ class Torque(Part):
             return [Sentence((f"The torque {self.name} does work at the rate of the torque times the {self.body}'s angular "
                               "velocity: its power is ", self.power(coords), "."))]
         (load,) = self.loads(coords)
-        return [Sentence((f"The torque {self.name}, ", self.torque, f", turns the {self.body} counter-clockwise",
+        return [Sentence((f"The torque {self.name}, ", self.torque, f" counter-clockwise, acts on the {self.body}",
                           *acting(load, coords), "."), self.body)]
 
 

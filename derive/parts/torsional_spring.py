@@ -49,8 +49,14 @@ class TorsionalSpring(Part):
         if route == "lagrange":
             return [Sentence((f"The torsional spring {self.name} stores half its stiffness times the square of the "
                               f"{self.body}'s twist from its rest angle: ", self.potential(coords), "."))]
-        return [Sentence((f"The torsional spring {self.name} turns the {load.body} back toward its rest angle with the "
-                          "couple ", at_placement(load.torque, coords), "."), load.body) for load in self.loads(coords)]
+        result = []
+        for load in self.loads(coords):
+            couple = at_placement(load.torque, coords)
+            result.append(Sentence((f"The torsional spring {self.name} is at its rest angle where the {load.body} is "
+                                    "placed, so it exerts no couple on it there.",) if couple == 0 else
+                                   (f"The torsional spring {self.name} turns the {load.body} back toward its rest angle "
+                                    "with the couple ", couple, "."), load.body))
+        return result
 
 
 def read(reader, places, name: str, spec: dict, field: str) -> TorsionalSpring:

@@ -78,9 +78,10 @@ class Weld(Part):
                             " at its center of mass, so they exert no torque about it, and with the couple ",
                             f["torque"], "."), self.body)]
         if self.to is not None:
-            result.append(Sentence((f"The weld {self.name} acts on the {self.to} with their opposites, the force",
-                                    *acting(self.loads(coords)[2], coords), "."), self.to))
-        return result + [Sentence((f"The {self.body} moves and turns with {other}: the weld {self.name} holds it.",))]
+            result.append(Sentence((f"The weld {self.name} acts on the {self.to} with the opposite force and couple, the "
+                                    "force", *acting(self.loads(coords)[2], coords), "."), self.to))
+        held = "neither moves nor turns" if self.to is None else f"moves and turns with the {self.to}"
+        return result + [Sentence((f"The {self.body} {held}: the weld {self.name} holds it.",))]
 
     def conditions(self, coords) -> list[sp.Expr]:
         velocity = coords.velocity(self.body, sp.zeros(2, 1))
