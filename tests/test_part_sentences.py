@@ -206,3 +206,15 @@ def test_solutions_and_handout_print_the_sentences():
     for tex in (handout, sheet):
         assert r"The cord string pulls the disk along its run with the tension $T_{\mathrm{string}}$" in tex
         assert tex.index("The axle holds the disk's center in place") < tex.index(r"K &=")  # before the energies
+
+
+@pytest.mark.parametrize("problem_id, said", [
+    ("restitution_rod", r"In the bounce bounced the ball strikes the rod: the gap between the two points along the normal "
+                        r"is held by the multiplier $J^{\mathrm{bounced}}$, the impulse."),
+    ("beetle_lazy_susan", r"The pin stopped holds the beetle's center to the susan's point there: the gap between the two "
+                          r"points is held by the multipliers $R_{x}^{\mathrm{stopped}}$ and $R_{y}^{\mathrm{stopped}}$"),
+    ("elroys_beanie", r"The couple that turns the inner relative to the outer, of any size $\tau_{\mathrm{turn}}$, does "
+                      r"work at the rate of the couple times their relative angular velocity")])
+def test_events_say_the_joint_or_couple_they_make(problem_id, said):
+    """An impact's step opens with the sentence of the joint it makes; a turn's with its couple."""
+    assert said in _latex(problem_id)

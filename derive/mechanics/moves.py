@@ -185,7 +185,8 @@ def turn(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
     relative = coords.angle(event.body) - coords.angle(event.to)
     earlier = {c.q: before[c.q] for c in coords.all}
     turned = sp.Eq(relative - relative.xreplace(earlier), event.angle)
-    steps = [Step(f"The angle of the {event.body} relative to the {event.to} grows by the turn", (turned,))]
+    steps = [Step(f"The angle of the {event.body} relative to the {event.to} grows by the turn", (turned,),
+                  sentences=tuple(couple.sentences(route, coords)))]
     gaps = [g for part in scene.constraints for g in part.gaps(coords)
             if not any(sp.diff(g, q).has(*earlier) for q in earlier)]  # linear in the coordinates
     held = _solved(gaps, list(earlier))  # on them, the momenta in the coordinates they leave free
