@@ -135,7 +135,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         "checks": checks,
         "energy": energy,
         "steps": {
-            route: [{"text": s.text, "latex": [render.latex_of(e) for e in s.equations]} for s in route_steps]
+            route: [{"sentences": [{"text": t.text(), "latex": t.latex()} for t in s.sentences],
+                     "text": s.text, "latex": [render.latex_of(e) for e in s.equations]} for s in route_steps]
             for route, route_steps in steps.items()
         },
     }
@@ -165,6 +166,8 @@ def as_text(result: dict, solution: Solution) -> str:
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
     for route, equations in equations_of_motion(solution).items():
         lines.append(f"Equations of motion, {route_title(route)} (in the reference configuration, at rest):")
+        said = [line for step in solution.derivations[route].steps for s in step.sentences for line in s.text().splitlines()]
+        lines += indented(said) + ([""] if said else [])
         for equation in equations:
             lines += indented(pretty(equation))
         lines.append("")
@@ -205,6 +208,9 @@ def as_latex(result: dict) -> str:
     for route, steps in result["steps"].items():
         lines.append(f"\\subsection*{{{route_title(route)}}}")
         for step in steps:
+            if step["sentences"]:
+                lines.append(" ".join(s["latex"] for s in step["sentences"]))
+                lines.append("")
             lines.append(f"{step['text']}:")
             if step["latex"]:
                 lines.append("\\begin{align*}")

@@ -293,7 +293,8 @@ class StateAnswers:
                              else "") + ")"}
         what = what[event.kind]
         kept = impacts.conserved(scene, self.coordinates, before, values)
-        steps = (Step(f"The impact: {what}", ()), *impact.steps, *((kept,) if kept else ()),
+        said = scene.constraint(name).sentences("lagrange", self.coordinates)  # the joint it makes, in words
+        steps = (Step(f"The impact: {what}", (), sentences=tuple(said)), *impact.steps, *((kept,) if kept else ()),
                  Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),)))
         return state_motion.Reached(values, (), steps)
 

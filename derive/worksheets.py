@@ -307,7 +307,8 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
             solved += numbers if s.role == "equations" else []
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
             shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
-                          "diagram": diagrams.get(id(s), "")})
+                          "diagram": diagrams.get(id(s), ""),
+                          "sentences": [sentence.latex() for sentence in s.sentences]})
         routes.append({"title": route_title(route), "steps": shown})
     answers = [
         {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,

@@ -78,10 +78,13 @@ PSEUDO_MATH = ("d/d", "''", "^", ">=", "<=", "**", "sqrt(", "exp(", "sum_", "mu_
 def test_every_check_and_step_of_the_library_reads_as_prose(problem_id):
     """Worked solutions and handouts print each check's reading (issue 15): "Energy is conserved:
     the constraint forces do no work.", never "work_energy: T + V conserved (numeric)"; and each
-    step's sentence says in words what its equations say in math (no d/dt(dL/dq'), no mu_s N >= |f|)."""
+    step's sentence says in words what its equations say in math (no d/dt(dL/dq'), no mu_s N >= |f|),
+    and so does each part's sentence, its math kept apart from its words (derive.prose)."""
     solution = Solution(load(problem_id))
     checks = solution.checks()
     assert checks and all(_reads_as_a_sentence(c.reading) for c in checks), [c.reading for c in checks]
     meanings = {a.meaning for a in solution.problem.asks.values()}  # the file's words, which a step may quote
     texts = [step.text for steps in solution.steps().values() for step in steps if step.text not in meanings]
     assert not [t for t in texts if any(p in t for p in PSEUDO_MATH)], texts  # some systems have no steps yet
+    said = [s.words for steps in solution.steps().values() for step in steps for s in step.sentences]  # the parts'
+    assert not [t for t in said if any(p in t for p in PSEUDO_MATH) or not _reads_as_a_sentence(t)], said

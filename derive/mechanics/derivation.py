@@ -32,12 +32,15 @@ class Step:
     `role`: "equations" for the equations a route solves (its equations of motion and its
     constraints), "solve" for the solving of them, which a worked solution refers back to by
     their numbers ("from (4) to (11)"); "" for any other step. `body`: the body whose balance a
-    Newton–Euler step states (its free-body diagram goes beside it), "" for any other step."""
+    Newton–Euler step states (its free-body diagram goes beside it), "" for any other step.
+    `sentences`: what the scene's parts contribute to it, in words with their symbols
+    (derive.prose), said before it."""
 
     text: str
     equations: tuple[sp.Eq, ...] = ()
     role: str = ""
     body: str = ""
+    sentences: tuple = ()
 
 
 class Solved(Mapping):
@@ -267,6 +270,11 @@ def simplest(expr: sp.Expr) -> sp.Expr:
 def at_state(equation: sp.Eq, state: dict) -> sp.Eq:
     """An equation with a state put in, each side in its simplest form (for the steps)."""
     return sp.Eq(simplest(equation.lhs.xreplace(state)), simplest(equation.rhs.xreplace(state)))
+
+
+def part_sentences(scene, coords, route: str) -> list:
+    """What each part of the scene contributes to `route`, in its words (derive.parts)."""
+    return [s for part in scene.parts for s in part.sentences(route, coords)]
 
 
 def rest_positions(coords) -> dict[sp.Symbol, sp.Expr]:

@@ -55,6 +55,7 @@ from derive.parts import AppliedForce, AppliedTorque, Part, Sign
 from derive.parts.clutch import Clutch
 from derive.parts.pin import Pin
 from derive.parts.weld import Weld
+from derive.prose import Sentence
 from derive.scene import Event, Scene
 
 
@@ -103,6 +104,21 @@ class Touch(Part):
         here = coords.velocity(self.body, coords.rotated(self.body, self.body_offset))
         there = coords.velocity(self.to, coords.rotated(self.to, self.to_offset)) if self.to else sp.zeros(2, 1)
         return [d.dot(here - there) for d in self._directions()]
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        """Words and symbols only: an impact happens where a state has the bodies, not at the placement."""
+        f = self.unknowns()
+        other = f"the {self.to}" if self.to is not None else f"the {self.surface}"
+        rough = (", and along it by the impulse of friction ", f["friction"]) if self.rough else ()
+        if route == "lagrange":
+            return [Sentence((f"In the bounce {self.name} the {self.body} strikes {other}: the gap between the two points "
+                              "along the normal is held by the multiplier ", f["impulse"], ", the impulse", *rough, "."))]
+        result = [Sentence((f"The bounce {self.name} gives the {self.body} the impulse ", f["impulse"], " along the normal "
+                            "at the point that strikes", *rough, "."), self.body)]
+        if self.to is not None:
+            result.append(Sentence((f"It gives the {self.to} the opposite impulse at the point struck.",), self.to))
+        return result + [Sentence((f"Just after the bounce {self.name} the two points separate at the rate the "
+                                   "restitution sets.",))]
 
     def signs(self) -> list[Sign]:
         return [Sign(self.unknowns()["impulse"], f"the {self.body} would pull on the {self.to or self.surface} in "

@@ -59,6 +59,7 @@ from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, generalized_forces
 from derive.parts import AppliedForce, AppliedTorque, Part
 from derive.parts.pin import Pin
+from derive.prose import Sentence
 from derive.scene import Event, Scene
 
 
@@ -184,7 +185,8 @@ def turn(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
     relative = coords.angle(event.body) - coords.angle(event.to)
     earlier = {c.q: before[c.q] for c in coords.all}
     turned = sp.Eq(relative - relative.xreplace(earlier), event.angle)
-    steps = [Step(f"The angle of the {event.body} relative to the {event.to} grows by the turn", (turned,))]
+    steps = [Step(f"The angle of the {event.body} relative to the {event.to} grows by the turn", (turned,),
+                  sentences=tuple(couple.sentences(route, coords)))]
     gaps = [g for part in scene.constraints for g in part.gaps(coords)
             if not any(sp.diff(g, q).has(*earlier) for q in earlier)]  # linear in the coordinates
     held = _solved(gaps, list(earlier))  # on them, the momenta in the coordinates they leave free
@@ -235,6 +237,14 @@ class _Couple(Part):
 
     def loads(self, coords) -> list[AppliedTorque]:
         return [AppliedTorque(self.body, self.torque, "couple"), AppliedTorque(self.to, -self.torque, "couple")]
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence((f"The couple that turns the {self.body} relative to the {self.to}, of any size ", self.torque,
+                              ", does work at the rate of the couple times their relative angular velocity: ",
+                              self.power(coords), "."))]
+        return [Sentence(("The couple ", self.torque, f" turns the {self.body}, pushing its center nowhere.",), self.body),
+                Sentence((f"The opposite couple turns the {self.to}.",), self.to)]
 
 
 def _solved(equations: list[sp.Expr], unknowns: list[sp.Symbol]) -> dict:

@@ -14,10 +14,13 @@ differentiated once to relate the accelerations.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import sympy as sp
 
 from derive.parts import AppliedForce, AppliedTorque
-from derive.mechanics.derivation import FIXED_LEFT_OUT, Derivation, Step, at_state, rest_positions, simplest, worth_showing
+from derive.mechanics.derivation import (FIXED_LEFT_OUT, Derivation, Step, at_state, part_sentences, rest_positions,
+                                        simplest, worth_showing)
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 
@@ -33,6 +36,7 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     coords = coords or Coordinates(scene)
     loads = all_forces(scene, coords)
     rest = coords.at_rest_in_reference()
+    sentences = part_sentences(scene, coords, "newton_euler")
     steps = []
     equations = []
     for body in scene.bodies.values():
@@ -51,15 +55,19 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         labels = ", ".join(sorted({f.label for f in on_body})) or "none"
         steps.append(Step(f"Forces and torques on the {body.name} ({labels})",
                           tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances), role="equations",
-                          body=body.name))
+                          body=body.name,
+                          sentences=tuple(s for s in sentences if s.body == body.name)))
     conditions = [v for c in scene.constraints for v in c.conditions(coords)]
     unknowns = coords.accelerations + [f for c in scene.constraints for f in c.unknowns().values()]
     derivation = Derivation("newton_euler", equations, unknowns, steps, conditions, coords)
     velocities = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in conditions])
+    kinematic = tuple(s for s in sentences if s.body is None)
     if velocities:
         steps += [Step("Kinematic constraints on the velocities (in the reference configuration" + FIXED_LEFT_OUT + ")",
-                       velocities),
+                       velocities, sentences=kinematic),
                   Step("and, their rates, on the accelerations",
                        worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
                        role="equations")]
+    elif kinematic and steps:  # every constraint only holds a coordinate fixed: said with the last balance
+        steps[-1] = dataclasses.replace(steps[-1], sentences=steps[-1].sentences + kinematic)
     return derivation

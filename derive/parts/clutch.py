@@ -23,6 +23,7 @@ import sympy as sp
 
 from derive.parts import AppliedTorque, Part
 from derive.parts.slipping_clutch import SlippingClutch
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -48,6 +49,19 @@ class Clutch(Part):
         couple = self.unknowns()["torque"]
         label = f"clutch {self.name}"
         return [AppliedTorque(self.body, couple, label)] + ([AppliedTorque(self.to, -couple, label)] if self.to else [])
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        couple = self.unknowns()["torque"]
+        other = "the ground" if self.to is None else f"the {self.to}"
+        if route == "lagrange":
+            return [Sentence((f"The clutch {self.name} locks the {self.body}'s angle to {other}'s: the couple ", couple,
+                              " between them is the multiplier of that constraint."))]
+        result = [Sentence((f"The clutch {self.name} turns the {self.body} with the couple ", couple,
+                            ", which pushes its center nowhere."), self.body)]
+        if self.to is not None:
+            result.append(Sentence((f"The clutch {self.name} turns the {self.to} with the opposite couple.",), self.to))
+        rate = "does not turn" if self.to is None else f"turns at the same rate as the {self.to}"
+        return result + [Sentence((f"The {self.body} {rate}: the clutch {self.name} holds it.",))]
 
     def conditions(self, coords) -> list[sp.Expr]:
         return [coords.angular_velocity(self.body) - (coords.angular_velocity(self.to) if self.to else 0)]

@@ -24,8 +24,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, Part, Sign
+from derive.parts import AppliedForce, Part, Sign, acting, at_placement
 from derive.parts.surfaces import carried
+from derive.prose import Sentence
 from derive.spelling import no_such
 
 
@@ -150,6 +151,41 @@ class Contact(Part):
         if self.rolling:
             result.append(slip.dot(surface.tangent_at(center, radius)))
         return result
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        f = self.unknowns()
+        who = f"the {self.body}" if self.point is None else f"the {self.body}'s {self.name}"
+        on = f"the {self.surface}" + ("" if self.carrier is None else f", which the {self.carrier} carries")
+        if route == "lagrange":
+            radius = self._geometry(coords)[2]
+            touching = ("it keeps touching it, a gap held by the normal force ", f["normal"])
+            if self.rolling:
+                along = "it does not slide along it" if radius == 0 else \
+                    "the distance along it, with its radius times its turn, stays what it is"
+                held = (" and does not slip: ", *touching, f", and {along}, held by the friction ", f["friction"])
+            elif self.regime == "kinetic":
+                held = (" and slides: ", *touching, "; kinetic friction, ", self.kinetic * f["normal"], ", acts against "
+                        "the slip, its power ", at_placement(self.power(coords), coords))
+            else:
+                held = (" without friction: ", *touching)
+            return [Sentence((f"{who.capitalize()} rests on {on}", *held, "."))]
+        words = {"normal force": ("The {surface} pushes {who} with the normal force ", f["normal"], ""),
+                 "static friction": ("Static friction ", f.get("friction"), " acts on {who} along the {surface}"),
+                 "kinetic friction": ("Kinetic friction, ", None, ", acts on {who} along the {surface}, against the slip")}
+        result = []
+        for load in self.loads(coords):
+            if load.body == self.body:
+                first, math, rest = words[load.label]
+                math = self.kinetic * f["normal"] if math is None else math
+                result.append(Sentence((first.format(surface=self.surface, who=who), math,
+                                        rest.format(surface=self.surface, who=who), *acting(load, coords, (f["normal"],)),
+                                        "."), load.body))
+            else:
+                result.append(Sentence((f"{who.capitalize()} pushes back on the {self.carrier} with the opposite "
+                                        f"{load.label.split(' of ')[0]}", *acting(load, coords), "."), load.body))
+        along = ", nor along it: it grips" if self.rolling else ""
+        touching = who if self.point is not None else f"the point of contact of {who}"
+        return result + [Sentence((f"{touching.capitalize()} does not move into {on}{along}.",))]
 
     def signs(self) -> list[Sign]:
         normal = self.unknowns()["normal"]

@@ -33,6 +33,11 @@ the body's material point at the tangent point (a gripping circle: the cord move
 >>> cord = Cord("string", (reel, Attachment("point", "block")))
 >>> [s.tension_name for s in cord.segments()]
 ['tension']
+>>> from derive.scene import Body, Scene
+>>> from derive.mechanics.kinematics import Coordinates
+>>> scene = Scene({"disk": Body("disk", "disk", m, {"radius": R}), "block": Body("block", "point", m, {})})
+>>> cord.sentences("lagrange", Coordinates(scene))[1].latex()
+"It does not slip on the disk, so the disk's rim moves with it: the arc of its turn, $R \\\\theta_{\\\\mathrm{disk}}$, counts in the length."
 """
 from __future__ import annotations
 
@@ -40,7 +45,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, Part, Sign
+from derive.parts import AppliedForce, Part, Sign, acting, at_placement
+from derive.prose import Sentence
 
 ZERO = (sp.Integer(0), sp.Integer(0))
 
@@ -244,6 +250,40 @@ class Cord(Part):
     def conditions(self, coords) -> list[sp.Expr]:
         return [s.rate(coords) for s in self.segments() if s.symbol is not None]
 
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        result = []
+        for s in self.segments():
+            gripping = [a for a in s.attachments if a.grips or a.kind == "wound"]
+            if route == "lagrange":
+                path = ", ".join(_where(a, i == 0) for i, a in enumerate(s.attachments))
+                subject = f"The cord {self.name}" if len(self.segments()) == 1 else f"The part of the cord {self.name} that"
+                if s.symbol is None:
+                    result.append(Sentence((f"{subject} runs {path}; the force ", s.pulled.force, " that pulls "
+                                            "its free end does work at the rate of the force times how fast the end "
+                                            "moves out: its power.")))
+                else:
+                    result.append(Sentence((f"{subject} runs {path}; it does not stretch, so its length "
+                                            "stays what it is, and the multiplier of that constraint is its tension ",
+                                            s.symbol, ".")))
+                result += [Sentence((f"It does not slip on the {a.body}, so the {a.body}'s rim moves with it: the arc of "
+                                     "its turn, ", a.radius * coords.angle(a.body), ", counts in the length."))
+                           for a in gripping]
+                continue
+            for r in s.runs(coords):
+                for a, point, sign in ((r.start, r.start_point, 1), (r.end, r.end_point, -1)):
+                    if a.body is None or a.kind == "pulled":
+                        continue
+                    load = AppliedForce(a.body, point - coords.position(a.body), sign * s.tension * r.direction, "")
+                    result.append(Sentence((f"The cord {self.name} pulls the {a.body} along its run with the tension ",
+                                            s.tension, *acting(load, coords, (s.tension,)), "."), a.body))
+            if s.symbol is not None:
+                slip = ", and does not slip on the " + " or the ".join(a.body for a in gripping) if gripping else ""
+                rate = at_placement(s.rate(coords), coords)
+                math = (": ", sp.Eq(rate, 0)) if sp.count_ops(rate) < 40 else ()
+                result.append(Sentence((f"The cord {self.name} does not stretch{slip}, so the rates at which its runs "
+                                        "lengthen add up to zero", *math, ".")))
+        return result
+
     def extents(self, coords) -> list[tuple[sp.Expr, str]]:
         """Each straight run measured along its direction in the reference configuration: its
         length there, zero where its ends meet, negative where they have crossed."""
@@ -373,6 +413,20 @@ def _check_runs(reader, places, cord: Cord, field: str) -> None:
             raise reader.fail(f"{field}[{i + 1}]", f"the cord's run from {_describe(a)} to {_describe(b)} has no "
                                                    "length (the two are at one place, or their circles overlap): "
                                                    "place the bodies with at")
+
+
+def _where(a: Attachment, first: bool) -> str:
+    """How a sentence names a place on a cord's path: from the disk, around the pulley, ..."""
+    end = "from" if first else "to"
+    if a.kind == "pulled":
+        return f"{end} its free end, pulled"
+    if a.kind == "wound":
+        return f"{end} the {a.body}, wound on it"
+    if a.kind == "point":
+        return f"{end} the {a.body}" if a.body is not None else f"{end} a point of the ground"
+    if a.body is None:
+        return "around a smooth peg"
+    return f"around the {a.body}" + ("" if a.grips else ", sliding over it")
 
 
 def _describe(a: Attachment) -> str:

@@ -14,7 +14,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, AppliedTorque, Part
+from derive.parts import AppliedForce, AppliedTorque, Part, acting, at_placement
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -56,6 +57,20 @@ class Damper(Part):
             if body is not None:
                 result.append(AppliedForce(body, coords.rotated(body, offset), force, f"damper {self.name}"))
         return result
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        rate = "angular velocity" if self.rotational else "rate of stretch"
+        if route == "lagrange":
+            return [Sentence((f"The damper {self.name} dissipates energy: Rayleigh's function, half its coefficient times "
+                              f"the square of its {rate}, is ", at_placement(self.dissipation(coords), coords), "."))]
+        if self.rotational:
+            (load,) = self.loads(coords)
+            return [Sentence((f"The damper {self.name} turns the {load.body} against its angular velocity with the "
+                              "couple ", at_placement(load.torque, coords), "."), load.body)]
+        resisting = at_placement(self.coefficient * self._line(coords)[1], coords)
+        return [Sentence((f"The damper {self.name} pulls the {load.body} toward its other end with its coefficient times "
+                          "its rate of stretch, ", resisting, *acting(load, coords), "."), load.body)
+                for load in self.loads(coords)]
 
 
 def read(reader, places, name: str, spec: dict, field: str) -> Damper:

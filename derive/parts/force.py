@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, Part
+from derive.parts import AppliedForce, Part, acting, at_placement
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -39,6 +40,14 @@ class Force(Part):
 
     def loads(self, coords) -> list[AppliedForce]:
         return [AppliedForce(self.body, coords.rotated(self.body, self.offset), self.vector, f"force {self.name}")]
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence((f"The force {self.name} does work at the rate of the force times the velocity of its point, "
+                              "along the force: its power is ", at_placement(self.power(coords), coords), "."))]
+        (load,) = self.loads(coords)
+        return [Sentence((f"The force {self.name}, ", self.magnitude, " at the angle ", self.angle, " from the horizontal, "
+                          f"pushes the {self.body}", *acting(load, coords), "."), self.body)]
 
 
 def read(reader, places, name: str, spec: dict, field: str) -> Force:

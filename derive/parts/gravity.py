@@ -8,6 +8,8 @@ Lagrange: V = sum m g y (heights from the reference configuration). Newton–Eul
 >>> m, g = sp.symbols("m g", positive=True)
 >>> Gravity(g).potential(Coordinates(Scene({"ball": Body("ball", "point", m, {})})))
 g*m*y_ball
+>>> Gravity(g).sentences("newton_euler", Coordinates(Scene({"ball": Body("ball", "point", m, {})})))[0].text()
+'The weight of the ball, g⋅m, pulls it straight down.'
 """
 from __future__ import annotations
 
@@ -15,7 +17,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, Part
+from derive.parts import AppliedForce, Part, acting
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -32,6 +35,13 @@ class Gravity(Part):
     def loads(self, coords) -> list[AppliedForce]:
         return [AppliedForce(n, sp.zeros(2, 1), sp.Matrix([0, -b.mass * self.g]), "weight")
                 for n, b in coords.scene.bodies.items()]
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence(("Gravity gives each body the potential energy of its weight times its height above where "
+                              "it is placed: ", self.potential(coords), "."))]
+        return [Sentence((f"The weight of the {load.body}, ", -load.force[1], ", pulls it straight down",
+                          *acting(load, coords), "."), load.body) for load in self.loads(coords)]
 
 
 def read(reader, places, name: str, spec, field: str) -> Gravity:

@@ -11,6 +11,8 @@ other body's point; their material points have the same velocity.
 >>> scene = Scene({"rod": Body("rod", "custom", sp.Symbol("M"), {}, sp.Symbol("I"))})
 >>> Pin("hinge", "rod", (0, d)).gaps(Coordinates(scene))
 [-d*sin(theta_rod) + x_rod, d*cos(theta_rod) - d + y_rod]
+>>> Pin("axle", "rod", (0, 0)).sentences("newton_euler", Coordinates(scene))[0].latex()
+'The axle pushes on the rod with its reaction at its center of mass, so it exerts no torque about it.'
 """
 from __future__ import annotations
 
@@ -18,7 +20,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, Part
+from derive.parts import AppliedForce, Part, acting
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -55,6 +58,28 @@ class Pin(Part):
         if self.to is not None:
             result.append(AppliedForce(self.to, coords.rotated(self.to, self.to_offset), -reaction, label))
         return result
+
+    @property
+    def title(self) -> str:
+        """How a sentence names it: the axle, the pivot (a body's joint), or the pin NAME."""
+        return f"the {self.name}" if self.name in ("axle", "pivot") else f"the pin {self.name}"
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        point = "center" if not any(self.offset) else "pinned point"
+        there = "in place" if self.to is None else f"to the {self.to}'s point there"
+        if route == "lagrange":
+            f = self.unknowns()
+            return [Sentence((f"{self.title.capitalize()} holds the {self.body}'s {point} {there}: the gap between the "
+                              "two points is held by the multipliers ", f["reaction.x"], " and ", f["reaction.y"],
+                              ", the components of its reaction."))]
+        loads = self.loads(coords)
+        result = [Sentence((f"{self.title.capitalize()} pushes on the {self.body} with its reaction", *acting(loads[0], coords),
+                            "."), self.body)]
+        if self.to is not None:
+            result.append(Sentence((f"{self.title.capitalize()} pushes back on the {self.to} with the opposite reaction",
+                                    *acting(loads[1], coords), "."), self.to))
+        moves = "does not move" if self.to is None else f"moves with the {self.to}'s point there"
+        return result + [Sentence((f"The {self.body}'s {point} on {self.title} {moves}.",))]
 
     def conditions(self, coords) -> list[sp.Expr]:
         here = coords.velocity(self.body, coords.rotated(self.body, self.offset))

@@ -16,7 +16,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, AppliedTorque, Part
+from derive.parts import AppliedForce, AppliedTorque, Part, acting
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -58,6 +59,23 @@ class Slider(Part):
         if not self.turns:
             result.append(AppliedTorque(self.body, f["torque"], f"couple of {self.name}"))
         return result
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        f = self.unknowns()
+        held = () if self.turns else (f", and the {self.body}'s angle by its couple ", f["torque"])
+        if route == "lagrange":
+            return [Sentence((f"The slider {self.name} keeps the {self.body}'s point on a line at the angle ", self.angle,
+                              " from the horizontal: the gap across the line is held by its normal force ", f["normal"],
+                              *held, "."))]
+        loads = self.loads(coords)
+        result = [Sentence((f"The slider {self.name} pushes the {self.body} across its line with the normal force ",
+                            f["normal"], *acting(loads[0], coords), "."), self.body)]
+        if not self.turns:
+            result.append(Sentence((f"It holds the {self.body} from turning with the couple ", f["torque"], "."),
+                                   self.body))
+        still = "" if self.turns else f", and the {self.body} does not turn"
+        return result + [Sentence((f"The {self.body}'s point on the slider {self.name} does not move across its line"
+                                   f"{still}.",))]
 
     def conditions(self, coords) -> list[sp.Expr]:
         result = [self.across.dot(coords.velocity(self.body, coords.rotated(self.body, self.offset)))]

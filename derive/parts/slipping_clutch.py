@@ -24,7 +24,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedTorque, Part
+from derive.parts import AppliedTorque, Part, at_placement
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -51,3 +52,16 @@ class SlippingClutch(Part):
         label = f"kinetic couple {self.name}"
         return [AppliedTorque(self.body, couple, label)] + (
             [AppliedTorque(self.to, -couple, label)] if self.to else [])
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        other = "the ground" if self.to is None else f"the {self.to}"
+        if route == "lagrange":
+            return [Sentence((f"The plates of {self.name} rub with a kinetic couple of size ", self.couple, " against the "
+                              f"turning of the {self.body} relative to {other}; its power is always negative: ",
+                              at_placement(self.power(coords), coords), "."))]
+        loads = self.loads(coords)
+        result = [Sentence((f"The plates of {self.name} turn the {self.body} against its slip with the couple ",
+                            loads[0].torque, "."), self.body)]
+        if self.to is not None:
+            result.append(Sentence((f"They turn the {self.to} with the opposite couple.",), self.to))
+        return result

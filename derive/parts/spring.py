@@ -17,7 +17,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, Part
+from derive.parts import AppliedForce, Part, acting, at_placement
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -57,6 +58,17 @@ class Spring(Part):
             if body is not None:
                 result.append(AppliedForce(body, coords.rotated(body, offset), force, f"spring {self.name}"))
         return result
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence((f"The spring {self.name} stores half its stiffness times the square of its stretch: ",
+                              self.potential(coords), "."))]
+        pull = at_placement(self.tension(coords), coords)
+        if pull == 0:
+            return [Sentence((f"The spring {self.name} has its rest length where the {body} is placed, so it pulls it with "
+                              "no force there (its stiffness times its stretch).",), body) for body in self.bodies()]
+        return [Sentence((f"The spring {self.name} pulls the {load.body} toward its other end with its stiffness times "
+                          "its stretch, ", pull, *acting(load, coords), "."), load.body) for load in self.loads(coords)]
 
 
 def read(reader, places, name: str, spec: dict, field: str) -> Spring:

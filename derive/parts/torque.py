@@ -12,7 +12,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedTorque, Part
+from derive.parts import AppliedTorque, Part, acting
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -31,6 +32,14 @@ class Torque(Part):
 
     def loads(self, coords) -> list[AppliedTorque]:
         return [AppliedTorque(self.body, self.torque, f"torque {self.name}")]
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence((f"The torque {self.name} does work at the rate of the torque times the {self.body}'s angular "
+                              "velocity: its power is ", self.power(coords), "."))]
+        (load,) = self.loads(coords)
+        return [Sentence((f"The torque {self.name}, ", self.torque, f" counter-clockwise, acts on the {self.body}",
+                          *acting(load, coords), "."), self.body)]
 
 
 def read(reader, places, name: str, spec: dict, field: str) -> Torque:

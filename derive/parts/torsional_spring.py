@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedTorque, Part
+from derive.parts import AppliedTorque, Part, at_placement
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -42,6 +43,19 @@ class TorsionalSpring(Part):
         result = [AppliedTorque(self.body, couple, f"torsional spring {self.name}")]
         if self.to is not None:
             result.append(AppliedTorque(self.to, -couple, f"torsional spring {self.name}"))
+        return result
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        if route == "lagrange":
+            return [Sentence((f"The torsional spring {self.name} stores half its stiffness times the square of the "
+                              f"{self.body}'s twist from its rest angle: ", self.potential(coords), "."))]
+        result = []
+        for load in self.loads(coords):
+            couple = at_placement(load.torque, coords)
+            result.append(Sentence((f"The torsional spring {self.name} is at its rest angle where the {load.body} is "
+                                    "placed, so it exerts no couple on it there.",) if couple == 0 else
+                                   (f"The torsional spring {self.name} turns the {load.body} back toward its rest angle "
+                                    "with the couple ", couple, "."), load.body))
         return result
 
 

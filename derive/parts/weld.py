@@ -16,7 +16,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.parts import AppliedForce, AppliedTorque, Part
+from derive.parts import AppliedForce, AppliedTorque, Part, acting
+from derive.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -65,6 +66,22 @@ class Weld(Part):
             arm = coords.position(self.body) - coords.position(self.to)
             result += [AppliedForce(self.to, arm, -force, label), AppliedTorque(self.to, -f["torque"], label)]
         return result
+
+    def sentences(self, route: str, coords) -> list[Sentence]:
+        f = self.unknowns()
+        other = "the ground" if self.to is None else f"the {self.to}"
+        forces = (f["reaction.x"], " and ", f["reaction.y"])
+        if route == "lagrange":
+            return [Sentence((f"The weld {self.name} holds the {self.body} rigidly to {other}: its center's place is "
+                              "held by the multipliers ", *forces, ", its angle by the couple ", f["torque"], "."))]
+        result = [Sentence((f"The weld {self.name} acts on the {self.body} with the force components ", *forces,
+                            " at its center of mass, so they exert no torque about it, and with the couple ",
+                            f["torque"], "."), self.body)]
+        if self.to is not None:
+            result.append(Sentence((f"The weld {self.name} acts on the {self.to} with the opposite force and couple, the "
+                                    "force", *acting(self.loads(coords)[2], coords), "."), self.to))
+        held = "neither moves nor turns" if self.to is None else f"moves and turns with the {self.to}"
+        return result + [Sentence((f"The {self.body} {held}: the weld {self.name} holds it.",))]
 
     def conditions(self, coords) -> list[sp.Expr]:
         velocity = coords.velocity(self.body, sp.zeros(2, 1))
