@@ -68,6 +68,14 @@ EXPECTED = {
     # Kleppner & Kolenkow ch. 7 (torques about a fixed pivot): a block on the smooth face of a
     # plank pivoted at its center and tilted phi below the horizontal, at release; the surface turns
     # with the plank (it was turned the wrong way, and the routes disagreed).
+    # Serway & Jewett 9th ed., Example 5.10: a block on a smooth incline tied over a light smooth
+    # pulley at its top to a hanging block; a is the incline block's acceleration down the slope.
+    "incline_hanging_block": {
+        "a": lambda s: s.g * (s.m1 * _sin(s.theta) - s.m2) / (s.m1 + s.m2),
+        "ay": lambda s: s.g * (s.m1 * _sin(s.theta) - s.m2) / (s.m1 + s.m2),
+        "T": lambda s: s.m1 * s.m2 * s.g * (1 + _sin(s.theta)) / (s.m1 + s.m2),
+        "N": lambda s: s.m1 * s.g * _cos(s.theta),
+    },
     "plank_block_tilted": {
         "alpha": lambda s: -s.m * s.g * s.d * _cos(s.phi) / (s.M * s.L**2 / 12 + s.m * s.d**2),
         "N": lambda s: s.m * s.g * _cos(s.phi) * s.M * s.L**2 / (s.M * s.L**2 + 12 * s.m * s.d**2),

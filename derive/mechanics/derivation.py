@@ -306,6 +306,10 @@ def tidy(expr: sp.Expr) -> sp.Expr:
             return sp.Piecewise(*((tidy(value), where) for value, where in folded.args))
     with limits.time_limit("simplifying"):
         expr = sp.cancel(sp.together(radicals(expr)))
+        if expr.has(sp.sin, sp.cos) and _plain_angles(expr) and not _rational_trigonometric(expr):
+            folded = _folded_squares(expr)  # not trigsimp: 1 to 90 s a cord's run over a pulley
+            if folded is not None:
+                return sp.factor_terms(sp.factor(folded))
         if expr.has(sp.sin, sp.cos) and _rational_trigonometric(expr) and sp.count_ops(expr) > LONG:
             numerator, denominator = sp.fraction(expr)
             expr = sp.cancel(simplest(numerator) / simplest(denominator))
@@ -391,6 +395,47 @@ def _rational_trigonometric(expr: sp.Expr) -> bool:
         and all(p.exp.is_Integer for p in expr.atoms(sp.Pow))
 
 
+def _folded_squares(expr: sp.Expr) -> sp.Expr | None:
+    """A ratio in which roots and absolute values meet sines and cosines, with
+    sin^2 = 1 - cos^2, sqrt(b)^2 = b and |x|^2 = x^2 applied to its numerator and denominator as
+    polynomials in them, then cancelled: each an identity, so nothing is assumed of a sign. A cord
+    from a block on an incline over a pulley to a hanging block gave its acceleration as a ratio of
+    7000 operations with sqrt(b), 1/sqrt(b) and |d - r cos(theta)|, over which trigsimp took 90 s
+    (this takes 1 s). sympy's ratsimpmodprime does the same over a Groebner basis, but needs a
+    prime ideal, which |x|^2 = x^2 is not. Where the denominator would keep a root or an absolute
+    value, or a root is not a square root of a polynomial, None: rationalizing a denominator could
+    make one that vanishes.
+
+    >>> b, th = sp.symbols("b theta", positive=True)
+    >>> _folded_squares((sp.sqrt(b)**3*sp.sin(th)**2 + sp.sqrt(b)**3*sp.cos(th)**2) / b)
+    sqrt(b)
+    """
+    squares = {}
+    for atom in sorted(expr.atoms(sp.Pow, sp.Abs), key=sp.default_sort_key):
+        inner = atom.args[0]
+        if isinstance(atom, sp.Abs):
+            squares[atom] = inner ** 2
+        elif atom.exp.is_Rational and atom.exp.q == 2 and sp.fraction(sp.together(inner))[1] == 1:
+            squares.setdefault(sp.sqrt(inner), inner)
+        elif not atom.exp.is_Integer:
+            return None  # a cube root, or a root of a ratio: no square of a polynomial folds it
+        if not _rational_trigonometric(inner):
+            return None  # nested
+    squares.update({f: 1 - sp.cos(f.args[0]) ** 2 for f in expr.atoms(sp.sin)})  # last: the others bring sines
+    symbols = {atom: sp.Dummy() for atom in squares}
+    generic = expr.xreplace({a: symbols[sp.sqrt(a.base)] ** (2 * a.exp) for a in expr.atoms(sp.Pow)
+                             if a.exp.is_Rational and a.exp.q == 2})
+    numerator, denominator = sp.fraction(sp.together(generic.xreplace(symbols)))  # expr comes cancelled
+    for atom, square in squares.items():
+        relation = symbols[atom] ** 2 - square.xreplace(symbols)
+        numerator = sp.rem(numerator, relation, symbols[atom])
+        denominator = sp.rem(denominator, relation, symbols[atom])
+    if denominator == 0 or denominator.free_symbols & set(symbols.values()):
+        return None
+    back = {symbol: atom for atom, symbol in symbols.items()}
+    return sp.cancel(numerator / denominator).xreplace(back)
+
+
 def _positive(factor: sp.Expr) -> bool:
     """Whether a factor is positive for every value of its symbols (positive ones) and angles: each
     sine and cosine put in [-1, 1] by sympy's interval arithmetic (AccumBounds).
@@ -403,8 +448,28 @@ def _positive(factor: sp.Expr) -> bool:
         return True
     bounded = factor.xreplace({f: sp.AccumBounds(-1, 1) for f in factor.atoms(sp.sin, sp.cos)})
     if bounded.free_symbols:
-        return False
+        return _positive_square(factor)
     return bool(bounded.min.is_positive) if isinstance(bounded, sp.AccumBounds) else bool(bounded.is_positive)
+
+
+def _positive_square(factor: sp.Expr) -> bool:
+    """Whether a factor is a*x**2 + b*x + c with a and c - b**2/(4 a) positive for all values, for
+    one of its symbols x: then it is positive for every real x (the square completed). A cord's
+    squared length from a block to a pulley, d**2 - 2*d*r*cos(theta) + r**2*cos(theta)**2 + r**2,
+    is (d - r cos(theta))**2 + r**2.
+
+    >>> d, r, th = sp.symbols("d r theta", positive=True)
+    >>> _positive_square(d**2 - 2*d*r*sp.cos(th) + r**2*sp.cos(th)**2 + r**2), _positive_square(d**2 - r**2)
+    (True, False)
+    """
+    inside = set().union(*(f.free_symbols for f in factor.atoms(sp.Function)))
+    for x in sorted(factor.free_symbols - inside, key=sp.default_sort_key):
+        polynomial = sp.Poly(factor, x)
+        if polynomial.degree() == 2:
+            a, b, c = polynomial.all_coeffs()
+            if _positive(a) and _positive(sp.cancel(c - b ** 2 / (4 * a))):
+                return True
+    return False
 
 
 def _factors(expr: sp.Expr) -> list[tuple[sp.Expr, sp.Integer]]:
