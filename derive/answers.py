@@ -18,7 +18,7 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (bearings, fixed_point, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths,
+from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths,
                               quantum, rolling)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
@@ -468,6 +468,42 @@ class Solution(StateAnswers, CrossChecks):
             raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
         return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
 
+    def free_moments(self, name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+        """The principal moments about the center of mass along the own axes of a body in free
+        rotation (derive.mechanics.free_rotation); refused naming the body where they do not fit."""
+        body, free = self.scene.bodies[name], self.scene.free_rotations[name]
+        if free.inertia is not None:  # a custom body: its symmetry axis is its own z
+            tensor = sp.diag(free.inertia[0], free.inertia[0], free.inertia[1])
+        else:
+            parts = body.composite.parts if body.composite is not None else None
+            tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
+        try:
+            return free_rotation.principal_moments(tensor)
+        except free_rotation.NotModelled as error:
+            raise self.problem.error(f"scene.bodies.{name}", str(error)) from None
+
+    def free_axis(self, name: str, rank: str) -> int:
+        """The own axis (0, 1, 2) of least, intermediate or greatest moment, ordered at the middle
+        of the ranges (`conditions` keeps the order in every variant)."""
+        moments = self.free_moments(name)
+        try:
+            return free_rotation.ranked(moments, [self._sample(m) for m in moments])[free_rotation.RANKS.index(rank)]
+        except free_rotation.NotModelled as error:
+            raise self.problem.error(f"scene.bodies.{name}", str(error)) from None
+
+    def _free_rotation(self, q: Quantity, route: str = "newton_euler") -> sp.Expr:
+        """A free precession or a steady rotation's wobble or growth rate by one route."""
+        free, moments = self.scene.free_rotations[q.target], self.free_moments(q.target)
+        if q.detail in free_rotation.SYMMETRIC:
+            try:
+                I1, I3, _ = free_rotation.symmetric(moments)
+            except free_rotation.NotModelled as error:
+                raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
+            return free_rotation.precession((I1, I3), free.spin, free.across, q.detail, route)
+        _, rank, kind = q.detail.split(".")
+        squared = free_rotation.exponent_squared(moments, self.free_axis(q.target, rank), free.spin, route)
+        return tidy(sp.sqrt(squared if kind == "growth_rate" else -squared))
+
     @cached_property
     def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """(expression, strict, meaning): each expression must be positive (strict) or not
@@ -493,6 +529,13 @@ class Solution(StateAnswers, CrossChecks):
             result.append((tidy(I3**2 * point.spin**2 - 4 * I1 * mass * g * distance * sp.cos(point.tilt)), False,
                            f"no steady precession of the {name}: the spin is too slow "
                            "(I3^2 w^2 < 4 I1 m g l cos(theta))"))
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "free_rotation"
+                     and a.quantity.detail.startswith("rotation.")}:
+            moments = self.free_moments(name)
+            order = [self.free_axis(name, rank) for rank in free_rotation.RANKS]
+            result += [(tidy(moments[high] - moments[low]), True, f"the {name}'s principal moments change order "
+                        f"here ({'xyz'[low]} and {'xyz'[high]}): the axis of each rank is chosen at the middle of "
+                        "the ranges") for low, high in zip(order, order[1:])]
         for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
             if isinstance(surface, Plane) and surface.angle.free_symbols:
                 result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "
@@ -664,6 +707,8 @@ class Solution(StateAnswers, CrossChecks):
             result = self._second_routes(ask.quantity)[0]
         elif ask.quantity.kind == "bearings":
             result = self._bearings(ask.quantity, "newton_euler")
+        elif ask.quantity.kind == "free_rotation":
+            result = self._free_rotation(ask.quantity)
         elif ask.quantity.kind == "wheel":
             w = self.scene.wheel
             arguments = (w.torque, w.duration, w.inertia, w.spin)
