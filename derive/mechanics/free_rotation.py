@@ -73,7 +73,7 @@ def principal_moments(tensor: sp.Matrix) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
 def symmetric(moments) -> tuple[sp.Expr, sp.Expr, str]:
     """(I1, I3, axis): the repeated moment, the distinct one and its own axis (x, y or z).
 
-    >>> symmetric((2, 1, 2))
+    >>> symmetric(principal_moments(sp.diag(2, 1, 2)))
     (2, 1, 'y')
     """
     for k in range(3):
