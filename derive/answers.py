@@ -18,8 +18,8 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths,
-                              quantum, rolling)
+from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, lagrange, many_bodies, newton_euler,
+                              orbits, paths, quantum, rolling)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion

@@ -21,8 +21,8 @@ import sympy as sp
 
 from derive import inertia, limits, numeric, units
 from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
-from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, impacts, integrated_motion, lagrange, many_bodies,
-                              orbits, paths, states)
+from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, impacts, integrated_motion, lagrange,
+                              many_bodies, orbits, paths, states)
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import row_reduced, tidy
 from derive.problem import Ask, Problem

@@ -3,6 +3,7 @@ moments; Taylor's Earth and Feynman's plate; a rigid body's rotation integrated 
 (its orientation and Euler's equations, numpy alone) shows the derived precession rates, wobbles
 and growth rate; a wrong route is caught; what is not modelled is refused naming the field."""
 import math
+import re
 
 import numpy as np
 import pytest
@@ -10,7 +11,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from conftest import refused
-from derive import problem, report
+from derive import figure, problem, report
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.mechanics import free_rotation
@@ -223,3 +224,26 @@ def test_across_is_needed_only_where_an_ask_reads_it(tmp_path):
     assert report.solve(problem.load(path))["answers"]["a0"]["value"] == "7.00000000000000"  # omega3: a disk's I3 = 2 I1
     refused(tmp_path, text.replace("ASKS", "  a0: {meaning: asked, of: body.free_precession.space, unit: rad/s}"),
             "ask.a0")
+
+
+def test_the_figure_draws_l_the_axis_and_omega_at_their_angles(tmp_path):
+    # a disk, I3 = 2 I1, omega_t/omega3 = 1/2: L at atan(1/4) from the axis, omega at atan(1/2), beyond L
+    shape = "{shape: disk, mass: m, radius: R, free_rotation: {spin: w3, across: wt}}"
+    asks = "  a0: {meaning: asked, of: body.angle_L_axis, unit: rad}"
+    path = tmp_path / "p.yaml"
+    path.write_text(BODY.replace("SHAPE", shape).replace("ASKS", asks).replace("value: 2}", "value: 3.5}"))
+    picture = figure.tikz(problem.load(path))
+    ends = {style: tuple(map(float, re.search(rf"\\draw\[{style}\] \(0,0\) -- \(([-\d.]+),([-\d.]+)\)",
+                                                picture).groups()))
+            for style in ("very thick, ->, green!40!black", "velocity")}
+    axis = re.search(r"\\draw\[axis\] \(([-\d.]+),([-\d.]+)\) -- \(([-\d.]+),([-\d.]+)\)", picture).groups()
+    axis = np.subtract(*np.reshape(np.array(axis, dtype=float), (2, 2))[::-1])
+
+    def degrees(u, v):
+        return math.degrees(math.acos(np.dot(u, v) / np.linalg.norm(u) / np.linalg.norm(v)))
+
+    momentum = ends["very thick, ->, green!40!black"]
+    assert momentum[0] == 0  # L up the page
+    assert math.isclose(degrees(momentum, axis), math.degrees(math.atan(0.25)), abs_tol=0.5)
+    assert math.isclose(degrees(ends["velocity"], axis), math.degrees(math.atan(0.5)), abs_tol=0.5)
+    assert ends["velocity"][0] > 0 > axis[0]  # omega beyond L, the axis on L's other side
