@@ -528,10 +528,10 @@ def read_scene(reader: Reader, raw) -> Scene:
             if "bearings" in spec}
     free = {n: _free_rotation(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
             if "free_rotation" in spec}
-    if free and (len(bodies) > 1 or constraints or loads or gravity_part is not None):
+    if free and (len(bodies) > 1 or constraints or loads or gravity_part is not None or raw.get("states")):
         raise reader.fail("scene", "a body in free rotation turns with no torque about its center: one body, no "
-                                   "loads, joints or cords (its weight exerts no torque about its center: leave "
-                                   "gravity out)")
+                                   "loads, joints, cords or states (its weight exerts no torque about its center: "
+                                   "leave gravity out)")
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wheel, wave,
                   internal, held, pivoted, free, states)

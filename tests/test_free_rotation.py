@@ -202,6 +202,10 @@ def test_a_variant_whose_moments_change_order_is_refused():
      "scene.bodies.body.free_rotation", "not a point"),
     ("{shape: disk, mass: m, radius: R, free_rotation: {spin: w3, across: wt}}\n  loads:\n    - gravity: R*w3**2",
      "body.free_precession.body", "scene", "leave gravity out"),
+    ("{shape: disk, mass: m, radius: R, free_rotation: {spin: w3, across: wt}}\n  states:\n    spun: {rates: "
+     "{body.angular_velocity: w3}}", "body.free_precession.body", "scene", "states"),
+    ("{shape: disk, mass: m, radius: R, free_rotation: {spin: w3, across: wt}}", "body.acceleration.x", "ask.a0",
+     "a body in free rotation has"),
     ("{shape: disk, mass: m, radius: R, free_rotation: {spin: w3, across: wt}}", "body.rotation.intermediate.wobble",
      "ask.a0", "tennis-racket"),
     ("{shape: disk, mass: m, radius: R, free_rotation: {spin: w3, across: wt}}", "body.free_precession.bodies",
