@@ -251,3 +251,33 @@ def test_the_figure_draws_l_the_axis_and_omega_at_their_angles(tmp_path):
     assert math.isclose(degrees(momentum, axis), math.degrees(math.atan(0.25)), abs_tol=0.5)
     assert math.isclose(degrees(ends["velocity"], axis), math.degrees(math.atan(0.5)), abs_tol=0.5)
     assert ends["velocity"][0] > 0 > axis[0]  # omega beyond L, the axis on L's other side
+
+
+DUMBBELL = """
+      shape: composite
+      parts:
+        bar: {shape: rod, mass: m, length: 4*R}
+        one: {shape: sphere, mass: m, radius: R, at: [2*R, 0]}
+        two: {shape: sphere, mass: m, radius: R, at: [-2*R, 0]}"""
+
+
+def test_a_football_like_composite_precesses_about_its_long_axis(tmp_path):
+    # a rod of length 4R with a ball of radius R at each end: symmetric about x (its length), long
+    path = tmp_path / "p.yaml"
+    text = BODY.replace(" SHAPE", DUMBBELL + "\n      free_rotation: {spin: w3, across: wt}")
+    path.write_text(text.replace("ASKS", "  a0: {meaning: asked, of: body.free_precession.body, unit: rad/s}"))
+    solution = Solution(problem.load(path))
+    m, R, w = (p.symbol for p in (solution.problem.parameters[n] for n in ("m", "R", "w3")))
+    axial = 2 * sp.Rational(2, 5) * m * R**2  # the balls about their centers' line
+    transverse = m * (4 * R) ** 2 / 12 + 2 * (sp.Rational(2, 5) * m * R**2 + m * (2 * R) ** 2)  # parallel axes
+    assert sp.simplify(solution.expression("a0") - (axial - transverse) * w / transverse) == 0
+    assert all(c.passed for c in solution.checks())
+
+
+def test_a_composite_whose_own_axes_are_not_principal_is_refused(tmp_path):
+    bent = DUMBBELL.replace("{shape: rod, mass: m, length: 4*R}", "{shape: rod, mass: m, length: 4*R, at: [2*R, 0]}")
+    text = BODY.replace(" SHAPE", bent.replace("at: [-2*R, 0]", "at: [0, 2*R]") + "\n      free_rotation: {spin: w3}")
+    text = text.replace("  wt: {meaning: across, unit: rad/s, value: 2}\n", "")
+    assert "not its principal axes" in refused(
+        tmp_path, text.replace("ASKS", "  a0: {meaning: asked, of: body.free_precession.body, unit: rad/s}"),
+        "scene.bodies.body")
