@@ -479,6 +479,9 @@ class Solution(StateAnswers, CrossChecks):
             tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
         try:
             return free_rotation.principal_moments(tensor)
+        except free_rotation.NotPrincipal as error:
+            raise self.problem.limit(f"find the principal axes of the {name}: {error}; place its parts so that "
+                                     "they are") from None
         except free_rotation.NotModelled as error:
             raise self.problem.error(f"scene.bodies.{name}", str(error)) from None
 

@@ -55,6 +55,10 @@ class NotModelled(ValueError):
     """The body's moments do not fit the ask (no symmetry axis, two equal moments, a zero moment)."""
 
 
+class NotPrincipal(ValueError):
+    """The body's own axes are not principal: finding its principal axes is not modelled."""
+
+
 def principal_moments(tensor: sp.Matrix) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """(Ix, Iy, Iz) of a tensor about the center of mass whose own axes are principal.
 
@@ -62,7 +66,8 @@ def principal_moments(tensor: sp.Matrix) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     (1, 2, 2)
     """
     if any(tidy(tensor[i, j]) != 0 for i, j in ((0, 1), (0, 2), (1, 2))):
-        raise NotModelled(f"the body's own axes are not its principal axes (tensor {sp.sstr(tensor)})")
+        raise NotPrincipal(f"its own axes are not principal (its tensor about the center of mass is "
+                           f"{sp.sstr(sp.Matrix(tensor).tolist())})")
     moments = tuple(tidy(tensor[i, i]) for i in range(3))
     if any(m == 0 for m in moments):
         raise NotModelled("a principal moment is zero (a thin rod about its length): its spin about that axis "
