@@ -472,8 +472,8 @@ class Solution(StateAnswers, CrossChecks):
         """The principal moments about the center of mass along the own axes of a body in free
         rotation (derive.mechanics.free_rotation); refused naming the body where they do not fit."""
         body, free = self.scene.bodies[name], self.scene.free_rotations[name]
-        if free.inertia is not None:  # a custom body: its symmetry axis is its own z
-            tensor = sp.diag(free.inertia[0], free.inertia[0], free.inertia[1])
+        if free.inertia is not None:  # a custom body's principal moments
+            tensor = sp.diag(*free.inertia)
         else:
             parts = body.composite.parts if body.composite is not None else None
             tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)

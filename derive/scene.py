@@ -183,11 +183,12 @@ class FreeRotation:
     """A body turning with no torque about its center of mass (free flight, or a frictionless point
     at its center): `spin`, omega's component along its symmetry axis (or the rate of a steady
     rotation about the principal axis asked); `across`, omega's component across that axis.
-    `inertia`: a custom body's (transverse, axial) moments about its center of mass, else None."""
+    `inertia`: a custom body's principal moments about its center of mass along its own x, y, z,
+    else None."""
 
     spin: sp.Expr
     across: sp.Expr
-    inertia: tuple[sp.Expr, sp.Expr] | None = None
+    inertia: tuple[sp.Expr, sp.Expr, sp.Expr] | None = None
 
 
 #: What a body in free rotation can be asked (derive.mechanics.free_rotation): of a symmetric body,

@@ -72,7 +72,9 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         elif size in spec:
             raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
     given = None
-    if shape == "custom" and ("pivot_point" in spec or "free_rotation" in spec):
+    if shape == "custom" and "free_rotation" in spec:
+        given = _free_inertia(reader, spec, field)[2]  # the moment about z; the rest is read with the rotation
+    elif shape == "custom" and "pivot_point" in spec:
         given = _pivot_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the point
     elif shape == "custom":
         if "inertia" not in spec:
@@ -601,7 +603,8 @@ def _pivot_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.
     there). Without `transverse` it is left open (a fast top's rate does not need it)."""
     if "inertia" not in spec:
         raise reader.fail(f"{field}.inertia", "a custom body on a fixed point or in free rotation needs inertia: "
-                                              "{axial: I3, transverse: I1}")
+                                              "{axial: I3, transverse: I1} (in free rotation, or {principal: "
+                                              "[Ix, Iy, Iz]})")
     raw = reader.mapping(spec["inertia"], f"{field}.inertia", required=("axial",), optional=("transverse",))
     axial = reader.positive(raw["axial"], f"{field}.inertia.axial", "kg*m^2", "a moment of inertia")
     if "transverse" not in raw:
@@ -660,7 +663,8 @@ def _free_rotation(reader: Reader, spec: dict, field: str, body: Body) -> FreeRo
     center of mass (derive.mechanics.free_rotation); `spin` is omega's component along the
     symmetry axis (or the rate of the steady rotation asked), `across` its component across the
     axis, left open where no ask needs it. A uniform shape of derive inertia, a composite of them
-    whose own axes are principal, or a custom body with inertia: {axial, transverse}."""
+    whose own axes are principal, or a custom body with inertia: {axial, transverse} or
+    {principal: [Ix, Iy, Iz]}."""
     here = f"{field}.free_rotation"
     if body.shape == "point" or body.density is not None:
         raise reader.fail(here, "a body in free rotation is a uniform shape of derive inertia, a composite of them or "
@@ -674,8 +678,23 @@ def _free_rotation(reader: Reader, spec: dict, field: str, body: Body) -> FreeRo
     spin = reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin")
     across = (reader.positive(raw["across"], f"{here}.across", "rad/s", "omega's component across the axis")
               if "across" in raw else reader.unspecified(f"across_{body.name}", "rad/s"))
-    moments = _pivot_inertia(reader, spec, field) if body.shape == "custom" else None
+    moments = _free_inertia(reader, spec, field) if body.shape == "custom" else None
     return FreeRotation(spin, across, moments)
+
+
+def _free_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """A custom body's principal moments about its center of mass along its own x, y, z in free
+    rotation: `inertia: {principal: [Ix, Iy, Iz]}`, or `{axial: I3, transverse: I1}` (I1, I1, I3)."""
+    raw = spec.get("inertia")
+    if isinstance(raw, dict) and "principal" in raw:
+        raw = reader.mapping(raw, f"{field}.inertia", required=("principal",))
+        here = f"{field}.inertia.principal"
+        if not isinstance(raw["principal"], list) or len(raw["principal"]) != 3:
+            raise reader.fail(here, "three principal moments about the center of mass, [Ix, Iy, Iz]")
+        return tuple(reader.positive(v, f"{here}[{i}]", "kg*m^2", "a moment of inertia")
+                     for i, v in enumerate(raw["principal"]))
+    transverse, axial = _pivot_inertia(reader, spec, field)
+    return transverse, transverse, axial
 
 
 def _orbit(reader: Reader, raw) -> Orbit:

@@ -287,3 +287,37 @@ def test_a_composite_whose_own_axes_are_not_principal_is_an_engine_limit(tmp_pat
     assert "derive cannot yet find the principal axes of the body" in refused(
         tmp_path, text.replace("ASKS", "  a0: {meaning: asked, of: body.free_precession.body, unit: rad/s}"),
         "not principal", exit_code=1)
+
+
+RACKET = """id: racket
+title: A tennis racket
+topic: angular_momentum
+parameters:
+  I1: {meaning: least moment, unit: kg*m^2, range: [0.001, 0.002]}
+  I2: {meaning: intermediate moment, unit: kg*m^2, range: [0.01, 0.02]}
+  I3: {meaning: greatest moment, unit: kg*m^2, range: [0.03, 0.04]}
+  W: {meaning: rate, unit: rad/s, value: 10}
+scene:
+  bodies:
+    racket: {shape: custom, inertia: {principal: PRINCIPAL}, free_rotation: {spin: W}}
+ask:
+  least: {meaning: wobble, of: racket.rotation.least.wobble, unit: rad/s}
+  middle: {meaning: growth, of: racket.rotation.intermediate.growth_rate, unit: rad/s}
+  greatest: {meaning: wobble, of: racket.rotation.greatest.wobble, unit: rad/s}
+question: A racket turns.
+"""
+
+
+def test_a_custom_body_given_its_three_principal_moments(tmp_path):
+    # Morin ch. 9, Taylor §10.8 with lambda1 < lambda2 < lambda3 given, in any order along the own axes
+    path = tmp_path / "racket.yaml"
+    path.write_text(RACKET.replace("PRINCIPAL", "[I2, I3, I1]"))
+    solution = Solution(problem.load(path))
+    J1, J2, J3, rate = (solution.problem.parameters[n].symbol for n in ("I1", "I2", "I3", "W"))
+    book = {"least": rate * sp.sqrt((J2 - J1) * (J3 - J1) / (J2 * J3)),
+            "middle": rate * sp.sqrt((J2 - J1) * (J3 - J2) / (J1 * J3)),
+            "greatest": rate * sp.sqrt((J3 - J1) * (J3 - J2) / (J1 * J2))}
+    assert all(sp.simplify(solution.expression(n) - f) == 0 for n, f in book.items())
+    assert [solution.free_axis("racket", r) for r in free_rotation.RANKS] == [2, 0, 1]
+    assert all(c.passed for c in solution.checks())
+    refused(tmp_path, RACKET.replace("PRINCIPAL", "[I1, I2]"), "scene.bodies.racket.inertia.principal")

@@ -121,17 +121,20 @@ def _free_rotation(fig: _Figure) -> None:
     any other body in free rotation: the body with a spin about its own axis."""
     name, free = next(iter(fig.scene.free_rotations.items()))
     body = fig.scene.bodies[name]
-    if not any(a.quantity.kind == "free_rotation" and a.quantity.detail in free_rotation.SYMMETRIC
-               for a in fig.problem.asks.values()):
+    if free.inertia is not None:
+        tensor = sp.diag(*free.inertia)
+    else:
+        parts = body.composite.parts if body.composite is not None else None
+        tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
+    try:
+        transverse, axial, _ = free_rotation.symmetric(free_rotation.principal_moments(tensor))
+    except (free_rotation.NotModelled, free_rotation.NotPrincipal):
+        transverse = None
+    if transverse is None or not any(a.quantity.kind == "free_rotation" and a.quantity.detail in
+                                     free_rotation.SYMMETRIC for a in fig.problem.asks.values()):
         fig.body(body, (0, 0), 1.2)
         fig.spin((0, 0), 0.5, 1, fig.m(free.spin))
         return
-    if free.inertia is not None:
-        transverse, axial = free.inertia
-    else:
-        parts = body.composite.parts if body.composite is not None else None
-        moments = free_rotation.principal_moments(bearings.body_tensor(body.shape, body.mass, body.sizes, parts))
-        transverse, axial, _ = free_rotation.symmetric(moments)
     ratio = _clamp(fig.num(axial / transverse, 2.0), 0.2, 5.0)  # I3/I1: the same for every mass
     across = _clamp(fig.num(free.across / free.spin, 0.4), 0.1, 1.0)  # tan of omega's angle
     tilt = _clamp(math.atan(across / ratio), math.radians(10), math.radians(40))  # the axis from L
