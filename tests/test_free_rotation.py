@@ -11,7 +11,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from conftest import refused
-from derive import figure, problem, report
+from derive import distractors, figure, problem, report
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.mechanics import free_rotation
@@ -321,3 +321,15 @@ def test_a_custom_body_given_its_three_principal_moments(tmp_path):
     assert [solution.free_axis("racket", r) for r in free_rotation.RANKS] == [2, 0, 1]
     assert all(c.passed for c in solution.checks())
     refused(tmp_path, RACKET.replace("PRINCIPAL", "[I1, I2]"), "scene.bodies.racket.inertia.principal")
+
+
+def test_multiple_choice_offers_the_moments_swapped():
+    # a long cylinder: with I1 and I3 swapped omega would turn the other way about the axis
+    p = problem.load(TEXTBOOK + "football_free_precession.yaml")
+    values = p.values({"M": "0.4", "R": "0.04", "h": "0.25", "omega3": "40", "omega_t": "3"})
+    found = {d["mistake"]: d["value"] for d in distractors.distractors(p, "body", values, 3, limit=10)}
+    right = float(report.solve(p, {"M": "0.4", "R": "0.04", "h": "0.25", "omega3": "40", "omega_t": "3"}, 6)
+                  ["answers"]["body"]["value"])
+    swapped = float(found["the ball's moments about its axis and across it swapped"])
+    assert right < 0 < swapped  # retrograde, and prograde when swapped: (I1 - I3) omega3/I3
+    assert math.isclose(swapped, -right * (1 + right / 40) ** -1, rel_tol=2e-3)
