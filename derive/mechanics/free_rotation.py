@@ -43,10 +43,11 @@ import sympy as sp
 from sympy.physics import mechanics as me
 
 from derive.mechanics.derivation import tidy
+from derive.scene import FREE_ROTATION_QUANTITIES
 
 ROUTES = ("newton_euler", "lagrange")
-#: The asks of a symmetric body's free precession, and of a steady rotation about a principal axis.
-SYMMETRIC = ("free_precession.body", "free_precession.space", "angle_L_axis", "angle_omega_axis")
+#: The asks of a symmetric body's free precession (the others: a steady rotation about an axis of a rank).
+SYMMETRIC = tuple(q for q in FREE_ROTATION_QUANTITIES if not q.startswith("rotation."))
 RANKS = ("least", "intermediate", "greatest")
 S = sp.Symbol("s")  # the exponent of a small motion, e^(s t)
 
