@@ -507,6 +507,21 @@ class Solution(StateAnswers, CrossChecks):
         squared = free_rotation.exponent_squared(moments, self.free_axis(q.target, rank), free.spin, route)
         return tidy(sp.sqrt(squared if kind == "growth_rate" else -squared))
 
+    def _free_rotation_steps(self) -> dict[str, list[Step]]:
+        """Each route's equations for the bodies in free rotation, then what it gives for each ask."""
+        result = {}
+        for route, title in zip(free_rotation.ROUTES, ("by Euler's equations", "by Lagrange's equations")):
+            steps = []
+            for name in self.scene.free_rotations:
+                details = {a.quantity.detail for a in self.problem.asks.values() if a.quantity.target == name}
+                orders = tuple(order for order, asked in (("ZXZ", details & set(free_rotation.SYMMETRIC)),
+                                                          ("ZXY", details - set(free_rotation.SYMMETRIC))) if asked)
+                steps += free_rotation.steps(self.free_moments(name), route, orders)
+            asked = tuple(sp.Eq(sp.Symbol(n), self._free_rotation(a.quantity, route), evaluate=False)
+                          for n, a in self.problem.asks.items() if a.quantity.kind == "free_rotation")
+            result[title] = [*steps, Step("Solved for what is asked", asked, role="solve")]
+        return result
+
     @cached_property
     def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """(expression, strict, meaning): each expression must be positive (strict) or not
@@ -754,6 +769,8 @@ class Solution(StateAnswers, CrossChecks):
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
             return {"orbit": self._orbit_steps()}
+        if kinds == {"free_rotation"}:
+            return self._free_rotation_steps()
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}

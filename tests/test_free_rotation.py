@@ -333,3 +333,15 @@ def test_multiple_choice_offers_the_moments_swapped():
     swapped = float(found["the ball's moments about its axis and across it swapped"])
     assert right < 0 < swapped  # retrograde, and prograde when swapped: (I1 - I3) omega3/I3
     assert math.isclose(swapped, -right * (1 + right / 40) ** -1, rel_tol=2e-3)
+
+
+def test_the_worked_solution_shows_each_route_s_equations_and_results():
+    plate = Solution(problem.load(TEXTBOOK + "thrown_plate_wobble.yaml"))
+    steps = plate.steps()
+    assert list(steps) == ["by Euler's equations", "by Lagrange's equations"]
+    euler, lagrange = steps.values()
+    assert "Euler's equations" in euler[1].text and "kinetic energy in Euler angles" in lagrange[1].text
+    for route in (euler, lagrange):
+        shown = {str(e.lhs): e.rhs for e in route[-1].equations}
+        assert set(shown) == set(plate.problem.asks)
+        assert all(sp.simplify(shown[n] - plate.expression(n)) == 0 for n in shown)

@@ -42,7 +42,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive.mechanics.derivation import tidy
+from derive.mechanics.derivation import Step, tidy
 from derive.scene import FREE_ROTATION_QUANTITIES
 
 ROUTES = ("newton_euler", "lagrange")
@@ -90,10 +90,55 @@ def symmetric(moments) -> tuple[sp.Expr, sp.Expr, str]:
                       "equal, the third different)")
 
 
+def _free_body(moments, order: str):
+    """(ground, body frame, Euler angles, Lagrangian) of a free body of principal moments
+    `moments` along its frame's x, y, z, turned by 'Body' angles in `order` (ZXZ: phi, theta,
+    psi; ZXY: phi, then the small a and b)."""
+    ground = me.ReferenceFrame("N")
+    angles = me.dynamicsymbols("phi theta psi" if order == "ZXZ" else "phi a b")
+    frame = ground.orientnew("B", "Body", angles, order)
+    center = me.Point("O")
+    center.set_vel(ground, 0)
+    body = me.RigidBody("body", center, frame, 1, (me.inertia(frame, *moments), center))
+    return ground, frame, angles, me.Lagrangian(ground, body)
+
+
+def _plain(expr, functions) -> sp.Expr:
+    """An expression in dynamic symbols written in plain ones for a worked solution (q' as qdot)."""
+    t = me.dynamicsymbols._t
+    names = {f: f.func.__name__ for f in functions}
+    rates = {f.diff(t): sp.Symbol(f"{n}dot") for f, n in names.items()}
+    return me.msubs(expr, rates, {f: sp.Symbol(n) for f, n in names.items()})
+
+
+def steps(moments, route: str, orders: tuple[str, ...]) -> list[Step]:
+    """The equations a route starts from, for a worked solution: Euler's equations with no torque,
+    or the kinetic energy in each order of Euler angles the asks need (ZXZ for a symmetric body's
+    precession, ZXY for a steady rotation's small motions).
+
+    >>> steps((1, 1, 2), "newton_euler", ())[1].equations[0]
+    Eq(omegadot_1, -omega_2*omega_3)
+    """
+    result = [Step("The principal moments about the center of mass, along the body's own axes",
+                   tuple(sp.Eq(sp.Symbol(f"I_{k}"), m, evaluate=False) for k, m in zip((1, 2, 3), moments)))]
+    if route == "newton_euler":
+        rates, w = _euler_rates(moments)
+        return [*result, Step("Euler's equations with no torque, in the body's principal axes",
+                              tuple(sp.Eq(sp.Symbol(f"omegadot_{k}"), _plain(r, w)) for k, r in zip((1, 2, 3), rates)),
+                              role="equations")]
+    for order in orders:
+        turned = {"ZXZ": "phi about L, theta from it, psi about the symmetry axis",
+                  "ZXY": "phi about the steady axis, then small turns a and b across it"}[order]
+        _, _, angles, lagrangian = _free_body(moments, order)
+        result.append(Step(f"The kinetic energy in Euler angles ({turned}), the Lagrangian of the free body",
+                           (sp.Eq(sp.Symbol("T"), tidy(_plain(lagrangian, angles))),), role="equations"))
+    return result
+
+
 def _euler_rates(moments) -> tuple[sp.Matrix, tuple]:
     """omega' in the body frame from Euler's equations with no torque: (rates, (w1, w2, w3))."""
     ground, frame = me.ReferenceFrame("N"), me.ReferenceFrame("B")
-    w = me.dynamicsymbols("omega1:4")
+    w = me.dynamicsymbols("omega_1:4")
     frame.set_ang_vel(ground, sum((c * e for c, e in zip(w, frame)), me.Vector(0)))
     momentum = me.inertia(frame, *moments).dot(frame.ang_vel_in(ground))
     balance = [momentum.dt(ground).dot(e) for e in frame]  # dH/dt in N = 0
@@ -112,14 +157,9 @@ def _steady_precession(I1, I3, spin, across) -> dict:
     """The steady solution of Lagrange's equations in ZXZ Euler angles (phi, theta, psi) with
     theta' = 0, fitted to omega's components (spin along the axis, across it): phi', theta, psi',
     and omega in the body frame from the Euler-angle frames."""
-    ground = me.ReferenceFrame("N")
-    angles = phi, theta, psi = me.dynamicsymbols("phi theta psi")
-    frame = ground.orientnew("B", "Body", angles, "ZXZ")
-    center = me.Point("O")
-    center.set_vel(ground, 0)
-    body = me.RigidBody("body", center, frame, 1, (me.inertia(frame, I1, I1, I3), center))
-    method = me.LagrangesMethod(me.Lagrangian(ground, body), list(angles))
-    theta_equation = method.form_lagranges_equations()[1]
+    ground, frame, angles, lagrangian = _free_body((I1, I1, I3), "ZXZ")
+    phi, theta, psi = angles
+    theta_equation = me.LagrangesMethod(lagrangian, list(angles)).form_lagranges_equations()[1]
     t = me.dynamicsymbols._t
     # the axis's rate about N.z (phi') and tilt from it: P cos(theta) = c, P sin(theta) = across
     c = sp.Symbol("c", positive=True)
@@ -184,14 +224,10 @@ def exponent_squared(moments: tuple, axis: int, rate, route: str) -> sp.Expr:
         characteristic = sp.Poly(jacobian.charpoly(S).as_expr(), S)
         quotient, remainder = sp.div(characteristic, sp.Poly(S, S))  # the spin's own rate: s = 0
     else:
-        ground = me.ReferenceFrame("N")
-        angles = phi, a, b = me.dynamicsymbols("phi a b")
-        frame = ground.orientnew("B", "Body", angles, "ZXY")
-        center = me.Point("O")
-        center.set_vel(ground, 0)
-        turned = [moments[others[0]], moments[others[1]], moments[axis]]  # the spin axis as B.z
-        body = me.RigidBody("body", center, frame, 1, (me.inertia(frame, *turned), center))
-        equations = me.LagrangesMethod(me.Lagrangian(ground, body), list(angles)).form_lagranges_equations()
+        turned = (moments[others[0]], moments[others[1]], moments[axis])  # the spin axis as B.z
+        _, _, angles, lagrangian = _free_body(turned, "ZXY")
+        phi, a, b = angles
+        equations = me.LagrangesMethod(lagrangian, list(angles)).form_lagranges_equations()
         t = me.dynamicsymbols._t
         steady = {**{q.diff(t, 2): 0 for q in angles}, a.diff(t): 0, b.diff(t): 0, phi.diff(t): rate, a: 0, b: 0}
         terms = [[(a, 1), (a.diff(t), S), (a.diff(t, 2), S**2)], [(b, 1), (b.diff(t), S), (b.diff(t, 2), S**2)],
