@@ -18,8 +18,8 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (bearings, fixed_point, gyroscope, lagrange, many_bodies, newton_euler, orbits, paths,
-                              quantum, rolling, rolling_coin)
+from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, lagrange, many_bodies, newton_euler,
+                              orbits, paths, quantum, rolling, rolling_coin)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion
@@ -486,6 +486,59 @@ class Solution(StateAnswers, CrossChecks):
             speed = rolling_coin.min_speed(*body, route)
             return speed if what == "min_speed" else tidy(speed / coin.radius)
         return rolling_coin.steady(*body, coin.tilt, coin.circle, route)[what]
+    def free_moments(self, name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+        """The principal moments about the center of mass along the own axes of a body in free
+        rotation (derive.mechanics.free_rotation); refused naming the body where they do not fit."""
+        body, free = self.scene.bodies[name], self.scene.free_rotations[name]
+        if free.inertia is not None:  # a custom body's principal moments
+            tensor = sp.diag(*free.inertia)
+        else:
+            parts = body.composite.parts if body.composite is not None else None
+            tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
+        try:
+            return free_rotation.principal_moments(tensor)
+        except free_rotation.NotPrincipal as error:
+            raise self.problem.limit(f"find the principal axes of the {name}: {error}; place its parts so that "
+                                     "they are") from None
+        except free_rotation.NotModelled as error:
+            raise self.problem.error(f"scene.bodies.{name}", str(error)) from None
+
+    def free_axis(self, name: str, rank: str) -> int:
+        """The own axis (0, 1, 2) of least, intermediate or greatest moment, ordered at the middle
+        of the ranges (`conditions` keeps the order in every variant)."""
+        moments = self.free_moments(name)
+        try:
+            return free_rotation.ranked(moments, [self._sample(m) for m in moments])[free_rotation.RANKS.index(rank)]
+        except free_rotation.NotModelled as error:
+            raise self.problem.error(f"scene.bodies.{name}", str(error)) from None
+
+    def _free_rotation(self, q: Quantity, route: str = "newton_euler") -> sp.Expr:
+        """A free precession or a steady rotation's wobble or growth rate by one route."""
+        free, moments = self.scene.free_rotations[q.target], self.free_moments(q.target)
+        if q.detail in free_rotation.SYMMETRIC:
+            try:
+                I1, I3, _ = free_rotation.symmetric(moments)
+            except free_rotation.NotModelled as error:
+                raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
+            return free_rotation.precession((I1, I3), free.spin, free.across, q.detail, route)
+        _, rank, kind = q.detail.split(".")
+        squared = free_rotation.exponent_squared(moments, self.free_axis(q.target, rank), free.spin, route)
+        return tidy(sp.sqrt(squared if kind == "growth_rate" else -squared))
+
+    def _free_rotation_steps(self) -> dict[str, list[Step]]:
+        """Each route's equations for the bodies in free rotation, then what it gives for each ask."""
+        result = {}
+        for route, title in zip(free_rotation.ROUTES, ("by Euler's equations", "by Lagrange's equations")):
+            steps = []
+            for name in self.scene.free_rotations:
+                details = {a.quantity.detail for a in self.problem.asks.values() if a.quantity.target == name}
+                orders = tuple(order for order, asked in (("ZXZ", details & set(free_rotation.SYMMETRIC)),
+                                                          ("ZXY", details - set(free_rotation.SYMMETRIC))) if asked)
+                steps += free_rotation.steps(self.free_moments(name), route, orders)
+            asked = tuple(sp.Eq(sp.Symbol(n), self._free_rotation(a.quantity, route), evaluate=False)
+                          for n, a in self.problem.asks.items() if a.quantity.kind == "free_rotation")
+            result[title] = [*steps, Step("Solved for what is asked", asked, role="solve")]
+        return result
 
     @cached_property
     def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
@@ -518,6 +571,13 @@ class Solution(StateAnswers, CrossChecks):
             result.append((tidy(coin.circle - coin.radius * sp.sin(coin.tilt)), True,
                            f"the {name}'s center would be on or across the axis of its contact point's circle "
                            "(circle <= radius sin(tilt)): not modelled"))
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "free_rotation"
+                     and a.quantity.detail.startswith("rotation.")}:
+            moments = self.free_moments(name)
+            order = [self.free_axis(name, rank) for rank in free_rotation.RANKS]
+            result += [(tidy(moments[high] - moments[low]), True, f"the {name}'s principal moments change order "
+                        f"here ({'xyz'[low]} and {'xyz'[high]}): the axis of each rank is chosen at the middle of "
+                        "the ranges") for low, high in zip(order, order[1:])]
         for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
             if isinstance(surface, Plane) and surface.angle.free_symbols:
                 result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "
@@ -691,6 +751,8 @@ class Solution(StateAnswers, CrossChecks):
             result = self._second_routes(ask.quantity)[0]
         elif ask.quantity.kind == "bearings":
             result = self._bearings(ask.quantity, "newton_euler")
+        elif ask.quantity.kind == "free_rotation":
+            result = self._free_rotation(ask.quantity)
         elif ask.quantity.kind == "wheel":
             w = self.scene.wheel
             arguments = (w.torque, w.duration, w.inertia, w.spin)
@@ -739,6 +801,8 @@ class Solution(StateAnswers, CrossChecks):
             return {f"{name}, by {route.replace('_', '–')}": rolling_coin.steps(
                 *self.rolling_coin(name), coin.tilt, coin.circle, route, name in upright)
                 for name, coin in self.scene.rolls_on_edge.items() for route in ("lagrange", "newton_euler")}
+        if kinds == {"free_rotation"}:
+            return self._free_rotation_steps()
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}

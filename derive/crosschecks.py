@@ -21,8 +21,8 @@ import sympy as sp
 
 from derive import inertia, limits, numeric, units
 from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
-from derive.mechanics import (bearings, fixed_point, gyroscope, impacts, integrated_motion, lagrange, many_bodies,
-                              orbits, paths, rolling_coin, states)
+from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, impacts, integrated_motion, lagrange,
+                              many_bodies, orbits, paths, rolling_coin, states)
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import row_reduced, tidy
 from derive.problem import Ask, Problem
@@ -89,6 +89,8 @@ class CrossChecks:
             result.append(self._wheel_check())
         if "bearings" in kinds:
             result += self._bearings_checks()
+        if "free_rotation" in kinds:
+            result.append(self._free_rotation_check())
         agreed: dict[str, list[str]] = {}
         for ask in self.problem.asks.values():
             if ask.quantity.kind in SECOND_ROUTE_KINDS:
@@ -471,6 +473,22 @@ class CrossChecks:
                                 "Integrating r × (ω × r) over the body's mass gives the same angular momentum as "
                                 "the inertia tensor."))
         return result
+
+    def _free_rotation_check(self) -> Check:
+        """Every asked free precession, wobble and growth rate by Euler's equations and by
+        Lagrange's equations in Euler angles (derive.mechanics.free_rotation)."""
+        methods = set()
+        for ask_name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "free_rotation":
+                found = [self._free_rotation(ask.quantity, route) for route in free_rotation.ROUTES]
+                methods.add(agree(*found))
+                if None in methods:
+                    raise CheckFailure(f"{self.problem.id}: {ask_name} is {found[0]} by Euler's equations, "
+                                       f"{found[1]} by Lagrange's")
+        return Check("lagrange_vs_newton_euler", True, " or ".join(m for m in METHODS if m in methods),
+                     "free precession, wobble and growth rates agree (Euler's equations, Lagrange in Euler angles)",
+                     "Euler's equations with no torque and Lagrange's equations in Euler angles give the same "
+                     "precession rates, angles and rates of the small motions about a steady rotation.")
 
     def _pivot_point_check(self) -> Check:
         """For every body on a fixed point asked, the equations of motion by Lagrange, Newton–Euler

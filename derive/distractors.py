@@ -5,7 +5,8 @@ written for one problem: the moment of inertia of the wrong shape (I = M R^2 for
 instead of rolling, a body's rotational inertia or the parallel-axis term forgotten, a sign error
 on a force's torque, an angle measured from the vertical, an approximation (the small-angle
 formula) outside its range, the wrong point for angular momentum (a free body held at its center,
-a pivoted one let free), a collision taken as elastic or perfectly inelastic, a circular orbit;
+a pivoted one let free), a collision taken as elastic or perfectly inelastic, a circular orbit, a
+freely turning body's moments about its symmetry axis and across it swapped;
 then another asked quantity of the same unit taken for this one. A lost factor of 2 is added only
 when fewer mistakes than needed apply, and then only one of 2x and x/2.
 
@@ -28,6 +29,8 @@ import sympy as sp
 
 from derive import inertia, numeric
 from derive.answers import Solution
+from derive.errors import EngineLimit, InputError
+from derive.mechanics import free_rotation
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.force import Force
@@ -49,7 +52,7 @@ def perturbations(problem: Problem) -> Mistakes:
     """(what went wrong, the problem as the mistaken student set it up), the likeliest first."""
     return [*_shapes(problem), *_sliding(problem), *_parallel_axis(problem), *_axes(problem), *_inertia_forgotten(problem),
             *_approximations(problem), *_torque_signs(problem), *_angles(problem), *_points(problem),
-            *_collisions(problem), *_orbit(problem)]
+            *_collisions(problem), *_orbit(problem), *_moments_swapped(problem)]
 
 
 def _with_scene(problem: Problem, **changes) -> Problem:
@@ -235,6 +238,20 @@ def _orbit(problem: Problem) -> Mistakes:
     if orbit is None or orbit.eccentricity is None or orbit.eccentricity == 0:
         return []
     return [("a circular orbit assumed", _with_scene(problem, orbit=dataclasses.replace(orbit, eccentricity=0)))]
+
+
+def _moments_swapped(problem: Problem) -> Mistakes:
+    """A symmetric body in free rotation with its moments about the axis and across it swapped."""
+    result = []
+    for name, free in problem.scene.free_rotations.items():
+        try:
+            transverse, axial, _ = free_rotation.symmetric(Solution(problem).free_moments(name))
+        except (InputError, EngineLimit, free_rotation.NotModelled):  # no symmetry axis: nothing to swap
+            continue
+        swapped = dataclasses.replace(free, inertia=(axial, axial, transverse))
+        result.append((f"the {name}'s moments about its axis and across it swapped",
+                       _with_scene(problem, free_rotations={**problem.scene.free_rotations, name: swapped})))
+    return result
 
 
 # Problems hold dicts and do not hash: derivations are cached by identity (with the problem

@@ -452,6 +452,14 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
                                              and a.quantity.detail.startswith("steady.") for a in asks.values()):
             raise reader.fail(f"scene.bodies.{name}.rolls_on_edge.tilt", "no ask reads the steady motion on a circle "
                                                                           "(steady.*): leave out tilt and circle")
+    symbols = {p.symbol for p in parameters.values()}
+    for name, free in scene.free_rotations.items():  # omega across the axis, given where nothing reads it
+        reads = {a.quantity.detail for a in asks.values()
+                 if a.quantity.kind == "free_rotation" and a.quantity.target == name}
+        if free.across.free_symbols <= symbols and not reads & {"free_precession.space", "angle_L_axis",
+                                                                 "angle_omega_axis"}:
+            raise reader.fail(f"scene.bodies.{name}.free_rotation.across", "no ask reads it (the precession in "
+                                                                          "space and the angles of L and omega do)")
     if not kinds & DYNAMIC_KINDS:
         for c in scene.constraints:
             if isinstance(c, Contact) and c.has_friction:

@@ -197,6 +197,25 @@ ROLLING_COIN_QUANTITIES = ("steady.precession", "steady.speed", "steady.spin", "
                            "steady.friction", "upright.min_speed", "upright.min_spin")
 
 
+class FreeRotation:
+    """A body turning with no torque about its center of mass (free flight, or a frictionless point
+    at its center): `spin`, omega's component along its symmetry axis (or the rate of a steady
+    rotation about the principal axis asked); `across`, omega's component across that axis.
+    `inertia`: a custom body's principal moments about its center of mass along its own x, y, z,
+    else None."""
+
+    spin: sp.Expr
+    across: sp.Expr
+    inertia: tuple[sp.Expr, sp.Expr, sp.Expr] | None = None
+
+
+#: What a body in free rotation can be asked (derive.mechanics.free_rotation): of a symmetric body,
+#: omega's precession about the axis in the body, the axis's about L in space and the angles of L
+#: and omega from the axis; of a body with three different moments, a steady rotation about the
+#: axis of least, intermediate or greatest moment (stable: its wobble; unstable: its growth rate).
+FREE_ROTATION_QUANTITIES = ("free_precession.body", "free_precession.space", "angle_L_axis", "angle_omega_axis",
+                            "rotation.least.wobble", "rotation.intermediate.growth_rate",
+                            "rotation.greatest.wobble")
 #: What a body on a fixed point can be asked (derive.mechanics.fixed_point).
 PIVOT_POINT_QUANTITIES = ("precession.slow", "precession.fast", "precession.fast_top", "sleeping.min_spin",
                           "nutation.frequency", "nutation.fast_top")
@@ -287,6 +306,7 @@ class Scene:
     bearings: dict[str, Bearings] = field(default_factory=dict)
     pivot_points: dict[str, PivotPoint] = field(default_factory=dict)
     rolls_on_edge: dict[str, RollsOnEdge] = field(default_factory=dict)
+    free_rotations: dict[str, FreeRotation] = field(default_factory=dict)
     states: dict[str, State] = field(default_factory=dict)
 
     @property
@@ -354,6 +374,7 @@ class Quantity:
     prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
     "system" (inertia about the center of mass, reduced_mass of two bodies), "pivot_point" (a body on a
     fixed point; PIVOT_POINT_QUANTITIES), "rolls_on_edge" (a coin rolling on its rim; ROLLING_COIN_QUANTITIES),
+    "free_rotation" (a body turning with no torque; FREE_ROTATION_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
@@ -427,6 +448,16 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError(f"{head}.{rest} is read in the steady motion on a circle: give its lean and the contact "
                              "point's circle, rolls_on_edge: {tilt: theta, circle: R}")
         return Quantity("rolls_on_edge", head, rest)
+    if head in scene.free_rotations and rest not in ("mass", "inertia"):
+        stable = {"intermediate": "unstable (the tennis-racket theorem): ask rotation.intermediate.growth_rate",
+                  "least": "stable: ask rotation.least.wobble", "greatest": "stable: ask rotation.greatest.wobble"}
+        rank = rest.split(".")[1] if rest.count(".") == 2 and rest.startswith("rotation.") else None
+        if rest not in FREE_ROTATION_QUANTITIES and rank in stable and rest.endswith((".wobble", ".growth_rate")):
+            raise ValueError(f"a steady rotation about the axis of {rank} moment is {stable[rank]}")
+        if rest not in FREE_ROTATION_QUANTITIES:
+            raise ValueError(f"a body in free rotation has {', '.join(FREE_ROTATION_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, FREE_ROTATION_QUANTITIES))
+        return Quantity("free_rotation", head, rest)
     if head == "system":
         if rest not in ("inertia", "reduced_mass"):
             raise ValueError("the system has inertia (about its center of mass) and reduced_mass")

@@ -26,8 +26,8 @@ from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Bearings, Body, Motion, Orbit, PivotPoint,
-                          RollsOnEdge, Scene, SpinningWheel, StandingWave)
+from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Bearings, Body, FreeRotation, Motion, Orbit,
+                          PivotPoint, RollsOnEdge, Scene, SpinningWheel, StandingWave)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
@@ -42,7 +42,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
     spec = reader.mapping(spec, field, required=("shape",),
                           optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
-                                    "path", "bearings", "pivot_point", "rolls_on_edge", "angle", "parts", *MOTION_KEYS, *all_sizes))
+                                    "path", "bearings", "pivot_point", "rolls_on_edge", "free_rotation", "angle", "parts", *MOTION_KEYS, *all_sizes))
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
@@ -70,7 +70,9 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         elif size in spec:
             raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
     given = None
-    if shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec):
+    if shape == "custom" and "free_rotation" in spec:
+        given = _free_inertia(reader, spec, field)[2]  # the moment about z; the rest is read with the rotation
+    elif shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec):
         given = _axial_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the key
     elif shape == "custom":
         if "inertia" not in spec:
@@ -95,7 +97,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         raise reader.fail(f"{field}.angle", "a point mass has no orientation")
     body = Body(name, shape, mass, sizes, given, path, density, at, angle)
     joint = _joint(reader, body, spec.get("joint"), f"{field}.joint")
-    about = "center" if "pivot_point" in spec else spec.get("inertia_about", "center")
+    about = "center" if "pivot_point" in spec or "free_rotation" in spec else spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and (given is None or joint is None or joint.name != "pivot"):
         raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body on a pivot joint")
     if about == "pivot":
@@ -531,9 +533,15 @@ def read_scene(reader: Reader, raw) -> Scene:
                           "a body rolling on its edge rolls on the horizontal plane its key stands for, under gravity "
                           "alone: one body, - gravity: g, no surfaces (an inclined plane is not modelled), other "
                           "loads, joints or cords")
+    free = {n: _free_rotation(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
+            if "free_rotation" in spec}
+    if free and (len(bodies) > 1 or constraints or loads or gravity_part is not None or raw.get("states")):
+        raise reader.fail("scene", "a body in free rotation turns with no torque about its center: one body, no "
+                                   "loads, joints, cords or states (its weight exerts no torque about its center: "
+                                   "leave gravity out)")
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wheel, wave,
-                  internal, held, pivoted, rolling, states)
+                  internal, held, pivoted, rolling, free, states)
     _check_geometry(reader, places, scene)
     return scene
 
@@ -632,13 +640,14 @@ def _wheel(reader: Reader, raw) -> SpinningWheel:
 
 
 def _axial_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.Expr]:
-    """An axially symmetric custom body's `inertia: {axial: I3, transverse: I1}` (on a fixed point, or
-    rolling on its edge), (transverse, axial) as given (`inertia_about: pivot`: the transverse one
-    about the point; the axial one is the same there). Without `transverse` it is left open (a fast
-    top's rate does not need it)."""
+    """An axially symmetric custom body's `inertia: {axial: I3, transverse: I1}` (on a fixed point,
+    rolling on its edge, or in free rotation), (transverse, axial) as given (`inertia_about: pivot`:
+    the transverse one about the point; the axial one is the same there). Without `transverse` it is
+    left open (a fast top's rate does not need it)."""
     if "inertia" not in spec:
         raise reader.fail(f"{field}.inertia", "an axially symmetric custom body (on a fixed point, rolling on its "
-                                              "edge) needs inertia: {axial: I3, transverse: I1}")
+                                              "edge, in free rotation) needs inertia: {axial: I3, transverse: I1} "
+                                              "(in free rotation, or {principal: [Ix, Iy, Iz]})")
     raw = reader.mapping(spec["inertia"], f"{field}.inertia", required=("axial",), optional=("transverse",))
     axial = reader.positive(raw["axial"], f"{field}.inertia.axial", "kg*m^2", "a moment of inertia")
     if "transverse" not in raw:
@@ -690,6 +699,45 @@ def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoi
     spin = (reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin") if "spin" in raw
             else reader.unspecified(f"spin_{body.name}", "rad/s"))  # a sleeping top's least spin needs none
     return PivotPoint(offset, tilt, spin, moments)
+
+
+def _free_rotation(reader: Reader, spec: dict, field: str, body: Body) -> FreeRotation:
+    """`free_rotation: {spin: omega3, across: omega_t}`: the body turns with no torque about its
+    center of mass (derive.mechanics.free_rotation); `spin` is omega's component along the
+    symmetry axis (or the rate of the steady rotation asked), `across` its component across the
+    axis, left open where no ask needs it. A uniform shape of derive inertia, a composite of them
+    whose own axes are principal, or a custom body with inertia: {axial, transverse} or
+    {principal: [Ix, Iy, Iz]}."""
+    here = f"{field}.free_rotation"
+    if body.shape == "point" or body.density is not None:
+        raise reader.fail(here, "a body in free rotation is a uniform shape of derive inertia, a composite of them or "
+                                "a custom body with inertia: {axial, transverse} (not a point, no density)")
+    other = next((k for k in ("joint", "on", "path", "velocity", "bearings", "pivot_point", "inertia_about")
+                  if k in spec), None)
+    if other:
+        raise reader.fail(f"{field}.{other}", "a body in free rotation is held by nothing (its moments are about "
+                                              "its center of mass)")
+    raw = reader.mapping(spec["free_rotation"], here, required=("spin",), optional=("across",))
+    spin = reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin")
+    across = (reader.positive(raw["across"], f"{here}.across", "rad/s", "omega's component across the axis")
+              if "across" in raw else reader.unspecified(f"across_{body.name}", "rad/s"))
+    moments = _free_inertia(reader, spec, field) if body.shape == "custom" else None
+    return FreeRotation(spin, across, moments)
+
+
+def _free_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """A custom body's principal moments about its center of mass along its own x, y, z in free
+    rotation: `inertia: {principal: [Ix, Iy, Iz]}`, or `{axial: I3, transverse: I1}` (I1, I1, I3)."""
+    raw = spec.get("inertia")
+    if isinstance(raw, dict) and "principal" in raw:
+        raw = reader.mapping(raw, f"{field}.inertia", required=("principal",))
+        here = f"{field}.inertia.principal"
+        if not isinstance(raw["principal"], list) or len(raw["principal"]) != 3:
+            raise reader.fail(here, "three principal moments about the center of mass, [Ix, Iy, Iz]")
+        return tuple(reader.positive(v, f"{here}[{i}]", "kg*m^2", "a moment of inertia")
+                     for i, v in enumerate(raw["principal"]))
+    transverse, axial = _axial_inertia(reader, spec, field)
+    return transverse, transverse, axial
 
 
 def _orbit(reader: Reader, raw) -> Orbit:

@@ -722,6 +722,44 @@ EXPECTED.update({
     "hoop_rolls_upright": {
         "v_min": lambda s: sp.sqrt(s.g * s.a / 4),
     },
+    # Free rotation (derive.mechanics.free_rotation). Taylor §10.8 (Euler's equations with zero
+    # torque): omega turns about the symmetry axis in the body at Omega_b = (lambda3 - lambda1)
+    # omega3/lambda1; the Earth wobbles so (test_free_rotation checks Taylor's 300 days).
+    "earth_free_precession": {
+        "Omega": lambda s: (s.I3 - s.I1) * s.omega / s.I1,
+    },
+    # Taylor §10.8 for a thin disk, lambda1 = M R^2/4, lambda3 = M R^2/2: Omega_b = omega3; the axis
+    # turns about L at |L|/lambda1 = sqrt(omega_t^2 + 4 omega3^2) (Feynman's plate: twice omega3 for a
+    # small wobble); tan(angle of L) = lambda1 omega_t/(lambda3 omega3), tan(angle of omega) = omega_t/omega3.
+    "thrown_plate_wobble": {
+        "body": lambda s: s.omega3,
+        "space": lambda s: sp.sqrt(s.omega_t**2 + 4 * s.omega3**2),
+        "L_axis": lambda s: sp.atan(s.omega_t / (2 * s.omega3)),
+        "omega_axis": lambda s: sp.atan(s.omega_t / s.omega3),
+    },
+    # Kleppner & Kolenkow ch. 8 (torque-free precession), a solid cylinder, I1 = M (3 R^2 + h^2)/12,
+    # I3 = M R^2/2: Omega = (I3 - I1) omega3/I1 (retrograde: I3 < I1), the axis about L at |L|/I1,
+    # tan(angle of L) = I1 omega_t/(I3 omega3).
+    "football_free_precession": {
+        "body": lambda s: (s.M * s.R**2 / 2 - s.M * (3 * s.R**2 + s.h**2) / 12) * s.omega3
+        / (s.M * (3 * s.R**2 + s.h**2) / 12),
+        "space": lambda s: sp.sqrt((s.M * (3 * s.R**2 + s.h**2) / 12 * s.omega_t) ** 2 + (s.M * s.R**2 / 2 * s.omega3) ** 2)
+        / (s.M * (3 * s.R**2 + s.h**2) / 12),
+        "L_axis": lambda s: sp.atan((3 * s.R**2 + s.h**2) / 12 * s.omega_t / (s.R**2 / 2 * s.omega3)),
+    },
+    # Taylor §10.8 (three different moments, Euler's equations linearized) and Morin ch. 9 (the
+    # tennis-racket theorem): about axis k, small motions go as e^(s t), s^2 = -(Ik - Ii)(Ik - Ij) W^2/(Ii Ij);
+    # a box's moments (b^2 + c^2), (a^2 + c^2), (a^2 + b^2) times M/12 about x, y, z; with a < b < c the
+    # least is about z (along c), the greatest about x (along a), and about y small motions grow at
+    # sqrt((I2 - I1)(I3 - I2)/(I1 I3)) W. The mass is left open: it cancels.
+    "tennis_racket": {
+        "least": lambda s: s.W * sp.sqrt((s.b**2 + s.c**2 - s.a**2 - s.b**2) * (s.a**2 + s.c**2 - s.a**2 - s.b**2)
+                                         / ((s.b**2 + s.c**2) * (s.a**2 + s.c**2))),
+        "middle": lambda s: s.W * sp.sqrt((s.a**2 + s.c**2 - s.a**2 - s.b**2) * (s.b**2 + s.c**2 - s.a**2 - s.c**2)
+                                          / ((s.a**2 + s.b**2) * (s.b**2 + s.c**2))),
+        "greatest": lambda s: s.W * sp.sqrt((s.b**2 + s.c**2 - s.a**2 - s.c**2) * (s.b**2 + s.c**2 - s.a**2 - s.b**2)
+                                            / ((s.a**2 + s.c**2) * (s.a**2 + s.b**2))),
+    },
 })
 
 FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))

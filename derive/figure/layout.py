@@ -16,7 +16,7 @@ from derive.figure.orbits import _orbit
 from derive.figure.parts import _parts
 from derive.figure.paths import _paths
 from derive.figure.surfaces import _on_surface
-from derive.figure.systems import _bearings, _internal, _pivot_point, _rolls_on_edge, _wave, _wheel
+from derive.figure.systems import _bearings, _free_rotation, _internal, _pivot_point, _rolls_on_edge, _wave, _wheel
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin
@@ -107,6 +107,7 @@ _LAYOUTS = (
     (lambda p: p.scene.orbit is not None, _orbit),
     (lambda p: p.scene.internal_forces is not None, _internal),
     (lambda p: bool(p.scene.bearings), _bearings),
+    (lambda p: bool(p.scene.free_rotations), _free_rotation),
     (lambda p: any(b.path is not None for b in p.scene.bodies.values()), _paths),
     (lambda p: any(b.composite is not None for b in p.scene.bodies.values()), _parts),  # drawn part by part
     (_on_one_surface, _on_surface),

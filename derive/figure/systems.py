@@ -1,5 +1,5 @@
 """Scene-level systems: a top (a body on a fixed point), a coin rolling on its edge, a spinning wheel, a
-standing wave, internal forces, a turning body."""
+standing wave, internal forces, a turning body, a body turning freely."""
 from __future__ import annotations
 
 import math
@@ -7,6 +7,7 @@ import math
 import sympy as sp
 
 from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit
+from derive.mechanics import bearings, free_rotation
 
 
 def _pivot_point(fig: _Figure) -> None:
@@ -146,3 +147,46 @@ def _bearings(fig: _Figure) -> None:
     fig.arc((0, 0), 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
     if body.shape == "rod":  # a thin rod's L is normal to it, in the plane of the rod and the axis
         fig.arrow((0, 0), _unit(direction + 90), "very thick, ->, green!40!black", r"$\vec L$")
+
+
+def _free_rotation(fig: _Figure) -> None:
+    """A body turning freely, asked of its symmetry axis: L up the page, the axis and omega in the
+    plane they share at their angles from it (omega beyond L for a flat body, I3 > I1, between the
+    axis and L for a long one), the body across or along its axis, the axis's precession about L;
+    any other body in free rotation: the body with a spin about its own axis."""
+    name, free = next(iter(fig.scene.free_rotations.items()))
+    body = fig.scene.bodies[name]
+    if free.inertia is not None:
+        tensor = sp.diag(*free.inertia)
+    else:
+        parts = body.composite.parts if body.composite is not None else None
+        tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
+    try:
+        transverse, axial, _ = free_rotation.symmetric(free_rotation.principal_moments(tensor))
+    except (free_rotation.NotModelled, free_rotation.NotPrincipal):
+        transverse = None
+    if transverse is None or not any(a.quantity.kind == "free_rotation" and a.quantity.detail in
+                                     free_rotation.SYMMETRIC for a in fig.problem.asks.values()):
+        fig.body(body, (0, 0), 1.2)
+        fig.spin((0, 0), 0.5, 1, fig.m(free.spin))
+        return
+    ratio = _clamp(fig.num(axial / transverse, 2.0), 0.2, 5.0)  # I3/I1: the same for every mass
+    across = _clamp(fig.num(free.across / free.spin, 0.4), 0.1, 1.0)  # tan of omega's angle
+    tilt = _clamp(math.atan(across / ratio), math.radians(10), math.radians(40))  # the axis from L
+    omega_tilt = _clamp(math.atan(ratio * math.tan(tilt)), math.radians(5), math.radians(70))
+    axis = 90 + math.degrees(tilt)  # leaning left of L
+    omega = 90 + math.degrees(tilt) - math.degrees(omega_tilt)
+    flat = ratio > 1
+    fig.add(f"\\draw[body, rotate around={{{_f(axis)}:(0,0)}}] (0,0) ellipse "
+            f"({_f(0.25 if flat else 1.3)} and {_f(1.3 if flat else 0.45)});")
+    fig.add(f"\\draw[axis] {_pt(_unit(axis + 180))} -- {_pt(_add((0, 0), _unit(axis), 2.4))};")
+    fig.add("\\fill (0,0) circle (0.05);")
+    fig.arrow((0, 0), (0, 2.6), "very thick, ->, green!40!black", r"$\vec L$")
+    fig.arrow((0, 0), _add((0, 0), _unit(omega), 2.1), "velocity", r"$\vec\omega$")
+    fig.arc((0, 0), 1.5, 90, axis, fig.ask_symbol("free_rotation", name, "angle_L_axis"), label_radius=1.55)
+    lean = 2.4 * math.sin(tilt)
+    fig.add(f"\\draw[dashed, gray] (0,{_f(2.4 * math.cos(tilt))}) ellipse ({_f(lean)} and {_f(0.25 * lean)});")
+    fig.add(f"\\draw[->, thick] ({_f(lean)},{_f(2.4 * math.cos(tilt))}) arc[start angle=0, end angle=60, "
+            f"x radius={_f(lean)}, y radius={_f(0.25 * lean)}];")
+    precession = fig.ask_symbol("free_rotation", name, "free_precession.space")
+    fig.label((lean + 0.1, 2.4 * math.cos(tilt)), (1, 0), f"${precession}$" if precession else None)
