@@ -4,7 +4,9 @@ The wheel spins with L = I omega along x; a torque tau along y (perpendicular to
 spin) acts for a time dt. Vector route: dL/dt = tau integrates to L = (I omega, tau dt), so
 the axis turns by atan(tau dt / (I omega)). Rate route: the axis turns at the perpendicular
 torque over |L|, dphi/dt = tau cos(phi)^2 / (I omega), integrated. The notes'
-Delta phi = tau dt / (I omega) is the small-angle limit of both.
+Delta phi = tau dt / (I omega) is the small-angle limit of both. Both are the turn of L: the axle
+itself nods about L (a free disk wheel simulated at tau dt/(I omega) = 1/60 turns its axle 3 % more
+at the end of the torque), which the notes' picture, the axis along L, leaves out.
 The rate route separates the variables: the integral of dphi / cos^2 equals tau dt / (I omega).
 
 >>> tau, dt, I, w = sp.symbols("tau dt I omega", positive=True)
