@@ -578,6 +578,9 @@ class Solution(StateAnswers, CrossChecks):
             result += [(tidy(moments[high] - moments[low]), True, f"the {name}'s principal moments change order "
                         f"here ({'xyz'[low]} and {'xyz'[high]}): the axis of each rank is chosen at the middle of "
                         "the ranges") for low, high in zip(order, order[1:])]
+        result += [(placed, True, f"the bodies are not placed as at the middle of the ranges, where "
+                                  f"{sp.sstr(placed)} > 0 (a cord's run would turn over): the derivation is for that "
+                                  "placement") for placed in self.scene.placed]
         for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
             if isinstance(surface, Plane) and surface.angle.free_symbols:
                 result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "

@@ -197,6 +197,7 @@ ROLLING_COIN_QUANTITIES = ("steady.precession", "steady.speed", "steady.spin", "
                            "steady.friction", "upright.min_speed", "upright.min_spin")
 
 
+@dataclass(frozen=True)
 class FreeRotation:
     """A body turning with no torque about its center of mass (free flight, or a frictionless point
     at its center): `spin`, omega's component along its symmetry axis (or the rate of a steady
@@ -308,6 +309,7 @@ class Scene:
     rolls_on_edge: dict[str, RollsOnEdge] = field(default_factory=dict)
     free_rotations: dict[str, FreeRotation] = field(default_factory=dict)
     states: dict[str, State] = field(default_factory=dict)
+    placed: tuple[sp.Expr, ...] = ()  # positive where the file places the bodies (scene_file._placed)
 
     @property
     def parts(self) -> tuple[Part, ...]:

@@ -5,7 +5,7 @@ Each problem file describes the setup only and cites its source in `source:`; th
 live here, one dict per file, written with the problem's own parameter symbols. Every file's
 checks (what `derive solve` reports) must pass, Lagrange and Newton-Euler in agreement.
 Setups the engine cannot state, refuses or answers wrongly are listed in
-tests/textbook/PENDING.md (and their files kept under tests/textbook/pending/), not here.
+tests/textbook/PENDING.md (with their files quoted there), not here.
 """
 from pathlib import Path
 from types import SimpleNamespace

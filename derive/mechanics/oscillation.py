@@ -110,8 +110,8 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
         residual = (e.lhs - e.rhs).xreplace(at_rest).xreplace(along)
         residual = residual.xreplace({u: equilibrium[u] + s * first[u] for u in derivation.unknowns})
         linear_equations.append(sp.Eq(sp.diff(residual, s).xreplace({s: 0}), 0))
-    slope = solve_linear(linear_equations, list(first.values())).raw[first[coordinate.a]]
-    stiffness = tidy(-slope)
+    slope = solve_linear(linear_equations, list(first.values()), scene.placed).raw[first[coordinate.a]]
+    stiffness = tidy(-slope, scene.placed)
     proven = stiffness.is_positive is True or stiffness.is_negative is True
     if proven:
         stable = bool(stiffness.is_positive)
