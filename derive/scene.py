@@ -11,6 +11,7 @@ modules in `derive.mechanics` derive its motion.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -335,7 +336,7 @@ class Quantity:
     fixed point; PIVOT_POINT_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
-    "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
+    "small_oscillation" (omega, period, growth_rate; modes.N.omega|period), "equilibrium" (a body's angle, x or y where
     the scene rests: derive.mechanics.equilibrium); read in a state (RATE_KINDS) also
     "kinetic_energy_change" (every body's, in the state minus in the state it comes from) and
     "center_of_mass_velocity" (of every body; x or y).
@@ -436,8 +437,10 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError("an oscillation at a given amplitude has period (give amplitude:)")
         return Quantity("oscillation", None, "period")
     if head == "small_oscillation":
-        if rest not in ("omega", "period", "growth_rate"):
-            raise ValueError("small_oscillation has omega, period and growth_rate (about an unstable equilibrium)")
+        if rest not in ("omega", "period", "growth_rate") and not re.fullmatch(r"modes\.[1-9][0-9]?\.(omega|period)", rest):
+            raise ValueError("small_oscillation has omega, period, growth_rate (about an unstable equilibrium) and, "
+                             "with several degrees of freedom, modes.N.omega and modes.N.period (N = 1, 2, ...: the "
+                             "normal modes, lowest frequency first)")
         return Quantity("small_oscillation", None, rest)
     if head in scene.bodies:
         body = scene.bodies[head]

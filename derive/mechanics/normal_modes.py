@@ -40,7 +40,7 @@ from derive.mechanics.oscillation import (OscillationError, OscillationLimit, at
                                           free_directions)
 from derive.scene import Scene
 
-#: The squared angular frequency, as the worked solution writes the characteristic equation.
+#: The angular frequency, as the worked solution writes the characteristic equation.
 OMEGA = sp.Symbol("omega")
 
 
@@ -78,7 +78,7 @@ class NormalModes:
             raise OscillationError(f"the scene has {len(self.squares)} normal modes of oscillation: ask "
                                    + ", ".join(f"small_oscillation.modes.{i}.{name}"
                                                for i in range(1, len(self.squares) + 1)) + " (lowest frequency first)")
-        return root(square) if name == "omega" else 2 * sp.pi * root(1 / square)
+        return _frequency(square) if name == "omega" else 2 * sp.pi / _frequency(square)
 
 
 def normal_modes(scene: Scene, derivation: Derivation, sample=None) -> NormalModes:
@@ -149,8 +149,28 @@ def _roots(polynomial: sp.Poly) -> tuple[int, list[sp.Expr]]:
             zero_count += multiplicity
             continue
         found = sp.roots(factor, multiple=True)
-        squares += [tidy(r) for r in found for _ in range(multiplicity)]
+        squares += [_plainest(r) for r in found for _ in range(multiplicity)]
     return zero_count, squares
+
+
+def _frequency(square: sp.Expr) -> sp.Expr:
+    """sqrt(omega^2), one root of the radicand as `_plainest` wrote it (derive.mechanics.derivation.root
+    would put it back in compact form), unless it is a perfect square."""
+    value = root(square)
+    return sp.Pow(square, sp.S.Half, evaluate=False) if value == sp.Pow(tidy(square), sp.S.Half, evaluate=False) else value
+
+
+def _plainest(square: sp.Expr) -> sp.Expr:
+    """A root in its compact form, or expanded with common factors pulled out where that is
+    shorter, as books write them: g*(2 - sqrt(2))/L, g/l + 2*k/m.
+
+    >>> g, l, k, m = sp.symbols("g l k m", positive=True)
+    >>> _plainest((g*m + 2*k*l)/(l*m))
+    g/l + 2*k/m
+    """
+    compact = tidy(square)
+    expanded = sp.factor_terms(sp.expand(compact))
+    return expanded if sp.count_ops(expanded) < sp.count_ops(compact) else compact
 
 
 def _ordered(squares: list[sp.Expr], sample) -> tuple[list[sp.Expr], list]:
@@ -215,14 +235,19 @@ def _steps(coords, chosen, directions, mass, stiffness, symbols, accelerations, 
                   follow)]
     rows = tuple(sp.Eq(sum((mass[i, j] * accelerations[j] + stiffness[i, j] * symbols[j] for j in range(n)),
                            sp.Integer(0)), 0) for i in range(n))
-    steps.append(Step("The equations of motion to first order, M s'' + K s = 0 (M from the kinetic energy)", rows))
+    steps.append(Step("The equations of motion to first order: the mass matrix (from the kinetic energy) times the "
+                      "accelerations plus the stiffness matrix times the displacements vanishes", rows))
     characteristic = (stiffness - OMEGA**2 * mass).det()
-    steps.append(Step("Normal modes s = A cos(omega t): det(K - omega^2 M) = 0",
+    steps.append(Step("A normal mode moves every coordinate as A cos(omega t): the determinant of the stiffness "
+                      "matrix less omega^2 times the mass matrix vanishes",
                       (sp.Eq(sp.factor(characteristic), 0),)))
     for mode in zero_modes:
         motion = ", ".join(f"{symbols[j]}: {sp.sstr(mode[j])}" for j in range(n))
         steps.append(Step(f"A zero mode, omega = 0: the free motion ({motion}), no restoring force at any "
                           "displacement, so its momentum is conserved"))
-    steps.append(Step("The angular frequencies of the normal modes, lowest first",
-                      tuple(sp.Eq(sp.Symbol(f"omega_{i}"), root(w2)) for i, w2 in enumerate(squares, start=1))))
+    if len(squares) == 1:
+        steps.append(Step("The angular frequency of the one mode that oscillates", (sp.Eq(OMEGA, _frequency(squares[0])),)))
+    else:
+        steps.append(Step("The angular frequencies of the normal modes, lowest first",
+                          tuple(sp.Eq(sp.Symbol(f"omega_{i}"), _frequency(w2)) for i, w2 in enumerate(squares, start=1))))
     return tuple(steps)
