@@ -257,7 +257,7 @@ EXPECTED = {
         "omega": lambda s: sp.sqrt(s.g * (s.M + s.m) / (s.M * s.l)),
     },
     # The same dynamics with the bead held at R from the center of a free cart's circular track
-    # (cf. tests/textbook/PENDING.md §6): omega^2 = (g/R)(1 + m/M).
+    # (once refused, tests/textbook/PENDING.md, Resolved): omega^2 = (g/R)(1 + m/M).
     "cart_track_bead_oscillation": {
         "omega": lambda s: sp.sqrt(s.g / s.R * (1 + s.m / s.M)),
     },
