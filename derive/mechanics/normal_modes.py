@@ -230,21 +230,23 @@ def _steps(coords, chosen, directions, mass, stiffness, symbols, accelerations, 
     others = [sp.Eq(c.q, sum((directions[i, j] * symbols[j] for j in range(n)), sp.Integer(0)))
               for i, c in enumerate(coords.all) if i not in chosen]
     follow = tuple(e for e in others if e.lhs != e.rhs)
-    steps = [Step(f"Small displacements from the equilibrium: {n} free coordinates, "
-                  + ", ".join(map(str, symbols)) + ("; to first order the others follow them" if follow else ""),
-                  follow)]
+    words = [f"the {c.body}'s {'angle' if c.kind == 'theta' else c.kind}" for c in (coords.all[i] for i in chosen)]
+    steps = [Step(f"Small displacements from the equilibrium: {n} free coordinates, " + ", ".join(words[:-1])
+                  + f" and {words[-1]}" + ("; to first order the others follow them" if follow else ""), follow)]
     rows = tuple(sp.Eq(sum((mass[i, j] * accelerations[j] + stiffness[i, j] * symbols[j] for j in range(n)),
                            sp.Integer(0)), 0) for i in range(n))
     steps.append(Step("The equations of motion to first order: the mass matrix (from the kinetic energy) times the "
                       "accelerations plus the stiffness matrix times the displacements vanishes", rows))
     characteristic = (stiffness - OMEGA**2 * mass).det()
-    steps.append(Step("A normal mode moves every coordinate as A cos(omega t): the determinant of the stiffness "
-                      "matrix less omega^2 times the mass matrix vanishes",
+    steps.append(Step("A normal mode moves every coordinate in step at one angular frequency: the determinant of the "
+                      "stiffness matrix less its square times the mass matrix vanishes",
                       (sp.Eq(sp.factor(characteristic), 0),)))
     for mode in zero_modes:
-        motion = ", ".join(f"{symbols[j]}: {sp.sstr(mode[j])}" for j in range(n))
-        steps.append(Step(f"A zero mode, omega = 0: the free motion ({motion}), no restoring force at any "
-                          "displacement, so its momentum is conserved"))
+        lead = next(j for j in range(n) if mode[j] != 0)
+        steps.append(Step("A zero mode, of zero frequency: a free motion, with no restoring force at any displacement "
+                          "(its momentum is conserved), along",
+                          tuple(sp.Eq(symbols[j], tidy(mode[j] / mode[lead]) * symbols[lead])
+                                for j in range(n) if j != lead)))
     if len(squares) == 1:
         steps.append(Step("The angular frequency of the one mode that oscillates", (sp.Eq(OMEGA, _frequency(squares[0])),)))
     else:
