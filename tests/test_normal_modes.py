@@ -176,3 +176,44 @@ def test_damped_normal_modes_are_an_engine_limit(tmp_path):
     path.write_text(path.read_text().replace("  g: {", "  b: {meaning: damping, unit: N*s/m, range: [0.1, 1], sig_figs: 2}\n  g: {"))
     with pytest.raises(EngineLimit, match="derive cannot yet find damped normal modes of several degrees of freedom"):
         Solution(load(path)).expression("w1")
+
+
+TWO_PENDULUMS = """\
+id: two_pendulums
+title: Two pendulums side by side
+topic: oscillations
+parameters:
+  m: {meaning: mass of each bob, unit: kg, range: [0.1, 2], sig_figs: 3}
+  a: {meaning: length of the left pendulum, unit: m, range: [0.2, 1], sig_figs: 2}
+  b: {meaning: length of the right pendulum, unit: m, range: [0.5, 1.5], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    left_hook: [0, 0]
+    right_hook: [a + b, 0]
+  bodies:
+    left: {shape: point, mass: m, at: [0, -a]}
+    right: {shape: point, mass: m, at: [a + b, -b]}
+  cords:
+    left_string: [left_hook, left]
+    right_string: [right_hook, right]
+  loads:
+    - gravity: g
+ask:
+  w1: {meaning: the lower angular frequency, of: small_oscillation.modes.1.omega, unit: rad/s}
+question: |
+  Two pendulums hang side by side.
+"""
+
+
+def test_a_variant_where_the_modes_change_order_is_refused(tmp_path):
+    """Uncoupled pendulums of lengths a and b: the slow mode is the longer one's, g/b at the middle
+    of the ranges (a = 0.6, b = 1); where a > b it is g/a, and the answer g/b would be the fast
+    mode: those variants are refused, the others answered."""
+    (tmp_path / "two.yaml").write_text(TWO_PENDULUMS)
+    problem = load(tmp_path / "two.yaml")
+    a, b, g = (problem.parameters[n].symbol for n in ("a", "b", "g"))
+    solution = Solution(problem)
+    assert sp.simplify(solution.expression("w1") - sp.sqrt(g / b)) == 0
+    assert solution.violated({a: sp.Rational(1, 2), b: 1, g: sp.Rational(981, 100)}) is None
+    assert "the normal modes change order" in solution.violated({a: 1, b: sp.Rational(1, 2), g: sp.Rational(981, 100)})
