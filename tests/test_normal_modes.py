@@ -217,3 +217,20 @@ def test_a_variant_where_the_modes_change_order_is_refused(tmp_path):
     assert sp.simplify(solution.expression("w1") - sp.sqrt(g / b)) == 0
     assert solution.violated({a: sp.Rational(1, 2), b: 1, g: sp.Rational(981, 100)}) is None
     assert "the normal modes change order" in solution.violated({a: 1, b: sp.Rational(1, 2), g: sp.Rational(981, 100)})
+
+
+def test_a_ratio_to_a_coordinate_that_does_not_move_is_refused(tmp_path):
+    """The bobs do not rise to first order: a ratio over the upper bob's y has no value."""
+    path = variant(tmp_path, "double_pendulum", "modes.1.ratio.lower.x.to.upper.x", "modes.1.ratio.lower.x.to.upper.y")
+    with pytest.raises(ProblemError, match=r"ask\.r1\.of: the upper's y does not move in mode 1"):
+        Solution(load(path)).expression("r1")
+
+
+def test_a_ratio_of_a_body_the_scene_lacks_is_refused_when_read(tmp_path):
+    path = variant(tmp_path, "double_pendulum", "modes.1.ratio.lower.x.to.upper.x", "modes.1.ratio.lowr.x.to.upper.x")
+    with pytest.raises(ProblemError, match=r"ask\.r1\.of: lowr\.x is not a coordinate of the scene in a mode's "
+                                           r"ratio; did you mean 'lower'"):
+        load(path)
+    path = variant(tmp_path, "double_pendulum", "modes.1.ratio.lower.x.to.upper.x", "modes.1.ratio.lower.angle.to.upper.x")
+    with pytest.raises(ProblemError, match=r"lower\.angle is not a coordinate of the scene"):
+        load(path)

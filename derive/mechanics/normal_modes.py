@@ -49,6 +49,8 @@ class NormalModes:
     """The linearized motion M s'' + K s = 0 in the free coordinates s, and its modes."""
 
     coordinates: tuple[Coordinate, ...]
+    #: Every coordinate of the scene, in the order of the rows of `directions`.
+    every: tuple[Coordinate, ...]
     #: Each column: every coordinate's displacement when one free coordinate moves by 1 (first order).
     directions: sp.Matrix
     mass: sp.Matrix
@@ -64,13 +66,15 @@ class NormalModes:
 
     def quantity(self, name: str) -> sp.Expr:
         """omega or period of the one oscillating mode, or modes.N.omega|period (N from 1, lowest
-        frequency first)."""
+        frequency first), or modes.N.ratio.BODY.KIND.to.BODY.KIND (the amplitudes' ratio in the mode)."""
         if name == "growth_rate":
             raise OscillationLimit("find the growth rate about an equilibrium with several degrees of freedom")
         if name.startswith("modes."):
-            _, number, name = name.split(".")
+            _, number, name, *ratio = name.split(".")
             if int(number) > len(self.squares):
                 raise OscillationError(f"the scene has {len(self.squares)} normal modes of oscillation, not {number}")
+            if name == "ratio":
+                return self.ratio(int(number), (ratio[0], ratio[1]), (ratio[3], ratio[4]))
             square = self.squares[int(number) - 1]
         elif len(self.squares) == 1:
             (square,) = self.squares
@@ -79,6 +83,26 @@ class NormalModes:
                                    + ", ".join(f"small_oscillation.modes.{i}.{name}"
                                                for i in range(1, len(self.squares) + 1)) + " (lowest frequency first)")
         return _frequency(square) if name == "omega" else 2 * sp.pi / _frequency(square)
+
+
+    def ratio(self, number: int, moving: tuple[str, str], to: tuple[str, str]) -> sp.Expr:
+        """The amplitude of one coordinate (body, x|y|angle) over another's in mode `number`: the
+        mode's shape is a column of the adjugate of K - w^2 M (singular, of rank n - 1 where no other
+        mode has its frequency)."""
+        square = self.squares[number - 1]
+        if self.squares.count(square) > 1:
+            raise OscillationError(f"two normal modes share the frequency of mode {number}: its shape is not determined")
+        adjugate = (self.stiffness - square * self.mass).adjugate()
+        column = next((adjugate[:, j] for j in range(adjugate.cols) if any(tidy(e) != 0 for e in adjugate[:, j])), None)
+        if column is None:
+            raise OscillationError(f"the shape of mode {number} is not determined")
+        shape = self.directions * column
+        kinds = {"angle": "theta", "x": "x", "y": "y"}
+        top, bottom = (shape[next(i for i, c in enumerate(self.every) if (c.body, c.kind) == (body, kinds[kind]))]
+                       for body, kind in (moving, to))
+        if tidy(bottom) == 0:
+            raise OscillationError(f"the {to[0]}'s {to[1]} does not move in mode {number}: ask the ratio the other way")
+        return _plainest(sp.radsimp(tidy(top / bottom)))
 
 
 def normal_modes(scene: Scene, derivation: Derivation, sample=None) -> NormalModes:
@@ -118,7 +142,7 @@ def normal_modes(scene: Scene, derivation: Derivation, sample=None) -> NormalMod
     squares, conditions = _ordered(squares, sample)
     symbols = [c.q for c in (coords.all[i] for i in chosen)]
     steps = _steps(coords, chosen, directions, mass, stiffness, symbols, accelerations, zero_modes, squares)
-    return NormalModes(tuple(coords.all[i] for i in chosen), directions, mass, stiffness, tuple(squares), zero_modes,
+    return NormalModes(tuple(coords.all[i] for i in chosen), tuple(coords.all), directions, mass, stiffness, tuple(squares), zero_modes,
                        steps, tuple(conditions))
 
 
