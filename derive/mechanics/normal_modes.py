@@ -134,7 +134,7 @@ def normal_modes(scene: Scene, derivation: Derivation, sample=None) -> NormalMod
     zero_count, squares = _roots(polynomial)
     zero_modes = tuple(v.applyfunc(tidy) for v in dynamical.nullspace(simplify=True)) if zero_count else ()
     if len(zero_modes) != zero_count:
-        raise OscillationLimit("find normal modes where a zero frequency is not a free motion (its mode is missing)")
+        raise OscillationLimit("find normal modes where a zero frequency repeats with fewer free motions than it repeats")
     for mode in zero_modes:
         _free_motion(scene, coords, derivation, directions * mode)
     if not squares:
@@ -142,8 +142,8 @@ def normal_modes(scene: Scene, derivation: Derivation, sample=None) -> NormalMod
     squares, conditions = _ordered(squares, sample)
     symbols = [c.q for c in (coords.all[i] for i in chosen)]
     steps = _steps(coords, chosen, directions, mass, stiffness, symbols, accelerations, zero_modes, squares)
-    return NormalModes(tuple(coords.all[i] for i in chosen), tuple(coords.all), directions, mass, stiffness, tuple(squares), zero_modes,
-                       steps, tuple(conditions))
+    return NormalModes(tuple(coords.all[i] for i in chosen), tuple(coords.all), directions, mass, stiffness,
+                       tuple(squares), zero_modes, steps, tuple(conditions))
 
 
 def _measured_by(coords: Coordinates, free: sp.Matrix) -> list[int]:
