@@ -473,12 +473,14 @@ def _positive_square(factor: sp.Expr) -> bool:
     >>> _positive_square(d**2 - 2*d*r*sp.cos(th) + r**2*sp.cos(th)**2 + r**2), _positive_square(d**2 - r**2)
     (True, False)
     """
+    if sp.fraction(sp.together(factor))[1] != 1:
+        return False  # a polynomial factor only (the remainder below is one too)
     inside = set().union(*(f.free_symbols for f in factor.atoms(sp.Function)))
     for x in sorted(factor.free_symbols - inside, key=sp.default_sort_key):
         polynomial = sp.Poly(factor, x)
         if polynomial.degree() == 2:
             a, b, c = polynomial.all_coeffs()
-            if _positive(a) and _positive(sp.cancel(c - b ** 2 / (4 * a))):
+            if _positive(a) and _positive(sp.expand(4 * a * c - b ** 2)):  # = 4 a (c - b^2/(4 a))
                 return True
     return False
 
