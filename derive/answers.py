@@ -502,6 +502,7 @@ class Solution(StateAnswers, CrossChecks):
         if {a.quantity.kind for a in self.problem.asks.values()} & DYNAMIC_KINDS:
             result += self._sign_conditions()
         if any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()):
+            result += self._loaded_at_equilibrium()
             oscillation = self.oscillations["lagrange"]
             if not oscillation.proven:  # its sign was read at the middle of the ranges
                 result.append((oscillation.stiffness if oscillation.stable else -oscillation.stiffness, True,
@@ -553,6 +554,25 @@ class Solution(StateAnswers, CrossChecks):
         if ball.is_finite() and float(ball.rad()) <= 1e-30 * (1 + abs(float(ball.mid()))):
             return float(ball.mid())
         return float(sp.N(value, 30))
+
+    def _loaded_at_equilibrium(self) -> list[tuple[sp.Expr, bool, str]]:
+        """A small oscillation swings both ways about its equilibrium (the reference configuration,
+        derive.mechanics.oscillation): a cord's tension or a contact's normal force zero there
+        would have to change sign for half of every swing, so each must be positive there, strictly.
+        One zero for every parameter is refused here; one that depends on them, per variant."""
+        solved = self.at_reference("lagrange").raw
+        scene = self.dynamics_scene
+        ask = next(name for name, a in self.problem.asks.items() if a.quantity.kind == "small_oscillation")
+        result = []
+        for sign in (sign for part in (*scene.constraints, *scene.loads) for sign in part.signs()):
+            force = tidy(sign.expression.xreplace(solved))
+            if force.is_zero or sp.simplify(force) == 0:
+                raise self.problem.error(f"ask.{ask}.of", f"{sign.unloaded} at the equilibrium: {sign.force} is 0 "
+                                         "there, so a small oscillation about it would need it negative for half "
+                                         "of every swing (every cord taut and every contact pressed there)")
+            result.append((force, True, f"{sign.unloaded} at the equilibrium at these parameters: {sign.force} "
+                                        "there is not positive, and a small oscillation needs it positive"))
+        return result
 
     def _sign_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """The signs the parts' forces must keep in the reference configuration at rest (a taut

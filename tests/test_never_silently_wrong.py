@@ -417,3 +417,60 @@ def test_a_velocity_of_a_body_that_does_not_roll_is_refused_with_the_states_form
     assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert "scene.bodies.ball.velocity: a velocity is the speed of a body rolling without slipping" in result.stderr
     assert "states: {moving: {rates: {ball.velocity.x: v}}}" in result.stderr
+
+
+#: The new-user trial's file: the block sits between a spring (at its rest length) and a cord wound
+#: on a pulley, so at the equilibrium the cord holds nothing and would have to push for half of
+#: every swing; derive once answered omega = sqrt(2k/(M + 2m)) with every check passing.
+SLACK_AT_EQUILIBRIUM = """\
+id: spring_block_massive_pulley
+title: A block on a spring tied to a cord wound on a massive pulley
+topic: oscillations
+parameters:
+  m: {meaning: mass of the block, unit: kg, range: [0.2, 2], sig_figs: 3}
+  M: {meaning: mass of the pulley, unit: kg, range: [0.2, 2], sig_figs: 3}
+  R: {meaning: radius of the pulley, unit: m, range: [0.05, 0.2], sig_figs: 3}
+  k: {meaning: spring constant, unit: N/m, range: [10, 200], sig_figs: 3}
+  d: {meaning: distance from the block to the wall and to the pulley, unit: m, value: 0.5}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    wall: [-d, 0]
+  surfaces:
+    table: {incline: {angle: 0, through: [0, 0]}}
+  bodies:
+    block: {shape: point, mass: m, at: [0, 0], on: table, contact: sliding}
+    pulley: {shape: disk, mass: M, radius: R, at: [d, -R], joint: fixed_axle}
+  cords:
+    cord: [block, {wound: pulley, side: top}]
+  loads:
+    - gravity: g
+    - spring: {between: [wall, block], stiffness: k}
+ask:
+  omega: {meaning: angular frequency of small oscillations, of: small_oscillation.omega, unit: rad/s}
+question: |
+  A block of mass {{ m }} between a spring of constant {{ k }} and a cord wound on a pulley ({{ M }}, {{ R }}).
+"""
+
+
+def test_a_cord_slack_at_the_equilibrium_is_refused_for_small_oscillations(tmp_path):
+    result = run_derive("solve", str(write(tmp_path, SLACK_AT_EQUILIBRIUM)))
+    assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert "problem.yaml: ask.omega.of: the cord cord is slack at the equilibrium: its tension is 0 there" \
+        in result.stderr
+
+
+def test_a_cord_slack_at_the_equilibrium_for_some_parameters_is_refused_for_those(tmp_path):
+    """The tension m g - F at the bottom of a pendulum pushed up by F: positive, the pendulum swings
+    (omega^2 = (g - F/m)/L); zero, refused for those values (the cord would push half the swing)."""
+    text = SLACK.replace("range: [1, 30]", "range: [1, 9]").replace(
+        "  T: {meaning: tension", "  omega: {meaning: angular frequency, of: small_oscillation.omega, unit: rad/s}\n"
+        "  T: {meaning: tension")
+    path = str(write(tmp_path, text))
+    taut = run_derive("solve", path, "--set", "m=1", "--set", "F=5", "--format", "json")
+    assert taut.returncode == 0, taut.stderr
+    assert taut.stdout.count('"value": "2.19317121994613"') == 1  # sqrt(9.81 - 5)
+    slack = run_derive("solve", path, "--set", "m=1", "--set", "F=9.81")
+    assert slack.returncode == 2
+    assert slack.stderr.strip().endswith("parameters: the cord rope is slack at the equilibrium at these parameters: "
+                                         "its tension there is not positive, and a small oscillation needs it positive")

@@ -258,7 +258,8 @@ class Cord(Part):
         return result
 
     def signs(self) -> list[Sign]:
-        return [Sign(s.symbol, f"the cord {self.name} goes slack (its tension would be negative)")
+        return [Sign(s.symbol, f"the cord {self.name} goes slack (its tension would be negative)",
+                     f"the cord {self.name} is slack", f"its {s.tension_name.replace('_', ' ')}")
                 for s in self.segments() if s.symbol is not None]
 
 
