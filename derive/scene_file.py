@@ -68,7 +68,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
             else:
                 sizes[size] = reader.unspecified(f"{size}_{name}", "m")
         elif size in spec:
-            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
+            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}" + did_you_mean(size, SHAPE_SIZES[shape]))
     given = None
     if shape == "custom" and "pivot_point" in spec:
         given = _pivot_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the point

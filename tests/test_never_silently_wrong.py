@@ -313,7 +313,15 @@ question: |
 @pytest.mark.parametrize("text, message", [
     (ON_TABLE_AND_HANGING, "scene.cords.rope: the cord pulls the block straight along the normal of table"),
     (PIN_OFF_THE_ROD, "scene.joints.p.pin: the point lies L from the block's center, outside the rod"),
-], ids=["on-a-table-and-hanging", "pin-off-the-body"])
+    (PIN_OFF_THE_ROD.replace("p: {pin: {block: [L, 0]}}", "p: {pin: {block: [L/2, 0]}, to: bob}").replace(
+        "    block: {shape: rod", "    bob: {shape: point, mass: m, at: [L/2, -L]}\n    block: {shape: rod"),
+     "scene.joints.p.to: the two points of the pin are apart in the reference configuration ([L/2, 0] and "
+     "[L/2, -L]): place the bodies with at (a massless arm or string between two points is a cord: a cords: entry, "
+     "`NAME: [POINT, POINT]`)"),
+    (PIN_OFF_THE_ROD.replace("hook: [0, L]", "hook: [1, L]"), "scene.points.hook: a position must have the "
+     "dimension of m, but 1 has no dimension: a bare number other than 0 has no unit (an expression takes none); "
+     "write it with a parameter in m, or as a multiple of one"),
+], ids=["on-a-table-and-hanging", "pin-off-the-body", "pin-apart", "bare-number"])
 def test_geometry_that_does_not_fit_is_refused(tmp_path, text, message):
     write(tmp_path, text)
     result = run_derive("solve", str(tmp_path / "problem.yaml"))
