@@ -32,6 +32,7 @@ from derive.crosschecks import CrossChecks, sample_points
 from derive.errors import InputError
 from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
+from derive.parts.cord import Cord
 from derive.parts.surfaces import Plane
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
@@ -722,6 +723,17 @@ class Solution(StateAnswers, CrossChecks):
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
         if kinds <= STATIC_KINDS:
             return {"integration": [self._static_step(a) for a in self.problem.asks.values()]}
+        windings = self.winding_steps() if kinds & DYNAMIC_KINDS else []
+        return {"how the cords run": windings, **self._route_steps(kinds)} if windings else self._route_steps(kinds)
+
+    def winding_steps(self) -> list[Step]:
+        """The sense each cord goes round each circle its file names a `side:` of, where it touches
+        it, and the sides that would take the other tangent (derive.parts.cord.Cord.windings): what
+        a figure of the file's placement shows, said in words, since the side decides the runs."""
+        return [Step(text) for part in (*self.scene.constraints, *self.scene.loads) if isinstance(part, Cord)
+                for text in part.windings(self.coordinates, self._sample)]
+
+    def _route_steps(self, kinds: set) -> dict[str, list[Step]]:
         if kinds == {"path"}:
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
