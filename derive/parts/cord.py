@@ -275,9 +275,9 @@ class Cord(Part):
             sense = "counter-clockwise" if a.turn > 0 else "clockwise"
             other = (f"; side: {', '.join(a.other_sides)} would {'wind' if a.kind == 'wound' else 'take'} it the "
                      "other way, on the other tangent" if a.other_sides else "")
-            far = [t for t in touches if sample((t - a.center(coords)).xreplace(rest).dot(sp.Matrix(SIDES[a.side]))) < 0]
-            if far:  # the sense the side chose puts the cord on the opposite half of the circle
-                other += f"; that is not at its {a.side}: the cord touches the far side of the circle from it"
+            if a.kind == "wound" and sample((touches[0] - a.center(coords)).xreplace(rest).dot(sp.Matrix(SIDES[a.side]))) < 0:
+                # the sense the side chose leaves the cord on the opposite half of the circle
+                other += f"; that is not on its {a.side} half: the cord leaves from the far side of the circle"
             if a.kind == "wound":
                 toward = self.path[1] if i == 0 else self.path[-2]
                 result.append(f"The cord {self.name} is wound on {_named(a)} {sense} (side: {a.side}) and "
