@@ -339,12 +339,12 @@ def read(reader, places, name: str, path, field: str) -> Cord:
                 if 0 <= neighbour < len(elements) and elements[neighbour]["kind"] == "pulled":
                     angle = elements[neighbour]["angle"]
                     travel = sense * sp.Matrix([sp.cos(angle), sp.sin(angle)])
-            crossings = {name: places.sample(v[0] * travel[1] - v[1] * travel[0]) for name, v in SIDES.items()}
+            crossings = {side: places.sample(v[0] * travel[1] - v[1] * travel[0]) for side, v in SIDES.items()}
             if abs(crossings[e["side_name"]]) < 1e-12:
                 raise reader.fail(where, f"the cord runs straight at the {e['side_name']} of the circle: it does not "
                                          "go around it there (check the side and the positions)")
             e["turn"] = 1 if crossings[e["side_name"]] > 0 else -1
-            e["other_sides"] = tuple(name for name, crossing in crossings.items() if crossing * e["turn"] < -1e-12)
+            e["other_sides"] = tuple(side for side, crossing in crossings.items() if crossing * e["turn"] < -1e-12)
         attachments.append(Attachment(e["kind"], e["body"], e["offset"], e.get("radius", sp.Integer(0)),
                                       e.get("turn", 0), e.get("grips", False), e.get("force"), e.get("angle"),
                                       e.get("side_name", ""), e.get("other_sides", ())))
