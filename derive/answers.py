@@ -558,16 +558,21 @@ class Solution(StateAnswers, CrossChecks):
 
     def _loaded_at_equilibrium(self) -> list[tuple[sp.Expr, bool, str]]:
         """A small oscillation swings both ways about its equilibrium (the reference configuration,
-        derive.mechanics.oscillation): a cord's tension or a contact's normal force zero there
-        would have to change sign for half of every swing, so each must be positive there, strictly.
-        One zero for every parameter is refused here; one that depends on them, per variant."""
+        derive.mechanics.oscillation): a cord's tension or a contact's normal force zero there and
+        changing to first order along the swing would change sign for half of every swing, so each
+        must be positive there, strictly. One zero for every parameter is refused here; one that
+        depends on them, per variant. A force that stays zero along the swing to first order (a
+        floor under a block with no gravity) carries nothing and is left to the parts' own signs."""
         solved = self.at_reference("lagrange").raw
         scene = self.dynamics_scene
         ask = next(name for name, a in self.problem.asks.items() if a.quantity.kind == "small_oscillation")
+        first_order = self.oscillations["lagrange"].first_order
         result = []
         for sign in (sign for part in (*scene.constraints, *scene.loads) for sign in part.signs()):
+            if _zero(sign.expression.xreplace(first_order)):
+                continue
             force = tidy(sign.expression.xreplace(solved))
-            if force.is_zero or sp.simplify(force) == 0:
+            if _zero(force):
                 raise self.problem.error(f"ask.{ask}.of", f"{sign.unloaded} at the equilibrium: {sign.force} is 0 "
                                          "there, so a small oscillation about it would need it negative for half "
                                          "of every swing (every cord taut and every contact pressed there)")
@@ -869,3 +874,8 @@ class Solution(StateAnswers, CrossChecks):
                 sp.Eq(sp.Symbol("I"), derived.I.xreplace(mapping)),
             ),
         )
+
+
+def _zero(expr: sp.Expr) -> bool:
+    """Whether an expression is zero for every value of its symbols (as far as sympy can tell)."""
+    return bool(expr.is_zero) or sp.simplify(expr) == 0

@@ -469,16 +469,36 @@ def test_a_cord_slack_at_the_equilibrium_is_refused_for_small_oscillations(tmp_p
 
 
 def test_a_cord_slack_at_the_equilibrium_for_some_parameters_is_refused_for_those(tmp_path):
-    """The tension m g - F at the bottom of a pendulum pushed up by F: positive, the pendulum swings
-    (omega^2 = (g - F/m)/L); zero, refused for those values (the cord would push half the swing)."""
-    text = SLACK.replace("range: [1, 30]", "range: [1, 9]").replace(
-        "  T: {meaning: tension", "  omega: {meaning: angular frequency, of: small_oscillation.omega, unit: rad/s}\n"
-        "  T: {meaning: tension")
-    path = str(write(tmp_path, text))
-    taut = run_derive("solve", path, "--set", "m=1", "--set", "F=5", "--format", "json")
-    assert taut.returncode == 0, taut.stderr
-    assert taut.stdout.count('"value": "2.19317121994613"') == 1  # sqrt(9.81 - 5)
-    slack = run_derive("solve", path, "--set", "m=1", "--set", "F=9.81")
+    """The same block with a couple tau on the pulley and the spring stretched by tau/(R k) to
+    balance it: the cord holds tau/R at the equilibrium. Positive, the block swings at
+    omega^2 = k/(m + I/R^2), I = M R^2/2 (Serway & Jewett ch. 15); zero or negative, those values
+    are refused (a sheet redraws them)."""
+    text = SLACK_AT_EQUILIBRIUM.replace(
+        "  g: {meaning: grav", "  tau: {meaning: couple on the pulley, unit: N*m, range: [-0.5, 2], sig_figs: 2}\n"
+        "  g: {meaning: grav").replace(
+        "    - spring: {between: [wall, block], stiffness: k}",
+        "    - spring: {between: [wall, block], stiffness: k, rest_length: d - tau/(R*k)}\n"
+        "    - torque: {on: pulley, magnitude: -tau}").replace("({{ M }}, {{ R }})", "({{ M }}, {{ R }}, {{ tau }})")
+    path = write(tmp_path, text)
+    problem = load(path)
+    m, M, k = (problem.parameters[n].symbol for n in ("m", "M", "k"))
+    assert sp.simplify(Solution(problem).expression("omega") - sp.sqrt(k / (m + M / 2))) == 0
+    given = ("--set", "m=1", "--set", "M=1", "--set", "R=0.1", "--set", "k=100")
+    assert run_derive("solve", str(path), *given, "--set", "tau=1").returncode == 0
+    slack = run_derive("solve", str(path), *given, "--set", "tau=0")
     assert slack.returncode == 2
-    assert slack.stderr.strip().endswith("parameters: the cord rope is slack at the equilibrium at these parameters: "
+    assert slack.stderr.strip().endswith("parameters: the cord cord is slack at the equilibrium at these parameters: "
                                          "its tension there is not positive, and a small oscillation needs it positive")
+    pushing = run_derive("solve", str(path), *given, "--set", "tau=-0.2")
+    assert pushing.returncode == 2 and "the cord cord goes slack" in pushing.stderr
+
+
+def test_a_contact_that_carries_nothing_along_the_swing_is_not_refused(tmp_path):
+    """A block on a smooth floor with no gravity: its normal force is zero at the equilibrium and
+    stays zero along the swing, so it never has to pull (omega^2 = k/m, Halliday ch. 15)."""
+    path = write(tmp_path, DAMPED.replace("RANGE", "2, 10").replace(
+        "    - damper: {between: [wall, block], coefficient: b}\n", "").replace(
+        "  b: {meaning: damping coefficient, unit: N*s/m, range: [2, 10], sig_figs: 3}\n", ""))
+    problem = load(path)
+    m, k = (problem.parameters[n].symbol for n in ("m", "k"))
+    assert sp.simplify(Solution(problem).expression("omega") - sp.sqrt(k / m)) == 0

@@ -16,7 +16,7 @@ sqrt(M*d*g/(I + M*d**2))
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -45,6 +45,9 @@ class Oscillation:
     #: c in q'' = -k q - c q' (a damper): the oscillation is at omega^2 = k - c^2/4 while that is
     #: positive (underdamped; Solution.conditions checks it for every variant).
     damping: sp.Expr = sp.Integer(0)
+    #: Each unknown's first-order change per unit of the coordinate along the free direction (a
+    #: tension's, a normal force's: whether it changes sign where it is zero at the equilibrium).
+    first_order: dict = field(default_factory=dict)
 
     def quantity(self, name: str) -> sp.Expr:
         """omega or period (stable), growth_rate (unstable)."""
@@ -110,8 +113,9 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
         residual = (e.lhs - e.rhs).xreplace(at_rest).xreplace(along)
         residual = residual.xreplace({u: equilibrium[u] + s * first[u] for u in derivation.unknowns})
         linear_equations.append(sp.Eq(sp.diff(residual, s).xreplace({s: 0}), 0))
-    slope = solve_linear(linear_equations, list(first.values())).raw[first[coordinate.a]]
-    stiffness = tidy(-slope)
+    slopes = solve_linear(linear_equations, list(first.values())).raw
+    first_order = {u: slopes[first[u]] for u in derivation.unknowns}
+    stiffness = tidy(-first_order[coordinate.a])
     proven = stiffness.is_positive is True or stiffness.is_negative is True
     if proven:
         stable = bool(stiffness.is_positive)
@@ -133,7 +137,7 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
     else:
         steps = (linear, Step("Unstable: a small displacement grows exponentially, at the rate",
                               (sp.Eq(sp.Symbol("a"), oscillation.quantity("growth_rate")),)))
-    return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping)
+    return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping, first_order)
 
 
 def _damping(scene: Scene, derivation: Derivation, coords: Coordinates, direction, coordinate: Coordinate) -> sp.Expr:
