@@ -33,6 +33,7 @@ from derive.crosschecks import CrossChecks, sample_points
 from derive.errors import InputError
 from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
+from derive.parts.cord import Cord
 from derive.parts.surfaces import Plane
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
@@ -618,6 +619,7 @@ class Solution(StateAnswers, CrossChecks):
         if any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()) and self.freedoms > 1:
             result += list(self.normal_modes["lagrange"].conditions)
         elif any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()):
+            result += self._loaded_at_equilibrium()
             oscillation = self.oscillations["lagrange"]
             if not oscillation.proven:  # its sign was read at the middle of the ranges
                 result.append((oscillation.stiffness if oscillation.stable else -oscillation.stiffness, True,
@@ -669,6 +671,30 @@ class Solution(StateAnswers, CrossChecks):
         if ball.is_finite() and float(ball.rad()) <= 1e-30 * (1 + abs(float(ball.mid()))):
             return float(ball.mid())
         return float(sp.N(value, 30))
+
+    def _loaded_at_equilibrium(self) -> list[tuple[sp.Expr, bool, str]]:
+        """A small oscillation swings both ways about its equilibrium (the reference configuration,
+        derive.mechanics.oscillation): a cord's tension or a contact's normal force zero there and
+        changing to first order along the swing would change sign for half of every swing, so each
+        must be positive there, strictly. One zero for every parameter is refused here; one that
+        depends on them, per variant. A force that stays zero along the swing to first order (a
+        floor under a block with no gravity) carries nothing and is left to the parts' own signs."""
+        solved = self.at_reference("lagrange").raw
+        scene = self.dynamics_scene
+        ask = next(name for name, a in self.problem.asks.items() if a.quantity.kind == "small_oscillation")
+        first_order = self.oscillations["lagrange"].first_order
+        result = []
+        for sign in (sign for part in (*scene.constraints, *scene.loads) for sign in part.signs()):
+            if _zero(sign.expression.xreplace(first_order)):
+                continue
+            force = tidy(sign.expression.xreplace(solved))
+            if _zero(force):
+                raise self.problem.error(f"ask.{ask}.of", f"{sign.unloaded} at the equilibrium: {sign.force} is 0 "
+                                         "there, so a small oscillation about it would need it negative for half "
+                                         "of every swing (every cord taut and every contact pressed there)")
+            result.append((force, True, f"{sign.unloaded} at the equilibrium at these parameters: {sign.force} "
+                                        "there is not positive, and a small oscillation needs it positive"))
+        return result
 
     def _sign_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """The signs the parts' forces must keep in the reference configuration at rest (a taut
@@ -822,6 +848,17 @@ class Solution(StateAnswers, CrossChecks):
         kinds = {a.quantity.kind for a in self.problem.asks.values()}
         if kinds <= STATIC_KINDS:
             return {"integration": [self._static_step(a) for a in self.problem.asks.values()]}
+        windings = self.winding_steps() if kinds & DYNAMIC_KINDS else []
+        return {"how the cords run": windings, **self._route_steps(kinds)} if windings else self._route_steps(kinds)
+
+    def winding_steps(self) -> list[Step]:
+        """The sense each cord goes round each circle its file names a `side:` of, where it touches
+        it, and the sides that would take the other tangent (derive.parts.cord.Cord.windings): what
+        a figure of the file's placement shows, said in words, since the side decides the runs."""
+        return [Step(text) for part in (*self.scene.constraints, *self.scene.loads) if isinstance(part, Cord)
+                for text in part.windings(self.coordinates, self._sample)]
+
+    def _route_steps(self, kinds: set) -> dict[str, list[Step]]:
         if kinds == {"path"}:
             return {"kinematics": self._path_steps()}
         if kinds == {"orbit"}:
@@ -967,3 +1004,8 @@ class Solution(StateAnswers, CrossChecks):
                 sp.Eq(sp.Symbol("I"), derived.I.xreplace(mapping)),
             ),
         )
+
+
+def _zero(expr: sp.Expr) -> bool:
+    """Whether an expression is zero for every value of its symbols (as far as sympy can tell)."""
+    return bool(expr.is_zero) or sp.simplify(expr) == 0

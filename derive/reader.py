@@ -205,7 +205,9 @@ class Reader:
             raise self.fail(field, str(error)) from None
         wanted = units.dimension(units.parse_unit(unit))
         if not units.same_dimension(found, wanted):
-            raise self.fail(field, f"{what} must have the dimension of {unit}, but {result} has {describe(found)}")
+            bare = "" if result.free_symbols else (f": a bare number other than 0 has no unit (an expression takes none); "
+                                                   f"write it with a parameter in {unit}, or as a multiple of one")
+            raise self.fail(field, f"{what} must have the dimension of {unit}, but {result} has {describe(found)}{bare}")
         return result
 
     def unspecified(self, name: str, unit: str) -> sp.Symbol:

@@ -164,6 +164,10 @@ def as_text(result: dict, solution: Solution) -> str:
     """The report for a terminal: `result` (the JSON contract) with the expressions of `solution`
     drawn by sympy's unicode pretty-printer and units as text reads them."""
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
+    windings = result["steps"].get("how the cords run", [])
+    if windings:
+        lines += ["How the cords run (in the placement, at the middle of the ranges):",
+                  *(f"  {step['text']}" for step in windings), ""]
     for route, equations in equations_of_motion(solution).items():
         lines.append(f"Equations of motion, {route_title(route)} (in the reference configuration, at rest):")
         said = [line for step in solution.derivations[route].steps for s in step.sentences for line in s.text().splitlines()]

@@ -68,7 +68,7 @@ def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
             else:
                 sizes[size] = reader.unspecified(f"{size}_{name}", "m")
         elif size in spec:
-            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}")
+            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}" + did_you_mean(size, SHAPE_SIZES[shape]))
     given = None
     if shape == "custom" and "free_rotation" in spec:
         given = _free_inertia(reader, spec, field)[2]  # the moment about z; the rest is read with the rotation

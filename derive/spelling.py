@@ -12,10 +12,20 @@ import difflib
 from typing import Iterable
 
 
+#: Another word for a name derive knows by one: a cylinder's or a cone's length is its height, a
+#: rod's height its length (spelling alone does not bring them together).
+SYNONYMS = {"length": ("height",), "height": ("length",)}
+
+
 def did_you_mean(word: object, choices: Iterable[object]) -> str:
-    """"; did you mean 'CHOICE'?" for the choice closest to `word` (difflib's ratio at least 0.6),
-    else ""."""
-    close = difflib.get_close_matches(str(word), [str(c) for c in choices], n=1)
+    """"; did you mean 'CHOICE'?" for a synonym of `word` among the choices, else the choice
+    closest to it (difflib's ratio at least 0.6), else "".
+
+    >>> did_you_mean("length", ["radius", "height"])
+    "; did you mean 'height'?"
+    """
+    choices = [str(c) for c in choices]
+    close = [c for c in SYNONYMS.get(str(word), ()) if c in choices] or difflib.get_close_matches(str(word), choices, n=1)
     return f"; did you mean {close[0]!r}?" if close else ""
 
 

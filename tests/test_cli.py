@@ -209,6 +209,7 @@ DISK = (ROOT / "problems/torque/string_wrapped_disk.yaml").read_text()
     ("- gravity: g", "- gravty: g", "scene.loads[0].gravty", "'gravity'"),  # a part (a load)
     ("hangs: block", "hangs: blok", "scene.constraints", "'block'"),  # a body
     ("of: block.acceleration.y", "of: blok.acceleration.y", "ask.a.of", "'block'"),  # a body an ask names
+    ("shape: disk,", "shape: cylinder, length: R,", "scene.bodies.disk.length", "'height'"),  # another word for a size
 ])
 def test_did_you_mean_in_problem_files(tmp_path, old, new, field, suggestion):
     assert old in DISK

@@ -157,3 +157,81 @@ question: |
     result = run_derive("solve", str(path))
     assert result.returncode == 2, result.stdout
     assert "the plane face's angle -theta is negative" in result.stderr
+
+
+#: The new-user trial's cylinder on a smooth incline, its cord tied up the slope at the height of its
+#: top (Kleppner & Kolenkow ch. 7 problems): `side: top` leaves the top parallel to the incline, a =
+#: 2 g sin(theta)/3; `side: left` winds it the other way, on the other tangent from the peg.
+UNWINDING = """\
+id: cylinder_unwinding_incline
+title: A cylinder unwinds a cord tied at the top of a smooth incline
+topic: rolling
+parameters:
+  M: {meaning: mass of the cylinder, unit: kg, range: [0.5, 5], sig_figs: 3}
+  R: {meaning: radius of the cylinder, unit: m, range: [0.05, 0.3], sig_figs: 3}
+  theta: {meaning: angle of the incline, unit: rad, range: [0.2, 1.2], sig_figs: 3}
+  D: {meaning: free length of the cord, unit: m, range: [0.5, 2], sig_figs: 3}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    ramp: {incline: {angle: theta, through: [0, 0]}}
+  points:
+    peg: [2*R*sin(theta) - D*cos(theta), 2*R*cos(theta) + D*sin(theta)]
+  bodies:
+    cyl: {shape: cylinder, mass: M, radius: R, height: R, at: [R*sin(theta), R*cos(theta)], on: ramp, contact: sliding}
+  cords:
+    cord: [peg, {wound: cyl, side: SIDE}]
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration of the cylinder down the incline, of: cyl.acceleration.down_incline, unit: m/s^2}
+question: |
+  A cylinder of mass {{ M }} and radius {{ R }} on an incline at {{ theta }} unwinds a cord of free length {{ D }}.
+"""
+
+
+def test_derive_solve_says_which_tangent_a_side_takes(tmp_path):
+    """The answers are the geometry's; what the side chose is said, with the sides that choose the other."""
+    (tmp_path / "top.yaml").write_text(UNWINDING.replace("SIDE", "top"))
+    (tmp_path / "left.yaml").write_text(UNWINDING.replace("SIDE", "left"))
+    top, left = (run_derive("solve", str(tmp_path / f"{side}.yaml")) for side in ("top", "left"))
+    assert top.returncode == 0 and left.returncode == 0, top.stderr + left.stderr
+    assert "How the cords run" in top.stdout
+    # theta = 0.7 at the middle of the ranges: the top of the cylinder is 0.7 rad (40 degrees) past the
+    # vertical, 50 degrees from its right
+    assert ("The cord cord is wound on the cyl clockwise (side: top) and leaves it at its upper right (50 degrees "
+            "round from its right, counter-clockwise), toward the ground point; side: under, left, bottom would wind "
+            "it the other way, on the other tangent.") in top.stdout
+    assert ("The cord cord is wound on the cyl counter-clockwise (side: left) and leaves it at its lower left "
+            "(214 degrees round from its right, counter-clockwise), toward the ground point; side: over, right, top "
+            "would wind it the other way, on the other tangent.") in left.stdout
+    assert "D" not in top.stdout.split("Answers:")[1].split("(acceleration")[0]  # parallel: no free length
+    solution = Solution(load(tmp_path / "left.yaml"))
+    assert solution.expression("a").has(solution.problem.parameters["D"].symbol)  # at an angle: it has
+    assert solution.steps()["how the cords run"][0].text in left.stdout  # the worked solution says it too
+
+
+def test_a_wound_end_leaving_from_the_far_half_of_its_side_is_said(tmp_path):
+    """A disk on an axle with a block close below its right half: `side: top` winds it clockwise, and
+    the tangent to the block leaves the rim below its middle (n = (0.935, -0.355) for R = 1)."""
+    text = UNWINDING.split("scene:")[0] + """scene:
+  bodies:
+    cyl: {shape: cylinder, mass: M, radius: R, height: R, joint: fixed_axle}
+    block: {shape: point, mass: M, at: [R/2, -3*R/2]}
+  joints:
+    guide: {slider: block, angle: pi/2}
+  cords:
+    cord: [{wound: cyl, side: top}, block]
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration of the block, of: block.acceleration.y, unit: m/s^2}
+question: |
+  A cylinder of mass {{ M }} and radius {{ R }}.
+"""
+    (tmp_path / "far.yaml").write_text(text.replace("  theta: {meaning: angle of the incline, unit: rad, range: "
+                                                    "[0.2, 1.2], sig_figs: 3}\n", "").replace(
+        "  D: {meaning: free length of the cord, unit: m, range: [0.5, 2], sig_figs: 3}\n", ""))
+    (step,) = Solution(load(tmp_path / "far.yaml")).winding_steps()
+    assert "leaves it at its right (339 degrees" in step.text
+    assert step.text.endswith("that is not on its top half: the cord leaves from the far side of the circle.")

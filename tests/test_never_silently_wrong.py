@@ -315,7 +315,15 @@ question: |
 @pytest.mark.parametrize("text, message", [
     (ON_TABLE_AND_HANGING, "scene.cords.rope: the cord pulls the block straight along the normal of table"),
     (PIN_OFF_THE_ROD, "scene.joints.p.pin: the point lies L from the block's center, outside the rod"),
-], ids=["on-a-table-and-hanging", "pin-off-the-body"])
+    (PIN_OFF_THE_ROD.replace("p: {pin: {block: [L, 0]}}", "p: {pin: {block: [L/2, 0]}, to: bob}").replace(
+        "    block: {shape: rod", "    bob: {shape: point, mass: m, at: [L/2, -L]}\n    block: {shape: rod"),
+     "scene.joints.p.to: the two points of the pin are apart in the reference configuration ([L/2, 0] and "
+     "[L/2, -L]): place the bodies with at (a massless arm or string between two points is a cord: a cords: entry, "
+     "`NAME: [POINT, POINT]`)"),
+    (PIN_OFF_THE_ROD.replace("hook: [0, L]", "hook: [1, L]"), "scene.points.hook: a position must have the "
+     "dimension of m, but 1 has no dimension: a bare number other than 0 has no unit (an expression takes none); "
+     "write it with a parameter in m, or as a multiple of one"),
+], ids=["on-a-table-and-hanging", "pin-off-the-body", "pin-apart", "bare-number"])
 def test_geometry_that_does_not_fit_is_refused(tmp_path, text, message):
     write(tmp_path, text)
     result = run_derive("solve", str(tmp_path / "problem.yaml"))
@@ -434,3 +442,80 @@ def test_a_run_derived_as_placed_is_refused_where_a_variant_turns_it_over():
     over = run_derive("solve", path, "--set", "M=3", "--set", "m=1", "--set", "r=0.03", "--set", "d=0.01")
     assert over.returncode == 2
     assert "not placed as at the middle of the ranges, where d - r > 0" in over.stderr
+
+
+#: The new-user trial's file: the block sits between a spring (at its rest length) and a cord wound
+#: on a pulley, so at the equilibrium the cord holds nothing and would have to push for half of
+#: every swing; derive once answered omega = sqrt(2k/(M + 2m)) with every check passing.
+SLACK_AT_EQUILIBRIUM = """\
+id: spring_block_massive_pulley
+title: A block on a spring tied to a cord wound on a massive pulley
+topic: oscillations
+parameters:
+  m: {meaning: mass of the block, unit: kg, range: [0.2, 2], sig_figs: 3}
+  M: {meaning: mass of the pulley, unit: kg, range: [0.2, 2], sig_figs: 3}
+  R: {meaning: radius of the pulley, unit: m, range: [0.05, 0.2], sig_figs: 3}
+  k: {meaning: spring constant, unit: N/m, range: [10, 200], sig_figs: 3}
+  d: {meaning: distance from the block to the wall and to the pulley, unit: m, value: 0.5}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    wall: [-d, 0]
+  surfaces:
+    table: {incline: {angle: 0, through: [0, 0]}}
+  bodies:
+    block: {shape: point, mass: m, at: [0, 0], on: table, contact: sliding}
+    pulley: {shape: disk, mass: M, radius: R, at: [d, -R], joint: fixed_axle}
+  cords:
+    cord: [block, {wound: pulley, side: top}]
+  loads:
+    - gravity: g
+    - spring: {between: [wall, block], stiffness: k}
+ask:
+  omega: {meaning: angular frequency of small oscillations, of: small_oscillation.omega, unit: rad/s}
+question: |
+  A block of mass {{ m }} between a spring of constant {{ k }} and a cord wound on a pulley ({{ M }}, {{ R }}).
+"""
+
+
+def test_a_cord_slack_at_the_equilibrium_is_refused_for_small_oscillations(tmp_path):
+    result = run_derive("solve", str(write(tmp_path, SLACK_AT_EQUILIBRIUM)))
+    assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert "problem.yaml: ask.omega.of: the cord cord is slack at the equilibrium: its tension is 0 there" \
+        in result.stderr
+
+
+def test_a_cord_slack_at_the_equilibrium_for_some_parameters_is_refused_for_those(tmp_path):
+    """The same block with a couple tau on the pulley and the spring stretched by tau/(R k) to
+    balance it: the cord holds tau/R at the equilibrium. Positive, the block swings at
+    omega^2 = k/(m + I/R^2), I = M R^2/2 (Serway & Jewett ch. 15); zero or negative, those values
+    are refused (a sheet redraws them)."""
+    text = SLACK_AT_EQUILIBRIUM.replace(
+        "  g: {meaning: grav", "  tau: {meaning: couple on the pulley, unit: N*m, range: [-0.5, 2], sig_figs: 2}\n"
+        "  g: {meaning: grav").replace(
+        "    - spring: {between: [wall, block], stiffness: k}",
+        "    - spring: {between: [wall, block], stiffness: k, rest_length: d - tau/(R*k)}\n"
+        "    - torque: {on: pulley, magnitude: -tau}").replace("({{ M }}, {{ R }})", "({{ M }}, {{ R }}, {{ tau }})")
+    path = write(tmp_path, text)
+    problem = load(path)
+    m, M, k = (problem.parameters[n].symbol for n in ("m", "M", "k"))
+    assert sp.simplify(Solution(problem).expression("omega") - sp.sqrt(k / (m + M / 2))) == 0
+    given = ("--set", "m=1", "--set", "M=1", "--set", "R=0.1", "--set", "k=100")
+    assert run_derive("solve", str(path), *given, "--set", "tau=1").returncode == 0
+    slack = run_derive("solve", str(path), *given, "--set", "tau=0")
+    assert slack.returncode == 2
+    assert slack.stderr.strip().endswith("parameters: the cord cord is slack at the equilibrium at these parameters: "
+                                         "its tension there is not positive, and a small oscillation needs it positive")
+    pushing = run_derive("solve", str(path), *given, "--set", "tau=-0.2")
+    assert pushing.returncode == 2 and "the cord cord goes slack" in pushing.stderr
+
+
+def test_a_contact_that_carries_nothing_along_the_swing_is_not_refused(tmp_path):
+    """A block on a smooth floor with no gravity: its normal force is zero at the equilibrium and
+    stays zero along the swing, so it never has to pull (omega^2 = k/m, Halliday ch. 15)."""
+    path = write(tmp_path, DAMPED.replace("RANGE", "2, 10").replace(
+        "    - damper: {between: [wall, block], coefficient: b}\n", "").replace(
+        "  b: {meaning: damping coefficient, unit: N*s/m, range: [2, 10], sig_figs: 3}\n", ""))
+    problem = load(path)
+    m, k = (problem.parameters[n].symbol for n in ("m", "k"))
+    assert sp.simplify(Solution(problem).expression("omega") - sp.sqrt(k / m)) == 0

@@ -306,6 +306,14 @@ EXPECTED = {
         "omega": lambda s: sp.sqrt(s.k / (s.m + s.M / 2)),
         "T": lambda s: s.m * s.g,
     },
+    # Serway & Jewett ch. 15 (a block on a smooth table held by a spring and by a cord over a
+    # pulley of moment of inertia I to a hanging block m2): omega^2 = k/(m + m2 + I/R^2),
+    # I = M R^2/2; at equilibrium both runs hold m2 g (the spring is stretched by m2 g/k).
+    "spring_block_pulley_hanging": {
+        "omega": lambda s: sp.sqrt(s.k / (s.m + s.m2 + s.M / 2)),
+        "T1": lambda s: s.m2 * s.g,
+        "T2": lambda s: s.m2 * s.g,
+    },
     # Halliday ch. 15, Module 15-4 (torsion pendulum, eq. 15-23): T = 2 pi sqrt(I/kappa), I = M R^2/2.
     "torsion_pendulum": {
         "omega": lambda s: sp.sqrt(s.kappa / (s.M * s.R**2 / 2)),

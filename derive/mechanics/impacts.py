@@ -122,7 +122,8 @@ class Touch(Part):
 
     def signs(self) -> list[Sign]:
         return [Sign(self.unknowns()["impulse"], f"the {self.body} would pull on the {self.to or self.surface} in "
-                                                 "the bounce (they are not moving toward each other)")]
+                                                 "the bounce (they are not moving toward each other)",
+                     f"the {self.body} does not touch the {self.to or self.surface}", "its impulse")]
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ sqrt(M*d*g/(I + M*d**2))
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -45,6 +45,9 @@ class Oscillation:
     #: c in q'' = -k q - c q' (a damper): the oscillation is at omega^2 = k - c^2/4 while that is
     #: positive (underdamped; Solution.conditions checks it for every variant).
     damping: sp.Expr = sp.Integer(0)
+    #: Each unknown's first-order change per unit of the coordinate along the free direction (a
+    #: tension's, a normal force's: whether it changes sign where it is zero at the equilibrium).
+    first_order: dict = field(default_factory=dict)
 
     def quantity(self, name: str) -> sp.Expr:
         """omega or period (stable), growth_rate (unstable)."""
@@ -92,8 +95,8 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
     direction = (direction / direction[k]).applyfunc(tidy)
     coordinate = coords.all[k]
     equilibrium = at_equilibrium(derivation, coords)
-    slope = first_order(derivation, coords, direction, equilibrium)[coordinate.a]
-    stiffness = tidy(-slope, scene.placed)
+    first = first_order(derivation, coords, direction, equilibrium)
+    stiffness = tidy(-first[coordinate.a], scene.placed)
     proven = stiffness.is_positive is True or stiffness.is_negative is True
     if proven:
         stable = bool(stiffness.is_positive)
@@ -115,7 +118,7 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
     else:
         steps = (linear, Step("Unstable: a small displacement grows exponentially, at the rate",
                               (sp.Eq(sp.Symbol("a"), oscillation.quantity("growth_rate")),)))
-    return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping)
+    return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping, first)
 
 
 def free_directions(scene: Scene, coords: Coordinates) -> list[sp.Matrix]:

@@ -63,10 +63,14 @@ class AppliedTorque:
 class Sign:
     """A force that must keep its sign for the scene to be what the file says: `expression` (an
     unknown of the derivation, or an expression of unknowns) must be >= 0, or the `meaning`
-    explains what breaks (the cord goes slack)."""
+    explains what breaks (the cord goes slack). At an equilibrium a small oscillation swings
+    about, it must be positive: `unloaded` says what a zero there means ("the cord rope is
+    slack"), `force` names it ("its tension")."""
 
     expression: sp.Expr
     meaning: str
+    unloaded: str
+    force: str
 
 
 class Part:

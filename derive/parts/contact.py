@@ -191,7 +191,8 @@ class Contact(Part):
         normal = self.unknowns()["normal"]
         where = "" if self.point is None else f" at {self.name}"
         return [Sign(normal, f"the {self.body} leaves the surface {self.surface}{where} (its normal force would be "
-                             "negative)")]
+                             "negative)", f"the {self.body} does not press on the surface {self.surface}{where}",
+                     "its normal force")]
 
 
 def read(reader, places, name: str, spec: dict, field: str) -> Contact:

@@ -41,6 +41,7 @@ the body's material point at the tangent point (a gripping circle: the cord move
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import sympy as sp
@@ -60,6 +61,8 @@ class Attachment:
     `body` None is the ground; `offset` is the point (the circle's center) in the body's frame
     from its center of mass, or on the ground. `turn` is +1 when the cord goes around the circle
     counter-clockwise, -1 clockwise (0 for a point). `grips`: the cord does not slip on it.
+    `side`: the side the file named, which chose `turn`; `other_sides`: the sides that would have
+    chosen the other sense (and so the other tangent from a neighbour).
     """
 
     kind: str
@@ -70,6 +73,8 @@ class Attachment:
     grips: bool = False
     force: sp.Expr | None = None
     angle: sp.Expr | None = None
+    side: str = ""
+    other_sides: tuple[str, ...] = ()
 
     @property
     def rho(self) -> sp.Expr:
@@ -282,6 +287,43 @@ class Cord(Part):
                 math = (": ", sp.Eq(rate, 0)) if sp.count_ops(rate) < 40 else ()
                 result.append(Sentence((f"The cord {self.name} does not stretch{slip}, so the rates at which its runs "
                                         "lengthen add up to zero", *math, ".")))
+
+    def windings(self, coords, sample) -> list[str]:
+        """How the cord goes round each circle its file names a `side:` of, in words: the sense that
+        side chose, where the runs touch the circle (in the reference configuration, `sample`
+        giving an expression's value at the middle of the parameter ranges) and the sides that would
+        take the other sense, and so the other tangent from a neighbour.
+
+        >>> from derive.mechanics.kinematics import Coordinates
+        >>> from derive.scene import Body, Scene
+        >>> R = sp.Symbol("R", positive=True)
+        >>> reel = Attachment("wound", "disk", radius=R, turn=-1, side="right", other_sides=("left",))
+        >>> scene = Scene({"disk": Body("disk", "disk", 1, {"radius": R}), "block": Body("block", "point", 1, {},
+        ...                at=(R, -3 * R))})
+        >>> Cord("string", (reel, Attachment("point", "block"))).windings(Coordinates(scene), lambda e: float(e.subs(R, 1)))
+        ['The cord string is wound on the disk clockwise (side: right) and leaves it at its right (0 degrees round from its right, counter-clockwise), toward the block; side: left would wind it the other way, on the other tangent.']
+        """
+        rest = coords.at_rest_in_reference()
+        runs = [run(a, b, coords) for a, b in zip(self.path, self.path[1:])]
+        result = []
+        for i, a in enumerate(self.path):
+            if not a.side:
+                continue
+            touches = ([runs[i - 1].end_point] if i > 0 else []) + ([runs[i].start_point] if i < len(runs) else [])
+            where = [_on_circle(sample, (t - a.center(coords)).xreplace(rest)) for t in touches]
+            sense = "counter-clockwise" if a.turn > 0 else "clockwise"
+            other = (f"; side: {', '.join(a.other_sides)} would {'wind' if a.kind == 'wound' else 'take'} it the "
+                     "other way, on the other tangent" if a.other_sides else "")
+            if a.kind == "wound" and sample((touches[0] - a.center(coords)).xreplace(rest).dot(sp.Matrix(SIDES[a.side]))) < 0:
+                # the sense the side chose leaves the cord on the opposite half of the circle
+                other += f"; that is not on its {a.side} half: the cord leaves from the far side of the circle"
+            if a.kind == "wound":
+                toward = self.path[1] if i == 0 else self.path[-2]
+                result.append(f"The cord {self.name} is wound on {_named(a)} {sense} (side: {a.side}) and "
+                              f"leaves it at {where[0]}, toward {_named(toward)}{other}.")
+            else:
+                result.append(f"The cord {self.name} goes round {_named(a)} {sense} (side: {a.side}), from "
+                              f"{where[0]} to {where[1]}{other}.")
         return result
 
     def extents(self, coords) -> list[tuple[sp.Expr, str]]:
@@ -298,7 +340,8 @@ class Cord(Part):
         return result
 
     def signs(self) -> list[Sign]:
-        return [Sign(s.symbol, f"the cord {self.name} goes slack (its tension would be negative)")
+        return [Sign(s.symbol, f"the cord {self.name} goes slack (its tension would be negative)",
+                     f"the cord {self.name} is slack", f"its {s.tension_name.replace('_', ' ')}")
                 for s in self.segments() if s.symbol is not None]
 
 
@@ -335,14 +378,15 @@ def read(reader, places, name: str, path, field: str) -> Cord:
                 if 0 <= neighbour < len(elements) and elements[neighbour]["kind"] == "pulled":
                     angle = elements[neighbour]["angle"]
                     travel = sense * sp.Matrix([sp.cos(angle), sp.sin(angle)])
-            side = sp.Matrix(e["side"])
-            crossing = places.sample(side[0] * travel[1] - side[1] * travel[0])
-            if abs(crossing) < 1e-12:
+            crossings = {side: places.sample(v[0] * travel[1] - v[1] * travel[0]) for side, v in SIDES.items()}
+            if abs(crossings[e["side_name"]]) < 1e-12:
                 raise reader.fail(where, f"the cord runs straight at the {e['side_name']} of the circle: it does not "
                                          "go around it there (check the side and the positions)")
-            e["turn"] = 1 if crossing > 0 else -1
+            e["turn"] = 1 if crossings[e["side_name"]] > 0 else -1
+            e["other_sides"] = tuple(side for side, crossing in crossings.items() if crossing * e["turn"] < -1e-12)
         attachments.append(Attachment(e["kind"], e["body"], e["offset"], e.get("radius", sp.Integer(0)),
-                                      e.get("turn", 0), e.get("grips", False), e.get("force"), e.get("angle")))
+                                      e.get("turn", 0), e.get("grips", False), e.get("force"), e.get("angle"),
+                                      e.get("side_name", ""), e.get("other_sides", ())))
     cord = Cord(name, tuple(attachments))
     _check_runs(reader, places, cord, field)
     return cord
@@ -427,6 +471,20 @@ def _where(a: Attachment, first: bool) -> str:
     if a.body is None:
         return "around a smooth peg"
     return f"around the {a.body}" + ("" if a.grips else ", sliding over it")
+
+#: The eighths of a circle, counter-clockwise from its right, as a figure's reader names them.
+OCTANTS = ("right", "upper right", "top", "upper left", "left", "lower left", "bottom", "lower right")
+
+
+def _on_circle(sample, offset: sp.Matrix) -> str:
+    """Where a point offset from a circle's center lies on it, in words and degrees."""
+    degrees = round(math.degrees(math.atan2(sample(offset[1]), sample(offset[0])))) % 360
+    return f"its {OCTANTS[round(degrees / 45) % 8]} ({degrees} degrees round from its right, counter-clockwise)"
+
+
+def _named(a: Attachment) -> str:
+    """An attachment as a sentence names it: the disk, the ground point, the pull."""
+    return "the pull" if a.kind == "pulled" else f"the {a.body}" if a.body is not None else _describe(a)
 
 
 def _describe(a: Attachment) -> str:

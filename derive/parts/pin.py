@@ -103,5 +103,6 @@ def read(reader, places, name: str, spec: dict, field: str) -> Pin:
     if not places.coincide(places.world(body, offset), places.world(to, to_offset)):
         raise reader.fail(f"{field}.to", f"the two points of the pin are apart in the reference configuration "
                           f"({sp.sstr(list(places.world(body, offset)))} and "
-                          f"{sp.sstr(list(places.world(to, to_offset)))}): place the bodies with at")
+                          f"{sp.sstr(list(places.world(to, to_offset)))}): place the bodies with at (a massless "
+                          "arm or string between two points is a cord: a cords: entry, `NAME: [POINT, POINT]`)")
     return Pin(name, body, offset) if to is None else Pin(name, body, offset, to, to_offset)
