@@ -287,6 +287,7 @@ class Cord(Part):
                 math = (": ", sp.Eq(rate, 0)) if sp.count_ops(rate) < 40 else ()
                 result.append(Sentence((f"The cord {self.name} does not stretch{slip}, so the rates at which its runs "
                                         "lengthen add up to zero", *math, ".")))
+        return result
 
     def windings(self, coords, sample) -> list[str]:
         """How the cord goes round each circle its file names a `side:` of, in words: the sense that
@@ -471,6 +472,7 @@ def _where(a: Attachment, first: bool) -> str:
     if a.body is None:
         return "around a smooth peg"
     return f"around the {a.body}" + ("" if a.grips else ", sliding over it")
+
 
 #: The eighths of a circle, counter-clockwise from its right, as a figure's reader names them.
 OCTANTS = ("right", "upper right", "top", "upper left", "left", "lower left", "bottom", "lower right")
