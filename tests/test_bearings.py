@@ -43,8 +43,8 @@ def test_a_wrong_route_is_caught(monkeypatch):
     problem = load("rigid_body_L")
     right = bearings.motion
 
-    def wrong(tensor, rate, tilt, roll, axis, route):
-        found = right(tensor, rate, tilt, roll, axis, route)
+    def wrong(tensor, rate, tilt, roll, axis, route, *args):
+        found = right(tensor, rate, tilt, roll, axis, route, *args)
         return {**found, "torque": found["torque"] * (2 if route == "lagrange" else 1)}  # sympy's sign, say
 
     monkeypatch.setattr(bearings, "motion", wrong)

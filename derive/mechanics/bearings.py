@@ -72,9 +72,9 @@ def _by_moments(torque: sp.Matrix, force: sp.Matrix, center: sp.Matrix, apart, t
     across the shaft has a moment about it, so F_A = (M_B / apart) x z, F_B = -(M_A / apart) x z;
     what is left about the shaft is the drive's couple. The thrust bearing takes the force along it."""
     z = sp.Matrix([0, 0, 1])
-    about = {end: torque + (center - sign * apart / 2 * z).cross(force) for end, sign in (("A", 1), ("B", -1))}
-    found = {"drive": about["B"][2]}
+    found = {"drive": (torque + center.cross(force))[2]}  # the same about every point of the shaft
     if apart is not None:
+        about = {end: torque + (center - sign * apart / 2 * z).cross(force) for end, sign in (("A", 1), ("B", -1))}
         across = {"A": about["B"].cross(z) / apart, "B": -about["A"].cross(z) / apart}
         for end in "AB":
             found[f"bearing.{end}"] = across[end] + (force[2] * z if thrust == end else sp.zeros(3, 1))
