@@ -634,7 +634,7 @@ def _incline(reader: Reader, raw: dict, field: str, weighed: bool) -> tuple[sp.E
     if not level and "thrust" not in raw:
         raise reader.fail(f"{field}.thrust", "the weight's part along an inclined shaft is shared between the "
                                              "bearings in no way statics decides: name the thrust bearing, A "
-                                             "(up the shaft) or B")
+                                             "(at the shaft's +z end, uphill for a positive incline) or B")
     return incline, raw.get("thrust")
 
 

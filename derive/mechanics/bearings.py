@@ -1,4 +1,4 @@
-"""A rigid body turning at a constant rate about a fixed axis through its center of mass, held
+"""A rigid body turning at a constant rate about a fixed axis, through its center of mass or not, held
 by bearings (notes §3.5: L = I·ω need not lie along ω, and the bearings must turn it).
 
 The shaft is the z axis of the ground frame N. The body's own axis (a rod's length, a
@@ -19,6 +19,17 @@ instant the own axis lies in N's xz plane. Three routes, by sympy.physics.mechan
 >>> rod = body_tensor("rod", m, {"length": l})
 >>> motion(rod, w, a, 0, "x", "newton_euler")["torque"][1]
 -L**2*m*omega**2*sin(2*alpha)/24
+
+A shaft through a point of the body off its center of mass (`through`, in the body's own frame)
+must also give the center its centripetal acceleration, F = m a_cm, and under gravity hold the
+weight; the bearings, `apart` either side of that point, share both by the statics of the shaft
+(Newton–Euler: moments about each bearing; Lagrange: the shaft point's coordinates held too, their
+multipliers the force). A disk on a level shaft through a point e from its center:
+
+>>> e, g, d = sp.symbols("e g d", positive=True)
+>>> found = motion(body_tensor("disk", m, {"radius": l}), w, 0, 0, "z", "lagrange", m, (e, 0, 0), (0, -g, 0), d)
+>>> found["force"].T, found["bearing.A"].T, found["drive"]
+(Matrix([[e*m*omega**2, g*m, 0]]), Matrix([[e*m*omega**2/2, g*m/2, 0]]), -e*g*m)
 """
 from __future__ import annotations
 
@@ -120,10 +131,8 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
         acceleration = center.a2pt_theory(origin, ground, body_frame)
         momentum, torque, acceleration, position = (_column(ground, v).subs(now) for v in (
             momentum, momentum.dt(ground), acceleration, center.pos_from(origin)))
-        force = mass * acceleration - weight  # the supports' force and the weight give m a_cm
         energy = body.kinetic_energy(ground).subs(now)
-        position, force, torque = (c.applyfunc(tidy) for c in (position, force, torque))
-        split = _by_moments(torque, force, position, apart, thrust)
+        force = mass * acceleration - weight  # the supports' force and the weight give m a_cm
     else:
         q = me.dynamicsymbols("q1:4")
         s = me.dynamicsymbols("s1:4")  # where the shaft's point is
@@ -146,16 +155,19 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
         momenta = sp.Matrix([lagrangian.diff(c.diff(t)) for c in coordinates]).subs(now)
         omega = body_frame.ang_vel_in(ground)
         partials = sp.Matrix([[omega.diff(c.diff(t), ground).dot(e) for e in ground] for c in q]).subs(now)
-        position = _column(ground, center.pos_from(point)).subs(now).applyfunc(tidy)
-        force = generalized[3:, 0].applyfunc(tidy)  # along the shaft point's partial velocities, N's axes
-        moment = partials.solve(generalized[:3, 0]).applyfunc(tidy)  # the supports' about the shaft's point
+        position = _column(ground, center.pos_from(point)).subs(now)
         momentum = partials.solve(momenta[:3, 0]) - position.cross(momenta[3:, 0])  # about P, less m r x v
+        force = generalized[3:, 0]  # along the shaft point's partial velocities, N's axes
+        moment = partials.solve(generalized[:3, 0])  # the supports' about the shaft's point
         torque = moment - position.cross(force)
         energy = sum(p * c.diff(t) for p, c in zip(momenta, coordinates)).subs(now) / 2  # T is quadratic
-        split = _by_halves(moment, force, apart, thrust)
+    # tidied in this order, L and the torque first: sympy's caches make the later forms depend on it
     momentum, torque = (c.applyfunc(tidy) for c in (momentum, torque))
+    energy, force, position = tidy(energy), force.applyfunc(tidy), position.applyfunc(tidy)
+    split = (_by_moments(torque, force, position, apart, thrust) if route == "newton_euler"
+             else _by_halves(moment.applyfunc(tidy), force, apart, thrust))
     split = {k: v.applyfunc(tidy) if isinstance(v, sp.MatrixBase) else tidy(v) for k, v in split.items()}
-    return {"angular_momentum": momentum, "torque": torque, "kinetic_energy": tidy(energy), "force": force, **split}
+    return {"angular_momentum": momentum, "torque": torque, "kinetic_energy": energy, "force": force, **split}
 
 
 @lru_cache(maxsize=None)
