@@ -68,6 +68,19 @@ def _mounted(frame: me.ReferenceFrame, tilt, roll, axis: str) -> me.ReferenceFra
     return tilted.orientnew("B", "Axis", [roll, getattr(tilted, axis)])
 
 
+def center_offset(tilt, roll, axis: str, through) -> sp.Matrix:
+    """Where the center of mass is from the shaft's point `through` (in the body's own frame), in N
+    at the instant the own axis lies in N's xz plane.
+
+    >>> e = sp.Symbol("e", positive=True)
+    >>> center_offset(sp.pi / 2, 0, "x", (e, 0, 0)).T
+    Matrix([[-e, 0, 0]])
+    """
+    ground = me.ReferenceFrame("N")
+    body_frame = _mounted(ground, tilt, roll, axis)
+    return -_column(ground, sum((c * e for c, e in zip(through, body_frame)), me.Vector(0)))
+
+
 def _dyadic(frame: me.ReferenceFrame, tensor: sp.Matrix) -> me.Dyadic:
     return me.inertia(frame, tensor[0, 0], tensor[1, 1], tensor[2, 2], tensor[0, 1], tensor[1, 2], tensor[0, 2])
 
