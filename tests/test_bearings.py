@@ -9,7 +9,7 @@ import sympy as sp
 from sympy.physics.vector import ReferenceFrame
 
 from conftest import refused, write_problem
-from derive import inertia, report
+from derive import export, figure, inertia, render, report
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.mechanics import bearings
@@ -201,3 +201,22 @@ def test_a_planar_problem_builds_no_3d_frames(monkeypatch):
     assert all(c["passed"] for c in result["checks"].values())
     with pytest.raises(AssertionError, match="3D frame"):  # the guard itself works
         report.solve(load("rigid_body_L"))
+
+
+def test_the_figure_shows_the_bearings_the_weight_and_the_center_off_the_shaft(tmp_path):
+    """Under gravity the shaft is drawn level with the weight, (M + m) g, below the center; the
+    bearings A and B sit on the shaft; a center of mass off the shaft is joined to it by a dashed
+    line; every figure compiles."""
+    rotor = figure.tikz(load(TEXTBOOK / "rotor_static_imbalance.yaml"))
+    assert "\\draw[axis, ->] (-2,0) -- (2.2,0);" in rotor and "$\\left(M + m\\right)\\,g$" in rotor
+    assert "{$A$}" in rotor and "{$B$}" in rotor
+    offset = load(write_problem(tmp_path, ROD.replace("BEARINGS", "bearings: {rate: omega, tilt: alpha, apart: L, "
+                                                                  "through: [L/4, 0, 0]}")
+                                .replace("ASK", "rod.bearings.A.force.x").replace("UNIT", "N")))
+    drawn = figure.tikz(offset)
+    assert "\\draw[thin, dashed] (0,0) -- " in drawn and "\\vec L" in drawn and "[force]" not in drawn
+    assert "{$0$}" not in figure.tikz(load(TEXTBOOK / "shaft_dynamic_imbalance.yaml"))  # no tilt, no angle
+    tex = tmp_path / "figures.tex"
+    tex.write_text(render.render("preamble.tex.j2") + "\\begin{document}\n" + "\n\n".join((rotor, drawn))
+                   + "\n\\end{document}\n", encoding="utf-8")
+    assert export.pdf(tex).exists()

@@ -178,7 +178,8 @@ def _bearings(fig: _Figure) -> None:
         return
     direction = 90 - math.degrees(tilt)
     fig.body(body, cm, 1.6, direction)
-    fig.arc(cm, 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
+    if rotation.tilt != 0:
+        fig.arc(cm, 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
     if body.shape == "rod":  # a thin rod's L is normal to it, in the plane of the rod and the axis
         fig.arrow(cm, _unit(direction + 90), "very thick, ->, green!40!black", r"$\vec L$")
 
