@@ -162,26 +162,26 @@ def _bearings(fig: _Figure) -> None:
     fig.add(f"\\draw[->, thick{rotated}] {_pt((1.75 * shaft[0] + 0.35, 1.75 * shaft[1]))} "
             "arc[start angle=0, end angle=300, x radius=0.35, y radius=0.1];")
     fig.label(_add(_add((0, 0), shaft, 1.8), across, 0.45), across, fig.m(rotation.rate))
-    if rotation.apart is not None:
-        half = _clamp(fig.num(rotation.apart, 1.0) * scale / 2, 1.0, 1.5)  # inside the rate's arrow
-        for label, sign in (("A", 1), ("B", -1)):
-            at = _add((0, 0), shaft, sign * half)
-            fig.add(f"\\fill[gray!60, rotate around={{{_f(turn)}:{_pt(at)}}}] "
-                    f"{_pt(_add(at, (-0.12, -0.2)))} rectangle {_pt(_add(at, (0.12, 0.2)))};")
-            fig.label(_add(at, across, -0.25), tuple(-c for c in across), f"${label}$")
     if side != 0 or along != 0:
         fig.line((0, 0), cm, "thin, dashed")
         fig.dot((0, 0), 0.05)
     if weighed:  # seen from the side: the own axis leans toward the reader
         fig.body(body, cm, 0.9, turn)
         fig.gravity_arrow(cm, body)
-        return
-    direction = 90 - math.degrees(tilt)
-    fig.body(body, cm, 1.6, direction)
-    if rotation.tilt != 0:
-        fig.arc(cm, 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
-    if body.shape == "rod":  # a thin rod's L is normal to it, in the plane of the rod and the axis
-        fig.arrow(cm, _unit(direction + 90), "very thick, ->, green!40!black", r"$\vec L$")
+    else:
+        direction = 90 - math.degrees(tilt)
+        fig.body(body, cm, 1.6, direction)
+        if rotation.tilt != 0:
+            fig.arc(cm, 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
+        if body.shape == "rod":  # a thin rod's L is normal to it, in the plane of the rod and the axis
+            fig.arrow(cm, _unit(direction + 90), "very thick, ->, green!40!black", r"$\vec L$")
+    if rotation.apart is not None:  # over the body, inside the rate's arrow
+        half = _clamp(fig.num(rotation.apart, 1.0) * scale / 2, 1.0, 1.5)
+        for label, sign in (("A", 1), ("B", -1)):
+            at = _add((0, 0), shaft, sign * half)
+            fig.add(f"\\fill[gray!60, draw=black, rotate around={{{_f(turn)}:{_pt(at)}}}] "
+                    f"{_pt(_add(at, (-0.12, -0.2)))} rectangle {_pt(_add(at, (0.12, 0.2)))};")
+            fig.label(_add(at, across, -0.25), tuple(-c for c in across), f"${label}$")
 
 
 def _free_rotation(fig: _Figure) -> None:

@@ -78,7 +78,7 @@ def center_offset(tilt, roll, axis: str, through) -> sp.Matrix:
     """
     ground = me.ReferenceFrame("N")
     body_frame = _mounted(ground, tilt, roll, axis)
-    return -_column(ground, sum((c * e for c, e in zip(through, body_frame)), me.Vector(0)))
+    return -_column(ground, _along(body_frame, through))
 
 
 def _dyadic(frame: me.ReferenceFrame, tensor: sp.Matrix) -> me.Dyadic:
@@ -86,7 +86,13 @@ def _dyadic(frame: me.ReferenceFrame, tensor: sp.Matrix) -> me.Dyadic:
 
 
 def _column(frame: me.ReferenceFrame, vector: me.Vector) -> sp.Matrix:
+    """A vector's components along a frame's axes."""
     return sp.Matrix([vector.dot(e) for e in frame])
+
+
+def _along(frame: me.ReferenceFrame, components) -> me.Vector:
+    """The vector of these components along a frame's axes."""
+    return sum((c * e for c, e in zip(components, frame)), me.Vector(0))
 
 
 def _by_moments(torque: sp.Matrix, force: sp.Matrix, center: sp.Matrix, apart, thrust) -> dict:
@@ -136,7 +142,7 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
     if route == "newton_euler":
         phi = me.dynamicsymbols("phi")
         body_frame = _mounted(ground.orientnew("S", "Axis", [phi, ground.z]), tilt, roll, axis)
-        center = origin.locatenew("C", -sum((c * e for c, e in zip(through, body_frame)), me.Vector(0)))
+        center = origin.locatenew("C", -_along(body_frame, through))
         center.v2pt_theory(origin, ground, body_frame)
         body = me.RigidBody("body", center, body_frame, mass, (_dyadic(body_frame, tensor), center))
         now = {phi.diff(t, 2): 0, phi.diff(t): rate, phi: 0}
@@ -151,8 +157,8 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
         s = me.dynamicsymbols("s1:4")  # where the shaft's point is
         free = ground.orientnew("A", "Body", [q[2], q[1], q[0]], "ZYX")
         body_frame = _mounted(free, tilt, roll, axis)
-        point = origin.locatenew("P", sum((c * e for c, e in zip(s, ground)), me.Vector(0)))
-        center = point.locatenew("C", -sum((c * e for c, e in zip(through, body_frame)), me.Vector(0)))
+        point = origin.locatenew("P", _along(ground, s))
+        center = point.locatenew("C", -_along(body_frame, through))
         center.set_vel(ground, center.pos_from(origin).dt(ground))
         body = me.RigidBody("body", center, body_frame, mass, (_dyadic(body_frame, tensor), center))
         body.potential_energy = -sp.Matrix(gravity).dot(_column(ground, center.pos_from(origin))) * mass
@@ -190,7 +196,7 @@ def angular_momentum_by_integral(shape: str, mass, sizes: tuple, rate, tilt, rol
     mapping = {generic: dict(sizes)[name] for name, generic in shape_data.sizes.items()}
     ground = me.ReferenceFrame("N")
     body_frame = _mounted(ground, tilt, roll, own_axis(shape))
-    element = sum((c * e for c, e in zip(sp.Matrix(shape_data.position).xreplace(mapping), body_frame)), me.Vector(0))
+    element = _along(body_frame, sp.Matrix(shape_data.position).xreplace(mapping))
     position = element.to_matrix(ground)
     omega = sp.Matrix([0, 0, rate])
     limits = [(c, sp.sympify(lo).xreplace(mapping), sp.sympify(hi).xreplace(mapping))  # safe: the module's own limits
