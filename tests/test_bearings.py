@@ -164,6 +164,10 @@ question: A rod spins.
      "ask.x"),  # the weight makes the bearings' forces differ: ask each
     ("bearings: {rate: omega, tilt: alpha, apart: L, through: [L, 0, 0]}", "rod.bearings.force", "N", "ask.x"),
     ("bearings: {rate: omega, tilt: alpha, through: [L, 0, 0]}", "rod.bearings.A.force.x", "N", "ask.x"),  # no apart
+    ("bearings: {rate: omega, tilt: alpha, apart: L}", "rod.angle_L_omega", "rad",
+     "scene.bodies.rod.bearings.apart"),  # a key nothing uses
+    ("bearings: {rate: omega, tilt: alpha, through: [L, 0, 0]}", "rod.bearings.torque.y", "N*m",
+     "scene.bodies.rod.bearings.through"),  # the torque about the center does not depend on it
     ("bearings: {rate: omega, tilt: alpha, through: [L, 0]}", "rod.angle_L_omega", "rad",
      "scene.bodies.rod.bearings.through"),
     ("bearings: {rate: omega, tilt: alpha, through: hub}", "rod.angle_L_omega", "rad",
