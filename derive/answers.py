@@ -460,7 +460,10 @@ class Solution(StateAnswers, CrossChecks):
         body, held = self.scene.bodies[name], self.scene.bearings[name]
         parts = body.composite.parts if body.composite is not None else None
         tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        return bearings.motion(tensor, held.rate, held.tilt, held.roll, bearings.own_axis(body.shape), route)
+        g = self.scene.gravity.g if self.scene.gravity is not None else sp.Integer(0)
+        gravity = (sp.Integer(0), -g * sp.cos(held.incline), -g * sp.sin(held.incline))  # the shaft is N.z
+        return bearings.motion(tensor, held.rate, held.tilt, held.roll, bearings.own_axis(body.shape), route,
+                               body.mass, held.through, gravity, held.apart, held.thrust)
 
     def _bearings(self, q: Quantity, route: str) -> sp.Expr:
         held = self.scene.bearings[q.target]

@@ -434,9 +434,10 @@ class CrossChecks:
                      "its rate.")
 
     def _bearings_checks(self) -> list[Check]:
-        """For every body in bearings, Newton–Euler's and Lagrange's L, bearing torque and kinetic
-        energy agree component by component, and each asked quantity by both; a uniform shape's L
-        again by integrating r x (omega x r) dm."""
+        """For every body in bearings, Newton–Euler's and Lagrange's L, bearing torque, kinetic
+        energy, the supports' force, the drive's couple and each bearing's force agree component by
+        component, and each asked quantity by both; a uniform shape's L again by integrating
+        r x (omega x r) dm."""
         integrated, methods = [], set()
 
         def differ(a, b) -> bool:
@@ -445,7 +446,7 @@ class CrossChecks:
 
         for name, held in self.scene.bearings.items():
             found = {route: self.bearing_motion(name, route) for route in bearings.ROUTES}
-            for key in ("angular_momentum", "torque", "kinetic_energy"):
+            for key in found["newton_euler"]:  # L, the torque, T, the supports' force, the drive, each bearing's
                 pairs = zip(*(sp.Matrix([found[r][key]]) for r in bearings.ROUTES))
                 if any(differ(a, b) for a, b in pairs):
                     raise CheckFailure(f"{self.problem.id}: the {name}'s {key.replace('_', ' ')} is "
@@ -464,9 +465,10 @@ class CrossChecks:
                 raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {ask_name}")
         method = " or ".join(m for m in METHODS if m in methods)
         result = [Check("lagrange_vs_newton_euler", True, method,
-                        "angular momentum, bearing torque and kinetic energy agree, every component",
-                        "Lagrange's method, with the bearings' torques as multipliers, and dL/dt = torque give the "
-                        "same angular momentum, bearing torque and kinetic energy.")]
+                        "angular momentum, bearing torque, kinetic energy and the bearings' forces agree, every "
+                        "component",
+                        "Lagrange's method, with the bearings' forces and torques as multipliers, and dL/dt = torque "
+                        "with F = m a_cm give the same angular momentum, bearing torque, kinetic energy and forces.")]
         if integrated:
             result.append(Check("angular_momentum_by_integral", True, method,
                                 f"L of {', '.join(integrated)} agrees, every component",

@@ -260,7 +260,29 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
     for name, ask in result.items():
         if ask.exact is not None and (ask.exact not in result or ask.exact == name):
             raise reader.fail(f"ask.{name}.exact", f"expected another ask of this problem (asks: {', '.join(result)})")
+    _bearings_used(reader, scene, result)
     return result
+
+
+#: What each optional key of `bearings:` changes (derive.mechanics.bearings), by the asks' prefixes:
+#: the bearings' distance each one's force; the shaft's point off the center of mass the center's
+#: motion, so the bearings' forces, the drive's couple and the kinetic energy (not L or the torque
+#: about the center).
+BEARING_KEY_ASKS = {
+    "apart": (("bearings.force", "bearings.A.", "bearings.B."), "each bearing's force"),
+    "through": (("bearings.A.", "bearings.B.", "bearings.total_force.", "bearings.drive_torque", "kinetic_energy"),
+                "the bearings' forces, the drive's couple and the kinetic energy"),
+}
+
+
+def _bearings_used(reader: Reader, scene: Scene, asks: dict[str, Ask]) -> None:
+    """Refuse a body's `bearings: {apart, through}` that no ask needs (a key nothing uses)."""
+    for body, held in scene.bearings.items():
+        asked = [a.quantity.detail for a in asks.values() if a.quantity.kind == "bearings" and a.quantity.target == body]
+        for key, (needs, what) in BEARING_KEY_ASKS.items():
+            given = held.apart is not None if key == "apart" else any(c != 0 for c in held.through)
+            if given and not any(detail.startswith(needs) for detail in asked):
+                raise reader.fail(f"scene.bodies.{body}.bearings.{key}", f"no ask uses it: it changes only {what}")
 
 
 def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, path: str) -> str | None:

@@ -156,14 +156,20 @@ class StandingWave:
 
 @dataclass(frozen=True)
 class Bearings:
-    """A body turning at the constant `rate` about a fixed shaft through its center of mass, its own
-    axis (derive.mechanics.bearings.own_axis) tilted by `tilt` from the shaft, the body turned by
-    `roll` about that axis; `apart` is the distance between the two bearings (None: not given)."""
+    """A body turning at the constant `rate` about a fixed shaft, its own axis
+    (derive.mechanics.bearings.own_axis) tilted by `tilt` from the shaft, the body turned by `roll`
+    about that axis; the shaft passes through the body's point `through` (x, y, z from the center of
+    mass in the body's own frame); `apart` is the distance between the two bearings, either side of
+    that point (None: not given); `incline`, the shaft's angle above the horizontal under gravity;
+    `thrust`, the bearing ("A" or "B") that takes the weight's part along an inclined shaft."""
 
     rate: sp.Expr
     tilt: sp.Expr
     roll: sp.Expr = sp.Integer(0)
     apart: sp.Expr | None = None
+    through: tuple[sp.Expr, sp.Expr, sp.Expr] = (sp.Integer(0),) * 3
+    incline: sp.Expr = sp.Integer(0)
+    thrust: str | None = None
 
 
 @dataclass(frozen=True)
@@ -228,10 +234,13 @@ SYSTEMS = {
     "standing_wave": ("wave", ("momentum", "angular_momentum")),
     "internal_forces": ("internal_forces", ("torque",)),
 }
-#: What a body in bearings can be asked (derive.mechanics.bearings); bearings.force needs `apart`.
+#: What a body in bearings can be asked (derive.mechanics.bearings); each bearing's force needs
+#: `apart`, and `bearings.force` (the pair's couple) a shaft with no net force on it.
 BEARING_QUANTITIES = ("angular_momentum.x", "angular_momentum.y", "angular_momentum.z", "angular_momentum.magnitude",
                       "angle_L_omega", "kinetic_energy", "bearings.torque.x", "bearings.torque.y",
-                      "bearings.torque.z", "bearings.torque.magnitude", "bearings.force")
+                      "bearings.torque.z", "bearings.torque.magnitude", "bearings.force",
+                      *(f"bearings.{v}.{c}" for v in ("total_force", "A.force", "B.force")
+                        for c in ("x", "y", "z", "magnitude")), "bearings.drive_torque")
 
 
 def constraint_bodies(part: Part) -> tuple[str, ...]:
@@ -427,11 +436,15 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if rest not in BEARING_QUANTITIES:
             raise ValueError(f"a body in bearings has {', '.join(BEARING_QUANTITIES)}, mass and inertia"
                              + did_you_mean(rest, BEARING_QUANTITIES))
-        if rest == "bearings.force" and scene.bearings[head].apart is None:
-            raise ValueError(f"{head}.bearings.force needs the distance between the bearings: bearings: {{apart: d}}")
-        if rest.startswith("bearings.") and scene.parts:
-            raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body alone: a scene with loads or "
-                             "joints (gravity's share of the bearings' forces) is not modelled")
+        held = scene.bearings[head]
+        if rest.startswith(("bearings.force", "bearings.A.", "bearings.B.")) and held.apart is None:
+            raise ValueError(f"{head}.{rest} needs the distance between the bearings: bearings: {{apart: d}}")
+        if rest == "bearings.force" and (scene.gravity is not None or any(c != 0 for c in held.through)):
+            raise ValueError(f"{head}.bearings.force is each bearing's force of a couple: where the weight or an "
+                             "offset shaft puts a net force on them, ask bearings.A.force and bearings.B.force")
+        if rest.startswith("bearings.") and (scene.constraints or scene.loads):
+            raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body under its weight alone: a "
+                             "scene with other loads or joints is not modelled")
         return Quantity("bearings", head, rest)
     if head == "spinning_wheel":
         if scene.wheel is None or rest not in WHEEL_QUANTITIES:

@@ -547,8 +547,8 @@ def read_scene(reader: Reader, raw) -> Scene:
     if pivoted and (gravity_part is None or len(bodies) > 1 or constraints or loads):
         raise reader.fail("scene.loads" if gravity_part is None else "scene", "a body on a fixed point turns under "
                           "gravity alone: one body, - gravity: g, no other loads, joints or cords")
-    held = {n: _bearings(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
-            if "bearings" in spec}
+    held = {n: _bearings(reader, spec, f"scene.bodies.{n}", bodies[n], gravity_part is not None)
+            for n, spec in bodies_raw.items() if "bearings" in spec}
     if rolling and (gravity_part is None or len(bodies) > 1 or constraints or loads or surfaces):
         raise reader.fail("scene.loads" if gravity_part is None else "scene.surfaces" if surfaces else "scene",
                           "a body rolling on its edge rolls on the horizontal plane its key stands for, under gravity "
@@ -593,10 +593,13 @@ def _at_range_ends(reader: Reader, value: sp.Expr) -> list[sp.Expr]:
     return [value.xreplace(c) for c in corners]
 
 
-def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
-    """`bearings: {rate: omega, tilt: alpha, roll: psi, apart: d}`: the body turns at a constant rate
-    about a fixed shaft through its center of mass (derive.mechanics.bearings), a uniform shape of
-    the inertia module or a composite of them, held by nothing else."""
+def _bearings(reader: Reader, spec: dict, field: str, body: Body, weighed: bool) -> Bearings:
+    """`bearings: {rate: omega, tilt: alpha, roll: psi, apart: d, through: [e, 0, 0]}`: the body
+    turns at a constant rate about a fixed shaft (derive.mechanics.bearings) through its point
+    `through` (a named point, or [x, y, z] from the center of mass in the body's own frame; the
+    center of mass unless given), a uniform shape of the inertia module or a composite of them,
+    held by nothing else. Under gravity (`weighed`) the shaft is horizontal, or inclined by
+    `incline` with a `thrust` bearing (A, up the shaft, or B) taking the weight along it."""
     field_here = f"{field}.bearings"
     if body.shape in ("point", "custom") or body.density is not None:
         raise reader.fail(field_here, "a body in bearings is a uniform shape of derive inertia (not a point or a "
@@ -604,15 +607,57 @@ def _bearings(reader: Reader, spec: dict, field: str, body: Body) -> Bearings:
     other = next((k for k in ("joint", "on", "path", "velocity") if k in spec), None)
     if other:
         raise reader.fail(f"{field}.{other}", "a body in bearings is held by its shaft alone")
-    raw = reader.mapping(spec["bearings"], field_here, required=("rate", "tilt"), optional=("roll", "apart"))
+    raw = reader.mapping(spec["bearings"], field_here, required=("rate", "tilt"),
+                         optional=("roll", "apart", "through", "incline", "thrust"))
     tilt = reader.dimensioned(raw["tilt"], f"{field_here}.tilt", "rad", "a tilt")
     if not all(v.is_number and 0 <= v <= sp.pi for v in _at_range_ends(reader, tilt)):
         raise reader.fail(f"{field_here}.tilt", "the tilt from the shaft is between 0 and pi (turn the body by "
                                                 "roll: for the rest)")
+    through = _through(reader, raw.get("through"), f"{field_here}.through", body)
+    incline, thrust = _incline(reader, raw, field_here, weighed)
     return Bearings(reader.positive(raw["rate"], f"{field_here}.rate", "rad/s", "a rotation rate"), tilt,
                     reader.dimensioned(raw.get("roll", 0), f"{field_here}.roll", "rad", "an angle"),
                     reader.positive(raw["apart"], f"{field_here}.apart", "m", "a distance")
-                    if "apart" in raw else None)
+                    if "apart" in raw else None, through, incline, thrust)
+
+
+def _through(reader: Reader, raw, field: str, body: Body) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """The point of a body in bearings its shaft passes through, from its center of mass in its own
+    frame: a named point (`_named_points`) or [x, y, z] in metres; the center of mass if None."""
+    named = _named_points(body)
+    if raw is None:
+        return (sp.Integer(0),) * 3
+    if isinstance(raw, str) and raw in named:
+        return named[raw]
+    if not isinstance(raw, list) or len(raw) != 3:
+        raise reader.fail(field, "a point of the body: [x, y, z] from its center of mass in its own frame"
+                                 + (f", or {', '.join(named)}" if named else ""))
+    return tuple(reader.dimensioned(c, f"{field}[{i}]", "m", "a distance") for i, c in enumerate(raw))
+
+
+def _incline(reader: Reader, raw: dict, field: str, weighed: bool) -> tuple[sp.Expr, str | None]:
+    """(the shaft's angle above the horizontal, the thrust bearing) of a body in bearings: both only
+    under gravity, a thrust bearing exactly where the weight has a part along an inclined shaft
+    (else the bearings' shares of it along the shaft are not determined)."""
+    if not weighed:
+        unused = next((k for k in ("incline", "thrust") if k in raw), None)
+        if unused:
+            raise reader.fail(f"{field}.{unused}", "only a shaft under gravity (- gravity: g) has an incline or a "
+                                                   "thrust bearing")
+        return sp.Integer(0), None
+    incline = reader.dimensioned(raw.get("incline", 0), f"{field}.incline", "rad", "an angle")
+    ends = _at_range_ends(reader, incline)
+    if not all(v.is_number and -sp.pi / 2 <= v <= sp.pi / 2 for v in ends):
+        raise reader.fail(f"{field}.incline", "the shaft's angle above the horizontal is between -pi/2 and pi/2")
+    level = all(v == 0 for v in ends)
+    if "thrust" in raw and (level or raw["thrust"] not in ("A", "B")):
+        raise reader.fail(f"{field}.thrust", "A or B, the bearing that takes the weight along an inclined shaft"
+                          if not level else "a level shaft carries no weight along it: leave thrust out")
+    if not level and "thrust" not in raw:
+        raise reader.fail(f"{field}.thrust", "the weight's part along an inclined shaft is shared between the "
+                                             "bearings in no way statics decides: name the thrust bearing, A "
+                                             "(at the shaft's +z end, uphill for a positive incline) or B")
+    return incline, raw.get("thrust")
 
 
 #: The thin axially symmetric shapes that roll on their rim, and the size that is the rim's radius.
@@ -678,6 +723,17 @@ def _axial_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.
     return transverse, axial
 
 
+def _named_points(body: Body) -> dict[str, tuple[sp.Expr, sp.Expr, sp.Expr]]:
+    """A 3D body's named points from its center of mass in its own frame: a cone's `tip`, a rod's
+    `end` (on its negative side), a composite's points (derive.composite); the offsets are the
+    engine's own expressions (a file only picks one)."""
+    zero = sp.Integer(0)
+    if body.composite is not None:
+        return {n: (*p, zero) for n, p in body.composite.points().items() if n != "center"}
+    return {"cone": {"tip": (zero, zero, 3 * body.sizes.get("height", zero) / 4)},
+            "rod": {"end": (-body.sizes.get("length", zero) / 2, zero, zero)}}.get(body.shape, {})
+
+
 def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoint:
     """`pivot_point: {at: tip, tilt: theta, spin: omega}`: the body turns about a fixed point under
     gravity (derive.mechanics.fixed_point); a tilt or spin left out is open (the asks that need it
@@ -694,11 +750,7 @@ def _pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoi
     raw = reader.mapping(spec["pivot_point"], here, required=("at",), optional=("tilt", "spin"))
     at = raw["at"]
     axis = own_axis(body.shape)
-    zero = sp.Integer(0)  # the named points' offsets are the engine's own expressions (`at` only picks one)
-    named = {"cone": {"tip": (zero, zero, 3 * body.sizes.get("height", zero) / 4)},
-             "rod": {"end": (-body.sizes.get("length", zero) / 2, zero, zero)}}.get(body.shape, {})
-    if body.composite is not None:
-        named = {n: (*p, zero) for n, p in body.composite.points().items() if n != "center"}
+    named = _named_points(body)
     if isinstance(at, str) and at in named:
         offset = named[at]
     else:

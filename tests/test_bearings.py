@@ -1,18 +1,22 @@
 """A body turning in bearings (derive.mechanics.bearings): Newton–Euler, Lagrange and the integral
-agree on every component for every shape; a wrong route is caught; what is not modelled is
-refused; a planar problem never builds a 3D frame."""
+agree on every component for every shape; a shaft off the center of mass and the weight load the
+bearings as kinematics and statics say; a wrong route is caught; what is not modelled is refused;
+a planar problem never builds a 3D frame."""
+from pathlib import Path
+
 import pytest
 import sympy as sp
 from sympy.physics.vector import ReferenceFrame
 
-from conftest import refused
-from derive import inertia, report
+from conftest import refused, write_problem
+from derive import export, figure, inertia, render, report
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.mechanics import bearings
 from derive.problem import load
 
-m, w, a, psi, s = sp.symbols("m omega alpha psi s", positive=True)
+m, w, a, psi, s, e, d, g = sp.symbols("m omega alpha psi s e d g", positive=True)
+TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 #: Sizes in proportion, so that no shape is accidentally symmetric (a box of three sides, a cone).
 SIZES = {"length": s, "radius": s, "height": 3 * s, "inner_radius": s, "outer_radius": 2 * s,
          "side_a": s, "side_b": 2 * s, "side_c": 3 * s}
@@ -39,12 +43,93 @@ def test_a_symmetric_body_on_its_axis_needs_no_torque():
     assert found["torque"] == sp.zeros(3, 1) and found["angular_momentum"] == sp.Matrix([0, 0, m * s**2 * w / 2])
 
 
+def _turned(tilt, roll) -> sp.Matrix:
+    """The body's own frame in the ground's, by hand: turned by `roll` about its own z, then its z
+    tilted toward +x by `tilt` (active rotations about y, then z)."""
+    tilted = sp.Matrix([[sp.cos(tilt), 0, sp.sin(tilt)], [0, 1, 0], [-sp.sin(tilt), 0, sp.cos(tilt)]])
+    return tilted * sp.Matrix([[sp.cos(roll), -sp.sin(roll), 0], [sp.sin(roll), sp.cos(roll), 0], [0, 0, 1]])
+
+
+def test_an_offset_shaft_under_gravity_loads_the_bearings_as_statics_says():
+    """A box turned by roll and tilted on a level shaft that misses its center of mass: both routes
+    agree on every force; the supports' force is m a_cm less the weight, a_cm the center's
+    centripetal acceleration found by hand; the bearings' forces add up to it and, with the
+    drive's couple, give the torque dL/dt about the center of mass (Hibbeler ch. 21)."""
+    tensor = bearings.body_tensor("box", m, {"side_a": s, "side_b": 2 * s, "side_c": 3 * s})
+    through, gravity = (e, 0, s), (0, -g, 0)
+    found = [bearings.motion(tensor, w, a, psi, "z", r, m, through, gravity, d, None) for r in bearings.ROUTES]
+    for key in found[0]:
+        assert sp.simplify(sp.Matrix([found[0][key] - found[1][key]])).is_zero_matrix, key
+    found = found[0]
+    center = -_turned(a, psi) * sp.Matrix(through)
+    shaft = sp.Matrix([0, 0, w])
+    assert sp.simplify(found["force"] - m * shaft.cross(shaft.cross(center)) + m * sp.Matrix(gravity)) == sp.zeros(3, 1)
+    assert sp.simplify(found["bearing.A"] + found["bearing.B"] - found["force"]) == sp.zeros(3, 1)
+    z = sp.Matrix([0, 0, 1])
+    moment = ((d / 2 * z - center).cross(found["bearing.A"]) + (-d / 2 * z - center).cross(found["bearing.B"])
+              + found["drive"] * z)
+    assert sp.simplify(moment - found["torque"]) == sp.zeros(3, 1)
+    assert sp.simplify(found["torque"] - shaft.cross(found["angular_momentum"])) == sp.zeros(3, 1)
+    assert found["bearing.A"][2] == found["bearing.B"][2] == 0  # a level shaft: nothing along it
+
+
+INCLINED = """id: inclined
+title: A disk on an inclined shaft
+topic: angular_momentum
+parameters:
+  M: {meaning: mass, unit: kg, range: [1, 5]}
+  R: {meaning: radius, unit: m, range: [0.1, 0.3]}
+  omega: {meaning: rate, unit: rad/s, range: [10, 100]}
+  beta: {meaning: incline of the shaft, unit: rad, range: [0.1, 1.2]}
+  d: {meaning: apart, unit: m, range: [0.2, 0.8]}
+  g: {meaning: gravity, unit: m/s^2, value: 9.81}
+scene:
+  bodies:
+    disk: {shape: disk, mass: M, radius: R, bearings: {rate: omega, tilt: 0, apart: d, incline: beta, thrust: A}}
+  loads:
+    - gravity: g
+ask:
+  Ay: {meaning: A across, of: disk.bearings.A.force.y, unit: N}
+  Az: {meaning: A along, of: disk.bearings.A.force.z, unit: N}
+  By: {meaning: B across, of: disk.bearings.B.force.y, unit: N}
+  Bz: {meaning: B along, of: disk.bearings.B.force.z, unit: N}
+  Bx: {meaning: B sideways, of: disk.bearings.B.force.x, unit: N}
+question: A disk turns on an inclined shaft.
+"""
+
+
+def test_an_inclined_shaft_puts_the_weight_along_it_on_the_thrust_bearing(tmp_path):
+    """A balanced disk midway between the bearings of a shaft inclined at beta (statics of a shaft
+    with a thrust bearing, Hibbeler ch. 21): each bearing carries M g cos(beta)/2 across the shaft
+    and the thrust bearing A the whole M g sin(beta) along it."""
+    solution = Solution(load(write_problem(tmp_path, INCLINED)))
+    big_m, beta, big_g = (solution.problem.parameters[n].symbol for n in ("M", "beta", "g"))
+    expected = {"Ay": big_m * big_g * sp.cos(beta) / 2, "By": big_m * big_g * sp.cos(beta) / 2,
+                "Az": big_m * big_g * sp.sin(beta), "Bz": 0, "Bx": 0}
+    for name, value in expected.items():
+        assert sp.simplify(solution.expression(name) - value) == 0, name
+    assert all(c.passed for c in solution.checks())
+
+
+def test_a_wrong_bearing_force_is_caught(monkeypatch):
+    problem = load(TEXTBOOK / "rotor_static_imbalance.yaml")
+    right = bearings.motion
+
+    def wrong(*args):
+        found = right(*args)
+        return {**found, "bearing.A": found["bearing.A"] * (2 if args[5] == "lagrange" else 1)}
+
+    monkeypatch.setattr(bearings, "motion", wrong)
+    with pytest.raises(CheckFailure, match="bearing.A"):
+        Solution(problem).checks()
+
+
 def test_a_wrong_route_is_caught(monkeypatch):
     problem = load("rigid_body_L")
     right = bearings.motion
 
-    def wrong(tensor, rate, tilt, roll, axis, route):
-        found = right(tensor, rate, tilt, roll, axis, route)
+    def wrong(tensor, rate, tilt, roll, axis, route, *args):
+        found = right(tensor, rate, tilt, roll, axis, route, *args)
         return {**found, "torque": found["torque"] * (2 if route == "lagrange" else 1)}  # sympy's sign, say
 
     monkeypatch.setattr(bearings, "motion", wrong)
@@ -76,7 +161,29 @@ question: A rod spins.
     ("rotation: {rate: omega, tilt: alpha}", "rod.angle_L_omega", "rad", "scene.bodies.rod"),  # retired
     ("bearings: {rate: omega, tilt: alpha}", "rod.acceleration.x", "m/s^2", "ask.x"),
     ("bearings: {rate: omega, tilt: alpha, apart: L}}\n  loads:\n    - gravity: omega**2*L\n#", "rod.bearings.force", "N",
-     "ask.x"),  # the weight's share of the bearings' forces
+     "ask.x"),  # the weight makes the bearings' forces differ: ask each
+    ("bearings: {rate: omega, tilt: alpha, apart: L, through: [L, 0, 0]}", "rod.bearings.force", "N", "ask.x"),
+    ("bearings: {rate: omega, tilt: alpha, through: [L, 0, 0]}", "rod.bearings.A.force.x", "N", "ask.x"),  # no apart
+    ("bearings: {rate: omega, tilt: alpha, apart: L}", "rod.angle_L_omega", "rad",
+     "scene.bodies.rod.bearings.apart"),  # a key nothing uses
+    ("bearings: {rate: omega, tilt: alpha, through: [L, 0, 0]}", "rod.bearings.torque.y", "N*m",
+     "scene.bodies.rod.bearings.through"),  # the torque about the center does not depend on it
+    ("bearings: {rate: omega, tilt: alpha, through: [L, 0]}", "rod.angle_L_omega", "rad",
+     "scene.bodies.rod.bearings.through"),
+    ("bearings: {rate: omega, tilt: alpha, through: hub}", "rod.angle_L_omega", "rad",
+     "scene.bodies.rod.bearings.through"),  # a rod has no hub
+    ("bearings: {rate: omega, tilt: alpha, through: [L, 0, omega]}", "rod.angle_L_omega", "rad",
+     "scene.bodies.rod.bearings.through[2]"),  # not a length
+    ("bearings: {rate: omega, tilt: alpha, incline: alpha}", "rod.angle_L_omega", "rad",
+     "scene.bodies.rod.bearings.incline"),  # no gravity
+    ("bearings: {rate: omega, tilt: alpha, apart: L, incline: alpha}}\n  loads:\n    - gravity: omega**2*L\n#",
+     "rod.bearings.A.force.x", "N", "scene.bodies.rod.bearings.thrust"),  # who takes the weight along the shaft?
+    ("bearings: {rate: omega, tilt: alpha, apart: L, thrust: A}}\n  loads:\n    - gravity: omega**2*L\n#",
+     "rod.bearings.A.force.x", "N", "scene.bodies.rod.bearings.thrust"),  # a level shaft has no thrust
+    ("bearings: {rate: omega, tilt: alpha, apart: L, incline: 2}}\n  loads:\n    - gravity: omega**2*L\n#",
+     "rod.bearings.A.force.x", "N", "scene.bodies.rod.bearings.incline"),  # past the vertical
+    ("bearings: {rate: omega, tilt: alpha, apart: L}}\n  loads:\n    - torque: {on: rod, magnitude: m*L**2*omega**2}"
+     "\n#", "rod.bearings.A.force.x", "N", "ask.x"),  # another load
 ])
 def test_what_bearings_do_not_model_is_refused(tmp_path, bearings_key, ask, unit, field):
     refused(tmp_path, ROD.replace("BEARINGS", bearings_key).replace("ASK", ask).replace("UNIT", unit), field)
@@ -98,3 +205,22 @@ def test_a_planar_problem_builds_no_3d_frames(monkeypatch):
     assert all(c["passed"] for c in result["checks"].values())
     with pytest.raises(AssertionError, match="3D frame"):  # the guard itself works
         report.solve(load("rigid_body_L"))
+
+
+def test_the_figure_shows_the_bearings_the_weight_and_the_center_off_the_shaft(tmp_path):
+    """Under gravity the shaft is drawn level with the weight, (M + m) g, below the center; the
+    bearings A and B sit on the shaft; a center of mass off the shaft is joined to it by a dashed
+    line; every figure compiles."""
+    rotor = figure.tikz(load(TEXTBOOK / "rotor_static_imbalance.yaml"))
+    assert "\\draw[axis, ->] (-2,0) -- (2.2,0);" in rotor and "$\\left(M + m\\right)\\,g$" in rotor
+    assert "{$A$}" in rotor and "{$B$}" in rotor
+    offset = load(write_problem(tmp_path, ROD.replace("BEARINGS", "bearings: {rate: omega, tilt: alpha, apart: L, "
+                                                                  "through: [L/4, 0, 0]}")
+                                .replace("ASK", "rod.bearings.A.force.x").replace("UNIT", "N")))
+    drawn = figure.tikz(offset)
+    assert "\\draw[thin, dashed] (0,0) -- " in drawn and "\\vec L" in drawn and "[force]" not in drawn
+    assert "{$0$}" not in figure.tikz(load(TEXTBOOK / "shaft_dynamic_imbalance.yaml"))  # no tilt, no angle
+    tex = tmp_path / "figures.tex"
+    tex.write_text(render.render("preamble.tex.j2") + "\\begin{document}\n" + "\n\n".join((rotor, drawn))
+                   + "\n\\end{document}\n", encoding="utf-8")
+    assert export.pdf(tex).exists()

@@ -721,6 +721,26 @@ EXPECTED.update({
         "tau": lambda s: s.M * s.R**2 / 4 * s.omega**2 * _sin(s.beta) * _cos(s.beta),
         "F": lambda s: s.M * s.R**2 / 4 * s.omega**2 * _sin(s.beta) * _cos(s.beta) / s.d,
     },
+    # Rotating unbalance (Meriam & Kraige ch. 7; Hibbeler ch. 21): a mass m at radius e on a rotor
+    # needs F = m e omega^2 across the shaft, whatever the rotor's mass, shared by bearings either
+    # side; on a level shaft each also carries half the weight (M + m) g, and with the mass level
+    # with the shaft the drive holds the weight's moment m g e about it. The disk turns about its
+    # principal axis through its center, so the torque about the center of mass is zero.
+    "rotor_static_imbalance": {
+        "F": lambda s: sp.sqrt((s.m * s.e * s.omega**2) ** 2 + ((s.M + s.m) * s.g) ** 2),
+        "FAx": lambda s: -s.m * s.e * s.omega**2 / 2,
+        "FAy": lambda s: (s.M + s.m) * s.g / 2,
+        "tau": lambda s: 0,
+        "Q": lambda s: s.m * s.g * s.e,
+    },
+    # Dynamic imbalance (Meriam & Kraige ch. 7): masses m at r on opposite sides, 2a apart along the
+    # shaft: no net force, a couple m r omega^2 * 2a, each bearing d apart its share 2 m r a omega^2/d.
+    "shaft_dynamic_imbalance": {
+        "F": lambda s: 0,
+        "tau": lambda s: 2 * s.m * s.r * s.a * s.omega**2,
+        "FA": lambda s: 2 * s.m * s.r * s.a * s.omega**2 / s.d,
+        "FB": lambda s: 2 * s.m * s.r * s.a * s.omega**2 / s.d,
+    },
     # Kleppner & Kolenkow ch. 7 (the skew rod), a uniform rod: L = (M L^2/12) omega sin(alpha),
     # perpendicular to the rod, so pi/2 - alpha from omega; tau = (M L^2/12) omega^2 sin(alpha) cos(alpha);
     # T = omega L_z/2 = (M L^2/24) omega^2 sin^2(alpha).

@@ -110,9 +110,13 @@ class _Figure:
         return f"${text}$" if text else None
 
     def product(self, *factors) -> str | None:
-        """LaTeX of a product in the order given (m g, not g m); None if a factor is open."""
+        """LaTeX of a product in the order given (m g, not g m; a sum in parentheses, (M + m) g); None
+        if a factor is open."""
         parts = [self.tex(f) for f in factors]
-        return None if None in parts else r"\,".join(parts)
+        if None in parts:
+            return None
+        return r"\,".join(rf"\left({p}\right)" if isinstance(f, sp.Add) else p
+                           for f, p in zip(factors, parts))
 
     def ask_symbol(self, kind: str, target=None, detail=None) -> str | None:
         """The LaTeX name of the first ask of that kind (the asked quantity as the problem names it)."""

@@ -135,18 +135,53 @@ def _internal(fig: _Figure) -> None:
 
 
 def _bearings(fig: _Figure) -> None:
-    """A body turning about the vertical shaft through its center, tilted from it; L for a rod."""
+    """A body turning about its shaft, tilted from it; L for a rod. Without gravity the page is the
+    plane of the shaft and the own axis (the shaft up the page); under gravity it is the vertical
+    plane of the shaft (y up, the shaft at its incline, the own axis's lean toward the reader not
+    shown) with the weight. The body sits at its center of mass, off the shaft where `through` puts
+    it; the bearings A (toward +z) and B where `apart` is given."""
     name, rotation = next(iter(fig.scene.bearings.items()))
     body = fig.scene.bodies[name]
     tilt = _clamp(fig.num(rotation.tilt, 0.6), 0.25, 1.35)
-    fig.add("\\draw[axis, ->] (0,-2) -- (0,2.2);")
-    fig.add("\\draw[->, thick] (0.35,1.75) arc[start angle=0, end angle=300, x radius=0.35, y radius=0.1];")
-    fig.label((0.45, 1.8), (1, 0), fig.m(rotation.rate))
-    direction = 90 - math.degrees(tilt)
-    fig.body(body, (0, 0), 1.6, direction)
-    fig.arc((0, 0), 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
-    if body.shape == "rod":  # a thin rod's L is normal to it, in the plane of the rod and the axis
-        fig.arrow((0, 0), _unit(direction + 90), "very thick, ->, green!40!black", r"$\vec L$")
+    weighed = fig.scene.gravity is not None
+    incline = _clamp(fig.num(rotation.incline, 0.0), -1.4, 1.4)
+    shaft = (math.cos(incline), math.sin(incline)) if weighed else (0.0, 1.0)
+    across = (-shaft[1], shaft[0]) if weighed else (1.0, 0.0)  # N.y under gravity, else N.x
+    center = bearings.center_offset(rotation.tilt, rotation.roll, bearings.own_axis(body.shape), rotation.through)
+    if body.composite is not None:
+        reach = fig.num(body.composite.extent(), 1.0)
+    else:  # the drawn half-size, 1.6, is a rod's half-length, else the largest size
+        reach = max((fig.num(v, 1.0) / (2 if body.shape == "rod" else 1) for v in body.sizes.values()), default=1.0)
+    scale = 1.6 / reach if reach > 0 else 1.0
+    side = _clamp(fig.num(center[1 if weighed else 0], 0.0) * scale, -1.2, 1.2)
+    along = _clamp(fig.num(center[2], 0.0) * scale, -1.2, 1.2)
+    cm = _add(_add((0, 0), across, side), shaft, along)
+    turn = math.degrees(math.atan2(shaft[1], shaft[0]))  # the shaft's direction on the page
+    fig.add(f"\\draw[axis, ->] {_pt(_add((0, 0), shaft, -2))} -- {_pt(_add((0, 0), shaft, 2.2))};")
+    rotated = f", rotate around={{{_f(turn - 90)}:{_pt(_add((0, 0), shaft, 1.75))}}}" if weighed else ""
+    fig.add(f"\\draw[->, thick{rotated}] {_pt((1.75 * shaft[0] + 0.35, 1.75 * shaft[1]))} "
+            "arc[start angle=0, end angle=300, x radius=0.35, y radius=0.1];")
+    fig.label(_add(_add((0, 0), shaft, 1.8), across, 0.45), across, fig.m(rotation.rate))
+    if side != 0 or along != 0:
+        fig.line((0, 0), cm, "thin, dashed")
+        fig.dot((0, 0), 0.05)
+    if weighed:  # seen from the side: the own axis leans toward the reader
+        fig.body(body, cm, 0.9, turn)
+        fig.gravity_arrow(cm, body)
+    else:
+        direction = 90 - math.degrees(tilt)
+        fig.body(body, cm, 1.6, direction)
+        if rotation.tilt != 0:
+            fig.arc(cm, 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
+        if body.shape == "rod":  # a thin rod's L is normal to it, in the plane of the rod and the axis
+            fig.arrow(cm, _unit(direction + 90), "very thick, ->, green!40!black", r"$\vec L$")
+    if rotation.apart is not None:  # over the body, inside the rate's arrow
+        half = _clamp(fig.num(rotation.apart, 1.0) * scale / 2, 1.0, 1.5)
+        for label, sign in (("A", 1), ("B", -1)):
+            at = _add((0, 0), shaft, sign * half)
+            fig.add(f"\\fill[gray!60, draw=black, rotate around={{{_f(turn)}:{_pt(at)}}}] "
+                    f"{_pt(_add(at, (-0.12, -0.2)))} rectangle {_pt(_add(at, (0.12, 0.2)))};")
+            fig.label(_add(at, across, -0.25), tuple(-c for c in across), f"${label}$")
 
 
 def _free_rotation(fig: _Figure) -> None:
