@@ -197,6 +197,7 @@ ROLLING_COIN_QUANTITIES = ("steady.precession", "steady.speed", "steady.spin", "
                            "steady.friction", "upright.min_speed", "upright.min_spin")
 
 
+@dataclass(frozen=True)
 class FreeRotation:
     """A body turning with no torque about its center of mass (free flight, or a frictionless point
     at its center): `spin`, omega's component along its symmetry axis (or the rate of a steady
