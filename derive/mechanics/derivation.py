@@ -24,6 +24,11 @@ from derive.mechanics import jets
 #: a name that starts with a backslash as it is (a problem file's names are identifiers).
 KINETIC = sp.Symbol("K")
 LAGRANGIAN = sp.Symbol(r"\mathcal{L}")
+POTENTIAL = sp.Symbol("V")
+#: The period and the growth rate the small-oscillation and exact-period steps solve for
+#: (derive.notation checks that no name of a problem file typesets as one of these with another meaning).
+PERIOD = sp.Symbol("T")
+GROWTH_RATE = sp.Symbol("a")
 
 
 @dataclass(frozen=True)
