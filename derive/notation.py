@@ -2,7 +2,8 @@ r"""What each typeset symbol of a worked solution stands for, and the clashes: o
 
 A document's symbols come from the problem file (its parameters, the open sizes of its scene, the
 names of its asks, which the results print) and from the engine: the energies and the period the
-steps solve for (`derivation.KINETIC`, `POTENTIAL`, `LAGRANGIAN`, `PERIOD`, `GROWTH_RATE`), each
+steps solve for (`derivation.KINETIC`, `POTENTIAL`, `LAGRANGIAN`, `PERIOD`, `EXACT_PERIOD`,
+`GROWTH_RATE`), each
 route's unknown forces (`T_rope`, `N^ball`, `R_x^pin`) and the coordinates with their rates. Two
 of them that typeset alike (as `render.symbol_latex` prints them) but stand for different things
 are a clash: an ask named T for a period where the steps call a tension T, a parameter V where
@@ -30,7 +31,7 @@ from dataclasses import dataclass, replace
 import sympy as sp
 
 from derive import render
-from derive.mechanics.derivation import GROWTH_RATE, KINETIC, LAGRANGIAN, PERIOD, POTENTIAL
+from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, KINETIC, LAGRANGIAN, PERIOD, POTENTIAL
 
 #: The engine's symbols of a fixed meaning, and the asks (kind, detail; None: any detail) that mean it.
 ENGINE = {
@@ -38,7 +39,8 @@ ENGINE = {
                                      ("bearings", "kinetic_energy")}),
     POTENTIAL: ("the potential energy", set()),
     LAGRANGIAN: ("the Lagrangian", set()),
-    PERIOD: ("the period", {("small_oscillation", "period"), ("oscillation", None)}),
+    PERIOD: ("the period of small oscillations", {("small_oscillation", "period")}),
+    EXACT_PERIOD: ("the period at the amplitude asked", {("oscillation", None)}),
     GROWTH_RATE: ("the growth rate of a small displacement", {("small_oscillation", "growth_rate")}),
 }
 
@@ -48,6 +50,7 @@ ALTERNATIVES = {
     KINETIC: (sp.Symbol("E_k"), sp.Symbol("E_kin")),
     POTENTIAL: (sp.Symbol("U"), sp.Symbol("E_p")),
     PERIOD: (sp.Symbol("P"), sp.Symbol("tau")),
+    EXACT_PERIOD: (sp.Symbol("P"), sp.Symbol("tau")),
     GROWTH_RATE: (sp.Symbol("lambda"), sp.Symbol("gamma")),
 }
 
@@ -70,18 +73,20 @@ def engine_symbol(kind: str, detail: str | None) -> sp.Symbol | None:
     """The engine symbol an ask of this quantity is (None: none).
 
     >>> engine_symbol("small_oscillation", "period"), engine_symbol("oscillation", None), engine_symbol("mass", None)
-    (T, T, None)
+    (T, T_exact, None)
     """
     return next((s for s, (_, asks) in ENGINE.items() if (kind, detail) in asks or (kind, None) in asks), None)
 
 
 def clashes(names: Iterable[tuple[str, str, str]], shown: set[sp.Symbol], engine: Mapping[sp.Symbol, str],
-            same: Mapping[str, sp.Symbol] | None = None) -> list[Clash]:
+            same: Mapping[str, sp.Symbol] | None = None, origin: Mapping[sp.Symbol, sp.Symbol] | None = None
+            ) -> list[Clash]:
     """The clashes among a document's symbols. `names`: the problem file's (field, name, what it
     is); `shown`: every symbol the steps typeset; `engine`: the engine's unknowns and coordinates
     with what each is (the symbols of ENGINE are added); `same`: a field whose name is an engine
-    symbol (an ask of the period named T)."""
-    same = same or {}
+    symbol (an ask of the period named T); `origin`: a symbol the steps print for an engine symbol
+    (an ask's name for the quantity it asks)."""
+    same, origin = same or {}, origin or {}
     fixed = {**{s: meaning for s, (meaning, _) in ENGINE.items()}, **engine}
     things: dict[str, dict[tuple, tuple[str, str | None]]] = {}  # latex -> identity -> (what, field)
     for field, name, what in names:
@@ -89,8 +94,11 @@ def clashes(names: Iterable[tuple[str, str, str]], shown: set[sp.Symbol], engine
         things.setdefault(render.symbol_latex(name), {})[identity] = (what, field)
     for symbol in shown:
         entry = things.setdefault(render.symbol_latex(symbol.name), {})
-        named = [i for i, (_, f) in entry.items() if f is not None and i[0] == "name"]  # the file's name typeset alike
-        identity = ("engine", symbol) if symbol in fixed else (named[0] if named else ("name", symbol.name))
+        named = [i for i, (_, f) in entry.items() if f is not None]  # the file's name typeset alike
+        if symbol in origin or symbol in fixed:
+            identity = ("engine", origin.get(symbol, symbol))
+        else:
+            identity = named[0] if named else ("name", symbol.name)
         if identity not in entry:
             entry[identity] = (fixed.get(symbol, f"the steps' {symbol.name}"), None)
     return [Clash(latex, tuple(what for what, _ in entry.values()), next((f for _, f in entry.values() if f), None),
@@ -104,6 +112,17 @@ def step_symbols(steps: Iterable) -> set[sp.Symbol]:
     for step in steps:
         for math in (*step.equations, *(p for s in step.sentences for p in s.pieces if not isinstance(p, str))):
             result |= {s for s in math.free_symbols if isinstance(s, sp.Symbol) and not isinstance(s, sp.Dummy)}
+    return result
+
+
+def asked(problem) -> dict[sp.Symbol, sp.Symbol]:
+    """The engine symbols the problem asks for, each by the symbol of the (first) ask of it, where that
+    is another (T_small for the period of small oscillations)."""
+    result = {}
+    for name, ask in problem.asks.items():
+        symbol = engine_symbol(ask.quantity.kind, ask.quantity.detail)
+        if symbol is not None and symbol != sp.Symbol(name):
+            result.setdefault(symbol, sp.Symbol(name))
     return result
 
 
@@ -121,7 +140,8 @@ def document_clashes(problem, solution, steps: Mapping[str, list]) -> list[Clash
             engine.update({s: f"the coordinate {s.name}" for c in derivation.coords.all for s in (c.q, c.u, c.a)})
     parameters = {p.symbol for p in problem.parameters.values()}
     shown = {s for s in step_symbols(x for route in steps.values() for x in route) if s not in parameters}
-    return clashes(names, shown, {s: w for s, w in engine.items() if s not in parameters}, same)
+    origin = {target: symbol for symbol, target in asked(problem).items()}
+    return clashes(names, shown, {s: w for s, w in engine.items() if s not in parameters}, same, origin)
 
 
 def renamed(steps: Mapping[str, list], change: Mapping[sp.Symbol, sp.Symbol]) -> dict[str, list]:
@@ -136,9 +156,10 @@ def renamed(steps: Mapping[str, list], change: Mapping[sp.Symbol, sp.Symbol]) ->
 
 
 def named(problem, solution, steps: Mapping[str, list]) -> dict[str, list]:
-    """The steps of a worked solution as the document prints them: an engine symbol of ENGINE that a
-    problem file's name takes renamed to its first free ALTERNATIVES; any other clash refused (an
-    InputError naming the field that made it; an engine limit where the engine's own symbols clash).
+    """The steps of a worked solution as the document prints them: an engine symbol of ENGINE that an
+    ask asks printed by the ask's name, one that a problem file's name takes with another meaning
+    renamed to its first free ALTERNATIVES; any other clash refused (an InputError naming the field
+    that made it; an engine limit where the engine's own symbols clash).
 
     >>> from derive.problem import load
     >>> from derive.answers import Solution
@@ -146,16 +167,25 @@ def named(problem, solution, steps: Mapping[str, list]) -> dict[str, list]:
     >>> named(solution.problem, solution, solution.steps()) == solution.steps()
     True
     """
-    found = document_clashes(problem, solution, steps)
+    by_ask = asked(problem)  # printed by the ask's name (T_small for the small-angle period)
+    shown = step_symbols(s for route in steps.values() for s in route)
     taken = {render.symbol_latex(n) for n in (*problem.parameters, *problem.asks)}
-    taken |= {render.symbol_latex(s.name) for s in step_symbols(s for route in steps.values() for s in route)}
-    change = {}
-    for clash in found:
-        if clash.engine is not None and clash.field is not None:
-            free = [a for a in ALTERNATIVES.get(clash.engine, ()) if render.symbol_latex(a.name) not in taken]
-            if free:
-                change[clash.engine] = free[0]
-                taken.add(render.symbol_latex(free[0].name))
+    taken |= {render.symbol_latex(s.name) for s in shown}
+
+    def alternative(symbol):
+        free = [a for a in ALTERNATIVES.get(symbol, ()) if render.symbol_latex(a.name) not in taken]
+        if free:
+            taken.add(render.symbol_latex(free[0].name))
+        return free[0] if free else None
+
+    change = dict(by_ask)
+    for target in by_ask.values():  # an ask's name that is an engine symbol still shown for itself: that gives way
+        if target in ENGINE and target not in by_ask and target in shown and (other := alternative(target)) is not None:
+            change[target] = other
+    steps = renamed(steps, change)
+    found = document_clashes(problem, solution, steps)
+    change = {c.engine: other for c in found if c.engine is not None and c.field is not None
+              and (other := alternative(c.engine)) is not None}
     if change:
         steps = renamed(steps, change)
         found = document_clashes(problem, solution, steps)

@@ -25,9 +25,11 @@ from derive.mechanics import jets
 KINETIC = sp.Symbol("K")
 LAGRANGIAN = sp.Symbol(r"\mathcal{L}")
 POTENTIAL = sp.Symbol("V")
-#: The period and the growth rate the small-oscillation and exact-period steps solve for
-#: (derive.notation checks that no name of a problem file typesets as one of these with another meaning).
+#: The period of small oscillations, the period at an amplitude and the growth rate the steps solve
+#: for (derive.notation prints each by the name of the ask of it, and renames one a problem file's
+#: name takes with another meaning).
 PERIOD = sp.Symbol("T")
+EXACT_PERIOD = sp.Symbol("T_exact")
 GROWTH_RATE = sp.Symbol("a")
 
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import GROWTH_RATE, PERIOD, Derivation, Step, root, solve_linear, tidy
+from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, Step, root, solve_linear, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.scene import Scene
 
@@ -170,8 +170,8 @@ def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tu
     steps = (
         Step("The equation of motion has the pendulum form", (sp.Eq(linear.coordinate.a, ratio * sp.sin(q)),)),
         Step("Energy from the turning point; the substitution below makes the time an elliptic integral",
-             (sp.Eq(sp.sin(q / 2), k * sp.sin(chi)), sp.Eq(PERIOD, 4 * sp.Integral(1 / (rate * sp.sqrt(1 - k**2 * sp.sin(chi) ** 2)),
+             (sp.Eq(sp.sin(q / 2), k * sp.sin(chi)), sp.Eq(EXACT_PERIOD, 4 * sp.Integral(1 / (rate * sp.sqrt(1 - k**2 * sp.sin(chi) ** 2)),
                                                      (chi, 0, sp.pi / 2))),)),
-        Step("The complete elliptic integral of the first kind", (sp.Eq(PERIOD, period),)),
+        Step("The complete elliptic integral of the first kind", (sp.Eq(EXACT_PERIOD, period),)),
     )
     return period, steps
