@@ -108,6 +108,10 @@ def collected_roots(expression):
     ('\\frac{2 \\sqrt{I g l m}}{3}', '\\frac{1}{\\sqrt{I g}}')
     >>> sp.latex(collected_roots(sp.sqrt(g) / sp.sqrt(l))), sp.latex(collected_roots(sp.sqrt(sp.Symbol("x")) / sp.sqrt(l)))
     ('\\sqrt{\\frac{g}{l}}', '\\frac{\\sqrt{x}}{\\sqrt{l}}')
+    >>> sp.latex(collected_roots(2 * sp.pi * l**sp.Rational(3, 2) / sp.sqrt(g)))
+    '2 \\pi \\sqrt{\\frac{l^{3}}{g}}'
+    >>> sp.latex(collected_roots(sp.sqrt(3) * sp.sqrt(g) * sp.sqrt(l) / 3)), sp.latex(collected_roots(2 * sp.sqrt(6) * sp.sqrt(l) / (3 * sp.sqrt(g))))
+    ('\\sqrt{\\frac{g l}{3}}', '2 \\sqrt{\\frac{2 l}{3 g}}')
     """
     if not isinstance(expression, sp.Basic):
         return expression
@@ -117,11 +121,12 @@ def collected_roots(expression):
         rest = []
         for factor in _flat(product):
             if _is_root(factor):
-                roots[1 if factor.exp > 0 else -1].append(factor.base)
+                roots[1 if factor.exp > 0 else -1].append(_radicand(factor))
             else:
                 rest.append(factor)
+        rest = _coefficient_into_root(rest, roots)
         if roots[1] and roots[-1] and all(b.is_nonnegative for b in roots[1] + roots[-1]):
-            quotient = sp.Mul(*roots[1], sp.Pow(sp.Mul(*roots[-1], evaluate=False), -1, evaluate=False), evaluate=False)
+            quotient = sp.Mul(*roots[1]) / sp.Mul(*roots[-1])  # the root itself unevaluated: sympy would split it
             return sp.Mul(*rest, sp.Pow(quotient, HALF, evaluate=False), evaluate=False)
         for sign, bases in roots.items():
             if len(bases) > 1:  # one root; under a fraction bar as 1/root, which the printer keeps whole
@@ -137,8 +142,34 @@ def collected_roots(expression):
     return expression.replace(several_roots, combined)
 
 
+def _coefficient_into_root(rest: list, roots: dict) -> list:
+    """The factors outside the roots with their rational numbers as one coefficient, first; its
+    denominator's part that divides the whole number under a root of nonnegative symbols taken into
+    the root: sqrt(3 a g)/3 as sqrt(a g/3), 2 sqrt(6 L/g)/3 as 2 sqrt(2 L/(3 g)) (`roots` changed in
+    place)."""
+    coefficient = sp.Mul(*(f for f in rest if f.is_Rational))
+    rest = [f for f in rest if not f.is_Rational]
+    number = sp.Mul(*(b for b in roots[1] if b.is_Integer))
+    symbols = [b for b in roots[1] + roots[-1] if not b.is_Integer]
+    d = sp.igcd(coefficient.q, number) if number.is_Integer else 1
+    if d > 1 and any(not b.is_Integer for b in roots[1]) and all(b.is_nonnegative for b in symbols):
+        roots[1][:] = ([number / d] if number != d else []) + [b for b in roots[1] if not b.is_Integer]
+        roots[-1].append(sp.Integer(d))
+        coefficient *= d
+    return ([coefficient] if coefficient != 1 else []) + rest
+
+
 def _is_root(factor) -> bool:
-    return isinstance(factor, sp.Pow) and factor.exp in (HALF, -HALF)
+    """A square root or its reciprocal; a power k/2 (k odd) of a nonnegative base too (a^(3/2) is
+    sqrt(a^3))."""
+    if not isinstance(factor, sp.Pow) or not factor.exp.is_Rational or factor.exp.q != 2:
+        return False
+    return abs(factor.exp) == HALF or factor.base.is_nonnegative is True
+
+
+def _radicand(factor: sp.Pow) -> sp.Expr:
+    """What a root (`_is_root`) takes the square root of: a for sqrt(a) and 1/sqrt(a), a^3 for a^(3/2)."""
+    return factor.base ** abs(factor.exp.p)
 
 
 def _flat(product: sp.Mul) -> list:

@@ -72,3 +72,15 @@ def test_a_square_over_its_absolute_value_and_roots_of_unknown_sign():
     # sqrt(x)/sqrt(g) is sqrt(x/g) only for x >= 0: kept apart
     assert render.latex_of(sp.sqrt(x) / sp.sqrt(g)) == r"\frac{\sqrt{x}}{\sqrt{g}}"
     assert render.latex_of(sp.sqrt(M) * sp.sqrt(g) / (sp.sqrt(R) * sp.sqrt(I))) == r"\sqrt{\frac{M g}{I R}}"
+
+
+@pytest.mark.parametrize("where, name, latex", [
+    ("tests/textbook/disk_rolls_upright.yaml", "v_min", r"\sqrt{\frac{a g}{3}}"),  # v^2 = g a/3 (README)
+    ("tests/textbook/rod_end_pendulum.yaml", "T", r"2 \pi \sqrt{\frac{2 L}{3 g}}"),
+    ("tests/textbook/torsion_pendulum.yaml", "T", r"\pi R \sqrt{\frac{2 M}{\kappa}}"),
+    ("kepler_orbit", "P", r"2 \pi \sqrt{\frac{a^{3}}{\mathit{GM}}}"),  # Kepler's third law as written
+    ("tests/textbook/coin_rolls_in_circle.yaml", "V", r"\frac{\sqrt{6 R g \tan{\left(\phi \right)}}}{3}"),  # tan: sign unknown
+])
+def test_a_coefficient_and_powers_taken_into_the_root(where, name, latex):
+    problem = load(str(Path(__file__).parent.parent / where) if where.endswith(".yaml") else where)
+    assert render.latex_of(Solution(problem).expression(name)) == latex
