@@ -1,16 +1,15 @@
 r"""What each typeset symbol of a worked solution stands for, and the clashes: one symbol, two things.
 
-A document's symbols come from the problem file (its parameters, the open sizes of its scene, the
-names of its asks, which the results print) and from the engine: the energies and the period the
-steps solve for (`derivation.KINETIC`, `POTENTIAL`, `LAGRANGIAN`, `PERIOD`, `EXACT_PERIOD`,
-`GROWTH_RATE`), each
+A document's symbols come from the problem file (its parameters and the names of its asks, which
+the results print) and from the engine: the energies and the periods the steps solve for
+(`derivation.KINETIC`, `POTENTIAL`, `LAGRANGIAN`, `PERIOD`, `EXACT_PERIOD`, `GROWTH_RATE`), each
 route's unknown forces (`T_rope`, `N^ball`, `R_x^pin`) and the coordinates with their rates. Two
 of them that typeset alike (as `render.symbol_latex` prints them) but stand for different things
 are a clash: an ask named T for a period where the steps call a tension T, a parameter V where
 the Lagrangian's potential energy is V. An ask of the quantity an engine symbol stands for (an ask
 `T` of the period, `K` of the kinetic energy) is that symbol, not a clash; any other symbol of the
-steps is named by the step that introduces it (Euler's omega_3, a rolling body's M) and is the same thing
-as a problem name typeset alike (a parameter omega3, the spin along the axis).
+steps is named by the step that introduces it (Euler's omega_3, a rolling body's M, a size the scene
+leaves open) and is the same thing as a problem name typeset alike (a parameter omega3, the spin).
 
 >>> import sympy as sp
 >>> tension, period = sp.Symbol("T_cord", real=True), sp.Symbol("T")
@@ -127,8 +126,8 @@ def asked(problem) -> dict[sp.Symbol, sp.Symbol]:
 
 
 def document_clashes(problem, solution, steps: Mapping[str, list]) -> list[Clash]:
-    """The clashes of a problem's worked solution (and handout): its parameters, open sizes and
-    asks against the symbols of its steps (`steps`: by route, as `Solution.steps` gives them)."""
+    """The clashes of a problem's worked solution (and handout): its parameters and asks against
+    the symbols of its steps (`steps`: by route, as `Solution.steps` gives them)."""
     names = [(f"parameters.{n}", n, f"the parameter {n} ({p.meaning})") for n, p in problem.parameters.items()]
     names += [(f"ask.{n}", n, f"the answer {n} ({a.meaning})") for n, a in problem.asks.items()]
     same = {f"ask.{n}": s for n, a in problem.asks.items()

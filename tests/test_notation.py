@@ -46,6 +46,10 @@ def test_two_periods_in_one_document_are_two_symbols():
             sp.Symbol("T_small"), sp.Symbol("T"), sp.Symbol("T")]
         assert sp.simplify(next(e.rhs for e in equations if e.lhs == sp.Symbol("T_small"))
                            - solution.expression("T_small")) == 0
+    # the worked solution's and the handout's context (the handout adds its limiting cases to it)
+    context = worksheets._solutions_context(worksheets._ProblemVariants(problem, solution, []), siunitx=True)
+    typeset = "\n".join(e for route in context["routes"] for s in route["steps"] for e in s["equations"])
+    assert typeset.count(r"T_{\mathrm{small}} &=") == 2 and r"\mathrm{exact}" not in typeset
 
 
 def test_a_tension_asked_as_T_renames_the_period():
