@@ -26,8 +26,9 @@ from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step, root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.mechanics.kinematics import Coordinates
+from derive.mechanics.normal_modes import NormalModes, normal_modes
 from derive.mechanics.oscillation import (NotAPendulum, Oscillation, OscillationError, OscillationLimit,
-                                         exact_period, small_oscillation)
+                                         exact_period, free_directions, small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
 from derive.errors import InputError
 from derive.state_answers import StateAnswers
@@ -148,6 +149,26 @@ class Solution(StateAnswers, CrossChecks):
             raise self.problem.error("ask", str(error)) from None
 
     @cached_property
+    def freedoms(self) -> int:
+        """How many directions the scene may move in from its reference configuration (to first order)."""
+        return len(free_directions(self.dynamics_scene, self.coordinates))
+
+    @cached_property
+    def normal_modes(self) -> dict[str, NormalModes]:
+        """The normal modes of a scene of several degrees of freedom, by each route's equations."""
+        try:
+            return {route: normal_modes(self.dynamics_scene, d, self._sample) for route, d in self.derivations.items()}
+        except OscillationLimit as error:
+            raise self.problem.limit(str(error)) from None
+        except OscillationError as error:
+            raise self.problem.error("ask", str(error)) from None
+
+    @property
+    def linearized(self) -> dict[str, Oscillation | NormalModes]:
+        """The small oscillations by each route: of one degree of freedom, or the normal modes of several."""
+        return self.normal_modes if self.freedoms > 1 else self.oscillations
+
+    @cached_property
     def equilibria(self) -> dict[str, Equilibrium]:
         """Where the scene rests, found by each route's equations."""
         try:
@@ -165,8 +186,13 @@ class Solution(StateAnswers, CrossChecks):
         if q.kind == "equilibrium":
             return self.equilibria[route].position(self.scene, q.target, q.detail)
         if q.kind == "small_oscillation":
+            if self.freedoms == 1 and q.detail.startswith("modes."):
+                raise self.problem.error(f"ask.{ask.name}.of", "the scene has one degree of freedom, one mode: ask "
+                                         f"small_oscillation.{q.detail.rpartition('.')[2]}")
             try:
-                return self.oscillations[route].quantity(q.detail)
+                return self.linearized[route].quantity(q.detail)
+            except OscillationLimit as error:
+                raise self.problem.limit(str(error)) from None
             except OscillationError as error:
                 raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
         if q.kind == "oscillation":
@@ -578,6 +604,9 @@ class Solution(StateAnswers, CrossChecks):
             result += [(tidy(moments[high] - moments[low]), True, f"the {name}'s principal moments change order "
                         f"here ({'xyz'[low]} and {'xyz'[high]}): the axis of each rank is chosen at the middle of "
                         "the ranges") for low, high in zip(order, order[1:])]
+        result += [(placed, True, f"the bodies are not placed as at the middle of the ranges, where "
+                                  f"{sp.sstr(placed)} > 0 (a cord's run would turn over): the derivation is for that "
+                                  "placement") for placed in self.scene.placed]
         for surface in self.scene.surfaces.values():  # a file's angle in symbols: checked per variant
             if isinstance(surface, Plane) and surface.angle.free_symbols:
                 result += [(surface.angle, False, f"the plane {surface.name}'s angle {sp.sstr(surface.angle)} is "
@@ -586,7 +615,9 @@ class Solution(StateAnswers, CrossChecks):
                                                              "is pi/2 or more: a plane's angle lies in [0, pi/2)")]
         if {a.quantity.kind for a in self.problem.asks.values()} & DYNAMIC_KINDS:
             result += self._sign_conditions()
-        if any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()):
+        if any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()) and self.freedoms > 1:
+            result += list(self.normal_modes["lagrange"].conditions)
+        elif any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()):
             oscillation = self.oscillations["lagrange"]
             if not oscillation.proven:  # its sign was read at the middle of the ranges
                 result.append((oscillation.stiffness if oscillation.stable else -oscillation.stiffness, True,
@@ -818,7 +849,7 @@ class Solution(StateAnswers, CrossChecks):
         self._state_steps(result)
         if "small_oscillation" in kinds:
             for route in result:
-                result[route] += self.oscillations[route].steps
+                result[route] += self.linearized[route].steps
         if "equilibrium" in kinds:
             for route in result:
                 result[route] += self.equilibria[route].steps
@@ -882,6 +913,8 @@ class Solution(StateAnswers, CrossChecks):
                     needed.add(forces["friction"])
                 if q.detail in ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom"):
                     needed |= {self.coordinates.of(q.target, k).a for k in ("x", "y")}
+            elif q.kind == "small_oscillation" and self.freedoms > 1:
+                needed |= {c.a for c in self.normal_modes["lagrange"].coordinates}
             elif q.kind in ("small_oscillation", "oscillation"):
                 needed.add(self.oscillations["lagrange"].coordinate.a)
         return needed

@@ -11,6 +11,7 @@ modules in `derive.mechanics` derive its motion.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -309,6 +310,7 @@ class Scene:
     rolls_on_edge: dict[str, RollsOnEdge] = field(default_factory=dict)
     free_rotations: dict[str, FreeRotation] = field(default_factory=dict)
     states: dict[str, State] = field(default_factory=dict)
+    placed: tuple[sp.Expr, ...] = ()  # positive where the file places the bodies (scene_file._placed)
 
     @property
     def parts(self) -> tuple[Part, ...]:
@@ -378,7 +380,7 @@ class Quantity:
     "free_rotation" (a body turning with no torque; FREE_ROTATION_QUANTITIES),
     "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
     ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
-    "small_oscillation" (omega, period, growth_rate), "equilibrium" (a body's angle, x or y where
+    "small_oscillation" (omega, period, growth_rate; modes.N.omega|period), "equilibrium" (a body's angle, x or y where
     the scene rests: derive.mechanics.equilibrium); read in a state (RATE_KINDS) also
     "kinetic_energy_change" (every body's, in the state minus in the state it comes from),
     "center_of_mass_velocity" (of every body; x or y) and, just after an impact, "impulse" (a
@@ -501,8 +503,17 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError("an oscillation at a given amplitude has period (give amplitude:)")
         return Quantity("oscillation", None, "period")
     if head == "small_oscillation":
-        if rest not in ("omega", "period", "growth_rate"):
-            raise ValueError("small_oscillation has omega, period and growth_rate (about an unstable equilibrium)")
+        ratio = re.fullmatch(r"modes\.[1-9][0-9]?\.ratio\.(\w+)\.(x|y|angle)\.to\.(\w+)\.(x|y|angle)", rest, re.ASCII)
+        if rest not in ("omega", "period", "growth_rate") and not ratio \
+                and not re.fullmatch(r"modes\.[1-9][0-9]?\.(omega|period)", rest):
+            raise ValueError("small_oscillation has omega, period, growth_rate (about an unstable equilibrium) and, "
+                             "with several degrees of freedom, modes.N.omega and modes.N.period (N = 1, 2, ...: the "
+                             "normal modes, lowest frequency first) and modes.N.ratio.BODY.x.to.BODY.x (the ratio of "
+                             "two amplitudes in the mode; x, y or angle)")
+        for body, kind in (ratio.group(1, 2), ratio.group(3, 4)) if ratio else ():
+            if body not in scene.bodies or kind == "angle" and not scene.bodies[body].rotates:
+                raise ValueError(f"{body}.{kind} is not a coordinate of the scene in a mode's ratio"
+                                 + did_you_mean(body, list(scene.bodies)))
         return Quantity("small_oscillation", None, rest)
     if head in scene.bodies:
         body = scene.bodies[head]

@@ -397,6 +397,27 @@ def _pull(reader: Reader, index: int, spec, places: Places) -> Cord:
                                  Attachment("pulled", force=force, angle=angle)))
 
 
+def _placements(places: Places, scene: Scene) -> tuple[sp.Expr, ...]:
+    """The factors whose sign the file's placement decides: each absolute value in a part's extents
+    in the reference configuration (a block hanging at depth h below a pulley of radius R has a run
+    |h - R| long), with the sign it has at the middle of the ranges. The derivation takes them so
+    (the answers read h - R, not |h - R|: sympy cannot cancel an absolute value, and an equilibrium
+    was refused as none), and `Solution.conditions` keeps that sign in every variant."""
+    from derive.mechanics.derivation import radicals
+    from derive.mechanics.kinematics import Coordinates
+
+    coords = Coordinates(scene)
+    rest = coords.at_rest_in_reference()
+    placed = {}
+    for part in scene.constraints + scene.loads:
+        for extent, _ in part.extents(coords):
+            for absolute in radicals(extent.xreplace(rest)).atoms(sp.Abs):
+                value = places.sample(absolute.args[0])
+                if value:
+                    placed[absolute.args[0] if value > 0 else -absolute.args[0]] = None
+    return tuple(placed)
+
+
 def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
     """Before anything is derived: each body on a surface touches it, and no cord whose tension is
     unknown pulls it straight off or into its surface (a body resting on a surface does not hang
@@ -543,6 +564,7 @@ def read_scene(reader: Reader, raw) -> Scene:
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wheel, wave,
                   internal, held, pivoted, rolling, free, states)
     _check_geometry(reader, places, scene)
+    scene = dataclasses.replace(scene, placed=_placements(places, scene))
     return scene
 
 

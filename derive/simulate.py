@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
+from scipy.linalg import eigh
 
 from derive.answers import Solution
 from derive.crosschecks import sample_points
@@ -131,10 +132,10 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
             down = solution.scene.surfaces[solution.scene.contact_of(q.target).surface].down.xreplace(values)
             simulated = float(down[0]) * mean_acceleration(q.target, "x") + float(down[1]) * mean_acceleration(q.target, "y")
             _compare(report, name, simulated, solution.expressions[name], values)
-        elif q.kind == "small_oscillation" and q.detail in ("period", "omega"):
-            period = _small_period(solution, rhs, values)
-            _compare(report, name, period if q.detail == "period" else 2 * np.pi / period, solution.expressions[name],
-                     values)
+        elif q.kind == "small_oscillation" and q.detail.endswith(("omega", "period")):
+            period = _small_period(solution, rhs, values, q.detail)
+            _compare(report, name, period if q.detail.endswith("period") else 2 * np.pi / period,
+                     solution.expressions[name], values)
         elif q.kind == "oscillation":
             amplitude = float(sp.N(ask.amplitude.xreplace(values)))
             _compare(report, name, _period(solution, rhs, values, amplitude), solution.expressions[name], values)
@@ -148,18 +149,30 @@ def _compare(report: SimulationReport, name: str, simulated: float, exact: sp.Ex
     report.compared.append(name)
 
 
-def _small_period(solution: Solution, rhs, values, amplitude: float = 1e-5) -> float:
-    """Time between downward zero crossings of the free coordinate, started in the reference
-    configuration with a small velocity along the free direction (on the constraints to first
-    order, however curved they are)."""
-    linear = solution.oscillations["lagrange"]
+def _small_period(solution: Solution, rhs, values, detail: str, amplitude: float = 1e-5) -> float:
+    """Time between downward zero crossings of the free coordinate (of several, the one that moves
+    most in the mode asked), started in the reference configuration with a small velocity along
+    the free direction (on the constraints to first order, however curved they are), or along the
+    mode's shape, found here numerically: scipy's eigh of K and M at these values."""
     coords = solution.coordinates
     n = len(coords.all)
-    expected = float(sp.N(linear.quantity("period").xreplace(values)))
+    if solution.freedoms > 1:
+        modes = solution.normal_modes["lagrange"]
+        expected = float(sp.N(modes.quantity(detail.replace("omega", "period")).xreplace(values)))
+        numbers = [np.array(sp.N(m.xreplace(values)).tolist(), dtype=float) for m in (modes.stiffness, modes.mass)]
+        squares, shapes = eigh(*numbers)
+        shape = shapes[:, int(np.argmin(np.abs(squares - (2 * np.pi / expected) ** 2)))]
+        direction = np.array(sp.N(modes.directions.xreplace(values)).tolist(), dtype=float) @ shape
+        index = int(np.argmax(np.abs(direction)))
+        direction = direction * np.sign(direction[index])
+    else:
+        linear = solution.oscillations["lagrange"]
+        expected = float(sp.N(linear.quantity("period").xreplace(values)))
+        direction = [float(sp.N(v.xreplace(values))) for v in linear.direction]
+        index = coords.all.index(linear.coordinate)
     speed = amplitude * 2 * np.pi / expected
     start = np.zeros(2 * n + 1)
-    start[n:2 * n] = [speed * float(sp.N(v.xreplace(values))) for v in linear.direction]
-    index = coords.all.index(linear.coordinate)
+    start[n:2 * n] = [speed * v for v in direction]
 
     def crossing(t, y):
         return y[index]

@@ -1,7 +1,9 @@
 """Issue 11's rules: friction regimes decided by the engine, physical signs checked over the
 parameters, every key used or refused, engine limits reported as such, and small
 oscillations about equilibria on curved surfaces. Closed forms are from the texts cited."""
+import json
 import math
+from pathlib import Path
 
 import pytest
 import sympy as sp
@@ -417,3 +419,18 @@ def test_a_velocity_of_a_body_that_does_not_roll_is_refused_with_the_states_form
     assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert "scene.bodies.ball.velocity: a velocity is the speed of a body rolling without slipping" in result.stderr
     assert "states: {moving: {rates: {ball.velocity.x: v}}}" in result.stderr
+
+
+def test_a_run_derived_as_placed_is_refused_where_a_variant_turns_it_over():
+    """A block hanging at depth d below a pulley of radius r has a run d - r long, not |d - r|: the
+    derivation takes the sign the file's placement gives it (so the answer reads the book's
+    a = m g/(M + m), Halliday ch. 5), and values that turn the run over are refused, not answered
+    by the same formula."""
+    path = str(Path(__file__).parent / "textbook" / "table_block_smooth_pulley.yaml")
+    placed = run_derive("solve", path, "--set", "M=3", "--set", "m=1", "--set", "r=0.03", "--set", "d=0.5",
+                        "--format", "json")
+    assert placed.returncode == 0, placed.stderr
+    assert json.loads(placed.stdout)["answers"]["a"]["expr"] == "g*m/(M + m)"
+    over = run_derive("solve", path, "--set", "M=3", "--set", "m=1", "--set", "r=0.03", "--set", "d=0.01")
+    assert over.returncode == 2
+    assert "not placed as at the middle of the ranges, where d - r > 0" in over.stderr

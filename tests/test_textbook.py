@@ -5,7 +5,7 @@ Each problem file describes the setup only and cites its source in `source:`; th
 live here, one dict per file, written with the problem's own parameter symbols. Every file's
 checks (what `derive solve` reports) must pass, Lagrange and Newton-Euler in agreement.
 Setups the engine cannot state, refuses or answers wrongly are listed in
-tests/textbook/PENDING.md (and their files kept under tests/textbook/pending/), not here.
+tests/textbook/PENDING.md (with their files quoted there), not here.
 """
 from pathlib import Path
 from types import SimpleNamespace
@@ -257,6 +257,43 @@ EXPECTED = {
     "spring_block_incline": {
         "T": lambda s: 2 * sp.pi * sp.sqrt(s.m / s.k),
         "N": lambda s: s.m * s.g * _cos(s.theta),
+    },
+    # Normal modes (derive.mechanics.normal_modes). Morin, Introduction to Classical Mechanics, ch. 6,
+    # and Taylor, Classical Mechanics, Problem 7.29 (a pendulum hanging from a cart free on a level
+    # rail): omega^2 = g (M + m)/(M l), the cart's free translation a zero mode.
+    "cart_pendulum": {
+        "omega": lambda s: sp.sqrt(s.g * (s.M + s.m) / (s.M * s.l)),
+        "r": lambda s: -s.M / s.m,  # the center of mass stays put: M x_cart + m x_bob = 0
+    },
+    # The same dynamics with the bead held at R from the center of a free cart's circular track
+    # (once refused, tests/textbook/PENDING.md, Resolved): omega^2 = (g/R)(1 + m/M).
+    "cart_track_bead_oscillation": {
+        "omega": lambda s: sp.sqrt(s.g / s.R * (1 + s.m / s.M)),
+    },
+    # Taylor, Classical Mechanics, §11.4 (the double pendulum, equal masses and lengths):
+    # omega^2 = (2 -+ sqrt 2) g/L.
+    "double_pendulum": {
+        "w1": lambda s: sp.sqrt((2 - sp.sqrt(2)) * s.g / s.L),
+        "w2": lambda s: sp.sqrt((2 + sp.sqrt(2)) * s.g / s.L),
+        "T1": lambda s: 2 * sp.pi / sp.sqrt((2 - sp.sqrt(2)) * s.g / s.L),
+        # Taylor's mode shapes in the angles, phi2 = +-sqrt(2) phi1; the bobs' displacements
+        # x1 = L phi1, x2 = L (phi1 + phi2): x2/x1 = 1 +- sqrt(2).
+        "r1": lambda s: 1 + sp.sqrt(2),
+        "r2": lambda s: 1 - sp.sqrt(2),
+    },
+    # Taylor, Classical Mechanics, §11.2 (two equal carts, three identical springs between two
+    # walls): omega^2 = k/m (in phase) and 3k/m (out of phase).
+    "two_blocks_three_springs": {
+        "w1": lambda s: sp.sqrt(s.k / s.m),
+        "w2": lambda s: sp.sqrt(3 * s.k / s.m),
+        "r1": lambda s: sp.Integer(1),  # in phase
+        "r2": lambda s: sp.Integer(-1),  # out of phase
+    },
+    # French, Vibrations and Waves, ch. 5 (two identical pendulums coupled by a spring between
+    # the bobs): omega^2 = g/l (in phase) and g/l + 2k/m (out of phase).
+    "coupled_pendulums": {
+        "w1": lambda s: sp.sqrt(s.g / s.l),
+        "w2": lambda s: sp.sqrt(s.g / s.l + 2 * s.k / s.m),
     },
     # Halliday ch. 15, Module 15-1 (linear oscillator): omega = sqrt(k/m).
     "spring_horizontal": {

@@ -54,13 +54,14 @@ class Solved(Mapping):
     """A solution whose values are put in compact form when first read: a question that asks
     for one quantity does not pay for simplifying all of them. `raw` holds them unsimplified."""
 
-    def __init__(self, raw: dict[sp.Symbol, sp.Expr]):
+    def __init__(self, raw: dict[sp.Symbol, sp.Expr], placed: tuple[sp.Expr, ...] = ()):
         self.raw = raw
+        self.placed = placed
         self._tidy: dict[sp.Symbol, sp.Expr] = {}
 
     def __getitem__(self, unknown: sp.Symbol) -> sp.Expr:
         if unknown not in self._tidy:
-            self._tidy[unknown] = tidy(self.raw[unknown])
+            self._tidy[unknown] = tidy(self.raw[unknown], self.placed)
         return self._tidy[unknown]
 
     def __iter__(self):
@@ -108,6 +109,12 @@ class Derivation:
     _cache: dict = field(default_factory=dict, repr=False)
 
     @property
+    def placed(self) -> tuple[sp.Expr, ...]:
+        """Expressions positive where the file places the scene (Scene.placed): the solutions take
+        them as they are where an absolute value or a root of a square meets them."""
+        return getattr(getattr(self.coords, "scene", None), "placed", ())
+
+    @property
     def equations(self) -> list[sp.Eq]:
         """Every equation, in general: the balances and dv/dt = 0 for each rate."""
         if "general" not in self._cache:
@@ -140,7 +147,7 @@ class Derivation:
             if frozen is not None:
                 equations = frozen(equations, self.unknowns)
             with limits.time_limit(f"solving the equations of {self.route.replace('_', '-')}"):
-                self._states[key] = solve_linear(equations, self.unknowns)
+                self._states[key] = solve_linear(equations, self.unknowns, self.placed)
         return self._states[key]
 
     def balls_at(self, state: dict[sp.Symbol, sp.Expr], bits: int = 256) -> dict[sp.Symbol, arb]:
@@ -290,18 +297,20 @@ def rest_positions(coords) -> dict[sp.Symbol, sp.Expr]:
 
 
 #: Operations past which tidy first reduces a ratio of polynomials in symbols, sines and cosines
-#: by cos^2 = 1 - sin^2 (every power): Newton–Euler's acceleration of a block pulled over a pulley
-#: up an incline came as a ratio of polynomials of degree 19 in sin(theta) that trigsimp took 225 s
-#: over (0.2 s reduced). Shorter expressions, and any with roots (trigsimp finds their perfect
-#: squares: a spring's length), go to trigsimp as they are, which keeps the textbook's forms
+#: by cos^2 = 1 - sin^2 (every power), and with roots or absolute values in it by _folded_squares:
+#: Newton–Euler's acceleration of a block pulled over a pulley up an incline came as a ratio of
+#: polynomials of degree 19 in sin(theta) that trigsimp took 225 s over (0.2 s reduced). Shorter
+#: expressions (trigsimp finds the perfect squares of their roots: a spring's length) go to
+#: trigsimp as they are, which keeps the textbook's forms
 #: (M g (3 sin^2 + 1)/4, not -M g (3 cos^2 - 4)/4) and the equations sympy's solve finds roots of.
 LONG = 200
 
 
-def tidy(expr: sp.Expr) -> sp.Expr:
+def tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...] = ()) -> sp.Expr:
     """A compact form of a solved expression: rational functions cancelled (a long one reduced by
     sin^2 + cos^2 = 1), trigonometric identities applied where every angle is a plain one, then
-    factored; a Piecewise (friction's regimes) case by case.
+    factored; a Piecewise (friction's regimes) case by case. `placed`: expressions positive as the
+    file places the scene (Scene.placed), whose absolute values are themselves.
 
     >>> m, g, x = sp.symbols("m g x")
     >>> tidy(m*g*sp.sin(x)**2 + m*g*sp.cos(x)**2)
@@ -310,11 +319,12 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     if expr.has(sp.Piecewise):  # regimes: each case in its own simplest form
         folded = sp.piecewise_fold(expr)
         if isinstance(folded, sp.Piecewise):
-            return sp.Piecewise(*((tidy(value), where) for value, where in folded.args))
+            return sp.Piecewise(*((tidy(value, placed), where) for value, where in folded.args))
     with limits.time_limit("simplifying"):
-        expr = sp.cancel(sp.together(radicals(expr)))
-        if expr.has(sp.sin, sp.cos) and _plain_angles(expr) and not _rational_trigonometric(expr):
-            folded = _folded_squares(expr)  # not trigsimp: 1 to 90 s a cord's run over a pulley
+        expr = sp.cancel(sp.together(radicals(expr, placed)))
+        if expr.has(sp.sin, sp.cos) and _plain_angles(expr) and not _rational_trigonometric(expr) \
+                and sp.count_ops(expr) > LONG:
+            folded = _folded_squares(expr)  # not trigsimp: 90 s a cord's run over a pulley
             if folded is not None:
                 return sp.factor_terms(sp.factor(folded))
         if expr.has(sp.sin, sp.cos) and _rational_trigonometric(expr) and sp.count_ops(expr) > LONG:
@@ -348,7 +358,7 @@ def root(expr: sp.Expr) -> sp.Expr:
     return sp.Pow(radicand, sp.S.Half, evaluate=False)
 
 
-def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
+def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol], placed: tuple[sp.Expr, ...] = ()) -> Solved:
     """Solve equations linear in the unknowns (accelerations and constraint forces).
 
     The system is reduced over the field of rational functions of its coefficients' symbols
@@ -357,7 +367,7 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
     symbolic LU decomposition and takes 0.04 s this way (benchmarks: derive bench).
 
     Raises ValueError when the system has no unique solution (an impossible or redundant
-    set of constraints).
+    set of constraints). `placed`: as for `tidy`.
     """
     # Linear in the unknowns: the matrix is the Jacobian and the rest is what is left at zero (no
     # expansion of the general equations, which a cord's exact geometry makes long).
@@ -368,13 +378,13 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> Solved:
         raise ValueError("the equations are not linear in the accelerations and forces")
     if matrix.shape[0] != matrix.shape[1]:
         raise Indeterminate(f"{len(unknowns)} accelerations and forces in {len(equations)} equations")
-    reduced, pivots = row_reduced(matrix.row_join(rhs))
+    reduced, pivots = row_reduced(matrix.row_join(rhs), placed)
     if pivots != tuple(range(len(unknowns))):
         raise Indeterminate(f"{len(unknowns)} accelerations and forces in {len(pivots)} independent equations")
-    return Solved({unknown: reduced(row, len(unknowns)) for row, unknown in enumerate(unknowns)})
+    return Solved({unknown: reduced(row, len(unknowns)) for row, unknown in enumerate(unknowns)}, placed)
 
 
-def row_reduced(matrix: sp.Matrix) -> tuple[Callable[[int, int], sp.Expr], tuple[int, ...]]:
+def row_reduced(matrix: sp.Matrix, placed: tuple[sp.Expr, ...] = ()) -> tuple[Callable[[int, int], sp.Expr], tuple[int, ...]]:
     """The reduced row echelon form of a matrix over the field of rational functions of its
     entries' symbols and generators (_as_rational): a function giving its (row, column) entry as
     an expression, and the pivot columns. sympy's Matrix.rref took 1 s for the five rates of an
@@ -385,7 +395,7 @@ def row_reduced(matrix: sp.Matrix) -> tuple[Callable[[int, int], sp.Expr], tuple
     >>> pivots, entry(0, 1)
     ((0,), 2)
     """
-    generated, back = _as_rational(matrix)
+    generated, back = _as_rational(matrix, placed)
     # Through the dense form: DomainMatrix.from_Matrix keeps an entry that is zero only in the
     # field (a vertical cord's x-component, once its roots are simplified) as a stored sparse
     # entry, which rref then takes for a pivot; to_dense().to_sparse() drops it.
@@ -443,15 +453,16 @@ def _folded_squares(expr: sp.Expr) -> sp.Expr | None:
     return sp.cancel(numerator / denominator).xreplace(back)
 
 
-def _positive(factor: sp.Expr) -> bool:
+def _positive(factor: sp.Expr, placed: tuple[sp.Expr, ...] = ()) -> bool:
     """Whether a factor is positive for every value of its symbols (positive ones) and angles: each
-    sine and cosine put in [-1, 1] by sympy's interval arithmetic (AccumBounds).
+    sine and cosine put in [-1, 1] by sympy's interval arithmetic (AccumBounds); or is one of the
+    `placed` factors (positive where the file places the bodies, a condition of every variant).
 
     >>> R, th = sp.symbols("R theta", positive=True)
     >>> _positive(sp.cos(th)**2 + 20*sp.cos(th) + 101), _positive(R + sp.cos(th))
     (True, False)
     """
-    if factor.is_positive:
+    if factor.is_positive or any(sp.expand(factor - p) == 0 for p in placed):
         return True
     bounded = factor.xreplace({f: sp.AccumBounds(-1, 1) for f in factor.atoms(sp.sin, sp.cos)})
     if bounded.free_symbols:
@@ -490,7 +501,7 @@ def _factors(expr: sp.Expr) -> list[tuple[sp.Expr, sp.Integer]]:
     return pairs
 
 
-def _unsigned(value: sp.Expr) -> sp.Expr:
+def _unsigned(value: sp.Expr, placed: tuple[sp.Expr, ...] = ()) -> sp.Expr:
     """|value|, with the sign of each factor taken out where it is the same for all values of its
     symbols (sympy writes a tangent length sqrt((R*cos(theta) + 10*R)**2) as Abs(R*cos(theta) + 10*R)).
 
@@ -502,16 +513,16 @@ def _unsigned(value: sp.Expr) -> sp.Expr:
         return sp.Abs(value)
     signed, unknown = sp.Integer(1), sp.Integer(1)
     for factor, power in _factors(value):
-        if _positive(factor):
+        if _positive(factor, placed):
             signed *= factor ** power
-        elif _positive(-factor):
+        elif _positive(-factor, placed):
             signed *= (-factor) ** power
         else:
             unknown *= factor ** power
     return signed * sp.Abs(unknown)
 
 
-def _root_factors(base: sp.Expr, exp: sp.Rational) -> sp.Expr:
+def _root_factors(base: sp.Expr, exp: sp.Rational, placed: tuple[sp.Expr, ...] = ()) -> sp.Expr:
     """base**exp with sin^2 + cos^2 folded in the base, and each factor of it that is positive for
     all values (_positive) raised on its own: the tangent length of a cord from a pulley at
     (R sin(theta), R cos(theta)) to a block 10 R below it, sqrt(R**2*(cos(theta) + 10)**2), is then
@@ -525,29 +536,32 @@ def _root_factors(base: sp.Expr, exp: sp.Rational) -> sp.Expr:
     """
     whole, kept = sp.Integer(1), sp.Integer(1)
     for factor, power in _factors(base):
-        if _positive(factor):
+        if _positive(factor, placed):
             whole *= factor ** (power * exp)
+        elif power % 2 == 0 and _positive(-factor, placed):  # (h - R)**2 where R - h is placed positive
+            whole *= (-factor) ** (power * exp)
         else:
             kept *= factor ** power
     return whole * kept ** exp
 
 
-def radicals(expr):
+def radicals(expr, placed: tuple[sp.Expr, ...] = ()):
     """expr (or a matrix) with each root of a base of symbols, sines and cosines written by
     _root_factors, and each Abs by _unsigned: what a cord's tangent geometry needs before it
-    cancels.
+    cancels. `placed`: factors positive as the file places the scene (a hanging block's run |h - R|
+    is h - R where it hangs below its pulley).
 
     >>> R, th = sp.symbols("R theta", positive=True)
     >>> radicals(sp.sqrt(R**2*sp.sin(th)**2 + R**2*sp.cos(th)**2 + 3*R**2) + sp.Abs(sp.cos(th) - 2))
     2*R - cos(theta) + 2
     """
-    roots = {a: _root_factors(a.base, a.exp) for a in expr.atoms(sp.Pow)
+    roots = {a: _root_factors(a.base, a.exp, placed) for a in expr.atoms(sp.Pow)
              if a.exp.is_Rational and not a.exp.is_Integer and _rational_trigonometric(a.base)}
     expr = expr.xreplace(roots)
-    return expr.xreplace({a: _unsigned(a.args[0]) for a in expr.atoms(sp.Abs)})
+    return expr.xreplace({a: _unsigned(a.args[0], placed) for a in expr.atoms(sp.Abs)})
 
 
-def _as_rational(matrix: sp.Matrix) -> tuple[sp.Matrix, dict]:
+def _as_rational(matrix: sp.Matrix, placed: tuple[sp.Expr, ...] = ()) -> tuple[sp.Matrix, dict]:
     """The matrix as rational functions of new symbols (generators), and the map back.
 
     Roots and functions of the coordinates (a curved track's sqrt, an atan2) become generators,
@@ -557,7 +571,7 @@ def _as_rational(matrix: sp.Matrix) -> tuple[sp.Matrix, dict]:
     (R**2 + h**2)**(3/2) and sqrt(1 - R**2/(R**2 + h**2)) = h/sqrt(R**2 + h**2) cancel where
     they meet (as independent generators they made a stepped pulley's system too slow to solve).
     """
-    matrix = radicals(matrix)
+    matrix = radicals(matrix, placed)
     roots = {a: sp.factor(sp.together(a.base)) ** a.exp for a in matrix.atoms(sp.Pow)
              if a.exp.is_Rational and not a.exp.is_Integer and not a.base.has(sp.Function)}
     matrix = matrix.xreplace(roots)

@@ -327,9 +327,9 @@ def _solve(scene: Scene, coords: Coordinates, before: dict, route: str, bounce: 
             "Impulse and momentum of each body in the impact: only the joints' forces give impulses, and the joints "
             "hold after (each force's symbol stands for its impulse)")
     unknowns = [c.u for c in coords.all] + forces
-    solution = solve_linear(equations, unknowns)
-    velocities = {c.u: tidy(solution.raw[c.u]) for c in coords.all}
-    impulses = {f: tidy(solution.raw[f]) for f in forces}
+    solution = solve_linear(equations, unknowns, scene.placed)
+    velocities = {c.u: tidy(solution.raw[c.u], scene.placed) for c in coords.all}
+    impulses = {f: tidy(solution.raw[f], scene.placed) for f in forces}
     steps = (Step(text, tuple(equations)),
              Step("Just after the impact", tuple(sp.Eq(u, v) for u, v in velocities.items() if v != 0)))
     return Impact(velocities, impulses, steps)

@@ -290,8 +290,8 @@ def _after(scene: Scene, after: Scene, coords: Coordinates, before: dict, kept: 
         raise MoveLimit(f"find the rates after this {what}: it keeps {named}, and with the joints that does not fix "
                         f"them (derive models {what}s during which no force from outside changes a momentum; a "
                         "weight's moment about a pivot does)")
-    solution = solve_linear([equations[i] for i in chosen], [c.u for c in coords.all])
-    values = {**positions, **{c.u: tidy(solution.raw[c.u]) for c in coords.all}}
+    solution = solve_linear([equations[i] for i in chosen], [c.u for c in coords.all], scene.placed)
+    values = {**positions, **{c.u: tidy(solution.raw[c.u], scene.placed) for c in coords.all}}
     fixed = len(conditions) + len(extra)
     used = [(kept[i - fixed], equations[i]) for i in chosen if i >= fixed]
     steps = (Step(f"Forces from outside the moving bodies have no moment (no component) here, so the {what} keeps "

@@ -83,35 +83,17 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
     says so (`proven` False).
     """
     coords = Coordinates(scene)
-    positions = [c.q for c in coords.all]
-    reference = {q: 0 for q in positions}
-    at_rest = {c.u: 0 for c in coords.all}
-    gaps = [g for c in scene.constraints for g in c.gaps(coords)]
-    jacobian = sp.Matrix(gaps).jacobian(positions).xreplace(reference) if gaps else sp.zeros(0, len(positions))
-    free = [tidy(x) for x in jacobian.nullspace(simplify=True)] if gaps else [
-        sp.Matrix([1 if i == j else 0 for j in range(len(positions))]) for i in range(len(positions))]
+    free = free_directions(scene, coords)
     if len(free) != 1:
         raise OscillationError(f"small oscillations need one degree of freedom; the scene has {len(free)}")
     (direction,) = free
-    order = sorted(range(len(positions)), key=lambda i: (coords.all[i].kind != "theta", i))
+    order = sorted(range(len(coords.all)), key=lambda i: (coords.all[i].kind != "theta", i))
     k = next(i for i in order if direction[i] != 0)
     direction = (direction / direction[k]).applyfunc(tidy)
     coordinate = coords.all[k]
-    equilibrium = derivation.at({**reference, **at_rest}).raw
-    moving = [c.a for c in coords.all if not sp.simplify(equilibrium[c.a]).equals(0)]
-    if moving:
-        raise OscillationLimit(f"find the equilibrium of a scene placed away from it (released at rest, {moving[0]} "
-                               "is not zero): place the bodies at the equilibrium with at: and angle:")
-    s = sp.Dummy("s")
-    first = {u: sp.Dummy(f"d{u}") for u in derivation.unknowns}
-    along = {q: direction[i] * s for i, q in enumerate(positions)}
-    linear_equations = []
-    for e in derivation.at_rest_equations:
-        residual = (e.lhs - e.rhs).xreplace(at_rest).xreplace(along)
-        residual = residual.xreplace({u: equilibrium[u] + s * first[u] for u in derivation.unknowns})
-        linear_equations.append(sp.Eq(sp.diff(residual, s).xreplace({s: 0}), 0))
-    slope = solve_linear(linear_equations, list(first.values())).raw[first[coordinate.a]]
-    stiffness = tidy(-slope)
+    equilibrium = at_equilibrium(derivation, coords)
+    slope = first_order(derivation, coords, direction, equilibrium)[coordinate.a]
+    stiffness = tidy(-slope, scene.placed)
     proven = stiffness.is_positive is True or stiffness.is_negative is True
     if proven:
         stable = bool(stiffness.is_positive)
@@ -134,6 +116,51 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
         steps = (linear, Step("Unstable: a small displacement grows exponentially, at the rate",
                               (sp.Eq(GROWTH_RATE, oscillation.quantity("growth_rate")),)))
     return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping)
+
+
+def free_directions(scene: Scene, coords: Coordinates) -> list[sp.Matrix]:
+    """The directions the coordinates may move in from the reference configuration to first
+    order: the null space of the constraints' Jacobian there (every coordinate's own direction
+    where nothing constrains them).
+
+    >>> from derive.scene import Body, Scene
+    >>> scene = Scene({"ball": Body("ball", "point", sp.Symbol("m"), {})})
+    >>> [list(v) for v in free_directions(scene, Coordinates(scene))]
+    [[1, 0], [0, 1]]
+    """
+    positions = [c.q for c in coords.all]
+    gaps = [g for c in scene.constraints for g in c.gaps(coords)]
+    if not gaps:
+        return [sp.Matrix([1 if i == j else 0 for j in range(len(positions))]) for i in range(len(positions))]
+    jacobian = sp.Matrix(gaps).jacobian(positions).xreplace({q: 0 for q in positions})
+    return [tidy(x) for x in jacobian.nullspace(simplify=True)]
+
+
+def at_equilibrium(derivation: Derivation, coords: Coordinates) -> dict:
+    """The accelerations and forces in the reference configuration at rest, which must be an
+    equilibrium (every acceleration zero); an engine limit otherwise."""
+    equilibrium = derivation.at(coords.at_rest_in_reference()).raw
+    moving = [c.a for c in coords.all if not sp.simplify(equilibrium[c.a]).equals(0)]
+    if moving:
+        raise OscillationLimit(f"find the equilibrium of a scene placed away from it (released at rest, {moving[0]} "
+                               "is not zero): place the bodies at the equilibrium with at: and angle:")
+    return equilibrium
+
+
+def first_order(derivation: Derivation, coords: Coordinates, direction, equilibrium: dict) -> dict:
+    """z1 of every acceleration and force z = z0 + s z1 at rest along q = direction * s: from
+    d/ds (A z - b) = 0 at s = 0, one linear solve with A at the reference (z0: `equilibrium`)."""
+    s = sp.Dummy("s")
+    at_rest = {c.u: 0 for c in coords.all}
+    first = {u: sp.Dummy(f"d{u}") for u in derivation.unknowns}
+    along = {c.q: direction[i] * s for i, c in enumerate(coords.all)}
+    linear_equations = []
+    for e in derivation.at_rest_equations:
+        residual = (e.lhs - e.rhs).xreplace(at_rest).xreplace(along)
+        residual = residual.xreplace({u: equilibrium[u] + s * first[u] for u in derivation.unknowns})
+        linear_equations.append(sp.Eq(sp.diff(residual, s).xreplace({s: 0}), 0))
+    solved = solve_linear(linear_equations, list(first.values()), derivation.placed).raw
+    return {u: solved[first[u]] for u in derivation.unknowns}
 
 
 def _damping(scene: Scene, derivation: Derivation, coords: Coordinates, direction, coordinate: Coordinate) -> sp.Expr:
