@@ -1002,9 +1002,9 @@ class Solution(StateAnswers, CrossChecks):
         return Step(
             f"Integrate over the {body.shape} (mass from the same uniform density)",
             (
-                sp.Eq(sp.Symbol("M"), derived.mass_integral.xreplace(mapping)),
-                sp.Eq(sp.Symbol("I"), derived.integral.xreplace(mapping)),
-                sp.Eq(sp.Symbol("I"), derived.I.xreplace(mapping)),
+                sp.Eq(body.mass, derived.mass_integral.xreplace(mapping), evaluate=False),  # the body's own mass
+                sp.Eq(sp.Symbol(ask.name), derived.integral.xreplace(mapping)),  # the ask's name, as the results
+                sp.Eq(sp.Symbol(ask.name), derived.I.xreplace(mapping)),
             ),
         )
 

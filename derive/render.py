@@ -18,7 +18,7 @@ from jinja2.sandbox import SandboxedEnvironment
 from sympy.printing.conventions import split_super_sub
 from sympy.printing.latex import translate
 
-from derive import latex_safety, library
+from derive import latex_safety, library, printed_form
 
 @lru_cache(maxsize=1024)  # a problem's id, title and the set's are escaped in every variant
 def tex_escape(text: str) -> str:
@@ -63,50 +63,15 @@ def symbol_latex(name: str) -> str:
 
 
 def latex_of(expression) -> str:
-    r"""sympy's LaTeX for an expression or equation, its symbols named by symbol_latex, its square
-    roots collected (`collected_roots`).
+    r"""sympy's LaTeX for an expression or equation, its symbols named by symbol_latex, in the
+    grouping a textbook prints (`printed_form.textbook`: one square root, sin for cos tan).
 
     >>> latex_of(sp.Eq(sp.Symbol("Omega_fast"), sp.Symbol("M") * sp.Symbol("Rcm")))
     '\\Omega_{\\mathrm{fast}} = M R_{\\mathrm{cm}}'
     """
     named = {s: symbol_latex(s.name) for s in getattr(expression, "free_symbols", ())
              if isinstance(s, sp.Symbol) and not isinstance(s, sp.Dummy)}  # a Dummy keeps sympy's own mark
-    return sp.latex(collected_roots(expression), symbol_names=named)
-
-
-def collected_roots(expression):
-    r"""The square roots of a product written as one, as a textbook writes them: sympy splits
-    sqrt(I g l m) into four roots when the symbols are positive, so the printed form is rebuilt
-    unevaluated (for printing only: the value is the same).
-
-    >>> I, g, l, m = sp.symbols("I g l m", positive=True)
-    >>> sp.latex(collected_roots(2 * sp.sqrt(I * g * l * m) / 3)), sp.latex(collected_roots(1 / sp.sqrt(I * g)))
-    ('\\frac{2 \\sqrt{I g l m}}{3}', '\\frac{1}{\\sqrt{I g}}')
-    """
-    if not isinstance(expression, sp.Basic):
-        return expression
-
-    def combined(product):
-        roots = {1: [], -1: []}
-        rest = []
-        for factor in product.args:
-            if isinstance(factor, sp.Pow) and factor.exp in (sp.Rational(1, 2), sp.Rational(-1, 2)):
-                roots[1 if factor.exp > 0 else -1].append(factor.base)
-            else:
-                rest.append(factor)
-        for sign, bases in roots.items():
-            if len(bases) > 1:  # one root; under a fraction bar as 1/root, which the printer keeps whole
-                root = sp.Pow(sp.Mul(*bases, evaluate=False), sp.Rational(1, 2), evaluate=False)
-                rest.append(root if sign > 0 else sp.Pow(root, -1, evaluate=False))
-            else:
-                rest += [sp.Pow(b, sp.Rational(sign, 2), evaluate=False) for b in bases]
-        return sp.Mul(*rest, evaluate=False)
-
-    def several_roots(e) -> bool:
-        return isinstance(e, sp.Mul) and max(
-            sum(1 for f in e.args if isinstance(f, sp.Pow) and f.exp == sign * sp.Rational(1, 2)) for sign in (1, -1)) > 1
-
-    return expression.replace(several_roots, combined)
+    return sp.latex(printed_form.textbook(expression), symbol_names=named)
 
 
 @lru_cache(maxsize=1)

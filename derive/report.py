@@ -17,7 +17,7 @@ import json
 
 import sympy as sp
 
-from derive import numeric, render, units
+from derive import notation, numeric, render, units
 from derive.terminal import indented, pretty
 from derive.answers import Solution
 from derive.mechanics.derivation import at_state
@@ -108,7 +108,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
                 ratio = numeric.evaluate(solution.expression(name) / solution.expression(ask.exact) - 1, values, 3)
                 error = ratio
             answers[name]["approximation"] = {"exact": ask.exact, "relative_error": error}
-    steps = solution.steps()
+    steps = notation.named(problem, solution, solution.steps())  # the names the worked solution prints
     kinds = {a.quantity.kind for a in problem.asks.values()}
     equations = {route: [sp.sstr(e) for e in route_equations]
                  for route, route_equations in equations_of_motion(solution).items()}

@@ -24,8 +24,8 @@ from typing import Sequence
 
 import sympy as sp
 
-from derive import (distractors, export, figure, figure_files, json_text, limiting_cases, lms, numeric, output_folder,
-                    render, typesetting, units)
+from derive import (distractors, export, figure, figure_files, json_text, limiting_cases, lms, notation, numeric,
+                    output_folder, render, typesetting, units)
 from derive.answers import Solution
 from derive.defaults import Defaults
 from derive.errors import InputError
@@ -300,14 +300,15 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
     routes = []
     all_steps = solution.steps()
     diagrams = _free_body_diagrams(solution) if "newton_euler" in all_steps else {}
+    printed = notation.named(problem, solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
     for route, steps in all_steps.items():
         shown, solved = [], []  # the numbers of the equations this route solves
-        for s in steps:
+        for original, s in zip(steps, printed[route]):
             numbers = [next(numbered) for _ in s.equations]
             solved += numbers if s.role == "equations" else []
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
             shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
-                          "diagram": diagrams.get(id(s), ""),
+                          "diagram": diagrams.get(id(original), ""),
                           "sentences": [sentence.latex() for sentence in s.sentences]})
         routes.append({"title": route_title(route), "steps": shown})
     answers = [

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import KINETIC, Step, root, tidy
+from derive.mechanics.derivation import KINETIC, POTENTIAL, Step, root, tidy
 from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
 from derive.scene import Scene
@@ -53,7 +53,7 @@ def speed_after_drop(scene: Scene, body: str, drop: sp.Expr) -> EnergyBalance:
     speed = root(-potential_change / k)
     v = sp.Symbol("v")
     steps = (
-        Step("Kinetic and potential energy", (sp.Eq(KINETIC, kinetic), sp.Eq(sp.Symbol("V"), potential))),
+        Step("Kinetic and potential energy", (sp.Eq(KINETIC, kinetic), sp.Eq(POTENTIAL, potential))),
         Step("With the constraints, in the speed v of the center", (sp.Eq(KINETIC, k * v**2),)),
         Step(f"Energy conservation from rest as the center drops {sp.sstr(drop)}",
              (sp.Eq(k * v**2, -potential_change), sp.Eq(v, speed))),

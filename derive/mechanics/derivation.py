@@ -24,6 +24,13 @@ from derive.mechanics import jets
 #: a name that starts with a backslash as it is (a problem file's names are identifiers).
 KINETIC = sp.Symbol("K")
 LAGRANGIAN = sp.Symbol(r"\mathcal{L}")
+POTENTIAL = sp.Symbol("V")
+#: The period of small oscillations, the period at an amplitude and the growth rate the steps solve
+#: for (derive.notation prints each by the name of the ask of it, and renames one a problem file's
+#: name takes with another meaning).
+PERIOD = sp.Symbol("T")
+EXACT_PERIOD = sp.Symbol("T_exact")
+GROWTH_RATE = sp.Symbol("a")
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, tidy
+from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.states import Path, Reached, Stops, reach
 from derive.scene import Scene
@@ -72,5 +72,5 @@ def period(scene: Scene, coords: Coordinates, coordinate: Coordinate, amplitude:
     steps = (Step("Released from rest at the amplitude, the turning point on the other side",
                   tuple(sp.Eq(c.q, turned.values[c.q]) for c in coords.all if c == coordinate)),
              *turned.steps, step,
-             Step("It comes back the same way: the period is twice that time", (sp.Eq(sp.Symbol("T"), 2 * half),)))
+             Step("It comes back the same way: the period is twice that time", (sp.Eq(EXACT_PERIOD, 2 * half),)))
     return 2 * half, steps, turned

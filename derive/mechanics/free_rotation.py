@@ -23,7 +23,7 @@ omega3 along the axis with omega_t across it:
 Steady rotation about a principal axis at a rate W (three distinct moments): small changes
 grow or oscillate as e^(s t) with s^2 = -(Ik - Ii)(Ik - Ij) W^2 / (Ii Ij), Ik the axis's moment:
 by Euler's equations linearized (their Jacobian's characteristic polynomial, s (s^2 - s_k^2));
-by Lagrange's equations in ZXY angles (phi about N.z, then small a, b) linearized about
+by Lagrange's equations in ZXY angles (phi about N.z, then small beta, gamma) linearized about
 phi' = W, whose determinant is I s (s^2 + W^2)(...) (s^2 + W^2: the axis of rotation tilted, the
 body still turning rigidly about it), divided exactly. Stable (a wobble at sqrt(-s^2)) about
 the axes of least and greatest moment, unstable (growing at sqrt(s^2)) about the intermediate
@@ -42,7 +42,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.derivation import KINETIC, Step, tidy
 from derive.scene import FREE_ROTATION_QUANTITIES
 
 ROUTES = ("newton_euler", "lagrange")
@@ -93,9 +93,9 @@ def symmetric(moments) -> tuple[sp.Expr, sp.Expr, str]:
 def _free_body(moments, order: str):
     """(ground, body frame, Euler angles, Lagrangian) of a free body of principal moments
     `moments` along its frame's x, y, z, turned by 'Body' angles in `order` (ZXZ: phi, theta,
-    psi; ZXY: phi, then the small a and b)."""
+    psi; ZXY: phi, then the small beta and gamma: not a and b, a box's sides)."""
     ground = me.ReferenceFrame("N")
-    angles = me.dynamicsymbols("phi theta psi" if order == "ZXZ" else "phi a b")
+    angles = me.dynamicsymbols("phi theta psi" if order == "ZXZ" else "phi beta gamma")
     frame = ground.orientnew("B", "Body", angles, order)
     center = me.Point("O")
     center.set_vel(ground, 0)
@@ -119,8 +119,10 @@ def steps(moments, route: str, orders: tuple[str, ...]) -> list[Step]:
     >>> steps((1, 1, 2), "newton_euler", ())[1].equations[0]
     Eq(omegadot_1, -omega_2*omega_3)
     """
+    named = [(sp.Symbol(f"I_{k}"), m) for k, m in zip((1, 2, 3), moments)]
     result = [Step("The principal moments about the center of mass, along the body's own axes",
-                   tuple(sp.Eq(sp.Symbol(f"I_{k}"), m, evaluate=False) for k, m in zip((1, 2, 3), moments)))]
+                   tuple(sp.Eq(s, m, evaluate=False) for s, m in named  # not I_1 = I_1 for a parameter I1
+                         if not (isinstance(m, sp.Symbol) and m.name.replace("_", "") == s.name.replace("_", ""))))]
     if route == "newton_euler":
         rates, w = _euler_rates(moments)
         return [*result, Step("Euler's equations with no torque, in the body's principal axes",
@@ -128,10 +130,10 @@ def steps(moments, route: str, orders: tuple[str, ...]) -> list[Step]:
                               role="equations")]
     for order in orders:
         turned = {"ZXZ": "phi about L, theta from it, psi about the symmetry axis",
-                  "ZXY": "phi about the steady axis, then small turns a and b across it"}[order]
+                  "ZXY": "phi about the steady axis, then small turns beta and gamma across it"}[order]
         _, _, angles, lagrangian = _free_body(moments, order)
         result.append(Step(f"The kinetic energy in Euler angles ({turned}), the Lagrangian of the free body",
-                           (sp.Eq(sp.Symbol("T"), tidy(_plain(lagrangian, angles))),), role="equations"))
+                           (sp.Eq(KINETIC, tidy(_plain(lagrangian, angles))),), role="equations"))
     return result
 
 

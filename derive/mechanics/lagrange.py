@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import (FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, Derivation, Step, at_state, part_sentences,
+from derive.mechanics.derivation import (FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, POTENTIAL, Derivation, Step, at_state, part_sentences,
                                         rest_positions, simplest, worth_showing)
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
@@ -67,7 +67,7 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     # show them where the answers are read, in the reference configuration at rest.
     rest = coords.at_rest_in_reference()
     steps = [
-        Step("Kinetic and potential energy", (sp.Eq(KINETIC, kinetic), sp.Eq(sp.Symbol("V"), potential)),
+        Step("Kinetic and potential energy", (sp.Eq(KINETIC, kinetic), sp.Eq(POTENTIAL, potential)),
              sentences=tuple(part_sentences(scene, coords, "lagrange"))),
         Step("The Lagrangian, kinetic less potential energy", (sp.Eq(LAGRANGIAN, lagrangian),)),
     ]

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, root, solve_linear, tidy
+from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, Step, root, solve_linear, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.scene import Scene
 
@@ -105,7 +105,7 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
     else:
         stable = sample(stiffness) > 0
     damping = _damping(scene, derivation, coords, direction, coordinate)
-    q, rate = coordinate.q, sp.Symbol(str(coordinate.u))
+    q, rate = coordinate.q, coordinate.u  # the coordinate's own rate, as every other step names it
     linear = Step("The equation of motion to first order in a small displacement from rest"
                   + (" and in its rate (the damping)" if damping else ""),
                   (sp.Eq(coordinate.a, -stiffness * q - damping * rate),))
@@ -114,10 +114,10 @@ def small_oscillation(scene: Scene, derivation: Derivation, sample=None) -> Osci
         steps = (linear, Step("Angular frequency and period of small oscillations" +
                               (", the damping lowering the frequency" if damping else ""),
                               (sp.Eq(sp.Symbol("omega"), oscillation.quantity("omega")),
-                               sp.Eq(sp.Symbol("T"), oscillation.quantity("period")))))
+                               sp.Eq(PERIOD, oscillation.quantity("period")))))
     else:
         steps = (linear, Step("Unstable: a small displacement grows exponentially, at the rate",
-                              (sp.Eq(sp.Symbol("a"), oscillation.quantity("growth_rate")),)))
+                              (sp.Eq(GROWTH_RATE, oscillation.quantity("growth_rate")),)))
     return Oscillation(coordinate, stiffness, steps, stable, tuple(direction), proven, damping, first)
 
 
@@ -200,8 +200,8 @@ def exact_period(scene: Scene, derivation: Derivation, amplitude: sp.Expr) -> tu
     steps = (
         Step("The equation of motion has the pendulum form", (sp.Eq(linear.coordinate.a, ratio * sp.sin(q)),)),
         Step("Energy from the turning point; the substitution below makes the time an elliptic integral",
-             (sp.Eq(sp.sin(q / 2), k * sp.sin(chi)), sp.Eq(sp.Symbol("T"), 4 * sp.Integral(1 / (rate * sp.sqrt(1 - k**2 * sp.sin(chi) ** 2)),
+             (sp.Eq(sp.sin(q / 2), k * sp.sin(chi)), sp.Eq(EXACT_PERIOD, 4 * sp.Integral(1 / (rate * sp.sqrt(1 - k**2 * sp.sin(chi) ** 2)),
                                                      (chi, 0, sp.pi / 2))),)),
-        Step("The complete elliptic integral of the first kind", (sp.Eq(sp.Symbol("T"), period),)),
+        Step("The complete elliptic integral of the first kind", (sp.Eq(EXACT_PERIOD, period),)),
     )
     return period, steps

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.derivation import KINETIC, Step, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 
@@ -53,15 +53,15 @@ def rolling(scene: Scene, body: str, route: str) -> tuple[dict[str, sp.Expr], tu
         translational = tidy(rigid.mass * speed**2 / 2)
         total = tidy(translational + rotational)
         energy = Step("Kinetic energy: translation of the center plus rotation about it",
-                      (sp.Eq(sp.Symbol("K"), sp.Symbol("M") * sp.Symbol("v") ** 2 / 2 + sp.Symbol("I_cm") * w**2 / 2),
-                       sp.Eq(sp.Symbol("K"), total)))
+                      (sp.Eq(KINETIC, sp.Symbol("M") * sp.Symbol("v") ** 2 / 2 + sp.Symbol("I_cm") * w**2 / 2),
+                       sp.Eq(KINETIC, total)))
     else:
         about_contact = tidy(rigid.inertia + rigid.mass * radius**2)
         total = tidy(about_contact * omega**2 / 2)
         translational = tidy(total - rotational)
         energy = Step("Kinetic energy as a rotation about the contact point, its moment of inertia by the "
                       "parallel-axis theorem",
-                      (sp.Eq(sp.Symbol("I_P"), about_contact), sp.Eq(sp.Symbol("K"), total)))
+                      (sp.Eq(sp.Symbol("I_P"), about_contact), sp.Eq(KINETIC, total)))
     values = {
         "angular_velocity": omega,
         "distance_per_turn": tidy(2 * sp.pi * speed / sp.Abs(omega)),
@@ -76,6 +76,6 @@ def rolling(scene: Scene, body: str, route: str) -> tuple[dict[str, sp.Expr], tu
             sp.Eq(sp.Symbol("d"), values["distance_per_turn"]),)),
         energy,
         Step("The share of the kinetic energy in rotation", (
-            sp.Eq(sp.Symbol("K_rot") / sp.Symbol("K"), values["rotational_fraction"]),)),
+            sp.Eq(sp.Symbol("K_rot") / KINETIC, values["rotational_fraction"]),)),
     )
     return values, steps

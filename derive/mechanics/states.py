@@ -37,7 +37,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, root, tidy
+from derive.mechanics.derivation import KINETIC, Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
 from derive.scene import TIME, Scene
@@ -388,10 +388,10 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     """The state on the path where the condition first holds, what must stay positive on the way,
     and the steps that found it."""
     s, speed, s0 = path.s, path.coordinate.u, path.start[path.s]
-    symbol = sp.Symbol("K")
+    symbol = KINETIC
     steps = [Step(f"The constraints leave one coordinate, {s}; the kinetic energy in its rate",
                   (sp.Eq(symbol, path.inertia * speed**2),)),
-             Step("Work and energy from the start: the constraints do no work, gravity and springs through V, "
+             Step("Work and energy from the start: the constraints do no work, gravity and springs through the potential energy, "
                   "the other loads through their work", (sp.Eq(symbol, path.kinetic),))]
     vanished = ()
     if isinstance(condition, Gets):

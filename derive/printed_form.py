@@ -1,0 +1,177 @@
+r"""Answers printed in the grouping a textbook prints them in; for printing only: the value is the same.
+
+sympy's canonical forms are not the notes': it keeps cos(θ)·tan(θ) where sin(θ) is meant, splits
+the root of a product of positive symbols into one root per symbol, 2π √(I + M R²)/(√M √R √g), and
+leaves sin²(α)/|sin(α)|. `textbook` rewrites a product's sines, cosines and tangents of one angle
+as few functions as it can (cos·tan as sin; sin/cos as tan, where that leaves no fraction of them),
+x²/|x| of a real x as |x|, and the square roots of a product or a quotient as one root (rebuilt
+unevaluated, so that sympy does not split it again).
+
+>>> theta, M, R, g, I = sp.symbols("theta M R g I", positive=True)
+>>> textbook(sp.cos(theta) * sp.tan(theta)), textbook(g * sp.sin(theta) / sp.cos(theta))
+(sin(theta), g*tan(theta))
+>>> sp.latex(textbook(2 * sp.pi * sp.sqrt(I + M * R**2) / (sp.sqrt(M) * sp.sqrt(R) * sp.sqrt(g))))
+'2 \\pi \\sqrt{\\frac{I + M R^{2}}{M R g}}'
+"""
+from __future__ import annotations
+
+from collections import defaultdict
+
+import sympy as sp
+
+HALF = sp.Rational(1, 2)
+
+
+def textbook(expression):
+    """`expression` in the textbook's grouping (a number or a non-sympy object as it is)."""
+    if not isinstance(expression, sp.Basic):
+        return expression
+    return collected_roots(_absolute(_trigonometric(expression)))
+
+
+def _trigonometric(expression: sp.Basic) -> sp.Basic:
+    """Each product's sin^s cos^c tan^t of one angle as sin^(s+t) cos^(c-t), then as tan^n where
+    sin^n/cos^n is all of it.
+
+    >>> x = sp.Symbol("x")
+    >>> _trigonometric(sp.sin(x)**2 / sp.cos(x)**2), _trigonometric(sp.sin(x)**2 / sp.cos(x)), _trigonometric(sp.tan(x) / sp.sin(x))
+    (tan(x)**2, sin(x)**2/cos(x), 1/cos(x))
+    """
+    def trigonometric_product(e) -> bool:
+        return isinstance(e, sp.Mul) and sum(1 for f in e.args if _trig_power(f) is not None) > 1
+
+    def rewritten(product: sp.Mul) -> sp.Expr:
+        powers, rest = defaultdict(lambda: {sp.sin: 0, sp.cos: 0}), []
+        for factor in product.args:
+            found = _trig_power(factor)
+            if found is None:
+                rest.append(factor)
+                continue
+            function, angle, n = found
+            if function is sp.tan:
+                powers[angle][sp.sin] += n
+                powers[angle][sp.cos] -= n
+            else:
+                powers[angle][function] += n
+        for angle, p in powers.items():
+            s, c = p[sp.sin], p[sp.cos]
+            if s != 0 and s == -c:  # sin^n/cos^n: tan^n
+                rest.append(sp.tan(angle) ** s)
+            else:
+                rest += [sp.sin(angle) ** s, sp.cos(angle) ** c]
+        return sp.Mul(*rest)
+
+    return expression.replace(trigonometric_product, rewritten)
+
+
+def _trig_power(factor):
+    """(sin, cos or tan, its angle, its integer power) of a factor that is one, else None."""
+    base, exponent = factor.as_base_exp()
+    if isinstance(base, (sp.sin, sp.cos, sp.tan)) and exponent.is_Integer:
+        return type(base), base.args[0], int(exponent)
+    return None
+
+
+def _absolute(expression: sp.Basic) -> sp.Basic:
+    """x^2/|x| of a real x as |x|.
+
+    >>> a = sp.Symbol("a", real=True)
+    >>> _absolute(sp.acos(sp.sin(a)**2 / sp.Abs(sp.sin(a))))
+    acos(Abs(sin(a)))
+    """
+    def squared_over_absolute(e) -> bool:
+        return isinstance(e, sp.Mul) and any(_cancels(e, f) for f in e.args)
+
+    def rewritten(product: sp.Mul) -> sp.Expr:
+        factor = next(f for f in product.args if _cancels(product, f))
+        x = factor.base.args[0]
+        return product / (x**2 / sp.Abs(x)) * sp.Abs(x)
+
+    return expression.replace(squared_over_absolute, rewritten)
+
+
+def _cancels(product: sp.Mul, factor) -> bool:
+    """Whether `factor` is 1/|x| of a real x and the product has x^2 too."""
+    return (isinstance(factor, sp.Pow) and factor.exp == -1 and isinstance(factor.base, sp.Abs)
+            and factor.base.args[0].is_real is True and sp.Pow(factor.base.args[0], 2) in product.args)
+
+
+def collected_roots(expression):
+    r"""The square roots of a product written as one, as a textbook writes them: sympy splits
+    sqrt(I g l m) into four roots when the symbols are positive, so the printed form is rebuilt
+    unevaluated. Roots over and under the fraction bar become one root of the quotient where every
+    base is nonnegative (sqrt(a)/sqrt(b) is sqrt(a/b) only there); a product nested in a product
+    (2 pi (sqrt(A)/sqrt(B))) is read as one.
+
+    >>> I, g, l, m = sp.symbols("I g l m", positive=True)
+    >>> sp.latex(collected_roots(2 * sp.sqrt(I * g * l * m) / 3)), sp.latex(collected_roots(1 / sp.sqrt(I * g)))
+    ('\\frac{2 \\sqrt{I g l m}}{3}', '\\frac{1}{\\sqrt{I g}}')
+    >>> sp.latex(collected_roots(sp.sqrt(g) / sp.sqrt(l))), sp.latex(collected_roots(sp.sqrt(sp.Symbol("x")) / sp.sqrt(l)))
+    ('\\sqrt{\\frac{g}{l}}', '\\frac{\\sqrt{x}}{\\sqrt{l}}')
+    >>> sp.latex(collected_roots(2 * sp.pi * l**sp.Rational(3, 2) / sp.sqrt(g)))
+    '2 \\pi \\sqrt{\\frac{l^{3}}{g}}'
+    >>> sp.latex(collected_roots(sp.sqrt(3) * sp.sqrt(g) * sp.sqrt(l) / 3)), sp.latex(collected_roots(2 * sp.sqrt(6) * sp.sqrt(l) / (3 * sp.sqrt(g))))
+    ('\\sqrt{\\frac{g l}{3}}', '2 \\sqrt{\\frac{2 l}{3 g}}')
+    """
+    if not isinstance(expression, sp.Basic):
+        return expression
+
+    def combined(product):
+        roots = {1: [], -1: []}
+        rest = []
+        for factor in _flat(product):
+            if _is_root(factor):
+                roots[1 if factor.exp > 0 else -1].append(_radicand(factor))
+            else:
+                rest.append(factor)
+        rest = _coefficient_into_root(rest, roots)
+        if roots[1] and roots[-1] and all(b.is_nonnegative for b in roots[1] + roots[-1]):
+            quotient = sp.Mul(*roots[1]) / sp.Mul(*roots[-1])  # the root itself unevaluated: sympy would split it
+            return sp.Mul(*rest, sp.Pow(quotient, HALF, evaluate=False), evaluate=False)
+        for sign, bases in roots.items():
+            if len(bases) > 1:  # one root; under a fraction bar as 1/root, which the printer keeps whole
+                root = sp.Pow(sp.Mul(*bases, evaluate=False), HALF, evaluate=False)
+                rest.append(root if sign > 0 else sp.Pow(root, -1, evaluate=False))
+            else:
+                rest += [sp.Pow(b, sign * HALF, evaluate=False) for b in bases]
+        return sp.Mul(*rest, evaluate=False)
+
+    def several_roots(e) -> bool:
+        return isinstance(e, sp.Mul) and sum(1 for f in _flat(e) if _is_root(f)) > 1
+
+    return expression.replace(several_roots, combined)
+
+
+def _coefficient_into_root(rest: list, roots: dict) -> list:
+    """The factors outside the roots with their rational numbers as one coefficient, first; its
+    denominator's part that divides the whole number under a root of nonnegative symbols taken into
+    the root: sqrt(3 a g)/3 as sqrt(a g/3), 2 sqrt(6 L/g)/3 as 2 sqrt(2 L/(3 g)) (`roots` changed in
+    place)."""
+    coefficient = sp.Mul(*(f for f in rest if f.is_Rational))
+    rest = [f for f in rest if not f.is_Rational]
+    number = sp.Mul(*(b for b in roots[1] if b.is_Integer))
+    symbols = [b for b in roots[1] + roots[-1] if not b.is_Integer]
+    d = sp.igcd(coefficient.q, number) if number.is_Integer else 1
+    if d > 1 and any(not b.is_Integer for b in roots[1]) and all(b.is_nonnegative for b in symbols):
+        roots[1][:] = ([number / d] if number != d else []) + [b for b in roots[1] if not b.is_Integer]
+        roots[-1].append(sp.Integer(d))
+        coefficient *= d
+    return ([coefficient] if coefficient != 1 else []) + rest
+
+
+def _is_root(factor) -> bool:
+    """A square root or its reciprocal; a power k/2 (k odd) of a nonnegative base too (a^(3/2) is
+    sqrt(a^3))."""
+    if not isinstance(factor, sp.Pow) or not factor.exp.is_Rational or factor.exp.q != 2:
+        return False
+    return abs(factor.exp) == HALF or factor.base.is_nonnegative is True
+
+
+def _radicand(factor: sp.Pow) -> sp.Expr:
+    """What a root (`_is_root`) takes the square root of: a for sqrt(a) and 1/sqrt(a), a^3 for a^(3/2)."""
+    return factor.base ** abs(factor.exp.p)
+
+
+def _flat(product: sp.Mul) -> list:
+    """The factors of a product, a product among them opened (2*pi*(a*b) as 2, pi, a, b)."""
+    return [g for f in product.args for g in (_flat(f) if isinstance(f, sp.Mul) else [f])]

@@ -1,0 +1,86 @@
+"""Issue 15: results print in the textbook's grouping (derive.printed_form), and the printed form is
+the answer: compared with it at random points over every answer of the library and of the textbook
+problems of the tests."""
+import random
+from pathlib import Path
+
+import pytest
+import sympy as sp
+from sympy.polys.polyerrors import PolynomialError
+
+from derive import library, printed_form, render, terminal
+from derive.answers import Solution
+from derive.problem import load
+
+TEXTBOOK = sorted((Path(__file__).parent / "textbook").glob("*.yaml"))
+theta, M, R, g, I = sp.symbols("theta M R g I", positive=True)
+x = sp.Symbol("x", real=True)
+
+
+def numbers(expression, printed, rng: random.Random) -> list[tuple[complex, complex]]:
+    """(the answer, its printed form) at three random points (every symbol in [0.2, 1.4])."""
+    result = []
+    for _ in range(3):
+        point = {s: sp.Rational(rng.randint(200, 1400), 1000) for s in expression.free_symbols}
+        result.append((complex(sp.N(expression.xreplace(point), 30)), complex(sp.N(printed.xreplace(point), 30))))
+    return result
+
+
+@pytest.mark.parametrize("path", library.problem_files() + TEXTBOOK, ids=lambda p: p.stem)
+def test_the_printed_form_is_the_answer(path):
+    problem = load(str(path))
+    solution = Solution(problem)
+    rng = random.Random(path.stem)
+    compared = 0
+    for name in problem.asks:
+        try:
+            answer = solution.expression(name)
+        except PolynomialError:  # derivation.radicals fails on this one, on main too: not a printing matter
+            assert problem.id == "top_precession"
+            continue
+        if answer.atoms(sp.Function, sp.Derivative) - answer.atoms(sp.Piecewise, *_VALUED):
+            continue  # r(t), theta'(t): a kinematics answer with no numbers to compare
+        printed = printed_form.textbook(answer)
+        for exact, shown in numbers(answer, printed, rng):
+            assert abs(exact - shown) <= 1e-20 * max(1, abs(exact)), (name, answer, printed)
+        compared += 1
+    assert compared or problem.id in ("keplers_second_law", "polar_acceleration", "top_precession")  # r(t) only
+
+
+_VALUED = (sp.sin, sp.cos, sp.tan, sp.asin, sp.acos, sp.atan, sp.Abs, sp.elliptic_k, sp.sqrt, sp.exp, sp.log)
+
+
+def test_the_pendulum_s_period_is_one_root():
+    solution = Solution(load("compound_pendulum"))
+    assert render.latex_of(solution.expression("T")) == (
+        r"2 \pi \sqrt{\frac{I_{\mathrm{cm}} + M R_{\mathrm{cm}}^{2}}{M R_{\mathrm{cm}} g}}")
+    assert "√" not in "".join(terminal.pretty(solution.expression("T"))).replace("╲╱", "", 1)
+
+
+def test_sines_cosines_and_tangents_as_few_as_can_be():
+    assert printed_form.textbook(g * sp.cos(theta) * sp.tan(theta)) == g * sp.sin(theta)
+    assert printed_form.textbook(sp.sin(theta) / sp.cos(theta) * M) == M * sp.tan(theta)
+    assert printed_form.textbook(sp.sin(theta) ** 2 / sp.cos(theta) ** 2) == sp.tan(theta) ** 2
+    assert printed_form.textbook(sp.sin(theta) / sp.cos(2 * theta)) == sp.sin(theta) / sp.cos(2 * theta)  # two angles
+    assert printed_form.textbook(sp.sin(theta) ** 2 / sp.cos(theta)) == sp.sin(theta) ** 2 / sp.cos(theta)  # kept
+
+
+def test_a_square_over_its_absolute_value_and_roots_of_unknown_sign():
+    assert render.latex_of(sp.acos(sp.sin(x) ** 2 / sp.Abs(sp.sin(x)))) == (
+        r"\operatorname{acos}{\left(\left|{\sin{\left(x \right)}}\right| \right)}")
+    assert printed_form.textbook(x**2 / sp.Abs(sp.Symbol("z"))) == x**2 / sp.Abs(sp.Symbol("z"))
+    # sqrt(x)/sqrt(g) is sqrt(x/g) only for x >= 0: kept apart
+    assert render.latex_of(sp.sqrt(x) / sp.sqrt(g)) == r"\frac{\sqrt{x}}{\sqrt{g}}"
+    assert render.latex_of(sp.sqrt(M) * sp.sqrt(g) / (sp.sqrt(R) * sp.sqrt(I))) == r"\sqrt{\frac{M g}{I R}}"
+
+
+@pytest.mark.parametrize("where, name, latex", [
+    ("tests/textbook/disk_rolls_upright.yaml", "v_min", r"\sqrt{\frac{a g}{3}}"),  # v^2 = g a/3 (README)
+    ("tests/textbook/rod_end_pendulum.yaml", "T", r"2 \pi \sqrt{\frac{2 L}{3 g}}"),
+    ("tests/textbook/torsion_pendulum.yaml", "T", r"\pi R \sqrt{\frac{2 M}{\kappa}}"),
+    ("kepler_orbit", "P", r"2 \pi \sqrt{\frac{a^{3}}{\mathit{GM}}}"),  # Kepler's third law as written
+    ("tests/textbook/coin_rolls_in_circle.yaml", "V", r"\frac{\sqrt{6 R g \tan{\left(\phi \right)}}}{3}"),  # tan: sign unknown
+])
+def test_a_coefficient_and_powers_taken_into_the_root(where, name, latex):
+    problem = load(str(Path(__file__).parent.parent / where) if where.endswith(".yaml") else where)
+    assert render.latex_of(Solution(problem).expression(name)) == latex
