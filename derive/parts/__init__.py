@@ -160,7 +160,7 @@ def at_placement(expression: sp.Expr, coords) -> sp.Expr:
     """
     if isinstance(expression, sp.MatrixBase):
         return expression.applyfunc(lambda e: at_placement(e, coords))
-    expression = sp.sympify(expression).xreplace({c.q: 0 for c in coords.all})
+    expression = sp.sympify(expression).xreplace({c.q: 0 for c in coords.all})  # safe: the engine's own numbers and expressions, never file text
     if sp.count_ops(expression) >= SHORT:
         return sp.expand(expression)
     return sp.factor(sp.cancel(sp.trigsimp(expression)))
