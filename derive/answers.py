@@ -18,8 +18,8 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (bearings, fixed_point, free_rotation, gyroscope, lagrange, many_bodies, newton_euler,
-                              orbits, paths, quantum, rolling, rolling_coin)
+from derive.mechanics import (gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum, rolling,
+                              rolling_coin)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion
@@ -31,6 +31,7 @@ from derive.mechanics.oscillation import (NotAPendulum, Oscillation, Oscillation
                                          exact_period, free_directions, small_oscillation)
 from derive.crosschecks import CrossChecks, sample_points
 from derive.errors import InputError
+from derive.solid_answers import SolidAnswers
 from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
@@ -38,7 +39,7 @@ from derive.parts.surfaces import Plane
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
-class Solution(StateAnswers, CrossChecks):
+class Solution(StateAnswers, CrossChecks, SolidAnswers):
     """Everything derived for one problem, computed on first use."""
 
     def __init__(self, problem: Problem):
@@ -454,122 +455,6 @@ class Solution(StateAnswers, CrossChecks):
         count = self.scene.internal_forces
         return (*(many_bodies.internal_torque(count, r) for r in ("direct", "pairs")), "direct_vs_pairs")
 
-    def bearing_motion(self, name: str, route: str) -> dict:
-        """L, the bearings' torque and the kinetic energy of a body in bearings by one route
-        (derive.mechanics.bearings.ROUTES)."""
-        body, held = self.scene.bodies[name], self.scene.bearings[name]
-        parts = body.composite.parts if body.composite is not None else None
-        tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        g = self.scene.gravity.g if self.scene.gravity is not None else sp.Integer(0)
-        gravity = (sp.Integer(0), -g * sp.cos(held.incline), -g * sp.sin(held.incline))  # the shaft is N.z
-        return bearings.motion(tensor, held.rate, held.tilt, held.roll, bearings.own_axis(body.shape), route,
-                               body.mass, held.through, gravity, held.apart, held.thrust)
-
-    def _bearings(self, q: Quantity, route: str) -> sp.Expr:
-        held = self.scene.bearings[q.target]
-        return bearings.quantity(self.bearing_motion(q.target, route), q.detail, held.tilt, held.apart)
-
-    def standing_top(self, name: str) -> tuple:
-        """(tensor about the center of mass in the top frame, mass, g, l) of a body on a fixed point
-        (derive.mechanics.fixed_point)."""
-        body, point = self.scene.bodies[name], self.scene.pivot_points[name]
-        if point.inertia is not None:  # a custom body: its symmetry axis is its own z
-            tensor = sp.diag(point.inertia[0], point.inertia[0], point.inertia[1])
-        else:
-            parts = body.composite.parts if body.composite is not None else None
-            tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        standing, distance = fixed_point.standing(tensor, point.offset)
-        return standing, body.mass, self.scene.gravity.g, distance
-
-    def _pivot_point(self, q: Quantity, route: str = "lagrange") -> sp.Expr:
-        """A steady motion of a body on a fixed point by one route; refused for a body that is not
-        a symmetric top about the point."""
-        point, top = self.scene.pivot_points[q.target], self.standing_top(q.target)
-        try:
-            if q.detail == "sleeping.min_spin":
-                return fixed_point.min_spin(*top, route)
-            if q.detail.startswith("nutation."):
-                exact = fixed_point.nutation_frequency(*top, point.spin, point.tilt, route)
-            else:
-                slow, fast = fixed_point.roots(*top, point.spin, point.tilt, route)
-                exact = fast if q.detail == "precession.fast" else slow
-                if exact is None:
-                    raise self.problem.error(f"scene.bodies.{q.target}.pivot_point.tilt", "a horizontal axis has one "
-                                             "steady precession, the slow one: the fast one runs off to infinity")
-        except fixed_point.NotSymmetric as error:
-            raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
-        return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
-
-    def rolling_coin(self, name: str) -> tuple:
-        """(I1, I3, mass, g, radius) of a body rolling on its edge (derive.mechanics.rolling_coin): a
-        custom body's moments as given, a shape's from its tensor (the symmetry axis its own z)."""
-        coin, body = self.scene.rolls_on_edge[name], self.scene.bodies[name]
-        tensor = (sp.diag(coin.inertia[0], coin.inertia[0], coin.inertia[1]) if coin.inertia is not None
-                  else bearings.body_tensor(body.shape, body.mass, body.sizes))
-        return tensor[0, 0], tensor[2, 2], body.mass, self.scene.gravity.g, coin.radius
-
-    def _rolls_on_edge(self, q: Quantity, route: str = "lagrange") -> sp.Expr:
-        """A steady motion on a circle or upright rolling's least speed or spin, by one route."""
-        coin, body = self.scene.rolls_on_edge[q.target], self.rolling_coin(q.target)
-        group, _, what = q.detail.partition(".")
-        if group == "upright":
-            speed = rolling_coin.min_speed(*body, route)
-            return speed if what == "min_speed" else tidy(speed / coin.radius)
-        return rolling_coin.steady(*body, coin.tilt, coin.circle, route)[what]
-    def free_moments(self, name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
-        """The principal moments about the center of mass along the own axes of a body in free
-        rotation (derive.mechanics.free_rotation); refused naming the body where they do not fit."""
-        body, free = self.scene.bodies[name], self.scene.free_rotations[name]
-        if free.inertia is not None:  # a custom body's principal moments
-            tensor = sp.diag(*free.inertia)
-        else:
-            parts = body.composite.parts if body.composite is not None else None
-            tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        try:
-            return free_rotation.principal_moments(tensor)
-        except free_rotation.NotPrincipal as error:
-            raise self.problem.limit(f"find the principal axes of the {name}: {error}; place its parts so that "
-                                     "they are") from None
-        except free_rotation.NotModelled as error:
-            raise self.problem.error(f"scene.bodies.{name}", str(error)) from None
-
-    def free_axis(self, name: str, rank: str) -> int:
-        """The own axis (0, 1, 2) of least, intermediate or greatest moment, ordered at the middle
-        of the ranges (`conditions` keeps the order in every variant)."""
-        moments = self.free_moments(name)
-        try:
-            return free_rotation.ranked(moments, [self._sample(m) for m in moments])[free_rotation.RANKS.index(rank)]
-        except free_rotation.NotModelled as error:
-            raise self.problem.error(f"scene.bodies.{name}", str(error)) from None
-
-    def _free_rotation(self, q: Quantity, route: str = "newton_euler") -> sp.Expr:
-        """A free precession or a steady rotation's wobble or growth rate by one route."""
-        free, moments = self.scene.free_rotations[q.target], self.free_moments(q.target)
-        if q.detail in free_rotation.SYMMETRIC:
-            try:
-                I1, I3, _ = free_rotation.symmetric(moments)
-            except free_rotation.NotModelled as error:
-                raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
-            return free_rotation.precession((I1, I3), free.spin, free.across, q.detail, route)
-        _, rank, kind = q.detail.split(".")
-        squared = free_rotation.exponent_squared(moments, self.free_axis(q.target, rank), free.spin, route)
-        return tidy(sp.sqrt(squared if kind == "growth_rate" else -squared))
-
-    def _free_rotation_steps(self) -> dict[str, list[Step]]:
-        """Each route's equations for the bodies in free rotation, then what it gives for each ask."""
-        result = {}
-        for route, title in zip(free_rotation.ROUTES, ("by Euler's equations", "by Lagrange's equations")):
-            steps = []
-            for name in self.scene.free_rotations:
-                details = {a.quantity.detail for a in self.problem.asks.values() if a.quantity.target == name}
-                orders = tuple(order for order, asked in (("ZXZ", details & set(free_rotation.SYMMETRIC)),
-                                                          ("ZXY", details - set(free_rotation.SYMMETRIC))) if asked)
-                steps += free_rotation.steps(self.free_moments(name), route, orders)
-            asked = tuple(sp.Eq(sp.Symbol(n), self._free_rotation(a.quantity, route), evaluate=False)
-                          for n, a in self.problem.asks.items() if a.quantity.kind == "free_rotation")
-            result[title] = [*steps, Step("Solved for what is asked", asked, role="solve")]
-        return result
-
     @cached_property
     def conditions(self) -> list[tuple[sp.Expr, bool, str]]:
         """(expression, strict, meaning): each expression must be positive (strict) or not
@@ -585,29 +470,7 @@ class Solution(StateAnswers, CrossChecks):
         if orbit is not None and orbit.eccentricity is not None:
             result.append((1 - orbit.eccentricity, True, "e >= 1 is not an ellipse but a parabola or a hyperbola"))
             result.append((orbit.eccentricity, False, "an eccentricity cannot be negative"))
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "pivot_point"
-                     and a.quantity.detail not in ("sleeping.min_spin", "precession.fast_top", "nutation.fast_top")}:
-            point, (tensor, mass, g, distance) = self.scene.pivot_points[name], self.standing_top(name)
-            try:
-                I1, I3 = fixed_point.moments(tensor, mass, distance)
-            except fixed_point.NotSymmetric as error:
-                raise self.problem.error(f"scene.bodies.{name}", f"a steady motion is asked: {error}") from None
-            result.append((tidy(I3**2 * point.spin**2 - 4 * I1 * mass * g * distance * sp.cos(point.tilt)), False,
-                           f"no steady precession of the {name}: the spin is too slow "
-                           "(I3^2 w^2 < 4 I1 m g l cos(theta))"))
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "rolls_on_edge"
-                     and a.quantity.detail.startswith("steady.")}:
-            coin = self.scene.rolls_on_edge[name]  # then Omega^2 > 0 too (tests/test_rolling_coin.py)
-            result.append((tidy(coin.circle - coin.radius * sp.sin(coin.tilt)), True,
-                           f"the {name}'s center would be on or across the axis of its contact point's circle "
-                           "(circle <= radius sin(tilt)): not modelled"))
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "free_rotation"
-                     and a.quantity.detail.startswith("rotation.")}:
-            moments = self.free_moments(name)
-            order = [self.free_axis(name, rank) for rank in free_rotation.RANKS]
-            result += [(tidy(moments[high] - moments[low]), True, f"the {name}'s principal moments change order "
-                        f"here ({'xyz'[low]} and {'xyz'[high]}): the axis of each rank is chosen at the middle of "
-                        "the ranges") for low, high in zip(order, order[1:])]
+        result += self._solid_conditions()
         result += [(placed, True, f"the bodies are not placed as at the middle of the ranges, where "
                                   f"{sp.sstr(placed)} > 0 (a cord's run would turn over): the derivation is for that "
                                   "placement") for placed in self.scene.placed]
