@@ -328,7 +328,7 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
     answers = [
         {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
          "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
-                         typesetting.note(render.tex_escape(a.meaning)))}
+                         typesetting.note(render.tex_escape(a.meaning), tex=siunitx))}
         for n, a in problem.asks.items()
     ]
     symbols = {n: render.latex_of(p.symbol) for n, p in problem.parameters.items()}

@@ -9,7 +9,7 @@ import pytest
 from lxml import etree
 
 from conftest import image_kind, qti_package
-from derive import figure_files, worksheets
+from derive import figure_files, lms, worksheets
 from derive.answers import Solution
 from derive.figure import free_body
 from derive.problem import load
@@ -122,3 +122,10 @@ def test_diagrams_are_drawn_and_compiled_once_per_problem_not_per_variant(built)
     assert drawn.count(WITH) == 1 and drawn.count(WITHOUT) == 0  # the orbit has no Newton–Euler balances
     diagrams = [n for n in compiled if "-free-body-" in n]
     assert sorted(diagrams) == sorted(f"{WITH}-free-body-{body}" for body in _balances(WITH))
+
+
+def test_a_feedback_image_that_is_none_of_the_builds_figures_is_refused():
+    html = '<p><img src="figures/elsewhere.png" alt="image"></p>'
+    with pytest.raises(ValueError, match="figures/elsewhere.png"):
+        lms._feedback(html, {}, lambda image: image.file("png"))
+    assert lms._feedback("<p>No image: a &lt;img&gt; in words</p>", {}, str) == ("<p>No image: a &lt;img&gt; in words</p>", [])

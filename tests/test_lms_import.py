@@ -85,6 +85,10 @@ def test_moodle_feedback_is_the_variants_worked_solution_with_its_numbers(built,
         assert other and not any(re.search(rf"(?<![\d.]){re.escape(n)}(?![\d])", shown) for n in other)
         assert "\\(" in html and "$" not in html  # MathJax's inline delimiters, not TeX's
         assert "tikzpicture" not in html and "<section" not in html and " id=" not in html
+        # Only what MathJax typesets: no box, ragged text or siunitx (shown as errors), no \tag (pandoc's numbers)
+        assert not re.search(r"\\(parbox|raggedright|unit|qty|SI|tag)\b", html), problem
+        meanings = [a["meaning"] for a in key["variants"][0]["problems"][problem]["answers"].values()]
+        assert all(f"\\text{{{meaning}}}" in " ".join(html.split()) for meaning in meanings)  # each result's
 
 
 def test_canvas_has_a_group_per_problem_and_asked_quantity_that_picks_one_variant(canvas, key):
