@@ -95,19 +95,28 @@ class Derivation:
     cascade's time (benchmarks: derive bench). `solution` solves them in general, on first use;
     `at(state)` solves them with some coordinates and velocities given (the reference
     configuration at rest, a state of the motion): with the state put in first, the linear system
-    is far smaller than the general one. `steps` hold the derivation up to the equations;
-    `solving_step` adds the solution for the unknowns a question needs.
+    is far smaller than the general one. `steps` hold the derivation up to the equations, written
+    by `written` on first use (the equations in the reference configuration, the parts' sentences:
+    a derivation whose worked solution nobody reads does not pay for them); `solving_step` adds
+    the solution for the unknowns a question needs.
     """
 
     route: str
     balances: list[sp.Eq]
     unknowns: list[sp.Symbol]
-    steps: list[Step] = field(default_factory=list)
+    written: Callable[[Derivation], list[Step]] = lambda derivation: []
     rates: list[sp.Expr] = field(default_factory=list)
     coords: object = None  # derive.mechanics.kinematics.Coordinates, for the rates' derivatives
     gaps: list[sp.Expr] = field(default_factory=list)  # when each rate is dg/dt of a gap g(q)
     _states: dict = field(default_factory=dict, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def steps(self) -> list[Step]:
+        """The steps up to the equations (written on first use)."""
+        if "steps" not in self._cache:
+            self._cache["steps"] = self.written(self)
+        return self._cache["steps"]
 
     @property
     def placed(self) -> tuple[sp.Expr, ...]:
