@@ -78,6 +78,9 @@ class Oblique:
         """A circle of a world radius about a world normal (an arc of `sweep` degrees from `start`, a
         direction across the normal), as a smooth curve through its projected points."""
         normal = _unit(normal)
+        if sweep == 360 and abs(abs(normal[1]) - 1) < 1e-12:  # in the page's true-shape plane
+            self.fig.add(f"\\draw[{style}] {_pt(page(center))} circle ({_f(radius)});")
+            return
         if start is None:
             start = _cross(normal, (0, 1, 0)) if abs(normal[1]) < 0.9 else _cross(normal, (1, 0, 0))
         u = _unit(start)

@@ -247,7 +247,7 @@ def _rolls_on_edge(fig: _Figure) -> None:
     if coin.tilt is None:
         fig.ground(-1.6, 1.6)
     else:
-        middle = view.world(_scaled(numbers(fig, found["axis"], fixed), scale))
+        middle = _scaled(view.world(numbers(fig, found["axis"], fixed)), drawn / numbers(fig, [coin.circle])[0])
         view.circle(middle, (0, 0, 1), math.hypot(middle[0], middle[1]), "thin, dashed", start=(1, 0, 0))
         view.line(middle, (middle[0], middle[1], 2.6), "axis")
         fig.dimension(page(middle), (0, 0), fig.tex(coin.circle), side=-1, gap=0.45)
@@ -263,7 +263,7 @@ def _rolls_on_edge(fig: _Figure) -> None:
     fig.label(page(_add3(center, axes[2], -0.5)), (1, 0), fig.m(coin.radius))
     view.axes(center, axes, 0.7)
     view.arrow(center, velocity, 1.2, "velocity, dashed", f"${speed_symbol}$")
-    fig.gravity_arrow(page(center), body, 0.8, toward=(1, 0))
+    fig.gravity_arrow(page(center), body, 0.8, toward=(1 if coin.tilt is not None else -1, 0))
     _vectors(view, center, omega, momentum, (1.5, 1.9))
 
 
