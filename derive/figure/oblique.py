@@ -37,7 +37,8 @@ def _cross(u, v):
     return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
 
 
-def _along(at, direction, length):
+def along(at, direction, length: float):
+    """The world point `length` along `direction` from `at`."""
     return tuple(a + length * d for a, d in zip(at, direction))
 
 
@@ -68,7 +69,7 @@ class Oblique:
         """An arrow from a world point along a world direction (any length: it is made `length` cm in
         3D, then projected), labelled at its tip (on the page side `toward`, if given); the arrow's
         run on the page."""
-        start, end = page(at), page(_along(at, _unit(direction), length))
+        start, end = page(at), page(along(at, _unit(direction), length))
         run = (end[0] - start[0], end[1] - start[1])
         node = f" node[anchor={_anchor(*(toward or run))}, inner sep=1.5pt] {{{text}}}" if text else ""
         self.fig.add(f"\\draw[{style}] {_pt(start)} -- {_pt(end)}{node};")
@@ -98,7 +99,7 @@ class Oblique:
         """A curved arrow about a world axis (right-handed: the sense of a positive rate), labelled."""
         across = _cross(_unit(axis), (0, 1, 0)) if abs(_unit(axis)[1]) < 0.9 else (1, 0, 0)
         self.circle(center, axis, radius, "->, thick", start=across, sweep=300)
-        self.label(_along(center, _unit(across), radius + 0.1), _unit(across), text)
+        self.label(along(center, _unit(across), radius + 0.1), _unit(across), text)
 
     def axes(self, center, axes, length: float = 0.9, names=("x'", "y'", "z'")) -> None:
         """A body's own axes (world unit vectors) from its center, thin, labelled."""
@@ -129,7 +130,7 @@ def _solid(view: Oblique, shape: str, sizes: dict, center, axes, composite, scal
         view.dot(center, 0.09)
     elif shape == "rod":
         half = sizes.get("length", 2.0) / 2
-        fig.bar(page(_along(center, x, -half)), page(_along(center, x, half)))
+        fig.bar(page(along(center, x, -half)), page(along(center, x, half)))
     elif shape in ("sphere", "spherical_shell", "thick_spherical_shell"):
         radius = sizes.get("radius", sizes.get("outer_radius", 1.0))
         fig.add(f"\\shade[ball color=gray!35] {_pt(page(center))} circle ({_f(radius)}); "
@@ -137,7 +138,7 @@ def _solid(view: Oblique, shape: str, sizes: dict, center, axes, composite, scal
         view.circle(center, z, radius, "thin, gray")
     elif shape == "cone":
         radius, height = sizes.get("radius", 1.0), sizes.get("height", 2.0)
-        base, apex = _along(center, z, -height / 4), _along(center, z, 3 * height / 4)
+        base, apex = along(center, z, -height / 4), along(center, z, 3 * height / 4)
         view.circle(base, z, radius)
         for side in silhouette(base, z, radius, apex):
             view.line(side, apex)
@@ -157,12 +158,12 @@ def _solid(view: Oblique, shape: str, sizes: dict, center, axes, composite, scal
         radius = sizes.get("radius", sizes.get("outer_radius", 1.0))
         height = sizes.get("height", 0.0) if shape in ("cylinder", "cylindrical_shell") else 0.0
         style = "line width=1.8pt" if shape == "ring" else "body"
-        rims = [_along(center, z, -height / 2), _along(center, z, height / 2)] if height else [center]
+        rims = [along(center, z, -height / 2), along(center, z, height / 2)] if height else [center]
         for rim in rims:
             view.circle(rim, z, radius, style)
         if height:
             for low in silhouette(rims[0], z, radius, rims[1]):
-                view.line(low, _along(low, z, height))
+                view.line(low, along(low, z, height))
         if "inner_radius" in sizes:
             view.circle(center, z, sizes["inner_radius"], "fill=white")
 

@@ -30,8 +30,9 @@ import math
 
 import sympy as sp
 
+from derive.answers import Solution
 from derive.figure.canvas import _clamp, _f, _Figure, _pt
-from derive.figure.oblique import Oblique, page, silhouette
+from derive.figure.oblique import Oblique, along, page, silhouette
 from derive.figure.parts import Undrawable
 from derive.mechanics import bearings, fixed_point, free_rotation, rolling_coin
 
@@ -39,8 +40,7 @@ OMEGA_LABEL, MOMENTUM_LABEL = r"$\vec\omega$", r"$\vec L$"
 OMEGA_STYLE, MOMENTUM_STYLE = "velocity", "very thick, ->, green!40!black"
 
 
-def _solution(fig: _Figure):
-    from derive.answers import Solution  # the figures come after the answers; imported when drawn
+def _solution(fig: _Figure) -> Solution:
     return Solution(fig.problem)
 
 
@@ -49,7 +49,7 @@ def numbers(fig: _Figure, matrix, fixed: dict | None = None) -> tuple[float, ...
     one does not evaluate to a real number."""
     values = []
     for component in sp.Matrix(matrix):
-        value = sp.sympify(component).xreplace(fixed or {}).subs(fig.values)
+        value = component.xreplace(fixed or {}).subs(fig.values)
         number = complex(sp.N(value)) if not value.free_symbols else None
         if number is None or abs(number.imag) > 1e-9 * (1 + abs(number.real)):
             raise Undrawable(f"{component} does not evaluate")
@@ -196,10 +196,11 @@ def _pivot_point(fig: _Figure) -> None:
     fig.line(page((0, 0, 0)), page(cm), "thin, dashed")
     fig.add(f"\\fill {_pt(page(cm))} circle (0.05); \\fill (0,0) circle (0.05);")
     across = (e3[2], -e3[0])  # on the page, to the right of the axis
-    fig.label((page(e3)[0] + 0.08 * -across[0], page(e3)[1] + 0.08 * -across[1]), (-across[0], -across[1]),
+    label_at = page(_scaled(e3, 1.4))
+    fig.label((label_at[0] - 0.08 * across[0], label_at[1] - 0.08 * across[1]), (-across[0], -across[1]),
               fig.m(distance))
     if tilt > 0:
-        fig.arc((0, 0), 1.2, 90 - math.degrees(tilt), 90, fig.tex(point.tilt), label_radius=1.25)
+        fig.arc((0, 0), 0.7, 90 - math.degrees(tilt), 90, fig.tex(point.tilt), label_radius=0.75)
     fig.gravity_arrow(page(cm), body, 1.1, toward=(1, 0))
     view.axes(cm, axes, 0.8)
     view.turning(_scaled(e3, 2.6), e3, 0.25, fig.m(point.spin) if point.spin not in fixed else None)
@@ -259,16 +260,12 @@ def _rolls_on_edge(fig: _Figure) -> None:
     view.circle(center, axes[1], 1.0, "line width=1.8pt" if body.shape == "ring" else "body")
     fig.add(f"\\fill {_pt(page(center))} circle (0.04); \\fill (0,0) circle (0.04);")
     fig.label((0.1, -0.05), (1, -1), "$P$")
-    fig.line(page(center), page(_add3(center, axes[2], -1.0)), "thin")
-    fig.label(page(_add3(center, axes[2], -0.5)), (1, 0), fig.m(coin.radius))
+    fig.line(page(center), page(along(center, axes[2], -1.0)), "thin")
+    fig.label(page(along(center, axes[2], -0.5)), (1, 0), fig.m(coin.radius))
     view.axes(center, axes, 0.7)
     view.arrow(center, velocity, 1.2, "velocity, dashed", f"${speed_symbol}$")
     fig.gravity_arrow(page(center), body, 0.8, toward=(1 if coin.tilt is not None else -1, 0))
     _vectors(view, center, omega, momentum, (1.5, 1.9))
-
-
-def _add3(p, q, k: float):
-    return tuple(a + k * b for a, b in zip(p, q))
 
 
 def _free_rotation(fig: _Figure) -> None:
