@@ -40,10 +40,6 @@ OMEGA_LABEL, MOMENTUM_LABEL = r"$\vec\omega$", r"$\vec L$"
 OMEGA_STYLE, MOMENTUM_STYLE = "velocity", "very thick, ->, green!40!black"
 
 
-def _solution(fig: _Figure) -> Solution:
-    return Solution(fig.problem)
-
-
 def numbers(fig: _Figure, matrix, fixed: dict | None = None) -> tuple[float, ...]:
     """A vector's components at the middle of the ranges, open symbols at `fixed`; Undrawable where
     one does not evaluate to a real number."""
@@ -87,7 +83,7 @@ def _bearings(fig: _Figure) -> None:
     body = fig.scene.bodies[name]
     weighed = fig.scene.gravity is not None
     axis = bearings.own_axis(body.shape)
-    found = _solution(fig).bearing_motion(name, "newton_euler")
+    found = Solution(fig.problem).bearing_motion(name, "newton_euler")
     momentum = numbers(fig, found["angular_momentum"])
     if weighed:
         c, s = math.cos(fig.num(rotation.incline, 0.0)), math.sin(fig.num(rotation.incline, 0.0))
@@ -161,7 +157,7 @@ def _pivot_point(fig: _Figure) -> None:
     name, point = next(iter(fig.scene.pivot_points.items()))
     body = fig.scene.bodies[name]
     try:
-        top = _solution(fig).standing_top(name)
+        top = Solution(fig.problem).standing_top(name)
         fixed, rate = _top_state(fig, name, top)
     except fixed_point.NotSymmetric as error:
         raise Undrawable(str(error)) from None
@@ -226,7 +222,7 @@ def _rolls_on_edge(fig: _Figure) -> None:
     the coin in the page rolling to the right, omega and L along its axle into the page."""
     name, coin = next(iter(fig.scene.rolls_on_edge.items()))
     body = fig.scene.bodies[name]
-    I1, I3, mass, g, radius = _solution(fig).rolling_coin(name)
+    I1, I3, mass, g, radius = Solution(fig.problem).rolling_coin(name)
     speed_symbol = fig.ask_symbol("rolls_on_edge", name, "steady.speed") or fig.ask_symbol(
         "rolls_on_edge", name, "upright.min_speed") or "v"
     if coin.tilt is None:
@@ -275,7 +271,7 @@ def _free_rotation(fig: _Figure) -> None:
     rotation: the body with its own axes and its spin about z."""
     name, free = next(iter(fig.scene.free_rotations.items()))
     body = fig.scene.bodies[name]
-    moments = _solution(fig).free_moments(name)
+    moments = Solution(fig.problem).free_moments(name)
     try:
         transverse, axial, _ = free_rotation.symmetric(moments)
     except free_rotation.NotModelled:
