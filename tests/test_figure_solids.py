@@ -87,16 +87,48 @@ def test_bearings_arrows_are_the_derived_l_and_omega_projected(name):
         assert math.isclose(degrees(drawn[r"$\vec L$"], drawn[r"$\vec\omega$"]), true, abs_tol=0.5)
 
 
-@pytest.mark.parametrize("name", ["top_two_precessions", "gyroscope_wheel"])
-def test_a_tops_omega_and_l_are_the_steady_precessions_own(name):
+SLOW_TOP = """id: slow_top
+title: A slow top
+topic: precession
+parameters:
+  M: {meaning: mass, unit: kg, value: 0.2}
+  R: {meaning: tip to center, unit: m, value: 0.05}
+  I3: {meaning: axial moment, unit: kg*m^2, value: 1e-4}
+  I1: {meaning: transverse moment about the tip, unit: kg*m^2, value: 3e-4}
+  theta: {meaning: tilt, unit: rad, value: 1}
+  w: {meaning: spin, unit: rad/s, value: 90}
+  g: {meaning: gravity, unit: m/s^2, value: 9.81}
+scene:
+  bodies:
+    top:
+      shape: custom
+      mass: M
+      inertia: {axial: I3, transverse: I1}
+      inertia_about: pivot
+      pivot_point: {at: R, tilt: theta, spin: w}
+  loads:
+    - gravity: g
+ask:
+  slow: {meaning: slow precession, of: top.precession.slow, unit: rad/s}
+question: A top spins slowly.
+"""
+
+
+@pytest.mark.parametrize("name", ["top_two_precessions", "gyroscope_wheel", "slow_top"])
+def test_a_tops_omega_and_l_are_the_steady_precessions_own(name, tmp_path):
     """Taylor, Classical Mechanics, ch. 10: in steady precession at the slow rate Omega (the asked
     answer), omega = Omega z + psi' e3 with omega3 = psi' + Omega cos(theta), and L about the tip is
     I1 (omega's part across e3) + I3 omega3 e3, I1 about the tip: written here by hand, the figure's
-    by sympy's RigidBody; both in the page, e3 leaning right by the tilt."""
-    problem = load(TEXTBOOK / f"{name}.yaml")
+    by sympy's RigidBody; both in the page, e3 leaning right by the tilt. A slow top (spun just above
+    the least spin of a steady precession) shows L's two parts dashed: along the axis, and the rest
+    from its tip to L's."""
+    if name == "slow_top":
+        (tmp_path / "slow_top.yaml").write_text(SLOW_TOP)
+        problem = load(tmp_path / "slow_top.yaml")
+    else:
+        problem = load(TEXTBOOK / f"{name}.yaml")
     solution = Solution(problem)
-    ask = "slow" if name == "top_two_precessions" else "Omega"
-    rate = middle(problem, solution.expression(ask))
+    rate = middle(problem, solution.expression("Omega" if name == "gyroscope_wheel" else "slow"))
     point = next(iter(problem.scene.pivot_points.values()))
     tensor, mass, _, distance = solution.standing_top(next(iter(problem.scene.pivot_points)))
     I1 = middle(problem, tensor[0, 0] + mass * distance**2)
@@ -108,6 +140,14 @@ def test_a_tops_omega_and_l_are_the_steady_precessions_own(name):
     drawn = arrows(figure.tikz(problem))
     assert degrees(drawn[r"$\vec\omega$"], page(omega)) < 0.5
     assert degrees(drawn[r"$\vec L$"], page(momentum)) < 0.5
+    parts = re.findall(r"\\draw\[->, thin, dashed, green!40!black\] \(([-\d.]+),([-\d.]+)\) -- \(([-\d.]+),([-\d.]+)\);",
+                       figure.tikz(problem))
+    assert len(parts) == (2 if name == "slow_top" else 0)  # a fast top's L is along its axis within 0.15 cm
+    if parts:
+        (x0, y0, x1, y1), (x2, y2, x3, y3) = [tuple(map(float, p)) for p in parts]
+        assert (x0, y0) == (0, 0) and (x1, y1) == (x2, y2) and degrees((x1, y1), page(axis)) < 0.5
+        tip = re.search(r"green!40!black\] \(0,0\) -- \(([-\d.]+),([-\d.]+)\) node", figure.tikz(problem)).groups()
+        assert (x3, y3) == tuple(map(float, tip))
 
 
 def test_a_rolling_coins_omega_and_l_follow_its_steady_spin_and_precession(tmp_path):
