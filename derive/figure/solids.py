@@ -62,14 +62,15 @@ def _scaled(vector, k: float):
     return tuple(k * c for c in vector)
 
 
-def _vectors(view: Oblique, at, omega, momentum, lengths=(1.7, 2.2)) -> None:
-    """omega and L (derivation's frame) from a world point, at fixed lengths; omega's label beside
-    its tip where the two lie within 15 degrees on the page."""
+def _vectors(view: Oblique, at, omega, momentum, lengths=(1.7, 2.2), beside=None) -> None:
+    """omega and L (derivation's frame) from a world point, at fixed lengths; omega's label on the
+    page side `beside` of its tip, or beside it where the two lie within 15 degrees on the page."""
     omega, momentum = view.world(omega), view.world(momentum)
     runs = [page(v) for v in (omega, momentum)]
     apart = math.degrees(abs(math.atan2(runs[0][0] * runs[1][1] - runs[0][1] * runs[1][0],
                                         runs[0][0] * runs[1][0] + runs[0][1] * runs[1][1])))
-    beside = (-runs[0][1], runs[0][0]) if apart < 15 else None
+    if beside is None and apart < 15:
+        beside = (-runs[0][1], runs[0][0])
     view.arrow(at, omega, lengths[0], OMEGA_STYLE, OMEGA_LABEL, toward=beside)
     view.arrow(at, momentum, lengths[1], MOMENTUM_STYLE, MOMENTUM_LABEL)
 
@@ -103,7 +104,7 @@ def _bearings(fig: _Figure) -> None:
     cm = view.world(_scaled(offset, scale))
     shaft = view.world((0, 0, 1))
     view.line(_scaled(shaft, -2), _scaled(shaft, 2.2), "axis, ->")
-    view.turning(_scaled(shaft, 1.75), shaft, 0.35, fig.m(rotation.rate))
+    view.turning(_scaled(shaft, 1.95), shaft, 0.35, fig.m(rotation.rate))
     if any(abs(c) > 1e-9 for c in cm):
         view.line((0, 0, 0), cm, "thin, dashed")
         view.dot((0, 0, 0))
@@ -116,16 +117,16 @@ def _bearings(fig: _Figure) -> None:
         leaning = page(own["xyz".index(axis)])
         direction = math.degrees(math.atan2(leaning[1], leaning[0]))
         fig.arc(page(cm), 0.8, direction, 90, fig.tex(rotation.tilt), label_radius=0.9)
-    _vectors(view, cm, omega, momentum)
+    across = page(view.world((0, 1, 0))) if weighed else (1.0, 0.0)  # on the page, across the shaft (N.y, N.x)
+    _vectors(view, cm, omega, momentum, (1.4, 2.2), beside=(-across[0], -across[1]))  # away from A and B's
     if rotation.apart is not None:  # over the body, inside the rate's arrow
         half = _clamp(fig.num(rotation.apart, 1.0) * scale / 2, 1.0, 1.5)
         turn = math.degrees(math.atan2(*reversed(page(shaft))))
-        across = page(view.world((0, 1, 0) if weighed else (1, 0, 0)))
         for label, sign in (("A", 1), ("B", -1)):
             at = page(_scaled(shaft, sign * half))
             fig.add(f"\\fill[gray!60, draw=black, rotate around={{{_f(turn)}:{_pt(at)}}}] "
                     f"{_pt((at[0] - 0.12, at[1] - 0.2))} rectangle {_pt((at[0] + 0.12, at[1] + 0.2))};")
-            fig.label((at[0] - 0.25 * across[0], at[1] - 0.25 * across[1]), (-across[0], -across[1]), f"${label}$")
+            fig.label((at[0] + 0.25 * across[0], at[1] + 0.25 * across[1]), across, f"${label}$")
 
 
 def _top_state(fig: _Figure, name: str, top) -> tuple[dict, float]:
