@@ -216,8 +216,8 @@ def test_a_thrown_plates_arrows_make_the_derived_angles_with_its_axis():
 
 def test_every_3d_file_has_a_figure_with_omega_and_l_that_compiles(tmp_path):
     """Each 3D slice of the library and the textbook set: omega and L labelled (the tennis racket's
-    three rotations in turn have no single omega: its axes and spin), the same bytes twice, and one
-    document of them all compiles."""
+    three rotations in turn have no single omega: its axes and spin), the same bytes twice, at most
+    6.5 cm either way, and one document of them all compiles."""
     drawn = []
     for source in SOLIDS:
         picture = figure.tikz(load(source))
@@ -225,6 +225,9 @@ def test_every_3d_file_has_a_figure_with_omega_and_l_that_compiles(tmp_path):
         if "tennis_racket" not in str(source):
             assert {r"$\vec\omega$", r"$\vec L$"} <= set(arrows(picture)), source
         assert "$\\scriptstyle x'$" in picture, source  # the body's axes
+        points = [(float(x), float(y)) for x, y in re.findall(r"\((-?[\d.]+),(-?[\d.]+)\)", picture)]
+        for k in (0, 1):  # the library's figure size (tests/test_figure.py)
+            assert max(p[k] for p in points) - min(p[k] for p in points) <= 6.5, source
         drawn.append(picture)
     tex = tmp_path / "figures.tex"
     tex.write_text(render.render("preamble.tex.j2") + "\\begin{document}\n" + "\n\n".join(drawn)
