@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from derive.figure.canvas import LIBRARIES, STYLES, WIDTH, _Figure
 from derive.figure.layout import _LAYOUTS
-from derive.figure.parts import Undrawable
+from derive.figure.drawn_view import Undrawable
 
 __all__ = ["LIBRARIES", "STYLES", "WIDTH", "tikz"]
 

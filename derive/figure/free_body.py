@@ -41,8 +41,8 @@ import sympy as sp
 
 from derive import render
 from derive.figure.canvas import _add, _f, _Figure, _pt, _unit
-from derive.figure.parts import ARROW, DIRECTIONS, LAYERS, Undrawable, _Body, _degrees, _on_segment, _perp, \
-    _Scene, _sub
+from derive.figure.drawn_view import ARROW, DIRECTIONS, LAYERS, Undrawable, _Body, _Scene
+from derive.figure.vectors import _degrees, _on_segment, _perp, _sub
 from derive.mechanics.newton_euler import all_forces
 from derive.parts import AppliedForce, AppliedTorque
 from derive.scene import TIME

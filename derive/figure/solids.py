@@ -33,7 +33,7 @@ import sympy as sp
 from derive.answers import Solution
 from derive.figure.canvas import _clamp, _f, _Figure, _pt
 from derive.figure.oblique import Oblique, along, page, silhouette
-from derive.figure.parts import Undrawable
+from derive.figure.drawn_view import Undrawable
 from derive.mechanics import bearings, fixed_point, free_rotation, rolling_coin
 
 OMEGA_LABEL, MOMENTUM_LABEL = r"$\vec\omega$", r"$\vec L$"

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import sympy as sp
 from flint import arb, arb_mat, ctx
@@ -316,6 +317,13 @@ def tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...] = ()) -> sp.Expr:
     >>> tidy(m*g*sp.sin(x)**2 + m*g*sp.cos(x)**2)
     g*m
     """
+    if isinstance(expr, sp.MatrixBase):  # mutable, so not remembered
+        return _tidy.__wrapped__(expr, placed)
+    return _tidy(expr, tuple(placed))
+
+
+@lru_cache(maxsize=4096)  # answers, checks and steps tidy the same expression from each route
+def _tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...]) -> sp.Expr:
     if expr.has(sp.Piecewise):  # regimes: each case in its own simplest form
         folded = sp.piecewise_fold(expr)
         if isinstance(folded, sp.Piecewise):
