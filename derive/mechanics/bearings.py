@@ -81,6 +81,16 @@ def center_offset(tilt, roll, axis: str, through) -> sp.Matrix:
     return -_column(ground, _along(body_frame, through))
 
 
+def own_axes(tilt, roll, axis: str) -> sp.Matrix:
+    """The body's own x, y, z (columns) in N at the instant the own axis lies in N's xz plane.
+
+    >>> own_axes(sp.pi / 2, 0, "z")[:, 2].T  # the symmetry axis tilted a right angle: along N.x
+    Matrix([[1, 0, 0]])
+    """
+    ground = me.ReferenceFrame("N")
+    return sp.Matrix.hstack(*(_column(ground, e) for e in _mounted(ground, tilt, roll, axis)))
+
+
 def _dyadic(frame: me.ReferenceFrame, tensor: sp.Matrix) -> me.Dyadic:
     return me.inertia(frame, tensor[0, 0], tensor[1, 1], tensor[2, 2], tensor[0, 1], tensor[1, 2], tensor[0, 2])
 
