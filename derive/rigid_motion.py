@@ -30,8 +30,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
-#: The integrator (non-stiff, high order) and its tolerances.
-METHOD, RTOL, ATOL = "DOP853", 1e-12, 1e-13
+#: The integrator (non-stiff, high order) and its relative tolerance.
+METHOD, RTOL = "DOP853", 1e-12
 UP = np.array([0.0, 0.0, 1.0])
 
 
@@ -117,8 +117,11 @@ def turned(rate: float):
 
 
 def integrate(rates, state, duration: float, events=None, rtol: float = RTOL):
-    """solve_ivp from `state` over `duration`, dense output; a failed run raises RuntimeError."""
-    run = solve_ivp(rates, (0.0, duration), state, method=METHOD, rtol=rtol, atol=ATOL * rtol / RTOL,
+    """solve_ivp from `state` over `duration`, dense output; a failed run raises RuntimeError. The
+    absolute tolerance of each part of the state (quaternion, omega, the rest) is `rtol`/10 of its size."""
+    sizes = [1.0, float(np.linalg.norm(state[4:7])), float(np.linalg.norm(state[7:]))]
+    scale = np.concatenate([[sizes[0]] * 4, [sizes[1] or 1.0] * len(state[4:7]), [sizes[2] or 1.0] * len(state[7:])])
+    run = solve_ivp(rates, (0.0, duration), state, method=METHOD, rtol=rtol, atol=rtol / 10 * scale,
                     dense_output=True, events=events)
     if not run.success:
         raise RuntimeError(f"the integration failed: {run.message}")

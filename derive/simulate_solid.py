@@ -73,6 +73,8 @@ class _Simulation:
         symbols = [p.symbol for p in problem.parameters.values()]
         for body in solution.scene.bodies.values():
             symbols += [body.mass, *body.sizes.values()]
+        for held in solution.scene.pivot_points.values():
+            symbols += [held.tilt, held.spin]
         self.point = sample_points(problem, sp.Add(*symbols), count=1)[0]
 
     def number(self, expr) -> float:
@@ -275,7 +277,8 @@ class _Simulation:
             k = "xyz".index(free_rotation.symmetric(self.solution.free_moments(q.target))[2])
             i, j = (k + 1) % 3, (k + 2) % 3
             omega = np.zeros(3)
-            omega[k], omega[i] = spin, self.number(free.across)
+            open_across = free.across.free_symbols - {p.symbol for p in self.solution.problem.parameters.values()}
+            omega[k], omega[i] = spin, spin / 10 if open_across else self.number(free.across)  # a small wobble
             duration = 40 * math.pi / float(np.linalg.norm(omega))
             run = self.once(("free", q.target), lambda: rigid_motion.integrate(rates, rigid_motion.start(np.eye(3), omega),
                                                                                duration))
@@ -323,20 +326,22 @@ class _Simulation:
     # a body in bearings
 
     def _bearings(self, name: str, q: Quantity, expected: float, note: str) -> None:
-        found = self.once(("bearings", q.target), lambda: self._turned(q.target))
+        found, scales = self.once(("bearings", q.target), lambda: self._turned(q.target))
         held = self.solution.scene.bearings[q.target]
-        simulated = float(bearings.quantity(found, q.detail, self.number(held.tilt),
-                                            None if held.apart is None else self.number(held.apart)))
-        head, _, component = q.detail.rpartition(".")
-        vector = found.get(bearings.VECTORS.get(head, ""))
-        scale = float(vector.norm()) if component in ("x", "y", "z") and vector is not None else 0.0
+        apart = None if held.apart is None else self.number(held.apart)
+        simulated = float(bearings.quantity(found, q.detail, self.number(held.tilt), apart))
+        head = q.detail.rpartition(".")[0]
+        scale = (scales[bearings.VECTORS[head]] if head in bearings.VECTORS else scales["torque"] / apart
+                 if q.detail == "bearings.force" else scales.get(q.detail.rpartition(".")[2], 0.0))
         self.compare(name, f"the body turned once on its shaft, L = I omega along the motion and its rate, the "
                      f"center's acceleration by finite differences; {q.detail}{note} back at the start",
                      simulated, expected, scale)
 
-    def _turned(self, name: str) -> dict:
+    def _turned(self, name: str) -> tuple[dict, dict]:
         """What the supports supply to the simulated motion of a body in bearings, at the end of
-        one turn (where it is mounted as at the start), as `bearings.motion` gives it."""
+        one turn (where it is mounted as at the start), as `bearings.motion` gives it; and the size
+        of each kind of quantity, against which one that is zero is compared: the moments and forces
+        the body's inertia, mass and weight could need at its rate."""
         body, held = self.solution.scene.bodies[name], self.solution.scene.bearings[name]
         parts = body.composite.parts if body.composite is not None else None
         tensor = np.array(bearings.body_tensor(body.shape, body.mass, body.sizes, parts).applyfunc(self.number).tolist(),
@@ -365,7 +370,12 @@ class _Simulation:
         found = {"angular_momentum": column(momenta[2]), "torque": column(torque), "force": column(force),
                  "kinetic_energy": float(omega @ momenta[2] + mass * velocity @ velocity) / 2,
                  **bearings.by_moments(column(torque), column(force), column(positions[2]), apart, held.thrust)}
-        return found
+        reach = float(np.linalg.norm(center))
+        moment = rate**2 * (np.linalg.norm(tensor, 2) + mass * reach**2) + mass * float(np.linalg.norm(gravity)) * reach
+        pull = mass * (rate**2 * reach + float(np.linalg.norm(gravity))) + (moment / apart if apart else 0.0)
+        scales = {"angular_momentum": moment / rate, "torque": moment, "drive_torque": moment, "force": pull,
+                  "bearing.A": pull, "bearing.B": pull, "kinetic_energy": moment, "angle_L_omega": 1.0}
+        return found, scales
 
 
 def _contact_point(state, radius: float) -> np.ndarray:
