@@ -93,6 +93,11 @@ def _rolling_acceleration(y, I1, I3, mass, g, radius):
     return np.linalg.solve(system, right), r, r_rate, omega
 
 
+def contact_point(state, radius: float) -> np.ndarray:
+    """Where a body rolling on its rim (the state of `rolling_on_rim`) touches the floor."""
+    return state[7:10] + _contact(axes(state)[:, 2], np.zeros(3), radius)[0]
+
+
 def rolling_on_rim(I1: float, I3: float, mass: float, g: float, radius: float):
     """The rates of (q, omega, G) of an axially symmetric body (moments I1 across its axis, I3
     along it, about its center) rolling without slipping on its rim of `radius` on a level floor."""
