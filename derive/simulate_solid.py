@@ -135,12 +135,12 @@ class _Simulation:
     # a body on a fixed point
 
     def _top(self, name: str):
-        """(rates, I1, I3) of the top, its tensor about the fixed point in the top frame (z through
-        the center of mass)."""
+        """The rates of the top's motion, in its top frame (z from the fixed point through the center
+        of mass), its tensor moved to the fixed point by the parallel-axis theorem."""
         tensor, mass, g, distance = self.solution.standing_top(name)
         m, l = self.number(mass), self.number(distance)
         about_point = np.array(sp.Matrix(tensor).applyfunc(self.number).tolist(), dtype=float) + m * l**2 * np.diag([1.0, 1.0, 0.0])
-        return rigid_motion.about_point(about_point, m, self.number(g), (0.0, 0.0, l)), about_point[0, 0], about_point[2, 2]
+        return rigid_motion.about_point(about_point, m, self.number(g), (0.0, 0.0, l))
 
     def _precessing(self, name: str, detail: str):
         """The state of steady precession at the derived root (`detail`) and the numbers (tilt, rate, spin)."""
@@ -152,7 +152,7 @@ class _Simulation:
         return rigid_motion.start(turn, omega), tilt, rate, spin
 
     def _pivot_point(self, name: str, q: Quantity, expected: float, note: str) -> None:
-        rates = self._top(q.target)[0]
+        rates = self._top(q.target)
         if q.detail.startswith("precession."):
             state, tilt, rate, spin = self._precessing(q.target, q.detail)
             duration = 40 * math.pi / max(abs(spin), abs(rate), abs(spin - rate * math.cos(tilt)))  # 20 turns
@@ -185,7 +185,7 @@ class _Simulation:
     def _threshold(self, name: str, q: Quantity, expected: float, note: str) -> None:
         """A least spin or speed: a small tilting rate above it turns back, below it keeps growing."""
         if q.kind == "pivot_point":
-            rates = self._top(q.target)[0]
+            rates = self._top(q.target)
 
             def state(spin):  # upright, spinning, given a small rate about the ground's x
                 return rigid_motion.start(np.eye(3), [1e-7 * spin, 0.0, spin])
@@ -357,9 +357,8 @@ class _Simulation:
         head = q.detail.rpartition(".")[0]
         scale = (scales[bearings.VECTORS[head]] if head in bearings.VECTORS else scales["torque"] / apart
                  if q.detail == "bearings.force" else scales.get(q.detail.rpartition(".")[2], 0.0))
-        self.compare(name, f"the body turned once on its shaft, L = I omega along the motion and its rate, the "
-                     f"center's acceleration by finite differences; {q.detail}{note} back at the start",
-                     simulated, expected, scale)
+        self.compare(name, f"turned once on its shaft, L = I omega, dL/dt and a_cm by finite differences of the "
+                     f"motion; {q.detail}{note}", simulated, expected, scale)
 
     def _turned(self, name: str) -> tuple[dict, dict]:
         """What the supports supply to the simulated motion of a body in bearings, at the end of

@@ -71,11 +71,8 @@ def _mounted(frame: me.ReferenceFrame, tilt, roll, axis: str) -> me.ReferenceFra
 def mounted_axes(tilt, roll, axis: str) -> sp.Matrix:
     """The body's own axes in N (the columns) at the instant its own axis lies in N's xz plane.
 
-    >>> mounted_axes(sp.pi / 2, 0, "z")
-    Matrix([
-    [0, 0, 1],
-    [0, 1, 0],
-    [-1, 0, 0]])
+    >>> mounted_axes(sp.pi / 2, 0, "z").tolist()  # the symmetry axis z tilted a right angle, to N.x
+    [[0, 0, 1], [0, 1, 0], [-1, 0, 0]]
     """
     ground = me.ReferenceFrame("N")
     return ground.dcm(_mounted(ground, tilt, roll, axis))
