@@ -48,6 +48,8 @@ TOLERANCE = 1e-6
 #: A small-size limit (`small:`) is compared with the sizes at SHRINK of their sample values, to
 #: LIMIT_TOLERANCE (the exact answer differs from the limit by about SHRINK times a ratio of sizes).
 SHRINK, LIMIT_TOLERANCE = 1e-4, 1e-3
+#: How many turns of its fastest angle a steady motion is simulated for (a coin: once round its circle, at most).
+TURNS = 10
 #: How far a steady motion's tilt may wander (rad) over its run.
 STEADY = 1e-7
 #: Spins and speeds tried either side of a least spin or speed, relatively.
@@ -155,7 +157,7 @@ class _Simulation:
         rates = self._top(q.target)
         if q.detail.startswith("precession."):
             state, tilt, rate, spin = self._precessing(q.target, q.detail)
-            duration = 40 * math.pi / max(abs(spin), abs(rate), abs(spin - rate * math.cos(tilt)))  # 20 turns
+            duration = 2 * math.pi * TURNS / max(abs(spin), abs(rate), abs(spin - rate * math.cos(tilt)))
             run = self.once(("steady", q.target, q.detail), lambda: rigid_motion.integrate(rates, state, duration))
             times = np.linspace(0, duration, 2001)
             axis = np.array([rigid_motion.axes(run.sol(t))[:, 2] for t in times])
@@ -255,7 +257,7 @@ class _Simulation:
         coin = self.solution.scene.rolls_on_edge[q.target]
         tilt, circle = self.number(coin.tilt), self.number(coin.circle)
         rate = self.number(self.solution._rolls_on_edge(Quantity("rolls_on_edge", q.target, "steady.precession")))
-        duration = 2 * math.pi / max(rate, rate * circle / radius / 20)  # once round the circle, at most 20 spins
+        duration = 2 * math.pi / max(rate, rate * circle / radius / TURNS)  # once round the circle, at most TURNS spins
         rates = rigid_motion.rolling_on_rim(I1, I3, mass, g, radius)
 
         def run_steady():
@@ -303,7 +305,7 @@ class _Simulation:
             omega = np.zeros(3)
             open_across = free.across.free_symbols - {p.symbol for p in self.solution.problem.parameters.values()}
             omega[k], omega[i] = spin, spin / 10 if open_across else self.number(free.across)  # a small wobble
-            duration = 40 * math.pi / float(np.linalg.norm(omega))
+            duration = 2 * math.pi * TURNS / float(np.linalg.norm(omega))
             run = self.once(("free", q.target), lambda: rigid_motion.integrate(rates, rigid_motion.start(np.eye(3), omega),
                                                                                duration))
             times = np.linspace(0, duration, 2001)
@@ -320,7 +322,7 @@ class _Simulation:
                 along = momentum if q.detail == "angle_L_axis" else rigid_motion.axes(states[-1]) @ states[-1][4:7]
                 simulated = math.acos(along @ axes[-1] / np.linalg.norm(along))
                 what = f"the angle between {'L' if q.detail == 'angle_L_axis' else 'omega'} and the axis at the end"
-            self.compare(name, f"the free body turned for {duration:.3g} s (20 turns); {what}{note}", simulated, expected)
+            self.compare(name, f"the free body turned for {duration:.3g} s ({TURNS} turns); {what}{note}", simulated, expected)
             return
         _, rank, kind = q.detail.split(".")
         k = self.solution.free_axis(q.target, rank)
