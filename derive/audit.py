@@ -60,8 +60,8 @@ def _audit_one(reference: str, begin) -> Row:
             [simulate_solid.check(solution)] if kinds & simulate_solid.KINDS else [])
         if reports:
             passed = all(r.passed for r in reports)
-            row.simulation = ("ok: " + ", ".join(n for r in reports for n in dict.fromkeys(r.compared))
-                              if passed else "FAILED")
+            compared = ", ".join(dict.fromkeys(n for r in reports for n in r.compared))
+            row.simulation = ("ok: " + compared if compared else "-") if passed else "FAILED"
             row.figures = tuple(f for r in reports for f in r.figures)
             if not passed:
                 row.passed, row.failure = False, "; ".join(n for r in reports for n in r.notes)

@@ -152,3 +152,19 @@ def test_check_prints_a_figure_line_for_each_3d_ask():
     slow = next(f for f in figures if f.strip().startswith("top_precession_exact: Omega_slow:"))
     assert "steady precession" in slow and float(slow.rpartition("relative difference ")[2]) < 1e-6
     assert any("Omega_approx: top.precession.fast_top not simulated (a fast-top limit)" in f for f in figures)
+
+
+def test_a_3d_simulation_that_fails_fails_derive_check(monkeypatch):
+    from derive import audit
+    monkeypatch.setattr(simulate_solid, "TOLERANCE", -1.0)  # no difference is small enough
+    (row,) = audit.audit(["rigid_body_L"])
+    assert not row.passed and row.simulation == "FAILED" and row.failure.startswith("L_z: turned once on its shaft")
+    assert "FAILED rigid_body_L: L_z" in audit.table([row])
+
+
+def test_an_integration_that_gives_up_is_a_failed_check(monkeypatch):
+    def gives_up(*args, **kwargs):
+        raise RuntimeError("the integration failed: step size too small")
+    monkeypatch.setattr(rigid_motion, "integrate", gives_up)
+    report = simulate_solid.check(Solution(load("rigid_body_L")))
+    assert not report.passed and report.notes[0] == "L_z: the integration failed: step size too small"
