@@ -19,8 +19,9 @@ from the derived state, at the middle of the parameter ranges (open sizes at sam
   acceleration by finite differences of the simulated motion, the supports' force m a_cm - m g,
   split between the bearings by the statics of the shaft (derive.mechanics.bearings.by_moments).
 
-An ask the simulation cannot read directly (a limit, `small:`) is compared before the limit; a
-fast-top limit or a value where a quantity vanishes is not simulated, and the report says so.
+A small-size limit (`small:`) is compared before the limit, and again, to LIMIT_TOLERANCE, with the
+small sizes at SHRINK of their sample values; a fast-top limit or a value where a quantity vanishes
+(`zero_for`) is not simulated, and the report says so.
 
 >>> from derive.answers import Solution
 >>> from derive.problem import load
