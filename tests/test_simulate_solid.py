@@ -168,3 +168,18 @@ def test_an_integration_that_gives_up_is_a_failed_check(monkeypatch):
     monkeypatch.setattr(rigid_motion, "integrate", gives_up)
     report = simulate_solid.check(Solution(load("rigid_body_L")))
     assert not report.passed and report.notes[0] == "L_z: the integration failed: step size too small"
+
+
+def test_a_tilted_disk_off_an_inclined_shaft_loads_its_bearings_as_simulated(tmp_path):
+    """Every bearing quantity of a disk tilted 0.3 rad on an inclined shaft through a point R/5 from
+    its center, a thrust bearing at A: the supports' force and torque from the simulated motion."""
+    from test_bearings import INCLINED
+    text = INCLINED.replace("tilt: 0, apart", "tilt: 0.3, through: [R/5, 0, 0], apart").replace("question:", """\
+  T: {meaning: energy, of: disk.kinetic_energy, unit: J}
+  Q: {meaning: drive, of: disk.bearings.drive_torque, unit: N*m}
+  F: {meaning: total, of: disk.bearings.total_force.magnitude, unit: N}
+  B: {meaning: B, of: disk.bearings.B.force.magnitude, unit: N}
+question:""")
+    report = simulate_solid.check(Solution(load(write_problem(tmp_path, text))))
+    assert report.passed and report.compared == ["Ay", "Az", "By", "Bz", "Bx", "T", "Q", "F", "B"], report.notes
+    assert max(_relative_differences(report)) < 1e-9
