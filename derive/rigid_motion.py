@@ -65,7 +65,8 @@ def about_point(tensor, mass: float = 0.0, g: float = 0.0, center=(0.0, 0.0, 0.0
     def rates(t, y):
         omega = y[4:7]
         weight = -mass * g * axes(y).T @ UP  # in the body frame
-        return np.concatenate([_turning(y[:4], omega), inverse @ (np.cross(arm, weight) - np.cross(omega, inertia @ omega))])
+        torque = np.cross(arm, weight) - np.cross(omega, inertia @ omega)
+        return np.concatenate([_turning(y[:4], omega), inverse @ torque])
     return rates
 
 

@@ -100,6 +100,9 @@ class _Simulation:
     def number(self, expr) -> float:
         return float(sp.N(sp.sympify(expr).xreplace(self.point), 30))  # safe: derived expressions, never file text
 
+    def matrix(self, matrix) -> np.ndarray:
+        return np.array(sp.Matrix(matrix).applyfunc(self.number).tolist(), dtype=float)
+
     def once(self, key, run):
         if key not in self.runs:
             self.runs[key] = run()
@@ -133,7 +136,8 @@ class _Simulation:
         if self.magnitude:
             simulated, expected = abs(simulated), abs(expected)
         difference = abs(simulated - expected) / max(abs(expected), scale, 1e-300)
-        line = f"{name}: {what}: simulated {simulated:.10g}, derived {expected:.10g}, relative difference {difference:.1e}"
+        line = (f"{name}: {what}: simulated {simulated:.10g}, derived {expected:.10g}, "
+                f"relative difference {difference:.1e}")
         self.report.figures.append(line)
         self.report.compared.append(name)
         if not difference <= self.tolerance:
@@ -146,7 +150,7 @@ class _Simulation:
         of mass), its tensor moved to the fixed point by the parallel-axis theorem."""
         tensor, mass, g, distance = self.solution.standing_top(name)
         m, l = self.number(mass), self.number(distance)
-        about_point = np.array(sp.Matrix(tensor).applyfunc(self.number).tolist(), dtype=float) + m * l**2 * np.diag([1.0, 1.0, 0.0])
+        about_point = self.matrix(tensor) + m * l**2 * np.diag([1.0, 1.0, 0.0])
         return rigid_motion.about_point(about_point, m, self.number(g), (0.0, 0.0, l))
 
     def _precessing(self, name: str, detail: str):
@@ -154,7 +158,8 @@ class _Simulation:
         point = self.solution.scene.pivot_points[name]
         tilt, spin = self.number(point.tilt), self.number(point.spin)
         rate = self.number(self.solution._pivot_point(Quantity("pivot_point", name, detail)))
-        turn = np.array([[math.cos(tilt), 0.0, math.sin(tilt)], [0.0, 1.0, 0.0], [-math.sin(tilt), 0.0, math.cos(tilt)]])
+        turn = np.array([[math.cos(tilt), 0.0, math.sin(tilt)], [0.0, 1.0, 0.0],
+                         [-math.sin(tilt), 0.0, math.cos(tilt)]])  # the top frame tilted about y
         omega = rate * rigid_motion.UP + (spin - rate * math.cos(tilt)) * turn[:, 2]
         return rigid_motion.start(turn, omega), tilt, rate, spin
 
@@ -311,12 +316,13 @@ class _Simulation:
             open_across = free.across.free_symbols - {p.symbol for p in self.solution.problem.parameters.values()}
             omega[k], omega[i] = spin, spin / 10 if open_across else self.number(free.across)  # a small wobble
             duration = 2 * math.pi * TURNS / float(np.linalg.norm(omega))
-            run = self.once(("free", q.target), lambda: rigid_motion.integrate(rates, rigid_motion.start(np.eye(3), omega),
-                                                                               duration))
+            start = rigid_motion.start(np.eye(3), omega)
+            run = self.once(("free", q.target), lambda: rigid_motion.integrate(rates, start, duration))
             times = np.linspace(0, duration, 2001)
             states = [run.sol(t) for t in times]
-            momentum = np.diag(moments) @ omega  # in space, where the body starts at the ground's axes
             axes = np.array([rigid_motion.axes(y)[:, k] for y in states])
+            end = rigid_motion.axes(states[-1])
+            momentum = end @ (np.diag(moments) @ states[-1][4:7])  # L in space, at the end
             if q.detail == "free_precession.body":
                 body = np.array([y[4:7] for y in states])
                 angle = np.unwrap(np.arctan2(body[:, j], body[:, i]))
@@ -324,10 +330,11 @@ class _Simulation:
             elif q.detail == "free_precession.space":
                 simulated, what = _turning_rate(axes, times, momentum), "the axis's turning about L in space"
             else:
-                along = momentum if q.detail == "angle_L_axis" else rigid_motion.axes(states[-1]) @ states[-1][4:7]
+                along = momentum if q.detail == "angle_L_axis" else end @ states[-1][4:7]
                 simulated = math.acos(along @ axes[-1] / np.linalg.norm(along))
                 what = f"the angle between {'L' if q.detail == 'angle_L_axis' else 'omega'} and the axis at the end"
-            self.compare(name, f"the free body turned for {duration:.3g} s ({TURNS} turns); {what}{note}", simulated, expected)
+            self.compare(name, f"the free body turned for {duration:.3g} s ({TURNS} turns); {what}{note}", simulated,
+                         expected)
             return
         _, rank, kind = q.detail.split(".")
         k = self.solution.free_axis(q.target, rank)
@@ -362,23 +369,25 @@ class _Simulation:
         apart = None if held.apart is None else self.number(held.apart)
         simulated = float(bearings.quantity(found, q.detail, self.number(held.tilt), apart))
         head = q.detail.rpartition(".")[0]
-        scale = (scales[bearings.VECTORS[head]] if head in bearings.VECTORS else scales["torque"] / apart
-                 if q.detail == "bearings.force" else scales.get(q.detail.rpartition(".")[2], 0.0))
+        size = (scales[bearings.VECTORS[head]] if head in bearings.VECTORS else scales["torque"] / apart
+                if q.detail == "bearings.force" else scales.get(q.detail.rpartition(".")[2], 0.0))
+        # a component by its vector's length, a value by itself; where that is nothing, by its kind's size
+        length = float(found[bearings.VECTORS[head]].norm()) if head in bearings.VECTORS else abs(simulated)
+        scale = length if length > 1e-6 * size else size
         self.compare(name, f"turned once on its shaft, L = I omega, dL/dt and a_cm by finite differences of the "
                      f"motion; {q.detail}{note}", simulated, expected, scale)
 
     def _turned(self, name: str) -> tuple[dict, dict]:
         """What the supports supply to the simulated motion of a body in bearings, at the end of
         one turn (where it is mounted as at the start), as `bearings.motion` gives it; and the size
-        of each kind of quantity, against which one that is zero is compared: the moments and forces
+        of each kind of quantity, against which a zero vector is compared: the moments and forces
         the body's inertia, mass and weight could need at its rate."""
         body, held = self.solution.scene.bodies[name], self.solution.scene.bearings[name]
         parts = body.composite.parts if body.composite is not None else None
-        tensor = np.array(bearings.body_tensor(body.shape, body.mass, body.sizes, parts).applyfunc(self.number).tolist(),
-                          dtype=float)
+        tensor = self.matrix(bearings.body_tensor(body.shape, body.mass, body.sizes, parts))
         tilt, roll, rate = (self.number(v) for v in (held.tilt, held.roll, held.rate))
         axis = bearings.own_axis(body.shape)
-        mounted = np.array(bearings.mounted_axes(tilt, roll, axis).applyfunc(self.number).tolist(), dtype=float)
+        mounted = self.matrix(bearings.mounted_axes(tilt, roll, axis))
         center = -np.array([self.number(c) for c in held.through])  # from the shaft's point, body frame
         mass = self.number(body.mass)
         gravity = np.array([self.number(c) for c in self.solution.shaft_gravity(name)])
@@ -393,7 +402,8 @@ class _Simulation:
         positions = [R @ center for R in turns]
         torque = (momenta[0] - 8 * momenta[1] + 8 * momenta[3] - momenta[4]) / (12 * step)
         velocity = (positions[0] - 8 * positions[1] + 8 * positions[3] - positions[4]) / (12 * step)
-        acceleration = (-positions[0] + 16 * positions[1] - 30 * positions[2] + 16 * positions[3] - positions[4]) / (12 * step**2)
+        acceleration = (-positions[0] + 16 * positions[1] - 30 * positions[2] + 16 * positions[3]
+                        - positions[4]) / (12 * step**2)
         force = mass * (acceleration - gravity)
         apart = None if held.apart is None else self.number(held.apart)
         column = sp.Matrix

@@ -75,7 +75,8 @@ def _one_percent_off(solution: Solution, name: str) -> Solution:
     ("top_two_precessions", "slow"), ("gyroscope_wheel", "Omega"), ("sleeping_cone", "omega_min"),
     ("coin_rolls_in_circle", "V"), ("disk_rolls_upright", "v_min"), ("tennis_racket", "middle"),
     ("tennis_racket", "greatest"), ("football_free_precession", "body"), ("thrown_plate_wobble", "space"),
-    ("rotor_static_imbalance", "FAy"), ("shaft_dynamic_imbalance", "tau"),
+    ("rotor_static_imbalance", "FAy"), ("rotor_static_imbalance", "Q"), ("shaft_dynamic_imbalance", "tau"),
+    ("rod_tilted_on_shaft", "K"), ("disk_tilted_on_shaft", "F"),
 ])
 def test_an_answer_one_percent_off_is_caught(problem_id, name):
     report = simulate_solid.check(_one_percent_off(Solution(load(TEXTBOOK / f"{problem_id}.yaml")), name))
@@ -183,3 +184,22 @@ question:""")
     report = simulate_solid.check(Solution(load(write_problem(tmp_path, text))))
     assert report.passed and report.compared == ["Ay", "Az", "By", "Bz", "Bx", "T", "Q", "F", "B"], report.notes
     assert max(_relative_differences(report)) < 1e-9
+
+
+#: The coin of coin_rolls_in_circle with its radius given and every steady quantity asked, exactly.
+COIN = (TEXTBOOK / "coin_rolls_in_circle.yaml").read_text().replace(
+    "  g: {meaning", "  a: {meaning: radius of the coin, unit: m, range: [0.01, 0.03], sig_figs: 2}\n  g: {meaning").replace(
+    "shape: disk, mass: M,", "shape: disk, mass: M, radius: a,").replace(", small: coin.radius", "").replace(
+    "question:", """  W: {meaning: heading rate, of: coin.steady.precession, unit: rad/s}
+  w: {meaning: spin, of: coin.steady.spin, unit: rad/s}
+question:""")
+
+
+def test_a_coin_s_steady_circle_holds_with_its_derived_rates(tmp_path):
+    solution = Solution(load(write_problem(tmp_path, COIN)))
+    report = simulate_solid.check(solution)
+    assert report.passed and report.compared == ["V", "N", "f", "W", "w"], report.notes
+    assert max(_relative_differences(report)) < 1e-8
+    for name in ("W", "w"):
+        report = simulate_solid.check(_one_percent_off(Solution(load(write_problem(tmp_path, COIN))), name))
+        assert not report.passed and report.notes[0].startswith(f"{name}:")
