@@ -298,7 +298,7 @@ class _Simulation:
             inward = (axis - end[7:10]) * np.array([1.0, 1.0, 0.0])
             simulated = force[2] if what == "normal_force" else force @ inward / np.linalg.norm(inward)
         self.compare(name, f"the steady circle rolled for {duration:.3g} s, lean held to {wander:.0e} rad; "
-                     f"{q.detail}{note} at the end", abs(simulated), abs(expected))
+                     f"{q.detail}{note} at the end", simulated, expected)
         if wander > STEADY:
             self.report.fail(f"{name}: started on the steady circle, the lean wanders by {wander:.1e} rad")
 
