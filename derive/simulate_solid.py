@@ -32,6 +32,7 @@ small sizes at SHRINK of their sample values; a fast-top limit or a value where 
 from __future__ import annotations
 
 import math
+from typing import Callable, NamedTuple
 
 import numpy as np
 import sympy as sp
@@ -79,6 +80,19 @@ def check(solution) -> SimulationReport:
         except RuntimeError as error:  # the integrator gave up: a failed check, never a crash
             report.fail(f"{name}: {error}")
     return report
+
+
+class _Upright(NamedTuple):
+    """Upright motion started with a small tilting rate: the rates of the motion, the state at a spin,
+    a measure of the tilt and its rate along the motion, that measure at a tilt, the spin per unit of
+    the answer, and the answer's word."""
+
+    rates: Callable
+    state: Callable
+    deviation: Callable
+    deviation_at: Callable
+    per_spin: float
+    what: str
 
 
 class _Simulation:
@@ -194,37 +208,33 @@ class _Simulation:
         else:  # sleeping.min_spin
             self._threshold(name, q, expected, note)
 
+    def _upright_top(self, q: Quantity) -> _Upright:
+        def state(spin):  # upright, spinning, given a small rate about the ground's x
+            return rigid_motion.start(np.eye(3), [1e-7 * spin, 0.0, spin])
+
+        def deviation(y):  # 1 - cos(tilt), and its rate
+            axis = rigid_motion.axes(y)[:, 2]
+            return 1 - axis[2], -np.cross(rigid_motion.axes(y) @ y[4:7], axis)[2]
+        return _Upright(self._top(q.target), state, deviation, lambda tilt: 1 - math.cos(tilt), 1.0, "spin")
+
+    def _upright_coin(self, q: Quantity) -> _Upright:
+        I1, I3, mass, g, radius = (self.number(v) for v in self.solution.rolling_coin(q.target))
+
+        def state(spin):  # upright, rolling along x, its axis along y, given a small leaning rate about x
+            turn = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+            return rigid_motion.start(turn, [1e-7 * spin, spin, 0.0], 0.0, 0.0, radius)
+
+        def deviation(y):  # sin(lean)^2 and its rate
+            axis = rigid_motion.axes(y)[:, 2]
+            return axis[2] ** 2, 2 * axis[2] * np.cross(rigid_motion.axes(y) @ y[4:7], axis)[2]
+        speed = q.detail == "upright.min_speed"
+        return _Upright(rigid_motion.rolling_on_rim(I1, I3, mass, g, radius), state, deviation,
+                        lambda lean: math.sin(lean) ** 2, 1 / radius if speed else 1.0, "speed" if speed else "spin")
+
     def _threshold(self, name: str, q: Quantity, expected: float, note: str) -> None:
         """A least spin or speed: a small tilting rate above it turns back, below it keeps growing."""
-        if q.kind == "pivot_point":
-            rates = self._top(q.target)
-
-            def state(spin):  # upright, spinning, given a small rate about the ground's x
-                return rigid_motion.start(np.eye(3), [1e-7 * spin, 0.0, spin])
-
-            def deviation(y):  # 1 - cos(tilt), and its rate
-                axis = rigid_motion.axes(y)[:, 2]
-                return 1 - axis[2], -np.cross(rigid_motion.axes(y) @ y[4:7], axis)[2]
-
-            def deviation_at(tilt):
-                return 1 - math.cos(tilt)
-            spin_of, what = (lambda value: value), "spin"
-        else:
-            I1, I3, mass, g, radius = (self.number(v) for v in self.solution.rolling_coin(q.target))
-            rates = rigid_motion.rolling_on_rim(I1, I3, mass, g, radius)
-            spin_of = (lambda value: value / radius) if q.detail == "upright.min_speed" else (lambda value: value)
-
-            def state(spin):  # upright, rolling along x, its axis along y, given a small leaning rate about x
-                turn = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
-                return rigid_motion.start(turn, [1e-7 * spin, spin, 0.0], 0.0, 0.0, radius)
-
-            def deviation(y):  # sin(lean)^2 and its rate
-                axis = rigid_motion.axes(y)[:, 2]
-                return axis[2] ** 2, 2 * axis[2] * np.cross(rigid_motion.axes(y) @ y[4:7], axis)[2]
-
-            def deviation_at(lean):
-                return math.sin(lean) ** 2
-            what = "speed" if q.detail == "upright.min_speed" else "spin"
+        rates, state, deviation, deviation_at, per_spin, what = (
+            self._upright_top(q) if q.kind == "pivot_point" else self._upright_coin(q))
 
         def turning_back(t, y):
             return deviation(y)[1]
@@ -232,7 +242,7 @@ class _Simulation:
         def fallen(t, y):
             return deviation(y)[0] - deviation_at(FALLEN)
         turning_back.direction, turning_back.terminal, fallen.terminal = -1, True, True
-        spin = spin_of(expected)
+        spin = per_spin * expected
         horizon = 4000 * math.pi / spin  # 2000 turns of the spin
 
         def runs():  # only whether the tilt turns back: a looser tolerance
@@ -250,9 +260,10 @@ class _Simulation:
                              f"falls past {FALLEN} rad or still grows after {horizon:.3g} s")
             return
         turned_at, highest, grown, ended = found
-        self.report.figures.append(f"{name}: upright at {1 + MARGIN:g} times the least {what}{note} ({expected:.10g}),"
-                                   f" a small tilt turns back after {turned_at:.3g} s; at {1 - MARGIN:g} times, it "
-                                   f"grows {math.sqrt(grown / highest):.3g} times as far by {ended:.3g} s")
+        self.report.figures.append(f"{name}: the least {what}{note}, derived {expected:.10g}, bracketed within "
+                                   f"±{MARGIN:.1%} by simulation: upright at {1 + MARGIN:g} times it, a small tilt turns "
+                                   f"back after {turned_at:.3g} s; at {1 - MARGIN:g} times, it grows "
+                                   f"{math.sqrt(grown / highest):.3g} times as far by {ended:.3g} s")
         self.report.compared.append(name)
         if grown < 16 * highest:  # a tilt 4 times the highest above
             self.report.fail(f"{name}: below the least {what}{note} the tilt does not keep growing")
