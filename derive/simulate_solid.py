@@ -77,7 +77,7 @@ def check(solution) -> SimulationReport:
             simulation.ask(name, ask)
             if ask.small and ask.quantity.detail not in LIMITS:
                 shrunk.setdefault(ask.small, _Simulation(solution, report, ask.small)).ask(name, ask)
-        except RuntimeError as error:  # the integrator gave up: a failed check, never a crash
+        except RuntimeError as error:  # the integrator gave up, or no real start: a failed check, never a crash
             report.fail(f"{name}: {error}")
     return report
 
@@ -112,7 +112,10 @@ class _Simulation:
         self.tolerance, self.magnitude = (LIMIT_TOLERANCE if small else TOLERANCE), False
 
     def number(self, expr) -> float:
-        return float(sp.N(sp.sympify(expr).xreplace(self.point), 30))  # safe: derived expressions, never file text
+        value = sp.N(sp.sympify(expr).xreplace(self.point), 30)  # safe: derived expressions, never file text
+        if not value.is_real:
+            raise RuntimeError(f"{sp.sstr(expr)} is {value} at the point simulated, not a real number")
+        return float(value)
 
     def matrix(self, matrix) -> np.ndarray:
         return np.array(sp.Matrix(matrix).applyfunc(self.number).tolist(), dtype=float)

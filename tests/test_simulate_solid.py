@@ -203,3 +203,13 @@ def test_a_coin_s_steady_circle_holds_with_its_derived_rates(tmp_path):
     for name in ("W", "w"):
         report = simulate_solid.check(_one_percent_off(Solution(load(write_problem(tmp_path, COIN))), name))
         assert not report.passed and report.notes[0].startswith(f"{name}:")
+
+
+def test_a_start_that_is_no_real_number_is_a_failed_check(monkeypatch):
+    solution = Solution(load("top_precession_exact"))
+    solution.expressions  # the answers as derived; then a root of the start made imaginary
+    imaginary = sp.sqrt(-sp.Symbol("m", positive=True))
+    monkeypatch.setattr(Solution, "_pivot_point", lambda self, q, route="lagrange": imaginary)
+    report = simulate_solid.check(solution)
+    assert not report.passed and report.notes[0].startswith("Omega_slow: I*sqrt(m) is")
+    assert report.notes[0].endswith("not a real number")
