@@ -342,7 +342,7 @@ class _Simulation:
                 angle = np.unwrap(np.arctan2(body[:, j], body[:, i]))
                 simulated, what = (angle[-1] - angle[0]) / duration, "omega's turning about the axis in the body"
             elif q.detail == "free_precession.space":
-                simulated, what = _turning_rate(axes, times, momentum), "the axis's turning about L in space"
+                simulated, what = turning_rate(axes, times, momentum), "the axis's turning about L in space"
             else:
                 along = momentum if q.detail == "angle_L_axis" else end @ states[-1][4:7]
                 simulated = math.acos(along @ axes[-1] / np.linalg.norm(along))
@@ -432,7 +432,7 @@ class _Simulation:
         return found, scales
 
 
-def _turning_rate(vectors, times, about) -> float:
+def turning_rate(vectors, times, about) -> float:
     """The mean rate at which the vectors' parts across `about` turn about it (unwrapped angle)."""
     about = about / np.linalg.norm(about)
     first = np.cross(about, [1.0, 0, 0]) if abs(about[0]) < 0.9 else np.cross(about, [0, 1.0, 0])
