@@ -34,6 +34,10 @@ from derive.prose import Sentence, capital
 from derive.scene import Quantity
 
 
+#: How a heading names each route (the routes in a state that an event changed the scene of).
+ROUTES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler"}
+
+
 @dataclass(frozen=True)
 class Chain:
     """The named states of a scene, in the order the file names them (`reached`); the joints
@@ -382,11 +386,11 @@ class StateAnswers:
                           f"at each point: the {part.body} starts to slip where it first falls to zero.",))))
         force = part.unknowns()["normal"] if kind == "leaves" else next(iter(part.unknowns().values()))
         what = f"the normal force on the {part.body} at {name}" if kind == "leaves" else f"the tension of {name}"
-        holds = (f"The {part.body} stays on the {part.surface} while the normal force ", force, " presses it") \
-            if kind == "leaves" else (f"{capital(part.title)} stays taut while its tension ", force, " pulls")
+        holds = (f"The {part.body} stays on the {part.surface} while the normal force on it, ", force) \
+            if kind == "leaves" else (f"{capital(part.title)} stays taut while its tension, ", force)
         ends = f"the {part.body} leaves the {part.surface}" if kind == "leaves" else "it goes slack"
         return state_motion.Vanishes(force, what, (
-            Sentence((*holds, ", positive.")),
+            Sentence((*holds, ", is positive.")),
             Sentence(("Along the way the equations of motion, with the rates energy gives, say how large it is at "
                       f"each point: {ends} where it first falls to zero.",))))
 
@@ -668,7 +672,7 @@ class StateAnswers:
             for route, d in self.derivations_in(name).items() if in_state else ():
                 solved = self.in_state(route, name)  # the answers' own solution there (along a path: by it)
                 if joints:  # the scene after an impact: its own equations
-                    route = f"{route}, with the joint{'s' if len(joints) > 1 else ''} " + \
+                    route = f"{ROUTES[route]}, with the joint{'s' if len(joints) > 1 else ''} " + \
                             ", ".join(j.name for j in joints)
                 result[route] = [*(result.get(route) or d.steps),
                                  Step(f"Solving in the state {name}", tuple(sp.Eq(u, solved[u]) for u in d.unknowns
