@@ -337,7 +337,7 @@ def kept_said(scene: Scene, coords: Coordinates, symmetry: Symmetry, route: str,
                          f"along it: by Noether's theorem the momentum of that motion, the {named},{then}"))
     moved = set(symmetry.moved)
     pushing = [p for p in scene.parts if any(load.body in moved for load in p.loads(coords))
-               and not (p.bodies() and set(p.bodies()) <= moved)]
+               and not (len(set(p.bodies())) > 1 and set(p.bodies()) <= moved)]  # a part between two of them: inside
     from_outside = f", those of {titled(pushing)}," if pushing else ""
     effect = "have no moment about " if symmetry.about is not None else f"have no component along {symmetry.along}"
     return Sentence((f"The forces on {' and '.join(f'the {n}' for n in symmetry.moved)} from outside them{from_outside} "
