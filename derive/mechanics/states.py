@@ -364,9 +364,9 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     path = dataclasses.replace(path, line=(reached.end, decide))
     moved = tuple(sp.Eq(c.q - start[c.q], ratios[c] * (s - s0)) for c in coords.all if c != along and ratios[c] != 0)
     kinetic = reached.steps[0].equations
-    steps = (Step(f"From the start the scene moves along a straight line of its coordinates: each in proportion to "
-                  f"{s}, as the accelerations there are, and they stay so along it (the constraints hold and the "
-                  "forces keep the proportions); the kinetic energy in its rate", (*moved, *kinetic), sentences=(Sentence((
+    steps = (Step("From the start the scene moves along a straight line of its coordinates: each in proportion to "
+                  "one of them, as the accelerations there are, and they stay so along it (the constraints hold and "
+                  "the forces keep the proportions); the kinetic energy in its rate", (*moved, *kinetic), sentences=(Sentence((
                       f"The constraints leave the scene {free} degrees of freedom, but from the start it moves along a "
                       "straight line of its coordinates: every coordinate follows from ", s, " on it, and the kinetic "
                       "energy is a function of it times the square of its rate.")),)),
@@ -448,7 +448,7 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     and the steps that found it."""
     s, speed, s0 = path.s, path.coordinate.u, path.start[path.s]
     symbol = KINETIC
-    steps = [Step(f"The constraints leave one coordinate, {s}; the kinetic energy in its rate",
+    steps = [Step("The constraints leave one coordinate; the kinetic energy in its rate",
                   (sp.Eq(symbol, path.inertia * speed**2),), sentences=(Sentence((
                       "The constraints leave the scene one degree of freedom: every coordinate follows from ", s,
                       ", and the kinetic energy is a function of it times the square of its rate.")),)),
@@ -506,8 +506,10 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
         raise StateLimit(f"find the state: its formula {s} = {sp.sstr(s1)} does not hold at the middle of the ranges")
     positive[:0] = guard
     if not isinstance(condition, Stops):
-        steps.append(Step(f"So, moving {'forward' if path.direction > 0 else 'backward'} in {s}",
-                          (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate))))
+        steps.append(Step("So, at the state", (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate)), sentences=(Sentence((
+            "The motion goes the way it leaves the start, with ", s,
+            f" {'increasing' if path.direction > 0 else 'decreasing'}, so its rate at the state is the root of the "
+            "kinetic energy there of that sign.")),)))
     return Reached(values, tuple(positive), tuple(steps), path, s1, vanished)
 
 
