@@ -331,7 +331,9 @@ class StateAnswers:
                  Step(f"Kinetic energy the {event.kind} adds (the work of the forces that make it)",
                       (sp.Eq(sp.Symbol("Delta_K"), added),), sentences=(Sentence((
                           f"Kinetic energy is not conserved in a {event.kind}: the forces inside the scene that make it "
-                          "do work, which is the change below.",)),)))
+                          "do work, which is the change below." if added != 0 else
+                          f"The forces inside the scene that make the {event.kind} do work on the way, but none in all: "
+                          "the kinetic energy after it is the one before.",)),)))
         return state_motion.Reached(moved.values, (), steps)
 
     def scene_in(self, name: str | None):
