@@ -1,0 +1,124 @@
+"""A couple that acts for a time on a body turning about a fixed point at its center of mass, where
+the weight has no torque (the notes' §5.2: a spinning wheel tilted by a torque for a time dt).
+
+The body spins at omega about its own symmetry axis n (no turning across it at the start), so
+its angular momentum about the point is L0 = I3 omega n. A couple tau about a direction a fixed in
+space acts from t = 0 to t = dt. Two routes to L at the end:
+
+- impulse: the angular impulse about the fixed point, dL/dt = tau integrated: L1 = L0 + tau dt a;
+- euler: Euler's equations in the body frame, I omega' + omega x (I omega) = R^T tau a, with the
+  orientation R' = R [omega]x, integrated numerically (scipy DOP853, rtol 1e-12); L1 = R I omega.
+
+L turns through the angle between L0 and L1, atan2(|L0 x L1|, L0 . L1): atan(tau dt/(I3 omega))
+for a couple across the spin; its leading term in the impulse is the notes' tau dt/(I3 omega).
+The axle itself nods about L: omega = L/I1 + (1/I3 - 1/I1)(L . n) n, so n' = omega x n =
+L(t) x n / I1 with L(t) = L0 + tau t a. That linear equation has no closed form (its axis sweeps
+while it turns); `AxleTurn` integrates it by mpmath's Taylor method at the working precision, and
+the Euler route's R(dt) n checks it.
+
+>>> tau, dt, I, w = sp.symbols("tau dt I omega", positive=True)
+>>> turn = momentum_turn(I, w, (1, 0, 0), (0, 0, 1), tau, dt)
+>>> turn
+atan(dt*tau/(I*omega))
+>>> small_angle(turn, tau)
+dt*tau/(I*omega)
+"""
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+import sympy as sp
+from scipy.integrate import solve_ivp
+
+from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.free_rotation import angle_between, euler_rates
+
+#: The integrator's relative tolerance in the Euler route.
+RTOL = 1e-12
+
+
+def momentum_turn(axial, spin, axis, couple, torque, duration) -> sp.Expr:
+    """The angle L turns through from the angular impulse about the fixed point: L0 = I3 omega n
+    along the body's axis `axis`, L1 = L0 + tau dt a (`couple`: the unit direction a)."""
+    before = axial * spin * sp.Matrix(axis)
+    return angle_between(before, before + torque * duration * sp.Matrix(couple))
+
+
+def small_angle(turn: sp.Expr, torque) -> sp.Expr:
+    """The leading term of `turn` in the angular impulse (the torque scaled by a small factor)."""
+    small = sp.Dummy("epsilon", positive=True)
+    return tidy(sp.series(turn.subs(torque, small * torque), small, 0, 2).removeO().subs(small, 1))
+
+
+def euler(moments, spin, axis, couple, torque, duration) -> tuple[float, float]:
+    """(the angle L turns through, the angle the axle turns through) by Euler's equations
+    (free_rotation.euler_rates, the couple's components along the body's axes) integrated with the
+    orientation, for numbers: `moments` (I1, I3) about the point, the body's own z its axis."""
+    transverse, axial = moments
+    couple_body = sp.symbols("tau_1:4")
+    rates, w = euler_rates((transverse, transverse, axial), couple_body)
+    plain = sp.symbols("w1:4")
+    spin_rates = sp.lambdify([plain, couple_body], rates.xreplace(dict(zip(w, plain))), "numpy")
+    n = np.array([float(c) for c in axis])
+    across = np.cross([0.0, 1.0, 0.0], n) if abs(n[1]) < 0.9 else np.cross([1.0, 0.0, 0.0], n)
+    across /= np.linalg.norm(across)
+    start = np.column_stack([across, np.cross(n, across), n])  # the body's own axes in the ground frame
+    tau = float(torque) * np.array([float(c) for c in couple])
+
+    def derivative(_, y):
+        turned, omega = y[:9].reshape(3, 3), y[9:]
+        skew = np.array([[0, -omega[2], omega[1]], [omega[2], 0, -omega[0]], [-omega[1], omega[0], 0]])
+        return np.concatenate([(turned @ skew).ravel(), np.ravel(spin_rates(omega, turned.T @ tau))])
+
+    w0 = float(spin)
+    run = solve_ivp(derivative, (0.0, float(duration)), np.concatenate([start.ravel(), [0.0, 0.0, w0]]),
+                    method="DOP853", rtol=RTOL, atol=RTOL * abs(w0))
+    turned, omega = run.y[:9, -1].reshape(3, 3), run.y[9:, -1]
+    inertia = np.diag([float(transverse), float(transverse), float(axial)])
+    momentum = turned @ inertia @ omega
+    return _between(n, momentum), _between(n, turned[:, 2])
+
+
+def _between(u, v) -> float:
+    return float(np.arctan2(np.linalg.norm(np.cross(u, v)), np.dot(u, v)))
+
+
+class AxleTurn(sp.Function):
+    """The angle the axle turns through while the couple acts, of three numbers: P = I3 omega dt/I1
+    (L0 dt/I1), A and C = tau dt^2/I1 along and across the axis. The axle n obeys n' = L(t) x n/I1;
+    in the time s = t/dt and a frame with n(0) = e1 and the couple in the e1 e2 plane,
+    dn/ds = ((P + A s) e1 + C s e2) x n, integrated by mpmath's Taylor method (odefun) at the
+    working precision; the angle is atan2(|n(1) x e1|, n(1) . e1).
+
+    >>> AxleTurn(0, 0, 1).evalf(10)  # not spinning: the axle turns about e2 through the integral of s
+    0.5000000000
+    """
+
+    nargs = 3
+
+    @staticmethod
+    def _imp_(phase, along, across):  # lambdify's (floats or mpf)
+        phase, along, across = (mpmath.mpf(x) for x in (phase, along, across))
+
+        def rates(s, n):
+            lx, ly = phase + along * s, across * s
+            return [ly * n[2], -lx * n[2], lx * n[1] - ly * n[0]]
+
+        n = mpmath.odefun(rates, 0, [mpmath.mpf(1), mpmath.mpf(0), mpmath.mpf(0)])(1)
+        return mpmath.atan2(mpmath.sqrt(n[1] ** 2 + n[2] ** 2), n[0])
+
+    def _eval_evalf(self, prec):
+        if not all(a.is_number for a in self.args):
+            return None
+        with mpmath.workprec(prec + 20):
+            value = self._imp_(*(mpmath.mpf(sp.Float(a.evalf(prec + 20), prec + 20)._mpf_) for a in self.args))
+        return sp.Float(value, precision=prec)
+
+
+def axle_turn(moments, spin, axis, couple, torque, duration) -> sp.Expr:
+    """The angle the axle turns through while the couple acts (AxleTurn of its three numbers)."""
+    transverse, axial = moments
+    n, a = sp.Matrix(axis), sp.Matrix(couple)
+    scale = torque * duration**2 / transverse
+    return AxleTurn(tidy(axial * spin * duration / transverse), tidy(scale * n.dot(a)),
+                    tidy(scale * sp.sqrt(tidy(n.cross(a).dot(n.cross(a))))))
