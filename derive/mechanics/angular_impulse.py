@@ -25,6 +25,8 @@ dt*tau/(I*omega)
 """
 from __future__ import annotations
 
+from functools import lru_cache
+
 import mpmath
 import numpy as np
 import sympy as sp
@@ -39,9 +41,10 @@ RTOL = 1e-12
 
 def momentum_turn(axial, spin, axis, couple, torque, duration) -> sp.Expr:
     """The angle L turns through from the angular impulse about the fixed point: L0 = I3 omega n
-    along the body's axis `axis`, L1 = L0 + tau dt a (`couple`: the unit direction a)."""
-    before = axial * spin * sp.Matrix(axis)
-    return angle_between(before, before + torque * duration * sp.Matrix(couple))
+    along the body's axis `axis`, L1 = L0 + tau dt a (`couple`: the unit direction a); both over
+    I3 omega, so that the angle's arguments are numbers."""
+    before = sp.Matrix(axis)
+    return angle_between(before, before + torque * duration / (axial * spin) * sp.Matrix(couple))
 
 
 def small_angle(turn: sp.Expr, torque) -> sp.Expr:
@@ -54,11 +57,8 @@ def euler(moments, spin, axis, couple, torque, duration) -> tuple[float, float]:
     """(the angle L turns through, the angle the axle turns through) by Euler's equations
     (free_rotation.euler_rates, the couple's components along the body's axes) integrated with the
     orientation, for numbers: `moments` (I1, I3) about the point, the body's own z its axis."""
-    transverse, axial = moments
-    couple_body = sp.symbols("tau_1:4")
-    rates, w = euler_rates((transverse, transverse, axial), couple_body)
-    plain = sp.symbols("w1:4")
-    spin_rates = sp.lambdify([plain, couple_body], rates.xreplace(dict(zip(w, plain))), "numpy")
+    transverse, axial = (float(m) for m in moments)
+    spin_rates = _spin_rates()
     n = np.array([float(c) for c in axis])
     across = np.cross([0.0, 1.0, 0.0], n) if abs(n[1]) < 0.9 else np.cross([1.0, 0.0, 0.0], n)
     across /= np.linalg.norm(across)
@@ -68,15 +68,26 @@ def euler(moments, spin, axis, couple, torque, duration) -> tuple[float, float]:
     def derivative(_, y):
         turned, omega = y[:9].reshape(3, 3), y[9:]
         skew = np.array([[0, -omega[2], omega[1]], [omega[2], 0, -omega[0]], [-omega[1], omega[0], 0]])
-        return np.concatenate([(turned @ skew).ravel(), np.ravel(spin_rates(omega, turned.T @ tau))])
+        return np.concatenate([(turned @ skew).ravel(), np.ravel(spin_rates(omega, turned.T @ tau, transverse, axial))])
 
     w0 = float(spin)
     run = solve_ivp(derivative, (0.0, float(duration)), np.concatenate([start.ravel(), [0.0, 0.0, w0]]),
                     method="DOP853", rtol=RTOL, atol=RTOL * abs(w0))
     turned, omega = run.y[:9, -1].reshape(3, 3), run.y[9:, -1]
-    inertia = np.diag([float(transverse), float(transverse), float(axial)])
+    inertia = np.diag([transverse, transverse, axial])
     momentum = turned @ inertia @ omega
     return _between(n, momentum), _between(n, turned[:, 2])
+
+
+@lru_cache(maxsize=None)
+def _spin_rates():
+    """omega' of a symmetric body from Euler's equations with a couple, as a numpy function of
+    (omega, the couple's components, I1, I3), all along the body's axes."""
+    moments = sp.symbols("I_1 I_3", positive=True)
+    couple = sp.symbols("tau_1:4")
+    rates, w = euler_rates((moments[0], moments[0], moments[1]), couple)
+    plain = sp.symbols("w1:4")
+    return sp.lambdify([plain, couple, *moments], rates.xreplace(dict(zip(w, plain))), "numpy")
 
 
 def _between(u, v) -> float:
