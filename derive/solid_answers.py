@@ -87,6 +87,9 @@ class SolidAnswers:
                 raise self.problem.error(f"scene.bodies.{name}", f"the moments about the center are {sp.sstr(tensor)}: "
                                          "a couple's turn is derived for a body symmetric about its own axis")
             moments = (tensor[across[0], across[0]], tensor[k, k])
+            if tidy(moments[1]) == 0:
+                raise self.problem.error(f"scene.bodies.{name}", "a thin rod has no moment about its length: its spin "
+                                                                 "there carries no angular momentum")
         (couple,) = (p for p in self.scene.loads if isinstance(p, Torque) and p.body == name)
         axis = (sp.sin(point.tilt), sp.Integer(0), sp.cos(point.tilt))
         return moments, point.spin, axis, couple.axis, couple.torque, couple.duration
@@ -105,16 +108,16 @@ class SolidAnswers:
         result = {}
         for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "angular_impulse"}:
             (I1, I3), spin, axis, couple, torque, duration = self.impulse_turn(name)
-            before, impulse = sp.Symbol("L_0"), sp.Symbol("Delta_L")
+            before, impulse = sp.Symbol("L_0"), sp.Symbol("J")
             asked = tuple(sp.Eq(sp.Symbol(n), self.expressions[n], evaluate=False) for n, a in self.problem.asks.items()
                           if a.quantity.kind == "angular_impulse" and a.quantity.target == name)
             result[f"the {name}, by the angular impulse"] = [
                 Step(f"The {name} spins about its own axis n = {sp.sstr(axis)} with no turning across it: its "
                      "angular momentum about the fixed point lies along the axis", (sp.Eq(before, I3 * spin),)),
                 Step(f"About a fixed point dL/dt is the torque: the couple about a = {sp.sstr(couple)}, fixed in "
-                     f"the ground, adds its angular impulse over the time it acts, L = L_0 n + Delta_L a",
+                     f"the ground, adds its angular impulse J over the time it acts, L = L_0 n + J a",
                      (sp.Eq(impulse, torque * duration),), role="equations"),
-                Step("L turns through the angle between L_0 n and L = L_0 n + Delta_L a, atan2(|n x L|, n . L); "
+                Step("L turns through the angle between L_0 n and L = L_0 n + J a, atan2(|n x L|, n . L); "
                      "the small-angle limit is its leading term in the impulse"
                      + ("; the axle nods about L at |L|/I_1 (n' = L(t) x n/I_1, L growing by the couple), "
                         "integrated" if any(a.quantity.detail == "turn.axle" for a in self.problem.asks.values())

@@ -32,7 +32,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.derivation import tidy
 from derive.mechanics.free_rotation import angle_between, euler_rates
 
 #: The integrator's relative tolerance in the Euler route.
