@@ -99,8 +99,8 @@ class SolidAnswers:
         moments, spin, axis, couple, torque, duration = self.impulse_turn(q.target)
         if q.detail == "turn.axle":
             return angular_impulse.axle_turn(moments, spin, axis, couple, torque, duration)
-        turn = angular_impulse.momentum_turn(moments[1], spin, axis, couple, torque, duration)
-        return angular_impulse.small_angle(turn, torque) if q.detail == "turn.small_angle" else turn
+        derive = angular_impulse.small_angle if q.detail == "turn.small_angle" else angular_impulse.momentum_turn
+        return derive(moments[1], spin, axis, couple, torque, duration)
 
     def _angular_impulse_steps(self) -> dict[str, list[Step]]:
         """The angular impulse route's steps (L before, the impulse, the angle), and the Euler route's

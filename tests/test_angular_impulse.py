@@ -62,6 +62,17 @@ def test_the_key_is_the_one_the_spinning_wheel_system_built(tmp_path):
         assert (out / name).read_bytes() == (KEYS / name).read_bytes()
 
 
+def test_the_multiple_choice_key_is_the_one_the_spinning_wheel_system_built(tmp_path):
+    """The wrong options too (3 variants, seed 5): a couple reversed turns L as far, so the mistakes
+    are the old ones (the exact turn for the estimate and a factor of 2), not a reversed couple whose
+    small-angle limit was taken of the wrong symbol."""
+    out = tmp_path / "k"
+    done = run_derive("sheet", "tilting_wheel", "--variants", "3", "--seed", "5", "--to", "distractors",
+                      "--questions", "choice", "--out", str(out), env={"PYTHONHASHSEED": "0"})
+    assert done.returncode == 0, done.stderr
+    assert (out / "key.json").read_bytes() == (KEYS / "choice_key.json").read_bytes()
+
+
 def test_the_answers_are_the_spinning_wheel_systems_to_30_digits():
     """Expressions and 30-digit values at five sets of values (one far outside the ranges, a torque of
     1e-9 N m) as the retired system gave them."""

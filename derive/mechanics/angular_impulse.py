@@ -20,7 +20,7 @@ the Euler route's R(dt) n checks it.
 >>> turn = momentum_turn(I, w, (1, 0, 0), (0, 0, 1), tau, dt)
 >>> turn
 atan(dt*tau/(I*omega))
->>> small_angle(turn, tau)
+>>> small_angle(I, w, (1, 0, 0), (0, 0, 1), tau, dt)
 dt*tau/(I*omega)
 """
 from __future__ import annotations
@@ -47,10 +47,11 @@ def momentum_turn(axial, spin, axis, couple, torque, duration) -> sp.Expr:
     return angle_between(before, before + torque * duration / (axial * spin) * sp.Matrix(couple))
 
 
-def small_angle(turn: sp.Expr, torque) -> sp.Expr:
-    """The leading term of `turn` in the angular impulse (the torque scaled by a small factor)."""
+def small_angle(axial, spin, axis, couple, torque, duration) -> sp.Expr:
+    """The leading term of L's turn in the angular impulse: the torque scaled by a small factor."""
     small = sp.Dummy("epsilon", positive=True)
-    return tidy(sp.series(turn.subs(torque, small * torque), small, 0, 2).removeO().subs(small, 1))
+    turn = momentum_turn(axial, spin, axis, couple, small * torque, duration)
+    return tidy(sp.series(turn, small, 0, 2).removeO().subs(small, 1))
 
 
 def euler(moments, spin, axis, couple, torque, duration) -> tuple[float, float]:
