@@ -296,7 +296,7 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
             raise reader.fail(field, f"{path} is read in a state: give in: STATE (states: "
                                      f"{', '.join(scene.states) or 'none; add scene.states'})")
         return None
-    if raw not in scene.states:
+    if not isinstance(raw, str) or raw not in scene.states:
         raise reader.fail(field, no_such("state", raw, scene.states, "states") + ("; add scene.states" if not scene.states else ""))
     if quantity.kind not in STATE_KINDS or quantity.kind == "contact" and quantity.detail not in ("normal_force",
                                                                                                   "friction"):
