@@ -99,34 +99,35 @@ class SolidAnswers:
         moments, spin, axis, couple, torque, duration = self.impulse_turn(q.target)
         if q.detail == "turn.axle":
             return angular_impulse.axle_turn(moments, spin, axis, couple, torque, duration)
-        derive = angular_impulse.small_angle if q.detail == "turn.small_angle" else angular_impulse.momentum_turn
-        return derive(moments[1], spin, axis, couple, torque, duration)
+        route = angular_impulse.small_angle if q.detail == "turn.small_angle" else angular_impulse.momentum_turn
+        return route(moments[1], spin, axis, couple, torque, duration)
 
     def _angular_impulse_steps(self) -> dict[str, list[Step]]:
         """The angular impulse route's steps (L before, the impulse, the angle), and the Euler route's
         equations (integrated numerically by the check)."""
         result = {}
         for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "angular_impulse"}:
-            (I1, I3), spin, axis, couple, torque, duration = self.impulse_turn(name)
+            (I1, I3), spin, _, _, torque, duration = self.impulse_turn(name)
             before, impulse = sp.Symbol("L_0"), sp.Symbol("J")
             asked = tuple(sp.Eq(sp.Symbol(n), self.expressions[n], evaluate=False) for n, a in self.problem.asks.items()
                           if a.quantity.kind == "angular_impulse" and a.quantity.target == name)
+            axle = any(a.quantity.detail == "turn.axle" for a in self.problem.asks.values())
             result[f"the {name}, by the angular impulse"] = [
-                Step(f"The {name} spins about its own axis n = {sp.sstr(axis)} with no turning across it: its "
-                     "angular momentum about the fixed point lies along the axis", (sp.Eq(before, I3 * spin),)),
-                Step(f"About a fixed point dL/dt is the torque: the couple about a = {sp.sstr(couple)}, fixed in "
-                     f"the ground, adds its angular impulse J over the time it acts, L = L_0 n + J a",
-                     (sp.Eq(impulse, torque * duration),), role="equations"),
-                Step("L turns through the angle between L_0 n and L = L_0 n + J a, atan2(|n x L|, n . L); "
-                     "the small-angle limit is its leading term in the impulse"
-                     + ("; the axle nods about L at |L|/I_1 (n' = L(t) x n/I_1, L growing by the couple), "
-                        "integrated" if any(a.quantity.detail == "turn.axle" for a in self.problem.asks.values())
-                        else ""), asked, role="solve")]
+                Step(f"The {name} spins about its own axis with no turning across it, so its angular momentum about "
+                     "the fixed point lies along the axis", (sp.Eq(before, I3 * spin),)),
+                Step("About a fixed point the rate of change of the angular momentum is the torque: the couple, "
+                     "about a direction fixed in the ground, adds its angular impulse along that direction over the "
+                     "time it acts", (sp.Eq(impulse, torque * duration),), role="equations"),
+                Step("The angular momentum turns through the angle between its values before and after the impulse "
+                     "is added; the small-angle limit is the leading term of that angle in the impulse"
+                     + ("; the axle nods about the angular momentum, at its size over the moment across the axis, "
+                        "while the couple makes it grow, and is integrated numerically" if axle else ""),
+                     asked, role="solve")]
             rates, turning = free_rotation.euler_rates((I1, I1, I3), sp.symbols("tau_1:4"))
             plain = dict(zip(turning, sp.symbols("omega_1:4")))
             result[f"the {name}, by Euler's equations"] = [Step(
-                "Euler's equations in the body's axes with the couple's components tau_i there, integrated with "
-                "the orientation over the time the couple acts (checked against the angular impulse)",
+                "Euler's equations in the body's axes, with the couple's components along them, integrated with "
+                "the body's orientation over the time the couple acts (checked against the angular impulse)",
                 tuple(sp.Eq(sp.Symbol(f"omegadot_{k}"), r.xreplace(plain))
                       for k, r in zip((1, 2, 3), rates)), role="equations")]
         return result
