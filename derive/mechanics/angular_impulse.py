@@ -122,8 +122,9 @@ class AxleTurn(sp.Function):
     def _eval_evalf(self, prec):
         if not all(a.is_number for a in self.args):
             return None
-        with mpmath.workprec(prec + 20):
-            value = self._imp_(*(mpmath.mpf(sp.Float(a.evalf(prec + 20), prec + 20)._mpf_) for a in self.args))
+        digits = mpmath.libmp.prec_to_dps(prec) + 5
+        with mpmath.workdps(digits):
+            value = self._imp_(*(mpmath.mpf(sp.Float(sp.N(a, digits), digits)._mpf_) for a in self.args))
         return sp.Float(value, precision=prec)
 
 
