@@ -179,6 +179,12 @@ def test_a_couple_in_3d_on_a_planar_body_and_the_old_key_are_refused(tmp_path):
     assert "pivot_point: {at: center" in refused(tmp_path, old, "scene.spinning_wheel")
 
 
+def test_a_transverse_moment_no_ask_reads_is_refused(tmp_path):
+    text = Path(problem.load("tilting_wheel").path).read_text().replace(
+        "inertia: {axial: I}", "inertia: {axial: I, transverse: I/2}")
+    refused(tmp_path, text, "scene.bodies.wheel.inertia.transverse")
+
+
 def test_the_axle_needs_the_transverse_moment():
     """tilting_wheel gives only the moment about the axle: L's turn does not need more, the axle's does."""
     text = (Path(problem.load("tilting_wheel").path)).read_text().replace(
