@@ -13,7 +13,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 
-from derive import library, problem, simulate
+from derive import library, problem, simulate, simulate_solid
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.scene import DYNAMIC_KINDS
@@ -30,6 +30,7 @@ class Row:
     seconds: float
     passed: bool
     failure: str = ""
+    figures: tuple[str, ...] = ()  # what was simulated, each with its relative difference
 
 
 def audit(references: list[str] | None = None, progress: Reporter = Reporter()) -> list[Row]:
@@ -54,11 +55,16 @@ def _audit_one(reference: str, begin) -> Row:
         checks = solution.checks()
         row.dimensions = "ok"
         row.routes = ", ".join(c.name for c in checks if c.name != "dimensions") or "-"
-        if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS:
-            report = simulate.check(solution)
-            row.simulation = ("ok: " + ", ".join(report.compared)) if report.passed else "FAILED"
-            if not report.passed:
-                row.passed, row.failure = False, "; ".join(report.notes)
+        kinds = {a.quantity.kind for a in p.asks.values()}
+        reports = ([simulate.check(solution)] if kinds & DYNAMIC_KINDS else []) + (
+            [simulate_solid.check(solution)] if kinds & simulate_solid.KINDS else [])
+        if reports:
+            passed = all(r.passed for r in reports)
+            compared = ", ".join(dict.fromkeys(n for r in reports for n in r.compared))
+            row.simulation = ("ok: " + compared if compared else "-") if passed else "FAILED"
+            row.figures = tuple(f for r in reports for f in r.figures)
+            if not passed:
+                row.passed, row.failure = False, "; ".join(n for r in reports for n in r.notes)
     except (CheckFailure, InputError) as error:
         row.passed, row.failure = False, str(error)
     row.seconds = time.perf_counter() - start
@@ -74,6 +80,9 @@ def table(rows: list[Row]) -> str:
              "  ".join("-" * w for w in widths)]
     lines += ["  ".join(c.ljust(w) for c, w in zip(b, widths)) for b in body]
     failed = [r for r in rows if not r.passed]
+    figures = [f"  {r.id}: {f}" for r in rows for f in r.figures]
+    if figures:
+        lines += ["", "simulated in 3D (derive.simulate_solid):", *figures]
     lines.append("")
     lines.append(f"{len(rows) - len(failed)} passed, {len(failed)} failed")
     lines += [f"FAILED {r.id}: {r.failure}" for r in failed]

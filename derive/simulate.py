@@ -38,6 +38,7 @@ class SimulationReport:
     passed: bool = True
     compared: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    figures: list[str] = field(default_factory=list)  # what was simulated, each with its relative difference
 
     def fail(self, message: str) -> None:
         self.passed = False

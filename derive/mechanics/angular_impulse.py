@@ -7,7 +7,8 @@ space acts from t = 0 to t = dt. Two routes to L at the end:
 
 - impulse: the angular impulse about the fixed point, dL/dt = tau integrated: L1 = L0 + tau dt a;
 - euler: Euler's equations in the body frame, I omega' + omega x (I omega) = R^T tau a, with the
-  orientation R' = R [omega]x, integrated numerically (scipy DOP853, rtol 1e-12); L1 = R I omega.
+  orientation (a quaternion), integrated numerically by derive.rigid_motion (scipy DOP853, rtol
+  1e-12), the route derive check's 3D simulations take; L1 = R I omega.
 
 L turns through the angle between L0 and L1, atan2(|L0 x L1|, L0 . L1): atan(tau dt/(I3 omega))
 for a couple across the spin; its leading term in the impulse is the notes' tau dt/(I3 omega).
@@ -25,18 +26,13 @@ dt*tau/(I*omega)
 """
 from __future__ import annotations
 
-from functools import lru_cache
-
 import mpmath
 import numpy as np
 import sympy as sp
-from scipy.integrate import solve_ivp
 
+from derive import rigid_motion
 from derive.mechanics.derivation import tidy
-from derive.mechanics.free_rotation import angle_between, euler_rates
-
-#: The integrator's relative tolerance in the Euler route.
-RTOL = 1e-12
+from derive.mechanics.free_rotation import angle_between
 
 
 def momentum_turn(axial, spin, axis, couple, torque, duration) -> sp.Expr:
@@ -55,40 +51,21 @@ def small_angle(axial, spin, axis, couple, torque, duration) -> sp.Expr:
 
 
 def euler(moments, spin, axis, couple, torque, duration) -> tuple[float, float]:
-    """(the angle L turns through, the angle the axle turns through) by Euler's equations
-    (free_rotation.euler_rates, the couple's components along the body's axes) integrated with the
-    orientation, for numbers: `moments` (I1, I3) about the point, the body's own z its axis."""
+    """(the angle L turns through, the angle the axle turns through) by Euler's equations integrated
+    with the orientation (derive.rigid_motion: a quaternion, scipy DOP853 at rtol 1e-12), for
+    numbers: `moments` (I1, I3) about the point, the body's own z its axis."""
     transverse, axial = (float(m) for m in moments)
-    spin_rates = _spin_rates()
+    inertia = np.diag([transverse, transverse, axial])
     n = np.array([float(c) for c in axis])
     across = np.cross([0.0, 1.0, 0.0], n) if abs(n[1]) < 0.9 else np.cross([1.0, 0.0, 0.0], n)
     across /= np.linalg.norm(across)
     start = np.column_stack([across, np.cross(n, across), n])  # the body's own axes in the ground frame
-    tau = float(torque) * np.array([float(c) for c in couple])
-
-    def derivative(_, y):
-        turned, omega = y[:9].reshape(3, 3), y[9:]
-        skew = np.array([[0, -omega[2], omega[1]], [omega[2], 0, -omega[0]], [-omega[1], omega[0], 0]])
-        return np.concatenate([(turned @ skew).ravel(), np.ravel(spin_rates(omega, turned.T @ tau, transverse, axial))])
-
-    w0 = float(spin)
-    run = solve_ivp(derivative, (0.0, float(duration)), np.concatenate([start.ravel(), [0.0, 0.0, w0]]),
-                    method="DOP853", rtol=RTOL, atol=RTOL * abs(w0))
-    turned, omega = run.y[:9, -1].reshape(3, 3), run.y[9:, -1]
-    inertia = np.diag([transverse, transverse, axial])
-    momentum = turned @ inertia @ omega
-    return _between(n, momentum), _between(n, turned[:, 2])
-
-
-@lru_cache(maxsize=None)
-def _spin_rates():
-    """omega' of a symmetric body from Euler's equations with a couple, as a numpy function of
-    (omega, the couple's components, I1, I3), all along the body's axes."""
-    moments = sp.symbols("I_1 I_3", positive=True)
-    couple = sp.symbols("tau_1:4")
-    rates, w = euler_rates((moments[0], moments[0], moments[1]), couple)
-    plain = sp.symbols("w1:4")
-    return sp.lambdify([plain, couple, *moments], rates.xreplace(dict(zip(w, plain))), "numpy")
+    applied = float(torque) * np.array([float(c) for c in couple])
+    run = rigid_motion.integrate(rigid_motion.about_point(inertia, couple=applied),
+                                 rigid_motion.start(start, float(spin) * n), float(duration))
+    end = run.y[:, -1]
+    turned = rigid_motion.axes(end)
+    return _between(n, turned @ inertia @ end[4:7]), _between(n, turned[:, 2])
 
 
 def _between(u, v) -> float:
