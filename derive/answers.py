@@ -18,7 +18,7 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits, numeric
-from derive.mechanics import (gyroscope, lagrange, many_bodies, newton_euler, orbits, paths, quantum, rolling,
+from derive.mechanics import (lagrange, many_bodies, newton_euler, orbits, paths, quantum, rolling,
                               rolling_coin)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
@@ -676,11 +676,8 @@ class Solution(StateAnswers, CrossChecks, SolidAnswers):
             result = self._bearings(ask.quantity, "newton_euler")
         elif ask.quantity.kind == "free_rotation":
             result = self._free_rotation(ask.quantity)
-        elif ask.quantity.kind == "wheel":
-            w = self.scene.wheel
-            arguments = (w.torque, w.duration, w.inertia, w.spin)
-            result = (gyroscope.axis_turn(*arguments, "vector") if ask.quantity.detail == "axis_turn"
-                      else gyroscope.small_angle(*arguments))
+        elif ask.quantity.kind == "angular_impulse":
+            result = self._angular_impulse(ask.quantity)
         else:
             result = self._route_expression(ask, "lagrange")
         if result.has(sp.Piecewise):  # regimes: one case per regime, each in its simplest form
@@ -737,6 +734,8 @@ class Solution(StateAnswers, CrossChecks, SolidAnswers):
                 for name, coin in self.scene.rolls_on_edge.items() for route in ("lagrange", "newton_euler")}
         if kinds == {"free_rotation"}:
             return self._free_rotation_steps()
+        if kinds == {"angular_impulse"}:
+            return self._angular_impulse_steps()
         if kinds == {"rolling"}:
             (body,) = {a.quantity.target for a in self.problem.asks.values()}
             return {f"by the {route}": list(rolling.rolling(self.scene, body, route)[1]) for route in rolling.ROUTES}

@@ -296,7 +296,7 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
             raise reader.fail(field, f"{path} is read in a state: give in: STATE (states: "
                                      f"{', '.join(scene.states) or 'none; add scene.states'})")
         return None
-    if raw not in scene.states:
+    if not isinstance(raw, str) or raw not in scene.states:
         raise reader.fail(field, no_such("state", raw, scene.states, "states") + ("; add scene.states" if not scene.states else ""))
     if quantity.kind not in STATE_KINDS or quantity.kind == "contact" and quantity.detail not in ("normal_force",
                                                                                                   "friction"):
@@ -482,6 +482,12 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
                                                                  "angle_omega_axis"}:
             raise reader.fail(f"scene.bodies.{name}.free_rotation.across", "no ask reads it (the precession in "
                                                                           "space and the angles of L and omega do)")
+    for name, point in scene.pivot_points.items():  # a moment across the axle only the axle's turn reads
+        if point.centered and point.inertia is not None and point.inertia[0].free_symbols <= symbols \
+                and not any(a.quantity.kind == "angular_impulse" and a.quantity.detail == "turn.axle"
+                            and a.quantity.target == name for a in asks.values()):
+            raise reader.fail(f"scene.bodies.{name}.inertia.transverse", "no ask reads it (the axle's turn, "
+                                                                         "turn.axle, does; L's turn does not)")
     if not kinds & DYNAMIC_KINDS:
         for c in scene.constraints:
             if isinstance(c, Contact) and c.has_friction:

@@ -7,8 +7,9 @@ into the ground's (z up), q' = q (0, omega)/2 with omega in the body frame; then
 body frame. Three bodies:
 
 - `about_point`: turning about a fixed point under its weight (about its center of mass and
-  with no weight: free rotation): Euler's equations in the body frame, I omega' = tau - omega x I
-  omega, I the tensor about the point (any tensor), tau = r_cm x m g;
+  with no weight: free rotation) and a couple fixed in the ground: Euler's equations in the body
+  frame, I omega' = tau - omega x I omega, I the tensor about the point (any tensor), tau = r_cm x
+  m g plus the couple;
 - `rolling_on_rim`: an axially symmetric body (its axis the body's z) rolling without slipping on
   its rim on a level floor, the center's position three more entries of the state: m a_G = F - m g z
   and dH_G/dt = r_GP x F in the ground frame, with a_G from the rolling condition (the rim's point
@@ -56,16 +57,18 @@ def _turning(q, omega) -> np.ndarray:
     return 0.5 * np.array([-v @ omega, *(w * omega + np.cross(v, omega))])
 
 
-def about_point(tensor, mass: float = 0.0, g: float = 0.0, center=(0.0, 0.0, 0.0)):
+def about_point(tensor, mass: float = 0.0, g: float = 0.0, center=(0.0, 0.0, 0.0), couple=(0.0, 0.0, 0.0)):
     """The rates of (q, omega) of a body turning about a fixed point, `tensor` about that point in
-    the body frame, its center of mass at `center` (body frame) and its weight m g down."""
+    the body frame, its center of mass at `center` (body frame) and its weight m g down; `couple`, a
+    constant torque fixed in the ground (ground frame)."""
     inertia = np.asarray(tensor, dtype=float)
-    inverse, arm = np.linalg.inv(inertia), np.asarray(center, dtype=float)
+    inverse, arm, applied = np.linalg.inv(inertia), np.asarray(center, dtype=float), np.asarray(couple, dtype=float)
 
     def rates(t, y):
         omega = y[4:7]
-        weight = -mass * g * axes(y).T @ UP  # in the body frame
-        torque = np.cross(arm, weight) - np.cross(omega, inertia @ omega)
+        turn = axes(y)
+        weight = -mass * g * turn.T @ UP  # in the body frame
+        torque = np.cross(arm, weight) + turn.T @ applied - np.cross(omega, inertia @ omega)
         return np.concatenate([_turning(y[:4], omega), inverse @ torque])
     return rates
 

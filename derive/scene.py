@@ -132,20 +132,6 @@ class Motion:
 
 
 @dataclass(frozen=True)
-class SpinningWheel:
-    """A wheel spinning at `spin` (moment `inertia` about its axle) under a torque `torque`,
-    perpendicular to the spin axis and fixed in direction, for a time `duration`."""
-
-    inertia: sp.Expr
-    spin: sp.Expr
-    torque: sp.Expr
-    duration: sp.Expr
-
-
-WHEEL_QUANTITIES = ("axis_turn", "axis_turn_small_angle")
-
-
-@dataclass(frozen=True)
 class StandingWave:
     """A particle whose de Broglie wavelength fits `wavelengths` times around a circle (§8)."""
 
@@ -174,15 +160,22 @@ class Bearings:
 
 @dataclass(frozen=True)
 class PivotPoint:
-    """A body on a fixed point under gravity (a top's tip, a gyroscope's pivot): the point's
-    `offset` (x, y, z) from the center of mass in the body's own frame; the axis from it through
-    the center tilted by `tilt` from the vertical; `spin`, omega's component along that axis.
-    `inertia`: a custom body's (transverse, axial) moments about its center of mass, else None."""
+    """A body on a fixed point (a top's tip, a gyroscope's pivot): the point's `offset` (x, y, z)
+    from the center of mass in the body's own frame; the axis from it through the center tilted by
+    `tilt` from the vertical; `spin`, omega's component along that axis. At the center of mass
+    (`offset` zero: no weight's torque about it) the axis is the body's own symmetry axis, leaning
+    by `tilt` from the ground's z toward its x. `inertia`: a custom body's (transverse, axial)
+    moments about its center of mass, else None."""
 
     offset: tuple[sp.Expr, sp.Expr, sp.Expr]
     tilt: sp.Expr
     spin: sp.Expr
     inertia: tuple[sp.Expr, sp.Expr] | None = None
+
+    @property
+    def centered(self) -> bool:
+        """On its center of mass: the weight exerts no torque about the point."""
+        return not any(self.offset)
 
 
 @dataclass(frozen=True)
@@ -227,6 +220,10 @@ FREE_ROTATION_QUANTITIES = ("free_precession.body", "free_precession.space", "an
 #: What a body on a fixed point can be asked (derive.mechanics.fixed_point).
 PIVOT_POINT_QUANTITIES = ("precession.slow", "precession.fast", "precession.fast_top", "sleeping.min_spin",
                           "nutation.frequency", "nutation.fast_top")
+#: What a body on a fixed point at its center of mass, under a couple for a time, can be asked
+#: (derive.mechanics.angular_impulse): the angle L turns through, its small-angle limit (the leading
+#: term in the angular impulse), the angle the axle turns through.
+IMPULSE_TURN_QUANTITIES = ("turn.angular_momentum", "turn.small_angle", "turn.axle")
 
 
 #: Scene-level systems and what each can be asked: (scene attribute, quantities).
@@ -311,7 +308,6 @@ class Scene:
     loads: tuple[Part, ...] = ()
     orbit: Orbit | None = None
     motions: dict[str, Motion] = field(default_factory=dict)
-    wheel: SpinningWheel | None = None
     wave: StandingWave | None = None
     internal_forces: int | None = None
     bearings: dict[str, Bearings] = field(default_factory=dict)
@@ -386,8 +382,9 @@ class Quantity:
     prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
     "system" (inertia about the center of mass, reduced_mass of two bodies), "pivot_point" (a body on a
     fixed point; PIVOT_POINT_QUANTITIES), "rolls_on_edge" (a coin rolling on its rim; ROLLING_COIN_QUANTITIES),
-    "free_rotation" (a body turning with no torque; FREE_ROTATION_QUANTITIES),
-    "oscillation" (period at the ask's amplitude), "wheel" (WHEEL_QUANTITIES), the SYSTEMS
+    "free_rotation" (a body turning with no torque; FREE_ROTATION_QUANTITIES), "angular_impulse" (a body on a
+    fixed point at its center of mass under a couple for a time; IMPULSE_TURN_QUANTITIES),
+    "oscillation" (period at the ask's amplitude), the SYSTEMS
     ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
     "small_oscillation" (omega, period, growth_rate; modes.N.omega|period), "equilibrium" (a body's angle, x or y where
     the scene rests: derive.mechanics.equilibrium); read in a state (RATE_KINDS) also
@@ -403,7 +400,7 @@ class Quantity:
 
 
 #: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
-RESERVED_NAMES = ("spinning_wheel", "system", "orbit", "oscillation", "small_oscillation", "ground",
+RESERVED_NAMES = ("system", "orbit", "oscillation", "small_oscillation", "ground",
                   "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass")
 
 #: What a body on a surface can be asked, besides what every body can.
@@ -446,10 +443,12 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
             raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body under its weight alone: a "
                              "scene with other loads or joints is not modelled")
         return Quantity("bearings", head, rest)
-    if head == "spinning_wheel":
-        if scene.wheel is None or rest not in WHEEL_QUANTITIES:
-            raise ValueError(f"a scene's spinning_wheel has {', '.join(WHEEL_QUANTITIES)}")
-        return Quantity("wheel", None, rest)
+    if head in scene.pivot_points and scene.pivot_points[head].centered and rest not in ("mass", "inertia"):
+        if rest not in IMPULSE_TURN_QUANTITIES:
+            raise ValueError(f"a body on a fixed point at its center of mass (no weight's torque about it) has "
+                             f"{', '.join(IMPULSE_TURN_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, IMPULSE_TURN_QUANTITIES))
+        return Quantity("angular_impulse", head, rest)
     if head in scene.pivot_points and rest not in ("mass", "inertia"):
         if rest not in PIVOT_POINT_QUANTITIES:
             raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, mass and inertia"

@@ -1,5 +1,5 @@
 """The scene section of a problem file: bodies, joints, contacts, surfaces, loads and the
-scene-level systems (orbit, spinning wheel, standing wave, internal forces); its states
+scene-level systems (orbit, standing wave, internal forces); its states
 are read by derive.state_file.
 
 Every field goes through the `derive.reader.Reader`, so errors name the file and the field.
@@ -20,12 +20,13 @@ from derive.parts import clutch, contact, cord, damper, force, gravity, pin, sli
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
 from derive.parts.pin import Pin
+from derive.parts.torque import Torque
 from derive.parts.places import Places, turned
 from derive.parts.surfaces import Circle, Plane
 from derive.reader import Reader, describe
 from derive.spelling import did_you_mean, no_such
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Motion, Orbit, Scene, SpinningWheel,
+from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Motion, Orbit, Scene,
                           StandingWave)
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
@@ -473,15 +474,20 @@ def read_scene(reader: Reader, raw) -> Scene:
         raise reader.fail("scene.top", "a top is a body on a fixed point: bodies: {top: {shape: custom, mass: m, "
                                        "inertia: {axial: I3, transverse: I1}, pivot_point: {at: l, tilt: theta, "
                                        "spin: omega}}} (or any shape of derive inertia), with - gravity: g")
-    wheel = _wheel(reader, raw["spinning_wheel"]) if "spinning_wheel" in raw else None
+    if "spinning_wheel" in raw:
+        raise reader.fail("scene.spinning_wheel", "a spinning wheel is a body on a fixed point at its center of mass "
+                                                  "under a couple for a time: bodies: {wheel: {shape: custom, "
+                                                  "inertia: {axial: I}, pivot_point: {at: center, tilt: pi/2, spin: "
+                                                  "omega}}}, loads: [{torque: {on: wheel, magnitude: tau, axis: "
+                                                  "[0, 0, 1], duration: dt}}]")
     wave = _wave(reader, raw["standing_wave"]) if "standing_wave" in raw else None
     internal = _internal_forces(reader, raw["internal_forces"]) if "internal_forces" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
     ground = {name: _vector(reader, v, f"scene.points.{name}", "m", "a position")
               for name, v in reader.named(raw.get("points"), "points").items()}
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
-    if not bodies_raw and all(s is None for s in (orbit, wheel, wave, internal)):
-        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a spinning_wheel)")
+    if not bodies_raw and all(s is None for s in (orbit, wave, internal)):
+        raise reader.fail("scene.bodies", "a scene needs at least one body (or an orbit, a standing_wave)")
     bodies, pins = {}, []
     for name, spec in bodies_raw.items():
         reader.name(name, f"scene.bodies.{name}", "a body name")
@@ -543,7 +549,15 @@ def read_scene(reader: Reader, raw) -> Scene:
     gravity_part = found[0] if found else None
     pivoted = {n: solid_file.pivot_point(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
                if "pivot_point" in spec}
-    if pivoted and (gravity_part is None or len(bodies) > 1 or constraints or loads):
+    _couples_in_3d(reader, raw.get("loads") or [], loads, pivoted)
+    if any(p.centered for p in pivoted.values()):
+        if gravity_part is not None or len(bodies) > 1 or constraints or len(loads) != 1 or raw.get("states"):
+            raise reader.fail("scene.loads" if gravity_part is not None or len(loads) != 1 else "scene",
+                              "a body on a fixed point at its center of mass turns under one couple for a time: one "
+                              "body, one - torque: {on: BODY, magnitude: tau, axis: [x, y, z], duration: dt}, no "
+                              "gravity (its weight exerts no torque about the point: leave it out), joints, cords or "
+                              "states")
+    elif pivoted and (gravity_part is None or len(bodies) > 1 or constraints or loads):
         raise reader.fail("scene.loads" if gravity_part is None else "scene", "a body on a fixed point turns under "
                           "gravity alone: one body, - gravity: g, no other loads, joints or cords")
     held = {n: solid_file.bearings(reader, spec, f"scene.bodies.{n}", bodies[n], gravity_part is not None)
@@ -560,7 +574,7 @@ def read_scene(reader: Reader, raw) -> Scene:
                                    "loads, joints, cords or states (its weight exerts no torque about its center: "
                                    "leave gravity out)")
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
-    scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wheel, wave,
+    scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wave,
                   internal, held, pivoted, rolling, free, states)
     _check_geometry(reader, places, scene)
     scene = dataclasses.replace(scene, placed=_placements(places, scene))
@@ -584,13 +598,23 @@ def _internal_forces(reader: Reader, raw) -> int:
     return raw["bodies"]
 
 
-def _wheel(reader: Reader, raw) -> SpinningWheel:
-    field = "scene.spinning_wheel"
-    raw = reader.mapping(raw, field, required=("inertia", "spin", "torque", "duration"))
-    return SpinningWheel(reader.positive(raw["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia"),
-                         reader.positive(raw["spin"], f"{field}.spin", "rad/s", "a spin"),
-                         reader.positive(raw["torque"], f"{field}.torque", "N*m", "a torque"),
-                         reader.positive(raw["duration"], f"{field}.duration", "s", "a duration"))
+def _couples_in_3d(reader: Reader, raw: list, loads: list, pivoted: dict) -> None:
+    """A torque about a direction in 3D (`axis:`, `duration:`) acts on a body on a fixed point at its
+    center of mass, and such a body's torque is one: each refused by its field otherwise."""
+    torques = iter(p for p in loads if isinstance(p, Torque))
+    for i, spec in enumerate(raw):
+        if "torque" not in spec:
+            continue
+        couple, field = next(torques), f"scene.loads[{i}].torque"
+        centered = couple.body in pivoted and pivoted[couple.body].centered
+        if couple.axis is not None and not centered:
+            raise reader.fail(f"{field}.axis", "a couple about a direction in 3D for a time acts on a body on a fixed "
+                                               "point at its center of mass (pivot_point: {at: center}); in the "
+                                               "plane a torque is counter-clockwise, with no axis or duration")
+        if couple.axis is None and centered:
+            raise reader.fail(f"{field}.axis", "a body turning in 3D about its center of mass takes a couple about a "
+                                               "direction fixed in the ground for a time: axis: [x, y, z] (z up) "
+                                               "and duration: dt")
 
 
 def _orbit(reader: Reader, raw) -> Orbit:

@@ -1,7 +1,8 @@
 """Answers about bodies in 3D, as a part of `derive.answers.Solution`: a body in bearings, on a
-fixed point, rolling on its edge, or turning freely. Each reads the body's tensor or moments from
-the scene and gives the asked quantity by one route of its module in derive.mechanics
-(bearings, fixed_point, rolling_coin, free_rotation); the cross-checks compare the routes.
+fixed point (under gravity, or at its center of mass under a couple for a time), rolling on its
+edge, or turning freely. Each reads the body's tensor or moments from the scene and gives the
+asked quantity by one route of its module in derive.mechanics (bearings, fixed_point,
+angular_impulse, rolling_coin, free_rotation); the cross-checks compare the routes.
 
 >>> from derive.answers import Solution
 >>> from derive.problem import load
@@ -12,8 +13,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics import bearings, fixed_point, free_rotation, rolling_coin
+from derive.mechanics import angular_impulse, bearings, fixed_point, free_rotation, rolling_coin
 from derive.mechanics.derivation import Step, tidy
+from derive.parts.torque import Torque
 from derive.scene import Quantity
 
 
@@ -71,6 +73,69 @@ class SolidAnswers:
         except fixed_point.NotSymmetric as error:
             raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
         return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
+
+    def impulse_turn(self, name: str) -> tuple:
+        """((I1, I3), spin, the axis n, the couple's direction a, tau, dt) of a body on a fixed point
+        at its center of mass under a couple for a time (derive.mechanics.angular_impulse): the axis
+        leans by the tilt from the ground's z toward its x; refused for a body whose moments about
+        its own axis are not those of a symmetric body."""
+        body, point = self.scene.bodies[name], self.scene.pivot_points[name]
+        if point.inertia is not None:
+            moments = point.inertia
+        else:
+            parts = body.composite.parts if body.composite is not None else None
+            tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
+            k = "xyz".index(bearings.own_axis(body.shape))
+            across = [i for i in range(3) if i != k]
+            if any(tidy(tensor[i, j]) != 0 for i in range(3) for j in range(i)) \
+                    or tidy(tensor[across[0], across[0]] - tensor[across[1], across[1]]) != 0:
+                raise self.problem.error(f"scene.bodies.{name}", f"the moments about the center are {sp.sstr(tensor)}: "
+                                         "a couple's turn is derived for a body symmetric about its own axis")
+            moments = (tensor[across[0], across[0]], tensor[k, k])
+            if tidy(moments[1]) == 0:
+                raise self.problem.error(f"scene.bodies.{name}", "a thin rod has no moment about its length: its spin "
+                                                                 "there carries no angular momentum")
+        (couple,) = (p for p in self.scene.loads if isinstance(p, Torque) and p.body == name)
+        axis = (sp.sin(point.tilt), sp.Integer(0), sp.cos(point.tilt))
+        return moments, point.spin, axis, couple.axis, couple.torque, couple.duration
+
+    def _angular_impulse(self, q: Quantity) -> sp.Expr:
+        """The angle L turns through by the angular impulse, its small-angle limit, or the axle's turn."""
+        moments, spin, axis, couple, torque, duration = self.impulse_turn(q.target)
+        if q.detail == "turn.axle":
+            return angular_impulse.axle_turn(moments, spin, axis, couple, torque, duration)
+        route = angular_impulse.small_angle if q.detail == "turn.small_angle" else angular_impulse.momentum_turn
+        return route(moments[1], spin, axis, couple, torque, duration)
+
+    def _angular_impulse_steps(self) -> dict[str, list[Step]]:
+        """The angular impulse route's steps (L before, the impulse, the angle), and the Euler route's
+        equations (integrated numerically by the check)."""
+        result = {}
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "angular_impulse"}:
+            (I1, I3), spin, _, _, torque, duration = self.impulse_turn(name)
+            before, impulse = sp.Symbol("L_0"), sp.Symbol("J")
+            asked = tuple(sp.Eq(sp.Symbol(n), self.expressions[n], evaluate=False) for n, a in self.problem.asks.items()
+                          if a.quantity.kind == "angular_impulse" and a.quantity.target == name)
+            axle = any(a.quantity.detail == "turn.axle" for a in self.problem.asks.values())
+            result[f"the {name}, by the angular impulse"] = [
+                Step(f"The {name} spins about its own axis with no turning across it, so its angular momentum about "
+                     "the fixed point lies along the axis", (sp.Eq(before, I3 * spin),)),
+                Step("About a fixed point the rate of change of the angular momentum is the torque: the couple, "
+                     "about a direction fixed in the ground, adds its angular impulse along that direction over the "
+                     "time it acts", (sp.Eq(impulse, torque * duration),), role="equations"),
+                Step("The angular momentum turns through the angle between its values before and after the impulse "
+                     "is added; the small-angle limit is the leading term of that angle in the impulse"
+                     + ("; the axle nods about the angular momentum, at its size over the moment across the axis, "
+                        "while the couple makes it grow, and is integrated numerically" if axle else ""),
+                     asked, role="solve")]
+            rates, turning = free_rotation.euler_rates((I1, I1, I3), sp.symbols("tau_1:4"))
+            plain = dict(zip(turning, sp.symbols("omega_1:4")))
+            result[f"the {name}, by Euler's equations"] = [Step(
+                "Euler's equations in the body's axes, with the couple's components along them, integrated with "
+                "the body's orientation over the time the couple acts (checked against the angular impulse)",
+                tuple(sp.Eq(sp.Symbol(f"omegadot_{k}"), r.xreplace(plain))
+                      for k, r in zip((1, 2, 3), rates)), role="equations")]
+        return result
 
     def rolling_coin(self, name: str) -> tuple:
         """(I1, I3, mass, g, radius) of a body rolling on its edge (derive.mechanics.rolling_coin): a

@@ -159,7 +159,8 @@ def pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoin
     gravity (derive.mechanics.fixed_point); a tilt or spin left out is open (the asks that need it
     are refused). `at`: a distance along the body's own axis (a rod's
     length, a composite's x, the symmetry axis z of other shapes) from the center of mass, on its
-    negative side; or `tip` (a cone's apex), `end` (a rod's), a composite's named point."""
+    negative side; or `tip` (a cone's apex), `end` (a rod's), a composite's named point; or
+    `center`, the center of mass itself (no weight's torque: derive.mechanics.angular_impulse)."""
     here = f"{field}.pivot_point"
     if body.shape == "point" or body.density is not None:
         raise reader.fail(here, "a body on a fixed point is a uniform shape of derive inertia, a composite of them "
@@ -171,11 +172,13 @@ def pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoin
     at = raw["at"]
     axis = own_axis(body.shape)
     named = _named_points(body)
-    if isinstance(at, str) and at in named:
+    if at == "center":
+        offset = (sp.Integer(0),) * 3
+    elif isinstance(at, str) and at in named:
         offset = named[at]
     else:
         distance = reader.positive(at, f"{here}.at", "m", f"a distance from the center of mass along the {axis} "
-                                   f"axis{' or a point: ' + ', '.join(named) if named else ''}")
+                                   f"axis, or a point: {', '.join([*named, 'center'])}")
         offset = tuple(-distance if a == axis else sp.Integer(0) for a in "xyz")
     tilt = (reader.dimensioned(raw["tilt"], f"{here}.tilt", "rad", "a tilt") if "tilt" in raw
             else reader.unspecified(f"tilt_{body.name}", "rad"))

@@ -38,6 +38,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
         if name in taken:
             raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
         spec = reader.mapping(spec, field, optional=("rates", "when", "from", "event"))
+        if not isinstance(spec.get("from", ""), str):
+            raise reader.fail(f"{field}.from", "the name of a state above this one")
         earlier = result.get(spec.get("from"))
         moves_on = isinstance(spec.get("event"), dict) and {"move", "turn"} & set(spec["event"])
         if earlier and earlier.event and earlier.event.kind == "move" and not moves_on:

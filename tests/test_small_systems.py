@@ -16,7 +16,7 @@ def test_tilting_wheel_against_a_simulation_of_dL_dt():
     assert math.isclose(float(answers["dphi_exact"]), turned, rel_tol=1e-10)
     assert math.isclose(float(answers["dphi"]), 1.5 * 0.4 / (0.1 * 20), rel_tol=1e-14)
     assert answers["dphi"] > answers["dphi_exact"]  # the small-angle estimate overshoots
-    assert result["checks"]["vector_vs_rate"]["passed"]
+    assert result["checks"]["impulse_vs_euler"]["passed"]
 
 
 def test_quantization_gives_hbar():

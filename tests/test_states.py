@@ -449,3 +449,15 @@ def test_the_period_by_energy_meets_the_elliptic_integral(monkeypatch):
     by_energy = Solution(loaded).expression("T")
     assert by_energy.has(sp.Integral)
     assert abs(float(numeric.evaluate(by_energy, values, 15)) - float(elliptic)) <= 1e-12 * abs(float(elliptic))
+
+
+@pytest.mark.parametrize("change, field", [
+    (("in: lowest, unit: rad/s", "in: [lowest], unit: rad/s"), "ask.omega.in"),
+    (("lowest: {when: {rod.angle: -pi/2}}", "lowest: {when: {rod.angle: -pi/2}, from: [lowest]}"),
+     "scene.states.lowest.from"),
+])
+def test_a_state_named_by_a_list_is_refused_naming_the_field(change, field):
+    """Found by the fuzz test: a list where a state's name goes was a TypeError (an internal error)."""
+    text = (Path(__file__).parent / "textbook/states/rod_swings_down.yaml").read_text().replace(*change)
+    with pytest.raises(problem.ProblemError, match=field.replace(".", r"\.")):
+        problem.parse(text, Path("mutated.yaml"))

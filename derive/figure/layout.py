@@ -101,9 +101,9 @@ def _has_parts(problem) -> bool:
 
 #: (applies to the problem, draws the figure), the first that applies wins.
 _LAYOUTS = (
+    (lambda p: any(point.centered for point in p.scene.pivot_points.values()), _wheel),
     (lambda p: bool(p.scene.pivot_points), _pivot_point),
     (lambda p: bool(p.scene.rolls_on_edge), _rolls_on_edge),
-    (lambda p: p.scene.wheel is not None, _wheel),
     (lambda p: p.scene.wave is not None, _wave),
     (lambda p: p.scene.orbit is not None, _orbit),
     (lambda p: p.scene.internal_forces is not None, _internal),

@@ -1,4 +1,5 @@
-"""Scene-level systems: a spinning wheel, a standing wave, internal forces (the 3D bodies: derive.figure.solids)."""
+"""Scene-level systems: a spinning wheel (a body on a fixed point at its center of mass under a couple
+for a time), a standing wave, internal forces (the 3D bodies: derive.figure.solids)."""
 from __future__ import annotations
 
 import math
@@ -7,19 +8,35 @@ from derive.figure.canvas import _add, _f, _Figure, _pt, _unit
 
 
 def _wheel(fig: _Figure) -> None:
-    """A spinning wheel: its angular momentum along the axle, the torque's change of it, the turn."""
-    wheel = fig.scene.wheel
-    fig.add("\\draw[body] (0,0) ellipse (0.35 and 1.1);")
-    fig.line((-0.7, 0), (0, 0), "line width=1.5pt")
-    fig.add("\\draw[->, thick] (-0.25,-0.85) arc[start angle=-120, end angle=120, x radius=0.3, y radius=1];")
-    fig.label((-0.35, 1.0), (-1, 1), fig.m(wheel.spin))
-    length = 3.0
-    fig.arrow((0, 0), (length, 0), "very thick, ->", f"$\\vec L = {fig.product(wheel.inertia, wheel.spin)}$")
-    change = 0.9
-    fig.arrow((length, 0), (0, change), "force", f"$\\Delta L = {fig.product(wheel.torque, wheel.duration)}$")
-    fig.arrow((0, 0), (length, change), "thick, dashed, ->")
-    angle = math.degrees(math.atan2(change, length))
-    fig.arc((0, 0), 1.8, 0, angle, r"\Delta\phi", label_radius=1.85)
+    """A body on a fixed point at its center of mass under a couple for a time, drawn as a wheel in
+    the ground's xz plane (z up the page): its axle at its tilt, L0 along it, the couple's angular
+    impulse (its part in the page), L after it dashed and the angle between."""
+    name, point = next((n, p) for n, p in fig.scene.pivot_points.items() if p.centered)
+    body = fig.scene.bodies[name]
+    couple = next(p for p in fig.scene.loads if getattr(p, "body", None) == name)
+    tilt = fig.num(point.tilt, math.pi / 2)
+    axis = (math.sin(tilt), math.cos(tilt))
+    turn = math.degrees(math.atan2(axis[1], axis[0]))
+    change = (fig.num(couple.axis[0], 0.0), fig.num(couple.axis[2], 1.0))
+    if math.hypot(*change) < 0.2:  # the couple's impulse lies across the page: draw it across the axle
+        change = (-axis[1], axis[0])
+    change = (change[0] / math.hypot(*change), change[1] / math.hypot(*change))
+    fig.add(f"\\draw[body, rotate around={{{_f(turn)}:(0,0)}}] (0,0) ellipse (0.35 and 1.1);")
+    fig.line(_add((0, 0), axis, -0.7), (0, 0), "line width=1.5pt")
+    fig.add("\\fill (0,0) circle (0.05);")
+    fig.add(f"\\draw[->, thick, rotate around={{{_f(turn)}:(0,0)}}] (-0.25,-0.85) arc[start angle=-120, "
+            "end angle=120, x radius=0.3, y radius=1];")
+    fig.label(_add((0, 0), axis, -0.9), (-axis[0], -axis[1]), fig.m(point.spin))
+    length, size = 3.0, 0.9
+    end = _add((0, 0), axis, length)
+    momentum = fig.product(body.inertia, point.spin) if body.shape == "custom" else None
+    fig.arrow((0, 0), _add((0, 0), axis, length), "very thick, ->",
+              f"$\\vec L_0 = {momentum}$" if momentum else "$\\vec L_0$")
+    impulse = fig.product(couple.torque, couple.duration)
+    fig.arrow(end, (change[0] * size, change[1] * size), "force", f"$\\Delta L = {impulse}$" if impulse else None)
+    after = _add(end, change, size)
+    fig.arrow((0, 0), after, "thick, dashed, ->")
+    fig.arc((0, 0), 1.8, turn, math.degrees(math.atan2(after[1], after[0])), r"\Delta\phi", label_radius=1.85)
 
 
 def _wave(fig: _Figure) -> None:

@@ -124,7 +124,7 @@ def steps(moments, route: str, orders: tuple[str, ...]) -> list[Step]:
                    tuple(sp.Eq(s, m, evaluate=False) for s, m in named  # not I_1 = I_1 for a parameter I1
                          if not (isinstance(m, sp.Symbol) and m.name.replace("_", "") == s.name.replace("_", ""))))]
     if route == "newton_euler":
-        rates, w = _euler_rates(moments)
+        rates, w = euler_rates(moments)
         return [*result, Step("Euler's equations with no torque, in the body's principal axes",
                               tuple(sp.Eq(sp.Symbol(f"omegadot_{k}"), _plain(r, w)) for k, r in zip((1, 2, 3), rates)),
                               role="equations")]
@@ -137,18 +137,23 @@ def steps(moments, route: str, orders: tuple[str, ...]) -> list[Step]:
     return result
 
 
-def _euler_rates(moments) -> tuple[sp.Matrix, tuple]:
-    """omega' in the body frame from Euler's equations with no torque: (rates, (w1, w2, w3))."""
+def euler_rates(moments, torque=(0, 0, 0)) -> tuple[sp.Matrix, tuple]:
+    """omega' in the body frame from Euler's equations, dH/dt = `torque` (its components along the
+    body's axes; none by default): (rates, (w1, w2, w3)).
+
+    >>> euler_rates((1, 1, 2), (0, 1, 0))[0][1]
+    omega_1(t)*omega_3(t) + 1
+    """
     ground, frame = me.ReferenceFrame("N"), me.ReferenceFrame("B")
     w = me.dynamicsymbols("omega_1:4")
     frame.set_ang_vel(ground, sum((c * e for c, e in zip(w, frame)), me.Vector(0)))
     momentum = me.inertia(frame, *moments).dot(frame.ang_vel_in(ground))
-    balance = [momentum.dt(ground).dot(e) for e in frame]  # dH/dt in N = 0
+    balance = [momentum.dt(ground).dot(e) - c for e, c in zip(frame, torque)]  # dH/dt in N = torque
     rates = [c.diff(me.dynamicsymbols._t) for c in w]
     return sp.Matrix([sp.solve(balance, rates, dict=True)[0][r] for r in rates]), tuple(w)
 
 
-def _angle(u: sp.Matrix, v: sp.Matrix) -> sp.Expr:
+def angle_between(u: sp.Matrix, v: sp.Matrix) -> sp.Expr:
     """The angle between two vectors, atan2(|u x v|, u·v)."""
     across = u.cross(v)
     return tidy(sp.atan2(tidy(sp.sqrt(across.dot(across))), tidy(u.dot(v))))
@@ -186,8 +191,8 @@ def precession(moments, spin, across, detail: str, route: str) -> sp.Expr:
         steady = _steady_precession(I1, I3, spin, across)
         return {"free_precession.body": tidy(-steady["psi_rate"]), "free_precession.space": steady["phi_rate"],
                 "angle_L_axis": steady["theta"],
-                "angle_omega_axis": _angle(steady["omega"], sp.Matrix([0, 0, 1]))}[detail]
-    rates, w = _euler_rates((I1, I1, I3))
+                "angle_omega_axis": angle_between(steady["omega"], sp.Matrix([0, 0, 1]))}[detail]
+    rates, w = euler_rates((I1, I1, I3))
     now = {w[0]: across, w[1]: 0, w[2]: spin}
     axis, omega = sp.Matrix([0, 0, 1]), sp.Matrix([across, 0, spin])
     momentum = sp.diag(I1, I1, I3) * omega
@@ -196,7 +201,7 @@ def precession(moments, spin, across, detail: str, route: str) -> sp.Expr:
     if detail == "free_precession.space":  # the axis moves at |omega x e3| on a circle about L
         speed, radius = omega.cross(axis), momentum.cross(axis)
         return tidy(sp.sqrt(speed.dot(speed)) * sp.sqrt(momentum.dot(momentum)) / sp.sqrt(radius.dot(radius)))
-    return _angle(momentum if detail == "angle_L_axis" else omega, axis)
+    return angle_between(momentum if detail == "angle_L_axis" else omega, axis)
 
 
 def ranked(moments, values) -> tuple[int, int, int]:
@@ -220,7 +225,7 @@ def exponent_squared(moments: tuple, axis: int, rate, route: str) -> sp.Expr:
     route: negative where the rotation is stable (a wobble at sqrt(-s^2)), positive where not."""
     others = [k for k in range(3) if k != axis]
     if route == "newton_euler":
-        rates, w = _euler_rates(moments)
+        rates, w = euler_rates(moments)
         steady = {w[k]: (rate if k == axis else 0) for k in range(3)}
         jacobian = rates.jacobian(w).xreplace(steady)
         characteristic = sp.Poly(jacobian.charpoly(S).as_expr(), S)

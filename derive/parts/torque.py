@@ -1,6 +1,9 @@
 """A given torque on a body (a motor, a brake's couple): constant, or a function of the time t.
 
-Lagrange: its power tau omega. Newton–Euler: the couple in the body's torque balance.
+Lagrange: its power tau omega. Newton–Euler: the couple in the body's torque balance. On a body
+turning in 3D about a fixed point at its center of mass (`pivot_point: {at: center}`), a couple
+about a direction fixed in the ground (`axis: [x, y, z]`) that acts for a time (`duration`):
+derive.mechanics.angular_impulse takes it, not the planar routes.
 
 >>> import sympy as sp
 >>> Torque("motor", "wheel", sp.Symbol("tau")).bodies()
@@ -18,11 +21,14 @@ from derive.prose import Sentence
 
 @dataclass(frozen=True)
 class Torque(Part):
-    """A couple `torque` (counter-clockwise positive) on `body`."""
+    """A couple `torque` (counter-clockwise positive) on `body`; in 3D, about the unit direction
+    `axis` fixed in the ground, from t = 0 for the time `duration` (None in the plane)."""
 
     name: str
     body: str
     torque: sp.Expr
+    axis: tuple[sp.Expr, sp.Expr, sp.Expr] | None = None
+    duration: sp.Expr | None = None
 
     def bodies(self) -> tuple[str, ...]:
         return (self.body,)
@@ -34,6 +40,11 @@ class Torque(Part):
         return [AppliedTorque(self.body, self.torque, f"torque {self.name}")]
 
     def sentences(self, route: str, coords) -> list[Sentence]:
+        if self.axis is not None:
+            return [Sentence((f"The torque {self.name}, ", self.torque, " about the fixed direction ",
+                              sp.Matrix(self.axis).T, f", acts on the {self.body} for the time ", self.duration,
+                              ": its angular impulse about the fixed point is ", self.torque * self.duration, "."),
+                             self.body)]
         if route == "lagrange":
             return [Sentence((f"The torque {self.name} does work at the rate of the torque times the {self.body}'s angular "
                               "velocity: its power is ", self.power(coords), "."))]
@@ -44,10 +55,27 @@ class Torque(Part):
 
 def read(reader, places, name: str, spec: dict, field: str) -> Torque:
     """`{on: BODY, magnitude: EXPR}`: a couple (counter-clockwise positive), constant or a
-    function of the time t."""
-    spec = reader.mapping(spec, field, required=("on", "magnitude"), optional=("name",))
+    function of the time t; in 3D `{on: BODY, magnitude: tau, axis: [0, 0, 1], duration: dt}`, a
+    constant couple about a direction fixed in the ground for a time (scene_file checks that the
+    body turns about a fixed point at its center of mass)."""
+    spec = reader.mapping(spec, field, required=("on", "magnitude"), optional=("name", "axis", "duration"))
     body, offset = places.point(spec["on"], f"{field}.on", ground=False)
     if any(offset) or not places.bodies[body].rotates:
         raise reader.fail(f"{field}.on", "a torque acts on a turning body as a whole: name the body")
-    return Torque(name, body, reader.dimensioned(spec["magnitude"], f"{field}.magnitude", "N*m", "a torque",
-                                                 places.with_time()))
+    if ("axis" in spec) != ("duration" in spec):
+        raise reader.fail(f"{field}.{'duration' if 'axis' in spec else 'axis'}", "a couple in 3D is about a direction "
+                          "fixed in the ground for a time: give both axis: [x, y, z] and duration: dt")
+    if "axis" not in spec:
+        return Torque(name, body, reader.dimensioned(spec["magnitude"], f"{field}.magnitude", "N*m", "a torque",
+                                                     places.with_time()))
+    raw = spec["axis"]
+    if not isinstance(raw, list) or len(raw) != 3:
+        raise reader.fail(f"{field}.axis", "a direction in the ground, [x, y, z] (z up)")
+    axis = sp.Matrix([reader.dimensioned(c, f"{field}.axis[{i}]", "1", "a direction's component")
+                      for i, c in enumerate(raw)])
+    length = sp.sqrt(axis.dot(axis))
+    if length.is_positive is not True:
+        raise reader.fail(f"{field}.axis", "a direction: not zero for any allowed parameter value")
+    return Torque(name, body, reader.dimensioned(spec["magnitude"], f"{field}.magnitude", "N*m", "a constant torque"),
+                  tuple(sp.simplify(c / length) for c in axis),
+                  reader.positive(spec["duration"], f"{field}.duration", "s", "a duration"))
