@@ -29,6 +29,14 @@ def _cos(x):
     return sp.cos(x)
 
 
+_PHI = sp.Symbol("phi", positive=True)
+
+
+def _omega_squared(s, phi):
+    """A rod falling on a smooth floor, released at theta0 from the vertical: phi'^2 at phi."""
+    return 12 * s.g * (_cos(s.theta0) - _cos(phi)) / (s.L * (1 + 3 * _sin(phi) ** 2))
+
+
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
     # Where a scene rests (derive.mechanics.equilibrium). Serway & Jewett ch. 5: a ball on a
@@ -416,6 +424,28 @@ EXPECTED.update({
     "rod_released_below_swings": {
         "alpha": lambda s: -3 * s.g * _cos(s.theta0) / (2 * s.L),
         "omega": lambda s: -sp.sqrt(3 * s.g * (1 - _sin(s.theta0)) / s.L),
+    },
+    # Serway & Jewett ch. 10 (a rod on a frictionless surface falls with its center straight down),
+    # from theta0 to the vertical; derived here independently in the rod's angle phi from the
+    # vertical alone: no horizontal force, so x_cm stays put, y_cm = (L/2) cos(phi), and energy
+    # (M/2) y_cm'^2 + (M L^2/24) phi'^2 = M g (L/2)(cos(theta0) - cos(phi)) gives
+    # phi'^2 = 12 g (cos(theta0) - cos(phi))/(L (1 + 3 sin^2(phi))); flat (phi = pi/2):
+    # omega = sqrt(3 g cos(theta0)/L) clockwise, v_cm = (L/2) omega. Newton for the center,
+    # N - M g = M y_cm'', with phi'' = (1/2) d(phi'^2)/dphi: N = M g (4 + 3 (cos(phi) - cos(theta0))^2
+    # - 3 cos^2(theta0))/(1 + 3 sin^2(phi))^2, positive for every phi (the foot never leaves the
+    # floor): M g/(1 + 3 sin^2(theta0)) at release, M g/4 as it lands; the time is the integral of
+    # dphi/phi' (no closed form: an elliptic integral).
+    "rod_falls_on_smooth_floor": {
+        "N": lambda s: s.M * s.g / (1 + 3 * _sin(s.theta0) ** 2),
+        "v1": lambda s: s.L / 2 * _sin(s.theta) * sp.sqrt(_omega_squared(s, s.theta)),
+        "w1": lambda s: -sp.sqrt(_omega_squared(s, s.theta)),
+        "N1": lambda s: s.M * s.g * (4 + 3 * (_cos(s.theta) - _cos(s.theta0)) ** 2 - 3 * _cos(s.theta0) ** 2)
+        / (1 + 3 * _sin(s.theta) ** 2) ** 2,
+        "x1": lambda s: s.L * _sin(s.theta0) / 2,
+        "v": lambda s: sp.sqrt(3 * s.g * s.L * _cos(s.theta0)) / 2,
+        "w": lambda s: -sp.sqrt(3 * s.g * _cos(s.theta0) / s.L),
+        "N2": lambda s: s.M * s.g / 4,
+        "t": lambda s: sp.Integral(1 / sp.sqrt(_omega_squared(s, _PHI)), (_PHI, s.theta0, sp.pi / 2)),
     },
     "rod_swings_down": {
         "omega": lambda s: sp.sqrt(3 * s.g / s.L),

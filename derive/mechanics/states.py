@@ -37,6 +37,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
+from derive.mechanics import first_integrals
 from derive.mechanics.derivation import KINETIC, Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
@@ -53,6 +54,10 @@ class StateError(ValueError):
 
 class StateLimit(StateError):
     """A state derive cannot yet find (an engine limit, not the file's fault)."""
+
+
+class Curved(StateLimit):
+    """A motion of several degrees of freedom that is no straight line in its coordinates."""
 
 
 #: Where no one coordinate carries the motion from its start to the state, and what to do.
@@ -199,8 +204,17 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
     assumptions leave open."""
     free = len(coords.all) - sum(len(c.gaps(coords)) for c in scene.constraints)
     decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed  # safe: engine expressions
+    integrals = ()
     if free > 1:  # before solving any gap: energy fixes one rate of several, unless the motion is a line
-        return _line(scene, coords, start, condition, derivation, decide, free)
+        try:
+            return _line(scene, coords, start, condition, derivation, decide, free)
+        except Curved:
+            if sample is None:
+                raise
+            # kept momenta, zero at the start, fix sums of the coordinates: a rod on a smooth floor
+            integrals = first_integrals.zero_momenta(scene, coords, start, sample)
+            if free - len(integrals) != 1:
+                raise
     if free < 1:
         raise StateError("the constraints leave the scene no motion: it never gets to the state")
     heading = _heading(start, coords, derivation, decide)
@@ -216,7 +230,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
     for keep in [target, *others] if target else others:
         try:
             dependent = solve_gaps(scene, coords, sample, keep=keep, heading=heading,
-                                   at={c.q: start[c.q] for c in coords.all})
+                                   at={c.q: start[c.q] for c in coords.all}, integrals=tuple(i.gap for i in integrals))
         except (ValueError, NotImplementedError) as error:
             problem = problem or StateLimit(f"find where the scene gets to: {error}")
             continue
@@ -236,7 +250,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
             problem = problem or error
             continue
         if not any(v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) for v in reached.values.values()):
-            return reached
+            return dataclasses.replace(reached, steps=(*(i.step for i in integrals), *reached.steps))
         problem = problem or StateLimit(NO_COORDINATE)
     raise problem
 
@@ -295,7 +309,7 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     s, s0 = along.q, start[along.q]
     positions = {c.q: s if c == along else start[c.q] + ratios[c] * (s - s0) for c in coords.all}
     path = _path(scene, coords, start, along, positions, derivation, decide, condition)
-    curved = StateLimit(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
+    curved = Curved(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
                         "straight line in its coordinates (energy fixes one rate of several)")
     if not _on_line(scene, coords, path, s0, ratios, derivation, decide):  # at the start already (a ball flying off)
         raise curved
