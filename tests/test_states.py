@@ -289,12 +289,31 @@ def test_a_hoop_rolling_up_a_ramp_of_given_height_is_not_limited_by_it(tmp_path)
     assert y == pytest.approx(-1.5 + 0.1 * math.cos(0.5) + 1.5**2 / 9.81, rel=1e-9)
 
 
-def test_a_scene_of_two_degrees_of_freedom_is_refused_at_once(tmp_path):
-    """A rod on a smooth floor slides and turns: energy fixes one rate of two. Refused before any
-    gap is solved (it used to run into the time limit)."""
-    text = ROD.replace("  joints:\n    hinge: {pin: rod.start}\n", "  surfaces:\n    floor: {plane: {angle: 0, through: [0, 0]}}\n"
-                       "  joints:\n    foot: {touches: rod.start, on: floor}\n").replace(
-        "at: [L/2, 0], angle: 0", "at: [L/2*cos(1), L/2*sin(1)], angle: 1").replace("TARGET", "1/2")
+ROD_ON_FLOOR = ROD.replace("  joints:\n    hinge: {pin: rod.start}\n", "  surfaces:\n    floor: {plane: {angle: 0, "
+                           "through: [0, 0]}}\n  joints:\n    foot: {touches: rod.start, on: floor}\n").replace(
+    "at: [L/2, 0], angle: 0", "at: [L/2*cos(1), L/2*sin(1)], angle: 1").replace("TARGET", "1/2")
+
+
+def test_a_rod_on_a_smooth_floor_falls_with_its_center_straight_down(tmp_path):
+    """Two degrees of freedom (it slides and turns), energy fixes one rate: no horizontal force
+    acts, so both routes keep its momentum along x, zero from rest, and x_cm stays put
+    (derive.mechanics.first_integrals). From 1 rad above the floor to 1/2: with phi from the
+    vertical, phi'^2 = 12 g (cos(phi0) - cos(phi))/(L (1 + 3 sin^2(phi))) (tests/test_textbook.py)."""
+    result = solve(tmp_path, ROD_ON_FLOOR, "--set", "L=1.5", "--set", "M=2")
+    assert result.returncode == 0, result.stderr
+    phi0, phi = math.pi / 2 - 1, math.pi / 2 - 0.5
+    expected = -math.sqrt(12 * 9.81 * (math.cos(phi0) - math.cos(phi)) / (1.5 * (1 + 3 * math.sin(phi) ** 2)))
+    assert float(json.loads(result.stdout)["answers"]["omega"]["value"]) == pytest.approx(expected, rel=1e-9)
+    steps = json.dumps(json.loads(result.stdout)["steps"])
+    assert "momentum of the whole scene along x is kept" in steps
+
+
+def test_a_rod_pushed_along_a_smooth_floor_is_refused_at_once(tmp_path):
+    """Pushed sideways, its momentum along x is kept but not zero: x_cm moves with time and fixes no
+    coordinate, so energy fixes one rate of two: an engine limit, before any gap is solved."""
+    text = ROD_ON_FLOOR.replace("    there: {when: {rod.angle: 1/2}}", "    pushed: {rates: {rod.velocity.x: sqrt(g*L), "
+                                "rod.velocity.y: 0, rod.angular_velocity: 0}}\n    there: {from: pushed, when: "
+                                "{rod.angle: 1/2}}")
     result = solve(tmp_path, text)
     assert result.returncode == 1 and "2 degrees of freedom" in result.stderr, result.stderr
 

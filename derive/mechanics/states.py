@@ -37,7 +37,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from derive.mechanics import first_integrals
+from derive.mechanics import first_integrals, free_flight
 from derive.mechanics.derivation import KINETIC, Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
@@ -125,6 +125,15 @@ class Gets:
 
 
 @dataclass(frozen=True)
+class GetsRate:
+    """The state where a coordinate's rate gets to a value (a ball at the top of its flight, where
+    its vertical velocity is zero)."""
+
+    coordinate: Coordinate
+    value: sp.Expr
+
+
+@dataclass(frozen=True)
 class Stops:
     """The state where the motion stops (a turning point: the highest point, the widest swing)."""
 
@@ -194,7 +203,8 @@ def settled(expr: sp.Expr) -> sp.Expr:
         lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer, lambda e: sp.factor(e.base) ** e.exp))
 
 
-def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], condition: Gets | Stops | Vanishes,
+def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
+          condition: Gets | GetsRate | Stops | Vanishes,
           derivation: Derivation, sample=None) -> Reached:
     """The state the motion from the state `start` (every coordinate and velocity) gets to first
     where `condition` holds, by the work-energy theorem along the one free coordinate (with
@@ -211,6 +221,12 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
         except Curved:
             if sample is None:
                 raise
+            flying = free_flight.flight(scene, coords, start, derivation)
+            if flying is not None:  # a projectile: along its coordinate that moves at a constant rate
+                coordinate, positions, step = flying
+                path = _path(scene, coords, start, coordinate, positions, derivation, decide, condition)
+                reached = _arrive(path, condition, derivation, decide)
+                return dataclasses.replace(reached, steps=(step, *reached.steps))
             # kept momenta, zero at the start, fix sums of the coordinates: a rod on a smooth floor
             integrals = first_integrals.zero_momenta(scene, coords, start, sample)
             if free - len(integrals) != 1:
@@ -418,6 +434,13 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
                                                                      "motion moves away from it)")]
         else:
             steps_ahead = []
+    elif isinstance(condition, GetsRate):
+        speed_there = path.velocities[condition.coordinate.u].xreplace({speed: path.rate(s)})
+        function = tidy(speed_there - condition.value)
+        s1 = _first(sp.Eq(function, 0), function, path, decide, f"the motion from the start does not get to "
+                                                                  f"{condition.coordinate.u} = {sp.sstr(condition.value)}")
+        steps.append(Step(f"The rate {condition.coordinate.u} along the way, and where it gets to "
+                          f"{sp.sstr(condition.value)}", (sp.Eq(condition.coordinate.u, speed_there), sp.Eq(s, s1))))
     elif isinstance(condition, Stops):
         function = path.kinetic
         s1 = _first(sp.Eq(path.kinetic, 0), function, path, decide,
