@@ -83,7 +83,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             continue
         rate = str(key).partition(".")[2] in STATE_RATES
         result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies,
-                                                     STATE_RATES if rate else STATE_POSITIONS), start=start, rate=rate)
+                                                     STATE_RATES if rate else {**STATE_POSITIONS, **STATE_RATES}),
+                             start=start, rate=rate)
     return result
 
 

@@ -318,6 +318,45 @@ def test_a_rod_pushed_along_a_smooth_floor_is_refused_at_once(tmp_path):
     assert result.returncode == 1 and "2 degrees of freedom" in result.stderr, result.stderr
 
 
+def test_where_the_foot_of_a_rod_on_a_smooth_floor_leaves_it_is_refused(tmp_path):
+    """N = M g (4 + 3 (cos(phi) - cos(phi0))^2 - 3 cos^2(phi0))/(1 + 3 sin^2(phi))^2 > 0 all the way
+    down (tests/test_textbook.py): the foot never leaves. derive cannot prove the equation N = 0 has
+    no root, and says so (an engine limit), rather than answer or call it the file's fault."""
+    text = (Path(__file__).parent / "textbook/states/rod_falls_on_smooth_floor.yaml").read_text().replace(
+        "    tilted: {when: {rod.angle: pi/2 - theta}}\n", "    tilted: {when: {leaves: foot}}\n")
+    result = solve(tmp_path, text)
+    assert result.returncode == 1 and "derive cannot yet solve" in result.stderr, result.stderr
+    assert "scene.states.tilted" in result.stderr and len(result.stderr.strip().splitlines()) == 1
+
+
+WEDGE = (Path(__file__).parent / "textbook/states/ball_bounces_off_wedge.yaml").read_text()
+
+
+def test_a_flight_that_never_gets_to_its_state_is_refused(tmp_path):
+    """At 45 degrees the ball leaves the wedge heading down: it never comes back to where it fell from."""
+    text = WEDGE.replace("landed: {from: bounced, when: {ball.y: -H}}", "landed: {from: bounced, when: {ball.y: h}}")
+    assert "does not get there" in refused(tmp_path, text, "scene.states.landed")
+
+
+def test_a_state_of_a_rate_names_a_rate(tmp_path):
+    text = WEDGE.replace("landed: {from: bounced, when: {ball.y: -H}}",
+                         "landed: {from: bounced, when: {ball.velocity.z: 0}}")
+    assert "x, y, velocity.x, velocity.y" in refused(tmp_path, text, "scene.states.landed.when.ball.velocity.z")
+
+
+def test_a_flight_beside_a_swinging_rod_is_refused(tmp_path):
+    """After the ball bounces off a hanging rod it flies while the rod swings: the accelerations are not
+    constant and no kept momentum reduces the motion to one degree of freedom, so energy fixes one rate
+    of several: an engine limit, not an answer."""
+    text = (Path(__file__).parent / "textbook/states/ball_bounces_off_rod.yaml").read_text().replace(
+        "    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n",
+        "    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n"
+        "    landed: {from: bounced, when: {ball.y: -2*L}}\n").replace(
+        "ask:\n", "ask:\n  x: {meaning: where it lands, of: ball.position.x, in: landed, unit: m}\n")
+    result = solve(tmp_path, text)
+    assert result.returncode == 1 and "degrees of freedom" in result.stderr, result.stderr
+
+
 def test_a_state_where_its_coordinate_is_extremal_is_reached_along_another(tmp_path):
     """A bead from the bowl's rim asked at the bottom by its height (y = -R, its minimum): y has
     no rate there, so the motion is followed along x; speed sqrt(2 g R), normal force 3 m g."""

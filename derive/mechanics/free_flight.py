@@ -18,7 +18,7 @@ Newton–Euler's motion integrated checks the state at every solve).
 >>> thrown = {x.q: 0, y.q: 0, x.u: v, y.u: v}
 >>> coordinate, positions, step = flight(scene, coords, thrown, lagrange.derive(scene, coords))
 >>> coordinate.q, positions[y.q]
-(x_ball, -g*x_ball**2/(2*v**2) + x_ball)
+(x_ball, x_ball*(-g*x_ball + 2*v**2)/(2*v**2))
 """
 from __future__ import annotations
 
