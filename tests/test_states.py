@@ -344,19 +344,6 @@ def test_a_state_of_a_rate_names_a_rate(tmp_path):
     assert "x, y, velocity.x, velocity.y" in refused(tmp_path, text, "scene.states.landed.when.ball.velocity.z")
 
 
-def test_a_flight_beside_a_swinging_rod_is_refused(tmp_path):
-    """After the ball bounces off a hanging rod it flies while the rod swings: the accelerations are not
-    constant and no kept momentum reduces the motion to one degree of freedom, so energy fixes one rate
-    of several: an engine limit, not an answer."""
-    text = (Path(__file__).parent / "textbook/states/ball_bounces_off_rod.yaml").read_text().replace(
-        "    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n",
-        "    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n"
-        "    landed: {from: bounced, when: {ball.y: -2*L}}\n").replace(
-        "ask:\n", "ask:\n  x: {meaning: where it lands, of: ball.position.x, in: landed, unit: m}\n")
-    result = solve(tmp_path, text)
-    assert result.returncode == 1 and "degrees of freedom" in result.stderr, result.stderr
-
-
 def test_a_state_where_its_coordinate_is_extremal_is_reached_along_another(tmp_path):
     """A bead from the bowl's rim asked at the bottom by its height (y = -R, its minimum): y has
     no rate there, so the motion is followed along x; speed sqrt(2 g R), normal force 3 m g."""
