@@ -338,6 +338,18 @@ def test_a_flight_that_never_gets_to_its_state_is_refused(tmp_path):
     assert "does not get there" in refused(tmp_path, text, "scene.states.landed")
 
 
+def test_a_flight_through_a_surface_is_refused(tmp_path):
+    """Nothing holds a flying ball off the scene's surfaces: a ball struck H = 2 m above the floor
+    (h = 0.5 m, e = 0.7) comes back to the wedge's face before it gets that low, and a ball asked
+    where its center gets to the floor's level has passed through it: refused, naming why, per
+    variant and at the middle of the ranges."""
+    result = solve(tmp_path, WEDGE, "--set", "H=2", "--set", "h=0.5", "--set", "e=0.7")
+    assert result.returncode == 2 and "would pass through face" in result.stderr, result.stderr
+    flies = (Path(__file__).parent / "textbook/states/ball_bounces_then_flies.yaml").read_text()
+    text = flies.replace("landed: {from: bounced, when: {ball.y: R}}", "landed: {from: bounced, when: {ball.y: 0}}")
+    assert "would pass through floor" in refused(tmp_path, text, "scene.states.landed")
+
+
 def test_a_state_of_a_rate_names_a_rate(tmp_path):
     text = WEDGE.replace("landed: {from: bounced, when: {ball.y: -H}}",
                          "landed: {from: bounced, when: {ball.velocity.z: 0}}")

@@ -43,8 +43,6 @@ class Integral:
     """A kept momentum zero at the start, with constant coefficients: `gap`, sum_j c_j (q_j -
     q_j0), stays zero along the motion; `step` says why, for a worked solution."""
 
-    symmetry: moves.Symmetry
-    momentum: sp.Expr
     gap: sp.Expr
     step: Step
 
@@ -82,5 +80,5 @@ def zero_momenta(scene: Scene, coords: Coordinates, start: dict, sample) -> tupl
                     f"so {symmetry.describe(scene)} is kept; it is zero at the start and its coefficients are "
                     "constant, so it is the rate of a sum of the coordinates that does not change",
                     (sp.Eq(symmetry.symbol, momentum), sp.Eq(gap, 0)))
-        result.append(Integral(symmetry, momentum, gap, step))
+        result.append(Integral(gap, step))
     return tuple(result)

@@ -36,7 +36,8 @@ def flight(scene: Scene, coords: Coordinates, start: dict, derivation: Derivatio
     coordinate as a function of it, and the step that says so. None where a part holds a body,
     an acceleration is not constant (a spring, a force given in t), or no coordinate moves at a
     constant rate (a body thrown straight up moves on a line, derive.mechanics.states)."""
-    if scene.constraints:
+    if scene.constraints or not all(body.rotates is False or "radius" in body.sizes for body in scene.bodies.values()) \
+            and scene.surfaces:  # a flying rod's clearance of a surface is not modelled
         return None
     solved = derivation.solution.raw
     accelerations = {c: tidy(solved[c.a]) for c in coords.all}
@@ -56,3 +57,13 @@ def flight(scene: Scene, coords: Coordinates, start: dict, derivation: Derivatio
                 tuple(sp.Eq(c.q, tidy(start[c.q] + start[c.u] * t + accelerations[c] * t**2 / 2)) for c in coords.all)
                 + tuple(sp.Eq(q, p) for q, p in positions.items() if q != clock.q))
     return clock, positions, step
+
+
+def clearances(scene: Scene, coords: Coordinates) -> list[tuple[sp.Expr, str]]:
+    """How far each flying body (a point mass, or a round body by its rim) stands off each surface
+    of the scene, in the coordinates, and what it means where that is negative: nothing holds it
+    there, so a flight that would pass through a floor or a wedge's face is not the motion."""
+    return [(surface.gap(coords.position(body.name), body.sizes.get("radius", sp.Integer(0))),
+             f"the {body.name} would pass through {surface.name} on its flight to the state (nothing holds it off it "
+             "in free flight)")
+            for body in scene.bodies.values() for surface in scene.surfaces.values()]

@@ -226,7 +226,8 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
                 coordinate, positions, step = flying
                 path = _path(scene, coords, start, coordinate, positions, derivation, decide, condition)
                 reached = _arrive(path, condition, derivation, decide)
-                return dataclasses.replace(reached, steps=(step, *reached.steps))
+                clear = _clear_of_surfaces(free_flight.clearances(scene, coords), path, reached.end, decide)
+                return dataclasses.replace(reached, steps=(step, *reached.steps), positive=reached.positive + clear)
             # kept momenta, zero at the start, fix sums of the coordinates: a rod on a smooth floor
             integrals = first_integrals.zero_momenta(scene, coords, start, sample)
             if free - len(integrals) != 1:
@@ -343,6 +344,25 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
                   "forces keep the proportions); the kinetic energy in its rate", (*moved, *kinetic)),
              *reached.steps[1:])
     return Reached(reached.values, reached.positive + tuple(extents), steps, path, reached.end, reached.vanished)
+
+
+def _clear_of_surfaces(gaps: list[tuple[sp.Expr, str]], path: Path, end: sp.Expr, decide) -> tuple:
+    """What must stay positive for a flight to keep off the scene's surfaces on its way: each gap
+    (on the side the body starts, at the middle of the ranges: a surface behind it is none of its
+    business) at the ON_THE_WAY - 1 points between the start and the state, and at the state
+    unless it lands there (zero); refused at once where the middle of the ranges breaks one."""
+    s, s0 = path.s, path.start[path.s]
+    result = []
+    for gap, meaning in gaps:
+        along = gap.xreplace(path.positions)
+        if decide(along.xreplace({s: s0})) < -1e-12:
+            continue
+        result += [(tidy(along.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (end - s0)})), meaning)
+                   for k in range(1, ON_THE_WAY)]
+        landed = tidy(along.xreplace({s: end}))
+        result += [(landed, meaning)] if landed != 0 else []
+    _positive_at_the_middle(result, decide, ": narrow the ranges to where the flight clears them")
+    return tuple(result)
 
 
 def _constant_along(path: Path, end: sp.Expr, decide):
