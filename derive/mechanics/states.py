@@ -225,7 +225,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
             if flying is not None:  # a projectile: along its coordinate that moves at a constant rate
                 coordinate, positions, step = flying
                 path = _path(scene, coords, start, coordinate, positions, derivation, decide, condition)
-                reached = _arrive(path, condition, derivation, decide)
+                reached = _arrive(path, condition, derivation, decide, "The flight is followed along one coordinate")
                 clear = _clear_of_surfaces(free_flight.clearances(scene, coords), path, reached.end, decide)
                 return dataclasses.replace(reached, steps=(step, *reached.steps), positive=reached.positive + clear)
             # kept momenta, zero at the start, fix sums of the coordinates: a rod on a smooth floor
@@ -244,6 +244,8 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
     tried, problem = [], None
     # An angle before a translation: a swinging rod's angle gives its height as a cosine, its x a root.
     others = sorted((c for c in coords.all if c != target), key=lambda c: (heading[c.q] == 0, c.kind != "theta"))
+    carried = "The constraints and the kept momentum leave one coordinate" if integrals else \
+        "The constraints leave one coordinate"
     for keep in [target, *others] if target else others:
         try:
             dependent = solve_gaps(scene, coords, sample, keep=keep, heading=heading,
@@ -262,7 +264,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
         try:
             positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
             path = _path(scene, coords, start, left[0], positions, derivation, decide, condition)
-            reached = _arrive(path, condition, derivation, decide)
+            reached = _arrive(path, condition, derivation, decide, carried)
         except StateError as error:
             problem = problem or error
             continue
@@ -434,12 +436,13 @@ def _toward(positions: dict, condition: Gets, s: sp.Symbol, s0: sp.Expr, decide)
     return 0 if not ahead else 1 if min(ahead, key=abs) > 0 else -1
 
 
-def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
+def _arrive(path: Path, condition, derivation: Derivation, decide,
+            carried: str = "The constraints leave one coordinate") -> Reached:
     """The state on the path where the condition first holds, what must stay positive on the way,
-    and the steps that found it."""
+    and the steps that found it (the first saying what leaves the path's one coordinate, `carried`)."""
     s, speed, s0 = path.s, path.coordinate.u, path.start[path.s]
     symbol = KINETIC
-    steps = [Step(f"The constraints leave one coordinate, {s}; the kinetic energy in its rate",
+    steps = [Step(f"{carried}, {s}; the kinetic energy in its rate",
                   (sp.Eq(symbol, path.inertia * speed**2),)),
              Step("Work and energy from the start: the constraints do no work, gravity and springs through the potential energy, "
                   "the other loads through their work", (sp.Eq(symbol, path.kinetic),))]
