@@ -3,8 +3,9 @@
 A state is the placement (the reference configuration, every coordinate zero) moving at given
 rates, or the configuration where one body coordinate reaches a value, reached by the motion from
 another state (the placement at rest by default). The constraints fix the other velocities of
-the first; for the second the motion must have one degree of freedom (the scene's one, or a
-straight line in its coordinates that it keeps: blocks on cords), and its rates come from the
+the first; for the second the motion must have one degree of freedom (the scene's one, a
+straight line in its coordinates that it keeps: blocks on cords, a free flight's coordinate at a
+constant rate, or the one kept momenta leave: a rod on a smooth floor), and its rates come from the
 work-energy theorem along its coordinate s (every constraint of derive's parts is ideal: pins,
 cords, smooth or rolling contacts do no work):
 
@@ -208,7 +209,9 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
           derivation: Derivation, sample=None) -> Reached:
     """The state the motion from the state `start` (every coordinate and velocity) gets to first
     where `condition` holds, by the work-energy theorem along the one free coordinate (with
-    several, along the line the motion keeps: `_line`).
+    several, along the line the motion keeps, `_line`; where it curves, a free flight's coordinate
+    at a constant rate, derive.mechanics.free_flight, or the one coordinate the constraints and
+    the kept momenta leave, derive.mechanics.first_integrals).
     `derivation` gives the direction a start at rest moves in and the forces along the way;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
     assumptions leave open."""
@@ -329,7 +332,7 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     positions = {c.q: s if c == along else start[c.q] + ratios[c] * (s - s0) for c in coords.all}
     path = _path(scene, coords, start, along, positions, derivation, decide, condition)
     curved = Curved(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
-                        "straight line in its coordinates (energy fixes one rate of several)")
+                    "straight line in its coordinates (energy fixes one rate of several)")
     if not _on_line(scene, coords, path, s0, ratios, derivation, decide):  # at the start already (a ball flying off)
         raise curved
     reached = _arrive(path, condition, derivation, decide)
