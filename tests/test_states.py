@@ -338,6 +338,22 @@ def test_a_flight_that_never_gets_to_its_state_is_refused(tmp_path):
     assert "does not get there" in refused(tmp_path, text, "scene.states.landed")
 
 
+def test_the_flight_off_the_wedge_matches_a_simulation_and_the_routes_check():
+    """The landing found by energy along x (free flight) against a projectile integrated here
+    with scipy from the velocity just after the bounce, until it is H below where it struck; and
+    the solve's own check, Newton–Euler's equations integrated to each state, passed."""
+    from scipy.integrate import solve_ivp
+
+    wedge = problem.load(Path(__file__).parent / "textbook/states/ball_bounces_off_wedge.yaml")
+    result = report.solve(wedge, {"h": "1", "H": "0.35", "e": "0.85", "m": "0.2"}, 12)
+    value = {name: float(a["value"]) for name, a in result["answers"].items()}
+    fall = solve_ivp(lambda t, y: [y[2], y[3], 0, -9.81], (0, 5), [0, 0, value["vx"], value["vy"]],
+                     events=lambda t, y: y[1] + 0.35, rtol=1e-12, atol=1e-14, method="DOP853")
+    assert fall.t_events[0][0] == pytest.approx(value["t"], rel=1e-9)
+    assert fall.y_events[0][0][0] == pytest.approx(value["x"], rel=1e-9)
+    assert result["checks"]["states"]["passed"] and "integrated" in result["checks"]["states"]["detail"]
+
+
 def test_a_flight_through_a_surface_is_refused(tmp_path):
     """Nothing holds a flying ball off the scene's surfaces: a ball struck H = 2 m above the floor
     (h = 0.5 m, e = 0.7) comes back to the wedge's face before it gets that low, and a ball asked
