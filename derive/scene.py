@@ -276,7 +276,7 @@ class State:
     Either the placement moving at given `rates` ((body, coordinate kind, value) with kind x, y
     or theta), or a state the motion from the state `start` (None: the placement at rest) gets
     to first: where one body coordinate reaches a value (`when`: an absolute x, y of the center
-    or angle, as `at` and `angle` are given), or (`until`) where the motion stops, ("stops",
+    or angle, as `at` and `angle` are given; with `rate`, where its rate does), or (`until`) where the motion stops, ("stops",
     None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD); or the state
     just after an `event` in the state `start`: an impact (a stick, the body held where it is; a
     lock, the two turning together from then on, the scene keeping the joint the impact made; a
@@ -293,6 +293,7 @@ class State:
     start: str | None = None
     until: tuple[str, str | None] | None = None
     event: Event | None = None
+    rate: bool = False  # `when` gives a rate (velocity.x|y, angular_velocity), not a position
 
 
 @dataclass(frozen=True)

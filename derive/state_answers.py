@@ -364,10 +364,12 @@ class StateAnswers:
             by_newton_euler = newton_euler.derive(scene, self.coordinates)
         return {"lagrange": by_lagrange, "newton_euler": by_newton_euler}
 
-    def _condition(self, state) -> state_motion.Gets | state_motion.Stops | state_motion.Vanishes:
-        """Where a state reached by the motion is: a coordinate's value, a stop, a force at zero."""
+    def _condition(self, state) -> state_motion.Gets | state_motion.GetsRate | state_motion.Stops | state_motion.Vanishes:
+        """Where a state reached by the motion is: a coordinate's value or its rate's, a stop, a force at zero."""
         if state.until is None:
             body, kind, value = state.when
+            if state.rate:
+                return state_motion.GetsRate(self.coordinates.of(body, kind), value)
             return state_motion.Gets(self.coordinates.of(body, kind), value - self.scene.bodies[body].placed(kind))
         kind, name = state.until
         if kind == "stops":

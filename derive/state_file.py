@@ -25,7 +25,8 @@ STATE_RATES = {"velocity.x": ("x", "m/s"), "velocity.y": ("y", "m/s"), "angular_
 def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
     """`states: {spinning: {rates: {wheel.angular_velocity: w0}}, vertical: {when: {rod.angle: -pi/2},
     from: spinning}}`: each state's `from` one named above it (no state reached from itself).
-    `when:` gives a position (`{BODY.x|y|angle: value}`), or the first point where the motion
+    `when:` gives a position (`{BODY.x|y|angle: value}`) or a rate (`{BODY.velocity.x|y|angular_velocity:
+    value}`: a ball at the top of its flight, `{ball.velocity.y: 0}`), or the first point where the motion
     stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`), a cord goes slack
     (`{slack: CORD}`), a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static:
     mu_s}) or a slipping clutch or a sliding body grips (`{grips: CLUTCH or BODY}`). `event:` is
@@ -69,19 +70,23 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             result[name] = State(name, start=start, until=("stops", None))
             continue
         if not isinstance(spec["when"], dict):
-            raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {leaves: BODY}, "
+            raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {BODY.velocity.x|y: value}, "
+                                               "{leaves: BODY}, "
                                                "{slack: CORD}, {slips: BODY} and {grips: CLUTCH or BODY}")
         when = reader.mapping(spec["when"], f"{field}.when", free=True)
         if len(when) != 1:
-            raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2), or stops, {leaves: BODY}, "
+            raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2) or rate (ball.velocity.y: 0), or stops, "
+                                               "{leaves: BODY}, "
                                                "{slack: CORD}, {slips: BODY} or {grips: CLUTCH or BODY}")
         (key, value), = when.items()
         if key in THRESHOLDS:
             result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",
                                                                                 constraints)))
             continue
-        result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies, STATE_POSITIONS),
-                             start=start)
+        rate = str(key).partition(".")[2] in STATE_RATES
+        result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies,
+                                                     STATE_RATES if rate else {**STATE_POSITIONS, **STATE_RATES}),
+                             start=start, rate=rate)
     return result
 
 

@@ -29,6 +29,19 @@ def _cos(x):
     return sp.cos(x)
 
 
+_PHI = sp.Symbol("phi", positive=True)
+
+
+def _omega_squared(s, phi):
+    """A rod falling on a smooth floor, released at theta0 from the vertical: phi'^2 at phi."""
+    return 12 * s.g * (_cos(s.theta0) - _cos(phi)) / (s.L * (1 + 3 * _sin(phi) ** 2))
+
+
+def _wedge_vy(s):
+    """A ball dropped from h onto a smooth face at 45 degrees: its vertical velocity just after."""
+    return -(1 - s.e) * sp.sqrt(2 * s.g * s.h) / 2
+
+
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
     # Where a scene rests (derive.mechanics.equilibrium). Serway & Jewett ch. 5: a ball on a
@@ -417,6 +430,28 @@ EXPECTED.update({
         "alpha": lambda s: -3 * s.g * _cos(s.theta0) / (2 * s.L),
         "omega": lambda s: -sp.sqrt(3 * s.g * (1 - _sin(s.theta0)) / s.L),
     },
+    # Serway & Jewett ch. 10 (a rod on a frictionless surface falls with its center straight down),
+    # from theta0 to the vertical; derived here independently in the rod's angle phi from the
+    # vertical alone: no horizontal force, so x_cm stays put, y_cm = (L/2) cos(phi), and energy
+    # (M/2) y_cm'^2 + (M L^2/24) phi'^2 = M g (L/2)(cos(theta0) - cos(phi)) gives
+    # phi'^2 = 12 g (cos(theta0) - cos(phi))/(L (1 + 3 sin^2(phi))); flat (phi = pi/2):
+    # omega = sqrt(3 g cos(theta0)/L) clockwise, v_cm = (L/2) omega. Newton for the center,
+    # N - M g = M y_cm'', with phi'' = (1/2) d(phi'^2)/dphi: N = M g (4 + 3 (cos(phi) - cos(theta0))^2
+    # - 3 cos^2(theta0))/(1 + 3 sin^2(phi))^2, positive for every phi (the foot never leaves the
+    # floor): M g/(1 + 3 sin^2(theta0)) at release, M g/4 as it lands; the time is the integral of
+    # dphi/phi' (no closed form: an elliptic integral).
+    "rod_falls_on_smooth_floor": {
+        "N": lambda s: s.M * s.g / (1 + 3 * _sin(s.theta0) ** 2),
+        "v1": lambda s: s.L / 2 * _sin(s.theta) * sp.sqrt(_omega_squared(s, s.theta)),
+        "w1": lambda s: -sp.sqrt(_omega_squared(s, s.theta)),
+        "N1": lambda s: s.M * s.g * (4 + 3 * (_cos(s.theta) - _cos(s.theta0)) ** 2 - 3 * _cos(s.theta0) ** 2)
+        / (1 + 3 * _sin(s.theta) ** 2) ** 2,
+        "x1": lambda s: s.L * _sin(s.theta0) / 2,
+        "v": lambda s: sp.sqrt(3 * s.g * s.L * _cos(s.theta0)) / 2,
+        "w": lambda s: -sp.sqrt(3 * s.g * _cos(s.theta0) / s.L),
+        "N2": lambda s: s.M * s.g / 4,
+        "t": lambda s: sp.Integral(1 / sp.sqrt(_omega_squared(s, _PHI)), (_PHI, s.theta0, sp.pi / 2)),
+    },
     "rod_swings_down": {
         "omega": lambda s: sp.sqrt(3 * s.g / s.L),
         "v": lambda s: sp.sqrt(3 * s.g / s.L) * s.L / 2,
@@ -647,6 +682,32 @@ EXPECTED.update({
         "dK": lambda s: s.m / 2 * ((s.v * _sin(s.theta) - s.mu * (1 + s.e) * s.v * _cos(s.theta)) ** 2
                                    + (s.e * s.v * _cos(s.theta)) ** 2)
         + s.m * s.R**2 / 5 * (5 * s.mu * (1 + s.e) * s.v * _cos(s.theta) / (2 * s.R)) ** 2 - s.m * s.v**2 / 2,
+    },
+    # The flight after a bounce (free flight: constant accelerations). Kleppner & Kolenkow ch. 7:
+    # gripping, the ball leaves at v0x = 5 v sin(theta)/7, spinning -5 v sin(theta)/(7 R), and
+    # v0y = e v cos(theta) up; then Halliday ch. 4's projectile: the top at v0y^2/(2 g) above the
+    # bounce (its center R above the floor there), v0y/g later and v0x v0y/g along; back on the
+    # floor after T = 2 v0y/g, 2 v0x v0y/g along, falling at v0y, its spin unchanged (no torque).
+    "ball_bounces_then_flies": {
+        "rise": lambda s: s.R + (s.e * s.v * _cos(s.theta)) ** 2 / (2 * s.g),
+        "xtop": lambda s: 5 * s.v * _sin(s.theta) / 7 * s.e * s.v * _cos(s.theta) / s.g,
+        "ttop": lambda s: s.e * s.v * _cos(s.theta) / s.g,
+        "range": lambda s: 2 * (5 * s.v * _sin(s.theta) / 7) * s.e * s.v * _cos(s.theta) / s.g,
+        "T": lambda s: 2 * s.e * s.v * _cos(s.theta) / s.g,
+        "spin": lambda s: -5 * s.v * _sin(s.theta) / (7 * s.R),
+        "vy": lambda s: -s.e * s.v * _cos(s.theta),
+    },
+    # Meriam & Kraige art. 3/12 (oblique impact on a smooth face): dropped from h, the ball strikes
+    # a face at 45 degrees at v0 = sqrt(2 g h) straight down; along the face's normal
+    # n = (1, 1)/sqrt(2) its velocity -v0 n/sqrt(2) becomes e v0 n/sqrt(2), along the face v0/sqrt(2)
+    # stays: vx = (1 + e) v0/2, vy = -(1 - e) v0/2. Halliday ch. 4: it falls H in
+    # t = (vy + sqrt(vy^2 + 2 g H))/g, landing vx t along, at sqrt(vx^2 + vy^2 + 2 g H).
+    "ball_bounces_off_wedge": {
+        "vx": lambda s: (1 + s.e) * sp.sqrt(2 * s.g * s.h) / 2,
+        "vy": lambda s: _wedge_vy(s),
+        "x": lambda s: (1 + s.e) * sp.sqrt(2 * s.g * s.h) / 2 * (_wedge_vy(s) + sp.sqrt(_wedge_vy(s) ** 2 + 2 * s.g * s.H)) / s.g,
+        "t": lambda s: (_wedge_vy(s) + sp.sqrt(_wedge_vy(s) ** 2 + 2 * s.g * s.H)) / s.g,
+        "u": lambda s: sp.sqrt(((1 + s.e) * sp.sqrt(2 * s.g * s.h) / 2) ** 2 + _wedge_vy(s) ** 2 + 2 * s.g * s.H),
     },
     "child_walks_to_center": {
         "omega": lambda s: s.w0 * (s.M + 2 * s.m) / s.M,

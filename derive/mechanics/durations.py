@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step, tidy
+from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.states import Path, Reached, Stops, reach
 from derive.prose import Sentence
@@ -37,8 +37,8 @@ def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
     if polynomial is not None and polynomial.degree() <= 1:
         slope = polynomial.coeff_monomial(s)
         acceleration = slope / 2  # d(s'^2)/dt = 2 s' s'' = slope s'
-        if slope == 0:
-            time = tidy((end - s0) / path.rate(s0))
+        if slope == 0:  # s' constant: its square as tidied (K/k at s0 alone folds worse: a flying, spinning ball)
+            time = tidy((end - s0) / (path.direction * root(squared)))
             said = Sentence(("The rate of ", s, " does not change along the way: the time is the distance over that "
                              "rate, at constant speed."))
         else:

@@ -26,7 +26,7 @@ from scipy.integrate import solve_ivp
 
 from derive.mechanics.derivation import Derivation
 from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.states import Gets, Reached, Stops
+from derive.mechanics.states import Gets, GetsRate, Reached, Stops
 
 
 def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reached: Reached, condition,
@@ -52,6 +52,12 @@ def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reac
 
         def event(t, y):
             return y[index] - end
+    elif isinstance(condition, GetsRate):
+        index = coords.all.index(condition.coordinate)
+        rate = float(sp.N(condition.value.xreplace(values), 20))
+
+        def event(t, y):
+            return y[n + index] - rate
     elif isinstance(condition, Stops):
         index = coords.all.index(reached.path.coordinate)
 

@@ -127,7 +127,8 @@ class Coordinates:
 
 
 def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate | None = None,
-               heading: dict | None = None, at: dict | None = None) -> dict[sp.Symbol, sp.Expr]:
+               heading: dict | None = None, at: dict | None = None,
+               integrals: tuple[sp.Expr, ...] = ()) -> dict[sp.Symbol, sp.Expr]:
     """Solve every constraint gap for one coordinate, preferring translations to angles;
     the coordinates left over are the free ones. `sample` (an expression's float value at sample
     parameters) tells the branch through the reference where simplification cannot (a cord
@@ -137,44 +138,46 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
     -1 or 0 by coordinate symbol: the way a motion leaves the reference) picks between two
     branches that both pass through it (a bead leaving a bowl's rim downward). `at` (coordinate
     values) is the configuration the branches must pass through, if not the reference (a state
-    the motion starts from).
+    the motion starts from). `integrals` are sums of the coordinates the motion keeps besides the
+    gaps (derive.mechanics.first_integrals: a rod's center of mass over a smooth floor), solved
+    the same way.
 
     Raises ValueError when a gap cannot be solved for any remaining coordinate.
     """
     order = sorted(coords.all, key=lambda c: (c == keep, c.kind == "theta"))
     reference = {c.q: (at or {}).get(c.q, sp.Integer(0)) for c in coords.all}
     solved: dict[sp.Symbol, sp.Expr] = {}
-    for c in scene.constraints:
-        for gap in c.gaps(coords):
-            gap = gap.xreplace(solved)
-            # One root, or else (a cord's circle: y = -sqrt(L^2 - x^2) or +...) the one branch
-            # through the reference configuration, where every coordinate is zero, or else the one
-            # that moves the way `heading` says; `keep` last of all.
-            candidates = [k for k in order if k.q not in solved and gap.has(k.q)]
+    named = [(c.name, gap) for c in scene.constraints for gap in c.gaps(coords)]
+    for name, gap in named + [("kept by a momentum", gap) for gap in integrals]:
+        gap = gap.xreplace(solved)
+        # One root, or else (a cord's circle: y = -sqrt(L^2 - x^2) or +...) the one branch
+        # through the reference configuration, where every coordinate is zero, or else the one
+        # that moves the way `heading` says; `keep` last of all.
+        candidates = [k for k in order if k.q not in solved and gap.has(k.q)]
 
-            # Each candidate's roots only when a pick asks for them, in the picks' order: sympy's
-            # solve for an angle in a trigonometric gap with a symbolic placement takes minutes,
-            # and a translation that solves the gap alone (a pin's x) makes it unneeded.
-            @functools.cache
-            def found(k: Coordinate) -> list[sp.Expr]:
-                return _turned_back(roots(gap, k.q), reference, sample) if k.kind == "theta" else roots(gap, k.q)
+        # Each candidate's roots only when a pick asks for them, in the picks' order: sympy's
+        # solve for an angle in a trigonometric gap with a symbolic placement takes minutes,
+        # and a translation that solves the gap alone (a pin's x) makes it unneeded.
+        @functools.cache
+        def found(k: Coordinate) -> list[sp.Expr]:
+            return _turned_back(roots(gap, k.q), reference, sample) if k.kind == "theta" else roots(gap, k.q)
 
-            @functools.cache
-            def through(k: Coordinate) -> list[sp.Expr]:
-                return [r for r in found(k) if _through(r.xreplace(reference) - reference[k.q], sample)]
+        @functools.cache
+        def through(k: Coordinate) -> list[sp.Expr]:
+            return [r for r in found(k) if _through(r.xreplace(reference) - reference[k.q], sample)]
 
-            picks = [lambda k: found(k)[0] if len(found(k)) == 1 else None,
-                     lambda k: through(k)[0] if len(through(k)) == 1 else None,
-                     lambda k: _heading(through(k), k, heading, sample, reference)]
-            chosen = next(((k, root) for pick in picks for k in candidates if k != keep
-                           if (root := pick(k)) is not None), None)
-            chosen = chosen or next(((k, root) for pick in picks for k in candidates if k == keep
-                                     if (root := pick(k)) is not None), None)
-            if chosen is None:
-                raise ValueError(f"the constraint {c.name} could not be solved for any coordinate")
-            candidate, root = chosen
-            solved = {q: v.xreplace({candidate.q: root}) for q, v in solved.items()}
-            solved[candidate.q] = root
+        picks = [lambda k: found(k)[0] if len(found(k)) == 1 else None,
+                 lambda k: through(k)[0] if len(through(k)) == 1 else None,
+                 lambda k: _heading(through(k), k, heading, sample, reference)]
+        chosen = next(((k, root) for pick in picks for k in candidates if k != keep
+                       if (root := pick(k)) is not None), None)
+        chosen = chosen or next(((k, root) for pick in picks for k in candidates if k == keep
+                                 if (root := pick(k)) is not None), None)
+        if chosen is None:
+            raise ValueError(f"the constraint {name} could not be solved for any coordinate")
+        candidate, root = chosen
+        solved = {q: v.xreplace({candidate.q: root}) for q, v in solved.items()}
+        solved[candidate.q] = root
     return solved
 
 

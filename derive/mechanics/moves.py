@@ -161,7 +161,7 @@ def move(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
     place = sp.symbols("sigma_x sigma_y", real=True)  # the mover's place on its body, anywhere
     anywhere = with_pin(scene, moved_pin(scene, event, place))
     after = with_pin(scene, moved_pin(scene, event, event.place))
-    kept = _kept(anywhere, coords, before, route, sample, place)
+    kept = symmetries_kept(anywhere, coords, before, route, sample, place)
     positions = _placed(scene, coords, before, event, kept)
     return _after(scene, after, coords, before, kept, positions, route, sample, "move")
 
@@ -180,8 +180,8 @@ def turn(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
     let the body turn so, or where the kept momenta do not fix every rate."""
     couple = _Couple(event.body, event.to)
     driven = dataclasses.replace(scene, loads=scene.loads + (couple,))
-    kept = _kept(driven, coords, before, route, sample, (couple.torque,))
-    momenta = [_momentum(scene, coords, s, route) for s in kept]
+    kept = symmetries_kept(driven, coords, before, route, sample, (couple.torque,))
+    momenta = [momentum_of(scene, coords, s, route) for s in kept]
     relative = coords.angle(event.body) - coords.angle(event.to)
     earlier = {c.q: before[c.q] for c in coords.all}
     turned = sp.Eq(relative - relative.xreplace(earlier), event.angle)
@@ -257,7 +257,7 @@ def _solved(equations: list[sp.Expr], unknowns: list[sp.Symbol]) -> dict:
     return {u: v for u, v in zip(unknowns, solution) if v != u}
 
 
-def _kept(scene: Scene, coords: Coordinates, before: dict, route: str, sample, free) -> list[Symmetry]:
+def symmetries_kept(scene: Scene, coords: Coordinates, before: dict, route: str, sample, free) -> list[Symmetry]:
     """The rigid motions whose momenta the scene keeps by `route`, whatever the symbols `free`
     (the mover's place, the couple of a turn)."""
     zero = _zero_test(scene, coords, sample, free)
@@ -265,7 +265,7 @@ def _kept(scene: Scene, coords: Coordinates, before: dict, route: str, sample, f
     return [s for s in _candidates(scene, coords, before) if test(scene, coords, s, zero)]
 
 
-def _momentum(scene: Scene, coords: Coordinates, symmetry: Symmetry, route: str) -> sp.Expr:
+def momentum_of(scene: Scene, coords: Coordinates, symmetry: Symmetry, route: str) -> sp.Expr:
     """Lagrange: p_xi = sum_j dT/du_j xi_j. Newton–Euler: the angular momentum about the point
     (the momentum along the shift) of the moved bodies."""
     if route != "lagrange":
@@ -280,7 +280,7 @@ def _after(scene: Scene, after: Scene, coords: Coordinates, before: dict, kept: 
     """The rates after a move or a turn: the kept momenta as before, with the joints' velocity
     conditions of the scene `after` and the `extra` rates that vanish, at `positions`; `steps`
     shown after the kept momenta."""
-    momenta = [_momentum(scene, coords, s, route) for s in kept]
+    momenta = [momentum_of(scene, coords, s, route) for s in kept]
     if route == "lagrange":
         conditions = [coords.ddt(g) for part in after.constraints for g in part.gaps(coords)]
     else:

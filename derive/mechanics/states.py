@@ -3,8 +3,9 @@
 A state is the placement (the reference configuration, every coordinate zero) moving at given
 rates, or the configuration where one body coordinate reaches a value, reached by the motion from
 another state (the placement at rest by default). The constraints fix the other velocities of
-the first; for the second the motion must have one degree of freedom (the scene's one, or a
-straight line in its coordinates that it keeps: blocks on cords), and its rates come from the
+the first; for the second the motion must have one degree of freedom (the scene's one, a
+straight line in its coordinates that it keeps: blocks on cords, a free flight's coordinate at a
+constant rate, or the one kept momenta leave: a rod on a smooth floor), and its rates come from the
 work-energy theorem along its coordinate s (every constraint of derive's parts is ideal: pins,
 cords, smooth or rolling contacts do no work):
 
@@ -37,6 +38,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
+from derive.mechanics import first_integrals, free_flight
 from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
@@ -55,6 +57,10 @@ class StateError(ValueError):
 
 class StateLimit(StateError):
     """A state derive cannot yet find (an engine limit, not the file's fault)."""
+
+
+class Curved(StateLimit):
+    """A motion of several degrees of freedom that is no straight line in its coordinates."""
 
 
 #: Where no one coordinate carries the motion from its start to the state, and what to do.
@@ -122,6 +128,15 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
 @dataclass(frozen=True)
 class Gets:
     """The state where a coordinate gets to a value (a displacement from the placement)."""
+
+    coordinate: Coordinate
+    value: sp.Expr
+
+
+@dataclass(frozen=True)
+class GetsRate:
+    """The state where a coordinate's rate gets to a value (a ball at the top of its flight, where
+    its vertical velocity is zero)."""
 
     coordinate: Coordinate
     value: sp.Expr
@@ -200,18 +215,37 @@ def settled(expr: sp.Expr) -> sp.Expr:
         lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer, lambda e: sp.factor(e.base) ** e.exp))
 
 
-def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], condition: Gets | Stops | Vanishes,
+def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
+          condition: Gets | GetsRate | Stops | Vanishes,
           derivation: Derivation, sample=None) -> Reached:
     """The state the motion from the state `start` (every coordinate and velocity) gets to first
     where `condition` holds, by the work-energy theorem along the one free coordinate (with
-    several, along the line the motion keeps: `_line`).
+    several, along the line the motion keeps, `_line`; where it curves, a free flight's coordinate
+    at a constant rate, derive.mechanics.free_flight, or the one coordinate the constraints and
+    the kept momenta leave, derive.mechanics.first_integrals).
     `derivation` gives the direction a start at rest moves in and the forces along the way;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
     assumptions leave open."""
     free = len(coords.all) - sum(len(c.gaps(coords)) for c in scene.constraints)
     decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed  # safe: engine expressions
+    integrals = ()
     if free > 1:  # before solving any gap: energy fixes one rate of several, unless the motion is a line
-        return _line(scene, coords, start, condition, derivation, decide, free)
+        try:
+            return _line(scene, coords, start, condition, derivation, decide, free)
+        except Curved:
+            if sample is None:
+                raise
+            flying = free_flight.flight(scene, coords, start, derivation)
+            if flying is not None:  # a projectile: along its coordinate that moves at a constant rate
+                coordinate, positions, step = flying
+                path = _path(scene, coords, start, coordinate, positions, derivation, decide, condition)
+                reached = _arrive(path, condition, derivation, decide, "The flight is followed along one coordinate")
+                clear = _clear_of_surfaces(free_flight.clearances(scene, coords), path, reached.end, decide)
+                return dataclasses.replace(reached, steps=(step, *reached.steps), positive=reached.positive + clear)
+            # kept momenta, zero at the start, fix sums of the coordinates: a rod on a smooth floor
+            integrals = first_integrals.zero_momenta(scene, coords, start, sample)
+            if free - len(integrals) != 1:
+                raise
     if free < 1:
         raise StateError("the constraints leave the scene no motion: it never gets to the state")
     heading = _heading(start, coords, derivation, decide)
@@ -224,10 +258,12 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
     tried, problem = [], None
     # An angle before a translation: a swinging rod's angle gives its height as a cosine, its x a root.
     others = sorted((c for c in coords.all if c != target), key=lambda c: (heading[c.q] == 0, c.kind != "theta"))
+    carried = "The constraints and the kept momentum leave one coordinate" if integrals else \
+        "The constraints leave one coordinate"
     for keep in [target, *others] if target else others:
         try:
             dependent = solve_gaps(scene, coords, sample, keep=keep, heading=heading,
-                                   at={c.q: start[c.q] for c in coords.all})
+                                   at={c.q: start[c.q] for c in coords.all}, integrals=tuple(i.gap for i in integrals))
         except (ValueError, NotImplementedError) as error:
             problem = problem or StateLimit(f"find where the scene gets to: {error}")
             continue
@@ -242,12 +278,12 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr], co
         try:
             positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
             path = _path(scene, coords, start, left[0], positions, derivation, decide, condition)
-            reached = _arrive(path, condition, derivation, decide)
+            reached = _arrive(path, condition, derivation, decide, carried)
         except StateError as error:
             problem = problem or error
             continue
         if not any(v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) for v in reached.values.values()):
-            return reached
+            return dataclasses.replace(reached, steps=(*(i.step for i in integrals), *reached.steps))
         problem = problem or StateLimit(NO_COORDINATE)
     raise problem
 
@@ -351,8 +387,8 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     s, s0 = along.q, start[along.q]
     positions = {c.q: s if c == along else start[c.q] + ratios[c] * (s - s0) for c in coords.all}
     path = _path(scene, coords, start, along, positions, derivation, decide, condition)
-    curved = StateLimit(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
-                        "straight line in its coordinates (energy fixes one rate of several)")
+    curved = Curved(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
+                    "straight line in its coordinates (energy fixes one rate of several)")
     if not _on_line(scene, coords, path, s0, ratios, derivation, decide):  # at the start already (a ball flying off)
         raise curved
     reached = _arrive(path, condition, derivation, decide)
@@ -372,6 +408,25 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
                       "energy is a function of it times the square of its rate.")),)),
              *reached.steps[1:])
     return Reached(reached.values, reached.positive + tuple(extents), steps, path, reached.end, reached.vanished)
+
+
+def _clear_of_surfaces(gaps: list[tuple[sp.Expr, str]], path: Path, end: sp.Expr, decide) -> tuple:
+    """What must stay positive for a flight to keep off the scene's surfaces on its way: each gap
+    (on the side the body starts, at the middle of the ranges: a surface behind it is none of its
+    business) at the ON_THE_WAY - 1 points between the start and the state, and at the state
+    unless it lands there (zero); refused at once where the middle of the ranges breaks one."""
+    s, s0 = path.s, path.start[path.s]
+    result = []
+    for gap, meaning in gaps:
+        along = gap.xreplace(path.positions)
+        if decide(along.xreplace({s: s0})) < -1e-12:
+            continue
+        result += [(tidy(along.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (end - s0)})), meaning)
+                   for k in range(1, ON_THE_WAY)]
+        landed = tidy(along.xreplace({s: end}))
+        result += [(landed, meaning)] if landed != 0 else []
+    _positive_at_the_middle(result, decide, ": narrow the ranges to where the flight clears them")
+    return tuple(result)
 
 
 def _constant_along(path: Path, end: sp.Expr, decide):
@@ -443,14 +498,15 @@ def _toward(positions: dict, condition: Gets, s: sp.Symbol, s0: sp.Expr, decide)
     return 0 if not ahead else 1 if min(ahead, key=abs) > 0 else -1
 
 
-def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
+def _arrive(path: Path, condition, derivation: Derivation, decide,
+            carried: str = "The constraints leave one coordinate") -> Reached:
     """The state on the path where the condition first holds, what must stay positive on the way,
-    and the steps that found it."""
+    and the steps that found it (the first saying what leaves the path's one coordinate, `carried`)."""
     s, speed, s0 = path.s, path.coordinate.u, path.start[path.s]
     symbol = KINETIC
-    steps = [Step("The constraints leave one coordinate; the kinetic energy in its rate",
+    steps = [Step(f"{carried}; the kinetic energy in its rate",
                   (sp.Eq(symbol, path.inertia * speed**2),), sentences=(Sentence((
-                      "The constraints leave the scene one degree of freedom: every coordinate follows from ", s,
+                      f"{carried} of the scene: every coordinate follows from ", s,
                       ", and the kinetic energy is a function of it times the square of its rate.")),)),
              Step("Work and energy from the start", (sp.Eq(symbol, path.kinetic),), sentences=path.work)]
     vanished = ()
@@ -464,6 +520,13 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
                                                                      "motion moves away from it)")]
         else:
             steps_ahead = []
+    elif isinstance(condition, GetsRate):
+        speed_there = path.velocities[condition.coordinate.u].xreplace({speed: path.rate(s)})
+        function = tidy(speed_there - condition.value)
+        s1 = _first(sp.Eq(function, 0), function, path, decide, f"the motion from the start does not get to "
+                                                                  f"{condition.coordinate.u} = {sp.sstr(condition.value)}")
+        steps.append(Step(f"The rate {condition.coordinate.u} along the way, and where it gets to "
+                          f"{sp.sstr(condition.value)}", (sp.Eq(condition.coordinate.u, speed_there), sp.Eq(s, s1))))
     elif isinstance(condition, Stops):
         function = path.kinetic
         s1 = _first(sp.Eq(path.kinetic, 0), function, path, decide,
