@@ -2,7 +2,8 @@
 
 For each problem: the independent routes (Lagrange and Newton–Euler, energy, conservation
 and impulses, integration and the parallel-axis theorem, ...), the dimensions of every
-answer, and a numerical simulation where the scene moves.
+answer, and a numerical simulation where the scene moves (of a chain of states, each of its
+motion segments from the state the link before produced: derive.chain_simulation).
 
 >>> rows = audit(["rod_endpoint"])
 >>> rows[0].passed, rows[0].routes
@@ -13,7 +14,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 
-from derive import library, problem, simulate
+from derive import chain_simulation, library, problem, simulate
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.scene import DYNAMIC_KINDS
@@ -55,10 +56,16 @@ def _audit_one(reference: str, begin) -> Row:
         row.dimensions = "ok"
         row.routes = ", ".join(c.name for c in checks if c.name != "dimensions") or "-"
         if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS:
-            report = simulate.check(solution)
-            row.simulation = ("ok: " + ", ".join(report.compared)) if report.passed else "FAILED"
-            if not report.passed:
-                row.passed, row.failure = False, "; ".join(report.notes)
+            reports = [simulate.check(solution)] + ([chain_simulation.simulate(solution)] if solution.scene.states else [])
+            passed = all(r.passed for r in reports)
+            row.simulation = ("ok: " + ", ".join(n for r in reports for n in r.compared)) if passed else "FAILED"
+            unchecked: dict[str, list[str]] = {}
+            for what, why in (u for r in reports for u in r.unchecked):
+                unchecked.setdefault(why, []).append(what)
+            if unchecked:
+                row.simulation += "; not simulated: " + "; ".join(f"{', '.join(w)} ({why})" for why, w in unchecked.items())
+            if not passed:
+                row.passed, row.failure = False, "; ".join(n for r in reports for n in r.notes)
     except (CheckFailure, InputError) as error:
         row.passed, row.failure = False, str(error)
     row.seconds = time.perf_counter() - start

@@ -38,8 +38,8 @@ class SimulationReport:
     passed: bool = True
     compared: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
-    #: what the simulation does not reach, each with the reason (an engine limit: said, not skipped)
-    unchecked: list[str] = field(default_factory=list)
+    #: (what, why) the simulation does not reach: said by name, never silently skipped
+    unchecked: list[tuple[str, str]] = field(default_factory=list)
 
     def fail(self, message: str) -> None:
         self.passed = False
