@@ -119,7 +119,8 @@ def _number(expr: sp.Expr, values: dict) -> sp.Float:
 
 
 def _float(expr: sp.Expr, values: dict) -> float:
-    return float(_number(expr, values))
+    """A closed form's value (an integral by derive.numeric's quadrature, not sympy's evalf)."""
+    return float(numeric.evaluate(sp.sympify(expr), values, 12))  # safe: derived expressions, not file text
 
 
 def _segment(solution, name: str, start: dict | None, values: dict) -> tuple[float, dict] | None:
