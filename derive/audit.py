@@ -101,7 +101,8 @@ class Spread:
 
 def stress(references: list[str] | None, seeds: int, progress: Reporter = Reporter()) -> tuple[list[Spread], list[str]]:
     """Draw each problem's parameters with `seeds` seeds: every draw must meet the problem's
-    conditions and give a key equal to `derive solve` at those parameters."""
+    conditions and give a key equal to `derive solve` at those parameters, and a chain of states
+    must simulate to its closed forms at it (derive.chain_simulation)."""
     import random
 
     from derive import report, worksheets
@@ -121,6 +122,9 @@ def stress(references: list[str] | None, seeds: int, progress: Reporter = Report
                 failures.append(str(error))
                 break
             on_bound += any(q.range is not None and draw[n] in q.range for n, q in p.parameters.items())
+            if solution.scene.states:  # the chain simulated at the variant's values, as a sheet gives it
+                chain = chain_simulation.simulate(solution, worksheets.si_values(p, draw))
+                failures += [f"{p.id} seed {seed}: chain simulation: {note}" for note in chain.notes]
             item = worksheets._ProblemVariants(p, solution, [draw])
             key = item.answers(draw)
             given = p.values({n: str(draw[n]) for n, q in p.parameters.items() if q.range is not None})

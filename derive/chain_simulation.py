@@ -34,6 +34,7 @@ import numpy as np
 import sympy as sp
 
 from derive import numeric
+from derive.crosschecks import sample_points
 from derive.errors import EngineLimit
 from derive.mechanics import integrated_motion
 from derive.mechanics import states as state_motion
@@ -48,13 +49,15 @@ ANSWER_TOLERANCE = 1e-6
 AFTER = 1.0
 
 
-def simulate(solution) -> SimulationReport:
-    """Simulate the chain of states of a Solution's scene (see the module)."""
+def simulate(solution, variant: dict[sp.Symbol, sp.Expr] | None = None) -> SimulationReport:
+    """Simulate the chain of states of a Solution's scene (see the module), at a variant's SI
+    parameter values (`variant`: a sheet's draw, which meets every condition) or by default at a
+    point of the ranges where the motion gets to every state."""
     report = SimulationReport()
     scene = solution.scene
     if not scene.states:
         return report
-    values = _point(solution)
+    values = _point(solution, variant)
     carried: dict[str, dict] = {}  # each state as simulated: every coordinate and velocity, sympy Floats
     took: dict[str, float] = {}
     for name, state in scene.states.items():
@@ -96,8 +99,9 @@ def simulate(solution) -> SimulationReport:
     return report
 
 
-def _point(solution) -> dict[sp.Symbol, sp.Expr]:
-    """Parameter values where the motion gets to every state of the chain."""
+def _point(solution, variant: dict | None) -> dict[sp.Symbol, sp.Expr]:
+    """Parameter values where the motion gets to every state of the chain: the variant's, with
+    sizes the problem leaves open at sample values."""
     exprs, unknowns = [], set()
     for name, state in solution.scene.states.items():
         exprs += solution.states[name].values.values()
@@ -107,7 +111,10 @@ def _point(solution) -> dict[sp.Symbol, sp.Expr]:
         if not state.rates and not state.event:
             exprs.append(solution._duration(name)[0])
     exprs += [solution.expressions[n] for n, a in solution.problem.asks.items() if a.state is not None]
-    return solution.reaching_point(exprs, unknowns, next(reversed(solution.scene.states)))
+    if variant is None:
+        return solution.reaching_point(exprs, unknowns, next(reversed(solution.scene.states)))
+    symbols = set().union(*(e.free_symbols for e in exprs)) - solution.coordinates.state - unknowns
+    return {**sample_points(solution.problem, sp.Add(*symbols), count=1)[0], **variant}
 
 
 def _gripping(state) -> bool:

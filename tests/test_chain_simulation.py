@@ -151,3 +151,58 @@ def test_check_prints_the_chain_simulated():
     done = run_derive("check", "skid_to_roll")
     assert done.returncode == 0, done.stdout + done.stderr
     assert "ok: state rolling, t, d, V, dE, after rolling" in done.stdout
+
+
+def _wheel_bounce_then_turn(tmp_path) -> Path:
+    """A ball bounces off the rim of a wheel on its axle with friction, and the wheel turns a
+    quarter: the bounce grips or slides by the variant (mu in [0.1, 0.9]), the turn after it
+    derived where it grips, as at the middle of the ranges."""
+    from test_impacts import WHEEL  # the scene of the impacts' tests
+
+    text = WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e, friction: {static: mu}}").replace(
+        "  e: {", "  mu: {meaning: coefficient of friction at the rim, unit: 1, range: [0.1, 0.9], sig_figs: 2}\n  e: {"
+    ).replace("restitution: e, friction: {static: mu}}}\n",
+              "restitution: e, friction: {static: mu}}}\n    turned: {from: bounced, when: {wheel.angle: -pi/2}}\n").replace(
+        "ask:\n", "ask:\n  t: {meaning: time to turn a quarter, of: time, in: turned, unit: s}\n")
+    path = tmp_path / "ball_off_wheel.yaml"
+    path.write_text(text)
+    return path
+
+
+def test_a_sheet_redraws_the_variants_whose_bounce_takes_another_regime_and_each_it_keeps_simulates(tmp_path):
+    """Issue 12: a chain whose regime after a bounce depends on the variant. A sheet keeps only
+    variants where the bounce grips, as the motion after it was derived; a sliding one is refused
+    with the reason, naming the bounce and the state; and each variant kept simulates (the
+    chain at the variant's own values, as derive check --seeds runs it)."""
+    import random
+
+    from derive import worksheets
+    from derive.problem import load as load_problem
+
+    p = load_problem(str(_wheel_bounce_then_turn(tmp_path)))
+    solution = Solution(p)
+    seeds = range(8)
+    first = [worksheets.si_values(p, worksheets.draw(p, random.Random(f"{seed}/wheel"))) for seed in seeds]
+    assert any(solution.impact_regime_at("bounced", values) != "grips" for values in first)  # some are redrawn
+    draws = worksheets.valid_draws(p, solution, [random.Random(f"{seed}/wheel") for seed in seeds])
+    for draw in draws:
+        variant = worksheets.si_values(p, draw)
+        assert solution.impact_regime_at("bounced", variant) == "grips"
+        report = chain_simulation.simulate(solution, variant)
+        assert report.passed and "state turned" in report.compared and "t" in report.compared, report.notes
+    sliding = {**worksheets.si_values(p, draws[0]), next(q.symbol for n, q in p.parameters.items() if n == "mu"):
+               sp.Rational(1, 10)}
+    assert solution.impact_regime_at("bounced", sliding).startswith("slides")
+    assert solution.violated(sliding).startswith("the bounce bounced slides (friction along -t) at these values, "
+                                                 "and the motion after it to the state turned is derived where it grips")
+
+
+def test_check_seeds_simulates_the_chain_at_every_draw(monkeypatch):
+    from derive import audit
+
+    calls = []
+    simulate = chain_simulation.simulate
+    monkeypatch.setattr(chain_simulation, "simulate", lambda solution, variant=None: calls.append(variant) or
+                        simulate(solution, variant))
+    _, failures = audit.stress(["skid_to_roll"], 3)
+    assert not failures and len(calls) == 3 and all(calls)
