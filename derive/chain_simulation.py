@@ -81,11 +81,11 @@ def simulate(solution, variant: dict[sp.Symbol, sp.Expr] | None = None) -> Simul
             report.unchecked.append((f"the state {name}", str(error)))
             continue
         if name in took:
-            expected = float(numeric.evaluate(solution._duration(name)[0], values, 12))
+            expected = _float(solution._duration(name)[0], values)
             if abs(took[name] - expected) > TOLERANCE * (1 + expected):
                 report.fail(f"{name}: the motion takes {took[name]:.10g} s simulated, {expected:.10g} s by the closed form")
-        worst = max(abs(float(carried[name][k]) - _float(v, values)) / (1 + abs(_float(v, values)))
-                    for k, v in closed.items())
+        expected = {k: _float(v, values) for k, v in closed.items()}
+        worst = max(abs(float(carried[name][k]) - v) / (1 + abs(v)) for k, v in expected.items())
         if worst > TOLERANCE:
             report.fail(f"{name}: the simulated state and the closed form differ by {worst:.2e}")
         report.compared.append(f"state {name}")
@@ -105,7 +105,7 @@ def _point(solution, variant: dict | None) -> dict[sp.Symbol, sp.Expr]:
     exprs, unknowns = [], set()
     for name, state in solution.scene.states.items():
         exprs += solution.states[name].values.values()
-        derivation = solution.derivations_in(state.start if _gripping(state) else name)["newton_euler"]
+        derivation = solution.derivations_to(name)["newton_euler"]
         unknowns |= set(derivation.unknowns)
         exprs += [e.lhs - e.rhs for e in derivation.equations]
         if not state.rates and not state.event:
@@ -115,10 +115,6 @@ def _point(solution, variant: dict | None) -> dict[sp.Symbol, sp.Expr]:
         return solution.reaching_point(exprs, unknowns, next(reversed(solution.scene.states)))
     symbols = set().union(*(e.free_symbols for e in exprs)) - solution.coordinates.state - unknowns
     return {**sample_points(solution.problem, sp.Add(*symbols), count=1)[0], **variant}
-
-
-def _gripping(state) -> bool:
-    return state.until is not None and state.until[0] == "grips"
 
 
 def _number(expr: sp.Expr, values: dict) -> sp.Float:
@@ -134,10 +130,10 @@ def _segment(solution, name: str, start: dict | None, values: dict) -> tuple[flo
     """The state `name` reached by Newton–Euler's motion of the scene before it, integrated from
     the simulated state `start` (None: the placement at rest): (the time, the state)."""
     state, coords = solution.scene.states[name], solution.coordinates
-    newton_euler = solution.derivations_in(state.start if _gripping(state) else name)["newton_euler"]
+    newton_euler = solution.derivations_to(name)["newton_euler"]
     if start is None:
         start = {k: sp.Float(0) for k in state_motion.rest(coords)}
-    horizon = 2 * float(numeric.evaluate(solution._duration(name)[0], values, 12)) + 1
+    horizon = 2 * _float(solution._duration(name)[0], values) + 1
     found = integrated_motion.integrate_to(newton_euler, coords, values, solution.states[name],
                                            solution._condition(state), horizon, start)
     if found is None:
@@ -219,7 +215,7 @@ def _last_links(solution) -> list[str]:
     goes on in a scene of its own (after a force falls to zero it would be another regime, not
     modelled; after a coordinate's value or a turning point, the same motion)."""
     starts = {s.start for s in solution.scene.states.values()}
-    return [name for name, s in solution.scene.states.items() if name not in starts and (s.event or _gripping(s))]
+    return [name for name, s in solution.scene.states.items() if name not in starts and (s.event or solution.grips_in(name))]
 
 
 def _after(solution, report: SimulationReport, name: str, state: dict, values: dict) -> None:

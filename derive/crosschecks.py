@@ -202,8 +202,7 @@ class CrossChecks:
                 (self._move_check if state.event.kind in ("move", "turn") else self._impact_check)(name)
                 impacts += 1
                 continue
-            gripping = state.until is not None and state.until[0] == "grips"  # the motion: with the clutch slipping
-            newton_euler = self.derivations_in(state.start if gripping else name)["newton_euler"]
+            newton_euler = self.derivations_to(name)["newton_euler"]  # to a grip: with the part slipping
             reached = self.states[name]
             start = reached.path.start if reached.path else self.states[state.start].values
             time = self._duration(name)[0]

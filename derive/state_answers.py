@@ -334,6 +334,16 @@ class StateAnswers:
         """Each route's derivation of the scene in a state (see scene_in)."""
         return self._derivations_with(self._chain.joints[name] if name else ())
 
+    def grips_in(self, name: str) -> bool:
+        """Whether the state `name` is where a slipping part grips (`when: {grips: ...}`)."""
+        until = self.scene.states[name].until
+        return until is not None and until[0] == "grips"
+
+    def derivations_to(self, name: str) -> dict:
+        """Each route's derivation of the motion that gets to the state `name`: the scene of the
+        state it starts from where the state is a grip (the part slipping on the way), else its own."""
+        return self.derivations_in(self.scene.states[name].start if self.grips_in(name) else name)
+
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
     def _derivations_with(self, joints: tuple) -> dict:
         if not joints:
