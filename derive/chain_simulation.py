@@ -36,7 +36,7 @@ import sympy as sp
 from derive import numeric
 from derive.crosschecks import sample_points
 from derive.errors import EngineLimit
-from derive.mechanics import integrated_motion
+from derive.mechanics import integrated_motion, moves
 from derive.mechanics import states as state_motion
 from derive.scene import RATE_KINDS
 from derive.simulate import SimulationReport, hold
@@ -77,7 +77,9 @@ def simulate(solution, variant: dict[sp.Symbol, sp.Expr] | None = None) -> Simul
                     report.fail(f"{name}: Newton–Euler's motion from the state before does not get there")
                     return report
                 took[name], carried[name] = found
-        except (EngineLimit, np.linalg.LinAlgError) as error:  # said by name: never a silent pass
+        except (EngineLimit, state_motion.StateLimit, moves.MoveLimit, np.linalg.LinAlgError) as error:
+            # an engine limit (an impact or a move derive cannot solve at these velocities, a
+            # singular system on the way): said by name, with every state and answer after it
             report.unchecked.append((f"the state {name}", str(error)))
             continue
         if name in took:

@@ -10,6 +10,7 @@ import sympy as sp
 from conftest import run_derive
 from derive import chain_simulation, library
 from derive.answers import Solution
+from derive.mechanics import states
 from derive.problem import load
 
 TEXTBOOK = Path(__file__).parent / "textbook" / "states"
@@ -207,3 +208,18 @@ def test_check_seeds_simulates_the_chain_at_every_draw(monkeypatch):
                         simulate(solution, variant))
     _, failures = audit.stress(["skid_to_roll"], 3)
     assert not failures and len(calls) == 3 and all(calls)
+
+
+def test_a_link_the_engine_cannot_simulate_is_named_with_every_state_and_answer_after_it(monkeypatch):
+    solution = Solution(load("tests/textbook/states/rod_ballistic_pendulum.yaml"))
+    solution.states  # the closed forms
+
+    def cannot(*args):
+        raise states.StateLimit("solve this impact")
+    monkeypatch.setattr(solution, "_impact", cannot)
+    report = chain_simulation.simulate(solution)
+    assert report.passed and "state struck" not in report.compared
+    said = dict(report.unchecked)
+    assert said["the state struck"] == "solve this impact"
+    assert said["the state highest"] == "the state struck it starts from was not simulated"
+    assert said["omega"] == "its state struck was not simulated" and said["angle"].startswith("its state highest")
