@@ -223,3 +223,16 @@ def test_a_link_the_engine_cannot_simulate_is_named_with_every_state_and_answer_
     assert said["the state struck"] == "solve this impact"
     assert said["the state highest"] == "the state struck it starts from was not simulated"
     assert said["omega"] == "its state struck was not simulated" and said["angle"].startswith("its state highest")
+
+
+@pytest.mark.parametrize("name", ["rod_swings_down", "bowling_ball_skids"])
+def test_an_acceleration_asked_in_a_state_is_simulated_there_not_at_release(name):
+    """The rod's angular acceleration at its lowest point is zero, the skidding ball's while it skids
+    -mu g: derive check compared them with the motion released from rest at the placement (-3 g/(2 L)
+    and 0) and failed; now the chain simulation reads them in their states, and the check passes."""
+    from derive import audit
+
+    (row,) = audit.audit([str(TEXTBOOK / f"{name}.yaml")])
+    assert row.passed, row.failure
+    asked = "alpha" if name == "rod_swings_down" else "a"
+    assert asked in row.simulation.removeprefix("ok: ").split(", ")
