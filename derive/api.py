@@ -11,7 +11,7 @@ Result(string_wrapped_disk: a = -4.905 m/s^2, alpha = -16.35 rad/s^2, T = 9.810 
 >>> result["a"]
 Answer(a = -2*g*m/(M + 2*m) = -4.905 m/s^2)
 >>> result["a"]._repr_latex_()
-'$$a = - \\frac{2 g m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}$$'
+'$$a = - g \\frac{2 m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}$$'
 >>> result.at({"m": 1})["T"].value  # the same derivation, m changed
 '6.540'
 """

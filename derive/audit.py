@@ -14,7 +14,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 
-from derive import chain_simulation, library, problem, simulate
+from derive import chain_simulation, library, problem, simulate, simulate_solid
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.scene import DYNAMIC_KINDS
@@ -31,6 +31,7 @@ class Row:
     seconds: float
     passed: bool
     failure: str = ""
+    figures: tuple[str, ...] = ()  # what was simulated, each with its relative difference
 
 
 def audit(references: list[str] | None = None, progress: Reporter = Reporter()) -> list[Row]:
@@ -55,15 +56,21 @@ def _audit_one(reference: str, begin) -> Row:
         checks = solution.checks()
         row.dimensions = "ok"
         row.routes = ", ".join(c.name for c in checks if c.name != "dimensions") or "-"
-        if {a.quantity.kind for a in p.asks.values()} & DYNAMIC_KINDS:
-            reports = [simulate.check(solution)] + ([chain_simulation.simulate(solution)] if solution.scene.states else [])
+        kinds = {a.quantity.kind for a in p.asks.values()}
+        moving = bool(kinds & DYNAMIC_KINDS)
+        reports = ([simulate.check(solution)] if moving else []) + (
+            [chain_simulation.simulate(solution)] if moving and solution.scene.states else []) + (
+            [simulate_solid.check(solution)] if kinds & simulate_solid.KINDS else [])
+        if reports:
             passed = all(r.passed for r in reports)
-            row.simulation = ("ok: " + ", ".join(n for r in reports for n in r.compared)) if passed else "FAILED"
+            compared = ", ".join(dict.fromkeys(n for r in reports for n in r.compared))
+            row.simulation = ("ok: " + compared if compared else "-") if passed else "FAILED"
             unchecked: dict[str, list[str]] = {}
             for what, why in (u for r in reports for u in r.unchecked):
                 unchecked.setdefault(why, []).append(what)
             if unchecked:
                 row.simulation += "; not simulated: " + "; ".join(f"{', '.join(w)} ({why})" for why, w in unchecked.items())
+            row.figures = tuple(f for r in reports for f in r.figures)
             if not passed:
                 row.passed, row.failure = False, "; ".join(n for r in reports for n in r.notes)
     except (CheckFailure, InputError) as error:
@@ -81,6 +88,9 @@ def table(rows: list[Row]) -> str:
              "  ".join("-" * w for w in widths)]
     lines += ["  ".join(c.ljust(w) for c, w in zip(b, widths)) for b in body]
     failed = [r for r in rows if not r.passed]
+    figures = [f"  {r.id}: {f}" for r in rows for f in r.figures]
+    if figures:
+        lines += ["", "simulated in 3D (derive.simulate_solid):", *figures]
     lines.append("")
     lines.append(f"{len(rows) - len(failed)} passed, {len(failed)} failed")
     lines += [f"FAILED {r.id}: {r.failure}" for r in failed]

@@ -778,7 +778,10 @@ def engines(say, note=None, quick: bool = False, scenes: list[str] | None = None
     agreeing = [r for r in rows if r["agrees"]]
     if agreeing:
         ours, theirs = (sum(r[who]["seconds"] for r in agreeing) for who in ("derive", "anchor"))
-        say(f"  {len(agreeing)} agreeing scenes: derive {ours:.1f} s, anchor {theirs:.1f} s, {ours / theirs:.1f}x")
+        routes = sum(r["derive"][route] for r in agreeing for route in ("lagrange", "newton_euler"))
+        say(f"  {len(agreeing)} agreeing scenes: derive {ours:.1f} s, anchor {theirs:.1f} s, {ours / theirs:.1f}x; "
+            f"derive's two routes alone (Lagrange + N-E, the issue's target of 1.5x the anchor's one route) "
+            f"{routes:.1f} s, {routes / theirs:.1f}x")
     say(chain_table(chain))
     growth = _growth_line(chain)
     if growth:

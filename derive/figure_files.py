@@ -45,12 +45,14 @@ SECONDS = 60  # for one pdftocairo run (a figure takes milliseconds)
 
 @dataclass(frozen=True)
 class Image:
-    """One figure: its name (the problem's id), its SVG and PNG bytes and its printed width."""
+    """One figure: its name (the problem's id, or a free-body diagram's `free_body_name`), its SVG
+    and PNG bytes, its printed width and what it shows in words (an <img>'s alt; "": the page says)."""
 
     name: str
     svg: bytes
     png: bytes
     width: float  # points (1/72 inch)
+    alt: str = ""
 
     def file(self, kind: str) -> str:
         return f"{self.name}.{kind}"
@@ -69,6 +71,15 @@ class Image:
     def data_uri(self) -> str:
         """The PNG as a data URI: pandoc embeds it in a DOCX without reading a file (--sandbox)."""
         return "data:image/png;base64," + base64.b64encode(self.png).decode("ascii")
+
+
+def free_body_name(problem: str, body: str) -> str:
+    """The name of a body's free-body diagram, unlike any problem's id (which holds no `-`).
+
+    >>> free_body_name("string_wrapped_disk", "disk")
+    'string_wrapped_disk-free-body-disk'
+    """
+    return f"{problem}-free-body-{body}"
 
 
 def document(figures: Sequence[str]) -> str:

@@ -10,7 +10,9 @@ derived from mistaken set-ups, multiple choice, each wrong choice's feedback nam
 gives it. Each question's general feedback is the worked
 solution of its variant (the solutions sheet's own text, as HTML with MathJax math). A problem's
 figure (a PNG, derive.figure_files) travels inside the file: in each Moodle question's text, in the
-Canvas zip once, and is shown below the question at its printed width.
+Canvas zip once, and is shown below the question at its printed width. So does each free-body
+diagram the worked solution shows beside a Newton–Euler balance (`_feedback`), in each Moodle
+question's general feedback and in the Canvas zip once, with its body and forces as its alt text.
 
 The tolerance follows the answer's policy: one unit in the last significant digit shown (the
 default), a percentage (`2%`) or an absolute amount in the answer's unit. Canvas keeps four decimal
@@ -43,11 +45,12 @@ import io
 import random
 import re
 import zipfile
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from decimal import Decimal
 from typing import Mapping
 
+import lxml.html
 from lxml import etree
 from lxml.builder import E, ElementMaker
 
@@ -236,6 +239,36 @@ def _figure(source: str, image: Image, title: str) -> str:
     return etree.tostring(E.p(img), encoding="unicode", method="html")
 
 
+def _feedback(html: str, figures: Mapping[str, Image], source: Callable[[Image], str]) -> tuple[str, list[Image]]:
+    """A worked solution's HTML for an LMS, and the images it shows: each <img> of
+    FOLDER/NAME.png (a free-body diagram, as derive.worksheets writes it for pandoc) shown from
+    `source(image)` of the figure NAME, at its printed width, its alt the figure's words. Each
+    image must be one of `figures`; HTML without an image is returned as it is.
+
+    >>> fbd = Image("p-free-body-disk", b"", b"", 75, "Free-body diagram of the disk: weight M*g.")
+    >>> _feedback('<p>Forces:</p><p><img src="figures/p-free-body-disk.png" alt="image"></p>',
+    ...           {fbd.name: fbd}, lambda image: "@@PLUGINFILE@@/" + image.file("png"))[0]
+    '<p>Forces:</p><p><img src="@@PLUGINFILE@@/p-free-body-disk.png" alt="Free-body diagram of the disk: weight M*g." width="100"></p>'
+    """
+    pieces = lxml.html.fragments_fromstring(html) if "<img" in html else []
+    images = [img for piece in pieces if not isinstance(piece, str) for img in piece.iter("img")]
+    if not images:
+        return html, []
+    by_file = {image.file("png"): image for image in figures.values()}
+    shown = []
+    for img in images:
+        folder, _, name = (img.get("src") or "").partition("/")
+        if folder != FOLDER or name not in by_file:
+            raise ValueError(f"a worked solution shows {img.get('src')!r}, which is none of the build's figures")
+        image = by_file[name]
+        img.attrib.clear()
+        img.set("src", source(image))
+        img.set("alt", image.alt)
+        img.set("width", str(image.pixels))
+        shown += [image] if image not in shown else []
+    return "".join(p if isinstance(p, str) else lxml.html.tostring(p, encoding="unicode") for p in pieces), shown
+
+
 def _xml(root: etree._Element) -> bytes:
     """A whole XML document, UTF-8 with its declaration, indented (the same bytes every build)."""
     return etree.tostring(root, encoding="UTF-8", xml_declaration=True, pretty_print=True)
@@ -327,13 +360,25 @@ def _category(*names: str) -> str:
 # import_files_as_draft stores each <file name=... path=... encoding="base64"> child (after
 # base64_decode) in the question text's file area as path + name, where the text refers to it as
 # @@PLUGINFILE@@/name (the form Moodle's own XML export writes, write_files); the files belong to
-# their question, so each question carries its own copy.
+# their question, so each question carries its own copy. import_multianswer reads <generalfeedback>
+# the same way ("Restore files in generalfeedback": import_text_with_files(question, ['#',
+# 'generalfeedback', 0], ...)), so a free-body diagram is a <file> of the feedback it is shown in.
+# The importer would store an SVG as well (import_files_as_draft base64_decodes any file), but
+# Moodle serves every SVG as a download (lib/filelib.php, send_file and send_stored_file: "Make sure
+# we force download of SVG files", for XSS), so the images are PNG.
+def _file(image: Image) -> etree._Element:
+    """An image as Moodle XML carries it: a base64 <file> at the file area's root, its PNG."""
+    return E.file(base64.b64encode(image.png).decode("ascii"), name=image.file("png"), path="/", encoding="base64")
+
+
 def moodle(items: list[Item], set_id: str, figures: Mapping[str, Image] = {}) -> str:
     """Moodle XML: for each problem its category, `$course$/derive/SET/PROBLEM` (a category
     "question" before the problem's variants: Moodle files the questions after it there), then one
     cloze question per variant with a field per asked quantity, the problem's figure (`figures`,
     by problem id) below its text, and the variant's worked solution as general feedback. A quiz's
-    "random question" from a problem's category gives each student one variant of it."""
+    "random question" from a problem's category gives each student one variant of it. The feedback
+    shows each free-body diagram of the solution (figures/NAME.png: `figures` by name) from a <file>
+    of its own."""
     problems: dict[str, dict[int, list[Item]]] = {}
     scales = {question: _exponent(group, "moodle") for question, group in _questions(items).items()}
     for item in items:
@@ -349,12 +394,12 @@ def moodle(items: list[Item], set_id: str, figures: Mapping[str, Image] = {}) ->
             fields = [f"{_literal_braces(_label(i))} = {_cloze(i, scales[problem, i.name])}" for i in group]
             html = _references(_paragraphs(_mathjax(_literal_braces(group[0].question))) + shown
                                + _paragraphs(*fields))
-            files = [E.file(base64.b64encode(image.png).decode("ascii"), name=image.file("png"), path="/",
-                            encoding="base64")] if image else []  # an element of its own in each question
+            files = [_file(image)] if image else []  # an element of its own in each question
+            feedback, diagrams = _feedback(group[0].solution, figures, lambda diagram: f"@@PLUGINFILE@@/{diagram.file('png')}")
             quiz.append(E.question(
                 E.name(E.text(f"{problem} variant {variant}")),
                 E.questiontext(E.text(html), *files, format="html"),
-                E.generalfeedback(E.text(group[0].solution), format="html"),
+                E.generalfeedback(E.text(feedback), *map(_file, diagrams), format="html"),
                 type="cloze"))
     return _xml(quiz).decode()
 
@@ -440,11 +485,12 @@ def _multiple_choice(item: Item, k: int) -> tuple[str, str, etree._Element, etre
             {f"choice{n}": why for n, (_, _, why) in enumerate(options) if why})
 
 
-def _qti_item(item: Item, k: int, ident: str, figure: str = "") -> etree._Element:
+def _qti_item(item: Item, k: int, ident: str, figure: str = "", solution: str = "") -> etree._Element:
     """A Canvas item: its question type and points, the question's HTML (with the problem's
     `figure`, HTML), the response (numerical in the question's unit 10^-k UNIT), its scoring and
-    the worked solution as general feedback; a wrong choice's feedback (`{choice}_fb`, as text2qti
-    writes it and Canvas's assessment_item_converter reads it) names its mistake."""
+    the worked solution (`solution`, HTML: the item's, its images resolved) as general feedback; a
+    wrong choice's feedback (`{choice}_fb`, as text2qti writes it and Canvas's
+    assessment_item_converter reads it) names its mistake."""
     kind, prompt, response, condition, mistaken = _multiple_choice(item, k) if item.wrong else _numerical(item, k)
     text = _paragraphs(_mathjax(item.question)) + figure + _paragraphs(prompt)
     scoring = [QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
@@ -456,11 +502,11 @@ def _qti_item(item: Item, k: int, ident: str, figure: str = "") -> etree._Elemen
                                             {"continue": "Yes"}))
         feedback.append(QTI.itemfeedback(QTI.flow_mat(QTI.material(QTI.mattext(why, texttype="text/plain"))),
                                          ident=f"{choice}_fb"))
-    if item.solution:
+    if solution:
         scoring.insert(0, QTI.respcondition(QTI.conditionvar(QTI.other()),
                                             QTI.displayfeedback(feedbacktype="Response", linkrefid="general_fb"),
                                             {"continue": "Yes"}))
-        feedback.append(QTI.itemfeedback(QTI.flow_mat(QTI.material(QTI.mattext(item.solution, texttype="text/html"))),
+        feedback.append(QTI.itemfeedback(QTI.flow_mat(QTI.material(QTI.mattext(solution, texttype="text/html"))),
                                          ident="general_fb"))
     return QTI.item(
         QTI.itemmetadata(QTI.qtimetadata(_field("question_type", kind), _field("points_possible", str(POINTS)))),
@@ -475,7 +521,8 @@ def qti(items: list[Item], title: str, set_id: str, seed: int, figures: Mapping[
     """A QTI 1.2 zip for Canvas: a graded quiz with a question group per problem and asked
     quantity that picks one of its variants (numerical or multiple-choice items, worth POINTS
     each), its metadata (assessment_meta.xml), the problems' figures (`figures`, by problem id;
-    figures/ID.png) and imsmanifest.xml listing them all.
+    figures/ID.png) and the free-body diagrams the feedback shows (figures/NAME.png, by name), and
+    imsmanifest.xml listing them all.
 
     Canvas picks each group's item on its own, so a problem that asks for several quantities is one
     group per quantity: a Canvas item holds one numeric answer with a tolerance."""
@@ -485,12 +532,18 @@ def qti(items: list[Item], title: str, set_id: str, seed: int, figures: Mapping[
     paths = {problem: f"{FOLDER}/{figures[problem].file('png')}" for problem in titles if problem in figures}
     shown = {problem: _figure(f"$IMS-CC-FILEBASE$/{path}", figures[problem], titles[problem])
              for problem, path in paths.items()}
+    solutions: dict[str, str] = {}  # each worked solution's HTML for Canvas, its diagrams' paths added to `paths`
+    for item in items:
+        if item.solution not in solutions:
+            solutions[item.solution], diagrams = _feedback(item.solution, figures,
+                                                           lambda image: f"$IMS-CC-FILEBASE$/{FOLDER}/{image.file('png')}")
+            paths.update({image.name: f"{FOLDER}/{image.file('png')}" for image in diagrams})
     sections = [
         QTI.section(
             QTI.selection_ordering(QTI.selection(QTI.selection_number("1"),
                                                  QTI.selection_extension(QTI.points_per_item(str(POINTS))))),
-            *(_qti_item(i, k, identifier("item", set_id, seed, problem, i.variant, name), shown.get(problem, ""))
-              for i in group),
+            *(_qti_item(i, k, identifier("item", set_id, seed, problem, i.variant, name), shown.get(problem, ""),
+                        solutions[i.solution]) for i in group),
             ident=identifier("group", set_id, seed, problem, name),
             title=f"{group[0].title}: {group[0].meaning}"[:GROUP_TITLE_LIMIT])
         for (problem, name), group in groups.items() for k in [_exponent(group, "qti")]]
@@ -515,13 +568,13 @@ def qti(items: list[Item], title: str, set_id: str, seed: int, figures: Mapping[
             MANIFEST.resource(MANIFEST.file(href=assessment_path), MANIFEST.dependency(identifierref=meta_id),
                               identifier=quiz, type=QTI_RESOURCE),
             MANIFEST.resource(MANIFEST.file(href=meta_path), identifier=meta_id, type=META_RESOURCE, href=meta_path),
-            *(MANIFEST.resource(MANIFEST.file(href=path), identifier=identifier("figure", set_id, seed, problem),
-                                type=FIGURE_RESOURCE, href=path) for problem, path in paths.items())),
+            *(MANIFEST.resource(MANIFEST.file(href=path), identifier=identifier("figure", set_id, seed, name),
+                                type=FIGURE_RESOURCE, href=path) for name, path in paths.items())),
         identifier=identifier("manifest", set_id, seed))
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w") as archive:  # stored, as ZipInfo entries are by default
         files = [("imsmanifest.xml", _xml(manifest)), (assessment_path, _xml(assessment)), (meta_path, _xml(meta)),
-                 *((path, figures[problem].png) for problem, path in paths.items())]
+                 *((path, figures[name].png) for name, path in paths.items())]
         for name, data in files:
             info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))  # the same bytes every build
             archive.writestr(info, data)

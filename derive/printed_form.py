@@ -4,8 +4,9 @@ sympy's canonical forms are not the notes': it keeps cos(θ)·tan(θ) where sin(
 the root of a product of positive symbols into one root per symbol, 2π √(I + M R²)/(√M √R √g), and
 leaves sin²(α)/|sin(α)|. `textbook` rewrites a product's sines, cosines and tangents of one angle
 as few functions as it can (cos·tan as sin; sin/cos as tan, where that leaves no fraction of them),
-x²/|x| of a real x as |x|, and the square roots of a product or a quotient as one root (rebuilt
-unevaluated, so that sympy does not split it again).
+x²/|x| of a real x as |x|, the square roots of a product or a quotient as one root (rebuilt
+unevaluated, so that sympy does not split it again), and a product over a sum that holds one of the
+sum's terms as a scale times that term's share of the sum, g·2m/(M + 2m) as the notes write it.
 
 >>> theta, M, R, g, I = sp.symbols("theta M R g I", positive=True)
 >>> textbook(sp.cos(theta) * sp.tan(theta)), textbook(g * sp.sin(theta) / sp.cos(theta))
@@ -26,7 +27,7 @@ def textbook(expression):
     """`expression` in the textbook's grouping (a number or a non-sympy object as it is)."""
     if not isinstance(expression, sp.Basic):
         return expression
-    return collected_roots(_absolute(_trigonometric(expression)))
+    return collected_roots(shares(_absolute(_trigonometric(expression))))
 
 
 def _trigonometric(expression: sp.Basic) -> sp.Basic:
@@ -62,6 +63,48 @@ def _trigonometric(expression: sp.Basic) -> sp.Basic:
         return sp.Mul(*rest)
 
     return expression.replace(trigonometric_product, rewritten)
+
+
+def shares(expression: sp.Basic) -> sp.Basic:
+    r"""A product over a sum, c X t/(t + u + ...), where exactly one term t of the sum divides
+    the numerator with a whole number c left, as c X times t's share of the sum, t/(t + u + ...):
+    a dimensionless ratio beside the scale, as the notes write a = -g 2m/(M + 2m) and
+    T = m g M/(M + 2m). The share is kept unevaluated (sympy would merge it back); a numerator
+    that holds two of the terms (m1 m2/(m1 + m2)) or none is left as it is.
+
+    >>> g, m, M, I, R = sp.symbols("g m M I R", positive=True)
+    >>> sp.latex(shares(-2*g*m/(M + 2*m))), sp.latex(shares(g*m*M/(M + 2*m)))
+    ('- g \\frac{2 m}{M + 2 m}', 'g m \\frac{M}{M + 2 m}')
+    >>> sp.latex(shares(-2*g*m/(R*(M + 2*m)))), shares(m*M/(m + M))
+    ('- \\frac{g}{R} \\frac{2 m}{M + 2 m}', M*m/(M + m))
+    """
+    def over_a_sum(e) -> bool:
+        return isinstance(e, sp.Mul) and _share(e) is not None
+
+    def rewritten(product: sp.Mul) -> sp.Expr:
+        term, total = _share(product)
+        share = term / total
+        return sp.Mul(product / share, sp.UnevaluatedExpr(share), evaluate=False)
+
+    return expression.replace(over_a_sum, rewritten)
+
+
+def _share(product: sp.Mul) -> tuple[sp.Expr, sp.Add] | None:
+    """(t, the sum) for `shares`, or None."""
+    sums = [f.base for f in product.args if isinstance(f, sp.Pow) and f.exp == -1 and isinstance(f.base, sp.Add)]
+    if len(sums) != 1:
+        return None
+    (total,) = sums
+    numerator = sp.Mul(*(f for f in product.args if not (isinstance(f, sp.Pow) and f.exp.is_negative)))
+    found = []
+    for term in total.args:
+        left = numerator / term
+        coefficient, rest = left.as_coeff_Mul()
+        if term.is_number or term.as_coeff_Mul()[0] < 0 or not coefficient.is_Integer or rest == 1 and abs(coefficient) == 1:
+            continue
+        if all(not (isinstance(f, sp.Pow) and f.exp.is_negative) for f in sp.Mul.make_args(rest)):
+            found.append(term)
+    return (found[0], total) if len(found) == 1 else None
 
 
 def _trig_power(factor):

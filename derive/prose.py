@@ -55,3 +55,12 @@ class Sentence:
                 return sp.Eq(change(piece.lhs), change(piece.rhs), evaluate=False)
             return change(piece)
         return replace(self, pieces=tuple(p if isinstance(p, str) else changed(p) for p in self.pieces))
+
+
+def capital(words: str) -> str:
+    """`words` opening a sentence: the first letter a capital, the rest as it is (a name keeps its case).
+
+    >>> capital("the ball's contact with the Dome")
+    "The ball's contact with the Dome"
+    """
+    return words[:1].upper() + words[1:]

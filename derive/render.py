@@ -69,8 +69,8 @@ def latex_of(expression) -> str:
     >>> latex_of(sp.Eq(sp.Symbol("Omega_fast"), sp.Symbol("M") * sp.Symbol("Rcm")))
     '\\Omega_{\\mathrm{fast}} = M R_{\\mathrm{cm}}'
     """
-    named = {s: symbol_latex(s.name) for s in getattr(expression, "free_symbols", ())
-             if isinstance(s, sp.Symbol) and not isinstance(s, sp.Dummy)}  # a Dummy keeps sympy's own mark
+    named = {s: symbol_latex(s.name) for s in (expression.atoms(sp.Symbol) if isinstance(expression, sp.Basic) else ())
+             if not isinstance(s, sp.Dummy)}  # bound ones too (an integral's dx); a Dummy keeps sympy's own mark
     return sp.latex(printed_form.textbook(expression), symbol_names=named)
 
 

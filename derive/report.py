@@ -215,7 +215,7 @@ def as_latex(result: dict) -> str:
             if step["sentences"]:
                 lines.append(" ".join(s["latex"] for s in step["sentences"]))
                 lines.append("")
-            lines.append(f"{step['text']}:")
+            lines.append(step["text"] + (":" if step["latex"] else "" if step["text"].endswith(".") else "."))
             if step["latex"]:
                 lines.append("\\begin{align*}")
                 lines.append(" \\\\\n".join(aligned(eq) for eq in step["latex"]))

@@ -38,6 +38,7 @@ class SimulationReport:
     passed: bool = True
     compared: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    figures: list[str] = field(default_factory=list)  # what was simulated, each with its relative difference
     #: (what, why) the simulation does not reach: said by name, never silently skipped
     unchecked: list[tuple[str, str]] = field(default_factory=list)
 

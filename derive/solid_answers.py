@@ -27,10 +27,15 @@ class SolidAnswers:
         body, held = self.scene.bodies[name], self.scene.bearings[name]
         parts = body.composite.parts if body.composite is not None else None
         tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        g = self.scene.gravity.g if self.scene.gravity is not None else sp.Integer(0)
-        gravity = (sp.Integer(0), -g * sp.cos(held.incline), -g * sp.sin(held.incline))  # the shaft is N.z
         return bearings.motion(tensor, held.rate, held.tilt, held.roll, bearings.own_axis(body.shape), route,
-                               body.mass, held.through, gravity, held.apart, held.thrust)
+                               body.mass, held.through, self.shaft_gravity(name), held.apart, held.thrust)
+
+    def shaft_gravity(self, name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+        """g's vector in the frame of the shaft of a body in bearings (the shaft is N.z, inclined by
+        `incline` above the horizontal)."""
+        held = self.scene.bearings[name]
+        g = self.scene.gravity.g if self.scene.gravity is not None else sp.Integer(0)
+        return (sp.Integer(0), -g * sp.cos(held.incline), -g * sp.sin(held.incline))
 
     def _bearings(self, q: Quantity, route: str) -> sp.Expr:
         held = self.scene.bearings[q.target]

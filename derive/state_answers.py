@@ -30,7 +30,12 @@ from derive.parts.slipping_clutch import SlippingClutch
 from derive.parts.weld import Weld
 from derive.parts.places import extent
 from derive.parts.surfaces import Plane
+from derive.prose import Sentence, capital
 from derive.scene import Quantity
+
+
+#: How a heading names each route (the routes in a state that an event changed the scene of).
+ROUTES = {"lagrange": "Lagrange's method", "newton_euler": "Newton–Euler"}
 
 
 @dataclass(frozen=True)
@@ -108,7 +113,7 @@ class StateAnswers:
                         made[name] = moves.moved_pin(self._scene_with(joints[name]), state.event, state.event.place)
                         joints[name] = _in_place(joints[name], made[name])
                         solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
-                        reached = self._after_move(name, result[state.start].values, solved[name])
+                        reached = self._after_move(name, result[state.start].values, solved[name], made[name])
                     elif state.event.kind == "turn":
                         solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name])
@@ -294,8 +299,10 @@ class StateAnswers:
         what = what[event.kind]
         kept = impacts.conserved(scene, self.coordinates, before, values)
         said = scene.constraint(name).sentences("lagrange", self.coordinates)  # the joint it makes, in words
+        said += impacts.said(event, scene.constraint(name), scene, kept is not None)
         steps = (Step(f"The impact: {what}", (), sentences=tuple(said)), *impact.steps, *((kept,) if kept else ()),
-                 Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),)))
+                 Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),),
+                      sentences=(impacts.lost_said(event),)))
         return state_motion.Reached(values, (), steps)
 
     def _move(self, name: str, before: dict, joints: tuple, route: str) -> moves.Moved:
@@ -304,17 +311,29 @@ class StateAnswers:
         return (moves.turn if event.kind == "turn" else moves.move)(self._scene_with(joints), self.coordinates, before,
                                                                    event, route, self._sample)
 
-    def _after_move(self, name: str, before: dict, moved: moves.Moved) -> state_motion.Reached:
-        """The state after a move or a turn, with the kinetic energy the forces that make it add."""
+    def _after_move(self, name: str, before: dict, moved: moves.Moved, pin: Pin | None = None) -> state_motion.Reached:
+        """The state after a move or a turn, with the kinetic energy the forces that make it add; a
+        move's `pin` holds the mover at its new place."""
         event = self.scene.states[name].event
         added = tidy(-impacts.energy_lost(self.dynamics_scene, self.coordinates, before, moved.values))
-        what = (f"The turn: the {event.body} turns through {sp.sstr(event.angle)} relative to the {event.to}"
-                if event.kind == "turn" else
-                f"The move: the {event.body} is carried to {sp.sstr(tuple(event.place))} on the {event.to}")
-        steps = (Step(f"{what} by forces inside the scene (they come in equal and opposite pairs)", ()),
+        if event.kind == "turn":
+            what = f"The turn: the {event.body} turns relative to the {event.to}"
+            said = Sentence((f"The {event.body} turns through ", event.angle, f" relative to the {event.to}, by a couple "
+                             "between the two: equal and opposite, it pushes neither's center, and at the end the "
+                             f"{event.body} is at rest relative to the {event.to} again.",))
+        else:
+            what = f"The move: the {event.body} is carried to a new place on the {event.to}"
+            said = Sentence((f"The {event.body} is carried to ", sp.Tuple(*event.place), f" on the {event.to}, in its "
+                             f"frame, by forces inside the scene: {pin.title} holds it to the {event.to} wherever it is, "
+                             f"and what carries it pushes back on the {event.to} as much.",))
+        steps = (Step(f"{what} by forces inside the scene (they come in equal and opposite pairs)", (), sentences=(said,)),
                  *moved.steps,
                  Step(f"Kinetic energy the {event.kind} adds (the work of the forces that make it)",
-                      (sp.Eq(sp.Symbol("Delta_K"), added),)))
+                      (sp.Eq(sp.Symbol("Delta_K"), added),), sentences=(Sentence((
+                          f"Kinetic energy is not conserved in a {event.kind}: the forces inside the scene that make it "
+                          "do work, which is the change below." if added != 0 else
+                          f"The forces inside the scene that make the {event.kind} do work on the way, but none in all: "
+                          "the kinetic energy after it is the one before.",)),)))
         return state_motion.Reached(moved.values, (), steps)
 
     def scene_in(self, name: str | None):
@@ -370,11 +389,22 @@ class StateAnswers:
                                          f"the slip rate of {name}")
         part = self.dynamics_scene.constraint(name)
         if kind == "slips":
-            return state_motion.Vanishes(self._grip_margin(part), f"the grip of the {part.body} at {name}: "
-                                                                  "mu_s^2 N^2 - f^2")
+            forces = part.unknowns()
+            return state_motion.Vanishes(self._grip_margin(part), f"the grip margin of the {part.body} at {name}", (
+                Sentence((f"The {part.body} grips the {part.surface} while static friction can supply the friction ",
+                          forces["friction"], " it needs, at most ", friction.static_coefficient(part) * forces["normal"],
+                          " in size: while ", self._grip_margin(part), " is not negative.")),
+                Sentence(("Along the way the equations of motion, with the rates energy gives, say how large that is "
+                          f"at each point: the {part.body} starts to slip where it first falls to zero.",))))
         force = part.unknowns()["normal"] if kind == "leaves" else next(iter(part.unknowns().values()))
         what = f"the normal force on the {part.body} at {name}" if kind == "leaves" else f"the tension of {name}"
-        return state_motion.Vanishes(force, what)
+        holds = (f"The {part.body} stays on the {part.surface} while the normal force on it, ", force) \
+            if kind == "leaves" else (f"{capital(part.title)} stays taut while its tension, ", force)
+        ends = f"the {part.body} leaves the {part.surface}" if kind == "leaves" else "it goes slack"
+        return state_motion.Vanishes(force, what, (
+            Sentence((*holds, ", is positive.")),
+            Sentence(("Along the way the equations of motion, with the rates energy gives, say how large it is at "
+                      f"each point: {ends} where it first falls to zero.",))))
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes, a few states
     def in_state(self, route: str, name: str | None) -> Solved:
@@ -603,19 +633,64 @@ class StateAnswers:
                                                              f"{contact.body} starts)"))
         return result
 
+    def state_heading(self, name: str) -> str:
+        """The heading of a state's steps in a worked solution, in words: the start, an event (the
+        impact, move or turn that makes the state, just after the state it happens in), or the
+        segment of motion from the state it starts from to where it ends.
+
+        >>> from derive.problem import load
+        >>> from derive.answers import Solution
+        >>> solution = Solution(load("tests/textbook/states/clutch_disks_brake.yaml"))
+        >>> [solution.state_heading(n) for n in ("spinning", "coupled", "stopped")]  # doctest: +NORMALIZE_WHITESPACE
+        ['The start, spinning: the placement moving at the given rates', 'The impact coupled, just after spinning:
+        the upper and the lower lock together', 'From coupled to stopped: the motion until it stops']
+        """
+        state = self.scene.states[name]
+        if state.rates:
+            return f"The start, {name}: the placement moving at the given rates"
+        event = state.event
+        if event is not None:
+            what = {"stick": f"the {event.body} sticks to the {event.to}",
+                    "lock": f"the {event.body} and the {event.to} lock together",
+                    "bounce": f"the {event.body} bounces off the {event.to}",
+                    "move": f"the {event.body} is carried to a new place on the {event.to}",
+                    "turn": f"the {event.body} turns relative to the {event.to}"}[event.kind]
+            kind = "impact" if event.kind in ("stick", "lock", "bounce") else event.kind
+            return f"The {kind} {name}, just after {state.start}: {what}"
+        start = f"From {state.start} to {name}" if state.start else f"From rest at the placement to {name}"
+        if state.until is None:
+            body, kind, _ = state.when
+            return f"{start}: the motion until the {body}'s {'angle' if kind == 'theta' else kind} gets to its value"
+        kind, part = state.until
+        if kind == "grips":
+            slipping = self._slipping(part)
+            if isinstance(slipping, SlippingClutch):
+                return f"{start}: the motion while the plates of {slipping.title} slip, until they grip"
+            return f"{start}: the motion while the {slipping.body} slides, until it grips"
+        if kind == "stops":
+            return f"{start}: the motion until it stops"
+        part = self.dynamics_scene.constraint(part)
+        if kind == "slack":
+            return f"{start}: the motion until {part.title} goes slack"
+        return f"{start}: the motion until the {part.body} " + ("starts to slip" if kind == "slips" else
+                                                                f"leaves the {part.surface}")
+
     def _state_steps(self, result: dict[str, list[Step]]) -> None:
         """Add to a worked solution's steps, by route, how each state asked is found and the
         routes' solution there."""
         for name in self._on_the_way():
-            result[f"the state {name}"] = list(self.states[name].steps)
-            if any(a.state == name and a.quantity.kind == "time" for a in self.problem.asks.values()):
-                result[f"the state {name}"].append(self._duration(name)[1])
+            heading = self.state_heading(name)
+            result[heading] = list(self.states[name].steps)
+            timed = self._duration(name)[1] if any(a.state == name and a.quantity.kind == "time"
+                                                   for a in self.problem.asks.values()) else None
+            if timed is not None and timed not in result[heading]:  # a grip's time is one of its steps already
+                result[heading].append(timed)
             in_state = self._needed_unknowns(name)
             joints = self._chain.joints[name]
             for route, d in self.derivations_in(name).items() if in_state else ():
                 solved = self.in_state(route, name)  # the answers' own solution there (along a path: by it)
                 if joints:  # the scene after an impact: its own equations
-                    route = f"{route}, with the joint{'s' if len(joints) > 1 else ''} " + \
+                    route = f"{ROUTES[route]}, with the joint{'s' if len(joints) > 1 else ''} " + \
                             ", ".join(j.name for j in joints)
                 result[route] = [*(result.get(route) or d.steps),
                                  Step(f"Solving in the state {name}", tuple(sp.Eq(u, solved[u]) for u in d.unknowns

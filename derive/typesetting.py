@@ -76,9 +76,17 @@ def _signed(term: sp.Expr, first: bool) -> str:
 NOTE_WIDTH = 0.3
 
 
-def note(text: str) -> str:
-    """A note beside an equation, in an align environment's last column: a narrow ragged box, so
-    that a long meaning wraps instead of running off the page (`text` already LaTeX)."""
+def note(text: str, tex: bool = True) -> str:
+    r"""A note beside an equation, in an align environment's last column (`text` already LaTeX):
+    where LaTeX compiles it (`tex`), a narrow ragged box, so that a long meaning wraps instead of
+    running off the page; for MathJax (the LMS feedback, through pandoc), which knows no \parbox
+    or \raggedright and would show them as errors, the meaning as text.
+
+    >>> note("tension in the cord", tex=False)
+    ' && \\text{tension in the cord}'
+    """
+    if not tex:
+        return rf" && \text{{{text}}}"
     return rf" && \parbox[t]{{{NOTE_WIDTH}\linewidth}}{{\raggedright\small {text}}}"
 
 

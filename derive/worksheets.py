@@ -11,6 +11,7 @@ out="build/demo")` is derive.api.sheet.
 from __future__ import annotations
 
 import csv
+import dataclasses
 import gc
 import io
 import random
@@ -177,6 +178,18 @@ class _ProblemVariants:
                 for name, ask in self.problem.asks.items()}
 
     @cached_property
+    def free_bodies(self) -> dict[int, free_body.FreeBody]:
+        """Each body's free-body diagram (derive.figure.free_body) by the id of the step of
+        Newton–Euler's own derivation that states its balance: drawn once for every variant and
+        output, labelled with symbols; a body it cannot draw has none, a scene without the route none."""
+        solution = self.solution
+        if "newton_euler" not in solution.steps():
+            return {}
+        drawn = free_body.free_bodies(self.problem, solution.dynamics_scene, solution.coordinates)
+        return {id(s): drawn[s.body] for s in solution.derivations["newton_euler"].steps
+                if s.body and drawn.get(s.body) is not None}
+
+    @cached_property
     def _evaluator(self) -> numeric.Evaluator:
         return numeric.evaluator(tuple(self.in_declared_units.values()))
 
@@ -299,7 +312,7 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
     numbered = iter(range(1, 10**6))  # the problem's equations, numbered through its routes
     routes = []
     all_steps = solution.steps()
-    diagrams = _free_body_diagrams(solution) if "newton_euler" in all_steps else {}
+    diagrams = item.free_bodies
     printed = notation.named(problem, solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
     for route, steps in all_steps.items():
         shown, solved = [], []  # the numbers of the equations this route solves
@@ -308,13 +321,14 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
             solved += numbers if s.role == "equations" else []
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
             shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
-                          "diagram": diagrams.get(id(original), ""),
+                          "diagram": diagrams[id(original)].tikz if id(original) in diagrams else "",
+                          "body": diagrams[id(original)].body if id(original) in diagrams else "",
                           "sentences": [sentence.latex() for sentence in s.sentences]})
         routes.append({"title": route_title(route), "steps": shown})
     answers = [
         {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
          "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
-                         typesetting.note(render.tex_escape(a.meaning)))}
+                         typesetting.note(render.tex_escape(a.meaning), tex=siunitx))}
         for n, a in problem.asks.items()
     ]
     symbols = {n: render.latex_of(p.symbol) for n, p in problem.parameters.items()}
@@ -334,12 +348,11 @@ def _solutions_context(item: _ProblemVariants, siunitx: bool) -> dict:
             "figure": figure.tikz(problem)}
 
 
-def _free_body_diagrams(solution: Solution) -> dict[int, str]:
-    """The free-body diagram of each body (derive.figure.free_body) by the id of the step of
-    Newton–Euler's own derivation that states its balance; a body it cannot draw has none."""
-    drawn = free_body.free_bodies(solution.problem, solution.dynamics_scene, solution.coordinates)
-    return {id(s): drawn[s.body].tikz for s in solution.derivations["newton_euler"].steps
-            if s.body and drawn.get(s.body) is not None}
+def _free_body_figures(prepared: list[_ProblemVariants]) -> dict[str, free_body.FreeBody]:
+    """Every free-body diagram of the set by its image's name (figure_files.free_body_name): what
+    the LMS feedback shows as images, each compiled once whatever the number of variants."""
+    return {figure_files.free_body_name(item.problem.id, drawn.body): drawn
+            for item in prepared for drawn in item.free_bodies.values()}
 
 
 def _keys(problem_set: ProblemSet, prepared: list[_ProblemVariants], variants: int, seed: int,
@@ -397,18 +410,30 @@ def _numerical_notes(key: dict) -> list[str]:
 def _worked_solutions(prepared: list[_ProblemVariants], contexts: list[dict], header: dict) -> dict[tuple[str, int], str]:
     """Each problem's worked solution for each variant as HTML, keyed (problem id, variant): the
     solutions sheet's own template and text, each section one problem with that variant's numbers
-    only (no figure: the question shows it; no free-body diagram: pandoc reads no TikZ), converted by
-    pandoc in one run (export.html_sections)."""
+    only (no figure: the question shows it), converted by pandoc in one run (export.html_sections).
+    pandoc reads no TikZ: each free-body diagram is an image, figures/NAME.png (`free_body_name`),
+    which derive.lms resolves to the file each LMS carries; the same for every variant."""
     keys, problems = [], []
     for item, context in zip(prepared, contexts):
+        routes = [{**r, "steps": [{**s, "diagram": _included(item.problem.id, s["body"])} for s in r["steps"]]}
+                  for r in context["routes"]]
         for variant in context["variants"]:
             keys.append((item.problem.id, variant["number"]))
-            routes = [{**r, "steps": [{**s, "diagram": ""} for s in r["steps"]]} for r in context["routes"]]
             problems.append({**context, "figure": "", "routes": routes, "variants": [variant]})
     fragments = export.html_sections(render.render("solutions.tex.j2", set=header, problems=problems))
     if len(fragments) != len(keys):
         raise export.BuildError(f"pandoc made {len(fragments)} worked solutions of {len(keys)}")
     return dict(zip(keys, fragments))
+
+
+def _included(problem: str, body: str) -> str:
+    r"""A body's free-body diagram as pandoc reads an image ("" for none): its PNG in the figures
+    folder, at a path derive.lms rewrites (with the image's width and alternative text) for each LMS.
+
+    >>> _included("p", "disk"), _included("p", "")
+    ('\\includegraphics{figures/p-free-body-disk.png}', '')
+    """
+    return rf"\includegraphics{{{figure_files.FOLDER}/{figure_files.free_body_name(problem, body)}.png}}" if body else ""
 
 
 def _lms_items(prepared: list[_ProblemVariants], variants: int, choice: bool,
@@ -495,6 +520,9 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
         figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
             if formats & figure_files.OUTPUTS else {}
+        # The free-body diagrams the LMS feedback shows, by image name: one per body, not per variant.
+        diagrams = _free_body_figures(prepared) if formats & {"moodle", "qti"} else {}
+        figures.update({name: drawn.tikz for name, drawn in diagrams.items()})
         progress("each variant's answers, certified, and the keys")
         rows, key = _keys(problem_set, prepared, variants, seed, "distractors" in formats, choice)
         for note in _numerical_notes(key):  # the set is built; these answers are asked as numbers
@@ -534,11 +562,13 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                 images = {}
                 if figures:
                     begin(f"{len(figures)} figures as SVG and PNG (pdftocairo)")
-                    images = figure_files.images(list(figures), pdfs[-1])
-                if images and formats & {"html", "md"}:  # the SVG files they refer to
+                    images = {name: dataclasses.replace(image, alt=diagrams[name].alt) if name in diagrams else image
+                              for name, image in figure_files.images(list(figures), pdfs[-1]).items()}
+                shown_images = [image for name, image in images.items() if name not in diagrams]  # the problems'
+                if shown_images and formats & {"html", "md"}:  # the SVG files they refer to
                     folder = staging / figure_files.FOLDER
                     folder.mkdir()
-                    for image in images.values():
+                    for image in shown_images:
                         (folder / image.file("svg")).write_bytes(image.svg)
                     products.append(folder)
                 for target in ("html", "md", "docx"):

@@ -45,15 +45,15 @@ def test_solutions_and_answers_show_as_math():
     result = derive.solve("string_wrapped_disk", {"m": 2, "M": 4}, digits=4)  # R has no value: alpha has none
     latex = result._repr_latex_()
     assert latex.startswith("$$\\begin{aligned}") and latex.endswith("\\end{aligned}$$")
-    assert "a &= - \\frac{2 g m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2} \\\\" in latex
-    assert "\\alpha &= - \\frac{2 g m}{R \\left(M + 2 m\\right)} \\\\" in latex  # no value without R
+    assert "a &= - g \\frac{2 m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2} \\\\" in latex
+    assert "\\alpha &= - \\frac{g}{R} \\frac{2 m}{M + 2 m} \\\\" in latex  # no value without R
     assert "&\\text{at } M = 4.000\\,\\mathrm{kg}, m = 2.000\\,\\mathrm{kg}, g = 9.810" in latex
     page = lxml.html.fragment_fromstring(result._repr_html_())
     rows = [[cell.text_content() for cell in row] for row in page.iter("tr")]
     assert rows[0] == ["acceleration of the block (y up)",
-                       "\\(a = - \\frac{2 g m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}\\)"]
+                       "\\(a = - g \\frac{2 m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}\\)"]
     assert [row[0] for row in rows] == [result[n].meaning for n in ("a", "alpha", "T")]
-    assert result["T"]._repr_latex_() == "$$T = \\frac{M g m}{M + 2 m} = 9.810\\,\\mathrm{N}$$"
+    assert result["T"]._repr_latex_() == "$$T = g m \\frac{M}{M + 2 m} = 9.810\\,\\mathrm{N}$$"
 
 
 def test_html_shows_a_files_text_as_written(tmp_path):
@@ -131,16 +131,16 @@ def test_example_notebook_runs_and_shows_math(tmp_path):
 
     solved = outputs["result"][0]["data"]
     assert solved["text/latex"] == derive.solve("string_wrapped_disk", {"m": 2, "M": 4, "R": 0.3}, 4)._repr_latex_()
-    assert "T &= \\frac{M g m}{M + 2 m} = 9.810\\,\\mathrm{N}" in solved["text/latex"]
+    assert "T &= g m \\frac{M}{M + 2 m} = 9.810\\,\\mathrm{N}" in solved["text/latex"]
     html = lxml.html.fragment_fromstring(solved["text/html"])
-    assert "\\(\\alpha = - \\frac{2 g m}{R \\left(M + 2 m\\right)} = -16.35" in html.text_content()
+    assert "\\(\\alpha = - \\frac{g}{R} \\frac{2 m}{M + 2 m} = -16.35" in html.text_content()
     assert solved["text/plain"].startswith("Result(string_wrapped_disk: a = -4.905 m/s^2")
 
     answer = outputs['result["a"]'][0]["data"]
-    assert answer["text/latex"] == "$$a = - \\frac{2 g m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}$$"
+    assert answer["text/latex"] == "$$a = - g \\frac{2 m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}$$"
     assert answer["text/html"].startswith("<p>acceleration of the block (y up): \\(a = ")
     lighter = outputs['result.at({"m": 1})["T"]'][0]["data"]
-    assert lighter["text/latex"] == "$$T = \\frac{M g m}{M + 2 m} = 6.540\\,\\mathrm{N}$$"
+    assert lighter["text/latex"] == "$$T = g m \\frac{M}{M + 2 m} = 6.540\\,\\mathrm{N}$$"
     built = outputs["sorted(path.name for path in files)"][0]["data"]["text/plain"]
     assert built == "['key.csv', 'key.json', 'key.tex', 'solutions.tex', 'worksheet.tex']"
     assert (tmp_path / "build" / "notebook-sheet" / "key.json").is_file()

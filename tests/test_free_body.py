@@ -201,15 +201,16 @@ def test_the_handout_shows_the_diagrams_and_compiles_with_nothing_off_the_page(d
     assert _overfull(tex, tmp_path) == []
 
 
-def test_the_lms_feedback_goes_without_the_diagrams(drawn, tmp_path):
+def test_the_lms_feedback_shows_the_diagrams_as_images_not_tikz(drawn, tmp_path):
     """The worked solutions pandoc turns into each question's feedback carry no TikZ (pandoc reads
-    none, and would leave an empty block where each was): the balance steps are there, their
-    diagrams are not (PDF only, for now)."""
+    none): each diagram is an image there, right after its balance step (tests/test_lms_free_body.py
+    checks the images), and no centered block is left empty."""
     solution, _ = drawn["string_wrapped_disk"]
     built = worksheets.build(["string_wrapped_disk"], out_dir=str(tmp_path / "lms"), formats=frozenset({"moodle"}))
     xml = next(p for p in built if p.name == "moodle.xml").read_text()
-    feedback = re.search(r"<generalfeedback format=\"html\">\s*<text>(.*?)</text>", xml, re.S)[1]
+    feedback = html.unescape(re.search(r"<generalfeedback format=\"html\">\s*<text>(.*?)</text>", xml, re.S)[1])
     heading = next(s.text for s in solution.derivations["newton_euler"].steps if s.body == "block")
-    assert heading.split(" (")[0] in html.unescape(feedback)
+    assert heading.split(" (")[0] in feedback
     assert "tikzpicture" not in xml and "draw[force]" not in xml
-    assert 'class="center"' not in html.unescape(feedback)  # pandoc leaves a diagram's centering, empty
+    centered = re.findall(r'<div class="center">(.*?)</div>', feedback, re.S)
+    assert len(centered) == 2 and all("<img " in block for block in centered)  # the disk's and the block's

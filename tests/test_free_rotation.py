@@ -11,7 +11,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from conftest import refused
-from derive import distractors, figure, problem, report
+from derive import distractors, figure, problem, report, simulate_solid
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.mechanics import free_rotation
@@ -72,16 +72,6 @@ def _spin(moments, omega, time):
     return run.t, run.y[:9].T.reshape(-1, 3, 3), run.y[9:].T
 
 
-def _turning_rate(vectors, times, about):
-    """The mean rate at which the vectors' parts across `about` turn about it (unwrapped angle)."""
-    about = about / np.linalg.norm(about)
-    first = np.cross(about, [1.0, 0, 0]) if abs(about[0]) < 0.9 else np.cross(about, [0, 1.0, 0])
-    first /= np.linalg.norm(first)
-    second = np.cross(about, first)
-    angle = np.unwrap(np.arctan2(vectors @ second, vectors @ first))
-    return (angle[-1] - angle[0]) / (times[-1] - times[0])
-
-
 @pytest.mark.parametrize("shape, sizes", [("disk", "radius: R"), ("cylinder", "radius: R, height: 5*R")])
 def test_a_simulated_symmetric_body_precesses_at_the_derived_rates(tmp_path, shape, sizes):
     text = BODY.replace("SHAPE", f"{{shape: {shape}, mass: m, {sizes}, free_rotation: {{spin: w3, across: wt}}}}")
@@ -95,10 +85,10 @@ def test_a_simulated_symmetric_body_precesses_at_the_derived_rates(tmp_path, sha
     moments = [float(m.xreplace(values)) for m in solution.free_moments("body")]
     times, turns, omegas = _spin(moments, [float(values[sp.Symbol("wt", positive=True)]), 0,
                                            float(values[sp.Symbol("w3", positive=True)])], 3.0)
-    assert math.isclose(_turning_rate(omegas, times, np.array([0, 0, 1.0])), derived[0], rel_tol=1e-6)
+    assert math.isclose(simulate_solid.turning_rate(omegas, times, np.array([0, 0, 1.0])), derived[0], rel_tol=1e-6)
     momentum = moments * omegas[0]  # in space, at the start (R = 1)
     axes = turns[:, :, 2]  # the symmetry axis in space
-    assert math.isclose(_turning_rate(axes, times, momentum), derived[1], rel_tol=1e-6)
+    assert math.isclose(simulate_solid.turning_rate(axes, times, momentum), derived[1], rel_tol=1e-6)
     cosines = axes @ momentum / np.linalg.norm(momentum)
     assert np.allclose(np.arccos(cosines), derived[2], atol=1e-8)
     assert math.isclose(math.atan2(omegas[0, 0], omegas[0, 2]), derived[3], rel_tol=1e-12)

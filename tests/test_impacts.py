@@ -299,7 +299,7 @@ def test_a_worked_impact_shows_the_angular_momentum_it_keeps():
     same before and after: the worked solution shows it (m v L, twice), and the check compares it
     with Newton–Euler's velocities."""
     solution = Solution(problem.load("tests/textbook/states/rod_ballistic_pendulum.yaml"))
-    steps = solution.steps()["the state struck"]
+    steps = solution.steps()[solution.state_heading("struck")]
     (kept,) = [s for s in steps if s.text.startswith("Check: the angular momentum about the pin")]
     m, v, L = (next(s for s in solution.expression("omega").free_symbols if s.name == n) for n in ("m", "v", "L"))
     assert [sp.simplify(e.rhs - m * v * L) for e in kept.equations] == [0, 0]
@@ -322,7 +322,7 @@ question: |
     # textbook, omega = 6 m v/(L (M + 4 m)) for a bullet into the end of a free rod
     M, m, v, L = (next(s for s in solution.expression("omega").free_symbols if s.name == n) for n in ("M", "m", "v", "L"))
     assert sp.simplify(solution.expression("omega") - 6 * m * v / (L * (M + 4 * m))) == 0
-    steps = solution.steps()["the state struck"]
+    steps = solution.steps()[solution.state_heading("struck")]
     (kept,) = [s for s in steps if s.text.startswith("Check: no impulse from outside")]
     pairs = list(zip(kept.equations[::2], kept.equations[1::2]))
     assert len(pairs) == 3 and all(sp.simplify(a.rhs - b.rhs) == 0 for a, b in pairs)
@@ -393,7 +393,7 @@ def test_a_ball_that_always_grips_leaves_rolling_and_keeps_its_angular_momentum_
     m, R, v, theta = _symbols(solution, "m", "R", "v", "theta")
     assert not solution.expression("vx").has(sp.Piecewise) and not solution.impact_regimes()
     assert sp.simplify(solution.expression("vx") + R * solution.expression("omega")) == 0
-    (kept,) = [s for s in solution.steps()["the state bounced"] if "about the point of contact" in s.text]
+    (kept,) = [s for s in solution.steps()[solution.state_heading("bounced")] if "about the point of contact" in s.text]
     assert [sp.simplify(eq.rhs + m * v * R * sp.sin(theta)) for eq in kept.equations] == [0, 0]
 
 
@@ -461,7 +461,7 @@ def test_the_motion_after_a_bounce_is_answered_in_the_variants_regime_or_refused
     solution = Solution(problem.load(path))
     m, M, R, v = _symbols(solution, "m", "M", "R", "v")
     assert sp.simplify(solution.expression("t") - sp.pi * R * (M + 2 * m) / (2 * m * v)) == 0
-    assert any("where it grips, as at the middle" in s.text for s in solution.steps()["the state turned"])
+    assert any("where it grips, as at the middle" in s.text for s in solution.steps()[solution.state_heading("turned")])
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
     fixed = ["--set", "m=0.1", "--set", "M=3", "--set", "R=0.3", "--set", "v=2", "--set", "e=0.3"]
     gripping = run_derive("solve", str(path), *fixed, "--set", "mu=0.9", "--format", "json")
@@ -587,7 +587,7 @@ def test_two_rough_pucks_that_grip_share_the_tangential_impulse_of_their_effecti
         r = centers[i] - contact
         moment = lambda u, w: mass * (r[0] * u[1] - r[1] * u[0]) + mass * radius**2 / 2 * w  # noqa: E731
         assert sp.simplify(moment(after[i], spin[i]) - moment(before, 0)) == 0
-    (kept,) = [s for s in solution.steps()["the state struck"] if s.text.startswith("Check: no impulse from outside")]
+    (kept,) = [s for s in solution.steps()[solution.state_heading("struck")] if s.text.startswith("Check: no impulse from outside")]
     assert all(sp.simplify(a.rhs - b.rhs) == 0 for a, b in zip(kept.equations[::2], kept.equations[1::2]))
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
 
@@ -603,7 +603,7 @@ def test_a_puck_off_a_rod_on_a_pin_keeps_the_angular_momentum_about_the_pin(tmp_
     solution = Solution(problem.load(write_problem(tmp_path, text)))
     m, M, L, d, v, e = _symbols(solution, "m", "M", "L", "d", "v", "e")
     assert sp.simplify(solution.expression("dp") - 2 * L / 3) == 0  # a smooth puck: as a point mass
-    (kept,) = [s for s in solution.steps()["the state bounced"] if "about the pin" in s.text]
+    (kept,) = [s for s in solution.steps()[solution.state_heading("bounced")] if "about the pin" in s.text]
     assert [sp.simplify(eq.rhs - m * v * d) for eq in kept.equations] == [0, 0]
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
 

@@ -85,6 +85,10 @@ def test_moodle_feedback_is_the_variants_worked_solution_with_its_numbers(built,
         assert other and not any(re.search(rf"(?<![\d.]){re.escape(n)}(?![\d])", shown) for n in other)
         assert "\\(" in html and "$" not in html  # MathJax's inline delimiters, not TeX's
         assert "tikzpicture" not in html and "<section" not in html and " id=" not in html
+        # Only what MathJax typesets: no box, ragged text or siunitx (shown as errors), no \tag (pandoc's numbers)
+        assert not re.search(r"\\(parbox|raggedright|unit|qty|SI|tag)\b", html), problem
+        meanings = [a["meaning"] for a in key["variants"][0]["problems"][problem]["answers"].values()]
+        assert all(f"\\text{{{meaning}}}" in " ".join(html.split()) for meaning in meanings)  # each result's
 
 
 def test_canvas_has_a_group_per_problem_and_asked_quantity_that_picks_one_variant(canvas, key):
@@ -156,7 +160,8 @@ def test_the_canvas_zip_holds_and_lists_each_figure_its_items_show(built):
         figures = [r for r in manifest.iter("{*}resource") if r.get("type") == "webcontent"]
         paths = [r.get("href") for r in figures]
         assert [f.get("href") for r in figures for f in r.iter("{*}file")] == paths
-        assert sorted(paths) == sorted(f"figures/{p}.png" for p in PROBLEMS)
+        problems = [p for p in paths if "-free-body-" not in p]  # the others: the feedback's (test_lms_free_body)
+        assert sorted(problems) == sorted(f"figures/{p}.png" for p in PROBLEMS)
         assert all(image_kind(archive.read(path)) == "png" for path in paths)
     for item in assessment.iter("{*}item"):
         html = item.find("{*}presentation/{*}material/{*}mattext").text
@@ -173,7 +178,8 @@ def test_both_lms_show_the_same_worked_solution(built):
         _, assessment, _ = qti_package(archive)
     for item in assessment.iter("{*}item"):
         variant = item.get("title").rsplit(" ", 1)[0]
-        assert item.find("{*}itemfeedback//{*}mattext").text == moodle[variant]
+        canvas = item.find("{*}itemfeedback//{*}mattext").text  # each image from its own LMS's place:
+        assert canvas.replace('src="$IMS-CC-FILEBASE$/figures/', 'src="@@PLUGINFILE@@/') == moodle[variant]
 
 
 def _identifiers(package: bytes) -> list[str]:

@@ -18,11 +18,12 @@ x = sp.Symbol("x", real=True)
 
 
 def numbers(expression, printed, rng: random.Random) -> list[tuple[complex, complex]]:
-    """(the answer, its printed form) at three random points (every symbol in [0.2, 1.4])."""
+    """(the answer, its printed form) at three random points (every symbol in [0.2, 1.4]); the
+    printed form's unevaluated parts (a term's share of a sum) evaluated by doit."""
     result = []
     for _ in range(3):
         point = {s: sp.Rational(rng.randint(200, 1400), 1000) for s in expression.free_symbols}
-        result.append((complex(sp.N(expression.xreplace(point), 30)), complex(sp.N(printed.xreplace(point), 30))))
+        result.append((complex(sp.N(expression.xreplace(point), 30)), complex(sp.N(printed.xreplace(point).doit(), 30))))
     return result
 
 
@@ -84,3 +85,19 @@ def test_a_square_over_its_absolute_value_and_roots_of_unknown_sign():
 def test_a_coefficient_and_powers_taken_into_the_root(where, name, latex):
     problem = load(str(Path(__file__).parent.parent / where) if where.endswith(".yaml") else where)
     assert render.latex_of(Solution(problem).expression(name)) == latex
+
+
+@pytest.mark.parametrize("name, latex", [  # the notes, §4.1: a = -g 2m/(M+2m), alpha = a/R, T = m g M/(M+2m)
+    ("a", r"- g \frac{2 m}{M + 2 m}"),
+    ("alpha", r"- \frac{g}{R} \frac{2 m}{M + 2 m}"),
+    ("T", r"g m \frac{M}{M + 2 m}"),
+])
+def test_a_term_s_share_of_a_sum_as_the_notes_group_it(name, latex):
+    assert render.latex_of(Solution(load("string_wrapped_disk")).expression(name)) == latex
+
+
+def test_a_numerator_holding_two_of_the_terms_or_none_is_left_as_it_is():
+    m1, m2 = sp.symbols("m1 m2", positive=True)
+    assert printed_form.shares(m1 * m2 / (m1 + m2)) == m1 * m2 / (m1 + m2)  # the reduced mass
+    atwood = 2 * g * (m1 - m2) / (M + 2 * m1 + 2 * m2)
+    assert printed_form.shares(atwood) == atwood

@@ -179,7 +179,7 @@ def test_the_figure_draws_the_coin_leaning_toward_its_circles_axis(tmp_path):
     path.write_text(COIN_FILE.replace("ASK", "coin.steady.precession").replace("KEY", "{tilt: theta, circle: R}")
                     .replace("UNIT", "rad/s"))
     drawn = figure.tikz(problem.load(path))
-    assert "rotate around={17.19:(-0.3,0.96)}" in drawn and "ellipse (0.12 and 1)" in drawn  # theta = 0.3 rad
+    assert "\\fill (-0.3,0.96) circle (0.04);" in drawn  # the center, theta = 0.3 rad from the vertical at P
     assert "{$\\theta$}" in drawn and "{$R$}" in drawn and "{$x$}" in drawn and "$m\\,g$" in drawn
     path.write_text(COIN_FILE.replace("ASK", "coin.upright.min_speed").replace("KEY", "{}").replace("UNIT", "m/s")
                     .replace(" of {{ R }} leaning {{ theta }}", "").replace("  R: {meaning: circle, unit: m, value: 0.2}\n"

@@ -7,8 +7,10 @@ joints as a hatched support (a pivot) or a circled dot (an axle), surfaces as an
 a floor or a loop, and forces (gravity, pulls, tension), velocities and spins as arrows,
 each labelled with the problem's own symbols (``render.latex_of``). Relative sizes come from the
 middle of each parameter's range (or its value), clamped so that the figure stays legible.
-The scene-level systems (orbit, top, spinning wheel, standing wave, internal forces,
-a turning body, prescribed paths) have schematics of their own; so do the classic scenes whose
+The scene-level systems (orbit, spinning wheel, standing wave, internal forces, a turning body,
+prescribed paths) have schematics of their own; bodies in 3D (in bearings, on a fixed point, rolling
+on an edge, turning freely) are drawn in an oblique projection with their axes and omega and L
+from their derivations (`derive.figure.solids`); so do the classic scenes whose
 every part a schematic draws (an incline, a floor, a loop, a pendulum, bodies on one axle, a
 collision). Any other scene of parts is drawn in its reference configuration to scale, every part
 from its own geometry (`derive.figure.parts`); a part it cannot draw leaves the figure out (None)
@@ -24,7 +26,7 @@ from __future__ import annotations
 
 from derive.figure.canvas import LIBRARIES, STYLES, WIDTH, _Figure
 from derive.figure.layout import _LAYOUTS
-from derive.figure.parts import Undrawable
+from derive.figure.drawn_view import Undrawable
 
 __all__ = ["LIBRARIES", "STYLES", "WIDTH", "tikz"]
 

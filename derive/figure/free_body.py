@@ -31,6 +31,9 @@ wrong one. Same problem, same bytes.
 [('T_{\\mathrm{string}}', (0.0, 1.0)), ('g m', (0.0, -1.0))]
 >>> drawn["disk"].tikz.startswith(r"\begin{tikzpicture}")
 True
+>>> drawn["block"].alt
+'Free-body diagram of the block: tension of string T_string; weight g*m.'
+
 """
 from __future__ import annotations
 
@@ -41,8 +44,8 @@ import sympy as sp
 
 from derive import render
 from derive.figure.canvas import _add, _f, _Figure, _pt, _unit
-from derive.figure.parts import ARROW, DIRECTIONS, LAYERS, Undrawable, _Body, _degrees, _on_segment, _perp, \
-    _Scene, _sub
+from derive.figure.drawn_view import ARROW, DIRECTIONS, LAYERS, Undrawable, _Body, _Scene
+from derive.figure.vectors import _degrees, _on_segment, _perp, _sub
 from derive.mechanics.newton_euler import all_forces
 from derive.parts import AppliedForce, AppliedTorque
 from derive.scene import TIME
@@ -55,19 +58,25 @@ REPEAT = 1.4  # an arrow drawn where another already is (the same point and dire
 @dataclass(frozen=True)
 class Arrow:
     """One force of a diagram: its point (a world offset from the center of mass, m), its unit
-    direction, and its label (LaTeX)."""
+    direction, its label (LaTeX), the force it draws (the part's label: "weight") and its label as
+    plain text (sympy's str: "M*g"), for the diagram's alternative text."""
 
     offset: tuple[float, float]
     direction: tuple[float, float]
     label: str
+    force: str = ""
+    text: str = ""
 
 
 @dataclass(frozen=True)
 class Turn:
-    """One couple of a diagram: +1 counter-clockwise, -1 clockwise, and its label (LaTeX)."""
+    """One couple of a diagram: +1 counter-clockwise, -1 clockwise, its label (LaTeX), and as an
+    Arrow the couple it draws and its label as plain text."""
 
     sign: int
     label: str
+    force: str = ""
+    text: str = ""
 
 
 @dataclass(frozen=True)
@@ -80,6 +89,16 @@ class FreeBody:
     turns: tuple[Turn, ...]
     scale: float
     tikz: str
+
+    @property
+    def alt(self) -> str:
+        """The diagram in words, for an image's alternative text: the body, then each force (and
+        couple) with the labels of its arrows, in the order drawn."""
+        drawn: dict[str, list[str]] = {}
+        for shown in (*self.arrows, *self.turns):
+            drawn.setdefault(shown.force, []).append(shown.text)
+        forces = "; ".join(f"{force} {', '.join(texts)}" for force, texts in drawn.items())
+        return f"Free-body diagram of the {self.body}: {forces or 'no forces'}."
 
 
 def free_bodies(problem, scene, coords) -> dict[str, FreeBody | None]:
@@ -111,15 +130,17 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
                 length = math.hypot(*direction)
                 if length < 1e-9:
                     raise Undrawable(f"the {load.label} has no direction here")
-                arrows.append(Arrow(offset, (direction[0] / length, direction[1] / length),
-                                    render.latex_of(_size(vector, length) * amount)))
+                shown = _size(vector, length) * amount
+                arrows.append(Arrow(offset, (direction[0] / length, direction[1] / length), render.latex_of(shown),
+                                    load.label, sp.sstr(shown)))
         elif isinstance(load, AppliedTorque):
             for coefficient, amount in _split(sp.Matrix([load.torque.xreplace(rest)]), unknowns):
                 value = view.value(coefficient[0])
                 if abs(value) < 1e-12:
                     raise Undrawable(f"the {load.label} has no sense here")
                 sign = 1 if value > 0 else -1
-                turns.append(Turn(sign, render.latex_of(sp.simplify(sign * coefficient[0]) * amount)))
+                shown = sp.simplify(sign * coefficient[0]) * amount
+                turns.append(Turn(sign, render.latex_of(shown), load.label, sp.sstr(shown)))
     return arrows, turns
 
 

@@ -16,7 +16,8 @@ from derive.figure.orbits import _orbit
 from derive.figure.parts import _parts
 from derive.figure.paths import _paths
 from derive.figure.surfaces import _on_surface
-from derive.figure.systems import _bearings, _free_rotation, _internal, _pivot_point, _rolls_on_edge, _wave, _wheel
+from derive.figure.solids import _bearings, _free_rotation, _pivot_point, _rolls_on_edge
+from derive.figure.systems import _internal, _wave, _wheel
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin

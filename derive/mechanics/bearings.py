@@ -68,6 +68,16 @@ def _mounted(frame: me.ReferenceFrame, tilt, roll, axis: str) -> me.ReferenceFra
     return tilted.orientnew("B", "Axis", [roll, getattr(tilted, axis)])
 
 
+def mounted_axes(tilt, roll, axis: str) -> sp.Matrix:
+    """The body's own axes in N (the columns) at the instant its own axis lies in N's xz plane.
+
+    >>> mounted_axes(sp.pi / 2, 0, "z").tolist()  # the symmetry axis z tilted a right angle, to N.x
+    [[0, 0, 1], [0, 1, 0], [-1, 0, 0]]
+    """
+    ground = me.ReferenceFrame("N")
+    return ground.dcm(_mounted(ground, tilt, roll, axis))
+
+
 def center_offset(tilt, roll, axis: str, through) -> sp.Matrix:
     """Where the center of mass is from the shaft's point `through` (in the body's own frame), in N
     at the instant the own axis lies in N's xz plane.
@@ -79,6 +89,16 @@ def center_offset(tilt, roll, axis: str, through) -> sp.Matrix:
     ground = me.ReferenceFrame("N")
     body_frame = _mounted(ground, tilt, roll, axis)
     return -_column(ground, _along(body_frame, through))
+
+
+def own_axes(tilt, roll, axis: str) -> sp.Matrix:
+    """The body's own x, y, z (columns) in N at the instant the own axis lies in N's xz plane.
+
+    >>> own_axes(sp.pi / 2, 0, "z")[:, 2].T  # the symmetry axis tilted a right angle: along N.x
+    Matrix([[1, 0, 0]])
+    """
+    ground = me.ReferenceFrame("N")
+    return sp.Matrix.hstack(*(_column(ground, e) for e in _mounted(ground, tilt, roll, axis)))
 
 
 def _dyadic(frame: me.ReferenceFrame, tensor: sp.Matrix) -> me.Dyadic:
@@ -95,7 +115,7 @@ def _along(frame: me.ReferenceFrame, components) -> me.Vector:
     return sum((c * e for c, e in zip(components, frame)), me.Vector(0))
 
 
-def _by_moments(torque: sp.Matrix, force: sp.Matrix, center: sp.Matrix, apart, thrust) -> dict:
+def by_moments(torque: sp.Matrix, force: sp.Matrix, center: sp.Matrix, apart, thrust) -> dict:
     """Newton–Euler's statics of the shaft (the z axis, bearing A at z = apart/2 and B at -apart/2
     from the shaft's point at the origin): the supports' moment about each bearing is the torque
     about the center of mass plus (center - bearing) x force, and only the other bearing's force
@@ -183,7 +203,7 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
     # tidied in this order, L and the torque first: sympy's caches make the later forms depend on it
     momentum, torque = (c.applyfunc(tidy) for c in (momentum, torque))
     energy, force, position = tidy(energy), force.applyfunc(tidy), position.applyfunc(tidy)
-    split = (_by_moments(torque, force, position, apart, thrust) if route == "newton_euler"
+    split = (by_moments(torque, force, position, apart, thrust) if route == "newton_euler"
              else _by_halves(moment.applyfunc(tidy), force, apart, thrust))
     split = {k: v.applyfunc(tidy) if isinstance(v, sp.MatrixBase) else tidy(v) for k, v in split.items()}
     return {"angular_momentum": momentum, "torque": torque, "kinetic_energy": energy, "force": force, **split}

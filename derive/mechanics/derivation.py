@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import sympy as sp
 from flint import arb, arb_mat, ctx
@@ -94,19 +95,28 @@ class Derivation:
     cascade's time (benchmarks: derive bench). `solution` solves them in general, on first use;
     `at(state)` solves them with some coordinates and velocities given (the reference
     configuration at rest, a state of the motion): with the state put in first, the linear system
-    is far smaller than the general one. `steps` hold the derivation up to the equations;
-    `solving_step` adds the solution for the unknowns a question needs.
+    is far smaller than the general one. `steps` hold the derivation up to the equations, written
+    by `written` on first use (the equations in the reference configuration, the parts' sentences:
+    a derivation whose worked solution nobody reads does not pay for them); `solving_step` adds
+    the solution for the unknowns a question needs.
     """
 
     route: str
     balances: list[sp.Eq]
     unknowns: list[sp.Symbol]
-    steps: list[Step] = field(default_factory=list)
+    written: Callable[[Derivation], list[Step]] = lambda derivation: []
     rates: list[sp.Expr] = field(default_factory=list)
     coords: object = None  # derive.mechanics.kinematics.Coordinates, for the rates' derivatives
     gaps: list[sp.Expr] = field(default_factory=list)  # when each rate is dg/dt of a gap g(q)
     _states: dict = field(default_factory=dict, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def steps(self) -> list[Step]:
+        """The steps up to the equations (written on first use)."""
+        if "steps" not in self._cache:
+            self._cache["steps"] = self.written(self)
+        return self._cache["steps"]
 
     @property
     def placed(self) -> tuple[sp.Expr, ...]:
@@ -316,6 +326,13 @@ def tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...] = ()) -> sp.Expr:
     >>> tidy(m*g*sp.sin(x)**2 + m*g*sp.cos(x)**2)
     g*m
     """
+    if isinstance(expr, sp.MatrixBase):  # mutable, so not remembered
+        return _tidy.__wrapped__(expr, placed)
+    return _tidy(expr, tuple(placed))
+
+
+@lru_cache(maxsize=4096)  # answers, checks and steps tidy the same expression from each route
+def _tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...]) -> sp.Expr:
     if expr.has(sp.Piecewise):  # regimes: each case in its own simplest form
         folded = sp.piecewise_fold(expr)
         if isinstance(folded, sp.Piecewise):

@@ -22,6 +22,7 @@ import sympy as sp
 from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.states import Path, Reached, Stops, reach
+from derive.prose import Sentence
 from derive.scene import Scene
 
 
@@ -38,11 +39,16 @@ def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
         acceleration = slope / 2  # d(s'^2)/dt = 2 s' s'' = slope s'
         if slope == 0:
             time = tidy((end - s0) / path.rate(s0))
+            said = Sentence(("The rate of ", s, " does not change along the way: the time is the distance over that "
+                             "rate, at constant speed."))
         else:
             time = tidy((path.rate(end) - path.rate(s0)) / acceleration)
+            said = Sentence(("The square of the rate of ", s, " is linear in it along the way, so the acceleration is "
+                             "constant, ", sp.Eq(path.coordinate.a, tidy(acceleration)), ": at constant acceleration "
+                             "the time is the change in the rate divided by it."))
         symbol = sp.Symbol("t")
-        return time, Step(f"The acceleration along {s} is constant, so the time is the change in the rate of {s} "
-                          "divided by it", (sp.Eq(symbol, time),))
+        return time, Step("The acceleration along the way is constant, so the time is the change in the rate divided "
+                          "by it", (sp.Eq(symbol, time),), sentences=(said,))
     # Over w in [0, 1], the fraction of the way w^2 (3 - 2 w), flat at both ends: the 1/sqrt
     # singularities where the motion starts from rest or ends at a turning point become smooth
     # (mpmath's tanh-sinh quadrature then gives 20 digits at 35 where over the fraction itself it
@@ -53,8 +59,13 @@ def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
     # the integral into, diverges at a turning point in each part.
     integrand = 6 * sp.sqrt(path.inertia.xreplace({s: where}) * (w * (1 - w)) ** 2 / path.kinetic.xreplace({s: where}))
     time = sp.Abs(end - s0) * sp.Integral(integrand, (w, 0, 1))
-    return time, Step(f"The acceleration along {s} is not constant: the time is the integral, along the way "
-                      f"from the start, of each step in {s} divided by the rate of {s} there, evaluated numerically", (sp.Eq(sp.Symbol("t"), time),))
+    said = Sentence(("The square of the rate of ", s, " is not linear in it, so the acceleration changes along the "
+                     "way: the time is the integral of each step in it over the rate there, ",
+                     sp.Integral(1 / sp.Abs(path.coordinate.u), (s, s0, end)), ", evaluated by quadrature (its digits "
+                     "checked at two precisions)."))
+    return time, Step("The acceleration along the way is not constant: the time is the integral, from the start, of "
+                      "each step divided by the rate there, evaluated numerically", (sp.Eq(sp.Symbol("t"), time),),
+                      sentences=(said,))
 
 
 def period(scene: Scene, coords: Coordinates, coordinate: Coordinate, amplitude: sp.Expr, derivation: Derivation,

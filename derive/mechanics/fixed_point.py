@@ -135,6 +135,27 @@ def _steady(angles, spin, tilt, rate):
             psi.diff(t): spin - rate * sp.cos(tilt), theta: tilt}
 
 
+def steady_vectors(tensor, mass, distance, spin, tilt, rate) -> dict:
+    """In steady precession at `rate` (spin omega3, the axis at `tilt`), at the instant the axis
+    leans toward N.x (phi = pi/2, psi = 0): omega, L about the fixed point (the RigidBody's) and the
+    top frame's axes (columns), all in N.
+
+    >>> I1, I3, w, W = sp.symbols("I_1 I_3 omega Omega", positive=True)
+    >>> found = steady_vectors(sp.diag(I1, I1, I3), 0, 1, w, sp.pi / 2, W)  # a level axle
+    >>> found["omega"].T, found["momentum"].T
+    (Matrix([[omega, 0, Omega]]), Matrix([[I_3*omega, 0, I_1*Omega]]))
+    """
+    angles = _angles()
+    ground, frame, pivot, _, body, _ = _top(tensor, mass, 0, distance, "ZXZ", angles)
+    now = {**_steady(angles, spin, tilt, rate), angles[0]: sp.pi / 2, angles[2]: 0}
+
+    def column(vector):
+        return sp.Matrix([tidy(me.msubs(vector.dot(e), now)) for e in ground])
+
+    return {"omega": column(frame.ang_vel_in(ground)), "momentum": column(body.angular_momentum(pivot, ground)),
+            "axes": sp.Matrix.hstack(*(column(e) for e in frame))}
+
+
 @lru_cache(maxsize=None)
 def precession_condition(tensor, mass, g, distance, spin, tilt, route: str) -> sp.Expr:
     """The condition on a steady precession rate, Omega^2 + p Omega + q = 0, from theta's equation

@@ -39,6 +39,7 @@ from derive.mechanics.derivation import Derivation, Step, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.states import Reached, StateError, StateLimit
 from derive.parts.slipping_clutch import SlippingClutch
+from derive.prose import Sentence
 
 
 def grip(coords: Coordinates, start: dict, part, derivation: Derivation, decide) -> Reached:
@@ -67,10 +68,15 @@ def grip(coords: Coordinates, start: dict, part, derivation: Derivation, decide)
         raise StateLimit(f"find where {_named(part)} grips where the accelerations change while it slips (only "
                          "constant ones are followed, as of disks on axles or a ball on a level floor)")
     t = sp.Symbol("t")
-    timing = Step("The slip rate falls steadily from where it starts, and reaches zero at", (sp.Eq(t, took),))
+    holds = "the clutch holds its plates together" if isinstance(part, SlippingClutch) else \
+        f"the {part.body} rolls on the {part.surface} without slipping"
+    timing = Step("The slip rate falls steadily from where it starts, and reaches zero at", (sp.Eq(t, took),),
+                  sentences=(Sentence(("The slip rate, ", slip, ", changes at the constant rate ", rate, " from its value "
+                                       "at the start, ", s0, f", and reaches zero at the time below: there it grips, and "
+                                       f"from then on {holds}.")),))
     steps = (Step(f"While {_named(part)} slips, {_friction(part)} acts against the slip, the way it slips at the "
                   "start; the accelerations are then constant",
-                  tuple(sp.Eq(c.a, a) for c, a in accelerations.items() if a != 0)),
+                  tuple(sp.Eq(c.a, a) for c, a in accelerations.items() if a != 0), sentences=_slipping_said(part)),
              timing,
              Step("Then, at constant accelerations, each rate changes in proportion to the time",
                   tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0)))
@@ -103,6 +109,16 @@ def _named(part) -> str:
 
 
 def _friction(part) -> str:
+    return "the kinetic couple" if isinstance(part, SlippingClutch) else "kinetic friction"
+
+
+def _slipping_said(part) -> tuple[Sentence, ...]:
+    """Why the accelerations are constant while `part` slips, in words with its symbols."""
+    then = ": so the accelerations are constant, and every rate changes in proportion to the time."
     if isinstance(part, SlippingClutch):
-        return f"the kinetic couple {sp.sstr(part.couple)}"
-    return f"kinetic friction {sp.sstr(part.kinetic)} N"
+        return (Sentence((f"While the plates of {part.title} slip, they rub with the kinetic couple ", part.couple,
+                          ", against the way they slip at the start and the same at every instant", then)),)
+    normal = part.unknowns()["normal"]
+    return (Sentence((f"While the {part.body} slides on the {part.surface}, kinetic friction, ", part.kinetic * normal,
+                      ", opposes its slip the way it slips at the start, with the coefficient of kinetic friction "
+                      "times the normal force", then)),)

@@ -51,7 +51,7 @@ import sympy as sp
 from derive.mechanics.derivation import Step, solve_linear, tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.lagrange import energies
-from derive.parts import AppliedForce, AppliedTorque, Part, Sign
+from derive.parts import AppliedForce, AppliedTorque, Part, Sign, titled
 from derive.parts.clutch import Clutch
 from derive.parts.pin import Pin
 from derive.parts.weld import Weld
@@ -79,6 +79,10 @@ class Touch(Part):
 
     def bodies(self) -> tuple[str, ...]:
         return (self.body,) if self.to is None else (self.body, self.to)
+
+    @property
+    def title(self) -> str:
+        return f"the bounce {self.name}"
 
     def unknowns(self) -> dict[str, sp.Symbol]:
         impulse = {"impulse": sp.Symbol(f"J^{self.name}", real=True)}
@@ -431,7 +435,7 @@ def conserved(scene: Scene, coords: Coordinates, before: dict, after: dict) -> S
     pins to the ground and a bounce's touch on a surface all at one point (a hinge, an axle, where
     a ball strikes the floor), the angular momentum about it; with another joint to the ground (a
     block's floor, a weld), none is named (None)."""
-    grounded = [p for p in scene.constraints if len(p.bodies()) == 1]
+    grounded = outside(scene)
     if any(not isinstance(p, (Pin, Touch)) for p in grounded):
         return None
     at = {c.q: before[c.q] for c in coords.all}
@@ -456,8 +460,70 @@ def conserved(scene: Scene, coords: Coordinates, before: dict, after: dict) -> S
     L, px, py = sp.Symbol("L_O"), sp.Symbol("p_x"), sp.Symbol("p_y")  # L_O: not the length L
     if grounded:
         joint = "pin" if isinstance(grounded[0], Pin) else "point of contact"
-        where = f"about the {joint} at {sp.sstr(tuple(about))}, where the only impulse from outside acts"
-        return Step(f"Check: the angular momentum {where}, before and after", (sp.Eq(L, l0), sp.Eq(L, l1)))
+        where = f"about the {joint}, where the only impulse from outside acts"
+        said = Sentence((f"The only impulse from outside the bodies is that of {titled(grounded)}, at ",
+                         sp.Tuple(*about), f": {'its force passes' if len(grounded) == 1 else 'their forces pass'} "
+                         "through that point, so it has no moment about it, and the angular momentum about that "
+                         "point is conserved through the impact."))
+        return Step(f"Check: the angular momentum {where}, before and after", (sp.Eq(L, l0), sp.Eq(L, l1)),
+                    sentences=(said,))
+    said = Sentence(("No joint holds a body to the ground, so no impulse comes from outside the bodies: their "
+                     "momentum, and their angular momentum about any point (here the origin), are conserved through "
+                     "the impact.",))
     return Step("Check: no impulse from outside, so the momentum and the angular momentum about the origin, before "
                 "and after", (sp.Eq(px, px0), sp.Eq(px, px1), sp.Eq(py, py0), sp.Eq(py, py1), sp.Eq(L, l0),
-                              sp.Eq(L, l1)))
+                              sp.Eq(L, l1)), sentences=(said,))
+
+
+def said(event: Event, made: Part, scene: Scene, kept: bool) -> tuple[Sentence, ...]:
+    """The impact of `event`, which made the joint `made` in `scene` (with it), in words with its
+    symbols: what an instant lets give impulses, what the joint does after (sticks, locks, or
+    bounces by Newton's law of restitution), and, where `kept` is False, why no momentum is named.
+
+    >>> pin = Pin("struck", "bullet", (0, 0), "rod", (0, 0))
+    >>> [s.words for s in said(Event("stick", "bullet", "rod"), pin, Scene({}, (pin,)), True)][1]
+    'The bullet sticks to the rod where it strikes it: from then on the pin struck holds it there, and the two move together (a perfectly inelastic impact).'
+    """
+    joints = list(scene.constraints)
+    result = [Sentence((f"The impact lasts an instant: the bodies do not move during it, and forces that stay finite, "
+                        f"such as weights, springs and given loads, give no impulse; only the joints' forces do, "
+                        f"{'that' if len(joints) == 1 else 'those'} of {titled(joints)}.",))]
+    body, to = event.body, event.to
+    if isinstance(made, Pin):
+        result.append(Sentence((f"The {body} sticks to the {to} where it strikes it: from then on {made.title} holds "
+                                "it there, and the two move together (a perfectly inelastic impact).",)))
+    elif isinstance(made, Weld):
+        result.append(Sentence((f"The {body} sticks to the {to}: from then on {made.title} holds them together, and "
+                                "they move as one body (a perfectly inelastic impact).",)))
+    elif isinstance(made, Clutch):
+        result.append(Sentence((f"The {body} and the {to} lock together: from then on {made.title} holds their angles "
+                                "together, and they turn as one.",)))
+    else:
+        result.append(Sentence(("By Newton's law of restitution the two points separate along the normal just after at ",
+                                event.restitution, " times the rate at which they approached.")))
+        if event.grips:
+            result.append(Sentence(("The contact grips: its tangential rate is zero just after.",)))
+        elif event.friction is not None:
+            held, sliding = event.friction
+            result.append(Sentence(("The contact is rough: it grips where friction can hold it, its tangential impulse "
+                                    "at most ", held, " times the normal one in size; elsewhere it slides throughout, "
+                                    "its tangential impulse ", sliding, " times the normal one.")))
+    if not kept:
+        grounded = outside(scene)
+        result.append(Sentence((f"The impulse from outside the bodies, of {titled(grounded)}, does not act at one pin: "
+                                "no momentum is named as conserved, and the impulse equations alone give the velocities.",)))
+    return tuple(result)
+
+
+def lost_said(event: Event) -> Sentence:
+    """Why the impact of `event` takes kinetic energy, in words."""
+    if event.kind == "bounce":
+        return Sentence(("Kinetic energy is conserved only in an elastic bounce, with ", event.restitution, " equal to "
+                         "1, and without friction: otherwise the bounce takes the difference below.",))
+    return Sentence(("Kinetic energy is not conserved where bodies stick: the impact brings them to one motion, and "
+                     "the joint's impulses take the difference below.",))
+
+
+def outside(scene: Scene) -> list[Part]:
+    """The joints that hold a body to the ground: their impulses come from outside the bodies."""
+    return [p for p in scene.constraints if len(p.bodies()) == 1]

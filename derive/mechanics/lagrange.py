@@ -63,25 +63,28 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         equations.append(sp.Eq(lhs, rhs))
     rates = [coords.ddt(gap) for gap, _ in pairs]
     unknowns = coords.accelerations + [force for _, force in pairs]
-    # The equations stay general (unexpanded: a cord's exact geometry makes them long); the steps
-    # show them where the answers are read, in the reference configuration at rest.
-    rest = coords.at_rest_in_reference()
-    steps = [
-        Step("Kinetic and potential energy", (sp.Eq(KINETIC, kinetic), sp.Eq(POTENTIAL, potential)),
-             sentences=tuple(part_sentences(scene, coords, "lagrange"))),
-        Step("The Lagrangian, kinetic less potential energy", (sp.Eq(LAGRANGIAN, lagrangian),)),
-    ]
-    shown = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in rates])
-    if pairs:
-        steps.append(Step("The constraints, each held by a multiplier equal to the force it exerts (their rates, "
-                          "in the reference configuration" + FIXED_LEFT_OUT + ")", shown))
-    derivation = Derivation("lagrange", equations, unknowns, steps, rates, coords, [gap for gap, _ in pairs])
-    steps.append(Step("The Euler–Lagrange equation of each coordinate: the rate of change of its generalized momentum, "
-                      "less the Lagrangian's derivative in it, equals the applied forces and the constraint forces along "
-                      "it (in the reference configuration, at rest)", tuple(at_state(e, rest) for e in equations),
-                      role="equations"))
-    if shown:
-        steps.append(Step("Constraints at acceleration level",
-                          worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
-                          role="equations"))
-    return derivation
+
+    def written(derivation: Derivation) -> list[Step]:
+        # The equations stay general (unexpanded: a cord's exact geometry makes them long); the
+        # steps show them where the answers are read, in the reference configuration at rest.
+        rest = coords.at_rest_in_reference()
+        steps = [
+            Step("Kinetic and potential energy", (sp.Eq(KINETIC, kinetic), sp.Eq(POTENTIAL, potential)),
+                 sentences=tuple(part_sentences(scene, coords, "lagrange"))),
+            Step("The Lagrangian, kinetic less potential energy", (sp.Eq(LAGRANGIAN, lagrangian),)),
+        ]
+        shown = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in rates])
+        if pairs:
+            steps.append(Step("The constraints, each held by a multiplier equal to the force it exerts (their rates, "
+                              "in the reference configuration" + FIXED_LEFT_OUT + ")", shown))
+        steps.append(Step("The Euler–Lagrange equation of each coordinate: the rate of change of its generalized "
+                          "momentum, less the Lagrangian's derivative in it, equals the applied forces and the "
+                          "constraint forces along it (in the reference configuration, at rest)",
+                          tuple(at_state(e, rest) for e in equations), role="equations"))
+        if shown:
+            steps.append(Step("Constraints at acceleration level",
+                              worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
+                              role="equations"))
+        return steps
+
+    return Derivation("lagrange", equations, unknowns, written, rates, coords, [gap for gap, _ in pairs])

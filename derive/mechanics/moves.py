@@ -57,7 +57,7 @@ import sympy as sp
 from derive.mechanics.derivation import Step, solve_linear, tidy
 from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, generalized_forces
-from derive.parts import AppliedForce, AppliedTorque, Part
+from derive.parts import AppliedForce, AppliedTorque, Part, titled
 from derive.parts.pin import Pin
 from derive.prose import Sentence
 from derive.scene import Event, Scene
@@ -232,6 +232,10 @@ class _Couple(Part):
     def bodies(self) -> tuple[str, ...]:
         return (self.body, self.to)
 
+    @property
+    def title(self) -> str:
+        return "the couple"
+
     def power(self, coords) -> sp.Expr:
         return self.torque * (coords.angular_velocity(self.body) - coords.angular_velocity(self.to))
 
@@ -294,12 +298,51 @@ def _after(scene: Scene, after: Scene, coords: Coordinates, before: dict, kept: 
     values = {**positions, **{c.u: tidy(solution.raw[c.u], scene.placed) for c in coords.all}}
     fixed = len(conditions) + len(extra)
     used = [(kept[i - fixed], equations[i]) for i in chosen if i >= fixed]
+    kinds = {"angular momentum" if s.about is not None else "momentum" for s, _ in used}
     steps = (Step(f"Forces from outside the moving bodies have no moment (no component) here, so the {what} keeps "
-                  + "; ".join(s.describe(scene) for s, _ in used) + " (before, and after)",
-                  tuple(eq for s, e in used for eq in (sp.Eq(s.symbol, e.rhs), sp.Eq(s.symbol, tidy(e.lhs))))),
+                  f"the {' and the '.join(sorted(kinds))} below (before, and after)",
+                  tuple(eq for s, e in used for eq in (sp.Eq(s.symbol, e.rhs), sp.Eq(s.symbol, tidy(e.lhs)))),
+                  sentences=tuple(kept_said(scene, coords, s, route, what) for s, _ in used)),
              *steps,
              Step(f"After the {what}", tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0)))
     return Moved(values, tuple(s for s, _ in used), steps, loose)
+
+
+def kept_said(scene: Scene, coords: Coordinates, symmetry: Symmetry, route: str, what: str) -> Sentence:
+    """Why a move or a turn (`what`) keeps the momentum of `symmetry`, as `route` proves it: by
+    Lagrange, Noether's theorem (the rigid motion changes no gap and the loads do no work along
+    it); by Newton–Euler, the moments of the parts' forces on the moved bodies (from outside
+    them, none about the point; between them, equal and opposite).
+
+    >>> from derive.scene import Body
+    >>> m, M, R = sp.symbols("m M R", positive=True)
+    >>> scene = Scene({"platform": Body("platform", "disk", M, {"radius": R}, M * R**2 / 2),
+    ...                "child": Body("child", "point", m, {}, at=(R, 0))},
+    ...               (Pin("axle", "platform", (0, 0)), Pin("feet", "child", (0, 0), "platform", (R, 0))))
+    >>> kept_said(scene, Coordinates(scene), Symmetry(("platform", "child"), about=(0, 0)), "newton_euler", "move").words
+    'The forces on the platform and the child from outside them, those of the axle, have no moment about , whatever their sizes, and those between them come in equal and opposite pairs: so their angular momentum about that point is the same before and after the move, however it is made.'
+    """
+    who = "the whole scene" if len(symmetry.moved) == len(scene.bodies) else " and ".join(
+        f"the {n}" for n in symmetry.moved)
+    if symmetry.about is not None:
+        motion, where, kept = ("Turning ", (" rigidly about ", sp.Tuple(*symmetry.about)),
+                               "angular momentum about that point")
+    else:
+        motion, where, kept = ("Shifting ", (f" rigidly along {symmetry.along}",), f"momentum along {symmetry.along}")
+    then = f" is the same before and after the {what}, however it is made."
+    if route == "lagrange":
+        gaps = titled(scene.constraints) if scene.constraints else "no part"
+        named = kept.replace("momentum", f"momentum of {who}", 1)
+        return Sentence((f"{motion}{who}", *where, f" changes none of the gaps of {gaps}, and the loads do no work "
+                         f"along it: by Noether's theorem the momentum of that motion, the {named},{then}"))
+    moved = set(symmetry.moved)
+    pushing = [p for p in scene.parts if any(load.body in moved for load in p.loads(coords))
+               and not (len(set(p.bodies())) > 1 and set(p.bodies()) <= moved)]  # a part between two of them: inside
+    from_outside = f", those of {titled(pushing)}," if pushing else ""
+    effect = "have no moment about " if symmetry.about is not None else f"have no component along {symmetry.along}"
+    return Sentence((f"The forces on {' and '.join(f'the {n}' for n in symmetry.moved)} from outside them{from_outside} "
+                     f"{effect}", *(where[1:] if symmetry.about is not None else ()), ", whatever their sizes, and "
+                     f"those between them come in equal and opposite pairs: so their {kept}{then}"))
 
 
 def _placed(scene: Scene, coords: Coordinates, before: dict, event: Event, kept: list[Symmetry]) -> dict:

@@ -35,10 +35,7 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
     the reference configuration, at rest)."""
     coords = coords or Coordinates(scene)
     loads = all_forces(scene, coords)
-    rest = coords.at_rest_in_reference()
-    sentences = part_sentences(scene, coords, "newton_euler")
-    steps = []
-    equations = []
+    equations, balanced = [], []  # balanced: (body, its balances, the labels of its forces)
     for body in scene.bodies.values():
         on_body = [f for f in loads if f.body == body.name]
         forces = [f for f in on_body if isinstance(f, AppliedForce)]
@@ -52,22 +49,27 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
             torque += sum((f.torque for f in on_body if isinstance(f, AppliedTorque)), sp.Integer(0))
             balances.append(sp.Eq(body.inertia * coords.of(body.name, "theta").a, torque))
         equations += balances
-        labels = ", ".join(sorted({f.label for f in on_body})) or "none"
-        steps.append(Step(f"Forces and torques on the {body.name} ({labels})",
-                          tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances), role="equations",
-                          body=body.name,
-                          sentences=tuple(s for s in sentences if s.body == body.name)))
+        balanced.append((body, balances, ", ".join(sorted({f.label for f in on_body})) or "none"))
     conditions = [v for c in scene.constraints for v in c.conditions(coords)]
     unknowns = coords.accelerations + [f for c in scene.constraints for f in c.unknowns().values()]
-    derivation = Derivation("newton_euler", equations, unknowns, steps, conditions, coords)
-    velocities = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in conditions])
-    kinematic = tuple(s for s in sentences if s.body is None)
-    if velocities:
-        steps += [Step("Kinematic constraints on the velocities (in the reference configuration" + FIXED_LEFT_OUT + ")",
-                       velocities, sentences=kinematic),
-                  Step("and, their rates, on the accelerations",
-                       worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
-                       role="equations")]
-    elif kinematic and steps:  # every constraint only holds a coordinate fixed: said with the last balance
-        steps[-1] = dataclasses.replace(steps[-1], sentences=steps[-1].sentences + kinematic)
-    return derivation
+
+    def written(derivation: Derivation) -> list[Step]:
+        rest = coords.at_rest_in_reference()
+        sentences = part_sentences(scene, coords, "newton_euler")
+        steps = [Step(f"Forces and torques on the {body.name} ({labels})",
+                      tuple(sp.Eq(e.lhs, simplest(e.rhs.xreplace(rest))) for e in balances), role="equations",
+                      body=body.name, sentences=tuple(s for s in sentences if s.body == body.name))
+                 for body, balances, labels in balanced]
+        velocities = worth_showing([sp.Eq(simplest(v.xreplace(rest_positions(coords))), 0) for v in conditions])
+        kinematic = tuple(s for s in sentences if s.body is None)
+        if velocities:
+            steps += [Step("Kinematic constraints on the velocities (in the reference configuration" + FIXED_LEFT_OUT
+                           + ")", velocities, sentences=kinematic),
+                      Step("and, their rates, on the accelerations",
+                           worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
+                           role="equations")]
+        elif kinematic and steps:  # every constraint only holds a coordinate fixed: said with the last balance
+            steps[-1] = dataclasses.replace(steps[-1], sentences=steps[-1].sentences + kinematic)
+        return steps
+
+    return Derivation("newton_euler", equations, unknowns, written, conditions, coords)

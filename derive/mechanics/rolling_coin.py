@@ -184,6 +184,59 @@ def steady(I1, I3, mass, g, radius, tilt, circle, route: str) -> dict:
             **{k: sp.simplify(tidy(v.subs(at_rate))) for k, v in found.items()}}
 
 
+def _in_ground(found: dict, now: dict) -> dict:
+    """omega, L about G (I1, I3 in the lean frame), v_G and the lean frame's axes (columns) in N at
+    the instant the heading is N.x (psi = 0), the coordinates and rates at `now`."""
+    ground, _, lean = found["frames"]
+    at = {**now, _coordinates()[0]: 0}
+
+    def column(vector):
+        return sp.Matrix([tidy(me.msubs(vector.dot(e), at)) for e in ground])
+
+    return {"omega": column(found["omega"]), "velocity": column(found["velocity"]), "lean": lean,
+            "momentum": column(me.inertia(lean, found["I1"], found["I3"], found["I1"]).dot(found["omega"])),
+            "axes": sp.Matrix.hstack(*(column(e) for e in lean)), "column": column}
+
+
+def steady_vectors(I1, I3, mass, g, radius, tilt, circle, route: str = "lagrange") -> dict:
+    """The steady motion on a circle (`steady`) at the instant the heading is N.x, in N: omega, L
+    about G, v_G, the lean frame's axes (columns: the heading, the symmetry axis, P to G), G from
+    the contact point P and the circle's center from P.
+
+    >>> m, g, a, R, th = sp.symbols("m g a R theta", positive=True)
+    >>> found = steady_vectors(m * a**2 / 4, m * a**2 / 2, m, g, a, th, R)
+    >>> found["center"].T, found["axis"].T
+    (Matrix([[0, -a*sin(theta), a*cos(theta)]]), Matrix([[0, -R, 0]]))
+    """
+    found = {**motion(I1, I3, mass, g, radius, route), "I1": I1, "I3": I3}
+    rates = steady(I1, I3, mass, g, radius, tilt, circle, route)
+    spin_rate = rates["spin_rate"].subs(OMEGA, rates["precession"])
+    now = {**{c.diff(_T, 2): 0 for c in _coordinates()}, **_steady_angles(tilt, rates["precession"], spin_rate)}
+    vectors = _in_ground(found, now)
+    lean, heading = vectors.pop("lean"), found["frames"][1]
+    column = vectors.pop("column")
+    return {**vectors, "center": column(radius * lean.z), "axis": column(-circle * heading.y)}
+
+
+def upright_vectors(I1, I3, mass, g, radius, route: str = "lagrange") -> dict:
+    """Upright rolling along N.x at a unit spin (directions only), in N: omega, L about G, v_G and
+    the lean frame's axes (columns), as `steady_vectors`.
+
+    >>> m, g, a = sp.symbols("m g a", positive=True)
+    >>> found = upright_vectors(m * a**2 / 4, m * a**2 / 2, m, g, a)
+    >>> found["omega"].T, found["velocity"].T
+    (Matrix([[0, 1, 0]]), Matrix([[a, 0, 0]]))
+    """
+    found = {**motion(I1, I3, mass, g, radius, route), "I1": I1, "I3": I3}
+    psi, theta, phi = _coordinates()
+    now = {**{c.diff(_T, 2): 0 for c in _coordinates()}, theta.diff(_T): 0, psi.diff(_T): 0, theta: 0}
+    forward = me.msubs(found["velocity"].dot(found["frames"][0].x), {**now, phi.diff(_T): 1, psi: 0})
+    now[phi.diff(_T)] = sp.sign(tidy(forward))
+    vectors = _in_ground(found, now)
+    vectors.pop("lean"), vectors.pop("column")
+    return vectors
+
+
 def _steady_angles(tilt, heading_rate, spin_rate) -> dict:
     psi, theta, phi = _coordinates()
     return {theta.diff(_T): 0, psi.diff(_T): heading_rate, phi.diff(_T): spin_rate, theta: tilt}

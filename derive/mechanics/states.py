@@ -37,9 +37,11 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.derivation import KINETIC, Derivation, Step, root, tidy
+from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
+from derive.parts import listed, titled
+from derive.prose import Sentence, capital
 from derive.scene import TIME, Scene
 
 #: Points between the start and a state where the motion must still move (the kinetic energy
@@ -106,8 +108,14 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     elif any(tidy(r) != 0 for r in rows):
         raise StateError("the rates break a constraint: no motion of the scene has them")
     values = {**placement, **given, **solved}
+    said = [Sentence(("The motion starts where the bodies are placed, at the rates given: ",
+                      *listed([sp.Eq(u, v) for u, v in given.items()]), "."))]
+    if solved:
+        one = len(scene.constraints) == 1
+        said.append(Sentence((f"{capital(titled(scene.constraints))} hold{'s' * one} at every instant, so the rates of "
+                              f"{'its' if one else 'their'} gaps are zero too: that fixes the other rates.",)))
     steps = (Step("The placement, moving at the given rates (the constraints give the others)",
-                  tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0)),)
+                  tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0), sentences=tuple(said)),)
     return Reached(values, (), steps)
 
 
@@ -128,10 +136,12 @@ class Stops:
 class Vanishes:
     """The state where a constraint force first falls to zero: a body leaves its surface (the
     normal force), a cord goes slack (its tension); or an expression of the forces does: where a
-    grip fails, mu_s^2 N^2 - f^2 (zero where |f| = mu_s N, N > 0; smooth, unlike |f|)."""
+    grip fails, mu_s^2 N^2 - f^2 (zero where |f| = mu_s N, N > 0; smooth, unlike |f|). `said`:
+    what holds while it is positive, and what happens where it falls to zero, in words."""
 
     force: sp.Expr
     meaning: str  # "the normal force N^bead", for the steps
+    said: tuple[Sentence, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -150,6 +160,7 @@ class Path:
     kinetic: sp.Expr
     line: tuple | None = None  # on a line: where the state is, and the sign function (see `frozen`)
     leaves: sp.Expr | None = None  # the start's rate (from rest, acceleration) in s, whose sign is `direction`
+    work: tuple[Sentence, ...] = ()  # what does work along it, and the principle that gives `kinetic`
 
     @property
     def s(self) -> sp.Symbol:
@@ -268,7 +279,52 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     s0 = start[s]
     energy = kinetic.xreplace(start) + potential.xreplace(start) - antiderivative.xreplace({s: s0})
     along = tidy(energy - potential.xreplace(positions) + antiderivative)
-    return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along, leaves=leaves)
+    return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along, leaves=leaves,
+                work=work_said(scene, coords, s))
+
+
+def work_said(scene: Scene, coords: Coordinates, s: sp.Symbol) -> tuple[Sentence, ...]:
+    """What does work along a motion in `s`, said from the scene's parts: the constraints none
+    (each holds a gap at zero, and its force's power is its multiplier times the gap's rate),
+    gravity and springs through the potential energy, the other loads through the work of forces
+    that depend on the configuration alone; and the principle that follows (energy is conserved,
+    or the work-energy theorem).
+
+    >>> from derive.parts.gravity import Gravity
+    >>> from derive.parts.pin import Pin
+    >>> from derive.scene import Body
+    >>> m, L, g = sp.symbols("m L g", positive=True)
+    >>> rod = Body("rod", "rod", m, {"length": L}, m * L**2 / 12, at=(L / 2, 0), angle=0)
+    >>> scene = Scene({"rod": rod}, (Pin("hinge", "rod", (-L / 2, 0)),), Gravity(g))
+    >>> [s.words for s in work_said(scene, Coordinates(scene), sp.Symbol("theta_rod"))]  # doctest: +NORMALIZE_WHITESPACE
+    ["The pin hinge does no work: it holds a gap at zero, and the power of its force is its multiplier times
+    the gap's rate, zero.", 'Gravity stores potential energy: its work is the drop in .', 'So energy is
+    conserved: the kinetic energy at each  is the one at the start plus the drop in the potential energy  since
+    the start.']
+    """
+    held = list(scene.constraints)
+    loads = [p for p in scene.parts[len(held):]]
+    stored = [p for p in loads if p.potential(coords) != 0]
+    working = [p for p in loads if p.power(coords) != 0]
+    said = []
+    if held:
+        each = "it holds" if len(held) == 1 else "each holds"
+        said.append(Sentence((f"{capital(titled(held))} {'does' if len(held) == 1 else 'do'} no work: {each} a gap at "
+                              "zero, and the power of its force is its multiplier times the gap's rate, zero.",)))
+    if stored:
+        said.append(Sentence((f"{capital(titled(stored))} {'stores' if len(stored) == 1 else 'store'} potential energy: "
+                              f"{'its' if len(stored) == 1 else 'their'} work is the drop in ", POTENTIAL, ".")))
+    said += [Sentence((f"{capital(p.title)} does work at the rate ", tidy(p.power(coords)), ", its force depending on "
+                       "the configuration alone: its work is that force's integral along ", s, ".")) for p in working]
+    dropped = ("the drop in the potential energy ", POTENTIAL, " since the start") if stored else ()
+    if working:
+        said.append(Sentence(("So, by the work-energy theorem, the kinetic energy at each ", s, " is the one at the start "
+                              "plus ", *dropped, *((" and ",) if dropped else ()), f"the work of {titled(working)} since "
+                              "the start.")))
+    else:
+        said.append(Sentence(("So energy is conserved: the kinetic energy at each ", s, " is the one at the start",
+                              *((" plus ", *dropped) if dropped else ()), ".")))
+    return tuple(said)
 
 
 def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation: Derivation, decide,
@@ -308,9 +364,12 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     path = dataclasses.replace(path, line=(reached.end, decide))
     moved = tuple(sp.Eq(c.q - start[c.q], ratios[c] * (s - s0)) for c in coords.all if c != along and ratios[c] != 0)
     kinetic = reached.steps[0].equations
-    steps = (Step(f"From the start the scene moves along a straight line of its coordinates: each in proportion to "
-                  f"{s}, as the accelerations there are, and they stay so along it (the constraints hold and the "
-                  "forces keep the proportions); the kinetic energy in its rate", (*moved, *kinetic)),
+    steps = (Step("From the start the scene moves along a straight line of its coordinates: each in proportion to "
+                  "one of them, as the accelerations there are, and they stay so along it (the constraints hold and "
+                  "the forces keep the proportions); the kinetic energy in its rate", (*moved, *kinetic), sentences=(Sentence((
+                      f"The constraints leave the scene {free} degrees of freedom, but from the start it moves along a "
+                      "straight line of its coordinates: every coordinate follows from ", s, " on it, and the kinetic "
+                      "energy is a function of it times the square of its rate.")),)),
              *reached.steps[1:])
     return Reached(reached.values, reached.positive + tuple(extents), steps, path, reached.end, reached.vanished)
 
@@ -389,10 +448,11 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
     and the steps that found it."""
     s, speed, s0 = path.s, path.coordinate.u, path.start[path.s]
     symbol = KINETIC
-    steps = [Step(f"The constraints leave one coordinate, {s}; the kinetic energy in its rate",
-                  (sp.Eq(symbol, path.inertia * speed**2),)),
-             Step("Work and energy from the start: the constraints do no work, gravity and springs through the potential energy, "
-                  "the other loads through their work", (sp.Eq(symbol, path.kinetic),))]
+    steps = [Step("The constraints leave one coordinate; the kinetic energy in its rate",
+                  (sp.Eq(symbol, path.inertia * speed**2),), sentences=(Sentence((
+                      "The constraints leave the scene one degree of freedom: every coordinate follows from ", s,
+                      ", and the kinetic energy is a function of it times the square of its rate.")),)),
+             Step("Work and energy from the start", (sp.Eq(symbol, path.kinetic),), sentences=path.work)]
     vanished = ()
     if isinstance(condition, Gets):
         position = path.positions[condition.coordinate.q]
@@ -408,10 +468,14 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
         function = path.kinetic
         s1 = _first(sp.Eq(path.kinetic, 0), function, path, decide,
                     "the motion does not stop: it goes on (over the top, or forever)")
-        steps.append(Step("It stops where its kinetic energy is zero", (sp.Eq(s, s1),)))
+        way = "increasing" if path.direction > 0 else "decreasing"
+        steps.append(Step("It stops where its kinetic energy is zero", (sp.Eq(s, s1),), sentences=(Sentence((
+            "A turning point: the motion, with ", s, f" {way}, stops at its first value ahead of the start where the "
+            "kinetic energy has fallen to zero, and every rate with it.")),)))
     else:
         force = along(path, condition.force, derivation)
-        steps.append(Step(f"Along the way, {condition.meaning}", (sp.Eq(condition.force, force),)))
+        steps.append(Step(f"Along the way, {condition.meaning}", (sp.Eq(condition.force, force),),
+                          sentences=condition.said))
         function = force
         s1 = _first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
         steps.append(Step("It falls to zero at", (sp.Eq(s, s1),)))
@@ -442,8 +506,10 @@ def _arrive(path: Path, condition, derivation: Derivation, decide) -> Reached:
         raise StateLimit(f"find the state: its formula {s} = {sp.sstr(s1)} does not hold at the middle of the ranges")
     positive[:0] = guard
     if not isinstance(condition, Stops):
-        steps.append(Step(f"So, moving {'forward' if path.direction > 0 else 'backward'} in {s}",
-                          (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate))))
+        steps.append(Step("So, at the state", (sp.Eq(symbol, tidy(arrived)), sp.Eq(speed, rate)), sentences=(Sentence((
+            "The motion goes the way it leaves the start, with ", s,
+            f" {'increasing' if path.direction > 0 else 'decreasing'}, so its rate at the state is the root of the "
+            "kinetic energy there of that sign.")),)))
     return Reached(values, tuple(positive), tuple(steps), path, s1, vanished)
 
 

@@ -34,6 +34,7 @@ contributes, and register its problem-file key in `derive.scene_file` (docs/desi
 from __future__ import annotations
 
 from dataclasses import dataclass
+import re
 
 import sympy as sp
 
@@ -79,6 +80,12 @@ class Part:
     def bodies(self) -> tuple[str, ...]:
         """The bodies this part couples or acts on."""
         return ()
+
+    @property
+    def title(self) -> str:
+        """How a sentence names it: its kind and its name (the cord rope, the torque torque1)."""
+        kind = re.sub(r"(?<=[a-z])(?=[A-Z])", " ", type(self).__name__).lower()
+        return f"the {kind} {getattr(self, 'name', '')}".rstrip()
 
     def unknowns(self) -> dict[str, sp.Symbol]:
         """The constraint forces it exerts, by the names an answer asks for (`tension`, ...)."""
@@ -164,6 +171,16 @@ def at_placement(expression: sp.Expr, coords) -> sp.Expr:
     if sp.count_ops(expression) >= SHORT:
         return sp.expand(expression)
     return sp.factor(sp.cancel(sp.trigsimp(expression)))
+
+
+def titled(parts) -> str:
+    """The parts named as a list reads, each by its title.
+
+    >>> from derive.parts.gravity import Gravity
+    >>> titled([Gravity(sp.Symbol("g")), Part()])
+    'gravity and the part'
+    """
+    return "".join(listed([p.title for p in parts]))
 
 
 def listed(items: list) -> tuple:

@@ -56,6 +56,10 @@ class Contact(Part):
         return (self.body,) if self.carrier is None else (self.body, self.carrier)
 
     @property
+    def title(self) -> str:
+        return f"the {self.body}'s contact with the {self.surface}"
+
+    @property
     def has_friction(self) -> bool:
         """The file gives a coefficient: derive.mechanics.friction decides the regime."""
         return self.static is not None or self.kinetic is not None

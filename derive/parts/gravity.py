@@ -28,6 +28,10 @@ class Gravity(Part):
     g: sp.Expr
     name: str = "gravity"
 
+    @property
+    def title(self) -> str:
+        return "gravity"
+
     def potential(self, coords) -> sp.Expr:
         return sum((b.mass * self.g * (coords.position(n)[1] - b.at[1]) for n, b in coords.scene.bodies.items()),
                    sp.Integer(0))
