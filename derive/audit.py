@@ -2,7 +2,8 @@
 
 For each problem: the independent routes (Lagrange and Newton–Euler, energy, conservation
 and impulses, integration and the parallel-axis theorem, ...), the dimensions of every
-answer, and a numerical simulation where the scene moves.
+answer, and a numerical simulation where the scene moves (of a chain of states, each of its
+motion segments from the state the link before produced: derive.chain_simulation).
 
 >>> rows = audit(["rod_endpoint"])
 >>> rows[0].passed, rows[0].routes
@@ -13,7 +14,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 
-from derive import library, problem, simulate, simulate_solid
+from derive import chain_simulation, library, problem, simulate, simulate_solid
 from derive.answers import Solution
 from derive.crosschecks import CheckFailure
 from derive.scene import DYNAMIC_KINDS
@@ -56,12 +57,19 @@ def _audit_one(reference: str, begin) -> Row:
         row.dimensions = "ok"
         row.routes = ", ".join(c.name for c in checks if c.name != "dimensions") or "-"
         kinds = {a.quantity.kind for a in p.asks.values()}
-        reports = ([simulate.check(solution)] if kinds & DYNAMIC_KINDS else []) + (
+        moving = bool(kinds & DYNAMIC_KINDS)
+        reports = ([simulate.check(solution)] if moving else []) + (
+            [chain_simulation.simulate(solution)] if moving and solution.scene.states else []) + (
             [simulate_solid.check(solution)] if kinds & simulate_solid.KINDS else [])
         if reports:
             passed = all(r.passed for r in reports)
             compared = ", ".join(dict.fromkeys(n for r in reports for n in r.compared))
             row.simulation = ("ok: " + compared if compared else "-") if passed else "FAILED"
+            unchecked: dict[str, list[str]] = {}
+            for what, why in (u for r in reports for u in r.unchecked):
+                unchecked.setdefault(why, []).append(what)
+            if unchecked:
+                row.simulation += "; not simulated: " + "; ".join(f"{', '.join(w)} ({why})" for why, w in unchecked.items())
             row.figures = tuple(f for r in reports for f in r.figures)
             if not passed:
                 row.passed, row.failure = False, "; ".join(n for r in reports for n in r.notes)
@@ -103,7 +111,8 @@ class Spread:
 
 def stress(references: list[str] | None, seeds: int, progress: Reporter = Reporter()) -> tuple[list[Spread], list[str]]:
     """Draw each problem's parameters with `seeds` seeds: every draw must meet the problem's
-    conditions and give a key equal to `derive solve` at those parameters."""
+    conditions and give a key equal to `derive solve` at those parameters, and a chain of states
+    must simulate to its closed forms at it (derive.chain_simulation)."""
     import random
 
     from derive import report, worksheets
@@ -123,6 +132,9 @@ def stress(references: list[str] | None, seeds: int, progress: Reporter = Report
                 failures.append(str(error))
                 break
             on_bound += any(q.range is not None and draw[n] in q.range for n, q in p.parameters.items())
+            if solution.scene.states:  # the chain simulated at the variant's values, as a sheet gives it
+                chain = chain_simulation.simulate(solution, worksheets.si_values(p, draw))
+                failures += [f"{p.id} seed {seed}: chain simulation: {note}" for note in chain.notes]
             item = worksheets._ProblemVariants(p, solution, [draw])
             key = item.answers(draw)
             given = p.values({n: str(draw[n]) for n, q in p.parameters.items() if q.range is not None})

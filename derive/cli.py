@@ -275,7 +275,7 @@ def list_problems(topic: str | None) -> None:
 @click.argument("problems", nargs=-1)
 @click.option("--seeds", type=click.IntRange(1, 10000), default=None,
               help="Instead: draw each problem's parameters with N seeds and check every draw (conditions "
-                   "met, key equal to derive solve); print each answer's range.")
+                   "met, key equal to derive solve, a chain of states simulated); print each answer's range.")
 @progress_option
 @reports_errors
 def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
@@ -283,8 +283,8 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
 
     For each problem: the independent routes of derivation (Lagrange and Newton–Euler,
     energy, conservation and impulses, integration and the parallel-axis theorem, ...),
-    the dimensions of every answer, and a numerical simulation where the scene moves.
-    Exit status 1 if any check fails.
+    the dimensions of every answer, and a numerical simulation where the scene moves (a
+    chain of states link by link). Exit status 1 if any check fails.
 
     \b
     Examples:

@@ -202,20 +202,13 @@ class CrossChecks:
                 (self._move_check if state.event.kind in ("move", "turn") else self._impact_check)(name)
                 impacts += 1
                 continue
-            gripping = state.until is not None and state.until[0] == "grips"  # the motion: with the clutch slipping
-            newton_euler = self.derivations_in(state.start if gripping else name)["newton_euler"]
+            newton_euler = self.derivations_to(name)["newton_euler"]  # to a grip: with the part slipping
             reached = self.states[name]
             start = reached.path.start if reached.path else self.states[state.start].values
             time = self._duration(name)[0]
             exprs = [*reached.values.values(), *start.values(), time,
                      *(e.lhs - e.rhs for e in newton_euler.balances)]
-            symbols = set().union(*(e.free_symbols for e in exprs), *(c.free_symbols for c, _, _ in self.conditions))
-            symbols -= coords.state | set(newton_euler.unknowns)
-            values = next((point for point in sample_points(self.problem, sp.Add(*symbols), count=20)
-                           if self.violated(point) is None), None)
-            if values is None:
-                raise self.problem.error(f"scene.states.{name}", "the motion gets to this state at none of 20 points "
-                                                                 "of the parameter ranges: narrow them")
+            values = self.reaching_point(exprs, set(newton_euler.unknowns), name)
             expected = {k: float(sp.N(v.xreplace(values), 20)) for k, v in reached.values.items()}
             try:
                 expected_time = float(numeric.evaluate(time, values, 12))  # an integral: by mpmath's quadrature
@@ -242,6 +235,19 @@ class CrossChecks:
         if impacts:
             reading += " In each impact or move, the velocities agree with each body's impulse and momentum."
         return Check("states", True, "numeric", detail, reading)
+
+    def reaching_point(self, exprs: list, unknowns: set, name: str) -> dict[sp.Symbol, sp.Expr]:
+        """A point of the parameter ranges where the motion gets to the state `name` (the middle,
+        else the first of 20 draws that meets every condition), with values for every symbol of
+        `exprs` but the coordinates, the velocities and the `unknowns`."""
+        symbols = set().union(*(e.free_symbols for e in exprs), *(c.free_symbols for c, _, _ in self.conditions))
+        symbols -= self.coordinates.state | unknowns
+        values = next((point for point in sample_points(self.problem, sp.Add(*symbols), count=20)
+                       if self.violated(point) is None), None)
+        if values is None:
+            raise self.problem.error(f"scene.states.{name}", "the motion gets to this state at none of 20 points "
+                                                             "of the parameter ranges: narrow them")
+        return values
 
     def _period_check(self) -> Check:
         """Each period found by energy between the turning points (not a pendulum's elliptic

@@ -353,6 +353,16 @@ class StateAnswers:
         """Each route's derivation of the scene in a state (see scene_in)."""
         return self._derivations_with(self._chain.joints[name] if name else ())
 
+    def grips_in(self, name: str) -> bool:
+        """Whether the state `name` is where a slipping part grips (`when: {grips: ...}`)."""
+        until = self.scene.states[name].until
+        return until is not None and until[0] == "grips"
+
+    def derivations_to(self, name: str) -> dict:
+        """Each route's derivation of the motion that gets to the state `name`: the scene of the
+        state it starts from where the state is a grip (the part slipping on the way), else its own."""
+        return self.derivations_in(self.scene.states[name].start if self.grips_in(name) else name)
+
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
     def _derivations_with(self, joints: tuple) -> dict:
         if not joints:
@@ -438,14 +448,20 @@ class StateAnswers:
         """A body's velocity, speed, angular velocity, position or angle in a named state, the
         kinetic energy of every body there (or its change from the state it comes from), the
         velocity of their center of mass, or the time the motion takes to get there."""
-        values, coords = self.states[name].values, self.coordinates
         if q.kind == "time":
             return self._duration(name)[0]
+        start = self.scene.states[name].start
+        return self.rate_at(q, self.states[name].values, self.states[start].values if start else None)
+
+    def rate_at(self, q: Quantity, values: dict, before: dict | None = None) -> sp.Expr:
+        """A quantity of `_rate` but the time, at the coordinates and velocities `values` (the
+        change of kinetic energy from those `before`): of a state's closed form, or of a
+        simulation's state (derive.chain_simulation)."""
+        coords = self.coordinates
         kinetic = lagrange.energies(self.dynamics_scene, coords)[0]
         if q.kind == "kinetic_energy":
             return tidy(kinetic.xreplace(values))
         if q.kind == "kinetic_energy_change":
-            before = self.states[self.scene.states[name].start].values
             return tidy(kinetic.xreplace(values) - kinetic.xreplace(before))
         if q.kind == "center_of_mass_velocity":
             bodies = self.scene.bodies.values()
