@@ -31,6 +31,14 @@ TOLERANCE = 1e-7
 #: The integrator: the cheapest setting of `derive bench`'s work-precision table that keeps the
 #: error below 1e-6 (LSODA at rtol 1e-10, against DOP853 at 1e-10 for twice the time).
 METHOD, RTOL = "LSODA", 1e-10
+#: Evaluations of a scene's rates after which a run is given up (`Stalled`): an integrator that
+#: chatters where a force jumps takes ever shorter steps, and a check must never run away (a
+#: slipping clutch's run, started with its plates' slip about to change sign, took 17 GB).
+MAX_EVALUATIONS = 200_000
+
+
+class Stalled(RuntimeError):
+    """A run took more than MAX_EVALUATIONS evaluations of its rates."""
 
 
 @dataclass
@@ -68,29 +76,66 @@ def rates(scene, lagrange, coords, values):
     power = sp.lambdify(state + lagrange.unknowns,
                         nonconservative_power(scene, coords).xreplace(values), "numpy")
     n = len(coords.all)
+    evaluations = [0]
 
     def rhs(t, y):
+        evaluations[0] += 1
+        if evaluations[0] > MAX_EVALUATIONS:
+            raise Stalled(f"the integrator stalled (over {MAX_EVALUATIONS} steps' evaluations): a force jumps on "
+                          "the way")
         unknowns = solve(y[:2 * n])
         return np.concatenate([y[n:2 * n], unknowns[:n], [power(*y[:2 * n], *unknowns)]])
     return rhs, state
+
+
+def switches(scene, coords, values, start) -> list:
+    """Terminal events of solve_ivp where a force of `scene` jumps: the slip of each kinetic
+    friction (and of a slipping clutch) changing sign, sign(slip) in the power of the
+    non-conservative forces. Past that point the force is another, so a run stops there. A slip
+    that is zero at the start (released from rest) has no event: it leaves zero the way the
+    other forces push it."""
+    state = [c.q for c in coords.all] + [c.u for c in coords.all]
+    velocities = {c.u for c in coords.all}
+    power = nonconservative_power(scene, coords).xreplace(values)
+    events = []
+    for slip in {f.args[0] for f in power.atoms(sp.sign, sp.Abs) if f.args[0].free_symbols & velocities}:
+        function = sp.lambdify(state, slip, "numpy")
+        at_start = float(function(*start[:len(state)]))
+        if at_start == 0:
+            continue
+
+        def event(t, y, function=function):
+            return function(*y[:len(state)])
+        event.terminal, event.direction = True, -np.sign(at_start)
+        events.append(event)
+    return events
 
 
 def hold(report: SimulationReport, scene, lagrange, coords, values, start, duration: float, where: str = ""):
     """Integrate `scene` (its Lagrange derivation `lagrange`) for `duration` from `start` (every
     coordinate and velocity, then the work done so far): every constraint gap keeps its value at
     the start (zero where the scene is placed on them) and T + V changes by the work of the
-    non-conservative forces. Failures go to `report`, `where` ahead of them; the run is returned
-    (None where the integration failed)."""
+    non-conservative forces, up to where a kinetic friction's slip changes sign (`switches`: the
+    run stops there, and says so). Failures go to `report`, `where` ahead of them; the run is
+    returned (None where the integration failed or stalled: `report.unchecked` says why)."""
     rhs, state = rates(scene, lagrange, coords, values)
     n = len(coords.all)
     gaps = [g.xreplace(values) for c in scene.constraints for g in c.gaps(coords)]
     gap_function = sp.lambdify(state[:n], gaps or [0], "numpy")
     kinetic, potential = energies(scene, coords)
     energy = sp.lambdify(state, (kinetic + potential).xreplace(values), "numpy")
-    run = solve_ivp(rhs, (0, duration), start, method=METHOD, rtol=RTOL, atol=RTOL * 1e-2, dense_output=True)
+    try:
+        run = solve_ivp(rhs, (0, duration), start, method=METHOD, rtol=RTOL, atol=RTOL * 1e-2, dense_output=True,
+                        events=switches(scene, coords, values, start) or None)
+    except Stalled as stalled:
+        report.unchecked.append((f"{where}the motion from a random start", str(stalled)))
+        return None
     if not run.success:
         report.fail(f"{where}integration failed: {run.message}")
         return None
+    if run.status == 1:
+        report.unchecked.append((f"{where}the motion from a random start after {run.t[-1]:.3g} s",
+                                 "a kinetic friction's slip changes sign there, where its force jumps"))
     at_start = np.asarray(gap_function(*run.y[:n, 0]), dtype=float)
     drift = max(float(np.max(np.abs(np.asarray(gap_function(*run.y[:n, i]), dtype=float) - at_start)))
                 for i in range(run.y.shape[1]))
@@ -125,8 +170,12 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
     # Released from rest in the reference configuration, where the answers are read: the mean
     # acceleration over the run when it stays constant, else its value at release (Richardson's
     # extrapolation of the mean over the first millisecond and the first half of it).
-    released = solve_ivp(rhs, (0, duration), np.zeros(2 * n + 1), method=METHOD, rtol=RTOL, atol=RTOL * 1e-2,
-                         dense_output=True)
+    try:
+        released = solve_ivp(rhs, (0, duration), np.zeros(2 * n + 1), method=METHOD, rtol=RTOL, atol=RTOL * 1e-2,
+                             dense_output=True)
+    except Stalled as stalled:
+        report.unchecked.append(("the motion released from rest", str(stalled)))
+        return report
 
     def mean_acceleration(body: str, kind: str) -> float:
         index = n + coords.all.index(coords.of(body, kind))
