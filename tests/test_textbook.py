@@ -491,6 +491,12 @@ EXPECTED.update({
     },
     # Morin ch. 8: a ball rolling off a fixed sphere, cos(phi) = (10 + 7 v0^2/(g (R + r)))/17;
     # rolling on the outside, omega = v/r = -sqrt(g (R + r) cos(phi))/r (clockwise, to the right).
+    # Serway & Jewett ch. 10: inside a loop, (7/10) m v^2 = (7/10) m v0^2 - m g (y + R - r), and it
+    # leaves where m v^2/(R - r) = m g y/(R - r), v^2 = g y; rolling clockwise, omega = -v/r.
+    "ball_leaves_loop": {
+        "y": lambda s: (7 * s.v0**2 - 10 * s.g * (s.R - s.r)) / (17 * s.g),
+        "omega": lambda s: -sp.sqrt(s.g * (7 * s.v0**2 - 10 * s.g * (s.R - s.r)) / (17 * s.g)) / s.r,
+    },
     "ball_rolls_off_dome": {
         "h": lambda s: (10 * s.g * (s.R + s.r) + 7 * s.v0**2) / (17 * s.g),
         "omega": lambda s: -sp.sqrt(s.g * (10 * s.g * (s.R + s.r) + 7 * s.v0**2) / (17 * s.g)) / s.r,

@@ -39,7 +39,7 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics import first_integrals, free_flight
-from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step, root, tidy
+from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step, radicals, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
 from derive.parts import listed, titled
@@ -626,11 +626,7 @@ def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -
     if equation.lhs == s:
         found = [equation.rhs]
     else:
-        # |a(s)| as a or -a by its sign just ahead of the start (a ball's cos on a dome): sympy
-        # solves without Abs at once; a root past a change of that sign fails `_a_root`'s check
-        ahead = s0 + direction * sp.Rational(1, 10**6)
-        equation = equation.xreplace({a: a.args[0] if decide(a.args[0].xreplace({s: ahead})) >= 0 else -a.args[0]
-                                      for a in equation.atoms(sp.Abs) if a.has(s)})
+        equation = _signs_settled(equation, s, s0 + direction * sp.Rational(1, 10**6), decide)
         found = _cosine_roots(equation.lhs - equation.rhs, s)
         try:
             found = found if found is not None else [r for r in sp.solve(equation, s) if not r.has(sp.I)]
@@ -661,6 +657,30 @@ def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -
     return first
 
 
+def _signs_settled(equation: sp.Eq, s: sp.Symbol, ahead: sp.Expr, decide) -> sp.Eq:
+    """The equation with the signs the middle of the ranges decides written out, so that sympy
+    (or `_cosine_roots`) solves a polynomial: atan2(0, x) of a positive x as 0, |x| free of s and
+    the roots of squares by x's sign there (derivation.radicals), and |a(s)| as a or -a by its sign
+    just ahead of the start (a ball's cos on a dome). A ball rolling inside a loop gave its normal
+    force with atan2(0, R - r), |R - r| and sqrt(1 - sin^2) in it, which sympy's solve took more
+    than the time limit over. Each an identity where those signs hold: a root past a change of
+    one fails `_a_root`'s check in the variants where it does.
+
+    >>> x, R, r = sp.symbols("x R r", positive=True)
+    >>> _signs_settled(sp.Eq(sp.sqrt((R - r)**2) * sp.cos(x + sp.atan2(0, R - r)), 0), x, sp.Rational(1, 10), lambda e: 1)
+    Eq((R - r)*cos(x), 0)
+    """
+    equation = equation.xreplace({a: sp.Integer(0) for a in equation.atoms(sp.atan2)
+                                  if a.args[0] == 0 and not a.has(s) and decide(a.args[1]) > 0})
+    placed = tuple({a.args[0] if decide(a.args[0]) > 0 else -a.args[0] for a in equation.atoms(sp.Abs)
+                    if not a.has(s)})
+    equation = radicals(equation, placed)
+    equation = equation.xreplace({p: sp.Abs(p.base.base) for p in equation.atoms(sp.Pow)
+                                  if p.exp == sp.S.Half and isinstance(p.base, sp.Pow) and p.base.exp == 2})
+    return equation.xreplace({a: a.args[0] if decide(a.args[0].xreplace({s: ahead})) >= 0 else -a.args[0]
+                              for a in equation.atoms(sp.Abs) if a.has(s)})
+
+
 def _cosine_roots(expr: sp.Expr, s: sp.Symbol) -> list[sp.Expr] | None:
     """The roots in s of a polynomial in cos(a s + b) and sin(a s + b)^2 (a ball's grip on a dome,
     mu^2 N^2 - f^2), through the polynomial in c = cos(a s + b): s = (+-acos(c) - b)/a (and their
@@ -674,7 +694,9 @@ def _cosine_roots(expr: sp.Expr, s: sp.Symbol) -> list[sp.Expr] | None:
     if slope == 0 or slope.has(s):
         return None
     c = sp.Dummy("c", real=True)
-    polynomial = sp.expand(expr).xreplace({sp.sin(argument) ** 2: 1 - c**2}).xreplace({sp.cos(argument): c})
+    sine = sp.sin(argument)
+    polynomial = sp.expand(expr).replace(lambda e: e.is_Pow and e.base == sine and e.exp.is_even,  # sin^4: (1 - c^2)^2
+                                         lambda e: (1 - c**2) ** (e.exp / 2)).xreplace({sp.cos(argument): c})
     if polynomial.has(s):
         return None
     offset = argument.xreplace({s: 0})
