@@ -11,7 +11,7 @@ from conftest import run_derive
 from derive import problem, report
 from derive.crosschecks import CheckFailure
 from derive.errors import EngineLimit
-from derive.mechanics import durations, states
+from derive.mechanics import durations, first_root, states
 
 ROD = """\
 id: rod_states
@@ -205,13 +205,13 @@ def test_a_wrong_threshold_is_caught_by_the_integrated_motion(tmp_path, monkeypa
     """The second route for a turning point: its place 1% off is found by Newton–Euler's motion."""
     path = tmp_path / "problem.yaml"
     path.write_text(HANGING.replace("SPIN", "2*sqrt(g/L)"))
-    original = states._first
-    monkeypatch.setattr(states, "_first", lambda *args: original(*args) * 101 / 100)
+    original = first_root.first
+    monkeypatch.setattr(first_root, "first", lambda *args: original(*args) * 101 / 100)
     # Caught first by the root's own check (the turning point must be a root of K), an engine
     # limit, not the file's fault; without it, by the motion integrated (no time past the turn).
     with pytest.raises(EngineLimit, match="does not hold at the middle"):
         report.solve(problem.load(path), {}, 4)
-    monkeypatch.setattr(states, "_a_root", lambda *args: [])
+    monkeypatch.setattr(first_root, "a_root", lambda *args: [])
     with pytest.raises(CheckFailure, match="differ|not real"):
         report.solve(problem.load(path), {}, 4)
 
@@ -482,9 +482,9 @@ def test_the_slip_point_is_checked_by_the_integrated_motion(tmp_path, monkeypatc
     where mu_s^2 N^2 = f^2 (the root's own check set aside)."""
     path = tmp_path / "problem.yaml"
     path.write_text(DOME)
-    original = states._first
-    monkeypatch.setattr(states, "_first", lambda *args: original(*args) * 101 / 100)
-    monkeypatch.setattr(states, "_a_root", lambda *args: [])
+    original = first_root.first
+    monkeypatch.setattr(first_root, "first", lambda *args: original(*args) * 101 / 100)
+    monkeypatch.setattr(first_root, "a_root", lambda *args: [])
     with pytest.raises(CheckFailure, match="differ"):
         report.solve(problem.load(path), {}, 4)
 

@@ -38,10 +38,11 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from derive.mechanics import first_integrals, free_flight
-from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step, radicals, root, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates, roots, solve_gaps
+from derive.mechanics import first_integrals, first_root, free_flight
+from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step, root, tidy
+from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
+from derive.mechanics.state_errors import Curved, StateError, StateLimit
 from derive.parts import listed, titled
 from derive.prose import Sentence, capital
 from derive.scene import TIME, Scene
@@ -49,18 +50,6 @@ from derive.scene import TIME, Scene
 #: Points between the start and a state where the motion must still move (the kinetic energy
 #: stays positive): a turning point on the way would mean the state is never reached.
 ON_THE_WAY = 8
-
-
-class StateError(ValueError):
-    """The state cannot be reached or does not fit the constraints (the file's fault)."""
-
-
-class StateLimit(StateError):
-    """A state derive cannot yet find (an engine limit, not the file's fault)."""
-
-
-class Curved(StateLimit):
-    """A motion of several degrees of freedom that is no straight line in its coordinates."""
 
 
 #: Where no one coordinate carries the motion from its start to the state, and what to do.
@@ -298,7 +287,7 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     # (Newton–Euler's motion, integrated at every solve, checks that it gets there).
     direction, leaves = _direction(start[speed], start, coordinate, derivation, decide)
     if not direction and isinstance(condition, Gets):
-        direction = _toward(positions, condition, s, start[s], decide)
+        direction = first_root.toward(positions, condition, s, start[s], decide)
     if not direction:
         raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
     velocities = {c.u: tidy(sp.diff(positions[c.q], s)) * speed for c in coords.all}
@@ -488,16 +477,6 @@ def _on_line(scene: Scene, coords: Coordinates, path: Path, end: sp.Expr, ratios
     return True
 
 
-def _toward(positions: dict, condition: Gets, s: sp.Symbol, s0: sp.Expr, decide) -> int:
-    """+1 or -1: the way s must go for the state's coordinate to get to its value (the nearest
-    such point on the path), 0 where it never does."""
-    if condition.coordinate.q == s:
-        return 1 if decide(condition.value - s0) > 0 else -1
-    found = [r for r in roots(positions[condition.coordinate.q] - condition.value, s) if _real(r, decide)]
-    ahead = [decide(r) - decide(s0) for r in found if abs(decide(r) - decide(s0)) > 1e-12]
-    return 0 if not ahead else 1 if min(ahead, key=abs) > 0 else -1
-
-
 def _arrive(path: Path, condition, derivation: Derivation, decide,
             carried: str = "The constraints leave one coordinate") -> Reached:
     """The state on the path where the condition first holds, what must stay positive on the way,
@@ -513,7 +492,7 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
     if isinstance(condition, Gets):
         position = path.positions[condition.coordinate.q]
         function = position - condition.value
-        s1 = _first(sp.Eq(position, condition.value), function, path, decide,
+        s1 = first_root.first(sp.Eq(position, condition.value), function, path, decide,
                     "the motion from the start does not get there")
         if condition.coordinate == path.coordinate:  # every variant's state lies ahead, as the middle's does
             steps_ahead = [(path.direction * (condition.value - s0), f"the state lies behind the start in {s} (the "
@@ -523,13 +502,13 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
     elif isinstance(condition, GetsRate):
         speed_there = path.velocities[condition.coordinate.u].xreplace({speed: path.rate(s)})
         function = tidy(speed_there - condition.value)
-        s1 = _first(sp.Eq(function, 0), function, path, decide, f"the motion from the start does not get to "
+        s1 = first_root.first(sp.Eq(function, 0), function, path, decide, f"the motion from the start does not get to "
                                                                   f"{condition.coordinate.u} = {sp.sstr(condition.value)}")
         steps.append(Step(f"The rate {condition.coordinate.u} along the way, and where it gets to "
                           f"{sp.sstr(condition.value)}", (sp.Eq(condition.coordinate.u, speed_there), sp.Eq(s, s1))))
     elif isinstance(condition, Stops):
         function = path.kinetic
-        s1 = _first(sp.Eq(path.kinetic, 0), function, path, decide,
+        s1 = first_root.first(sp.Eq(path.kinetic, 0), function, path, decide,
                     "the motion does not stop: it goes on (over the top, or forever)")
         way = "increasing" if path.direction > 0 else "decreasing"
         steps.append(Step("It stops where its kinetic energy is zero", (sp.Eq(s, s1),), sentences=(Sentence((
@@ -540,11 +519,11 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
         steps.append(Step(f"Along the way, {condition.meaning}", (sp.Eq(condition.force, force),),
                           sentences=condition.said))
         function = force
-        s1 = _first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
+        s1 = first_root.first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
         steps.append(Step("It falls to zero at", (sp.Eq(s, s1),)))
         vanished = (condition.force,) if condition.force.is_Symbol else ()
     inertia = path.inertia.xreplace({s: s1})
-    if inertia.has(sp.zoo, sp.oo, sp.nan) or not _real(inertia, decide) or settled(1 / inertia) == 0:
+    if inertia.has(sp.zoo, sp.oo, sp.nan) or not first_root.real(inertia, decide) or settled(1 / inertia) == 0:
         # the coordinate is extremal there (a bead's height at the bottom of a bowl): it has no
         # rate to carry the motion's, which another coordinate must
         raise StateLimit(NO_COORDINATE)
@@ -564,8 +543,8 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
                   "points between, falls to zero)") for k in range(1, ON_THE_WAY)]
     _positive_at_the_middle(positive, decide, " (where derive decides which way the motion goes): narrow the ranges "
                                              "to where it gets there")
-    guard = _a_root(function, s, s0, s1)
-    if guard and decide(guard[0][0]) <= 0:  # _first checked the root there: an engine fault, not the file's
+    guard = first_root.a_root(function, s, s0, s1)
+    if guard and decide(guard[0][0]) <= 0:  # first checked the root there: an engine fault, not the file's
         raise StateLimit(f"find the state: its formula {s} = {sp.sstr(s1)} does not hold at the middle of the ranges")
     positive[:0] = guard
     if not isinstance(condition, Stops):
@@ -574,22 +553,6 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
             f" {'increasing' if path.direction > 0 else 'decreasing'}, so its rate at the state is the root of the "
             "kinetic energy there of that sign.")),)))
     return Reached(values, tuple(positive), tuple(steps), path, s1, vanished)
-
-
-def _a_root(function: sp.Expr, s: sp.Symbol, s0: sp.Expr, s1: sp.Expr) -> list:
-    """What keeps s1, a root of `function` at the middle of the ranges, a root in every variant:
-    sympy's solution of an equation with roots in it holds where the roots' signs are those of the
-    middle (squaring both sides of sqrt(L^2 - x^2) = L - h gives an x also where L < h, on the
-    other branch of the circle). Positive where function(s1) is zero to 1e-9 of function(s0), as
-    `_first` asks of a root at the middle."""
-    residual = function.xreplace({s: s1})
-    scale = function.xreplace({s: s0})
-    if residual == 0 or tidy(scale) == 0:
-        return []
-    return [(sp.Rational(1, 10**18) * scale**2 - residual**2, "the formula derive found for the state does not hold "
-                                                                 "at these values (they put the motion on another "
-                                                                 "branch of the scene's geometry than the middle of "
-                                                                 "the parameter ranges)")]
 
 
 def _positive_at_the_middle(positive, decide, advice: str) -> None:
@@ -613,95 +576,6 @@ def along(path: Path, force: sp.Expr, derivation: Derivation) -> sp.Expr:
     general, where, rate = path.general
     solved = derivation.at(general, path.frozen).raw[force].xreplace({where: path.s})
     return tidy(solved.xreplace({rate: sp.sqrt(path.kinetic / path.inertia)}))
-
-
-def _first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) -> sp.Expr:
-    """The first s ahead of the start (in the path's direction) where `function` of s is zero:
-    sympy's roots of `equation` (with their turns by 2 pi where s is in a trigonometric
-    function) that are roots at the sample parameters, the nearest one ahead, and no change of
-    sign before it (sampled), which would be a root sympy missed."""
-    s, s0, direction = path.s, path.start[path.s], path.direction
-    if equation in (sp.true, sp.false):  # K(s) = 0 with K constant: it never holds (or always)
-        raise StateError(f"{fails} (it moves {'up' if direction > 0 else 'down'} in {s} from {sp.sstr(s0)})")
-    if equation.lhs == s:
-        found = [equation.rhs]
-    else:
-        equation = _signs_settled(equation, s, s0 + direction * sp.Rational(1, 10**6), decide)
-        found = _cosine_roots(equation.lhs - equation.rhs, s)
-        try:
-            found = found if found is not None else [r for r in sp.solve(equation, s) if not r.has(sp.I)]
-        except NotImplementedError:
-            raise StateLimit(f"solve {sp.sstr(equation)} for {s}") from None
-        if any(f.has(s) for f in function.atoms(sp.sin, sp.cos, sp.tan)):  # periodic in s
-            found = [r + 2 * sp.pi * k for r in found for k in (-1, 0, 1)]
-    start, scale = decide(s0), 1 + abs(decide(function.xreplace({s: s0})))
-    on_path = [r for r in found if _real(r, decide) and all(_real(p.xreplace({s: r}), decide) for p in path.positions.values())]
-    ahead = sorted({r for r in on_path if direction * (decide(r) - start) > 1e-12
-                    and abs(decide(function.xreplace({s: r}))) <= 1e-9 * scale},
-                   key=lambda r: abs(decide(r) - start))
-    if not ahead:
-        # Where the coordinate followed turns back (a bob's x at the level of its pivot), the path
-        # in it ends: the state may lie beyond, on the motion's way back in it.
-        ends = [r for r in roots(sp.fraction(sp.together(path.inertia))[1], s)
-                if _real(r, decide) and direction * (decide(r) - start) > 1e-12]
-        if ends:
-            end = min(ends, key=lambda r: abs(decide(r) - start))
-            raise StateLimit(f"follow the motion past {s} = {sp.sstr(end)}, where that coordinate turns back: "
-                             "give a state there (when:) and reach this one from it (from:)")
-        raise StateError(f"{fails} (it moves {'up' if direction > 0 else 'down'} in {s} from {sp.sstr(s0)})")
-    first = ahead[0]
-    end = decide(first)
-    signs = [decide(function.xreplace({s: s0 + sp.Rational(k, 64) * (first - s0)})) for k in range(1, 64)]
-    if any(a * b < 0 for a, b in zip(signs, signs[1:])):
-        raise StateLimit(f"find where {sp.sstr(function)} = 0 in closed form: it changes sign before {s} = {end:.6g}")
-    return first
-
-
-def _signs_settled(equation: sp.Eq, s: sp.Symbol, ahead: sp.Expr, decide) -> sp.Eq:
-    """The equation with the signs the middle of the ranges decides written out, so that sympy
-    (or `_cosine_roots`) solves a polynomial: atan2(0, x) of a positive x as 0, |x| free of s and
-    the roots of squares by x's sign there (derivation.radicals), and |a(s)| as a or -a by its sign
-    just ahead of the start (a ball's cos on a dome). A ball rolling inside a loop gave its normal
-    force with atan2(0, R - r), |R - r| and sqrt(1 - sin^2) in it, which sympy's solve took more
-    than the time limit over. Each an identity where those signs hold: a root past a change of
-    one fails `_a_root`'s check in the variants where it does.
-
-    >>> x, R, r = sp.symbols("x R r", positive=True)
-    >>> _signs_settled(sp.Eq(sp.sqrt((R - r)**2) * sp.cos(x + sp.atan2(0, R - r)), 0), x, sp.Rational(1, 10), lambda e: 1)
-    Eq((R - r)*cos(x), 0)
-    """
-    equation = equation.xreplace({a: sp.Integer(0) for a in equation.atoms(sp.atan2)
-                                  if a.args[0] == 0 and not a.has(s) and decide(a.args[1]) > 0})
-    placed = tuple({a.args[0] if decide(a.args[0]) > 0 else -a.args[0] for a in equation.atoms(sp.Abs)
-                    if not a.has(s)})
-    equation = radicals(equation, placed)
-    equation = equation.xreplace({p: sp.Abs(p.base.base) for p in equation.atoms(sp.Pow)
-                                  if p.exp == sp.S.Half and isinstance(p.base, sp.Pow) and p.base.exp == 2})
-    return equation.xreplace({a: a.args[0] if decide(a.args[0].xreplace({s: ahead})) >= 0 else -a.args[0]
-                              for a in equation.atoms(sp.Abs) if a.has(s)})
-
-
-def _cosine_roots(expr: sp.Expr, s: sp.Symbol) -> list[sp.Expr] | None:
-    """The roots in s of a polynomial in cos(a s + b) and sin(a s + b)^2 (a ball's grip on a dome,
-    mu^2 N^2 - f^2), through the polynomial in c = cos(a s + b): s = (+-acos(c) - b)/a (and their
-    turns by 2 pi/a). sympy's solve took minutes on the trigonometric form. None where `expr` is
-    not of that form."""
-    arguments = {f.args[0] for f in expr.atoms(sp.sin, sp.cos) if f.has(s)}
-    if len(arguments) != 1:
-        return None
-    (argument,) = arguments
-    slope = sp.diff(argument, s)
-    if slope == 0 or slope.has(s):
-        return None
-    c = sp.Dummy("c", real=True)
-    sine = sp.sin(argument)
-    polynomial = sp.expand(expr).replace(lambda e: e.is_Pow and e.base == sine and e.exp.is_even,  # sin^4: (1 - c^2)^2
-                                         lambda e: (1 - c**2) ** (e.exp / 2)).xreplace({sp.cos(argument): c})
-    if polynomial.has(s):
-        return None
-    offset = argument.xreplace({s: 0})
-    cosines = [r for r in sp.solve(polynomial, c) if not r.has(sp.I)]
-    return [(sign * sp.acos(r) - offset + 2 * sp.pi * k) / slope for r in cosines for sign in (1, -1) for k in (-1, 0, 1)]
 
 
 def _assumed(expr: sp.Expr) -> float:
@@ -742,8 +616,3 @@ def _direction(u0: sp.Expr, start: dict, coordinate: Coordinate, derivation: Der
     return (0, None) if pushed == 0 else ((1 if decide(pushed) > 0 else -1), pushed)
 
 
-def _real(expr: sp.Expr, decide) -> bool:
-    try:
-        return bool(np.isfinite(decide(expr)))
-    except (TypeError, ValueError):
-        return False
