@@ -31,6 +31,7 @@ import re
 import shutil
 import signal
 import threading
+import time
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
@@ -167,11 +168,22 @@ def staged(out: Path) -> Iterator[Path]:
         out.parent.mkdir(parents=True, exist_ok=True)
         staging = out.parent / f".{out.name}.partial-{os.getpid()}"
         shutil.rmtree(staging, ignore_errors=True)
-        staging.mkdir()
         try:
+            staging.mkdir()
             yield staging
         finally:
-            shutil.rmtree(staging, ignore_errors=True)
+            _remove(staging)
+
+
+def _remove(folder: Path, tries: int = 40) -> None:
+    """rmtree, again while something still writes into the folder: under load a Ctrl-C once left
+    a staging folder behind (a file landing in it while rmtree ran, which then cannot remove the
+    folder itself); the tries are 25 ms apart, a second at most."""
+    for _ in range(tries):
+        shutil.rmtree(folder, ignore_errors=True)
+        if not folder.exists():
+            return
+        time.sleep(0.025)
 
 
 @contextmanager
