@@ -32,6 +32,7 @@ from derive.mechanics.oscillation import (NotAPendulum, Oscillation, Oscillation
 from derive.crosschecks import CrossChecks, sample_points
 from derive.errors import InputError
 from derive.solid_answers import SolidAnswers
+from derive.solid_checks import SolidChecks
 from derive.state_answers import StateAnswers
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
@@ -39,7 +40,7 @@ from derive.parts.surfaces import Plane
 from derive.problem import Ask, Problem
 from derive.scene import DYNAMIC_KINDS, RATE_KINDS, SECOND_ROUTE_KINDS, STATIC_KINDS, TIME, Quantity
 
-class Solution(StateAnswers, CrossChecks, SolidAnswers):
+class Solution(StateAnswers, CrossChecks, SolidAnswers, SolidChecks):
     """Everything derived for one problem, computed on first use."""
 
     def __init__(self, problem: Problem):
@@ -143,8 +144,13 @@ class Solution(StateAnswers, CrossChecks, SolidAnswers):
 
     @cached_property
     def oscillations(self) -> dict[str, Oscillation]:
+        return self._small_motions(small_oscillation)
+
+    def _small_motions(self, linearized) -> dict:
+        """`linearized(scene, derivation, sample)` by each route; an engine limit reported as one,
+        and what the file states wrongly as the ask's fault."""
         try:
-            return {route: small_oscillation(self.dynamics_scene, d, self._sample) for route, d in self.derivations.items()}
+            return {route: linearized(self.dynamics_scene, d, self._sample) for route, d in self.derivations.items()}
         except OscillationLimit as error:
             raise self.problem.limit(str(error)) from None
         except OscillationError as error:
@@ -158,12 +164,7 @@ class Solution(StateAnswers, CrossChecks, SolidAnswers):
     @cached_property
     def normal_modes(self) -> dict[str, NormalModes]:
         """The normal modes of a scene of several degrees of freedom, by each route's equations."""
-        try:
-            return {route: normal_modes(self.dynamics_scene, d, self._sample) for route, d in self.derivations.items()}
-        except OscillationLimit as error:
-            raise self.problem.limit(str(error)) from None
-        except OscillationError as error:
-            raise self.problem.error("ask", str(error)) from None
+        return self._small_motions(normal_modes)
 
     @property
     def linearized(self) -> dict[str, Oscillation | NormalModes]:
