@@ -24,7 +24,7 @@ def startup(runs: int = 10) -> float:
 
 def main() -> None:
     print(f"derive --help: median {startup():.3f} s over 10 runs")
-    from derive import problem, worksheets
+    from derive import problem, variants
     from derive.answers import Solution
 
     for problem_id in ("rod_endpoint", "string_wrapped_disk", "compound_pendulum"):
@@ -37,7 +37,7 @@ def main() -> None:
         start = time.perf_counter()
         solution.expressions
         warm = time.perf_counter() - start
-        item = worksheets._ProblemVariants(p, solution, [worksheets.draw(p, random.Random(n)) for n in range(300)])
+        item = variants.ProblemVariants(p, solution, [variants.draw(p, random.Random(n)) for n in range(300)])
         start = time.perf_counter()
         for values in item.draws:
             item.answers(values)

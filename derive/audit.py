@@ -115,7 +115,7 @@ def stress(references: list[str] | None, seeds: int, progress: Reporter = Report
     must simulate to its closed forms at it (derive.chain_simulation)."""
     import random
 
-    from derive import report, worksheets
+    from derive import report, variants
 
     references = references or [str(p) for p in library.problem_files()]
     spreads, failures = [], []
@@ -127,15 +127,15 @@ def stress(references: list[str] | None, seeds: int, progress: Reporter = Report
         on_bound = 0
         for seed in range(seeds):
             try:
-                draw = worksheets.valid_draw(p, solution, random.Random(f"{seed}/{p.id}/1"))
+                draw = variants.valid_draw(p, solution, random.Random(f"{seed}/{p.id}/1"))
             except InputError as error:
                 failures.append(str(error))
                 break
             on_bound += any(q.range is not None and draw[n] in q.range for n, q in p.parameters.items())
             if solution.scene.states:  # the chain simulated at the variant's values, as a sheet gives it
-                chain = chain_simulation.simulate(solution, worksheets.si_values(p, draw))
+                chain = chain_simulation.simulate(solution, variants.si_values(p, draw))
                 failures += [f"{p.id} seed {seed}: chain simulation: {note}" for note in chain.notes]
-            item = worksheets._ProblemVariants(p, solution, [draw])
+            item = variants.ProblemVariants(p, solution, [draw])
             key = item.answers(draw)
             given = p.values({n: str(draw[n]) for n, q in p.parameters.items() if q.range is not None})
             full = report.answer_values(solution, given, 15)

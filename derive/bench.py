@@ -32,7 +32,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from derive import export, library, numeric, problem, problem_sets, worksheets
+from derive import export, library, numeric, problem, problem_sets, variants, worksheets
 from derive.answers import Solution
 from derive.progress import Reporter
 
@@ -94,9 +94,9 @@ def derivations(say, ids: list[str]) -> dict[str, Solution]:
 
 
 def _typical(solution: Solution, rng: random.Random) -> dict:
-    """A variant's parameter values (SI), drawn as a set's are (worksheets.valid_draw)."""
-    draw = worksheets.valid_draw(solution.problem, solution, rng)
-    return worksheets._ProblemVariants(solution.problem, solution, [draw]).si_values(draw)
+    """A variant's parameter values (SI), drawn as a set's are (variants.valid_draw)."""
+    draw = variants.valid_draw(solution.problem, solution, rng)
+    return variants.ProblemVariants(solution.problem, solution, [draw]).si_values(draw)
 
 
 def _groups(pairs) -> list[tuple[tuple, list, list]]:
@@ -201,18 +201,18 @@ def backends(say, solutions: dict[str, Solution], samples: int, repeats: int = 3
     return rates
 
 
-def answer_key(say, solutions: dict[str, Solution], variants: int) -> None:
+def answer_key(say, solutions: dict[str, Solution], count: int) -> None:
     chosen = [s for s in solutions.values() if all(not e.has(sp.Derivative) for e in s.expressions.values())][:30]
     start = time.perf_counter()
-    count = 0
+    values = 0
     for solution in chosen:
-        draws = [worksheets.valid_draw(solution.problem, solution, random.Random(f"bench/{n}")) for n in range(variants)]
-        item = worksheets._ProblemVariants(solution.problem, solution, draws)
+        draws = [variants.valid_draw(solution.problem, solution, random.Random(f"bench/{n}")) for n in range(count)]
+        item = variants.ProblemVariants(solution.problem, solution, draws)
         for draw in item.draws:
-            count += sum(v is not None for v in item.answers(draw).values())
+            values += sum(v is not None for v in item.answers(draw).values())
     elapsed = time.perf_counter() - start
-    say(f"\nAnswer key: {len(chosen)} problems x {variants} variants = {count} values in {elapsed:.2f} s "
-        f"({count / elapsed:.0f} values/s, each correct to its digits; target under 10 s for 30 x 300)")
+    say(f"\nAnswer key: {len(chosen)} problems x {count} variants = {values} values in {elapsed:.2f} s "
+        f"({values / elapsed:.0f} values/s, each correct to its digits; target under 10 s for 30 x 300)")
 
 
 #: The set whose build gives the marginal rate (issue 17's): a pulley, a pendulum, rolling, a
@@ -809,7 +809,7 @@ def run(say, quick: bool = False, only: str | None = None, note=None, **engine_o
         if wanted("backends"):
             backends(say, solutions, samples=3 if quick else 20, repeats=1 if quick else 3)
         if wanted("answer_key"):
-            answer_key(say, solutions, variants=30 if quick else 300)
+            answer_key(say, solutions, count=30 if quick else 300)
     if wanted("set_rate"):
         set_rate(say, variants=30 if quick else 300, repeats=1 if quick else 3)
     if wanted("sheet"):

@@ -23,9 +23,15 @@ import json
 from json.encoder import encode_basestring
 
 
+class Raw(str):
+    """Text `dumps` writes as it is: JSON already written, or a stencil's hole (derive.stencil)."""
+
+
 def dumps(value, indent: str = "") -> str:
-    """`value` (dicts with text keys, lists, text, numbers, booleans, None) as indented JSON text;
-    `indent` is that of the line the value starts on."""
+    """`value` (dicts with text keys, lists, text, numbers, booleans, None, Raw) as indented JSON
+    text; `indent` is that of the line the value starts on."""
+    if isinstance(value, Raw):
+        return value
     if isinstance(value, dict):
         if not value:
             return "{}"
@@ -33,10 +39,23 @@ def dumps(value, indent: str = "") -> str:
         return ("{\n" + ",\n".join(f"{inner}{encode_basestring(k)}: {dumps(v, inner)}" for k, v in value.items())
                 + f"\n{indent}}}")
     if isinstance(value, (list, tuple)):
-        if not value:
-            return "[]"
         inner = indent + "  "
-        return "[\n" + ",\n".join(inner + dumps(v, inner) for v in value) + f"\n{indent}]"
+        return items([dumps(v, inner) for v in value], indent)
     if isinstance(value, str):
         return encode_basestring(value)
     return json.dumps(value)
+
+
+def items(texts: list[str], indent: str = "") -> str:
+    """A list of values written already (each by `dumps` at `indent` and two spaces more) as JSON.
+
+    >>> print(items(['"a"', "1"], "  "))
+    [
+        "a",
+        1
+      ]
+    """
+    if not texts:
+        return "[]"
+    inner = indent + "  "
+    return "[\n" + ",\n".join(inner + text for text in texts) + f"\n{indent}]"

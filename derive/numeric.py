@@ -38,7 +38,7 @@ import functools
 import math
 from collections import Counter
 from dataclasses import dataclass
-from decimal import ROUND_HALF_EVEN, ROUND_UP, Context, Decimal
+from decimal import ROUND_HALF_EVEN, Context, Decimal
 from functools import cached_property, lru_cache
 
 import mpmath
@@ -229,16 +229,17 @@ class Certified:
     method: str
     radius: Decimal | None = None
     bits: int | None = None
+    radius_text: str | None = None  # the radius rounded up to two digits, as a key records it
 
     def certificate(self) -> dict:
         """What a key records of how the value is vouched for.
 
-        >>> Certified("0.333", "ball", Decimal("5.55111516E-17"), 53).certificate()
+        >>> certify(arb(1) / 3, 3, 53).certificate()
         {'method': 'ball', 'radius': '5.6e-17', 'bits': 53}
         """
         if self.method != "ball":
             return {"method": self.method}
-        return {"method": "ball", "radius": round_decimal(self.radius, 2, ROUND_UP), "bits": self.bits}
+        return {"method": "ball", "radius": self.radius_text, "bits": self.bits}
 
 
 def starting_bits(digits: int) -> int:
@@ -257,7 +258,7 @@ def certify(ball: arb, digits: int, bits: int) -> Certified | None:
 
     >>> from flint import arb
     >>> certify(arb(1) / 3, 15, 53)
-    Certified(text='0.333333333333333', method='ball', radius=Decimal('5.551117E-17'), bits=53)
+    Certified(text='0.333333333333333', method='ball', radius=Decimal('5.551117E-17'), bits=53, radius_text='5.6e-17')
     >>> certify(arb("0.125 +/- 1e-20"), 2, 64) is None  # straddles the rounding of 0.125
     True
     """
@@ -266,28 +267,52 @@ def certify(ball: arb, digits: int, bits: int) -> Certified | None:
     # as many decimal digits as the bits hold (fewer would widen the ball past a near tie)
     middle, radius, exponent = (int(n) for n in ball.mid_rad_10exp(math.ceil(bits * math.log10(2)) + 2))
     low, high = middle - radius, middle + radius
-    if radius and (low <= 0 <= high or _rounded(abs(low), digits) != _rounded(abs(high), digits)):
+    if low == 0:  # and so the radius: exactly zero
+        return Certified("0", "ball", Decimal(0), bits, "0")
+    rounded = _rounded(abs(low), digits)
+    if radius and (low <= 0 <= high or rounded != _rounded(abs(high), digits)):
         return None  # an end rounds elsewhere, or the sign is not proven (a zero balls cannot prove)
-    return Certified(round_decimal(Decimal(f"{low}e{exponent}"), digits), "ball", Decimal(radius).scaleb(exponent), bits)
+    significand, power = rounded
+    bound, place = _rounded(radius, 2, up=True) if radius else (0, 0)
+    return Certified("-" * (low < 0) + _decimal_text(significand, power + exponent, digits), "ball",
+                     Decimal(radius).scaleb(exponent), bits, _decimal_text(bound, place + exponent, 2) if radius else "0")
 
 
-def _rounded(whole: int, digits: int) -> tuple[int, int]:
-    """A positive whole number rounded half-to-even to `digits` significant digits, as
-    (significand, power of ten): the same pair for the same value.
+def _rounded(whole: int, digits: int, up: bool = False) -> tuple[int, int]:
+    """A positive whole number rounded half-to-even (or `up`, away from zero) to `digits`
+    significant digits, as (significand, power of ten): the same pair for the same value.
 
-    >>> _rounded(12345, 3), _rounded(12350, 3), _rounded(99951, 3), _rounded(12, 3)
-    ((123, 2), (124, 2), (100, 3), (120, -1))
+    >>> _rounded(12345, 3), _rounded(12350, 3), _rounded(99951, 3), _rounded(12, 3), _rounded(12301, 3, up=True)
+    ((123, 2), (124, 2), (100, 3), (120, -1), (124, 2))
     """
     drop = len(str(whole)) - digits
     if drop <= 0:
         return whole * 10**-drop, drop
     significand, rest = divmod(whole, 10**drop)
     half = 5 * 10 ** (drop - 1)
-    if rest > half or rest == half and significand % 2:
+    if (rest > 0) if up else (rest > half or rest == half and significand % 2):
         significand += 1
         if significand == 10**digits:
             return significand // 10, drop + 1
     return significand, drop
+
+
+def _decimal_text(significand: int, power: int, digits: int) -> str:
+    """significand x 10^power (a significand of `digits` digits) as round_decimal writes it:
+    positional from 10^-5 up to 10^digits, else a mantissa and an exponent (by integers: this
+    writes every certified value of a set).
+
+    >>> _decimal_text(123, -5, 3), _decimal_text(5, 2, 1), _decimal_text(560, -19, 3), _decimal_text(100, 0, 3)
+    ('0.00123', '5e+02', '5.60e-17', '100')
+    """
+    exponent = power + digits - 1
+    text = str(significand)
+    if not -5 <= exponent < digits:
+        return f"{text[0]}{'.' * (digits > 1)}{text[1:]}e{exponent:+03d}"
+    if power == 0:
+        return text
+    text = text.rjust(1 - power, "0")
+    return f"{text[:power]}.{text[power:]}"
 
 
 #: How often each fallback decided a value: "exact" (balls undecided at MAX_BITS) and

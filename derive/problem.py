@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, InvalidOperation, localcontext
+from decimal import ROUND_CEILING, ROUND_FLOOR, Context, Decimal, InvalidOperation, localcontext
 from functools import cached_property
 from pathlib import Path
 
@@ -49,6 +49,9 @@ def exact_decimal(value: sp.Expr) -> Decimal:
         return Decimal(str(sp.N(value, 60)))
 
 
+_WIDE = Context(prec=60)  # a draw's arithmetic: room for any range's digits
+
+
 @dataclass(frozen=True)
 class Parameter:
     name: str
@@ -75,9 +78,8 @@ class Parameter:
         significant figures: exact decimals throughout, never a float, so any range the file
         may give (1e-320 kg, 1e400 kg) is drawn inside itself."""
         low, high = self.bounds()
-        with localcontext() as context:
-            context.prec = 60
-            value = Decimal(numeric.round_decimal(low + (high - low) * fraction, self.sig_figs))
+        value = Decimal(numeric.round_decimal(_WIDE.add(low, _WIDE.multiply(_WIDE.subtract(high, low), fraction)),
+                                              self.sig_figs))
         return sp.Rational(*min(max(value, low), high).as_integer_ratio())
 
     def draw(self, rng) -> sp.Rational:

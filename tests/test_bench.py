@@ -3,7 +3,7 @@ import random
 
 
 from conftest import copy_library, run_derive
-from derive import bench, problem, worksheets
+from derive import bench, problem, variants
 from derive.answers import Solution
 
 
@@ -11,7 +11,7 @@ def test_bench_sections_print_figures():
     lines = []
     solutions = {"string_wrapped_disk": Solution(problem.load("string_wrapped_disk"))}
     rates = bench.backends(lines.append, solutions, samples=2, repeats=1)
-    bench.answer_key(lines.append, solutions, variants=5)
+    bench.answer_key(lines.append, solutions, count=5)
     text = "\n".join(lines)
     for method in bench.METHODS:
         assert f"  {method} " in text
@@ -40,7 +40,7 @@ def test_sampler_redraws_until_the_top_can_precess():
     solution = Solution(p)
     (condition, _, _), = solution.conditions
     for n in range(20):
-        values = worksheets.valid_draw(p, solution, random.Random(n))
+        values = variants.valid_draw(p, solution, random.Random(n))
         si = p.values({k: str(v) for k, v in values.items()})
         assert float(condition.xreplace(si)) >= 0
 

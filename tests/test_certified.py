@@ -3,7 +3,8 @@ of the textbook problems': their Piecewise answers), at random numbers of digits
 the balls certify are those of the exact answer evaluated at 60 digits by sympy; and what balls
 do not map falls back, counted."""
 import functools
-from decimal import Decimal
+import math
+from decimal import ROUND_UP, Decimal
 from pathlib import Path
 
 import pytest
@@ -11,7 +12,9 @@ import sympy as sp
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from derive import balls, library, numeric, problem, worksheets
+from flint import arb, ctx
+
+from derive import balls, library, numeric, problem, variants
 from derive.answers import Solution
 
 TEXTBOOK = Path(__file__).parent / "textbook"
@@ -19,9 +22,9 @@ PROBLEMS = [path.stem for path in library.problem_files()] + [str(path) for path
 
 
 @functools.lru_cache(maxsize=None)
-def _item(problem_id: str) -> worksheets._ProblemVariants:
+def _item(problem_id: str) -> variants.ProblemVariants:
     p = problem.load(problem_id)
-    return worksheets._ProblemVariants(p, Solution(p), [])
+    return variants.ProblemVariants(p, Solution(p), [])
 
 
 def _reference(expression: sp.Expr, values: dict, digits: int) -> str:
@@ -93,3 +96,24 @@ def test_a_conditions_sign_is_read_from_its_ball_else_from_its_digits():
     for row, signs in zip(rows, evaluator.signs(rows)):
         for value, sign in zip(evaluator.certified([row], [6] * 4)[0], signs):
             assert sign == (None if value is None else (Decimal(value.text) > 0) - (Decimal(value.text) < 0))
+
+
+@settings(max_examples=400, deadline=None)
+@given(middle=st.integers(-10**22, 10**22), radius=st.integers(0, 10**6), exponent=st.integers(-40, 40),
+       digits=st.integers(1, 20), bits=st.sampled_from([64, 128]))
+def test_a_balls_text_and_radius_are_those_decimal_rounding_gives(middle, radius, exponent, digits, bits):
+    """certify writes its digits and its certificate's radius by integers; Python's decimal module,
+    rounding the ball's low end (in the decimals certify reads) half-to-even and its radius up,
+    writes the same text."""
+    saved, ctx.prec = ctx.prec, bits
+    try:
+        ball = arb(arb(middle) * arb(10) ** exponent, arb(radius) * arb(10) ** (exponent - 3))
+        value = numeric.certify(ball, digits, bits)
+        mid, rad, power = (int(n) for n in ball.mid_rad_10exp(math.ceil(bits * math.log10(2)) + 2))
+    finally:
+        ctx.prec = saved
+    if value is None:
+        return
+    low, bound = Decimal(mid - rad).scaleb(power), Decimal(rad).scaleb(power)
+    assert value.text == ("0" if low == 0 else numeric.round_decimal(low, digits))
+    assert value.certificate()["radius"] == ("0" if rad == 0 else numeric.round_decimal(bound, 2, ROUND_UP))

@@ -178,21 +178,21 @@ def test_a_sheet_redraws_the_variants_whose_bounce_takes_another_regime_and_each
     chain at the variant's own values, as derive check --seeds runs it)."""
     import random
 
-    from derive import worksheets
+    from derive import variants
     from derive.problem import load as load_problem
 
     p = load_problem(str(_wheel_bounce_then_turn(tmp_path)))
     solution = Solution(p)
     seeds = range(8)
-    first = [worksheets.si_values(p, worksheets.draw(p, random.Random(f"{seed}/wheel"))) for seed in seeds]
+    first = [variants.si_values(p, variants.draw(p, random.Random(f"{seed}/wheel"))) for seed in seeds]
     assert any(solution.impact_regime_at("bounced", values) != "grips" for values in first)  # some are redrawn
-    draws = worksheets.valid_draws(p, solution, [random.Random(f"{seed}/wheel") for seed in seeds])
+    draws = variants.valid_draws(p, solution, [random.Random(f"{seed}/wheel") for seed in seeds])
     for draw in draws:
-        variant = worksheets.si_values(p, draw)
+        variant = variants.si_values(p, draw)
         assert solution.impact_regime_at("bounced", variant) == "grips"
         report = chain_simulation.simulate(solution, variant)
         assert report.passed and "state turned" in report.compared and "t" in report.compared, report.notes
-    sliding = {**worksheets.si_values(p, draws[0]), next(q.symbol for n, q in p.parameters.items() if n == "mu"):
+    sliding = {**variants.si_values(p, draws[0]), next(q.symbol for n, q in p.parameters.items() if n == "mu"):
                sp.Rational(1, 10)}
     assert solution.impact_regime_at("bounced", sliding).startswith("slides")
     assert solution.violated(sliding).startswith("the bounce bounced slides (friction along -t) at these values, "

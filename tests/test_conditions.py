@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
-from derive import expr, units, worksheets
+from derive import expr, units, variants
 from derive.answers import Solution
 from derive.errors import ProblemError
 from derive.problem import load, parse
@@ -66,9 +66,9 @@ def test_the_sampler_redraws_until_an_answer_condition_holds():
     mu_min = solution.expression("mu_min")
     rejected = 0
     for seed in range(40):
-        plain = worksheets.draw(problem, random.Random(f"{seed}/rolling_incline/1"))
+        plain = variants.draw(problem, random.Random(f"{seed}/rolling_incline/1"))
         rejected += bool(plain["mu_s"] < mu_min.xreplace(_si(problem, plain)))
-        valid = worksheets.valid_draw(problem, solution, random.Random(f"{seed}/rolling_incline/1"))
+        valid = variants.valid_draw(problem, solution, random.Random(f"{seed}/rolling_incline/1"))
         assert valid["mu_s"] >= mu_min.xreplace(_si(problem, valid))
     assert rejected > 0  # the condition did reject some plain draws
 
@@ -76,9 +76,9 @@ def test_the_sampler_redraws_until_an_answer_condition_holds():
 def test_a_parameter_condition_widens_nothing_it_should_not():
     problem = load("sticky_impact_pivoted")
     solution = Solution(problem)
-    draws = [worksheets.valid_draw(problem, solution, random.Random(n)) for n in range(30)]
+    draws = [variants.valid_draw(problem, solution, random.Random(n)) for n in range(30)]
     assert all(d["b"] <= d["R"] for d in draws)
-    assert any(worksheets.draw(problem, random.Random(n))["b"] > worksheets.draw(problem, random.Random(n))["R"]
+    assert any(variants.draw(problem, random.Random(n))["b"] > variants.draw(problem, random.Random(n))["R"]
                for n in range(30))
 
 
@@ -107,7 +107,7 @@ def test_a_magnitude_whose_sign_was_read_at_samples_is_checked_at_each_variant(m
     solution = Solution(load("rolling_incline"))
     (condition,) = [c for c, _, meaning in solution.conditions if meaning.startswith("f, a magnitude")]
     assert sp.simplify(condition - solution.expression("f")) == 0
-    values = worksheets._ProblemVariants(solution.problem, solution, []).si_values(
+    values = variants.ProblemVariants(solution.problem, solution, []).si_values(
         {n: p.value if p.range is None else p.at(Decimal("0.5")) for n, p in solution.problem.parameters.items()})
     assert solution.violated(values) is None
     theta = solution.problem.parameters["theta"].symbol

@@ -9,7 +9,7 @@ import mpmath
 import pytest
 
 from conftest import copy_library, run_derive
-from derive import distractors, library, worksheets
+from derive import distractors, library, variants
 from derive.answers import Solution
 from derive.problem import load
 
@@ -107,13 +107,13 @@ class _Failing:
         raise IndexError("list index out of range")
 
 
-def _library_items(variants=3):
+def _library_items(count=3):
     """(problem, answer, right value, wrong values) of every numeric answer of the library."""
     for path in library.problem_files():
         problem = load(str(path))
         solution = Solution(problem)
-        draws = [worksheets.valid_draw(problem, solution, random.Random(f"1/{problem.id}/{n}")) for n in range(variants)]
-        item = worksheets._ProblemVariants(problem, solution, draws)
+        draws = [variants.valid_draw(problem, solution, random.Random(f"1/{problem.id}/{n}")) for n in range(count)]
+        item = variants.ProblemVariants(problem, solution, draws)
         for draw in draws:
             answers, wrong = item.answers(draw), item.wrong(draw)
             for name in problem.asks:

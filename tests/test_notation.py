@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 
 from conftest import refused, run_derive, write_problem
-from derive import library, notation, worksheets
+from derive import library, notation, variants, worksheets
 from derive.answers import Solution
 from derive.errors import ProblemError
 from derive.mechanics.derivation import KINETIC, PERIOD, POTENTIAL
@@ -47,7 +47,7 @@ def test_two_periods_in_one_document_are_two_symbols():
         assert sp.simplify(next(e.rhs for e in equations if e.lhs == sp.Symbol("T_small"))
                            - solution.expression("T_small")) == 0
     # the worked solution's and the handout's context (the handout adds its limiting cases to it)
-    context = worksheets._solutions_context(worksheets._ProblemVariants(problem, solution, []), siunitx=True)
+    context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, []), siunitx=True)
     typeset = "\n".join(e for route in context["routes"] for s in route["steps"] for e in s["equations"])
     assert typeset.count(r"T_{\mathrm{small}} &=") == 2 and r"\mathrm{exact}" not in typeset
 
@@ -83,7 +83,7 @@ def test_an_ask_named_like_the_potential_energy_renames_it():
     assert POTENTIAL in notation.step_symbols(solution.steps()["lagrange"])
     assert "V" not in symbols_of(steps) and "U" in symbols_of(steps)
     assert notation.document_clashes(problem, solution, steps) == []
-    context = worksheets._solutions_context(worksheets._ProblemVariants(problem, solution, []), siunitx=True)
+    context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, []), siunitx=True)
     lagrange = "\n".join(e for s in context["routes"][0]["steps"] for e in s["equations"])
     assert "U &= M g y" in lagrange and "V &=" not in lagrange
     reference = Solution(load("compound_pendulum"))

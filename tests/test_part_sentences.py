@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 import derive.parts
-from derive import render, report, worksheets
+from derive import render, report, variants, worksheets
 from derive.answers import Solution
 from derive.mechanics.impacts import Touch
 from derive.mechanics.kinematics import Coordinates
@@ -199,8 +199,9 @@ def test_solutions_and_handout_print_the_sentences():
     and so pandoc's HTML, Markdown and DOCX made from the same LaTeX, print the parts' sentences."""
     problem = load("string_wrapped_disk")
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
-    context = worksheets._solutions_context(worksheets._ProblemVariants(problem, Solution(problem), [middle]), siunitx=True)
-    handout = render.render("handout.tex.j2", problem={**context, "limits": []}, question="")
+    context = worksheets._solutions_context(variants.ProblemVariants(problem, Solution(problem), [middle]), siunitx=True)
+    handout = render.render("handout.tex.j2", problem={**context, "limits": [], "example": {"given": [], "results": []}},
+                            question="")
     sheet = render.render("solutions.tex.j2", problems=[context],
                           set=SimpleNamespace(title="Week 9", course="Mechanics", due="Friday"))
     for tex in (handout, sheet):

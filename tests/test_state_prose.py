@@ -11,7 +11,7 @@ from types import SimpleNamespace
 import pytest
 import sympy as sp
 
-from derive import library, render, worksheets
+from derive import library, render, variants, worksheets
 from derive.answers import Solution
 from derive.problem import load
 from test_check import PSEUDO_MATH
@@ -161,7 +161,7 @@ def test_solutions_print_the_state_sentences_and_headings():
     problem = load(str(TEXTBOOK / "clutch_disks_brake.yaml"))
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
     solution, _ = _solved(str(TEXTBOOK / "clutch_disks_brake.yaml"))
-    context = worksheets._solutions_context(worksheets._ProblemVariants(problem, solution, [middle]), siunitx=True)
+    context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, [middle]), siunitx=True)
     sheet = render.render("solutions.tex.j2", problems=[context],
                           set=SimpleNamespace(title="Week 9", course="Mechanics", due="Friday"))
     order = [r"\subsection*{The start, spinning: the placement moving at the given rates}",
