@@ -99,6 +99,10 @@ class _ProblemKey:
         self.item, self.id = item, item.problem.id
         self.with_distractors, self.choice = with_distractors, choice
         self._entries: dict[tuple, Stencil] = {}
+        # the names of the holes (below) of each parameter, and each answer's: v value, t tolerance,
+        # r and b the radius and bits of its certificate, d its distractors
+        self._parameter_holes = [f"p:{name}" for name in item.problem.parameters]
+        self._answer_holes = [tuple(f"{kind}:{name}" for kind in "vtrbd") for name in item.problem.asks]
 
     def entry(self, number: int, indent: str, numerical: dict) -> str:
         """The problem's entry in variant `number` of key.json, written at `indent`; an answer asked
@@ -111,15 +115,16 @@ class _ProblemKey:
                    if self.choice and value is not None and len(wrong[name]) < distractors.WANTED}
         layout = (indent, tuple(None if value is None else value.method for value in certified.values()), tuple(too_few))
         stencil = self._entries.get(layout) or self._entries.setdefault(layout, self._entry(*layout))
-        values = {f"p:{name}": encode_basestring(text) for name, text in item.numbers[number - 1].items()}
+        values = {hole_name: encode_basestring(text) for hole_name, text in zip(self._parameter_holes,
+                                                                               item.numbers[number - 1].values())}
         tolerances = item.tolerances(draw)
-        for name, value in certified.items():
+        for (name, value), (v, t, r, b, d) in zip(certified.items(), self._answer_holes):
             if value is not None:
-                values[f"v:{name}"], values[f"t:{name}"] = encode_basestring(value.text), _string(tolerances[name])
+                values[v], values[t] = encode_basestring(value.text), _string(tolerances[name])
                 if value.method == "ball":
-                    values[f"r:{name}"], values[f"b:{name}"] = encode_basestring(value.radius_text), str(value.bits)
+                    values[r], values[b] = encode_basestring(value.radius_text), str(value.bits)
             if self.with_distractors:
-                values[f"d:{name}"] = json_text.dumps(wrong[name], stencil.indents[f"d:{name}"])
+                values[d] = json_text.dumps(wrong[name], stencil.indents[d])
         for name, note in too_few.items():
             values[f"n:{name}"] = encode_basestring(note)
             numerical.setdefault((self.id, name, note), []).append(number)

@@ -47,6 +47,7 @@ import re
 import zipfile
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from functools import lru_cache
 from decimal import Decimal
 from typing import Mapping
 
@@ -82,10 +83,24 @@ def tolerance(value: str, policy: str | None = None) -> str:
     last significant digit, "P%" for P percent of it, or an absolute amount ("0.05")."""
     number = Decimal(value)
     if policy is None:
-        digits = len(number.as_tuple().digits)
-        return _plain(Decimal(1).scaleb(number.adjusted() - digits + 1)) if number != 0 else "0"
+        return _last_place(number.as_tuple().exponent) if number != 0 else "0"
     if policy.endswith("%"):
         return _plain((abs(number) * Decimal(policy[:-1]) / 100).normalize())
+    return _absolute(policy)
+
+
+@lru_cache(maxsize=None)  # a set's answers share a few places
+def _last_place(exponent: int) -> str:
+    """One unit in the decimal place 10^exponent.
+
+    >>> _last_place(-3), _last_place(2)
+    ('0.001', '100')
+    """
+    return _plain(Decimal(1).scaleb(exponent))
+
+
+@lru_cache(maxsize=None)
+def _absolute(policy: str) -> str:
     return _plain(Decimal(policy).normalize())
 
 

@@ -37,9 +37,9 @@ from __future__ import annotations
 import functools
 import math
 from collections import Counter
-from dataclasses import dataclass
 from decimal import ROUND_HALF_EVEN, Context, Decimal
 from functools import cached_property, lru_cache
+from typing import NamedTuple
 
 import mpmath
 import sympy as sp
@@ -86,7 +86,12 @@ def significant(value: sp.Expr, digits: int) -> str:
     ('-7.28e-10', '6.7e-31')
     """
     if isinstance(value, sp.Rational):
-        return round_decimal(_decimal_of(value.p, value.q, digits), digits)
+        p, q = int(value.p), int(value.q)
+        places = len(str(q)) - 1
+        if q == 10**places and p:  # a decimal, as every drawn parameter is: by integers (a set writes thousands)
+            significand, power = _rounded(abs(p), digits)
+            return "-" * (p < 0) + _decimal_text(significand, power - places, digits)
+        return round_decimal(_decimal_of(p, q, digits), digits)
     try:
         approx = sp.N(value, digits + GUARD_DIGITS, strict=True) if value != 0 else sp.Integer(0)
     except PrecisionExhausted:  # evalf cannot tell a part from zero: it may be exactly zero (a balance)
@@ -218,8 +223,7 @@ class _Lambdified:
         return significant(self.expression.xreplace(values), digits)  # cancellation: let evalf decide
 
 
-@dataclass(frozen=True)
-class Certified:
+class Certified(NamedTuple):
     """A value's text and how its digits are vouched for: `method` "ball" (radius: a bound on the
     distance from the exact value to the ball's centre, every point of the ball rounding to
     `text`; bits: the working precision), "exact" (sympy's strict evalf)
@@ -264,18 +268,27 @@ def certify(ball: arb, digits: int, bits: int) -> Certified | None:
     """
     if not ball.is_finite():
         return None
-    # as many decimal digits as the bits hold (fewer would widen the ball past a near tie)
-    middle, radius, exponent = (int(n) for n in ball.mid_rad_10exp(math.ceil(bits * math.log10(2)) + 2))
-    low, high = middle - radius, middle + radius
+    middle, radius, exponent = ball.mid_rad_10exp(_decimals(bits))
+    middle, radius, exponent = int(middle), int(radius), int(exponent)
+    low = middle - radius
     if low == 0:  # and so the radius: exactly zero
         return Certified("0", "ball", Decimal(0), bits, "0")
     rounded = _rounded(abs(low), digits)
-    if radius and (low <= 0 <= high or rounded != _rounded(abs(high), digits)):
-        return None  # an end rounds elsewhere, or the sign is not proven (a zero balls cannot prove)
+    if radius:
+        high = middle + radius
+        if low <= 0 <= high or rounded != _rounded(abs(high), digits):
+            return None  # an end rounds elsewhere, or the sign is not proven (a zero balls cannot prove)
     significand, power = rounded
     bound, place = _rounded(radius, 2, up=True) if radius else (0, 0)
     return Certified("-" * (low < 0) + _decimal_text(significand, power + exponent, digits), "ball",
                      Decimal(radius).scaleb(exponent), bits, _decimal_text(bound, place + exponent, 2) if radius else "0")
+
+
+@lru_cache(maxsize=None)
+def _decimals(bits: int) -> int:
+    """As many decimal digits as `bits` hold, and two more: a ball's ends read to fewer would
+    widen it past a near tie."""
+    return math.ceil(bits * math.log10(2)) + 2
 
 
 def _rounded(whole: int, digits: int, up: bool = False) -> tuple[int, int]:
@@ -287,14 +300,25 @@ def _rounded(whole: int, digits: int, up: bool = False) -> tuple[int, int]:
     """
     drop = len(str(whole)) - digits
     if drop <= 0:
-        return whole * 10**-drop, drop
-    significand, rest = divmod(whole, 10**drop)
-    half = 5 * 10 ** (drop - 1)
-    if (rest > 0) if up else (rest > half or rest == half and significand % 2):
+        return whole * _POWERS[-drop], drop
+    significand, rest = divmod(whole, _POWERS[drop])
+    half = 5 * _POWERS[drop - 1]
+    if (rest > 0) if up else (rest > half or rest == half and significand & 1):
         significand += 1
-        if significand == 10**digits:
+        if significand == _POWERS[digits]:
             return significand // 10, drop + 1
     return significand, drop
+
+
+class _Powers(dict):
+    """10**n by n, each computed once (the rounding of every value of a set reads them)."""
+
+    def __missing__(self, n: int) -> int:
+        self[n] = 10**n
+        return self[n]
+
+
+_POWERS = _Powers()
 
 
 def _decimal_text(significand: int, power: int, digits: int) -> str:

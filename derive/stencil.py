@@ -45,9 +45,7 @@ class Stencil:
     def __init__(self, text: str):
         pieces = _HOLE.split(text)
         self.names = tuple(pieces[1::2])
-        # str.format fills the holes in C: the text's own braces doubled, each hole a numbered field
-        self._format = "".join(piece.replace("{", "{{").replace("}", "}}") if i % 2 == 0 else f"{{{i // 2}}}"
-                               for i, piece in enumerate(pieces)).format
+        self._pieces = [piece if i % 2 == 0 else None for i, piece in enumerate(pieces)]  # the text between holes
         self.indents = {}
         for match in _HOLE.finditer(text):
             line = text[text.rfind("\n", 0, match.start()) + 1:match.start()]
@@ -55,4 +53,6 @@ class Stencil:
 
     def fill(self, values: Mapping[str, str]) -> str:
         """The text with each hole's value (every hole must have one)."""
-        return self._format(*map(values.__getitem__, self.names))
+        pieces = self._pieces.copy()
+        pieces[1::2] = map(values.__getitem__, self.names)  # in C: a set fills thousands of stencils
+        return "".join(pieces)

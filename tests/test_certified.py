@@ -117,3 +117,13 @@ def test_a_balls_text_and_radius_are_those_decimal_rounding_gives(middle, radius
     low, bound = Decimal(mid - rad).scaleb(power), Decimal(rad).scaleb(power)
     assert value.text == ("0" if low == 0 else numeric.round_decimal(low, digits))
     assert value.certificate()["radius"] == ("0" if rad == 0 else numeric.round_decimal(bound, 2, ROUND_UP))
+
+
+@settings(max_examples=300, deadline=None)
+@given(whole=st.integers(-10**15, 10**15), places=st.integers(0, 20), digits=st.integers(1, 15))
+def test_a_drawn_decimal_is_written_as_decimal_rounding_writes_it(whole, places, digits):
+    """significant writes a decimal (every drawn parameter is one) by integers; Python's decimal
+    module, rounding the same value half-to-even, writes the same text."""
+    value = sp.Rational(whole, 10**places)
+    expected = "0" if whole == 0 else numeric.round_decimal(Decimal(whole).scaleb(-places), digits)
+    assert numeric.significant(value, digits) == expected
