@@ -3,7 +3,7 @@ import random
 
 
 from conftest import copy_library, run_derive
-from derive import bench, problem, variants
+from derive import bench, bench_engines, problem, variants
 from derive.answers import Solution
 
 
@@ -111,7 +111,7 @@ def test_a_scene_whose_anchor_disagrees_shows_no_timing():
              "agrees": True},
             {"scene": "bad", "derive": dict(figures, seconds=7.0), "anchor": dict(figures, seconds=9.0),
              "disagreements": ["h: derive 1, anchor 2"], "agrees": False}]
-    table = bench.scenes_table(rows)
+    table = bench_engines.scenes_table(rows)
     good, bad = (next(line for line in table.splitlines() if name in line) for name in ("good", "bad"))
     assert "2.0x" in good and "yes (1)" in good
     assert "NO: h: derive 1, anchor 2" in bad and "7.00" not in bad and "9.00" not in bad
@@ -132,7 +132,7 @@ def test_derive_bench_json_has_both_engines_and_the_chain_by_each_route():
     assert "[1/1] compound_pendulum" in done.stderr and "chain n=2" in done.stderr
     assert [row["n"] for row in figures["chain"]] == [1, 2]
     for row in figures["chain"]:
-        assert all(row[route]["seconds"] > 0 for route in bench.ROUTES) and row["disagreements"] == []
+        assert all(row[route]["seconds"] > 0 for route in bench_engines.ROUTES) and row["disagreements"] == []
         assert row["solve"]["numbers"] and row["anchor"]["numbers"]
     assert figures["settings"] == {"repeats": 1, "limit_cpu_seconds": 300, "max_n": 2, "quick": False}
 
