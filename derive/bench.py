@@ -273,10 +273,11 @@ def _build_steps(references, variants: int, formats, out: Path) -> list[tuple[st
     return steps
 
 
-def _per_variant(steps) -> tuple[float, float]:
-    """Wall and CPU seconds of a build from drawing its variants on (what grows with them)."""
+def _per_variant(steps) -> list[tuple[str, float, float]]:
+    """The steps of a build from drawing its variants on (what grows with them), "drawing N
+    variants" named "drawing"."""
     first = next(i for i, (name, _, _) in enumerate(steps) if name.startswith("drawing "))
-    return sum(wall for _, wall, _ in steps[first:]), sum(cpu for _, _, cpu in steps[first:])
+    return [("drawing" if name.startswith("drawing ") else name, wall, cpu) for name, wall, cpu in steps[first:]]
 
 
 def set_rate(say, variants: int = 300, repeats: int = 3) -> float:
@@ -291,7 +292,7 @@ def set_rate(say, variants: int = 300, repeats: int = 3) -> float:
 
     say(f"\nA whole set build (derive sheet {' '.join(SET_PROBLEMS)} --to ''), {variants} variants against 1, "
         "from the draws on:")
-    costs: dict[int, list[tuple[float, float]]] = {1: [], variants: []}
+    costs: dict[int, list[list[tuple[str, float, float]]]] = {1: [], variants: []}
     answers = {}
     with tempfile.TemporaryDirectory() as folder:
         for _ in range(repeats):
@@ -302,7 +303,8 @@ def set_rate(say, variants: int = 300, repeats: int = 3) -> float:
                 with open(out / "key.csv", encoding="utf-8") as key:
                     answers[count] = sum(1 for _ in csv.DictReader(key))
     extra = answers[variants] - answers[1]
-    wall, cpu = ([statistics.median(c[k] for c in costs[count]) for count in (1, variants)] for k in (0, 1))
+    wall, cpu = ([statistics.median(sum(step[k] for step in steps) for steps in costs[count]) for count in (1, variants)]
+                 for k in (1, 2))
     marginal, marginal_wall = extra / (cpu[1] - cpu[0]), extra / (wall[1] - wall[0])
     solutions = [Solution(problem.load(p)) for p in SET_PROBLEMS]
     naive = _groups((s, _typical(s, random.Random(f"bench/set/{n}"))) for s in solutions for n in range(20))
@@ -316,6 +318,11 @@ def set_rate(say, variants: int = 300, repeats: int = 3) -> float:
         f"{answers[variants]} answers, median {cpu[1]:.3f} s CPU ({wall[1]:.3f} s wall)")
     say(f"  marginal: {marginal:.0f} answers per CPU second ({marginal_wall:.0f} per wall second); naive evalf on "
         f"these answers {naive_rate:.0f} per CPU second: {marginal / naive_rate:.1f}x (target 10x)")
+    say(f"  where the marginal CPU time goes, per added answer (target {1e6 / (10 * naive_rate):.1f} us in all):")
+    for name in dict.fromkeys(name for name, _, _ in costs[variants][0]):
+        spent = [statistics.median(sum(cpu for step, _, cpu in steps if step == name) for steps in costs[count])
+                 for count in (1, variants)]
+        say(f"    {name:<58} {1e6 * (spent[1] - spent[0]) / extra:6.1f} us")
     return marginal
 
 

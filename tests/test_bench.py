@@ -23,8 +23,11 @@ def test_the_set_rate_is_printed():
     """The figures are printed (2 variants against 1: the rate itself is noise here, never asserted)."""
     lines = []
     bench.set_rate(lines.append, variants=2, repeats=1)
-    assert "1 variant: 17 answers" in lines[-2] and "2 variants: 34 answers" in lines[-2]
-    assert "marginal:" in lines[-1] and "naive evalf" in lines[-1]
+    rate = next(i for i, line in enumerate(lines) if "marginal:" in line)
+    assert "1 variant: 17 answers" in lines[rate - 1] and "2 variants: 34 answers" in lines[rate - 1]
+    assert "naive evalf" in lines[rate] and "where the marginal CPU time goes" in lines[rate + 1]
+    steps = [line.split(" us")[0].rsplit(None, 1)[0].strip() for line in lines[rate + 2:]]
+    assert steps[0] == "drawing" and "each variant's answers, certified, and the keys" in steps
 
 
 def test_the_sheet_section_says_where_the_time_goes():
