@@ -170,6 +170,14 @@ def variant_pages(tex: Path) -> dict[str, int]:
     return {name: int(page) for name, page in re.findall(r"\\variantpage\{([^}]+)\}\{(\d+)\}", aux)}
 
 
+def page_count(pdf_path: Path) -> int:
+    """How many pages a PDF has (pikepdf)."""
+    import pikepdf
+
+    with pikepdf.open(pdf_path) as pdf:
+        return len(pdf.pages)
+
+
 def extract_pages(pdf_path: Path, first: int, last: int, out: Path) -> Path:
     """Pages first..last of a PDF as a PDF of their own (pikepdf, i.e. qpdf: a split costs
     milliseconds where compiling the pages again would cost a LaTeX run), with an /ID derived

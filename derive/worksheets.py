@@ -375,9 +375,13 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
 
 def _per_variant(worksheet: Path, variants: int) -> list[Path]:
     """worksheet-NN.pdf for each variant, from the pages the whole worksheet labels as its own
-    (each variant starts a page with the set's header)."""
+    (each variant starts a page with the set's header; the last runs to the document's end: a
+    mark after it would be lost where nothing follows it on its page, as after an answer space)."""
     pages = export.variant_pages(worksheet)
-    starts = [pages[str(n)] for n in range(1, variants + 1)] + [pages["end"] + 1]
+    missing = [str(n) for n in range(1, variants + 1) if str(n) not in pages]
+    if missing:
+        raise export.BuildError(f"worksheet.pdf: LaTeX recorded no first page for variant {', '.join(missing)}")
+    starts = [pages[str(n)] for n in range(1, variants + 1)] + [export.page_count(worksheet.with_suffix(".pdf")) + 1]
     width = len(str(variants))
     return [export.extract_pages(worksheet.with_suffix(".pdf"), starts[n - 1], starts[n] - 1,
                                  worksheet.with_name(f"worksheet-{n:0{width}d}.pdf"))

@@ -154,10 +154,13 @@ def test_a_build_leaves_nothing_frozen_out_of_the_collector(tmp_path):
 def test_a_set_may_leave_room_to_answer_under_each_problem(tmp_path):
     week = tmp_path / "week.yaml"
     week.write_text("title: T\nproblems: [rod_endpoint, string_wrapped_disk]\nanswer_space: 6cm\n")
-    done = run_derive("sheet", str(week), "--to", "pdf", "--out", str(tmp_path / "out"))
+    done = run_derive("sheet", str(week), "--variants", "2", "--to", "pdf", "--out", str(tmp_path / "out"))
     assert done.returncode == 0, done.stderr
-    assert (tmp_path / "out" / "worksheet.tex").read_text().count("\\vspace{6cm}") == 2
-    assert (tmp_path / "out" / "worksheet.pdf").read_bytes().startswith(b"%PDF")
+    out = tmp_path / "out"
+    assert (out / "worksheet.tex").read_text().count("\\vspace{6cm}") == 4
+    # each student's own worksheet: the last one too, though nothing follows its answer space on its page
+    assert _pages(out / "worksheet-1.pdf") + _pages(out / "worksheet-2.pdf") == _pages(out / "worksheet.pdf")
+    assert "Variant 2" in pdf_text(out / "worksheet-2.pdf") and "Variant 2" not in pdf_text(out / "worksheet-1.pdf")
 
 
 def test_worked_solutions_number_their_equations_and_say_which_the_solving_uses(demo):
