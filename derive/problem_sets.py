@@ -9,6 +9,8 @@ refused with the file and the field where it does not fit. derive.worksheets bui
 """
 from __future__ import annotations
 
+import datetime
+
 import random
 import re
 from dataclasses import dataclass
@@ -96,8 +98,8 @@ TEXT_LIMITS = {"title": 200, "course": 200, "due": 100}
 def _set_text(path: Path, raw: dict, key: str) -> str:
     """A text field of a set file: plain text within its length, passed by the LaTeX policy."""
     value = raw.get(key, "")
-    if isinstance(value, (int, Decimal)) and not isinstance(value, bool) and key != "title":
-        value = str(value)  # `due: 2026` is a date the author meant as text
+    if isinstance(value, (int, Decimal, datetime.date)) and not isinstance(value, bool) and key != "title":
+        value = str(value)  # `due: 2026` or `due: 2026-12-01` (YAML's date) is a date the author meant as text
     if not isinstance(value, str) or (key == "title" and not value.strip()):
         raise InputError(f"{path}: {key}: expected {'non-empty ' if key == 'title' else ''}text")
     try:

@@ -325,3 +325,12 @@ def test_course_defaults_refused(tmp_path, file, text, fragment):
     done = run_derive("solve", "rod_endpoint", cwd=tmp_path)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert str(tmp_path / fragment.split(":")[0]) in done.stderr and fragment in done.stderr
+
+
+def test_a_set_files_due_date_may_be_written_as_yaml_reads_a_date(tmp_path):
+    """`due: 2026-12-01` (as `derive sheet --help` shows it) is a YAML date: it is the text written."""
+    from derive import problem_sets
+
+    week = tmp_path / "week.yaml"
+    week.write_text("title: Week 9\nproblems: [rod_endpoint]\ndue: 2026-12-01\n")
+    assert problem_sets.load_set(str(week)).due == "2026-12-01"
