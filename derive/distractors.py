@@ -279,31 +279,41 @@ def _value(solution: Solution, name: str, values: dict, digits: int) -> str | No
         return None    # loop, friction when sliding) is a mistake that does not apply here, never an error
 
 
-def distractors(problem: Problem, name: str, values: dict, digits: int, limit: int = WANTED) -> list[dict[str, str]]:
+def distractors(problem: Problem, name: str, values: dict, digits: int, limit: int = WANTED,
+                tolerance: str | None = None) -> list[dict[str, str]]:
     """Up to `limit` wrong values of the answer `name` at these (SI) values, each with what went
-    wrong: mistaken set-ups first, then another answer of the same unit, then one factor of 2."""
+    wrong: mistaken set-ups first, then another answer of the same unit, then one factor of 2.
+    None lies within `tolerance` (an amount in the answer's unit) of the right answer: an option
+    the answer's own tolerance would accept is no wrong answer (a student who rounds g to 9.8 may
+    land on it)."""
     mistakes, solution = _derived(problem)
     correct = _value(solution, name, values, digits)
     if correct is None:
         return []
     ask = problem.asks[name]
+    margin = Decimal(tolerance) if tolerance is not None else Decimal(0)
     candidates = [(label, _value(mistaken, name, values, digits)) for label, mistaken in mistakes]
     candidates += [(f"the {other.name} ({other.meaning}) taken for the {name}", _value(solution, other.name, values, digits))
                    for other in problem.asks.values() if other.name != name and other.unit == ask.unit]
-    found = _distinct(correct, candidates)
+    found = _distinct(correct, candidates, margin)
     rng = random.Random(f"{problem.id}/{name}/{correct}")
     if len(found) < limit:
-        found += _distinct(correct, [_factor_of_two(correct, found, digits, rng)], found)
+        found += _distinct(correct, [_factor_of_two(correct, found, digits, rng)], margin, found)
     return _placed(correct, found, limit, rng)
 
 
-def _distinct(correct: str, candidates: list[tuple[str, str | None]],
+def _distinct(correct: str, candidates: list[tuple[str, str | None]], margin: Decimal = Decimal(0),
               kept: list[dict[str, str]] = ()) -> list[dict[str, str]]:
-    """The candidates with a value, each differing at the digits shown from the answer, from
-    those already kept and from each other (the first of equal ones kept)."""
+    """The candidates with a value, each differing at the digits shown from the answer by more
+    than `margin`, from those already kept and from each other (the first of equal ones kept).
+
+    >>> [d["value"] for d in _distinct("1.00", [("a", "1.01"), ("b", "1.03"), ("c", "1.03")], Decimal("0.02"))]
+    ['1.03']
+    """
     seen, result = {Decimal(correct)} | {Decimal(d["value"]) for d in kept}, []
     for label, value in candidates:
-        if value is not None and Decimal(value).is_finite() and Decimal(value) not in seen:
+        if value is not None and Decimal(value).is_finite() and Decimal(value) not in seen \
+                and abs(Decimal(value) - Decimal(correct)) > margin:
             seen.add(Decimal(value))
             result.append({"value": value, "mistake": label})
     return result

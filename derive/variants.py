@@ -191,7 +191,9 @@ class ProblemVariants:
     def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
         """Each answer's distractors (value, mistake) for multiple choice."""
         def derive_wrong(values: dict[sp.Symbol, sp.Expr]) -> dict[str, list[dict[str, str]]]:
-            return {n: distractors.distractors(self.problem, n, values, a.sig_figs or DEFAULT_SIG_FIGS)
+            tolerances = self.tolerances(draw)
+            return {n: distractors.distractors(self.problem, n, values, a.sig_figs or DEFAULT_SIG_FIGS,
+                                               tolerance=tolerances[n])
                     for n, a in self.problem.asks.items()}
 
         return self._once(self._wrong, draw, derive_wrong)

@@ -65,7 +65,9 @@ def test_the_key_is_the_one_the_spinning_wheel_system_built(tmp_path):
 def test_the_multiple_choice_key_is_the_one_the_spinning_wheel_system_built(tmp_path):
     """The wrong options too (3 variants, seed 5): a couple reversed turns L as far, so the mistakes
     are the old ones (the exact turn for the estimate and a factor of 2), not a reversed couple whose
-    small-angle limit was taken of the wrong symbol."""
+    small-angle limit was taken of the wrong symbol. Rebuilt once since: the exact turn lies within
+    one unit in the last digit of the estimate in these variants, inside the answer's own tolerance,
+    and is no longer offered (test_distractors: no option within the tolerance)."""
     out = tmp_path / "k"
     done = run_derive("sheet", "tilting_wheel", "--variants", "3", "--seed", "5", "--to", "distractors",
                       "--questions", "choice", "--out", str(out), env={"PYTHONHASHSEED": "0"})

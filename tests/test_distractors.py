@@ -115,10 +115,10 @@ def _library_items(count=3):
         draws = [variants.valid_draw(problem, solution, random.Random(f"1/{problem.id}/{n}")) for n in range(count)]
         item = variants.ProblemVariants(problem, solution, draws)
         for draw in draws:
-            answers, wrong = item.answers(draw), item.wrong(draw)
+            answers, wrong, tolerances = item.answers(draw), item.wrong(draw), item.tolerances(draw)
             for name in problem.asks:
                 if answers[name] is not None:
-                    yield problem.id, name, answers[name], [d["value"] for d in wrong[name]]
+                    yield problem.id, name, answers[name], [d["value"] for d in wrong[name]], tolerances[name]
 
 
 def test_over_the_library_options_are_distinct_and_the_right_one_is_not_guessed_by_rank():
@@ -127,10 +127,12 @@ def test_over_the_library_options_are_distinct_and_the_right_one_is_not_guessed_
     and each end at least 10% (with three options, half, the answer and double, it was always
     the middle one)."""
     ranks, items = collections.Counter(), 0
-    for problem_id, name, right, wrong in _library_items():
+    for problem_id, name, right, wrong, tolerance in _library_items():
         assert len(wrong) <= distractors.WANTED
         shown = [Decimal(v) for v in [right, *wrong]]
         assert len(set(shown)) == len(shown), (problem_id, name, right, wrong)
+        # no option the right answer's own tolerance accepts: it would be no wrong answer
+        assert all(abs(v - Decimal(right)) > Decimal(tolerance) for v in shown[1:]), (problem_id, name, right, wrong)
         if len(wrong) == distractors.WANTED:
             items += 1
             ranks[sorted(shown).index(Decimal(right))] += 1
