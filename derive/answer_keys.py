@@ -35,7 +35,7 @@ from derive.json_text import Raw
 from derive.problem_sets import ProblemSet
 from derive.spreadsheet import safe_cell
 from derive.stencil import Stencil, hole
-from derive.variants import ProblemVariants
+from derive.variants import ProblemVariants, number_latex
 
 CONVENTIONS = ("SI units; angles in radians (rad is dimensionless); y up; counter-clockwise positive; values to "
                "the significant figures shown")
@@ -178,13 +178,14 @@ class _ProblemKey:
     def tex_rows(self, number: int) -> list[str]:
         """The problem's rows of key.tex in variant `number`."""
         item = self.item
-        answers = item.answers(item.draws[number - 1])
-        return [stencil.fill({"variant": str(number), "value": item.shown(name, answers[name])})
+        answers, tolerances = item.answers(item.draws[number - 1]), item.tolerances(item.draws[number - 1])
+        return [stencil.fill({"variant": str(number), "value": item.shown(name, answers[name]),
+                              "tolerance": "" if tolerances[name] is None else f"${number_latex(tolerances[name].lower())}$"})
                 for name, stencil in self._tex_stencils.items()]
 
     @cached_property
     def _tex_stencils(self) -> dict[str, Stencil]:
         return {name: Stencil(render.render("key-row.tex.j2", variant=hole("variant"), problem=self.id,
                                             symbol=render.symbol_latex(name), value=f"${hole('value')}$",
-                                            unit=units.siunitx_unit(ask.unit)))
+                                            tolerance=hole("tolerance"), unit=units.siunitx_unit(ask.unit)))
                 for name, ask in self.item.problem.asks.items()}

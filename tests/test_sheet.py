@@ -52,6 +52,14 @@ def test_answer_key_pdf_has_every_variants_answers(demo):
     assert len(values) == 3 * (1 + 3 + 2)
     for value in values:
         assert value in text
+    assert "Tolerance" in text  # each answer with its tolerance, as the CSV and JSON keys give it
+    rows = (demo / "key.tex").read_text().splitlines()
+    for variant in key["variants"]:
+        for problem_id, problem in variant["problems"].items():
+            for answer in problem["answers"].values():
+                row = next(r for r in rows if r.startswith(f"{variant['variant']} & {problem_id.replace('_', chr(92) + '_')}")
+                           and f"${answer['value'].split('e')[0]}" in r)
+                assert f"& ${answer['tolerance'].lower().split('e')[0]}" in row, row
 
 
 def test_worksheet_pdf_shows_each_variants_numbers(demo):
