@@ -18,6 +18,7 @@ into a stencil cut once per problem (derive.stencil), not written anew per varia
 from __future__ import annotations
 
 import random
+from collections import Counter
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Sequence
@@ -60,17 +61,21 @@ def valid_draws(problem: Problem, solution: Solution, rngs: Sequence[random.Rand
     (else an error naming the problem). A variant's draw is the same however many are drawn."""
     draws: list[dict[str, sp.Expr] | None] = [None] * len(rngs)
     pending = list(range(len(rngs)))
+    broken: Counter = Counter()  # how often each condition broke a draw
     for _ in range(MAX_DRAWS):
         candidates = {i: draw(problem, rngs[i]) for i in pending}
-        broken = solution.violations([si_values(problem, values) for values in candidates.values()])
-        for (i, values), meaning in zip(candidates.items(), broken):
+        meanings = solution.violations([si_values(problem, values) for values in candidates.values()])
+        for (i, values), meaning in zip(candidates.items(), meanings):
             if meaning is None:
                 draws[i] = values
+            else:
+                broken[meaning] += 1
         pending = [i for i in pending if draws[i] is None]
         if not pending:
             return draws
-    raise InputError(f"{problem.path}: parameters: no draw in {MAX_DRAWS} meets the problem's conditions "
-                     f"({'; '.join(m for _, _, m in solution.conditions)}): narrow the ranges")
+    meaning, count = broken.most_common(1)[0]
+    raise InputError(f"{problem.path}: parameters: no draw in {MAX_DRAWS} meets the problem's conditions; "
+                     f"{count} of {sum(broken.values())} draws broke this one: {meaning}: narrow the ranges")
 
 
 def valid_draw(problem: Problem, solution: Solution, rng: random.Random) -> dict[str, sp.Expr]:

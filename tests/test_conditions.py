@@ -97,7 +97,7 @@ def test_unsatisfiable_conditions_are_an_error_naming_the_problem(tmp_path):
     done = run_derive("check", "--seeds", "2", "tugged_spool", library=library)
     assert done.returncode == 1
     assert "tugged_spool.yaml: parameters: no draw in 200 meets the problem's conditions" in done.stdout
-    assert "r > R does not hold" in done.stdout
+    assert "200 of 200 draws broke this one: r > R does not hold" in done.stdout  # the one that breaks, alone
 
 
 def test_a_magnitude_whose_sign_was_read_at_samples_is_checked_at_each_variant(monkeypatch):
