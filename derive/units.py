@@ -54,6 +54,10 @@ UNITS: dict[str, sympy.Expr] = {
     # sympy's astronomical unit is the value before the IAU fixed it (2012) at exactly 149597870700 m
     "AU": _AU, "au": _AU, "astronomical_unit": _AU, "astronomical_units": _AU,
 }
+#: N, J, W, Pa and Hz with a prefix of a thousand's power: mN, kJ, MW, GPa, kHz.
+PREFIXED: dict[str, sympy.Expr] = {prefix + name: factor * UNITS[name] for name in ("N", "J", "W", "Pa", "Hz")
+                                   for prefix, factor in (("m", sympy.Rational(1, 1000)), ("k", 1000),
+                                                          ("M", 10**6), ("G", 10**9))}
 _SI_BASE = [u.kilogram, u.meter, u.second, u.ampere, u.kelvin, u.mole, u.candela]
 _ORDER = ["mass", "length", "time", "current", "temperature", "amount_of_substance",
           "luminous_intensity"]
@@ -85,10 +89,13 @@ def sympy_units() -> dict[str, Quantity]:
 def _lookup(name: str) -> sympy.Expr:
     if name in UNITS:
         return UNITS[name]
+    if name in PREFIXED:
+        return PREFIXED[name]
     if name in sympy_units():
         return sympy_units()[name]
-    raise UnitError(f"unknown unit '{name}' (known: {', '.join(UNITS)}, or any name of sympy.physics.units)"
-                    + did_you_mean(name, [*UNITS, *sympy_units()]))
+    raise UnitError(f"unknown unit '{name}' (known: {', '.join(UNITS)}; N, J, W, Pa and Hz with m, k, M or G before "
+                    "them, as kN or MPa; or any name of sympy.physics.units)"
+                    + did_you_mean(name, [*UNITS, *PREFIXED, *sympy_units()]))
 
 
 @lru_cache(maxsize=256)  # a unit string parses to one immutable expression

@@ -380,3 +380,18 @@ def test_every_library_unit_reads_as_text_without_operators():
     assert unicode_unit("1") == ""
     with pytest.raises(UnitError, match="unknown unit"):
         unicode_unit("furlong")
+
+
+@pytest.mark.parametrize("text, factor, dim", [
+    ("mN", sympy.Rational(1, 1000), {"mass": 1, "length": 1, "time": -2}),
+    ("kJ", 1000, {"mass": 1, "length": 2, "time": -2}),
+    ("MW", 10**6, {"mass": 1, "length": 2, "time": -3}),
+    ("GPa", 10**9, {"mass": 1, "length": -1, "time": -2}),
+    ("kHz", 1000, {"time": -1}),
+    ("kN*m", 1000, {"mass": 1, "length": 2, "time": -2}),
+])
+def test_derived_units_take_a_prefix_of_a_thousands_power(text, factor, dim):
+    """mN, kJ, MPa: a newcomer's units (a trial's mN and mJ were refused with "did you mean 'm'?")."""
+    unit = parse_unit(text)
+    assert si_factor(unit) == factor and dimension(unit) == dim
+    assert unicode_unit(text) == text.replace("*", "·") and siunitx_unit(text) == rf"\unit{{{text.replace('*', '.')}}}"
