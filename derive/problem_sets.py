@@ -248,7 +248,10 @@ def _problems(where: Path | str, entries: list, seed: int, field_of) -> tuple[li
             try:
                 file = library.find_problem(reference).resolve()
             except library.LibraryError as error:
-                raise InputError(f"{where}: {field}: {error}") from None
+                beside = Path(where).parent / reference if isinstance(where, Path) else None
+                hint = (f" (a path in a set file is read from the working folder, not the set file's: "
+                        f"write {beside} to name the one beside it)") if beside is not None and beside.is_file() else ""
+                raise InputError(f"{where}: {field}: {error}{hint}") from None
             if file in files:
                 raise InputError(f"{where}: {field}: {reference} is already {fields[files.index(file)]}; "
                                  "a problem appears once in a set")

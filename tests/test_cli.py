@@ -334,3 +334,15 @@ def test_a_set_files_due_date_may_be_written_as_yaml_reads_a_date(tmp_path):
     week = tmp_path / "week.yaml"
     week.write_text("title: Week 9\nproblems: [rod_endpoint]\ndue: 2026-12-01\n")
     assert problem_sets.load_set(str(week)).due == "2026-12-01"
+
+
+def test_a_set_files_path_is_read_from_the_working_folder_and_the_error_says_so(tmp_path):
+    """A newcomer names a problem beside the set file; derive reads paths from the working folder
+    and says how to name that one."""
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "set.yaml").write_text("title: T\nproblems: [p.yaml]\n")
+    (tmp_path / "sub" / "p.yaml").write_text(next(ROOT.glob("problems/*/rod_endpoint.yaml")).read_text())
+    done = run_derive("sheet", "sub/set.yaml", "--to", "", cwd=tmp_path)
+    assert done.returncode == 2
+    assert done.stderr.strip().endswith("p.yaml: no such problem file (a path in a set file is read from the working "
+                                        "folder, not the set file's: write sub/p.yaml to name the one beside it)")
