@@ -583,7 +583,7 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
                  + (", angular_acceleration, angular_velocity, angle, equilibrium.angle" if body.rotates else ""))
         if contact:
             known += ", " + ", ".join(CONTACT_QUANTITIES)
-        raise ValueError(f"a body has {known}; not {rest!r}")
+        raise ValueError(f"a body has {known}; not {rest!r}" + did_you_mean(rest, known.split(", ")))
     names = {c.name: c for c in scene.constraints}
     if head in names:
         part = names[head]
@@ -599,7 +599,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if isinstance(part, Contact) and part.point is not None and "friction" in allowed:
             allowed += ("min_friction_coefficient",)
         if rest not in allowed:
-            raise ValueError(f"{head} has {', '.join(allowed + (IMPULSES if pushes else ()))}; not {rest!r}")
+            offered = allowed + (IMPULSES if pushes else ())
+            raise ValueError(f"{head} has {', '.join(offered)}; not {rest!r}" + did_you_mean(rest, offered))
         return Quantity("contact" if rest == "min_friction_coefficient" else "force", head, rest)
     known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
     raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})"

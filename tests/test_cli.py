@@ -210,6 +210,8 @@ DISK = (ROOT / "problems/torque/string_wrapped_disk.yaml").read_text()
     ("hangs: block", "hangs: blok", "scene.constraints", "'block'"),  # a body
     ("of: block.acceleration.y", "of: blok.acceleration.y", "ask.a.of", "'block'"),  # a body an ask names
     ("shape: disk,", "shape: cylinder, length: R,", "scene.bodies.disk.length", "'height'"),  # another word for a size
+    ("of: block.acceleration.y", "of: block.acceleraton.y", "ask.a.of", "'acceleration.y'"),  # what a body has
+    ("of: string.tension", "of: string.tensoin", "ask.T.of", "'tension'"),  # what a part has (a trial's typo)
 ])
 def test_did_you_mean_in_problem_files(tmp_path, old, new, field, suggestion):
     assert old in DISK
