@@ -366,7 +366,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         roots = [r for r in sp.solve(sp.numer(sp.together(expr)), parameter.symbol)
                  if not r.has(sp.I) and r.is_nonnegative is not False]
         if parameter.range is not None:
-            low, high = parameter.range
+            low, high = parameter.si_ends  # the roots are in SI, as the symbol is
             # Keep the roots that land in the parameter's range for some parameter values.
             inside = [r for r in roots if any(low <= sp.N(r.xreplace(p), 30) <= high
                                               for p in sample_points(self.problem, r))]

@@ -266,7 +266,7 @@ def question_stencil(text: str, names: Sequence[str], limit: int = QUESTION_LIMI
     r"""The question read once, as `question_latex` reads it, and cut at its placeholders: a
     set's variants fill it with their values (`quantity`), not reading it again.
 
-    >>> question_stencil("A {{ m }} mass & {{ g }}", ["m", "g"]).fill({"m": quantity("2", "\\mathrm{kg}"), "g": "$9$"})
+    >>> question_stencil("A {{ m }} mass & {{ g }}", ["m", "g"]).fill({"m": quantity("2", "\\,\\mathrm{kg}"), "g": "$9$"})
     'A $2\\,\\mathrm{kg}$ mass \\& $9$'
     """
     pieces = _pieces(text, tuple(names), limit)
@@ -277,11 +277,12 @@ _NUMBER = re.compile(r"-?[0-9]+(?:\.[0-9]+)?(?:\\times10\^\{-?[0-9]+\})?")
 
 
 def quantity(number: str, unit: str = "") -> str:
-    r"""A value as a question shows it, `$NUMBER\,UNIT$` (a decimal number as derive writes it,
-    1.2\times10^{-5}; a unit's LaTeX), read as `question_latex` reads a value: the unit once, in a
-    value of its own, and the number by its form (a set writes thousands of values).
+    r"""A value as a question shows it, `$NUMBER UNIT$` (a decimal number as derive writes it,
+    1.2\times10^{-5}; what follows it, a unit's LaTeX after a thin space, units.after_number), read
+    as `question_latex` reads a value: the unit once, in a value of its own, and the number by its
+    form (a set writes thousands of values).
 
-    >>> quantity("-1.5\\times10^{-3}", "\\mathrm{m}"), quantity("3")
+    >>> quantity("-1.5\\times10^{-3}", "\\,\\mathrm{m}"), quantity("3")
     ('$-1.5\\times10^{-3}\\,\\mathrm{m}$', '$3$')
     >>> quantity("1}\\input{x")
     Traceback (most recent call last):
@@ -290,14 +291,14 @@ def quantity(number: str, unit: str = "") -> str:
     """
     if not _NUMBER.fullmatch(number):
         raise LatexError(f"{number!r} is not a number as derive writes one")
-    text = f"${number}\\,{unit}$" if unit else f"${number}$"
+    text = f"${number}{unit}$"
     return text if _kept(unit) else _value(text, QUESTION_LIMIT)
 
 
 @lru_cache(maxsize=256)
 def _kept(unit: str) -> bool:
     """Whether a value with this unit reads as written (then any number's does: `quantity`)."""
-    text = f"$1\\,{unit}$" if unit else "$1$"
+    text = f"$1{unit}$"
     return _value(text, QUESTION_LIMIT) == text
 
 

@@ -62,6 +62,18 @@ class Parameter:
     range: tuple[sp.Expr, sp.Expr] | None
     sig_figs: int
 
+    @cached_property
+    def si_ends(self) -> tuple[sp.Expr, sp.Expr]:
+        """The least and greatest value in SI units, what the derivation's symbol stands for: the
+        range's ends, or the fixed value twice (a range of 10 to 30 deg is 10*pi/180 to 30*pi/180).
+
+        >>> Parameter("t", sp.Symbol("t"), "tilt", "deg", None, (sp.Integer(10), sp.Integer(30)), 2).si_ends
+        (pi/18, pi/6)
+        """
+        factor = units.si_factor(units.parse_unit(self.unit))
+        low, high = self.range or (self.value, self.value)
+        return low * factor, high * factor
+
     def bounds(self) -> tuple[Decimal, Decimal]:
         """The range's ends rounded inward to the significant figures: every draw lies between
         them (a range that holds no such value is refused when the file is read)."""

@@ -15,10 +15,10 @@ from derive.mechanics.bearings import own_axis
 from derive.reader import Reader
 from derive.scene import Bearings, Body, FreeRotation, PivotPoint, RollsOnEdge
 def _at_range_ends(reader: Reader, value: sp.Expr) -> list[sp.Expr]:
-    """The value at every corner of its parameters' ranges (a fixed parameter at its value)."""
+    """The value at every corner of its parameters' ranges in SI (a fixed parameter at its value)."""
     corners = [{}]
     for p in (p for p in reader.parameters.values() if p.symbol in value.free_symbols):
-        corners = [{**c, p.symbol: end} for c in corners for end in (p.range or (p.value, p.value))]
+        corners = [{**c, p.symbol: end} for c in corners for end in p.si_ends]
     return [value.xreplace(c) for c in corners]
 
 

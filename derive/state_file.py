@@ -184,7 +184,7 @@ def _turn(reader: Reader, body: str, raw: dict, field: str, bodies: dict[str, Bo
 def _restitution(reader: Reader, raw, field: str):
     """A coefficient of restitution: a number, or parameters whose ranges keep it, in [0, 1]."""
     e = reader.dimensioned(raw, field, "1", "a coefficient of restitution")
-    bounds = [p.range or (p.value, p.value) for p in reader.parameters.values() if p.symbol in e.free_symbols]
+    bounds = [p.si_ends for p in reader.parameters.values() if p.symbol in e.free_symbols]
     if e.is_negative or (not e.free_symbols and e > 1) or any(b[0] < 0 or b[1] > 1 for b in bounds):
         raise reader.fail(field, "a coefficient of restitution lies in [0, 1]")
     return e

@@ -306,6 +306,16 @@ def _written(text: str, name, times: str, power) -> str:
 _DEGREES = ("deg", "degree", "degrees")
 
 
+def after_number(text: str, tex: str) -> str:
+    r"""What follows a number in a unit `text` typeset as `tex` (latex_unit or siunitx_unit): a thin
+    space and the unit, but nothing between a number and a degree sign (30°, as SI writes it).
+
+    >>> after_number("kg", r"\mathrm{kg}"), after_number("deg", r"{}^{\circ}"), after_number("1", "")
+    ('\\,\\mathrm{kg}', '{}^{\\circ}', '')
+    """
+    return tex if not tex or text.strip() in _DEGREES else r"\," + tex
+
+
 def _tex_name(name: str) -> str:
     """A unit's name as TeX text: sympy's long names have underscores (astronomical_unit)."""
     return name.replace("_", r"\_")

@@ -95,15 +95,6 @@ def unit_latex(unit: str, siunitx: bool) -> str:
     return units.siunitx_unit(unit) if siunitx else units.latex_unit(unit)
 
 
-def quantity_latex(number: str, unit_tex: str) -> str:
-    r"""A given value (its decimal text) as math, with its unit's LaTeX (`unit_latex`).
-
-    >>> quantity_latex("1.2e-05", unit_latex("kg*m^2", siunitx=False))
-    '1.2\\times10^{-5}\\,\\mathrm{kg}\\,\\mathrm{m}^{2}'
-    """
-    return f"{number_latex(number)}\\,{unit_tex}" if unit_tex else number_latex(number)
-
-
 @dataclass
 class ProblemVariants:
     """One problem of the set: its derivation (shared) and each variant's numbers."""
@@ -242,6 +233,12 @@ class ProblemVariants:
         return self._question_stencil.fill({name: latex_safety.quantity(number_latex(number), units_tex[name])
                                             for name, number in numbers.items()})
 
+    def quantities(self, numbers: dict[str, str], siunitx: bool) -> dict[str, str]:
+        """A variant's parameters (`numbers`: their decimal text) as math with their units (no
+        space before a degree sign: units.after_number)."""
+        units_tex = self.units_latex[siunitx]
+        return {name: number_latex(number) + units_tex[name] for name, number in numbers.items()}
+
     @cached_property
     def _question_stencil(self) -> Stencil:
         """The question read once for every variant (latex_safety.question_stencil)."""
@@ -252,6 +249,7 @@ class ProblemVariants:
 
     @cached_property
     def units_latex(self) -> dict[bool, dict[str, str]]:
-        """Each parameter's unit as LaTeX, by whether in siunitx (`unit_latex`)."""
-        return {siunitx: {name: unit_latex(p.unit, siunitx) for name, p in self.problem.parameters.items()}
-                for siunitx in (False, True)}
+        """What follows each parameter's number, its unit as LaTeX (units.after_number), by whether
+        in siunitx (`unit_latex`)."""
+        return {siunitx: {name: units.after_number(p.unit, unit_latex(p.unit, siunitx))
+                          for name, p in self.problem.parameters.items()} for siunitx in (False, True)}

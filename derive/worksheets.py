@@ -32,7 +32,7 @@ from derive.problem_sets import ProblemSet, load_sheet
 from derive.progress import Reporter
 from derive.report import route_title
 from derive.stencil import Stencil, hole
-from derive.variants import ProblemVariants, quantity_latex, unit_latex, valid_draws
+from derive.variants import ProblemVariants, unit_latex, valid_draws
 
 
 
@@ -156,8 +156,8 @@ def numbers_context(item: ProblemVariants, siunitx: bool, given: dict[str, str],
     parameter's value and unit as math) and its results (`results`: each answer's LaTeX)."""
     problem = item.problem
     return {"given": [f"${render.latex_of(p.symbol)} = {given[n]}$" for n, p in problem.parameters.items()],
-            "results": [{"symbol": render.symbol_latex(n), "value": results[n], "unit": unit_latex(a.unit, siunitx)}
-                        for n, a in problem.asks.items()]}
+            "results": [{"symbol": render.symbol_latex(n), "value": results[n],
+                         "unit": units.after_number(a.unit, unit_latex(a.unit, siunitx))} for n, a in problem.asks.items()]}
 
 
 def _numbers(item: ProblemVariants, siunitx: bool) -> list[str]:
@@ -167,11 +167,10 @@ def _numbers(item: ProblemVariants, siunitx: bool) -> list[str]:
     stencil = Stencil(render.render("solutions-numbers.tex.j2", variant={
         "number": hole("number"), **numbers_context(item, siunitx, {n: hole(f"g:{n}") for n in problem.parameters},
                                                     {n: hole(f"r:{n}") for n in problem.asks})}))
-    units_latex = item.units_latex[siunitx]
     texts = []
     for number, (draw, given) in enumerate(zip(item.draws, item.numbers), start=1):
         answers = item.answers(draw)
-        values = {f"g:{n}": quantity_latex(text, units_latex[n]) for n, text in given.items()}
+        values = {f"g:{n}": text for n, text in item.quantities(given, siunitx).items()}
         values.update({f"r:{n}": item.shown(n, answers[n]) for n in problem.asks})
         values["number"] = str(number)
         texts.append(stencil.fill(values))
@@ -425,8 +424,8 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
     solution = Solution(problem)
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
     item = ProblemVariants(problem, solution, [middle])
-    answers, units_latex = item.answers(middle), item.units_latex[True]
-    example = numbers_context(item, True, {n: quantity_latex(text, units_latex[n]) for n, text in item.numbers[0].items()},
+    answers = item.answers(middle)
+    example = numbers_context(item, True, item.quantities(item.numbers[0], siunitx=True),
                               {n: item.shown(n, answers[n]) for n in problem.asks})
     context = {**_solutions_context(item, siunitx=True), "example": example,
                "limits": _limits_context(item, middle, progress)}

@@ -1,12 +1,14 @@
 """`derive sheet`: the documents, the keys, determinism, and builds that fail safely."""
 import json
+import re
 import subprocess
 from pathlib import PurePosixPath
 
 import lxml.html
 import pytest
+import sympy
 
-from conftest import copy_library, image_kind, run_derive
+from conftest import ROOT, copy_library, image_kind, run_derive
 
 
 @pytest.fixture(scope="module")
@@ -183,3 +185,45 @@ def test_worked_solutions_number_their_equations_and_say_which_the_solving_uses(
     for reference in referred:
         for first, last in re.findall(r"\((\d+)\)(?:–\((\d+)\))?", reference):
             assert int(first) in tags and (not last or int(last) in tags)
+
+
+def test_an_angle_in_degrees_has_no_space_before_its_sign(tmp_path):
+    """30°, as SI writes it, in the question and the worked solutions (a trial saw "18 °"); other
+    units keep their thin space."""
+    text = (ROOT / "problems/torque/tugged_spool.yaml").read_text()
+    text = text.replace("theta: {meaning: angle of the string above the horizontal, unit: rad, range: [0.1, 1.2]",
+                        "theta: {meaning: angle of the string above the horizontal, unit: deg, range: [6, 60]")
+    assert "unit: deg" in text
+    (tmp_path / "spool.yaml").write_text(text)
+    done = run_derive("sheet", str(tmp_path / "spool.yaml"), "--to", "", "--out", str(tmp_path / "out"))
+    assert done.returncode == 0, done.stderr
+    for name in ("worksheet.tex", "solutions.tex"):
+        tex = (tmp_path / "out" / name).read_text()
+        assert re.search(r"(\$|= )[0-9.]+\\unit\{\\degree\}\$", tex) and "\\,\\unit{\\degree}" not in tex, name
+        assert re.search(r"[0-9]\\,\\unit\{N\}", tex), name
+
+
+def test_a_root_is_chosen_by_the_parameters_range_in_si(tmp_path):
+    """theta_c of a spool whose theta is drawn in degrees: the roots of a(theta) are radians and the
+    range [6, 60] deg is compared as [pi/30, pi/3] (it was compared as [6, 60], and took the root
+    2*pi - acos(r/R) there for one inside it, or refused both)."""
+    from derive.answers import Solution
+    from derive.problem import load
+
+    text = (ROOT / "problems/torque/tugged_spool.yaml").read_text().replace(
+        "unit: rad, range: [0.1, 1.2]", "unit: deg, range: [6, 60]")
+    (tmp_path / "spool.yaml").write_text(text)
+    problem = load(str(tmp_path / "spool.yaml"))
+    r, R = (problem.parameters[n].symbol for n in ("r", "R"))
+    assert Solution(problem).expression("theta_c") == sympy.acos(r / R)
+
+
+def test_a_tilt_in_degrees_is_checked_against_its_limits_in_si(tmp_path):
+    """A rod on bearings tilted 12 to 80 deg from its shaft is inside (0, pi): it was refused, its
+    range compared as 12 to 80 against pi."""
+    text = (ROOT / "problems/angular_momentum/rigid_body_L.yaml").read_text().replace(
+        "unit: rad, range: [0.2, 1.4]", "unit: deg, range: [12, 80]")
+    assert "unit: deg" in text
+    (tmp_path / "rod.yaml").write_text(text)
+    done = run_derive("solve", str(tmp_path / "rod.yaml"))
+    assert done.returncode == 0, done.stderr
