@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from conftest import run_derive
-from derive import names, problem, worksheets
+from derive import names, numeric, problem, worksheets
 from derive.errors import InputError, ProblemError
 
 
@@ -67,7 +67,7 @@ def test_every_draw_is_inside_its_range_at_its_significant_figures(low, width, s
         return  # refused when the file is read (next test)
     value = parameter.draw(random.Random(seed))
     assert bounds[0] <= value <= bounds[1]
-    assert sp.Rational(str(Decimal(worksheets.numeric.significant(value, sig_figs)))) == value
+    assert sp.Rational(str(Decimal(numeric.significant(value, sig_figs)))) == value
 
 
 def test_a_range_with_no_value_at_its_significant_figures_is_refused():
