@@ -371,8 +371,8 @@ class Evaluator:
         answer has a symbol without a value."""
         results = [[None] * len(self.expressions) for _ in rows]
         if self._in_program:
-            self._balls(rows, [r for r, row in enumerate(rows) if all(s in row for s in self._program.symbols)],
-                        digits, results)
+            symbols = self._keys(rows)
+            self._balls(rows, [r for r, row in enumerate(rows) if all(s in row for s in symbols)], digits, results)
         for r, row in enumerate(rows):
             if None not in results[r]:
                 continue
@@ -385,6 +385,12 @@ class Evaluator:
                         results[r][i] = Certified(self._lambdified[i].agreement(row, digits[i]), "agreement")
         return results
 
+    def _keys(self, rows: list[dict[sp.Symbol, sp.Expr]]) -> list[sp.Symbol]:
+        """The program's symbols as the rows' own keys: an equal Symbol that is another object (sympy's
+        cache makes a new one once the old has left it) costs a sympy comparison at every look-up."""
+        own = {key: key for key in rows[0]} if rows else {}
+        return [own.get(symbol, symbol) for symbol in self._program.symbols]
+
     def signs(self, rows: list[dict[sp.Symbol, sp.Expr]]) -> list[list[int | None]]:
         """Each row's answers' signs (1, 0 or -1; None where an answer has a symbol without a
         value), certified: a sign is read from the balls at the first working precision where
@@ -392,9 +398,9 @@ class Evaluator:
         (a zero, a ball that straddles it, what balls do not map)."""
         results: list[list[int | None]] = [[None] * len(self.expressions) for _ in rows]
         if self._in_program:
-            together = [r for r, row in enumerate(rows) if all(s in row for s in self._program.symbols)]
-            outcomes = self._program.run([[rows[r][s] for s in self._program.symbols] for r in together],
-                                         starting_bits(1))
+            symbols = self._keys(rows)
+            together = [r for r, row in enumerate(rows) if all(s in row for s in symbols)]
+            outcomes = self._program.run([[rows[r][s] for s in symbols] for r in together], starting_bits(1))
             for r, outcome in zip(together, outcomes):
                 if not isinstance(outcome, balls.Undecided):
                     for k, i in self._in_program:
@@ -412,8 +418,9 @@ class Evaluator:
         certified; past MAX_BITS, the exact backend."""
         pending = dict.fromkeys(together, self._in_program)
         bits = starting_bits(max(digits[i] for _, i in self._in_program))
+        symbols = self._keys(rows)
         while pending and bits <= MAX_BITS:
-            outcomes = self._program.run([[rows[r][s] for s in self._program.symbols] for r in pending], bits)
+            outcomes = self._program.run([[rows[r][s] for s in symbols] for r in pending], bits)
             undecided = {}
             for (r, wanted), outcome in zip(pending.items(), outcomes):
                 if isinstance(outcome, balls.Undecided):
