@@ -163,8 +163,7 @@ class _ProblemKey:
         """Each answer's CSV row, its constant cells written by the CSV writer (a general result's
         value is its expression, the same in every variant)."""
         stencils = {}
-        general = {name for name, value in self.item.certified(self.item.draws[0]).items() if value is None} \
-            if self.item.draws else set()
+        general = self._general
         for name, ask in self.item.problem.asks.items():
             buffer = io.StringIO()
             row = {"variant": hole("variant"), "problem": self.id, "answer": name,
@@ -185,7 +184,17 @@ class _ProblemKey:
 
     @cached_property
     def _tex_stencils(self) -> dict[str, Stencil]:
+        """Each answer's row of key.tex; a general result's expression spans the value's and the
+        tolerance's columns (it has no tolerance, and a long one would run off the page)."""
+        general = self._general
         return {name: Stencil(render.render("key-row.tex.j2", variant=hole("variant"), problem=self.id,
                                             symbol=render.symbol_latex(name), value=f"${hole('value')}$",
-                                            tolerance=hole("tolerance"), unit=units.siunitx_unit(ask.unit)))
+                                            tolerance=None if name in general else hole("tolerance"),
+                                            unit=units.siunitx_unit(ask.unit)))
                 for name, ask in self.item.problem.asks.items()}
+
+    @cached_property
+    def _general(self) -> set[str]:
+        """The answers that are general results (an expression in every variant, no number)."""
+        return {name for name, value in self.item.certified(self.item.draws[0]).items() if value is None} \
+            if self.item.draws else set()
