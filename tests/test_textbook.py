@@ -509,6 +509,7 @@ EXPECTED.update({
         "v": lambda s: sp.sqrt(2 * s.g * (s.R + 3 * s.d) / 5),
         "v_top": lambda s: sp.sqrt(2 * s.g * ((s.R + 3 * s.d) / 5 - 2 * s.R)),
         "N_top": lambda s: s.m * (2 * s.g * ((s.R + 3 * s.d) / 5 - 2 * s.R) / s.R - s.g),
+        "d_min": lambda s: (5 * sp.Rational(5, 2) * s.R - s.R) / 3,  # the book's least release height, 5R/2
     },
     # Halliday ch. 8, Serway & Jewett ch. 6: the same track released lower; it leaves where N = 0,
     # v^2 = g y with y above the center, and v^2 = 2 g (H - R - y): y = 2 (H - R)/3.
