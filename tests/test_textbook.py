@@ -524,10 +524,12 @@ EXPECTED.update({
         "y": lambda s: s.h,
     },
     # Serway & Jewett ch. 10: a solid ball rolling at v0 on the floor into a loop (a transfer that
-    # keeps its spin): (7/10) v_top^2 = (7/10) v0^2 - g 2 (R - r), rolling clockwise, omega = -v/r.
+    # keeps its spin): (7/10) v_top^2 = (7/10) v0^2 - g 2 (R - r), rolling clockwise, omega = -v/r;
+    # ch. 6: at the top N + m g = m v_top^2/(R - r).
     "ball_floor_into_loop": {
         "v_top": lambda s: sp.sqrt(s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)),
         "omega_top": lambda s: -sp.sqrt(s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)) / s.r,
+        "N_top": lambda s: s.m * ((s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)) / (s.R - s.r) - s.g),
     },
     # Serway & Jewett ch. 10: (1/2)(M L^2/3) w0^2 = M g (L/2)(1 - cos(theta_max)); at the top it is
     # at rest, so the hinge's vertical pull is M g (1 - 3 sin^2(theta_max)/4) (alpha = -3 g sin/(2L));
