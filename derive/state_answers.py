@@ -172,7 +172,8 @@ class StateAnswers:
             return state_motion.moving(self._scene_with(joints), coords, {coords.of(body, kind): value
                                                                           for body, kind, value in state.rates})
         start = found[state.start].values if state.start else state_motion.rest(coords)
-        return state_motion.reach(self._scene_with(joints), coords, start, self._condition(state, self._scene_with(joints)),
+        scene = self._scene_with(joints)
+        return state_motion.reach(scene, coords, start, self._condition(state, scene),
                                   self._derivations_with(joints)["lagrange"], self._sample)
 
     @cached_property
@@ -324,7 +325,8 @@ class StateAnswers:
         off = tidy(self._within_ranges(off, absolute=True)) if off.has(sp.Abs, sp.Piecewise) else off
         if off != 0:
             at_middle = self._sample(off)
-            if abs(at_middle) > 1e-12 * (1 + abs(self._sample(off + sum(before.values(), sp.Integer(0))))):
+            where = sum((abs(self._sample(before[c.q])) for c in self.coordinates.all), 1.0)  # the lengths at hand
+            if abs(at_middle) > 1e-12 * where:
                 raise state_motion.StateError(
                     f"the {old.body} does not touch {state.event.to} where it is in the state {state.start} (it stands "
                     f"{sp.sstr(off)} off it, {at_middle:.4g} m at the middle of the ranges): a transfer happens where "
