@@ -78,7 +78,7 @@ def needed(impulses: dict[sp.Symbol, sp.Expr], contact: Contact, size, name: str
                 f"its velocity there does not run along the {contact.surface}, and turning it in an instant takes an "
                 f"impulse ({amount}), whose size depends on how the {contact.body} strikes the {contact.surface}, not "
                 f"modelled by a transfer: make the two paths meet tangentially (a curved ramp, a circle touching the "
-                f"{contact.surface}), or state the impact as a bounce")
+                f"{contact.surface})")
     return (f"the {contact.body}'s point of contact would slip on the {contact.surface} in the transfer {name}: a grip "
             f"there takes a friction impulse ({amount}), not modelled by a transfer")
 
