@@ -293,8 +293,10 @@ class CrossChecks:
         before = self.states[state.start].values
         for first, second in pairs:
             for key in (*first.velocities, *first.impulses):
-                a = {**first.velocities, **first.impulses}[key]
-                b = {**second.velocities, **second.impulses}[key]
+                # |R - r| of a circle's normal where a body is on it: as the parameter ranges have it
+                a, b = (self._within_ranges(e, absolute=True) if e.has(sp.Abs) and not by_lagrange.regimes else e
+                        for e in ({**first.velocities, **first.impulses}[key],
+                                  {**second.velocities, **second.impulses}[key]))
                 if agree(a, b) is None:
                     raise CheckFailure(f"{self.problem.id}: in the impact {name}, {key} is {a} by generalized momenta "
                                        f"and {b} by impulses")

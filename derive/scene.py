@@ -251,8 +251,10 @@ class Event:
     impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
     `restitution` and, rough, its `friction` (mu for the grip, mu for the slide) or `grips`
     always; a bounce's `to` may be a fixed surface), a move (`kind` move: the point mass `body` carried to `place` on the body
-    `to`, in its frame, where the pin `joint` holds it), or a turn (`kind` turn: the body `body`
-    turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie).
+    `to`, in its frame, where the pin `joint` holds it), a turn (`kind` turn: the body `body`
+    turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie),
+    or a transfer (`kind` transfer: the contact `joint` of the body `body` passes onto the surface
+    `to`, a ball rolling from a ramp into a loop).
 
     >>> Event("stick", "bullet", "rod").restitution is None
     True
@@ -280,8 +282,8 @@ class State:
     None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD); or the state
     just after an `event` in the state `start`: an impact (a stick, the body held where it is; a
     lock, the two turning together from then on, the scene keeping the joint the impact made; a
-    bounce off a body), a move of a point mass on the body that holds it, or a turn of one body
-    relative to another.
+    bounce off a body), a move of a point mass on the body that holds it, a turn of one body
+    relative to another, or a body's contact passing onto another surface.
 
     >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
     True

@@ -20,7 +20,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import durations, friction, grips, impacts, impulses, lagrange, moves, newton_euler
+from derive.mechanics import durations, friction, grips, impacts, impulses, lagrange, moves, newton_euler, transfers
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.clutch import Clutch
@@ -117,12 +117,20 @@ class StateAnswers:
                     elif state.event.kind == "turn":
                         solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name])
+                    elif state.event.kind == "transfer":
+                        old = self._scene_with(joints[name]).constraint(state.event.joint)
+                        made[name] = self._transferred(state, result[state.start].values, old)
+                        solved[name] = self._impact(name, result[state.start].values, joints[name], made[name],
+                                                    "lagrange")
+                        joints[name] = _in_place(joints[name], made[name])
+                        reached = self._after_transfer(name, result[state.start].values, solved[name], made[name],
+                                                       old.surface)
                     else:
                         made[name] = self._joint(state, result)
                         solved[name] = self._impact(name, result[state.start].values, joints[name], made[name],
                                                     "lagrange")
                         if state.event.kind != "bounce":  # a bounce's touch lasts the instant only
-                            joints[name] += (made[name],)
+                            joints[name] = _in_place(joints[name], made[name])
                         reached = self._after_impact(name, result[state.start].values, solved[name],
                                                      self._scene_with(_in_place(joints[name], made[name])))
                 # (what must stay positive is evaluated per variant, Abs and all: left as it is; so is
@@ -164,7 +172,8 @@ class StateAnswers:
             return state_motion.moving(self._scene_with(joints), coords, {coords.of(body, kind): value
                                                                           for body, kind, value in state.rates})
         start = found[state.start].values if state.start else state_motion.rest(coords)
-        return state_motion.reach(self._scene_with(joints), coords, start, self._condition(state),
+        scene = self._scene_with(joints)
+        return state_motion.reach(scene, coords, start, self._condition(state, scene),
                                   self._derivations_with(joints)["lagrange"], self._sample)
 
     @cached_property
@@ -254,8 +263,11 @@ class StateAnswers:
         event = self.scene.states[name].event
         bounce = impacts.Bounce(made, event.restitution, event.friction) if event.kind == "bounce" else None
         try:
-            return impacts.impact(self._scene_with(joints + (made,)), self.coordinates, before, route, bounce)
+            return impacts.impact(self._scene_with(_in_place(joints, made)), self.coordinates, before, route, bounce)
         except impacts.ImpactError as error:
+            if event.kind == "transfer":  # the impact is how derive proves that none acts
+                raise state_motion.StateLimit(f"carry the {event.body} onto {event.to}, which needs it to {error}") \
+                    from None
             raise state_motion.StateLimit(str(error)) from None
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
@@ -272,7 +284,7 @@ class StateAnswers:
         Newton–Euler's from the impact's impulse equations."""
         start = self.scene.states[name].start
         before, coords = self.states[start].values, self.coordinates
-        scene = self._scene_with((*self._chain.joints[start], self._chain.made[name]))
+        scene = self._scene_with(_in_place(self._chain.joints[start], self._chain.made[name]))
         solved = self._impact_by(name, route)
         joint = next((p for p in scene.constraints if p.name == q.target), None)
         if route == "lagrange":
@@ -304,6 +316,49 @@ class StateAnswers:
                  Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),),
                       sentences=(impacts.lost_said(event),)))
         return state_motion.Reached(values, (), steps)
+
+    def _transferred(self, state, before: dict, old: Contact) -> Contact:
+        """The contact `old` on the surface the transfer of `state` carries it onto, where the body
+        is in the state before (refused where the body does not touch that surface there)."""
+        made = transfers.onto(old, state.event.to, self.coordinates, before)
+        off = transfers.gap(made, self.coordinates, before)
+        off = tidy(self._within_ranges(off, absolute=True)) if off.has(sp.Abs, sp.Piecewise) else off
+        if off != 0:
+            at_middle = self._sample(off)
+            where = sum((abs(self._sample(before[c.q])) for c in self.coordinates.all), 1.0)  # the lengths at hand
+            if abs(at_middle) > 1e-12 * where:
+                raise state_motion.StateError(
+                    f"the {old.body} does not touch {state.event.to} where it is in the state {state.start} (it stands "
+                    f"{sp.sstr(off)} off it, {at_middle:.4g} m at the middle of the ranges): a transfer happens where "
+                    f"the {old.body} touches both surfaces")
+            raise state_motion.StateLimit(f"prove that the {old.body} touches {state.event.to} in the state "
+                                          f"{state.start} (it stands {sp.sstr(off)} off it, zero at the middle of "
+                                          "the ranges)")
+        return made
+
+    def _after_transfer(self, name: str, before: dict, impact: impacts.Impact, made: Contact,
+                        old: str) -> state_motion.Reached:
+        """The state just after a transfer: the bodies where they were, at the velocities they had,
+        once the impact with the new contact is proved to need no impulse (else refused: a kink)."""
+        def size(impulse: sp.Expr) -> float:
+            proved = self._within_ranges(impulse, absolute=True) if impulse.has(sp.Abs, sp.Piecewise) else impulse
+            return 0.0 if tidy(proved) == 0 else self._sample(proved)
+
+        start = self.scene.states[name].start
+        refused = transfers.needed(impact.impulses, made, size, name, start, old)
+        if refused is not None:
+            raise state_motion.StateError(refused)
+        if any(tidy(v) != 0 for v in impact.impulses.values()):
+            raise state_motion.StateLimit(f"prove that the transfer {name} needs no impulse (each is zero at the "
+                                          "middle of the ranges)")
+        event = self.scene.states[name].event
+        steps = (Step(f"The transfer: the {event.body} passes from the {old} onto the {event.to}", (),
+                      sentences=transfers.said(made, old)),
+                 *impact.steps,
+                 Step("Kinetic energy taken by the transfer (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), 0),),
+                      sentences=(Sentence(("Kinetic energy is conserved through the transfer: no impulse acts, so "
+                                           "nothing does work in the instant.",)),)))
+        return state_motion.Reached(dict(before), (), steps)
 
     def _move(self, name: str, before: dict, joints: tuple, route: str) -> moves.Moved:
         """The move or turn of the state `name` by `route`, in the scene with the joints before it."""
@@ -374,8 +429,10 @@ class StateAnswers:
             by_newton_euler = newton_euler.derive(scene, self.coordinates)
         return {"lagrange": by_lagrange, "newton_euler": by_newton_euler}
 
-    def _condition(self, state) -> state_motion.Gets | state_motion.GetsRate | state_motion.Stops | state_motion.Vanishes:
-        """Where a state reached by the motion is: a coordinate's value or its rate's, a stop, a force at zero."""
+    def _condition(self, state, scene=None) -> state_motion.Gets | state_motion.GetsRate | state_motion.Stops | \
+            state_motion.Vanishes:
+        """Where a state reached by the motion is: a coordinate's value or its rate's, a stop, a force at zero
+        (of a part of `scene`, the scene on the way: by default the scene in the state)."""
         if state.until is None:
             body, kind, value = state.when
             if state.rate:
@@ -389,7 +446,7 @@ class StateAnswers:
             start = self.states[state.start].values if state.start else state_motion.rest(self.coordinates)
             return state_motion.Vanishes(sp.sign(self._sample(slip.xreplace(start))) * slip,
                                          f"the slip rate of {name}")
-        part = self.dynamics_scene.constraint(name)
+        part = (scene or self.scene_in(state.name)).constraint(name)
         if kind == "slips":
             forces = part.unknowns()
             return state_motion.Vanishes(self._grip_margin(part), f"the grip margin of the {part.body} at {name}", (
@@ -621,12 +678,12 @@ class StateAnswers:
         past its bottom (where a formula for an endless plane would put it beyond, the variant is
         refused). Up the slope the plane goes on: a block pulled up it is not limited."""
         result = []
-        for contact in self.dynamics_scene.constraints:
-            surface = self.scene.surfaces.get(getattr(contact, "surface", None))
-            if not isinstance(contact, Contact) or not isinstance(surface, Plane) or surface.height is None:
+        for name, reached in self.states.items():
+            if reached.path is None:
                 continue
-            for name, reached in self.states.items():
-                if reached.path is None:
+            for contact in self.scene_in(name).constraints:  # on the surface the body is on there
+                surface = self.scene.surfaces.get(getattr(contact, "surface", None))
+                if not isinstance(contact, Contact) or not isinstance(surface, Plane) or surface.height is None:
                     continue
                 drop = -reached.values[self.coordinates.of(contact.body, "y").q]
                 result.append((surface.height - drop, False, f"the {contact.body} would be past the bottom of "
@@ -656,7 +713,10 @@ class StateAnswers:
                     "lock": f"the {event.body} and the {event.to} lock together",
                     "bounce": f"the {event.body} bounces off the {event.to}",
                     "move": f"the {event.body} is carried to a new place on the {event.to}",
-                    "turn": f"the {event.body} turns relative to the {event.to}"}[event.kind]
+                    "turn": f"the {event.body} turns relative to the {event.to}",
+                    "transfer": f"the {event.body} passes onto the {event.to}"}[event.kind]
+            if event.kind == "transfer":
+                what = what.replace("passes", f"passes from the {self.scene_in(state.start).constraint(event.joint).surface}")
             kind = "impact" if event.kind in ("stick", "lock", "bounce") else event.kind
             return f"The {kind} {name}, just after {state.start}: {what}"
         start = f"From {state.start} to {name}" if state.start else f"From rest at the placement to {name}"
@@ -671,7 +731,7 @@ class StateAnswers:
             return f"{start}: the motion while the {slipping.body} slides, until it grips"
         if kind == "stops":
             return f"{start}: the motion until it stops"
-        part = self.dynamics_scene.constraint(part)
+        part = self.scene_in(name).constraint(part)
         if kind == "slack":
             return f"{start}: the motion until {part.title} goes slack"
         return f"{start}: the motion until the {part.body} " + ("starts to slip" if kind == "slips" else

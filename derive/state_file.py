@@ -30,8 +30,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
     stops (`stops`), a body leaves its surface (`{leaves: BODY or CONTACT}`), a cord goes slack
     (`{slack: CORD}`), a contact's grip fails (`{slips: BODY or CONTACT}`, friction: {static:
     mu_s}) or a slipping clutch or a sliding body grips (`{grips: CLUTCH or BODY}`). `event:` is
-    an impact, a move or a turn in the state from: (see EVENTS), and the state is the one just
-    after it."""
+    an impact, a move, a turn or a transfer onto another surface in the state from: (see EVENTS),
+    and the state is the one just after it."""
     result, bodies = {}, places.bodies
     taken = {*bodies, *(p.name for p in constraints), "placement", "ground"}  # an impact's joint is named so
     for name, spec in reader.named(raw, "states").items():
@@ -98,7 +98,9 @@ EVENTS = {"stick": "the body sticks to the other where it touches it",
           "move": "a point mass pinned to a body is carried to the point to: of that body by the scene's own forces "
                   "(a child walking to a turntable's center)",
           "turn": "a turning body turns through angle: relative to the body relative_to: by a couple between them "
-                  "(Elroy's beanie)"}
+                  "(Elroy's beanie)",
+          "transfer": "a body resting on a surface (or a contact joint) passes onto the surface to:, where it "
+                      "touches both and the two meet tangentially (a ball rolling down a ramp into a loop)"}
 
 
 def _event(reader: Reader, name: str, spec: dict, field: str, places, constraints: list,
@@ -106,8 +108,9 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     """`{from: STATE, event: {stick: BODY, to: OTHER}}`, `{lock: BODY, to: OTHER}`, `{bounce:
     BODY, to: OTHER or SURFACE, restitution: e}` with, rough, `friction: {static: mu}` or `grips:
     true` (the state just after an impact in the state from:),
-    `{move: BODY, to: OTHER.POINT}` (the state after the move) or `{turn: BODY, relative_to:
-    OTHER, angle: psi}` (the state after the turn)."""
+    `{move: BODY, to: OTHER.POINT}` (the state after the move), `{turn: BODY, relative_to:
+    OTHER, angle: psi}` (the state after the turn) or `{transfer: BODY or CONTACT, to: SURFACE}`
+    (the state just after its contact passes onto the surface)."""
     bodies = places.bodies
     if spec.get("from") not in found:
         raise reader.fail(f"{field}.from", f"an event happens in a state: give from: a state named above this one "
@@ -119,7 +122,10 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
     kind = kinds[0]
     body = raw[kind]
-    if not isinstance(body, str) or body not in bodies:
+    # a transfer may name a contact joint (a ladder's foot): the point that passes onto the other surface
+    touching = {c.name for c in constraints if isinstance(c, Contact) and c.point is not None} if kind == "transfer" \
+        else set()
+    if not isinstance(body, str) or body not in bodies and body not in touching:
         raise reader.fail(f"{field}.event.{kind}", no_such("body", body, bodies, "bodies"))
     wanted = ("relative_to", "angle") if kind == "turn" else ("to",)
     for key in ("to", "relative_to", "angle"):
@@ -133,6 +139,9 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     for key in ("restitution", "friction", "grips"):
         if key in raw and kind != "bounce":
             raise reader.fail(f"{field}.event.{key}", f"a {kind} has no {key} (a bounce has)")
+    if kind == "transfer":
+        return State(name, start=spec["from"], event=_transfer(reader, body, to, f"{field}.event", places,
+                                                               constraints, spec["from"], found))
     if kind == "move":
         return State(name, start=spec["from"], event=_move(reader, body, to, f"{field}.event", places, constraints,
                                                            spec["from"], found))
@@ -169,6 +178,30 @@ def _bounce(reader: Reader, body: str, to: str, raw: dict, field: str) -> Event:
     friction = None if static is None and kinetic is None else (
         static if static is not None else kinetic, kinetic if kinetic is not None else static)
     return Event("bounce", body, to, restitution, friction=friction, grips="grips" in raw)
+
+
+def _transfer(reader: Reader, which: str, to, field: str, places, constraints: list, start: str,
+              found: dict[str, State]) -> Event:
+    """A body's contact (`transfer: BODY`, resting on a surface by `on:`) or a contact joint's
+    (`transfer: CONTACT`, a point touching a surface) passes onto the surface `to:` in the state
+    from:. The event's `body` is the body, its `joint` the contact; `to` the surface."""
+    held = [c for c in constraints if isinstance(c, Contact) and (c.name == which or c.body == which and c.point is None)]
+    if not held:
+        raise reader.fail(f"{field}.transfer", f"the {which} rests on no surface (on: SURFACE): a transfer moves a "
+                                               "body's contact onto another surface")
+    contact = held[0]
+    if not isinstance(to, str) or to not in places.surfaces:
+        raise reader.fail(f"{field}.to", no_such("surface", to, places.surfaces, "surfaces"))
+    if places.surfaces[to].carrier == contact.body:
+        raise reader.fail(f"{field}.to", f"the {contact.body} carries {to}: it cannot rest on it")
+    surface, state = contact.surface, found.get(start)  # where the chain has it in the state from:
+    while state is not None and not (state.event and state.event.kind == "transfer"
+                                     and state.event.joint == contact.name):
+        state = found.get(state.start)
+    surface = state.event.to if state is not None else surface
+    if surface == to:
+        raise reader.fail(f"{field}.to", f"the {contact.body} is on {to} already in the state {start}")
+    return Event("transfer", contact.body, to, joint=contact.name)
 
 
 def _turn(reader: Reader, body: str, raw: dict, field: str, bodies: dict[str, Body]) -> Event:

@@ -42,7 +42,8 @@ def _principles(solution: Solution, name: str) -> list[str]:
         kind = state.event.kind
         if kind in ("move", "turn"):
             return ["Noether's theorem", "angular momentum", "kinetic energy"]
-        own = {"stick": "perfectly inelastic", "lock": "turn as one", "bounce": "law of restitution"}[kind]
+        own = {"stick": "perfectly inelastic", "lock": "turn as one", "bounce": "law of restitution",
+               "transfer": "tangent there"}[kind]
         return ["give no impulse", own, "Kinetic energy is"]
     if state.until and state.until[0] == "grips":
         return ["kinetic", "the accelerations are constant", "it grips"]

@@ -501,6 +501,36 @@ EXPECTED.update({
         "h": lambda s: (10 * s.g * (s.R + s.r) + 7 * s.v0**2) / (17 * s.g),
         "omega": lambda s: -sp.sqrt(s.g * (10 * s.g * (s.R + s.r) + 7 * s.v0**2) / (17 * s.g)) / s.r,
     },
+    # Serway & Jewett ch. 8 and ch. 6: a block on a frictionless loop-the-loop track, released
+    # H = (R + 3 d)/5 above the loop's bottom (d along a ramp rising at sin = 3/5 that meets the
+    # loop tangentially, a transfer event): v^2 = 2 g H at the bottom, v^2 = 2 g (H - 2R) at the
+    # top, where N + m g = m v^2/R.
+    "block_ramp_into_loop": {
+        "v": lambda s: sp.sqrt(2 * s.g * (s.R + 3 * s.d) / 5),
+        "v_top": lambda s: sp.sqrt(2 * s.g * ((s.R + 3 * s.d) / 5 - 2 * s.R)),
+        "N_top": lambda s: s.m * (2 * s.g * ((s.R + 3 * s.d) / 5 - 2 * s.R) / s.R - s.g),
+        "d_min": lambda s: (5 * sp.Rational(5, 2) * s.R - s.R) / 3,  # the book's least release height, 5R/2
+    },
+    # Halliday ch. 8, Serway & Jewett ch. 6: the same track released lower; it leaves where N = 0,
+    # v^2 = g y with y above the center, and v^2 = 2 g (H - R - y): y = 2 (H - R)/3.
+    "block_leaves_loop": {
+        "y": lambda s: s.R + 2 * ((s.R + 3 * s.d) / 5 - s.R) / 3,
+        "v_off": lambda s: sp.sqrt(s.g * 2 * ((s.R + 3 * s.d) / 5 - s.R) / 3),
+    },
+    # Serway & Jewett ch. 8: down a smooth quarter circle of radius h onto the level, across it and
+    # up a second smooth ramp: v = sqrt(2 g h) on the level, and it rises to its release height h.
+    "block_ramp_floor_ramp": {
+        "v": lambda s: sp.sqrt(2 * s.g * s.h),
+        "y": lambda s: s.h,
+    },
+    # Serway & Jewett ch. 10: a solid ball rolling at v0 on the floor into a loop (a transfer that
+    # keeps its spin): (7/10) v_top^2 = (7/10) v0^2 - g 2 (R - r), rolling clockwise, omega = -v/r;
+    # ch. 6: at the top N + m g = m v_top^2/(R - r).
+    "ball_floor_into_loop": {
+        "v_top": lambda s: sp.sqrt(s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)),
+        "omega_top": lambda s: -sp.sqrt(s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)) / s.r,
+        "N_top": lambda s: s.m * ((s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)) / (s.R - s.r) - s.g),
+    },
     # Serway & Jewett ch. 10: (1/2)(M L^2/3) w0^2 = M g (L/2)(1 - cos(theta_max)); at the top it is
     # at rest, so the hinge's vertical pull is M g (1 - 3 sin^2(theta_max)/4) (alpha = -3 g sin/(2L));
     # the time there is a quarter period of the physical pendulum, sqrt(2L/(3g)) K(sin^2(theta_max/2)).

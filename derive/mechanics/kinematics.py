@@ -160,7 +160,7 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
         # and a translation that solves the gap alone (a pin's x) makes it unneeded.
         @functools.cache
         def found(k: Coordinate) -> list[sp.Expr]:
-            return _turned_back(roots(gap, k.q), reference, sample) if k.kind == "theta" else roots(gap, k.q)
+            return _turned_back(roots(gap, k.q), reference, sample, k.q) if k.kind == "theta" else roots(gap, k.q)
 
         @functools.cache
         def through(k: Coordinate) -> list[sp.Expr]:
@@ -181,16 +181,17 @@ def solve_gaps(scene: Scene, coords: Coordinates, sample=None, keep: Coordinate 
     return solved
 
 
-def _turned_back(found: list[sp.Expr], reference: dict, sample) -> list[sp.Expr]:
-    """An angle's roots, each turned by whole turns to pass nearest the reference: sympy gives
+def _turned_back(found: list[sp.Expr], reference: dict, sample, q: sp.Symbol) -> list[sp.Expr]:
+    """An angle q's roots, each turned by whole turns to pass nearest the reference: sympy gives
     acos(c) and 2 pi - acos(c) for cos(theta) = c, and the second is the branch -acos(c) through
-    the reference that a body turning clockwise from it takes."""
+    the reference that a body turning clockwise from it takes. (The reference may be a state the
+    motion starts from, its angle many turns from the placement's: a ball that has rolled.)"""
     if sample is None:
         return found
     result = []
     for r in found:
         try:
-            turns = round(sample(r.xreplace(reference)) / (2 * sp.pi.evalf()))
+            turns = round((sample(r.xreplace(reference)) - sample(reference[q])) / (2 * sp.pi.evalf()))
         except (TypeError, ValueError):
             turns = 0
         result.append(r - 2 * sp.pi * turns if turns else r)

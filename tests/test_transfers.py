@@ -1,0 +1,68 @@
+"""A body's contact passing onto another surface (`event: {transfer: BODY, to: SURFACE}`, issue
+12's chains from one surface to another): kept speed and spin where the paths are tangent, proved
+by both impact routes (every impulse zero), and refused where the body is not at the junction, where
+the paths meet at a kink, and where the file names what cannot pass."""
+from pathlib import Path
+
+import sympy as sp
+
+from conftest import refused
+from derive.answers import Solution
+from derive.problem import load
+
+TEXTBOOK = Path(__file__).parent / "textbook" / "states"
+LOOP = (TEXTBOOK / "block_ramp_into_loop.yaml").read_text()
+
+
+def test_a_tangent_transfer_needs_no_impulse_by_either_route_and_keeps_the_velocities():
+    solution = Solution(load(str(TEXTBOOK / "block_ramp_into_loop.yaml")))
+    before, after = solution.states["entering"].values, solution.states["looping"].values
+    assert after == before
+    for route in ("lagrange", "newton_euler"):
+        impact = solution._impact_by("looping", route)
+        assert impact.impulses and all(sp.simplify(j) == 0 for j in impact.impulses.values()), route
+        assert all(sp.simplify(v - before[u]) == 0 for u, v in impact.velocities.items()), route
+    # after it the block is held by the loop, by the same contact and normal force
+    contact = solution.scene_in("top").constraint("block_contact")
+    assert contact.surface == "loop" and solution.scene_in("entering").constraint("block_contact").surface == "ramp"
+    assert "passes from the ramp onto the loop" in solution.state_heading("looping")
+
+
+def test_a_rolling_ball_keeps_its_spin_through_the_transfer():
+    solution = Solution(load(str(TEXTBOOK / "ball_floor_into_loop.yaml")))
+    spin = solution.coordinates.of("ball", "theta").u
+    assert solution.states["looping"].values[spin] == solution.states["rolling"].values[spin]
+    assert all(sp.simplify(j) == 0 for j in solution._chain.impacts["looping"].impulses.values())
+
+
+def test_a_transfer_where_the_body_does_not_touch_the_new_surface_is_refused(tmp_path):
+    text = LOOP.replace("entering: {when: {block.x: -3*R/5}}", "entering: {when: {block.x: -3*R/5 - d/4}}")
+    error = refused(tmp_path, text, "scene.states.looping")
+    assert "does not touch loop" in error and "touches both surfaces" in error
+
+
+def test_a_kink_is_refused_naming_the_impulse_it_would_take(tmp_path):
+    text = LOOP.replace("loop: {circle: {radius: R, center: [0, R], side: inside}}",
+                        "loop: {circle: {radius: R, center: [0, R], side: inside}}\n"
+                        "    floor: {plane: {angle: 0, through: [0, 0]}}")
+    text = text.replace("through: [-3*R/5, R/5]", "through: [0, 0]")
+    text = text.replace("at: [-(3*R + 4*d)/5, (R + 3*d)/5]", "at: [-4*d/5, 3*d/5]")
+    text = text.replace("entering: {when: {block.x: -3*R/5}}", "entering: {when: {block.x: 0}}")
+    text = text.replace("transfer: block, to: loop", "transfer: block, to: floor")
+    text = text.replace("    bottom: {from: looping, when: {block.x: 0}}\n", "    bottom: {from: looping, when: {block.x: R}}\n")
+    text = text.split("    above:")[0] + "ask:\n  v: {meaning: speed, of: block.speed, in: bottom, unit: m/s}\n" \
+        + "question: |\n  A block of mass {{ m }} slides {{ d }} down a ramp onto a floor by a loop of radius {{ R }}.\n"
+    error = refused(tmp_path, text, "scene.states.looping")
+    assert "kink" in error and "N^block" in error and "tangentially" in error
+
+
+def test_what_cannot_pass_is_refused_by_name(tmp_path):
+    error = refused(tmp_path, LOOP.replace("transfer: block, to: loop", "transfer: block, to: lop"),
+                    "scene.states.looping.event.to")
+    assert "did you mean" in error and "loop" in error
+    error = refused(tmp_path, LOOP.replace("transfer: block, to: loop", "transfer: block, to: ramp"),
+                    "scene.states.looping.event.to")
+    assert "on ramp already" in error
+    error = refused(tmp_path, LOOP.replace("transfer: block, to: loop", "transfer: block, to: loop, restitution: 1"),
+                    "scene.states.looping.event.restitution")
+    assert "a transfer has no restitution" in error
