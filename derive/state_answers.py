@@ -20,7 +20,7 @@ from functools import cached_property
 import sympy as sp
 
 from derive import limits
-from derive.mechanics import durations, friction, grips, impacts, impulses, lagrange, moves, newton_euler, transfers
+from derive.mechanics import durations, friction, grips, impacts, lagrange, moves, newton_euler
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step, root, tidy
 from derive.parts.clutch import Clutch
@@ -29,9 +29,10 @@ from derive.parts.pin import Pin
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.parts.weld import Weld
 from derive.parts.places import extent
-from derive.parts.surfaces import Plane
 from derive.prose import Sentence, capital
 from derive.scene import Quantity
+from derive.state_conditions import StateConditions
+from derive.state_events import StateEvents, in_place
 
 
 #: How a heading names each route (the routes in a state that an event changed the scene of).
@@ -54,14 +55,9 @@ class Chain:
     followed: dict[str, impacts.Regime] = dataclasses.field(default_factory=dict)
 
 
-def _in_place(joints: tuple, made) -> tuple:
-    """The joints events made, with `made` in place of the one of its name (a moved pin, a
-    gripping clutch in place of the slipping one), else added."""
-    return tuple(j for j in joints if j.name != made.name) + (made,)
-
-
-class StateAnswers:
-    """What Solution answers in a named state."""
+class StateAnswers(StateEvents, StateConditions):
+    """What Solution answers in a named state (its events: derive.state_events; the conditions of the
+    states: derive.state_conditions)."""
 
     @property
     def states(self) -> dict[str, state_motion.Reached]:
@@ -102,7 +98,7 @@ class StateAnswers:
                         reached = grips.grip(self.coordinates, start, self._slipping(state.until[1]),
                                              self._derivations_with(joints[name])["lagrange"], self._sample)
                         made[name] = self._gripped(state.until[1], reached.values)
-                        joints[name] = _in_place(joints[name], made[name])
+                        joints[name] = in_place(joints[name], made[name])
                     elif state.event is None:
                         reached = self._state(state, found, joints[name])
                         if name in followed:
@@ -111,7 +107,7 @@ class StateAnswers:
                                 "middle of the ranges (a variant where it does otherwise is refused)"), *reached.steps))
                     elif state.event.kind == "move":
                         made[name] = moves.moved_pin(self._scene_with(joints[name]), state.event, state.event.place)
-                        joints[name] = _in_place(joints[name], made[name])
+                        joints[name] = in_place(joints[name], made[name])
                         solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name], made[name])
                     elif state.event.kind == "turn":
@@ -122,7 +118,7 @@ class StateAnswers:
                         made[name] = self._transferred(state, result[state.start].values, old)
                         solved[name] = self._impact(name, result[state.start].values, joints[name], made[name],
                                                     "lagrange")
-                        joints[name] = _in_place(joints[name], made[name])
+                        joints[name] = in_place(joints[name], made[name])
                         reached = self._after_transfer(name, result[state.start].values, solved[name], made[name],
                                                        old.surface)
                     else:
@@ -130,9 +126,9 @@ class StateAnswers:
                         solved[name] = self._impact(name, result[state.start].values, joints[name], made[name],
                                                     "lagrange")
                         if state.event.kind != "bounce":  # a bounce's touch lasts the instant only
-                            joints[name] = _in_place(joints[name], made[name])
+                            joints[name] = in_place(joints[name], made[name])
                         reached = self._after_impact(name, result[state.start].values, solved[name],
-                                                     self._scene_with(_in_place(joints[name], made[name])))
+                                                     self._scene_with(in_place(joints[name], made[name])))
                 # (what must stay positive is evaluated per variant, Abs and all: left as it is; so is
                 # the regime a rough bounce takes)
                 if not (isinstance(solved.get(name), impacts.Impact) and solved[name].regimes):
@@ -256,140 +252,6 @@ class StateAnswers:
         return [(tidy(sum(reaches) ** 2 - where), f"the {joint.body} is {sp.sstr(tidy(sp.sqrt(where)))} from the "
                                                   f"{joint.to}'s center in the state {start}, too far to touch it: it "
                                                   "cannot stick there")]
-
-    def _impact(self, name: str, before: dict, joints: tuple, made, route: str) -> impacts.Impact:
-        """The impact of the state `name` by `route`, in the scene with the joints before it and the
-        one it makes (`made`)."""
-        event = self.scene.states[name].event
-        bounce = impacts.Bounce(made, event.restitution, event.friction) if event.kind == "bounce" else None
-        try:
-            return impacts.impact(self._scene_with(_in_place(joints, made)), self.coordinates, before, route, bounce)
-        except impacts.ImpactError as error:
-            if event.kind == "transfer":  # the impact is how derive proves that none acts
-                raise state_motion.StateLimit(f"carry the {event.body} onto {event.to}, which needs it to {error}") \
-                    from None
-            raise state_motion.StateLimit(str(error)) from None
-
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
-    def _impact_by(self, name: str, route: str) -> impacts.Impact:
-        """The impact of the state `name` by `route` (Lagrange's is the chain's own)."""
-        if route == "lagrange":
-            return self._chain.impacts[name]
-        start = self.scene.states[name].start
-        return self._impact(name, self.states[start].values, self._chain.joints[start], self._chain.made[name], route)
-
-    def _impulse(self, q: Quantity, name: str, route: str) -> sp.Expr:
-        """The impulse a body takes in the impact of the state `name`, or a joint gives the body it
-        holds (derive.mechanics.impulses): by Lagrange's route from the changes of momentum, by
-        Newton–Euler's from the impact's impulse equations."""
-        start = self.scene.states[name].start
-        before, coords = self.states[start].values, self.coordinates
-        scene = self._scene_with(_in_place(self._chain.joints[start], self._chain.made[name]))
-        solved = self._impact_by(name, route)
-        joint = next((p for p in scene.constraints if p.name == q.target), None)
-        if route == "lagrange":
-            after = self.states[name].values
-            vector = (impulses.by_momentum(scene, coords, before, after, q.target) if joint is None else
-                      impulses.joint_by_momentum(scene, coords, before, after, solved.impulses, joint))
-        else:
-            at = {c.q: before[c.q] for c in coords.all}
-            vector = impulses.on_body(scene.constraints if joint is None else [joint], coords, at, solved.impulses,
-                                      q.target if joint is None else joint.body)
-        return vector[0 if q.detail == "x" else 1]
-
-    def _after_impact(self, name: str, before: dict, impact: impacts.Impact, scene) -> state_motion.Reached:
-        """The state just after an impact: where the bodies were, at the velocities the impact leaves."""
-        values = {**{c.q: before[c.q] for c in self.coordinates.all}, **impact.velocities}
-        lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, values)
-        event = self.scene.states[name].event
-        body, to = event.body, event.to
-        what = {"stick": f"the {body} sticks to the {to}", "lock": f"the {body} and the {to} lock together",
-                "bounce": f"the {body} bounces off the {to} (coefficient of restitution {event.restitution}"
-                          + (", gripping at the contact" if event.grips else
-                             f", friction coefficient {sp.sstr(event.friction[0])} at the contact" if event.friction
-                             else "") + ")"}
-        what = what[event.kind]
-        kept = impacts.conserved(scene, self.coordinates, before, values)
-        said = scene.constraint(name).sentences("lagrange", self.coordinates)  # the joint it makes, in words
-        said += impacts.said(event, scene.constraint(name), scene, kept is not None)
-        steps = (Step(f"The impact: {what}", (), sentences=tuple(said)), *impact.steps, *((kept,) if kept else ()),
-                 Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),),
-                      sentences=(impacts.lost_said(event),)))
-        return state_motion.Reached(values, (), steps)
-
-    def _transferred(self, state, before: dict, old: Contact) -> Contact:
-        """The contact `old` on the surface the transfer of `state` carries it onto, where the body
-        is in the state before (refused where the body does not touch that surface there)."""
-        made = transfers.onto(old, state.event.to, self.coordinates, before)
-        off = transfers.gap(made, self.coordinates, before)
-        off = tidy(self._within_ranges(off, absolute=True)) if off.has(sp.Abs, sp.Piecewise) else off
-        if off != 0:
-            at_middle = self._sample(off)
-            where = sum((abs(self._sample(before[c.q])) for c in self.coordinates.all), 1.0)  # the lengths at hand
-            if abs(at_middle) > 1e-12 * where:
-                raise state_motion.StateError(
-                    f"the {old.body} does not touch {state.event.to} where it is in the state {state.start} (it stands "
-                    f"{sp.sstr(off)} off it, {at_middle:.4g} m at the middle of the ranges): a transfer happens where "
-                    f"the {old.body} touches both surfaces")
-            raise state_motion.StateLimit(f"prove that the {old.body} touches {state.event.to} in the state "
-                                          f"{state.start} (it stands {sp.sstr(off)} off it, zero at the middle of "
-                                          "the ranges)")
-        return made
-
-    def _after_transfer(self, name: str, before: dict, impact: impacts.Impact, made: Contact,
-                        old: str) -> state_motion.Reached:
-        """The state just after a transfer: the bodies where they were, at the velocities they had,
-        once the impact with the new contact is proved to need no impulse (else refused: a kink)."""
-        def size(impulse: sp.Expr) -> float:
-            proved = self._within_ranges(impulse, absolute=True) if impulse.has(sp.Abs, sp.Piecewise) else impulse
-            return 0.0 if tidy(proved) == 0 else self._sample(proved)
-
-        start = self.scene.states[name].start
-        refused = transfers.needed(impact.impulses, made, size, name, start, old)
-        if refused is not None:
-            raise state_motion.StateError(refused)
-        if any(tidy(v) != 0 for v in impact.impulses.values()):
-            raise state_motion.StateLimit(f"prove that the transfer {name} needs no impulse (each is zero at the "
-                                          "middle of the ranges)")
-        event = self.scene.states[name].event
-        steps = (Step(f"The transfer: the {event.body} passes from the {old} onto the {event.to}", (),
-                      sentences=transfers.said(made, old)),
-                 *impact.steps,
-                 Step("Kinetic energy taken by the transfer (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), 0),),
-                      sentences=(Sentence(("Kinetic energy is conserved through the transfer: no impulse acts, so "
-                                           "nothing does work in the instant.",)),)))
-        return state_motion.Reached(dict(before), (), steps)
-
-    def _move(self, name: str, before: dict, joints: tuple, route: str) -> moves.Moved:
-        """The move or turn of the state `name` by `route`, in the scene with the joints before it."""
-        event = self.scene.states[name].event
-        return (moves.turn if event.kind == "turn" else moves.move)(self._scene_with(joints), self.coordinates, before,
-                                                                   event, route, self._sample)
-
-    def _after_move(self, name: str, before: dict, moved: moves.Moved, pin: Pin | None = None) -> state_motion.Reached:
-        """The state after a move or a turn, with the kinetic energy the forces that make it add; a
-        move's `pin` holds the mover at its new place."""
-        event = self.scene.states[name].event
-        added = tidy(-impacts.energy_lost(self.dynamics_scene, self.coordinates, before, moved.values))
-        if event.kind == "turn":
-            what = f"The turn: the {event.body} turns relative to the {event.to}"
-            said = Sentence((f"The {event.body} turns through ", event.angle, f" relative to the {event.to}, by a couple "
-                             "between the two: equal and opposite, it pushes neither's center, and at the end the "
-                             f"{event.body} is at rest relative to the {event.to} again.",))
-        else:
-            what = f"The move: the {event.body} is carried to a new place on the {event.to}"
-            said = Sentence((f"The {event.body} is carried to ", sp.Tuple(*event.place), f" on the {event.to}, in its "
-                             f"frame, by forces inside the scene: {pin.title} holds it to the {event.to} wherever it is, "
-                             f"and what carries it pushes back on the {event.to} as much.",))
-        steps = (Step(f"{what} by forces inside the scene (they come in equal and opposite pairs)", (), sentences=(said,)),
-                 *moved.steps,
-                 Step(f"Kinetic energy the {event.kind} adds (the work of the forces that make it)",
-                      (sp.Eq(sp.Symbol("Delta_K"), added),), sentences=(Sentence((
-                          f"Kinetic energy is not conserved in a {event.kind}: the forces inside the scene that make it "
-                          "do work, which is the change below." if added != 0 else
-                          f"The forces inside the scene that make the {event.kind} do work on the way, but none in all: "
-                          "the kinetic energy after it is the one before.",)),)))
-        return state_motion.Reached(moved.values, (), steps)
 
     def scene_in(self, name: str | None):
         """The scene in a state (None: the placement): with the joints impacts on the way made."""
@@ -541,156 +403,6 @@ class StateAnswers:
         time, step = durations.duration(reached.path, reached.end)
         # |s1 - s0| by the ranges; an integral's integrand as it is (simplifying it cancels digits)
         return time.xreplace({a: self._within_ranges(a, absolute=True) for a in time.atoms(sp.Abs)}), step
-
-    def _state_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
-        """In each state asked: the motion gets there, the state is on the scene's geometry, and
-        the parts keep their signs there."""
-        result = []
-        for name in self._on_the_way():
-            reached, scene = self.states[name], self.scene_in(name)
-            if isinstance(self._chain.impacts.get(name), impacts.Impact):  # no joint pulls where it can only push
-                made, start = self._chain.made[name], self.scene.states[name].start
-                result += [(gap, False, meaning) for gap, meaning in self._apart(made, start)]
-                impulses = self._chain.impacts[name].impulses
-                result += [(sign.expression.xreplace(impulses), False, f"{sign.meaning} (in the impact {name})")
-                           for part in (*self.scene_in(start).constraints, made) for sign in part.signs()]
-                if isinstance(made, impacts.Touch) and made.rough:
-                    result += self._rough_conditions(name)
-            result += self._regime_followed_conditions(name)  # first: the other conditions are of its regime
-            forces = self.in_state("lagrange", name).raw
-            # the state is real, first: where a formula puts it off the scene's geometry (a ball
-            # higher than its cord reaches, a swing that would stop above the top), the motion
-            # never gets there at these values, and the other conditions are not numbers
-            never = (f"the motion goes over the top and never stops at these values ({name})"
-                     if self.scene.states[name].until == ("stops", None) else
-                     f"the motion never gets to the state {name} at these values (it lies off the scene's geometry "
-                     "there)")
-            exprs = [*reached.values.values(), *(e for e, _ in reached.positive)]
-            result += [(real, False, never) for real in dict.fromkeys(
-                [p.base for v in exprs for p in v.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q == 2]
-                + [tidy(1 - f.args[0] ** 2) for v in exprs for f in v.atoms(sp.acos, sp.asin)])]
-            result += [(expr, True, f"{meaning} ({name})") for expr, meaning in reached.positive]
-            result += self._grip_conditions(name)
-            result += self._slip_conditions(name, scene, forces)
-            # (a force the state is defined by, zero there, has no sign to keep: it was positive on the way)
-            result += [(sign.expression.xreplace(forces).xreplace(reached.values), False, f"{sign.meaning} ({name})")
-                       for part in (*scene.constraints, *scene.loads) for sign in part.signs()
-                       if not sign.expression.has(*reached.vanished)]
-        return result + self._ramp_conditions()
-
-    def impact_regimes(self) -> dict[str, tuple]:
-        """The regimes (impacts.Regime: grips, slides either way) of each rough bounce whose
-        regime is decided per variant, in the states asks are read in or come from."""
-        return {name: self._chain.impacts[name].regimes for name in self._on_the_way()
-                if isinstance(self._chain.impacts.get(name), impacts.Impact) and self._chain.impacts[name].regimes}
-
-    def impact_regime_at(self, name: str, values: dict) -> str | None:
-        """What the contact does in the bounce `name` at these parameter values (grips, slides);
-        None when a parameter it depends on has no value."""
-        for regime in self.impact_regimes()[name]:
-            decided = regime.where.xreplace(values)
-            if decided not in (sp.true, sp.false):
-                return None
-            if decided == sp.true:
-                return regime.name
-        raise AssertionError("the last regime holds wherever the others do not")
-
-    def _rough_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
-        """A rough bounce slides the one way throughout where it slides (impacts.regime_conditions),
-        and takes kinetic energy (with Newton's restitution and friction at a contact whose normal and
-        tangential motions are coupled it could give some, which is not physical)."""
-        start = self.scene.states[name].start
-        before, after = self.states[start].values, self.states[name].values
-        lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, after)
-        return [*impacts.regime_conditions(self._chain.impacts[name], self._chain.made[name], self.coordinates,
-                                           before),
-                (lost, False, f"the bounce {name} would give the bodies kinetic energy (Newton's restitution with "
-                              "friction where the normal and tangential motions are coupled): not modelled")]
-
-    def _slip_conditions(self, name: str, scene, forces: dict) -> list[tuple[sp.Expr, bool, str]]:
-        """A slipping clutch slips in the state, the way it does at the middle of the ranges, and a
-        sliding contact the way its kinetic friction opposes (where it stops slipping it grips: a
-        state `when: {grips: ...}`); a clutch that has gripped needs a couple of at most its
-        kinetic one (derive takes no larger static couple)."""
-        values, result = self.states[name].values, []
-        for part in scene.loads:
-            if isinstance(part, SlippingClutch):
-                slip = part.slip(self.coordinates).xreplace(values)
-                result.append((sp.sign(self._sample(slip)) * slip, True,
-                               f"the plates of {part.name} do not slip in the state {name} the way they do at the "
-                               f"middle of the ranges (they turn together, or slip the other way): narrow the ranges, "
-                               f"or give a state when: {{grips: {part.name}}} and go on from it"))
-        for part in scene.constraints:
-            if isinstance(part, Contact) and part.regime == "kinetic":
-                result.append((-part.direction * part.slip(self.coordinates).xreplace(values), True,
-                               f"the {part.body} does not slide on {part.surface} in the state {name} the way it does "
-                               f"at the middle of the ranges, which its kinetic friction opposes (it slides the other "
-                               f"way, or grips): narrow the ranges"))
-        for part in scene.constraints:
-            slipping = self._slipping(part.name) if isinstance(part, Clutch) else None
-            if slipping is not None:
-                couple = forces[part.unknowns()["torque"]].xreplace(values)
-                result.append((slipping.couple**2 - couple**2, False,
-                               f"the clutch {part.name} would slip again in the state {name}: it needs a couple "
-                               f"larger than {sp.sstr(slipping.couple)}"))
-        return result
-
-    @staticmethod
-    def _grip_margin(contact) -> sp.Expr:
-        """mu_s^2 N^2 - f^2: not negative while the contact's grip holds (N >= 0 is a sign of its own)."""
-        forces = contact.unknowns()
-        return friction.static_coefficient(contact) ** 2 * forces["normal"] ** 2 - forces["friction"] ** 2
-
-    def _grip_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
-        """A contact held by static friction (friction: {static: mu_s}) keeps its grip in the state
-        and, on the motion's way there, at ON_THE_WAY - 1 points between: past the point where it
-        would slip, the motion is not the one derived (a ball slips on a dome long before it leaves)."""
-        state, reached, result = self.scene.states[name], self.states[name], []
-        for contact in self.scene_in(name).constraints:
-            if not isinstance(contact, Contact) or not contact.has_friction or not contact.rolling \
-                    or state.until == ("slips", contact.name):
-                continue
-            margin = self._grip_margin(contact)
-            meaning = (f"the {contact.body} slips at {contact.name} on the way to the state {name} (mu_s N < |f|): ask "
-                       f"where it starts to slip (when: {{slips: {contact.name}}})")
-            forces = self.in_state("lagrange", name).raw
-            result.append((margin.xreplace(forces).xreplace(reached.values), False, meaning))
-            if reached.path is not None:
-                path, s1 = reached.path, reached.end
-                s0 = path.start[path.s]
-                on_path = state_motion.along(path, margin, self.derivations_in(name)["lagrange"])
-                result += [(on_path.xreplace({path.s: s0 + sp.Rational(k, state_motion.ON_THE_WAY) * (s1 - s0)}), False,
-                            meaning) for k in range(state_motion.ON_THE_WAY)]
-        return result
-
-    def _on_the_way(self) -> list[str]:
-        """The states asks are read in, and those their motions start from, in the file's order: a
-        chain's every link."""
-        names = {a.state for a in self.problem.asks.values() if a.state is not None}
-        for name in reversed(self.scene.states):
-            if name in names and self.scene.states[name].start:
-                names.add(self.scene.states[name].start)
-        return [name for name in self.scene.states if name in names]
-
-    def _ramp_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
-        """An incline's height is how far it drops below where a body starts
-        (derive.parts.surfaces.Plane): in every state the motion gets to, the body has not dropped
-        past its bottom (where a formula for an endless plane would put it beyond, the variant is
-        refused). Up the slope the plane goes on: a block pulled up it is not limited."""
-        result = []
-        for name, reached in self.states.items():
-            if reached.path is None:
-                continue
-            for contact in self.scene_in(name).constraints:  # on the surface the body is on there
-                surface = self.scene.surfaces.get(getattr(contact, "surface", None))
-                if not isinstance(contact, Contact) or not isinstance(surface, Plane) or surface.height is None:
-                    continue
-                drop = -reached.values[self.coordinates.of(contact.body, "y").q]
-                result.append((surface.height - drop, False, f"the {contact.body} would be past the bottom of "
-                                                             f"{contact.surface} in the state {name} (it drops "
-                                                             f"{sp.sstr(surface.height)} below where the "
-                                                             f"{contact.body} starts)"))
-        return result
 
     def state_heading(self, name: str) -> str:
         """The heading of a state's steps in a worked solution, in words: the start, an event (the
