@@ -46,7 +46,7 @@ import re
 import unicodedata
 from contextlib import contextmanager
 from functools import lru_cache
-from typing import Mapping, Sequence
+from typing import Mapping
 
 from derive.errors import InputError
 from derive.stencil import Stencil, hole
@@ -252,25 +252,25 @@ def question_latex(text: str, values: Mapping[str, str], limit: int = QUESTION_L
     """The question as LaTeX: refused as `check_question` would (LatexError), math kept, text
     escaped but for the allowed commands, each `{{ NAME }}` replaced by values[NAME] (itself
     read as question text, without placeholders). No template engine: nothing is evaluated.
-    The question is read once for every set of values (a set's variants: `_pieces`).
+    The question is read once for every set of values (a set's variants: `question_stencil`).
 
     >>> question_latex("{{ ''.__class__ }} costs {{ m }}", {"m": "$2$"})
     "\\\\{\\\\{ ''.\\\\_\\\\_class\\\\_\\\\_ \\\\}\\\\} costs $2$"
     """
-    pieces = _pieces(text, tuple(values), limit)
-    return "".join(piece if i % 2 == 0 else "" if values[piece] is None else _value(values[piece], limit)
-                   for i, piece in enumerate(pieces))
+    return question_stencil(text, tuple(values), limit).fill(
+        {name: "" if value is None else _value(value, limit) for name, value in values.items()})
 
 
-def question_stencil(text: str, names: Sequence[str], limit: int = QUESTION_LIMIT) -> Stencil:
-    r"""The question read once, as `question_latex` reads it, and cut at its placeholders: a
-    set's variants fill it with their values (`quantity`), not reading it again.
+@lru_cache(maxsize=1024)
+def question_stencil(text: str, names: tuple[str, ...], limit: int = QUESTION_LIMIT) -> Stencil:
+    r"""The question read once, as `question_latex` reads it, and cut at its placeholders (a
+    stencil's holes: no question holds their characters, check_characters): a set's variants fill
+    it with their values (`quantity`), not reading it again.
 
-    >>> question_stencil("A {{ m }} mass & {{ g }}", ["m", "g"]).fill({"m": quantity("2", "\\,\\mathrm{kg}"), "g": "$9$"})
+    >>> question_stencil("A {{ m }} mass & {{ g }}", ("m", "g")).fill({"m": quantity("2", "\\,\\mathrm{kg}"), "g": "$9$"})
     'A $2\\,\\mathrm{kg}$ mass \\& $9$'
     """
-    pieces = _pieces(text, tuple(names), limit)
-    return Stencil("".join(piece if i % 2 == 0 else hole(piece) for i, piece in enumerate(pieces)))
+    return Stencil(_Parser(text, dict.fromkeys(names, ""), limit).question())
 
 
 _NUMBER = re.compile(r"-?[0-9]+(?:\.[0-9]+)?(?:\\times10\^\{-?[0-9]+\})?")
@@ -300,16 +300,6 @@ def _kept(unit: str) -> bool:
     """Whether a value with this unit reads as written (then any number's does: `quantity`)."""
     text = f"$1{unit}$"
     return _value(text, QUESTION_LIMIT) == text
-
-
-#: Where a placeholder stands in a question read once (no question holds it: check_characters).
-_SLOT = "\x00"
-
-
-@lru_cache(maxsize=1024)
-def _pieces(text: str, names: tuple[str, ...], limit: int) -> tuple[str, ...]:
-    """The question's LaTeX cut at its placeholders: text, name, text, ..., name, text."""
-    return tuple(_Parser(text, dict.fromkeys(names, _SLOT), limit).question().split(_SLOT))
 
 
 @lru_cache(maxsize=4096)  # a value drawn to its significant figures recurs across variants
@@ -443,7 +433,7 @@ class _Parser:
     def placeholder(self, name: str) -> str:
         if name not in self.values:
             raise LatexError(f"{{{{ {name} }}}}: not a parameter (parameters: {', '.join(self.values) or 'none'})")
-        return "" if self.values[name] is None else f"{_SLOT}{name}{_SLOT}"  # a value goes in its slot
+        return "" if self.values[name] is None else hole(name)  # a value goes in its hole
 
     def text_command(self, token: str, offset: int) -> str:
         name = token[1:]

@@ -10,7 +10,6 @@ refused with the file and the field where it does not fit. derive.worksheets bui
 from __future__ import annotations
 
 import datetime
-
 import random
 import re
 from dataclasses import dataclass

@@ -167,27 +167,19 @@ class ProblemVariants:
 
     def answers(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each answer's value to its significant figures; None for a general (symbolic) result."""
-        if id(draw) in self._texts:
-            return self._texts[id(draw)]
-        texts = {name: None if value is None else value.text for name, value in self.certified(draw).items()}
-        if id(draw) in self._own_draws:
-            self._texts[id(draw)] = texts
-        return texts
+        return self._once(self._texts, draw, lambda: {name: None if value is None else value.text
+                                                      for name, value in self.certified(draw).items()})
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
-        if id(draw) in self._tolerances:
-            return self._tolerances[id(draw)]
-        tolerances = {name: None if text is None else lms.tolerance(text, self.problem.asks[name].tolerance or self.tolerance)
-                      for name, text in self.answers(draw).items()}
-        if id(draw) in self._own_draws:
-            self._tolerances[id(draw)] = tolerances
-        return tolerances
+        return self._once(self._tolerances, draw, lambda: {
+            name: None if text is None else lms.tolerance(text, self.problem.asks[name].tolerance or self.tolerance)
+            for name, text in self.answers(draw).items()})
 
     def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
         """Each answer's distractors (value, mistake) for multiple choice."""
-        def derive_wrong(values: dict[sp.Symbol, sp.Expr]) -> dict[str, list[dict[str, str]]]:
-            tolerances = self.tolerances(draw)
+        def derive_wrong() -> dict[str, list[dict[str, str]]]:
+            values, tolerances = self.si_values(draw), self.tolerances(draw)
             return {n: distractors.distractors(self.problem, n, values, a.sig_figs or DEFAULT_SIG_FIGS,
                                                tolerance=tolerances[n])
                     for n, a in self.problem.asks.items()}
@@ -195,10 +187,10 @@ class ProblemVariants:
         return self._once(self._wrong, draw, derive_wrong)
 
     def _once(self, store: dict, draw: dict[str, sp.Expr], compute):
-        """compute(SI values of the draw), once per draw of this object's own."""
+        """compute(), once per draw of this object's own."""
         if id(draw) in store:
             return store[id(draw)]
-        result = compute(self.si_values(draw))
+        result = compute()
         if id(draw) in self._own_draws:  # only draws this object keeps alive: their ids stay theirs
             store[id(draw)] = result
         return result
@@ -243,7 +235,7 @@ class ProblemVariants:
     def _question_stencil(self) -> Stencil:
         """The question read once for every variant (latex_safety.question_stencil)."""
         try:
-            return latex_safety.question_stencil(self.problem.question, list(self.problem.parameters))
+            return latex_safety.question_stencil(self.problem.question, tuple(self.problem.parameters))
         except latex_safety.LatexError as error:
             raise self.problem.error("question", f"{type(error).__name__}: {error}") from None
 
