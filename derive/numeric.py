@@ -89,7 +89,7 @@ def significant(value: sp.Expr, digits: int) -> str:
         p, q = int(value.p), int(value.q)
         places = len(str(q)) - 1
         if q == 10**places and p:  # a decimal, as every drawn parameter is: by integers (a set writes thousands)
-            significand, power = _rounded(abs(p), digits)
+            significand, power = rounded(abs(p), digits)
             return "-" * (p < 0) + _decimal_text(significand, power - places, digits)
         return round_decimal(_decimal_of(p, q, digits), digits)
     try:
@@ -224,16 +224,15 @@ class _Lambdified:
 
 
 class Certified(NamedTuple):
-    """A value's text and how its digits are vouched for: `method` "ball" (radius: a bound on the
-    distance from the exact value to the ball's centre, every point of the ball rounding to
-    `text`; bits: the working precision), "exact" (sympy's strict evalf)
-    or "agreement" (two precisions agreed: the fallback for what balls do not map)."""
+    """A value's text and how its digits are vouched for: `method` "ball" (radius_text: a bound
+    on the distance from the exact value to the ball's centre, rounded up to two digits, every
+    point of the ball rounding to `text`; bits: the working precision), "exact" (sympy's strict
+    evalf) or "agreement" (two precisions agreed: the fallback for what balls do not map)."""
 
     text: str
     method: str
-    radius: Decimal | None = None
     bits: int | None = None
-    radius_text: str | None = None  # the radius rounded up to two digits, as a key records it
+    radius_text: str | None = None
 
     def certificate(self) -> dict:
         """What a key records of how the value is vouched for.
@@ -258,11 +257,14 @@ def starting_bits(digits: int) -> int:
 
 
 def certify(ball: arb, digits: int, bits: int) -> Certified | None:
-    """The ball's value to `digits` significant digits when both its ends round to it, else None.
+    """The ball's value to `digits` significant digits when both its ends round to it, else None
+    (by integers: this writes every value of a set). The ends are those of the ball in decimals
+    (arb's mid_rad_10exp, its radius widened to hold the conversion); the end nearer zero is
+    rounded, and the far end must lie below the upper edge of that rounding (rounding is monotone).
 
     >>> from flint import arb
     >>> certify(arb(1) / 3, 15, 53)
-    Certified(text='0.333333333333333', method='ball', radius=Decimal('5.551117E-17'), bits=53, radius_text='5.6e-17')
+    Certified(text='0.333333333333333', method='ball', bits=53, radius_text='5.6e-17')
     >>> certify(arb("0.125 +/- 1e-20"), 2, 64) is None  # straddles the rounding of 0.125
     True
     """
@@ -270,18 +272,24 @@ def certify(ball: arb, digits: int, bits: int) -> Certified | None:
         return None
     middle, radius, exponent = ball.mid_rad_10exp(_decimals(bits))
     middle, radius, exponent = int(middle), int(radius), int(exponent)
-    low = middle - radius
-    if low == 0:  # and so the radius: exactly zero
-        return Certified("0", "ball", Decimal(0), bits, "0")
-    rounded = _rounded(abs(low), digits)
+    if not radius:
+        if not middle:
+            return Certified("0", "ball", bits, "0")
+        near = far = abs(middle)
+    else:
+        low, high = middle - radius, middle + radius
+        if low <= 0 <= high:
+            return None  # the sign is not proven (a zero balls cannot prove)
+        near, far = (low, high) if low > 0 else (-high, -low)
+    significand, power = rounded(near, digits)
     if radius:
-        high = middle + radius
-        if low <= 0 <= high or rounded != _rounded(abs(high), digits):
-            return None  # an end rounds elsewhere, or the sign is not proven (a zero balls cannot prove)
-    significand, power = rounded
-    bound, place = _rounded(radius, 2, up=True) if radius else (0, 0)
-    return Certified("-" * (low < 0) + _decimal_text(significand, power + exponent, digits), "ball",
-                     Decimal(radius).scaleb(exponent), bits, _decimal_text(bound, place + exponent, 2) if radius else "0")
+        twice, edge = (2 * far, (2 * significand + 1) * POWERS[power]) if power >= 0 else \
+            (2 * far * POWERS[-power], 2 * significand + 1)  # the far end and the upper edge, doubled
+        if twice > edge or twice == edge and significand & 1:
+            return None  # the far end rounds to the next value up
+    bound, place = rounded(radius, 2, up=True) if radius else (0, 0)
+    return Certified("-" * (middle < 0) + _decimal_text(significand, power + exponent, digits), "ball", bits,
+                     _decimal_text(bound, place + exponent, 2) if radius else "0")
 
 
 @lru_cache(maxsize=None)
@@ -291,21 +299,32 @@ def _decimals(bits: int) -> int:
     return math.ceil(bits * math.log10(2)) + 2
 
 
-def _rounded(whole: int, digits: int, up: bool = False) -> tuple[int, int]:
+def _digit_count(whole: int) -> int:
+    """The number of decimal digits of a positive whole number, from its bits (str() of a
+    40-digit number costs twice as much): log10(2) is 1233/4096 to 1e-6, exact past 100k bits.
+
+    >>> [_digit_count(n) for n in (1, 9, 10, 99, 100, 10**40 - 1, 10**40)]
+    [1, 1, 2, 2, 3, 40, 41]
+    """
+    estimate = whole.bit_length() * 1233 >> 12
+    return estimate + (whole >= POWERS[estimate])
+
+
+def rounded(whole: int, digits: int, up: bool = False) -> tuple[int, int]:
     """A positive whole number rounded half-to-even (or `up`, away from zero) to `digits`
     significant digits, as (significand, power of ten): the same pair for the same value.
 
-    >>> _rounded(12345, 3), _rounded(12350, 3), _rounded(99951, 3), _rounded(12, 3), _rounded(12301, 3, up=True)
+    >>> rounded(12345, 3), rounded(12350, 3), rounded(99951, 3), rounded(12, 3), rounded(12301, 3, up=True)
     ((123, 2), (124, 2), (100, 3), (120, -1), (124, 2))
     """
-    drop = len(str(whole)) - digits
+    drop = _digit_count(whole) - digits
     if drop <= 0:
-        return whole * _POWERS[-drop], drop
-    significand, rest = divmod(whole, _POWERS[drop])
-    half = 5 * _POWERS[drop - 1]
+        return whole * POWERS[-drop], drop
+    significand, rest = divmod(whole, POWERS[drop])
+    half = 5 * POWERS[drop - 1]
     if (rest > 0) if up else (rest > half or rest == half and significand & 1):
         significand += 1
-        if significand == _POWERS[digits]:
+        if significand == POWERS[digits]:
             return significand // 10, drop + 1
     return significand, drop
 
@@ -318,7 +337,7 @@ class _Powers(dict):
         return self[n]
 
 
-_POWERS = _Powers()
+POWERS = _Powers()
 
 
 def _decimal_text(significand: int, power: int, digits: int) -> str:

@@ -4,7 +4,7 @@ the balls certify are those of the exact answer evaluated at 60 digits by sympy;
 do not map falls back, counted."""
 import functools
 import math
-from decimal import ROUND_UP, Decimal
+from decimal import ROUND_UP, Context, Decimal
 from pathlib import Path
 
 import pytest
@@ -103,8 +103,9 @@ def test_a_conditions_sign_is_read_from_its_ball_else_from_its_digits():
        digits=st.integers(1, 20), bits=st.sampled_from([64, 128]))
 def test_a_balls_text_and_radius_are_those_decimal_rounding_gives(middle, radius, exponent, digits, bits):
     """certify writes its digits and its certificate's radius by integers; Python's decimal module,
-    rounding the ball's low end (in the decimals certify reads) half-to-even and its radius up,
-    writes the same text."""
+    rounding both ends of the ball (in the decimals certify reads) half-to-even and its radius up,
+    writes the same text, and certify refuses only a ball whose ends round apart or whose sign
+    is not proven."""
     saved, ctx.prec = ctx.prec, bits
     try:
         ball = arb(arb(middle) * arb(10) ** exponent, arb(radius) * arb(10) ** (exponent - 3))
@@ -112,10 +113,13 @@ def test_a_balls_text_and_radius_are_those_decimal_rounding_gives(middle, radius
         mid, rad, power = (int(n) for n in ball.mid_rad_10exp(math.ceil(bits * math.log10(2)) + 2))
     finally:
         ctx.prec = saved
-    if value is None:
+    wide = Context(prec=100)  # the ends whole (the default 28 digits would round them)
+    low, high, bound = (Decimal(n).scaleb(power, wide) for n in (mid - rad, mid + rad, rad))
+    ends = {"0" if end == 0 else numeric.round_decimal(end, digits) for end in (low, high)}
+    if value is None:  # refused only where an end rounds elsewhere or the sign is not proven
+        assert len(ends) == 2 or low <= 0 <= high and rad
         return
-    low, bound = Decimal(mid - rad).scaleb(power), Decimal(rad).scaleb(power)
-    assert value.text == ("0" if low == 0 else numeric.round_decimal(low, digits))
+    assert ends == {value.text}
     assert value.certificate()["radius"] == ("0" if rad == 0 else numeric.round_decimal(bound, 2, ROUND_UP))
 
 

@@ -2,7 +2,7 @@
 bounded set files whose errors name the set file, the entry and the problem file."""
 import random
 import re
-from decimal import Decimal
+from decimal import Context, Decimal, localcontext
 from pathlib import Path
 
 import pytest
@@ -68,6 +68,28 @@ def test_every_draw_is_inside_its_range_at_its_significant_figures(low, width, s
     value = parameter.draw(random.Random(seed))
     assert bounds[0] <= value <= bounds[1]
     assert sp.Rational(str(Decimal(numeric.significant(value, sig_figs)))) == value
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.decimals(min_value=Decimal("-1e30"), max_value=Decimal("1e30"), allow_nan=False, allow_infinity=False),
+       st.decimals(min_value=Decimal("1e-40"), max_value=Decimal("1e30"), allow_nan=False, allow_infinity=False),
+       st.integers(1, 15), st.one_of(st.integers(0, 2**64 - 1), st.sampled_from([0, 1, 2**64 - 1, 2**63])))
+def test_a_draw_by_integers_is_the_draw_by_decimals(low, width, sig_figs, bits):
+    """Parameter.draw takes the integer path where every decimal step is exact and `at` where one
+    rounds; both give the value the decimal module's steps give (the draw every key was made with)."""
+    parameter = problem.Parameter("x", sp.Symbol("x"), "x", "1", None,
+                                  (sp.Rational(str(low)), sp.Rational(str(low + width))), sig_figs)
+    inner_low, inner_high = parameter.bounds()
+    if inner_low > inner_high:
+        return
+
+    class Bits:
+        def getrandbits(self, n):
+            return bits
+
+    with localcontext(Context(prec=28)):  # the fraction as the draws were first made
+        expected = parameter.at(Decimal(bits) / Decimal(2**64))
+    assert parameter.draw(Bits()) == expected
 
 
 def test_a_range_with_no_value_at_its_significant_figures_is_refused():
