@@ -87,9 +87,10 @@ def significant(value: sp.Expr, digits: int) -> str:
     """
     if isinstance(value, sp.Rational):
         p, q = int(value.p), int(value.q)
-        places = len(str(q)) - 1
-        if q == 10**places and p:  # a decimal, as every drawn parameter is: by integers (a set writes thousands)
-            significand, power = rounded(abs(p), digits)
+        places = q.bit_length()  # as many as any power of ten q divides needs (q = 2^a 5^b: a + b bits at least)
+        scale, rest = divmod(POWERS[places], q)
+        if not rest and p:  # a decimal, as every drawn parameter is: by integers (a set writes thousands)
+            significand, power = rounded(abs(p) * scale, digits)
             return "-" * (p < 0) + _decimal_text(significand, power - places, digits)
         return round_decimal(_decimal_of(p, q, digits), digits)
     try:

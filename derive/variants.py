@@ -206,8 +206,16 @@ class ProblemVariants:
         return [self.given(draw) for draw in self.draws]
 
     def given(self, draw: dict[str, sp.Expr]) -> dict[str, str]:
-        """A draw's parameter values as decimal text to their significant figures."""
-        return {name: numeric.significant(draw[name], p.sig_figs) for name, p in self.problem.parameters.items()}
+        """A draw's parameter values as decimal text to their significant figures (a fixed value's
+        written once)."""
+        fixed = self._fixed_texts
+        return {name: fixed.get(name) or numeric.significant(draw[name], p.sig_figs)
+                for name, p in self.problem.parameters.items()}
+
+    @cached_property
+    def _fixed_texts(self) -> dict[str, str]:
+        return {name: numeric.significant(p.value, p.sig_figs) for name, p in self.problem.parameters.items()
+                if p.range is None}
 
     def questions(self, siunitx: bool) -> list[str]:
         """Each variant's question, written once per form for the worksheet, its pandoc outputs and
