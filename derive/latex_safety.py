@@ -18,11 +18,7 @@ Every text field goes through one of two checks, each with a length bound (`*_LI
   not in math); every other `{{`, `{%` or `{#` is literal text. One paragraph (a blank line
   may start another; `\\` and `\par` may not), groups at most `MAX_DEPTH` deep. Text so read
   compiles: tests/test_fuzz.py compiles every text it accepts.
-- **Characters**, everywhere: ASCII, and beyond it only letters, digits, punctuation, symbols
-  and spaces of `SUPPORTED` (Latin, Greek, Cyrillic, Han, kana, Hangul) and `SYMBOLS`, which
-  the preamble's fonts all have. Control characters (but newlines in the question), format
-  characters (bidi overrides, zero-width joiners), combining marks, private-use, unassigned
-  and surrogate code points are refused, and so is any other script. Math is ASCII.
+- **Characters**, everywhere: those the fonts have (derive.latex_characters); math is ASCII.
 
 Every refusal is a LatexError with a one-line reason.
 
@@ -38,7 +34,7 @@ the tokenizer is one regular expression and the parser a short recursive descent
 >>> check_question("$I^$", ())
 Traceback (most recent call last):
 ...
-derive.latex_safety.LatexError: `^` at '$I^$' needs an argument: a character, a symbol such as \alpha, or {...}
+derive.latex_characters.LatexError: `^` at '$I^$' needs an argument: a character, a symbol such as \alpha, or {...}
 """
 from __future__ import annotations
 
@@ -48,7 +44,7 @@ from contextlib import contextmanager
 from functools import lru_cache
 from typing import Mapping
 
-from derive.errors import InputError
+from derive.latex_characters import LatexError, check_characters, describe
 from derive.stencil import Stencil, hole
 
 # --- length bounds (characters) ----------------------------------------------------------------
@@ -134,79 +130,6 @@ SCRIPT_CHARACTERS = frozenset("+-*/=<>|,.;:!?") | frozenset(
 SPECIALS = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
             "%": r"\%", "_": r"\_", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
 
-# --- characters --------------------------------------------------------------------------------
-#: Where text may go beyond ASCII: ranges of code points (inclusive) whose letters, digits,
-#: punctuation, symbols and spaces the preamble's fonts (Latin Modern, then DejaVu Serif and
-#: Noto Serif CJK) all have; tests/test_hardening.py typesets every one (Han and Hangul: samples).
-SUPPORTED = (
-    ("Latin-1", 0x00A0, 0x00FF), ("Latin", 0x0100, 0x024F), ("Latin", 0x1E00, 0x1EF9),
-    ("Greek", 0x0370, 0x03E1), ("Greek", 0x03F0, 0x03FF), ("Greek", 0x1F00, 0x1FFE),
-    ("Cyrillic", 0x0400, 0x045F), ("Cyrillic", 0x0490, 0x0491),
-    ("punctuation", 0x2010, 0x2027), ("punctuation", 0x2030, 0x203E), ("superscripts", 0x2070, 0x208E),
-    ("number forms", 0x2150, 0x2185), ("arrows", 0x2190, 0x21FF),
-    ("CJK punctuation", 0x3000, 0x303F), ("Hiragana", 0x3041, 0x309F), ("Katakana", 0x30A0, 0x30FF),
-    ("Hangul", 0x3131, 0x318E), ("Han", 0x4E00, 0x9FEA), ("Hangul", 0xAC00, 0xD7A3),
-    ("fullwidth forms", 0xFF01, 0xFF9F), ("fullwidth forms", 0xFFE0, 0xFFE6),
-)
-#: Common signs outside those ranges: currency, letterlike and mathematical.
-SYMBOLS = frozenset("€₩₴₹₽℃℉ℏℓ№™Ω∀∂∃∅∆∇∈∉∏∑−∓∗∘∙√∝∞∠∣∥∧∨∩∪∫∬∮∴∵∼≃≅≈≠≡≤≥≪≫⊂⊃⊆⊇⊕⊗⊥⋅")
-SUPPORTED_TEXT = ("Latin, Greek, Cyrillic, Chinese, Japanese and Korean letters, digits, and common "
-                  "punctuation and symbols")
-_CATEGORY_REASONS = {
-    "Cc": "a control character", "Cf": "an invisible format character (a bidi override, a zero-width joiner...)",
-    "Co": "a private-use character", "Cn": "an unassigned code point", "Cs": "a lone surrogate",
-    "Zl": "a line separator", "Zp": "a paragraph separator",
-    "Mn": "a combining mark: write the accented letter itself", "Mc": "a combining mark", "Me": "a combining mark",
-}
-#: What to write in math for some non-ASCII characters (Greek letters: their command).
-MATH_UNICODE = {"×": r"\times", "·": r"\cdot", "⋅": r"\cdot", "±": r"\pm", "∓": r"\mp", "°": r"^\circ",
-                "→": r"\to", "←": r"\leftarrow", "≤": r"\leq", "≥": r"\geq", "≠": r"\neq", "≈": r"\approx",
-                "∞": r"\infty", "∂": r"\partial", "∇": r"\nabla", "−": "-", "′": "'", "∝": r"\propto",
-                "∫": r"\int", "∑": r"\sum", "√": r"\sqrt{...}", "ℏ": r"\hbar", "ℓ": r"\ell", "…": r"\ldots",
-                "÷": r"\div", "²": "^2", "³": "^3", "–": "-", "—": "-"}
-
-
-class LatexError(InputError):
-    """Text from a problem file that derive will not typeset."""
-
-
-def describe(character: str) -> str:
-    """A character as U+XXXX and its Unicode name.
-
-    >>> describe("😀"), describe("\\t")
-    ('U+1F600 GRINNING FACE', 'U+0009')
-    """
-    name = unicodedata.name(character, "")
-    return f"U+{ord(character):04X}" + (f" {name}" if name else "")
-
-
-@lru_cache(maxsize=4096)
-def refusal(character: str) -> str | None:
-    """Why a character may not be typeset (None: it may). ASCII's printable characters may,
-    and newlines where a caller allows them."""
-    if " " <= character <= "~":
-        return None
-    category = unicodedata.category(character)
-    if category in _CATEGORY_REASONS:
-        return _CATEGORY_REASONS[category]
-    code = ord(character)
-    if character in SYMBOLS or any(first <= code <= last for _, first, last in SUPPORTED):
-        return None
-    return f"not in a script the fonts cover (supported: {SUPPORTED_TEXT})"
-
-
-def check_characters(text: str, newlines: bool = False) -> None:
-    """Refuse the first character that may not be typeset (see `refusal`)."""
-    for character in text:
-        if character == "\n":
-            if not newlines:
-                raise LatexError("U+000A is not allowed: a line break (this text is one line)")
-            continue
-        reason = refusal(character)
-        if reason:
-            raise LatexError(f"{describe(character)} is not allowed: {reason}")
-
-
 def _check_length(text: str, limit: int) -> None:
     if len(text) > limit:
         raise LatexError(f"{len(text)} characters: at most {limit}")
@@ -225,7 +148,7 @@ def check_plain(text: str, limit: int) -> None:
     >>> check_plain("\\\\iow_open:Nn", TITLE_LIMIT)
     Traceback (most recent call last):
     ...
-    derive.latex_safety.LatexError: \\iow_open:Nn: this text is plain, not LaTeX (it would print as written)
+    derive.latex_characters.LatexError: \\iow_open:Nn: this text is plain, not LaTeX (it would print as written)
     """
     _check_length(text, limit)
     check_characters(text)
@@ -243,7 +166,7 @@ def check_question(text: str, parameters, limit: int = QUESTION_LIMIT) -> None:
     >>> check_question("$\\\\use:c {in put}$", [])
     Traceback (most recent call last):
     ...
-    derive.latex_safety.LatexError: \\use:c is not allowed in math
+    derive.latex_characters.LatexError: \\use:c is not allowed in math
     """
     _Parser(text, dict.fromkeys(parameters), limit).question()
 
@@ -287,7 +210,7 @@ def quantity(number: str, unit: str = "") -> str:
     >>> quantity("1}\\input{x")
     Traceback (most recent call last):
     ...
-    derive.latex_safety.LatexError: '1}\\input{x' is not a number as derive writes one
+    derive.latex_characters.LatexError: '1}\\input{x' is not a number as derive writes one
     """
     if not _NUMBER.fullmatch(number):
         raise LatexError(f"{number!r} is not a number as derive writes one")
@@ -325,6 +248,14 @@ def _shown(text: str, at: int) -> str:
     """The command at `at` as a person reads it: \\iow_open:Nn, not TeX's \\iow."""
     shown = _SHOWN.match(text, at).group()
     return "\\ at the end of a line" if shown == "\\\n" else shown
+
+
+#: What to write in math for some non-ASCII characters (Greek letters: their command).
+MATH_UNICODE = {"×": r"\times", "·": r"\cdot", "⋅": r"\cdot", "±": r"\pm", "∓": r"\mp", "°": r"^\circ",
+                "→": r"\to", "←": r"\leftarrow", "≤": r"\leq", "≥": r"\geq", "≠": r"\neq", "≈": r"\approx",
+                "∞": r"\infty", "∂": r"\partial", "∇": r"\nabla", "−": "-", "′": "'", "∝": r"\propto",
+                "∫": r"\int", "∑": r"\sum", "√": r"\sqrt{...}", "ℏ": r"\hbar", "ℓ": r"\ell", "…": r"\ldots",
+                "÷": r"\div", "²": "^2", "³": "^3", "–": "-", "—": "-"}
 
 
 def math_hint(character: str) -> str:

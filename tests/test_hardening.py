@@ -14,7 +14,7 @@ import yaml
 from jinja2.exceptions import SecurityError, TemplateNotFound, UndefinedError
 
 from conftest import ROOT, document, kept_scratch, run_derive
-from derive import export, latex_safety, library, limits, problem, problem_sets, render
+from derive import export, latex_characters, latex_safety, library, limits, problem, problem_sets, render
 from derive.answers import Solution
 from derive.errors import InputError, ProblemError
 
@@ -397,11 +397,11 @@ def test_non_ascii_in_math_is_refused_with_a_hint(text, reason):
 def supported_characters(sample: int) -> dict[str, str]:
     """Every character latex_safety lets text hold beyond ASCII, by script (of Han and Hangul
     syllables one in `sample`)."""
-    found = {"symbols": "".join(sorted(latex_safety.SYMBOLS))}
-    for script, first, last in latex_safety.SUPPORTED:
+    found = {"symbols": "".join(sorted(latex_characters.SYMBOLS))}
+    for script, first, last in latex_characters.SUPPORTED:
         step = sample if last - first > 2000 else 1
         found[script] = found.get(script, "") + "".join(
-            chr(c) for c in range(first, last + 1, step) if latex_safety.refusal(chr(c)) is None)
+            chr(c) for c in range(first, last + 1, step) if latex_characters.refusal(chr(c)) is None)
     return found
 
 
@@ -423,7 +423,7 @@ def test_every_supported_character_typesets(tmp_path):
     out of the PDF."""
     scripts = supported_characters(sample=37)
     characters = "".join(scripts.values())
-    assert all(latex_safety.refusal(c) is None for c in SAMPLES.replace(" ", ""))
+    assert all(latex_characters.refusal(c) is None for c in SAMPLES.replace(" ", ""))
     lines = [" ".join(characters[i:i + 40]) for i in range(0, len(characters), 40)]
     body = "\n\n".join(f"{line}\n\n\\textbf{{{line}}}\n\n\\textit{{{line}}}\n\n\\texttt{{{line}}}\n\n"
                         f"$\\text{{{line}}}$" for line in lines)
@@ -443,7 +443,7 @@ def test_every_supported_character_typesets(tmp_path):
 def test_latin_text_typesets_with_pdflatex(tmp_path):
     """The non-ASCII characters export.PDFLATEX_TEXT gives to pdflatex are supported and come out."""
     latin = "".join(sorted(c for c in export.PDFLATEX_TEXT if not c.isascii()))
-    assert all(latex_safety.refusal(c) is None for c in latin)
+    assert all(latex_characters.refusal(c) is None for c in latin)
     tex = tmp_path / "latin.tex"
     tex.write_text(document(f"{latin}\n\n\\textbf{{{latin}}}\n\n\\texttt{{{latin}}}\n\n$\\text{{{latin}}}$"),
                    encoding="utf-8")
