@@ -323,7 +323,39 @@ def set_rate(say, variants: int = 300, repeats: int = 3) -> float:
         spent = [statistics.median(sum(cpu for step, _, cpu in steps if step == name) for steps in costs[count])
                  for count in (1, variants)]
         say(f"    {name:<58} {1e6 * (spent[1] - spent[0]) / extra:6.1f} us")
+    floor = _floor(solutions, variants)
+    say(f"  the steps every variant takes whatever writes its documents, each timed alone (per answer; "
+        f"{1e6 * sum(floor.values()):.1f} us in all):")
+    for name, seconds in floor.items():
+        say(f"    {name:<58} {1e6 * seconds:6.1f} us")
     return marginal
+
+
+def _floor(solutions: list[Solution], count: int) -> dict[str, float]:
+    """CPU seconds per answer of what each of `count` variants of each problem must do before a
+    document is written, timed step by step: its generator seeded from its string (which fixes
+    the draws, and so the keys), its values drawn, its conditions tested, its answers evaluated
+    in balls and their digits proven (the marginal cost of a set can go no lower)."""
+    spent = dict.fromkeys(("seeding each variant's generator", "drawing its values", "testing its conditions",
+                           "its answers in balls, digits proven"), 0.0)
+    answers = 0
+    for solution in solutions:
+        found, clock = solution.problem, time.process_time
+        started = clock()
+        rngs = [random.Random(f"bench/floor/{found.id}/{n}") for n in range(count)]
+        seeded = clock()
+        draws = [variants.draw(found, rng) for rng in rngs]
+        drawn = clock()
+        solution.violations([variants.si_values(found, values) for values in draws])
+        tested = clock()
+        item = variants.ProblemVariants(found, solution, draws)
+        numeric.evaluator(tuple(item.in_declared_units.values())).compile()
+        compiled = clock()
+        item.certified(draws[0])  # every draw's, together
+        for name, seconds in zip(spent, (seeded - started, drawn - seeded, tested - drawn, clock() - compiled)):
+            spent[name] += seconds
+        answers += count * len(found.asks)
+    return {name: seconds / answers for name, seconds in spent.items()}
 
 
 def mechanics_alone(say) -> None:

@@ -26,8 +26,13 @@ def test_the_set_rate_is_printed():
     rate = next(i for i, line in enumerate(lines) if "marginal:" in line)
     assert "1 variant: 17 answers" in lines[rate - 1] and "2 variants: 34 answers" in lines[rate - 1]
     assert "naive evalf" in lines[rate] and "where the marginal CPU time goes" in lines[rate + 1]
-    steps = [line.split(" us")[0].rsplit(None, 1)[0].strip() for line in lines[rate + 2:]]
+    floor = next(i for i, line in enumerate(lines) if "whatever writes its documents" in line)
+    steps = [line.split(" us")[0].rsplit(None, 1)[0].strip() for line in lines[rate + 2:floor]]
     assert steps[0] == "drawing" and "each variant's answers, certified, and the keys" in steps
+    parts = [float(line.split(" us")[0].rsplit(None, 1)[1]) for line in lines[floor + 1:]]
+    assert len(parts) == 4 and all(part > 0 for part in parts)
+    total = float(lines[floor].split(" us in all")[0].rsplit(None, 1)[1])
+    assert abs(total - sum(parts)) <= 0.2  # the parts are printed rounded
 
 
 def test_the_sheet_section_says_where_the_time_goes():
