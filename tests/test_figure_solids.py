@@ -233,3 +233,25 @@ def test_every_3d_file_has_a_figure_with_omega_and_l_that_compiles(tmp_path):
     tex.write_text(render.render("preamble.tex.j2") + "\\begin{document}\n" + "\n\n".join(drawn)
                    + "\n\\end{document}\n", encoding="utf-8")
     assert export.pdf(tex).exists()
+
+
+@pytest.mark.parametrize("name", ["gyroscope_wheel", "top_precession"])
+def test_omega_and_l_close_on_the_page_are_labelled_on_their_far_sides(name):
+    """A gyroscope's omega and L lie a degree or two apart on the page: each label goes beyond its
+    own arrow on the side away from the other (omega's once sat on L's line, among the spin's and the
+    body axes' labels). The side is read from the label's anchor: a node anchored at its north sits
+    below the point."""
+    problem = load(TEXTBOOK / f"{name}.yaml") if name == "gyroscope_wheel" else load(name)
+    drawn = figure.tikz(problem)
+    runs = arrows(drawn)
+    omega, momentum = runs[r"$\vec\omega$"], runs[r"$\vec L$"]
+    assert degrees(omega, momentum) < 15
+    ccw = omega[0] * momentum[1] - omega[1] * momentum[0] > 0  # L counter-clockwise of omega
+    anchors = dict(re.findall(r"node\[anchor=([a-z ]+), inner sep=1.5pt\] \{(\$\\vec(?:\\omega| L)\$)\}", drawn))
+    anchors = {label: anchor for anchor, label in anchors.items()}
+    directions = {"north": (0, -1), "south": (0, 1), "east": (-1, 0), "west": (1, 0), "north east": (-1, -1),
+                  "north west": (1, -1), "south east": (-1, 1), "south west": (1, 1)}  # where the label lies
+    for label, run, sign in ((r"$\vec\omega$", omega, -1 if ccw else 1), (r"$\vec L$", momentum, 1 if ccw else -1)):
+        lies = directions[anchors[label]]
+        side = run[0] * lies[1] - run[1] * lies[0]  # > 0: the label lies counter-clockwise of its arrow
+        assert side * sign > 0, (label, anchors[label])

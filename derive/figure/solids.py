@@ -64,15 +64,21 @@ def _scaled(vector, k: float):
 
 def _vectors(view: Oblique, at, omega, momentum, lengths=(1.7, 2.2), beside=None) -> None:
     """omega and L (derivation's frame) from a world point, at fixed lengths; omega's label on the
-    page side `beside` of its tip, or beside it where the two lie within 15 degrees on the page."""
+    page side `beside` of its tip. Where the two lie within 15 degrees on the page, each label goes
+    on the side away from the other arrow (a gyroscope's omega and L: their labels, the spin's and
+    the body's axes would otherwise meet at the tips)."""
     omega, momentum = view.world(omega), view.world(momentum)
     runs = [page(v) for v in (omega, momentum)]
-    apart = math.degrees(abs(math.atan2(runs[0][0] * runs[1][1] - runs[0][1] * runs[1][0],
-                                        runs[0][0] * runs[1][0] + runs[0][1] * runs[1][1])))
+    turn = runs[0][0] * runs[1][1] - runs[0][1] * runs[1][0]  # > 0: L lies counter-clockwise of omega
+    apart = math.degrees(abs(math.atan2(turn, runs[0][0] * runs[1][0] + runs[0][1] * runs[1][1])))
+    away = None
     if beside is None and apart < 15:
-        beside = (-runs[0][1], runs[0][0])
+        side = -1.0 if turn > 0 else 1.0  # omega's label clockwise of it where L is counter-clockwise
+        beside = (-side * runs[0][1], side * runs[0][0])
+        across = (side * runs[1][1], -side * runs[1][0])
+        away = (runs[1][0] + across[0], runs[1][1] + across[1])  # beyond L's tip, on its other side
     view.arrow(at, omega, lengths[0], OMEGA_STYLE, OMEGA_LABEL, toward=beside)
-    view.arrow(at, momentum, lengths[1], MOMENTUM_STYLE, MOMENTUM_LABEL)
+    view.arrow(at, momentum, lengths[1], MOMENTUM_STYLE, MOMENTUM_LABEL, toward=away)
 
 
 def _bearings(fig: _Figure) -> None:
