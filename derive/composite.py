@@ -114,10 +114,7 @@ def read(reader, raw, field: str) -> CompositeParts:
         spec = reader.mapping(spec, where, required=("shape", "mass", *sizes_needed), optional=("at", "angle"))
         mass = reader.positive(spec["mass"], f"{where}.mass", "kg", "a mass")
         sizes = {s: reader.positive(spec[s], f"{where}.{s}", "m", f"a {s}") for s in sizes_needed}
-        at = spec.get("at", [0, 0])
-        if not isinstance(at, list) or len(at) != 2:
-            raise reader.fail(f"{where}.at", "expected [x, y] in the composite's frame")
-        position = tuple(reader.dimensioned(v, f"{where}.at", "m", "a coordinate") for v in at)
+        position = reader.vector(spec.get("at", [0, 0]), f"{where}.at", where=" in the composite's frame")
         angle = reader.dimensioned(spec.get("angle", 0), f"{where}.angle", "rad", "an angle")
         if angle != 0 and shape == "point":
             raise reader.fail(f"{where}.angle", "a point mass has no orientation")

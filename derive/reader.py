@@ -210,6 +210,13 @@ class Reader:
             raise self.fail(field, f"{what} must have the dimension of {unit}, but {result} has {describe(found)}{bare}")
         return result
 
+    def vector(self, value, field: str, unit: str = "m", what: str = "a coordinate",
+               where: str = "") -> tuple[sp.Expr, sp.Expr]:
+        """`[x, y]`, each of the dimension of `unit` (`where`: the frame, for the error)."""
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(field, f"expected [x, y]{where}")
+        return tuple(self.dimensioned(v, field, unit, what) for v in value)
+
     def unspecified(self, name: str, unit: str) -> sp.Symbol:
         """A positive symbol for a size the problem leaves open; answers must not depend on it."""
         symbol = sp.Symbol(name, positive=True)

@@ -1,5 +1,5 @@
-"""The scene section of a problem file: bodies, joints, contacts, surfaces, loads and the
-scene-level systems (orbit, standing wave, internal forces); its states
+"""The scene section of a problem file: bodies (each read by derive.body_file), joints, contacts,
+surfaces, loads and the scene-level systems (orbit, standing wave, internal forces); its states
 are read by derive.state_file.
 
 Every field goes through the `derive.reader.Reader`, so errors name the file and the field.
@@ -14,196 +14,23 @@ import dataclasses
 
 import sympy as sp
 
-from derive import composite, inertia, solid_file, state_file, units
-from derive.errors import EngineLimit, InputError
+from derive import body_file, solid_file, state_file
+from derive.errors import EngineLimit
 from derive.parts import clutch, contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
 from derive.parts.pin import Pin
 from derive.parts.torque import Torque
-from derive.parts.places import Places, turned
+from derive.parts.places import Places
 from derive.parts.surfaces import Circle, Plane
-from derive.reader import Reader, describe
+from derive.reader import Reader
 from derive.spelling import did_you_mean, no_such
-from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import (RESERVED_NAMES, SHAPE_SIZES, SYSTEMS, TIME, Body, Motion, Orbit, Scene,
-                          StandingWave)
+from derive.scene import RESERVED_NAMES, SYSTEMS, Body, Orbit, Scene, StandingWave
 
 #: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
 JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
 LOADS = {"gravity": gravity.read, "force": force.read, "torque": torque.read, "spring": spring.read,
          "torsional_spring": torsional_spring.read, "damper": damper.read}
-#: A body's keys that place it: its center of mass in the reference configuration, and its angle.
-PLACE_KEYS = ("at", "angle")
-
-
-def _body(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
-    field = f"scene.bodies.{name}"
-    all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
-    spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
-                                    "path", "bearings", "pivot_point", "rolls_on_edge", "free_rotation", "angle", "parts", *MOTION_KEYS, *all_sizes))
-    shape = spec["shape"]
-    if shape not in SHAPE_SIZES:
-        raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
-                                            + did_you_mean(shape, SHAPE_SIZES))
-    if (shape == "composite") != ("parts" in spec):
-        raise reader.fail(f"{field}.parts", "a composite body has parts: {NAME: {shape, mass, sizes, at}}; other "
-                                            "shapes have none")
-    if shape == "composite":
-        return _composite(reader, name, spec, field)
-    if "mass" in spec:
-        mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
-    elif "density" in spec:
-        mass = None  # from the density, once the sizes are known
-    else:
-        mass = reader.unspecified(f"m_{name}", "kg")
-    sizes = {}
-    for size in all_sizes:
-        if shape == "custom" and size == "radius" and size in spec:  # a custom body may roll
-            sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", "a radius")
-        elif size in SHAPE_SIZES[shape]:
-            if size in spec:
-                sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", f"a {size}")
-            else:
-                sizes[size] = reader.unspecified(f"{size}_{name}", "m")
-        elif size in spec:
-            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}" + did_you_mean(size, SHAPE_SIZES[shape]))
-    given = None
-    if shape == "custom" and "free_rotation" in spec:
-        given = solid_file.free_inertia(reader, spec, field)[2]  # the moment about z; the rest is read with the rotation
-    elif shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec):
-        given = solid_file.axial_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the key
-    elif shape == "custom":
-        if "inertia" not in spec:
-            raise reader.fail(f"{field}.inertia", "a custom body needs its moment of inertia about its center of mass")
-        given = reader.dimensioned(spec["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia")
-        if given.is_nonnegative is not True:
-            raise reader.fail(f"{field}.inertia", "a moment of inertia cannot be negative")
-    elif "inertia" in spec:
-        raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
-    density = None
-    if "density" in spec:
-        density, mass = _density(reader, spec["density"], f"{field}.density", shape, sizes, mass)
-    path = None
-    if "path" in spec:
-        if shape != "point" or "joint" in spec or "on" in spec:
-            raise reader.fail(f"{field}.path", "a prescribed path is for a free point mass")
-        path = _path(reader, spec["path"], f"{field}.path", name)
-    at = (_vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec
-          else (sp.Integer(0), sp.Integer(0)))
-    angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
-    if angle != 0 and shape == "point":
-        raise reader.fail(f"{field}.angle", "a point mass has no orientation")
-    body = Body(name, shape, mass, sizes, given, path, density, at, angle)
-    joint = _joint(reader, body, spec.get("joint"), f"{field}.joint")
-    about = "center" if "pivot_point" in spec or "free_rotation" in spec else spec.get("inertia_about", "center")
-    if about not in ("center", "pivot") or about == "pivot" and (given is None or joint is None or joint.name != "pivot"):
-        raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body on a pivot joint")
-    if about == "pivot":
-        # Given about the pivot: the center-of-mass moment follows from the parallel-axis theorem.
-        distance = joint.offset[0] ** 2 + joint.offset[1] ** 2
-        body = Body(name, shape, mass, sizes, given - mass * distance, at=at, angle=angle)
-    return body, joint
-
-
-def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body, Pin | None]:
-    """A body made of parts (derive.composite): `at` places the origin of the parts' frame."""
-    for key in ("mass", "density", "inertia", "inertia_about", "path"):
-        if key in spec:
-            raise reader.fail(f"{field}.{key}", f"a composite's {key.replace('_', ' ')} comes from its parts"
-                              if key in ("mass", "density", "inertia", "inertia_about") else
-                              f"a composite body has no {key}")
-    for size in sorted({s for sizes in SHAPE_SIZES.values() for s in sizes} & set(spec)):
-        raise reader.fail(f"{field}.{size}", f"a composite has no {size} of its own: its parts have sizes")
-    made = composite.read(reader, spec["parts"], f"{field}.parts")
-    origin = (_vector(reader, spec["at"], f"{field}.at", "m", "a position") if "at" in spec
-              else (sp.Integer(0), sp.Integer(0)))
-    angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
-    at = tuple(sp.Matrix(origin) + turned(angle, made.center))
-    radius = made.radius(reader)
-    body = Body(name, "composite", made.mass, {} if radius is None else {"radius": radius}, made.inertia,
-                at=at, angle=angle, composite=made)
-    return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
-
-
-COORDINATE_UNITS = {"x": "m", "y": "m", "z": "m", "r": "m", "phi": "rad", "theta": "rad"}
-
-
-def _density(reader: Reader, raw, field: str, shape: str, sizes: dict, mass: sp.Expr | None):
-    """A body's density in its shape's coordinates: with a mass, a profile scaled to that mass
-    (dimensionless); without, an absolute density whose integral gives the mass."""
-    if shape not in inertia.SHAPES or shape == "point":
-        raise reader.fail(field, f"a {shape} has no density to give")
-    coordinates = inertia.SHAPES[shape].density_symbols
-    clash = sorted(set(coordinates) & set(reader.symbols))
-    if clash:
-        raise reader.fail(field, f"the parameter {clash[0]} has the name of a {shape} coordinate: rename it")
-    density = reader.expression(raw, field, {**reader.symbols, **coordinates})
-    units_here = {**reader.symbol_units, **{s: COORDINATE_UNITS[n] for n, s in coordinates.items()}}
-    try:
-        found = units.expression_dimension(density, units_here)
-    except units.UnitError as error:
-        raise reader.fail(field, str(error)) from None
-    if mass is not None:
-        if found:
-            raise reader.fail(field, f"with a mass given, the density is a profile without dimension; it has "
-                                     f"{describe(found)}")
-        return density, mass
-    try:
-        derived, _ = inertia.body_moment(shape, inertia.PLANAR_AXIS[shape], None, sizes, density)
-        found = units.expression_dimension(derived, units_here)
-    except (units.UnitError, InputError) as error:
-        raise reader.fail(field, str(error)) from None
-    if not units.same_dimension(found, units.dimension(units.parse_unit("kg"))):
-        raise reader.fail(field, f"the density integrates to {describe(found)}, not to a mass")
-    return density, derived
-
-
-MOTION_KEYS = ("at", "velocity")
-
-
-def _vector(reader: Reader, value, field: str, unit: str, what: str) -> tuple[sp.Expr, sp.Expr]:
-    if not isinstance(value, list) or len(value) != 2:
-        raise reader.fail(field, "expected [x, y]")
-    return tuple(reader.dimensioned(v, field, unit, what) for v in value)
-
-
-def _motion(reader: Reader, name: str, spec: dict, bodies: dict[str, Body]) -> Motion | None:
-    """A body placed at a given point (`at`), or rolling at a given `velocity`."""
-    field = f"scene.bodies.{name}"
-    if not any(k in spec for k in MOTION_KEYS):
-        return None
-    velocity = _vector(reader, spec["velocity"], f"{field}.velocity", "m/s", "a velocity") if "velocity" in spec \
-        else (sp.Integer(0), sp.Integer(0))
-    return Motion(bodies[name].at, velocity)  # the center of mass (a composite's `at` is its parts' origin)
-
-
-PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
-
-
-def _path(reader: Reader, raw, field: str, body: str) -> MotionPath:
-    """`{polar: {r: EXPR, theta: EXPR}}` or `{cartesian: {x: ..., y: ...}}` in the parameters and
-    the time t; `any` leaves a coordinate an arbitrary function of time."""
-    raw = reader.mapping(raw, field, optional=tuple(PATH_COORDINATES))
-    if len(raw) != 1:
-        raise reader.fail(field, "expected polar or cartesian")
-    (kind, spec), = raw.items()
-    names = PATH_COORDINATES[kind]
-    spec = reader.mapping(spec, f"{field}.{kind}", required=tuple(n for n, _ in names))
-    if "t" in reader.symbols:
-        raise reader.fail(f"{field}.{kind}", "t is the time in a path: rename the parameter t")
-    reader.symbol_units.setdefault(TIME, "s")
-    allowed = {**reader.symbols, "t": TIME}
-    functions = []
-    for name, unit in names:
-        if spec[name] == "any":
-            function = sp.Function(name)(TIME)
-            reader.symbol_units[function] = unit
-            functions.append(function)
-        else:
-            functions.append(reader.dimensioned(spec[name], f"{field}.{kind}.{name}", unit, f"a path's {name}", allowed))
-    return MotionPath(kind, tuple(functions))
 
 
 def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str) -> Contact | None:
@@ -259,7 +86,7 @@ def _surfaces(reader: Reader, raw) -> dict:
             details = reader.mapping(details, where, required=("facing",), optional=("through",))
             if details["facing"] not in ("left", "right"):
                 raise reader.fail(f"{where}.facing", "left or right (the side bodies touch it from)")
-            through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
+            through = reader.vector(details["through"], f"{where}.through", "m", "a position") \
                 if "through" in details else (sp.Integer(0), sp.Integer(0))
             # A vertical plane: its normal points the way it "descends", to the side it faces.
             result[name] = Plane(name, sp.pi / 2, None, through, carrier, descends=details["facing"])
@@ -270,7 +97,7 @@ def _surfaces(reader: Reader, raw) -> dict:
             side = details.get("side", "inside")
             if side not in ("inside", "outside"):
                 raise reader.fail(f"{where}.side", "inside (a bowl, a loop) or outside (a dome)")
-            center = _vector(reader, details["center"], f"{where}.center", "m", "a position") \
+            center = reader.vector(details["center"], f"{where}.center", "m", "a position") \
                 if "center" in details else None
             result[name] = Circle(name, reader.positive(details["radius"], f"{where}.radius", "m", "a radius"),
                                   center, side, carrier)
@@ -287,26 +114,10 @@ def _surfaces(reader: Reader, raw) -> dict:
         else:
             angle = reader.unspecified(f"angle_{name}", "rad")
         height = reader.positive(details["height"], f"{where}.height", "m", "a height") if "height" in details else None
-        through = _vector(reader, details["through"], f"{where}.through", "m", "a position") \
+        through = reader.vector(details["through"], f"{where}.through", "m", "a position") \
             if "through" in details else (sp.Integer(0), sp.Integer(0))
         result[name] = Plane(name, angle, height, through, carrier, descends)
     return result
-
-
-def _joint(reader: Reader, body: Body, spec, field: str) -> Pin | None:
-    if spec is None:
-        return None
-    if not body.rotates:
-        raise reader.fail(field, "a point mass has no joint")
-    if spec == "fixed_axle":
-        return Pin("axle", body.name, (0, 0))
-    spec = reader.mapping(spec, field, optional=("pivot",))
-    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",), optional=("side",))
-    distance = reader.positive(pivot["distance"], f"{field}.pivot.distance", "m", "a pivot distance")
-    side = pivot.get("side", "above")
-    if side not in ("above", "below"):
-        raise reader.fail(f"{field}.pivot.side", "above (the body hangs) or below (the body stands on it)")
-    return Pin("pivot", body.name, (0, distance if side == "above" else -distance))
 
 
 def _string(reader: Reader, index: int, spec, bodies: dict[str, Body]) -> tuple[str, dict]:
@@ -484,7 +295,7 @@ def read_scene(reader: Reader, raw) -> Scene:
     wave = _wave(reader, raw["standing_wave"]) if "standing_wave" in raw else None
     internal = _internal_forces(reader, raw["internal_forces"]) if "internal_forces" in raw else None
     surfaces = _surfaces(reader, raw.get("surfaces"))
-    ground = {name: _vector(reader, v, f"scene.points.{name}", "m", "a position")
+    ground = {name: reader.vector(v, f"scene.points.{name}", "m", "a position")
               for name, v in reader.named(raw.get("points"), "points").items()}
     bodies_raw = reader.mapping(raw.get("bodies") or {}, "scene.bodies", free=True)
     if not bodies_raw and all(s is None for s in (orbit, wave, internal)):
@@ -494,7 +305,7 @@ def read_scene(reader: Reader, raw) -> Scene:
         reader.name(name, f"scene.bodies.{name}", "a body name")
         if name in ground or name == "ground":
             raise reader.fail(f"scene.bodies.{name}", "the name is also a point of the ground")
-        body, joint = _body(reader, name, spec)
+        body, joint = body_file.read(reader, name, spec)
         bodies[name] = body
         pins += [joint] if joint else []
     rolling = {n: solid_file.rolls_on_edge(reader, spec, f"scene.bodies.{n}", bodies[n]) for n, spec in bodies_raw.items()
@@ -539,7 +350,7 @@ def read_scene(reader: Reader, raw) -> Scene:
     if reserved:
         raise reader.fail("scene", f"the name {reserved!r} is reserved for asks ({reserved}.…): name the part "
                                    "otherwise")
-    motions = {n: m for n, spec in bodies_raw.items() if (m := _motion(reader, n, spec, bodies)) is not None}
+    motions = {n: m for n, spec in bodies_raw.items() if (m := body_file.motion(reader, n, spec, bodies)) is not None}
     # A velocity is the speed of a body rolling without slipping; other rates are a state's.
     rolling_at = {c.body for c in constraints if isinstance(c, Contact) and c.rolling}
     moving = next((n for n, spec in bodies_raw.items() if "velocity" in spec and n not in rolling_at), None)

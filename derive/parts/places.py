@@ -104,14 +104,14 @@ class Places:
         if isinstance(value, list):
             if not ground:
                 raise self.reader.fail(field, "expected a point of a body (BODY or BODY.POINT)")
-            return None, self.reader_vector(value, field)
+            return None, self.reader.vector(value, field)
         if isinstance(value, dict):
             spec = self.reader.mapping(value, field, free=True)
             if len(spec) != 1:
                 raise self.reader.fail(field, "expected {BODY: [x, y]}")
             (body, offset), = spec.items()
             self._body(body, field)
-            return body, self.reader_vector(offset, f"{field}.{body}")
+            return body, self.reader.vector(offset, f"{field}.{body}")
         if not isinstance(value, str):
             raise self.reader.fail(field, "expected a point: BODY, BODY.POINT, {BODY: [x, y]} or [x, y]")
         if value in self.ground and ground:
@@ -146,11 +146,6 @@ class Places:
             known = ", ".join([*self.bodies, *self.ground]) or "none"
             raise self.reader.fail(field, f"no body or point {name!r} (known: {known})"
                                    + did_you_mean(name, [*self.bodies, *self.ground]))
-
-    def reader_vector(self, value, field: str) -> tuple[sp.Expr, sp.Expr]:
-        if not isinstance(value, list) or len(value) != 2:
-            raise self.reader.fail(field, "expected [x, y]")
-        return tuple(self.reader.dimensioned(v, field, "m", "a coordinate") for v in value)
 
     def world(self, body: str | None, offset) -> sp.Matrix:
         """The point's position in the reference configuration."""
