@@ -64,6 +64,20 @@ def test_a_ball_rolls_down_a_ramp_and_round_a_loop_as_the_books_and_the_simulati
     assert {"v", "v_top", "N_top", "state top"} <= set(report.compared)
 
 
+def test_the_top_of_the_loop_is_reached_by_its_height_as_by_its_x(tmp_path):
+    """The ball's height is extremal at the top, so the state is followed along x; the rolled angle,
+    which the rolling gap holds linearly, is not tried before it (sympy's solve of that gap for the
+    ball's position, inside the arc's atan2, ran past the limit)."""
+    text = (TEXTBOOK / "ball_ramp_into_loop.yaml").read_text()
+    path = tmp_path / "ball_ramp_into_loop.yaml"
+    path.write_text(text.replace("top: {from: above, when: {ball.x: 0}}", "top: {from: above, when: {ball.y: 2*R - r}}"))
+    by_height, by_x = Solution(load(str(path))), Solution(load(str(TEXTBOOK / "ball_ramp_into_loop.yaml")))
+    assert by_height.scene.states["top"].when[1] == "y" and by_x.scene.states["top"].when[1] == "x"
+    assert by_height.states["top"].values == by_x.states["top"].values
+    assert by_height.states["top"].path.s == by_x.coordinates.of("ball", "x").q
+    assert by_height.expression("N_top") == by_x.expression("N_top")
+
+
 def test_a_transfer_where_the_body_does_not_touch_the_new_surface_is_refused(tmp_path):
     text = LOOP.replace("entering: {when: {block.x: -3*R/5}}", "entering: {when: {block.x: -3*R/5 - d/4}}")
     error = refused(tmp_path, text, "scene.states.looping")
