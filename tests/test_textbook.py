@@ -531,6 +531,18 @@ EXPECTED.update({
         "omega_top": lambda s: -sp.sqrt(s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)) / s.r,
         "N_top": lambda s: s.m * ((s.v0**2 - sp.Rational(20, 7) * s.g * (s.R - s.r)) / (s.R - s.r) - s.g),
     },
+    # Serway & Jewett ch. 10 and ch. 6, Halliday ch. 11: a solid ball released d along the ramp (its
+    # center (R + 3 d - r)/5 above its center at the loop's bottom) rolls down and round the loop:
+    # (7/10) v^2 = g times its center's drop, (R + 3 d - r)/5 at the bottom and 2 (R - r) less at
+    # the top, where N + m g = m v_top^2/(R - r); it stays on for a drop to the bottom of at least
+    # 2.7 (R - r) (the book's 2.7 R for r << R): (R + 3 d - r)/5 = 27 (R - r)/10.
+    "ball_ramp_into_loop": {
+        "v": lambda s: sp.sqrt(sp.Rational(10, 7) * s.g * (s.R + 3 * s.d - s.r) / 5),
+        "v_top": lambda s: sp.sqrt(sp.Rational(10, 7) * s.g * ((s.R + 3 * s.d - s.r) / 5 - 2 * (s.R - s.r))),
+        "N_top": lambda s: s.m * (sp.Rational(10, 7) * s.g * ((s.R + 3 * s.d - s.r) / 5 - 2 * (s.R - s.r))
+                                  / (s.R - s.r) - s.g),
+        "d_min": lambda s: (5 * sp.Rational(27, 10) * (s.R - s.r) - s.R + s.r) / 3,
+    },
     # Serway & Jewett ch. 10: (1/2)(M L^2/3) w0^2 = M g (L/2)(1 - cos(theta_max)); at the top it is
     # at rest, so the hinge's vertical pull is M g (1 - 3 sin^2(theta_max)/4) (alpha = -3 g sin/(2L));
     # the time there is a quarter period of the physical pendulum, sqrt(2L/(3g)) K(sin^2(theta_max/2)).

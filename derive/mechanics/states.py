@@ -246,7 +246,11 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
     # move from the start first (one that does not is no measure of the motion near it).
     tried, problem = [], None
     # An angle before a translation: a swinging rod's angle gives its height as a cosine, its x a root.
-    others = sorted((c for c in coords.all if c != target), key=lambda c: (heading[c.q] == 0, c.kind != "theta"))
+    # Not an angle the gaps hold only linearly (a ball's rolled arc, r theta): keeping it would solve
+    # the rolling gap for a position inside the arc's atan2, which sympy's solve ran past the limit on.
+    gaps = [gap for part in scene.constraints for gap in part.gaps(coords)]
+    others = sorted((c for c in coords.all if c != target),
+                    key=lambda c: (heading[c.q] == 0, c.kind != "theta" or _rolled(c, gaps)))
     carried = "The constraints and the kept momentum leave one coordinate" if integrals else \
         "The constraints leave one coordinate"
     for keep in [target, *others] if target else others:
@@ -276,6 +280,19 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
         problem = problem or StateLimit(NO_COORDINATE)
     raise problem
 
+
+def _rolled(coordinate: Coordinate, gaps: list[sp.Expr]) -> bool:
+    """Whether the gaps hold a coordinate, and each only linearly: a rolling body's angle, in its
+    gap as r theta beside the arc along the surface (not a swinging rod's, inside a cosine).
+
+    >>> from derive.mechanics.kinematics import Coordinate
+    >>> r, x, th = sp.symbols("r x theta")
+    >>> angle = Coordinate("ball", "theta", th, sp.Symbol("w"), sp.Symbol("a"))
+    >>> _rolled(angle, [r * th + sp.atan2(x, r)]), _rolled(angle, [x - r * sp.cos(th)])
+    (True, False)
+    """
+    holding = [gap for gap in gaps if gap.has(coordinate.q)]
+    return bool(holding) and not any(sp.diff(gap, coordinate.q).has(coordinate.q) for gap in holding)
 
 def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate, positions: dict,
           derivation: Derivation, decide, condition) -> Path:
