@@ -294,6 +294,7 @@ def _rolled(coordinate: Coordinate, gaps: list[sp.Expr]) -> bool:
     holding = [gap for gap in gaps if gap.has(coordinate.q)]
     return bool(holding) and not any(sp.diff(gap, coordinate.q).has(coordinate.q) for gap in holding)
 
+
 def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate, positions: dict,
           derivation: Derivation, decide, condition) -> Path:
     """The motion from the start along one coordinate, every coordinate's position (`positions`)
