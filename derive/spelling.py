@@ -13,8 +13,10 @@ from typing import Iterable
 
 
 #: Another word for a name derive knows by one: a cylinder's or a cone's length is its height, a
-#: rod's height its length (spelling alone does not bring them together).
-SYNONYMS = {"length": ("height",), "height": ("length",)}
+#: rod's height its length, a revolution or a turn the unit rev (spelling alone does not bring them
+#: together: "revolutions" is closest to sympy's "volts").
+SYNONYMS = {"length": ("height",), "height": ("length",),
+            **dict.fromkeys(("revolution", "revolutions", "turn", "turns"), ("rev",))}
 
 
 def did_you_mean(word: object, choices: Iterable[object]) -> str:

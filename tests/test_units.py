@@ -188,6 +188,9 @@ def test_unknown_unit_suggests():
         parse_unit("eVv")
     with pytest.raises(UnitError, match="did you mean 'day'"):
         parse_unit("dya")
+    for word in ("revolutions", "turn"):  # a trial's "revolutions" was offered 'volts'
+        with pytest.raises(UnitError, match="did you mean 'rev'"):
+            parse_unit(word)
 
 
 def test_to_unit_dimension_mismatch():
