@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive import inertia, limits, numeric, units
+from derive.errors import EngineLimit
 from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
 from derive.mechanics import impacts, integrated_motion, lagrange, many_bodies, orbits, paths, states
 from derive.mechanics.oscillation import NotAPendulum, exact_period
@@ -114,7 +115,11 @@ class CrossChecks:
             if self.expressions[name] == 0:  # zero has every dimension
                 found[name] = ask.unit
                 continue
-            dimension = units.expression_dimension(self.expressions[name], self.problem.symbol_units)
+            try:
+                dimension = units.expression_dimension(self.expressions[name], self.problem.symbol_units)
+            except units.UnitError as error:  # of derive's own expression, not of the file's
+                raise EngineLimit(f"{self.problem.path}: ask.{name}", f"find the dimension of its derived "
+                                  f"answer ({error})") from None
             wanted = units.dimension(units.parse_unit(ask.unit))
             if not units.same_dimension(dimension, wanted):
                 raise self.problem.error(

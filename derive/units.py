@@ -262,6 +262,12 @@ def expression_dimension(expr: sympy.Expr, symbol_units: Mapping[sympy.Symbol, s
                 for relation in condition.atoms(sympy.core.relational.Relational):
                     walk(relation.lhs - relation.rhs)
             return first
+        if isinstance(e, sympy.atan2):  # the angle of a point: its coordinates alike, any dimension
+            found = [walk(a) for a in e.args if a != 0]  # zero has every dimension
+            if len(found) == 2 and found[0] != found[1]:
+                raise UnitError(f"atan2() of {_describe(found[0])} and {_describe(found[1])}; its arguments "
+                                "must have one dimension")
+            return {}
         if isinstance(e, sympy.Function) and not isinstance(e, AppliedUndef):  # sin, exp, log, ...
             for d in map(walk, e.args):
                 if d:

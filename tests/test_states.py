@@ -534,3 +534,27 @@ def test_a_state_named_by_a_list_is_refused_naming_the_field(change, field):
     text = (Path(__file__).parent / "textbook/states/rod_swings_down.yaml").read_text().replace(*change)
     with pytest.raises(problem.ProblemError, match=field.replace(".", r"\.")):
         problem.parse(text, Path("mutated.yaml"))
+
+
+def test_the_time_up_a_bowl_has_the_units_of_a_time_and_the_quadratures_value(tmp_path):
+    """A ball rolling up a bowl: the time to its highest point is an integral whose integrand holds
+    atan2 of two lengths, which the dimension check once refused ("atan2() of length", exit 2, no
+    file named). Energy gives (7/10) (Rb - r)^2 phi'^2 = (7/10) v0^2 - g (Rb - r)(1 - cos phi), so
+    t = integral of d phi / phi' from 0 to the highest angle, here by mpmath's quadrature."""
+    import mpmath
+
+    text = (Path(__file__).parent / "textbook" / "states" / "ball_rolls_up_bowl.yaml").read_text()
+    text = text.replace("  N: {meaning: normal force", "  t: {meaning: time to the highest point, of: time, in: highest, "
+                        "unit: s}\n  N: {meaning: normal force")
+    (tmp_path / "bowl.yaml").write_text(text)
+    done = run_derive("solve", str(tmp_path / "bowl.yaml"), "--set", "m=0.3", "--set", "r=0.02", "--set", "Rb=0.4",
+                      "--set", "v0=1.2", "--format", "json")
+    assert done.returncode == 0, done.stderr
+    result = json.loads(done.stdout)
+    assert result["checks"]["dimensions"]["passed"]
+    mpmath.mp.dps = 30
+    g, reach, v0 = mpmath.mpf("9.81"), mpmath.mpf("0.38"), mpmath.mpf("1.2")
+    top = mpmath.acos(1 - 7 * v0**2 / (10 * g * reach))
+    rate = lambda phi: mpmath.sqrt(v0**2 - 10 * g * reach * (1 - mpmath.cos(phi)) / 7) / reach  # noqa: E731
+    expected = mpmath.quad(lambda phi: 1 / rate(phi), [0, top])
+    assert float(result["answers"]["t"]["value"]) == pytest.approx(float(mpmath.re(expected)), rel=1e-9)

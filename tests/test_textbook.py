@@ -543,6 +543,14 @@ EXPECTED.update({
                                   / (s.R - s.r) - s.g),
         "d_min": lambda s: (5 * sp.Rational(27, 10) * (s.R - s.r) - s.R + s.r) / 3,
     },
+    # Serway & Jewett ch. 10 and ch. 6: a solid ball rolling at v0 across a bowl's bottom rises until
+    # (7/10) v0^2 = g h, its centre from -(Rb - r) below the bowl's centre; at the bottom
+    # N - m g = m v0^2/(Rb - r). (A trial's file: its answers were refused by the dimension check,
+    # which took atan2 of two lengths for a function of a length.)
+    "ball_rolls_up_bowl": {
+        "y": lambda s: -(s.Rb - s.r) + sp.Rational(7, 10) * s.v0**2 / s.g,
+        "N": lambda s: s.m * (s.g + s.v0**2 / (s.Rb - s.r)),
+    },
     # Serway & Jewett ch. 10: (1/2)(M L^2/3) w0^2 = M g (L/2)(1 - cos(theta_max)); at the top it is
     # at rest, so the hinge's vertical pull is M g (1 - 3 sin^2(theta_max)/4) (alpha = -3 g sin/(2L));
     # the time there is a quarter period of the physical pendulum, sqrt(2L/(3g)) K(sin^2(theta_max/2)).

@@ -398,3 +398,32 @@ def test_derived_units_take_a_prefix_of_a_thousands_power(text, factor, dim):
     unit = parse_unit(text)
     assert si_factor(unit) == factor and dimension(unit) == dim
     assert unicode_unit(text) == text.replace("*", "·") and siunitx_unit(text) == rf"\unit{{{text.replace('*', '.')}}}"
+
+
+def test_atan2_of_two_lengths_is_an_angle():
+    """atan2(y, x) is dimensionless when its coordinates share a dimension (a ball in a bowl: its
+    answer held atan2 of two lengths, refused as "atan2() of length")."""
+    x, y, t = sympy.symbols("x y t", real=True)  # positive x: sympy writes atan(y/x)
+    found = {x: "m", y: "m", t: "s"}
+    assert expression_dimension(sympy.atan2(y, x), found) == {}
+    assert expression_dimension(sympy.atan2(0, x), found) == {}
+    with pytest.raises(UnitError, match="must have one dimension"):
+        expression_dimension(sympy.atan2(y, t), found)
+
+
+def test_a_derived_answer_whose_dimension_cannot_be_found_is_an_engine_limit_naming_the_ask(monkeypatch):
+    """Not the file's fault: an engine limit (exit 1) naming the file and the ask, not a bare
+    "derive: error: atan2() of length" with exit 2, which read as bad input and named nothing."""
+    from derive import crosschecks
+    from derive.answers import Solution
+    from derive.errors import EngineLimit
+    from derive.problem import load
+
+    def refuse(expression, symbol_units):
+        raise UnitError("atan2() of length; its argument must be dimensionless")
+
+    solution = Solution(load("string_wrapped_disk"))
+    solution.expressions  # noqa: B018 - derived before the dimension check is broken
+    monkeypatch.setattr(crosschecks.units, "expression_dimension", refuse)
+    with pytest.raises(EngineLimit, match=r"string_wrapped_disk.yaml: ask\.\w+: derive cannot yet find the dimension"):
+        solution.checks()
