@@ -70,8 +70,12 @@ class StateAnswers(StateEvents, StateConditions):
     def _chain(self) -> Chain:
         """Each named state in turn, from the state it starts from (see Chain)."""
         if self.scene.states and len(self.regimes) > 1 and self._sliding is None:
-            raise self.problem.limit("read a state of a scene whose friction regime it decides (mu_s given): "
-                                     "give contact: rolling or sliding")
+            contact = friction.frictional(self.scene)
+            raise self.problem.limit(
+                f"read a state of a scene whose friction regime it decides: the {contact.body} on {contact.surface} "
+                "holds or slips by its friction coefficients; a state may follow a slide with kinetic friction "
+                f"only on the way to where it grips (`when: {{grips: {contact.body}}}`, the chain starting with "
+                f"rates that slip), and where the {contact.body} always slides without friction, drop `friction:`")
         result, joints, solved, made, followed = {}, {}, {}, {}, {}
 
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them

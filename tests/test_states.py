@@ -558,3 +558,44 @@ def test_the_time_up_a_bowl_has_the_units_of_a_time_and_the_quadratures_value(tm
     rate = lambda phi: mpmath.sqrt(v0**2 - 10 * g * reach * (1 - mpmath.cos(phi)) / 7) / reach  # noqa: E731
     expected = mpmath.quad(lambda phi: 1 / rate(phi), [0, top])
     assert float(result["answers"]["t"]["value"]) == pytest.approx(float(mpmath.re(expected)), rel=1e-9)
+
+
+TABLE_AND_PULLEY = """
+id: table_pulley_kinetic
+title: A block on a rough table pulled over a pulley
+parameters:
+  m1: {meaning: mass of the block on the table, unit: kg, value: 4}
+  m2: {meaning: mass of the hanging block, unit: kg, value: 3}
+  M: {meaning: mass of the pulley, unit: kg, value: 2}
+  R: {meaning: radius of the pulley, unit: m, value: 0.1}
+  mu: {meaning: coefficient of kinetic friction, unit: "1", value: 0.25}
+  D: {meaning: distance of each block from the pulley, unit: m, value: 1.5}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    table: {plane: {angle: 0, through: [0, R]}}
+  bodies:
+    pulley: {shape: disk, mass: M, radius: R, at: [0, 0], joint: fixed_axle}
+    block: {shape: point, mass: m1, at: [-D, R], on: table, contact: sliding, friction: {kinetic: mu}}
+    hanger: {shape: point, mass: m2, at: [R, -D]}
+  cords:
+    rope: [block, {over: pulley}, hanger]
+  loads:
+    - gravity: g
+  states:
+    dropped: {when: {hanger.y: -D - R}}
+ask:
+  v: {meaning: speed after the drop, of: hanger.speed, in: dropped, unit: m/s}
+question: A block on a rough table is tied over a pulley to a hanging block. Find the speed.
+"""
+
+
+def test_a_state_after_a_slide_with_kinetic_friction_from_rest_is_an_engine_limit_that_says_what_works(tmp_path):
+    """A trial's table and pulley (Serway ch. 10) with `contact: sliding, friction: {kinetic: mu}`
+    was told to "give contact: rolling or sliding", which it had: the limit now names the contact
+    and the chains derive does follow (to where it grips)."""
+    (tmp_path / "table.yaml").write_text(TABLE_AND_PULLEY)
+    done = run_derive("solve", str(tmp_path / "table.yaml"))
+    assert done.returncode == 1
+    assert "derive cannot yet read a state" in done.stderr and "block on table" in done.stderr
+    assert "`when: {grips: block}`" in done.stderr and "give contact: rolling or sliding" not in done.stderr
