@@ -599,3 +599,43 @@ def test_a_state_after_a_slide_with_kinetic_friction_from_rest_is_an_engine_limi
     assert done.returncode == 1
     assert "derive cannot yet read a state" in done.stderr and "block on table" in done.stderr
     assert "`when: {grips: block}`" in done.stderr and "give contact: rolling or sliding" not in done.stderr
+
+
+def test_a_stick_balanced_on_its_end_never_topples_and_is_told_to_start_with_a_push(tmp_path):
+    """A trial's stick standing on its pivot at rest: every acceleration is zero, yet the state
+    was followed toward the floor, and the time to it (a quadrature that diverges: it takes for
+    ever) stopped derive with an internal error. It is refused like a particle at rest on a dome's
+    top, with what to write instead."""
+    text = """
+id: stick_topples
+title: A stick standing on its end
+parameters:
+  M: {meaning: mass of the stick, unit: kg, value: 0.2}
+  L: {meaning: length of the stick, unit: m, value: 1}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  bodies:
+    stick: {shape: rod, mass: M, length: L, at: [0, L/2], angle: pi/2}
+  joints:
+    base: {pin: stick.start}
+  loads:
+    - gravity: g
+  states:
+    flat: {when: {stick.angle: 0}}
+ask:
+  w: {meaning: angular speed as it hits the floor, of: stick.angular_velocity, in: flat, unit: rad/s}
+question: A stick standing on its end topples. How fast does it turn as it hits the floor?
+"""
+    (tmp_path / "stick.yaml").write_text(text)
+    done = run_derive("solve", str(tmp_path / "stick.yaml"))
+    assert done.returncode == 2, done.stderr
+    assert "stick.yaml: scene.states.flat: the scene stays at rest at the start" in done.stderr
+    assert "small push" in done.stderr and "internal error" not in done.stderr
+    nudged = text.replace("    flat: {when: {stick.angle: 0}}", "    nudged: {rates: {stick.angular_velocity: -w0}}\n"
+                          "    flat: {from: nudged, when: {stick.angle: 0}}")
+    nudged = nudged.replace("  g: {meaning", "  w0: {meaning: the push, unit: rad/s, value: 0.01}\n  g: {meaning")
+    (tmp_path / "nudged.yaml").write_text(nudged)
+    done = run_derive("solve", str(tmp_path / "nudged.yaml"), "--format", "json")
+    assert done.returncode == 0, done.stderr
+    w = float(json.loads(done.stdout)["answers"]["w"]["value"])  # (1/2)(M L^2/3)(w^2 - w0^2) = M g L/2
+    assert w == pytest.approx(-math.sqrt(3 * 9.81 / 1 + 0.01**2), rel=1e-9)

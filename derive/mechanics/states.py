@@ -304,10 +304,12 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     # it first falls straight down) moves the way the other coordinates take it: toward the state
     # (Newton–Euler's motion, integrated at every solve, checks that it gets there).
     direction, leaves = _direction(start[speed], start, coordinate, derivation, decide)
-    if not direction and isinstance(condition, Gets):
+    if not direction and isinstance(condition, Gets) and not _balanced(coords, start, derivation):
         direction = first_root.toward(positions, condition, s, start[s], decide)
     if not direction:
-        raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
+        raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state; "
+                         "a body that topples or slides off from a balance (a stick on its end, a particle on a "
+                         "dome's top) is given a small push: a state with a small rate to start from")
     velocities = {c.u: tidy(sp.diff(positions[c.q], s)) * speed for c in coords.all}
     kinetic, potential = energies(scene, coords)
     per_speed_squared = tidy(kinetic.xreplace(velocities).xreplace(positions) / speed**2)
@@ -623,6 +625,15 @@ def _heading(start: dict, coords: Coordinates, derivation: Derivation, decide) -
         number = 0.0 if value == 0 else decide(value)
         signs[q] = 1 if number > 1e-12 else -1 if number < -1e-12 else 0
     return signs
+
+
+def _balanced(coords: Coordinates, start: dict, derivation: Derivation) -> bool:
+    """Whether the start is at rest with no acceleration at all: a balance the scene never leaves
+    (a stick on its end; not a bead at a bowl's rim, which falls though its x is not pushed)."""
+    if any(start[c.u] != 0 for c in coords.all):
+        return False
+    solved = derivation.at(start).raw
+    return all(tidy(solved[c.a]) == 0 for c in coords.all)
 
 
 def _direction(u0: sp.Expr, start: dict, coordinate: Coordinate, derivation: Derivation, decide) -> tuple:
