@@ -111,6 +111,34 @@ def switches(scene, coords, values, start) -> list:
     return events
 
 
+def ends(scene, coords, values, start) -> list:
+    """Terminal events of solve_ivp where an extent of a part shrinks to nearly nothing, a hundredth
+    of what it was at the start (a cord's run whose ends meet, a block reaching its pulley): past
+    it the scene is another, and where it ends its equations take roots of negative numbers (the
+    steps would reach them before an event at zero could be found). Each event's `meaning` says
+    which."""
+    state = [c.q for c in coords.all]
+    events = []
+    for part in (*scene.constraints, *scene.loads):
+        for extent, meaning in part.extents(coords):
+            function = sp.lambdify(state, extent.xreplace(values), "numpy")
+            initial = float(function(*start[:len(state)]))
+            if not initial > 0:
+                continue
+
+            def event(t, y, function=function, least=initial / 100):
+                return function(*y[:len(state)]) - least
+            event.terminal, event.direction, event.meaning = True, -1, meaning
+            events.append(event)
+    return events
+
+
+def _stopped(run, events) -> str:
+    """Why a run that an event stopped stopped: the event's meaning, or a slip's switch."""
+    fired = next(event for event, times in zip(events, run.t_events) if len(times))
+    return getattr(fired, "meaning", "a kinetic friction's slip changes sign there, where its force jumps")
+
+
 def hold(report: SimulationReport, scene, lagrange, coords, values, start, duration: float, where: str = ""):
     """Integrate `scene` (its Lagrange derivation `lagrange`) for `duration` from `start` (every
     coordinate and velocity, then the work done so far): every constraint gap keeps its value at
@@ -124,9 +152,10 @@ def hold(report: SimulationReport, scene, lagrange, coords, values, start, durat
     gap_function = sp.lambdify(state[:n], gaps or [0], "numpy")
     kinetic, potential = energies(scene, coords)
     energy = sp.lambdify(state, (kinetic + potential).xreplace(values), "numpy")
+    events = switches(scene, coords, values, start) + ends(scene, coords, values, start)
     try:
         run = solve_ivp(rhs, (0, duration), start, method=METHOD, rtol=RTOL, atol=RTOL * 1e-2, dense_output=True,
-                        events=switches(scene, coords, values, start) or None)
+                        events=events or None)
     except Stalled as stalled:
         report.unchecked.append((f"{where}the motion from a random start", str(stalled)))
         return None
@@ -134,8 +163,7 @@ def hold(report: SimulationReport, scene, lagrange, coords, values, start, durat
         report.fail(f"{where}integration failed: {run.message}")
         return None
     if run.status == 1:
-        report.unchecked.append((f"{where}the motion from a random start after {run.t[-1]:.3g} s",
-                                 "a kinetic friction's slip changes sign there, where its force jumps"))
+        report.unchecked.append((f"{where}the motion from a random start after {run.t[-1]:.3g} s", _stopped(run, events)))
     at_start = np.asarray(gap_function(*run.y[:n, 0]), dtype=float)
     drift = max(float(np.max(np.abs(np.asarray(gap_function(*run.y[:n, i]), dtype=float) - at_start)))
                 for i in range(run.y.shape[1]))
@@ -172,18 +200,19 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
     # extrapolation of the mean over the first millisecond and the first half of it).
     try:
         released = solve_ivp(rhs, (0, duration), np.zeros(2 * n + 1), method=METHOD, rtol=RTOL, atol=RTOL * 1e-2,
-                             dense_output=True)
+                             dense_output=True, events=ends(scene, coords, values, np.zeros(2 * n + 1)) or None)
     except Stalled as stalled:
         report.unchecked.append(("the motion released from rest", str(stalled)))
         return report
+    lasted = float(released.t[-1])  # to the end, or to where a cord's run shrank to nothing
 
     def mean_acceleration(body: str, kind: str) -> float:
         index = n + coords.all.index(coords.of(body, kind))
-        mean = released.y[index, -1] / duration
-        at_release, at_end = (rhs(t, released.sol(t))[index] for t in (0.0, duration))
+        mean = released.y[index, -1] / lasted
+        at_release, at_end = (rhs(t, released.sol(t))[index] for t in (0.0, lasted))
         if abs(at_end - at_release) <= TOLERANCE * (abs(at_release) + 1):
             return mean
-        short = 1e-3 * duration
+        short = 1e-3 * lasted
         return 2 * released.sol(short / 2)[index] / (short / 2) - released.sol(short)[index] / short
 
     for name, ask in solution.problem.asks.items():
