@@ -18,6 +18,7 @@ import sympy as sp
 from flint import ctx
 
 from derive import balls, composite, inertia, limits
+from derive.errors import EngineLimit
 from derive.mechanics import lagrange, many_bodies, newton_euler, orbits, paths, quantum, rolling
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
@@ -121,8 +122,6 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         except NotAPendulum:
             period, steps, _ = self._period_by_energy(amplitude)
             return period, steps
-        except OscillationError as error:
-            raise self.problem.error("ask", str(error)) from None
 
     @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
     def _period_by_energy(self, amplitude: sp.Expr):
@@ -196,7 +195,12 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             except OscillationError as error:
                 raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
         if q.kind == "oscillation":
-            return self._exact_period(ask.amplitude, route)[0]
+            try:
+                return self._exact_period(ask.amplitude, route)[0]
+            except OscillationLimit as error:
+                raise EngineLimit(f"{self.problem.path}: ask.{ask.name}", str(error)) from None
+            except OscillationError as error:
+                raise self.problem.error(f"ask.{ask.name}", str(error)) from None
         if q.kind == "impulse":
             return self._impulse(q, ask.state, route)
         if q.kind in RATE_KINDS:

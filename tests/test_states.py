@@ -639,3 +639,31 @@ question: A stick standing on its end topples. How fast does it turn as it hits 
     assert done.returncode == 0, done.stderr
     w = float(json.loads(done.stdout)["answers"]["w"]["value"])  # (1/2)(M L^2/3)(w^2 - w0^2) = M g L/2
     assert w == pytest.approx(-math.sqrt(3 * 9.81 / 1 + 0.01**2), rel=1e-9)
+
+
+def test_a_period_asked_of_a_pendulum_placed_away_from_its_equilibrium_names_the_ask_and_the_body(tmp_path):
+    """A trial's rod placed at its release angle with `oscillation.period` asked: the refusal read
+    "ask: ... xddot_rod is not zero", naming neither the ask nor anything of the file."""
+    (tmp_path / "away.yaml").write_text("""
+id: rod_placed_away
+title: A rod pendulum placed at its release angle
+parameters:
+  M: {meaning: mass of the rod, unit: kg, value: 1}
+  L: {meaning: length of the rod, unit: m, value: 1}
+  th0: {meaning: release angle from the vertical, unit: deg, value: 50}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  bodies:
+    rod: {shape: rod, mass: M, length: L, at: [L/2*sin(th0), -L/2*cos(th0)], angle: th0 - pi/2}
+  joints:
+    hinge: {pin: rod.start}
+  loads:
+    - gravity: g
+ask:
+  T: {meaning: period at this amplitude, of: oscillation.period, amplitude: th0, unit: s}
+question: A rod pivoted at one end swings from its release angle. Find its period.
+""")
+    done = run_derive("solve", str(tmp_path / "away.yaml"))
+    assert done.returncode == 1, done.stderr
+    assert "away.yaml: ask.T: derive cannot yet find the equilibrium" in done.stderr
+    assert "the rod's angular acceleration is not zero" in done.stderr and "ddot" not in done.stderr

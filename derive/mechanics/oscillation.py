@@ -143,10 +143,12 @@ def at_equilibrium(derivation: Derivation, coords: Coordinates) -> dict:
     """The accelerations and forces in the reference configuration at rest, which must be an
     equilibrium (every acceleration zero); an engine limit otherwise."""
     equilibrium = derivation.at(coords.at_rest_in_reference()).raw
-    moving = [c.a for c in coords.all if not sp.simplify(equilibrium[c.a]).equals(0)]
+    moving = sorted((c for c in coords.all if not sp.simplify(equilibrium[c.a]).equals(0)), key=lambda c: c.kind != "theta")
     if moving:
-        raise OscillationLimit(f"find the equilibrium of a scene placed away from it (released at rest, {moving[0]} "
-                               "is not zero): place the bodies at the equilibrium with at: and angle:")
+        what = "angular acceleration" if moving[0].kind == "theta" else f"acceleration along {moving[0].kind}"
+        raise OscillationLimit(f"find the equilibrium of a scene placed away from it (released at rest there, the "
+                               f"{moving[0].body}'s {what} is not zero): place the bodies at the equilibrium with at: "
+                               "and angle:, and give a swing's amplitude as the ask's amplitude:")
     return equilibrium
 
 
