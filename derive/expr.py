@@ -15,6 +15,7 @@ import ast
 import decimal
 import math
 import operator
+import re
 from typing import Callable, Mapping
 
 import sympy
@@ -118,6 +119,9 @@ _OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
         ast.Div: operator.truediv, ast.Pow: _power, ast.BitXor: _power}  # ^ is rewritten to ** anyway
 
 
+_WITH_UNIT = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\s+[A-Za-z]")
+
+
 def _syntax_tree(text: str, max_length: int) -> tuple[ast.Expression, str]:
     """Length-check, parse and depth-check ``text``; return (tree, source) (package-internal)."""
     if len(text) > max_length:
@@ -138,7 +142,11 @@ def _syntax_tree(text: str, max_length: int) -> tuple[ast.Expression, str]:
     try:
         tree = ast.parse(text, mode="eval")
     except SyntaxError as e:
-        raise ExprError(f"syntax error: {e.msg}") from None
+        hint = ""
+        if _WITH_UNIT.match(text):  # "-250 cm/s": a quantity where an expression goes
+            hint = (f" ({text!r} reads as a number and a unit: an expression takes no units; give the value as a "
+                    "parameter with its unit, and write the parameter here)")
+        raise ExprError(f"syntax error: {e.msg}{hint}") from None
     except (ValueError, RecursionError, MemoryError) as e:
         raise ExprError(f"syntax error: {str(e).splitlines()[0] if str(e) else 'too complex'}") from None
     stack = [(tree.body, 1)]  # iterative, so depth itself cannot blow the stack
