@@ -23,7 +23,7 @@ from derive import limits, numeric
 from derive.crosschecks import sample_points
 from derive.errors import InputError
 from derive.mechanics import friction
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 from derive.parts.contact import Contact
 from derive.parts.surfaces import Plane
 from derive.scene import DYNAMIC_KINDS

@@ -23,7 +23,8 @@ from derive.mechanics import lagrange, many_bodies, newton_euler, orbits, paths,
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
 from derive.mechanics import durations, friction
 from derive.mechanics import states as state_motion
-from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step, root, tidy
+from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step
+from derive.mechanics.tidying import root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.normal_modes import NormalModes, normal_modes

@@ -214,7 +214,7 @@ def _placements(places: Places, scene: Scene) -> tuple[sp.Expr, ...]:
     |h - R| long), with the sign it has at the middle of the ranges. The derivation takes them so
     (the answers read h - R, not |h - R|: sympy cannot cancel an absolute value, and an equilibrium
     was refused as none), and `Solution.conditions` keeps that sign in every variant."""
-    from derive.mechanics.derivation import radicals
+    from derive.mechanics.tidying import radicals
     from derive.mechanics.kinematics import Coordinates
 
     coords = Coordinates(scene)

@@ -14,7 +14,8 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.mechanics import angular_impulse, bearings, fixed_point, free_rotation, rolling_coin
-from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.derivation import Step
+from derive.mechanics.tidying import tidy
 from derive.parts.torque import Torque
 from derive.scene import Quantity
 

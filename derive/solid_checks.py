@@ -13,7 +13,7 @@ import sympy as sp
 from derive.agreement import METHODS, agree
 from derive.crosschecks import Check, CheckFailure, sample_points
 from derive.mechanics import angular_impulse, bearings, fixed_point, free_rotation, rolling_coin
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 
 
 class SolidChecks:

@@ -22,7 +22,8 @@ import sympy as sp
 from derive import limits
 from derive.mechanics import durations, friction, grips, impacts, lagrange, moves, newton_euler
 from derive.mechanics import states as state_motion
-from derive.mechanics.derivation import Solved, Step, root, tidy
+from derive.mechanics.derivation import Solved, Step
+from derive.mechanics.tidying import root, tidy
 from derive.parts.clutch import Clutch
 from derive.parts.contact import Contact
 from derive.parts.pin import Pin

@@ -19,7 +19,7 @@ import sympy as sp
 
 from derive.mechanics import friction, impacts
 from derive.mechanics import states as state_motion
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 from derive.parts.clutch import Clutch
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch

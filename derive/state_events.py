@@ -21,7 +21,8 @@ import sympy as sp
 
 from derive.mechanics import impacts, impulses, moves, transfers
 from derive.mechanics import states as state_motion
-from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.derivation import Step
+from derive.mechanics.tidying import tidy
 from derive.parts.contact import Contact
 from derive.parts.pin import Pin
 from derive.prose import Sentence

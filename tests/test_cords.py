@@ -105,7 +105,7 @@ def test_a_pulley_whose_top_is_in_line_with_the_incline(tmp_path):
     """The textbook's incline and pulley (Serway & Jewett, 9th ed., ch. 10: the cord runs along
     the incline to the pulley's top): a = g (m2 - m1 sin(theta))/(m1 + m2 + M/2). The cord's
     tangent geometry has roots of trigonometric polynomials (|D|^2 = 101 R^2 once sin^2 + cos^2
-    folds); before derivation.radicals sympy's linear solve did not finish in 15 minutes."""
+    folds); before tidying.radicals sympy's linear solve did not finish in 15 minutes."""
     path, solution, s = _incline_and_pulley(tmp_path, "-1")
     expected = s["g"] * (s["m2"] - s["m1"] * sp.sin(s["theta"])) / (s["m1"] + s["m2"] + s["M"] / 2)
     assert sp.simplify(solution.expression("ay") + expected) == 0

@@ -36,7 +36,7 @@ def test_the_printed_form_is_the_answer(path):
     for name in problem.asks:
         try:
             answer = solution.expression(name)
-        except PolynomialError:  # derivation.radicals fails on this one, on main too: not a printing matter
+        except PolynomialError:  # tidying.radicals fails on this one, on main too: not a printing matter
             assert problem.id == "top_precession"
             continue
         if answer.atoms(sp.Function, sp.Derivative) - answer.atoms(sp.Piecewise, *_VALUED):

@@ -31,7 +31,7 @@ import numpy as np
 import sympy as sp
 
 from derive import rigid_motion
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 from derive.mechanics.free_rotation import angle_between
 
 

@@ -39,7 +39,7 @@ import sympy as sp
 from sympy.physics import mechanics as me
 
 from derive import inertia
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 
 ROUTES = ("newton_euler", "lagrange")
 

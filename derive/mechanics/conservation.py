@@ -24,7 +24,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import KINETIC, POTENTIAL, Step, root, tidy
+from derive.mechanics.derivation import KINETIC, POTENTIAL, Step
+from derive.mechanics.tidying import root, tidy
 from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
 from derive.scene import Scene

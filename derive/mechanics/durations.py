@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step, root, tidy
+from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step
+from derive.mechanics.tidying import root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.states import Path, Reached, Stops, reach
 from derive.prose import Sentence

@@ -28,7 +28,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, tidy
+from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.scene import Scene
 

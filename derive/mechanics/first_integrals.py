@@ -29,7 +29,8 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics import moves
-from derive.mechanics.derivation import Step, tidy
+from derive.mechanics.derivation import Step
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.derivation import radicals, tidy
+from derive.mechanics.tidying import radicals, tidy
 from derive.mechanics.kinematics import roots
 from derive.mechanics.state_errors import StateError, StateLimit
 
@@ -91,7 +91,7 @@ def first(equation: sp.Eq, function: sp.Expr, path: Path, decide, fails: str) ->
 def signs_settled(equation: sp.Eq, s: sp.Symbol, ahead: sp.Expr, decide) -> sp.Eq:
     """The equation with the signs the middle of the ranges decides written out, so that sympy
     (or `cosine_roots`) solves a polynomial: atan2(0, x) of a positive x as 0, |x| free of s and
-    the roots of squares by x's sign there (derivation.radicals), and |a(s)| as a or -a by its sign
+    the roots of squares by x's sign there (tidying.radicals), and |a(s)| as a or -a by its sign
     just ahead of the start (a ball's cos on a dome). A ball rolling inside a loop gave its normal
     force with atan2(0, R - r), |R - r| and sqrt(1 - sin^2) in it, which sympy's solve took more
     than the time limit over. Each an identity where those signs hold: a root past a change of

@@ -24,7 +24,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, tidy
+from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates
 from derive.scene import TIME, Scene
 

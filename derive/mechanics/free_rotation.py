@@ -42,7 +42,8 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive.mechanics.derivation import KINETIC, Step, tidy
+from derive.mechanics.derivation import KINETIC, Step
+from derive.mechanics.tidying import tidy
 from derive.scene import FREE_ROTATION_QUANTITIES
 
 ROUTES = ("newton_euler", "lagrange")

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 from derive.parts.contact import Contact
 from derive.scene import Scene
 

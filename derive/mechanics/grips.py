@@ -35,7 +35,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, tidy
+from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.states import Reached, StateError, StateLimit
 from derive.parts.slipping_clutch import SlippingClutch

@@ -48,7 +48,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import Step, solve_linear, tidy
+from derive.mechanics.derivation import Step, solve_linear
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.mechanics.lagrange import energies
 from derive.parts import AppliedForce, AppliedTorque, Part, Sign, titled

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.parts import AppliedForce, Part
 from derive.scene import Scene

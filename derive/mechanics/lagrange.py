@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import (FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, POTENTIAL, Derivation, Step, at_state, part_sentences,
-                                        rest_positions, simplest, worth_showing)
+from derive.mechanics.derivation import FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, POTENTIAL, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing
+from derive.mechanics.tidying import simplest
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 

@@ -54,7 +54,8 @@ import random
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.derivation import Step, solve_linear, tidy
+from derive.mechanics.derivation import Step, solve_linear
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, generalized_forces
 from derive.parts import AppliedForce, AppliedTorque, Part, titled

@@ -19,8 +19,8 @@ import dataclasses
 import sympy as sp
 
 from derive.parts import AppliedForce, AppliedTorque
-from derive.mechanics.derivation import (FIXED_LEFT_OUT, Derivation, Step, at_state, part_sentences, rest_positions,
-                                        simplest, worth_showing)
+from derive.mechanics.derivation import FIXED_LEFT_OUT, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing
+from derive.mechanics.tidying import simplest
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 

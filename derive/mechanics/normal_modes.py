@@ -33,7 +33,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step, root, tidy
+from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.tidying import root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates
 from derive.mechanics.lagrange import energies
 from derive.mechanics.oscillation import (OscillationError, OscillationLimit, at_equilibrium, first_order,
@@ -178,7 +179,7 @@ def _roots(polynomial: sp.Poly) -> tuple[int, list[sp.Expr]]:
 
 
 def _frequency(square: sp.Expr) -> sp.Expr:
-    """sqrt(omega^2), one root of the radicand as `_plainest` wrote it (derive.mechanics.derivation.root
+    """sqrt(omega^2), one root of the radicand as `_plainest` wrote it (derive.mechanics.tidying.root
     would put it back in compact form), unless it is a perfect square."""
     value = root(square)
     return sp.Pow(square, sp.S.Half, evaluate=False) if value == sp.Pow(tidy(square), sp.S.Half, evaluate=False) else value

@@ -20,7 +20,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, Step, root, solve_linear, tidy
+from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, Step, solve_linear
+from derive.mechanics.tidying import root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.scene import Scene
 

@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import KINETIC, Step, tidy
+from derive.mechanics.derivation import KINETIC, Step
+from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinates
 from derive.scene import Scene
 

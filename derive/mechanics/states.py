@@ -39,7 +39,8 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics import first_integrals, first_root, free_flight
-from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step, root, tidy
+from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step
+from derive.mechanics.tidying import root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
 from derive.mechanics.state_errors import Curved, StateError, StateLimit

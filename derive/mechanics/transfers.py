@@ -40,7 +40,7 @@ import dataclasses
 
 import sympy as sp
 
-from derive.mechanics.derivation import tidy
+from derive.mechanics.tidying import tidy
 from derive.parts.contact import Contact
 from derive.prose import Sentence
 
