@@ -309,8 +309,8 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
         direction = first_root.toward(positions, condition, s, start[s], decide)
     if not direction:
         raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state; "
-                         "a body that topples or slides off from a balance (a stick on its end, a particle on a "
-                         "dome's top) is given a small push: a state with a small rate to start from")
+                         "a body at rest in balance (a stick on its end, a particle on a dome's top, a pendulum "
+                         "hanging still) moves from a push: give a state with a rate to start from")
     velocities = {c.u: tidy(sp.diff(positions[c.q], s)) * speed for c in coords.all}
     kinetic, potential = energies(scene, coords)
     per_speed_squared = tidy(kinetic.xreplace(velocities).xreplace(positions) / speed**2)
