@@ -143,9 +143,9 @@ def _syntax_tree(text: str, max_length: int) -> tuple[ast.Expression, str]:
         tree = ast.parse(text, mode="eval")
     except SyntaxError as e:
         hint = ""
-        if _WITH_UNIT.match(text):  # "-250 cm/s": a quantity where an expression goes
-            hint = (f" ({text!r} reads as a number and a unit: an expression takes no units; give the value as a "
-                    "parameter with its unit, and write the parameter here)")
+        if _WITH_UNIT.match(text):  # "-250 cm/s": a quantity where an expression goes, or "2 x" for 2*x
+            hint = (f" ({text!r}: a product is written with *, and an expression takes no units: give a value with "
+                    "a unit as a parameter, and write the parameter here)")
         raise ExprError(f"syntax error: {e.msg}{hint}") from None
     except (ValueError, RecursionError, MemoryError) as e:
         raise ExprError(f"syntax error: {str(e).splitlines()[0] if str(e) else 'too complex'}") from None
