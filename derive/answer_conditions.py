@@ -183,8 +183,13 @@ class AnswerConditions:
 
     @staticmethod
     def violated_at(condition: sp.Expr, strict: bool, values: dict) -> bool:
-        """Whether these values break one condition (False where a symbol has no value)."""
-        value = numeric.evaluate(condition, values, 15)
+        """Whether these values break one condition (False where a symbol has no value; True where
+        it is not a real number: a quantity that does not exist where an earlier condition breaks,
+        the speed of a block static friction holds)."""
+        try:
+            value = numeric.evaluate(condition, values, 15)
+        except ValueError:
+            return True
         return value is not None and (float(value) < 0 or strict and float(value) == 0)
 
 

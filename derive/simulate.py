@@ -61,7 +61,7 @@ def _values(solution: Solution) -> dict[sp.Symbol, sp.Expr]:
     for d in solution.derivations.values():
         for e in [*d.balances, *d.rates]:
             symbols |= e.free_symbols
-    for expr in solution.expressions.values():
+    for expr in (*solution.expressions.values(), *solution.regime_conditions()):  # mu_s: the regime simulated
         symbols |= expr.free_symbols
     symbols -= solution.coordinates.state | set(solution.derivations["lagrange"].unknowns)
     point = sample_points(solution.problem, sp.Add(*symbols), count=1)[0] if symbols else {}

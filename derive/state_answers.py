@@ -31,9 +31,10 @@ from derive.parts.slipping_clutch import SlippingClutch
 from derive.parts.weld import Weld
 from derive.parts.places import extent
 from derive.prose import Sentence, capital
-from derive.scene import Quantity
+from derive.scene import RATE_KINDS, Quantity
 from derive.state_conditions import StateConditions
 from derive.state_events import StateEvents, in_place
+from derive.start_regimes import Start, StartRegimes, with_start_step
 
 
 #: How a heading names each route (the routes in a state that an event changed the scene of).
@@ -54,9 +55,10 @@ class Chain:
     impacts: dict[str, impacts.Impact | moves.Moved]
     made: dict[str, object]
     followed: dict[str, impacts.Regime] = dataclasses.field(default_factory=dict)
+    starts: dict[str, Start | None] = dataclasses.field(default_factory=dict)
 
 
-class StateAnswers(StateEvents, StateConditions):
+class StateAnswers(StateEvents, StateConditions, StartRegimes):
     """What Solution answers in a named state (its events: derive.state_events; the conditions of the
     states: derive.state_conditions)."""
 
@@ -70,20 +72,17 @@ class StateAnswers(StateEvents, StateConditions):
     @cached_property
     def _chain(self) -> Chain:
         """Each named state in turn, from the state it starts from (see Chain)."""
-        if self.scene.states and len(self.regimes) > 1 and self._sliding is None:
-            contact = friction.frictional(self.scene)
-            raise self.problem.limit(
-                f"read a state of a scene whose friction regime it decides: the {contact.body} on {contact.surface} "
-                "holds or slips by its friction coefficients; a state may follow a slide with kinetic friction "
-                f"only on the way to where it grips (`when: {{grips: {contact.body}}}`, the chain starting with "
-                f"rates that slip), and where the {contact.body} always slides without friction, drop `friction:`")
-        result, joints, solved, made, followed = {}, {}, {}, {}, {}
+        result, joints, solved, made, followed, starts = {}, {}, {}, {}, {}, {}
 
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
         for name, state in self.scene.states.items():
-            joints[name] = joints[state.start] if state.start else self._slides_from(result)
             try:
+                joints[name] = joints[state.start] if state.start else self._root_joints(state, result)
+                if state.event is None and not state.rates and not self.grips_in(name):
+                    starts[name] = self._start(name, result[state.start].values if state.start else
+                                               state_motion.rest(self.coordinates), joints[name])
+                    joints[name] = starts[name].joints if starts[name] else joints[name]
                 found = result
                 if isinstance(solved.get(state.start), impacts.Impact) and solved[state.start].regimes:
                     if state.event is not None or state.until and state.until[0] == "grips":
@@ -105,7 +104,7 @@ class StateAnswers(StateEvents, StateConditions):
                         made[name] = self._gripped(state.until[1], reached.values)
                         joints[name] = in_place(joints[name], made[name])
                     elif state.event is None:
-                        reached = self._state(state, found, joints[name])
+                        reached = with_start_step(self._state(state, found, joints[name]), starts.get(name))
                         if name in followed:
                             reached = dataclasses.replace(reached, steps=(Step(
                                 f"The motion after the bounce {state.start} where it {followed[name].name}, as at the "
@@ -139,13 +138,13 @@ class StateAnswers(StateEvents, StateConditions):
                 if not (isinstance(solved.get(name), impacts.Impact) and solved[name].regimes):
                     reached = dataclasses.replace(reached, values={k: resolve(v) for k, v in reached.values.items()})
                 result[name] = reached
-                if state.start is None and self._sliding is not None:  # its friction against the slip found
-                    joints[name] = self._slides_from(result)
+                if state.rates and self._sliding is not None:  # its friction against the slip found
+                    joints[name] = self._root_joints(state, result)
             except (state_motion.StateLimit, moves.MoveLimit) as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
-        return Chain(result, joints, solved, made, followed)
+        return Chain(result, joints, solved, made, followed, starts)
 
     def _middle_regime(self, impact: impacts.Impact) -> impacts.Regime:
         """The regime a rough bounce takes at the middle of the parameter ranges."""
@@ -179,26 +178,26 @@ class StateAnswers(StateEvents, StateConditions):
 
     @cached_property
     def _sliding(self) -> Contact | None:
-        """The contact a state grips (`when: {grips: BODY}`): it slides with kinetic friction in
-        the states before, whatever the regimes at the placement."""
-        names = {s.until[1] for s in self.scene.states.values() if s.until and s.until[0] == "grips"}
-        return next((c for c in self.dynamics_scene.constraints if isinstance(c, Contact) and c.name in names), None)
+        """The contact with kinetic friction whose regime the states follow (None: none): a chain
+        given by rates starts with it sliding against their slip (`_root_joints`); from rest, or
+        where it stops sliding, the forces decide (derive.start_regimes); it slides until a state
+        where it grips (`when: {grips: BODY}`), and holds (rolls, or stays) after."""
+        if len(self.regimes) == 1:
+            return None
+        return self.dynamics_scene.constraint(friction.frictional(self.scene).name)
 
-    def _slides_from(self, found: dict) -> tuple:
-        """The joints of a state at the root of a chain: none, or the sliding contact with kinetic
-        friction against the slip of the first state given by its rates (found with the contact
-        smooth, which holds the same constraints)."""
+    def _root_joints(self, state, found: dict) -> tuple:
+        """The joints of a state at the root of a chain (no `from:`): none, or, where it is given by
+        rates, the contact with kinetic friction (`_sliding`) sliding against their slip (found
+        with the contact smooth, which holds the same constraints), held where they do not slip.
+        From rest the regime is decided by the forces (derive.start_regimes)."""
         contact = self._sliding
-        if contact is None:
+        if contact is None or not state.rates:
             return ()
-        if not found:  # the first state itself, before its slip is known
+        if state.name not in found:  # the state itself, before its slip is known
             return (friction.slipping(contact, 0),)
-        first = next(iter(found.values())).values
-        way = self._sample(contact.slip(self.coordinates).xreplace(first))
-        if way == 0:
-            raise state_motion.StateError(f"the {contact.body} does not slide on {contact.surface} in the first state: "
-                                          "give it rates that slip")
-        return (friction.slipping(contact, -1 if way > 0 else 1),)
+        way = self._sample(contact.slip(self.coordinates).xreplace(found[state.name].values))
+        return () if way == 0 else (friction.slipping(contact, -1 if way > 0 else 1),)
 
     def _slipping(self, name: str) -> SlippingClutch | Contact | None:
         """The part of that name that slips until it grips: a slipping clutch, or a contact with
@@ -352,7 +351,16 @@ class StateAnswers(StateEvents, StateConditions):
         """A body's speed after a move is the same however the move is made where the bodies can
         only turn about the ground's pins (a turntable); where a set of them was free to shift (a
         bead on a free rod) it is not, and the ask is refused. After a turn that leaves coordinates
-        loose (moves.turn), only what does not depend on where the bodies are is asked."""
+        loose (moves.turn), only what does not depend on where the bodies are is asked. Where a
+        body sliding with kinetic friction stops, only its rates, positions and energies are asked:
+        its friction jumps there."""
+        if ask.state and self.scene.states[ask.state].until == ("stops", None) and \
+                ask.quantity.kind not in RATE_KINDS:
+            sliding = [c for c in self.scene_in(ask.state).constraints if isinstance(c, Contact) and c.regime == "kinetic"]
+            if sliding:
+                raise self.problem.error(f"ask.{ask.name}.in", f"where the {sliding[0].body} stops sliding, its "
+                                         "friction jumps (static friction holds it, or it slides back): ask forces and "
+                                         "accelerations in a state on the way (when:)")
         moved = self._chain.impacts.get(ask.state) if ask.state else None
         if not isinstance(moved, moves.Moved):
             return

@@ -43,7 +43,8 @@ class StateConditions:
                            for part in (*self.scene_in(start).constraints, made) for sign in part.signs()]
                 if isinstance(made, impacts.Touch) and made.rough:
                     result += self._rough_conditions(name)
-            result += self._regime_followed_conditions(name)  # first: the other conditions are of its regime
+            result += self._start_regime_conditions(name)  # first: the other conditions are of its regime
+            result += self._regime_followed_conditions(name)
             forces = self.in_state("lagrange", name).raw
             # the state is real, first: where a formula puts it off the scene's geometry (a ball
             # higher than its cord reaches, a swing that would stop above the top), the motion
@@ -107,8 +108,9 @@ class StateConditions:
                                f"the plates of {part.name} do not slip in the state {name} the way they do at the "
                                f"middle of the ranges (they turn together, or slip the other way): narrow the ranges, "
                                f"or give a state when: {{grips: {part.name}}} and go on from it"))
+        stops = self.scene.states[name].until == ("stops", None)  # where it stops the slip is zero
         for part in scene.constraints:
-            if isinstance(part, Contact) and part.regime == "kinetic":
+            if isinstance(part, Contact) and part.regime == "kinetic" and not stops:
                 result.append((-part.direction * part.slip(self.coordinates).xreplace(values), True,
                                f"the {part.body} does not slide on {part.surface} in the state {name} the way it does "
                                f"at the middle of the ranges, which its kinetic friction opposes (it slides the other "

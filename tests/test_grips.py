@@ -117,8 +117,8 @@ BALL = (Path(__file__).parent / "textbook/states/bowling_ball_skids.yaml").read_
 
 @pytest.mark.parametrize("change, field, words, code", [
     ("friction: {kinetic: mu}}", "scene.states.rolling.when.grips", "gives no kinetic friction", 2),
-    ("launched: {rates: {ball.velocity.x: v0, ball.angular_velocity: 0}}", "scene.states.launched",
-     "does not slide on lane in the first state", 2),
+    ("launched: {rates: {ball.velocity.x: v0, ball.angular_velocity: 0}}", "scene.states.rolling",
+     "does not slip at the start: it grips there already", 2),
 ])
 def test_a_contact_that_cannot_grip_is_refused(tmp_path, change, field, words, code):
     replacement = {"friction: {kinetic: mu}}": "friction: {static: mu}}",

@@ -34,7 +34,8 @@ def _principles(solution: Solution, name: str) -> list[str]:
     """What the sentences of a state's section must name, by the kind of state: the rates given,
     an impact's impulses and its kind (inelastic, locked, restitution), a move's kept momentum by
     Noether's theorem, a segment's energy (conserved, or the work-energy theorem) and how it ends,
-    a slip's kinetic friction and constant accelerations, a time's constant acceleration or quadrature."""
+    a slip's kinetic friction and constant accelerations, a time's constant acceleration or quadrature;
+    the regime a contact with friction starts in, and the work of kinetic friction on the way."""
     state = solution.scene.states[name]
     if state.rates:
         return ["at the rates given"]
@@ -50,8 +51,12 @@ def _principles(solution: Solution, name: str) -> list[str]:
     ends = {None: [], "stops": ["A turning point"], "leaves": ["leaves the", "first falls to zero"],
             "slack": ["goes slack where it first falls to zero"], "slips": ["starts to slip where it first falls"]}
     timed = any(a.state == name and a.quantity.kind == "time" for a in solution.problem.asks.values())
-    return (["no work" if solution.scene_in(name).constraints else "energy", "energy"]
-            + ends[state.until[0] if state.until else None] + (["time"] if timed else []))
+    scene = solution.scene_in(name)
+    rubbing = any(getattr(c, "regime", None) == "kinetic" for c in scene.constraints)
+    work = ["Kinetic friction at", "work-energy theorem"] if rubbing else \
+        ["no work" if scene.constraints else "energy", "energy"]
+    held = ["Held by static friction"] if solution.starts.get(name) else []
+    return (held + work + ends[state.until[0] if state.until else None] + (["time"] if timed else []))
 
 
 @pytest.mark.parametrize("reference", CHAINS, ids=lambda p: Path(p).stem)

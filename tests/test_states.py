@@ -592,15 +592,32 @@ question: A block on a rough table is tied over a pulley to a hanging block. Fin
 """
 
 
-def test_a_state_after_a_slide_with_kinetic_friction_from_rest_is_an_engine_limit_that_says_what_works(tmp_path):
-    """A trial's table and pulley (Serway ch. 10) with `contact: sliding, friction: {kinetic: mu}`
-    was told to "give contact: rolling or sliding", which it had: the limit now names the contact
-    and the chains derive does follow (to where it grips)."""
-    (tmp_path / "table.yaml").write_text(TABLE_AND_PULLEY)
-    done = run_derive("solve", str(tmp_path / "table.yaml"))
-    assert done.returncode == 1
-    assert "derive cannot yet read a state" in done.stderr and "block on table" in done.stderr
-    assert "`when: {grips: block}`" in done.stderr and "give contact: rolling or sliding" not in done.stderr
+def test_a_block_on_a_rough_table_released_from_rest_slides_to_its_state_against_kinetic_friction(tmp_path):
+    """A trial's table and pulley (Serway & Jewett ch. 10: (m1 + m2 + M/2) v^2/2 = (m2 - mu_k m1) g h, here h = R)
+    was an engine limit ("a state may follow a slide with kinetic friction only on the way to where
+    it grips"): the block now slips from rest, as static friction (mu_k where none is given) cannot
+    hold it, and its work is mu_k N times the distance slid, N kept from the start."""
+    result = solve(tmp_path, TABLE_AND_PULLEY)
+    assert result.returncode == 0, result.stderr
+    v = float(json.loads(result.stdout)["answers"]["v"]["value"])
+    assert v == pytest.approx(math.sqrt(2 * (3 - 0.25 * 4) * 9.81 * 0.1 / (4 + 3 + 2 / 2)), rel=1e-12)  # a drop of R
+
+
+def test_a_block_static_friction_holds_never_gets_to_its_state(tmp_path):
+    """Where static friction holds the block at rest (m2 < mu_s m1), the state is never reached:
+    refused at the middle of the ranges, and per variant where the middle slips (a set redraws it)."""
+    held = TABLE_AND_PULLEY.replace("friction: {kinetic: mu}", "friction: {static: 0.8, kinetic: mu}")
+    message = refused(tmp_path, held, "scene.states.dropped")
+    assert "static friction holds the block at rest on table at the start" in message
+    ranged = held.replace("m2: {meaning: mass of the hanging block, unit: kg, value: 3}",
+                          "m2: {meaning: mass of the hanging block, unit: kg, range: [2, 6]}")
+    result = solve(tmp_path, ranged, "--set", "m2=3")
+    assert result.returncode == 2 and "static friction holds the block at rest from the start, so it never " \
+                                       "gets to the state dropped" in result.stderr, result.stderr
+    result = solve(tmp_path, ranged, "--set", "m2=3.3")
+    assert result.returncode == 0, result.stderr
+    v = float(json.loads(result.stdout)["answers"]["v"]["value"])
+    assert v == pytest.approx(math.sqrt(2 * (3.3 - 0.25 * 4) * 9.81 * 0.1 / (4 + 3.3 + 2 / 2)), rel=1e-12)
 
 
 def test_a_stick_balanced_on_its_end_never_topples_and_is_told_to_start_with_a_push(tmp_path):
@@ -669,3 +686,69 @@ question: A rod pivoted at one end swings from its release angle. Find its perio
     assert done.returncode == 1, done.stderr
     assert "away.yaml: ask.T: derive cannot yet find the equilibrium" in done.stderr
     assert "the rod's angular acceleration is not zero" in done.stderr and "ddot" not in done.stderr
+
+
+ROUGH_BOWL = """
+id: block_in_rough_bowl
+title: A block slides in a rough bowl
+parameters:
+  m: {meaning: mass of the block, unit: kg, value: 1}
+  R: {meaning: radius of the bowl, unit: m, value: 2}
+  mu: {meaning: coefficient of kinetic friction, unit: "1", value: 0.2}
+  v0: {meaning: speed at the bottom, unit: m/s, value: 3}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    bowl: {circle: {radius: R, center: [0, R], side: inside}}
+  bodies:
+    block: {shape: point, mass: m, at: [0, 0], on: bowl, contact: sliding, friction: {kinetic: mu}}
+  loads:
+    - gravity: g
+  states:
+    sent: {rates: {block.velocity.x: v0}}
+    higher: {from: sent, when: {block.y: R/10}}
+ask:
+  v: {meaning: speed then, of: block.speed, in: higher, unit: m/s}
+question: A block slides up a rough bowl. How fast is it moving when it has risen R/10?
+"""
+
+
+def test_kinetic_friction_whose_normal_force_changes_on_the_way_is_an_engine_limit(tmp_path):
+    """In a bowl the normal force grows with the speed, so mu_k N is not its start's value along
+    the way: derive's check of the kept force (derive.mechanics.work) refuses it, never a wrong number."""
+    result = solve(tmp_path, ROUGH_BOWL)
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert "kinetic friction whose normal force N^block changes on the way" in result.stderr
+
+
+def test_forces_where_a_slide_stops_are_refused_and_the_next_segment_decides_afresh(tmp_path):
+    """Where a crate shoved up a rough ramp stops, its friction jumps: forces there are refused.
+    From there it slides back where tan(theta) > mu_s, the regime decided at the stop (a variant
+    where static friction holds it is refused per variant)."""
+    text = (Path(__file__).parent / "textbook/states/crate_up_rough_ramp.yaml").read_text()
+    asked = text.replace("ask:\n", "ask:\n  N: {meaning: normal force at the top, of: crate.normal_force, in: highest, "
+                                   "unit: N}\n")
+    assert "where the crate stops sliding, its friction jumps" in refused(tmp_path, asked, "ask.N.in")
+    held = text.replace("friction: {kinetic: mu}", "friction: {static: 0.9, kinetic: mu}")
+    message = refused(tmp_path, held, "scene.states.back")
+    assert "static friction holds the crate at rest on ramp in the state highest" in message
+    ranged = text.replace("friction: {kinetic: mu}", "friction: {static: mus, kinetic: mu}").replace(
+        "parameters:\n", "parameters:\n  mus: {meaning: coefficient of static friction, unit: '1', range: [0.5, 0.8]}\n")
+    result = solve(tmp_path, ranged, "--set", "mus=0.79", "--set", "theta=0.6", "--set", "mu=0.3", "--set", "v0=3",
+                   "--set", "m=10")
+    assert result.returncode == 2 and "static friction holds the crate at rest in the state highest" in result.stderr
+    result = solve(tmp_path, ranged, "--set", "mus=0.5", "--set", "theta=0.6", "--set", "mu=0.3", "--set", "v0=3",
+                   "--set", "m=10")
+    assert result.returncode == 0, result.stderr
+    vb = float(json.loads(result.stdout)["answers"]["vb"]["value"])
+    s, c = math.sin(0.6), math.cos(0.6)
+    assert vb == pytest.approx(3 * math.sqrt((s - 0.3 * c) / (s + 0.3 * c)), rel=1e-12)
+
+
+def test_a_regime_condition_that_is_not_real_past_an_earlier_one_is_no_internal_error(tmp_path):
+    """With only the hanging mass given, derive looks for a condition every other value breaks; the
+    speed's radicand is negative where static friction holds the block, which stopped `derive solve`
+    with "is not a real number" (an internal error)."""
+    path = Path(__file__).parent / "textbook/states/rough_table_hanging_ball.yaml"
+    result = run_derive("solve", str(path), "--set", "m2=1")
+    assert result.returncode == 0 and "internal error" not in result.stderr, result.stderr

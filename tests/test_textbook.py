@@ -624,6 +624,52 @@ EXPECTED.update({
         "x": lambda s: -10 * s.R + s.h,
         "N": lambda s: s.m1 * s.g,
     },
+    # Kinetic friction from rest, or until it stops: the friction's work is -mu_k N times the
+    # distance slid, N constant on a plane. Serway & Jewett ch. 8: a block on a rough table tied
+    # over a light pulley to a hanging ball, v^2 = 2 g h (m2 - mu_k m1)/(m1 + m2), a constant
+    # acceleration (so t = 2 h/v), T = m2 (g - a).
+    "rough_table_hanging_ball": {
+        "v": lambda s: sp.sqrt(2 * s.g * s.h * (s.m2 - s.mu * s.m1) / (s.m1 + s.m2)),
+        "t": lambda s: sp.sqrt(2 * s.h * (s.m1 + s.m2) / (s.g * (s.m2 - s.mu * s.m1))),
+        "T": lambda s: s.m1 * s.m2 * s.g * (1 + s.mu) / (s.m1 + s.m2),
+    },
+    # Serway & Jewett ch. 8: a crate sliding down a rough ramp from rest, v^2 = 2 g d (sin - mu_k cos).
+    "block_down_rough_incline": {
+        "v": lambda s: sp.sqrt(2 * s.g * s.d * (_sin(s.theta) - s.mu * _cos(s.theta))),
+        "t": lambda s: sp.sqrt(2 * s.d / (s.g * (_sin(s.theta) - s.mu * _cos(s.theta)))),
+        "N": lambda s: s.m * s.g * _cos(s.theta),
+        "K": lambda s: s.m * s.g * s.d * (_sin(s.theta) - s.mu * _cos(s.theta)),
+    },
+    # Halliday ch. 8: up a rough incline at v0, it stops after d = v0^2/(2 g (sin + mu_k cos)), at
+    # the height d sin(theta), in v0/(g (sin + mu_k cos)); tan(theta) > mu_k, so it slides back,
+    # v^2 = 2 g d (sin - mu_k cos).
+    "crate_up_rough_ramp": {
+        "h": lambda s: s.v0**2 * _sin(s.theta) / (2 * s.g * (_sin(s.theta) + s.mu * _cos(s.theta))),
+        "t": lambda s: s.v0 / (s.g * (_sin(s.theta) + s.mu * _cos(s.theta))),
+        "W": lambda s: -s.m * s.v0**2 / 2,
+        "vb": lambda s: s.v0 * sp.sqrt((_sin(s.theta) - s.mu * _cos(s.theta)) / (_sin(s.theta) + s.mu * _cos(s.theta))),
+    },
+    # Halliday ch. 6: a puck slides d = v0^2/(2 mu_k g) in v0/(mu_k g); at half its speed it has
+    # gone (v0^2 - v0^2/4)/(2 mu_k g).
+    "puck_slides_to_stop": {
+        "d": lambda s: s.v0**2 / (2 * s.mu * s.g),
+        "t": lambda s: s.v0 / (s.mu * s.g),
+        "x": lambda s: 3 * s.v0**2 / (8 * s.mu * s.g),
+    },
+    # Serway & Jewett Example 8.6: (1/2) m v^2 = (1/2) k d^2 - mu_k m g d at the relaxed length.
+    # The time: Morin, Introduction to Classical Mechanics, ch. 4 (a spring with kinetic
+    # friction moves harmonically about the shifted equilibrium L0 - mu_k m g/k): from rest at
+    # amplitude A = d - mu_k m g/k, it reaches L0 where cos(omega t) = -mu_k m g/(k A).
+    "spring_block_rough_floor": {
+        "v": lambda s: sp.sqrt(s.k * s.d**2 / s.m - 2 * s.mu * s.g * s.d),
+        "t": lambda s: sp.acos(-s.mu * s.m * s.g / (s.k * (s.d - s.mu * s.m * s.g / s.k))) / sp.sqrt(s.k / s.m),
+    },
+    # Serway & Jewett Example 10.13: a solid sphere rolls from rest, v^2 = 10 g d sin(theta)/7,
+    # held by the friction f = (2/7) M g sin(theta) (I/(I + M R^2) of the weight's component).
+    "ball_rolls_down_rough_incline": {
+        "v": lambda s: sp.sqrt(10 * s.g * s.d * _sin(s.theta) / 7),
+        "f": lambda s: 2 * s.M * s.g * _sin(s.theta) / 7,
+    },
     # Serway & Jewett ch. 11: angular momentum about the pivot in the collision, m v L = I omega
     # with I = M L^2/3 + m L^2; just after, the rod is vertical and not accelerating, so the pin
     # holds the weight and the centripetal pull, (M + m) g + omega^2 L (M/2 + m); then energy:

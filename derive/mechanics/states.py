@@ -38,15 +38,15 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from derive.mechanics import first_integrals, first_root, free_flight
-from derive.mechanics.derivation import KINETIC, POTENTIAL, Derivation, Step
+from derive.mechanics import first_integrals, first_root, free_flight, work
+from derive.mechanics.derivation import KINETIC, Derivation, Step
 from derive.mechanics.tidying import root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
-from derive.mechanics.lagrange import energies, nonconservative_power
+from derive.mechanics.lagrange import energies
 from derive.mechanics.state_errors import Curved, StateError, StateLimit
 from derive.parts import listed, titled
 from derive.prose import Sentence, capital
-from derive.scene import TIME, Scene
+from derive.scene import Scene
 
 #: Points between the start and a state where the motion must still move (the kinetic energy
 #: stays positive): a turning point on the way would mean the state is never reached.
@@ -166,6 +166,7 @@ class Path:
     line: tuple | None = None  # on a line: where the state is, and the sign function (see `frozen`)
     leaves: sp.Expr | None = None  # the start's rate (from rest, acceleration) in s, whose sign is `direction`
     work: tuple[Sentence, ...] = ()  # what does work along it, and the principle that gives `kinetic`
+    kept: tuple = ()  # contact forces its work takes at their start values (derive.mechanics.work)
 
     @property
     def s(self) -> sp.Symbol:
@@ -314,11 +315,7 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     velocities = {c.u: tidy(sp.diff(positions[c.q], s)) * speed for c in coords.all}
     kinetic, potential = energies(scene, coords)
     per_speed_squared = tidy(kinetic.xreplace(velocities).xreplace(positions) / speed**2)
-    power = nonconservative_power(scene, coords).xreplace(velocities).xreplace(positions)
-    force = tidy(power / speed)
-    if force.has(speed, TIME) or force.free_symbols & {c.a for c in coords.all} or _holds_unknowns(force, scene):
-        raise StateLimit("find a state reached under loads whose work depends on the speed, the time or a "
-                         "contact force (a damper, a force given in t, kinetic friction)")
+    force, kept = work.force_along(scene, coords, coordinate, start, positions, velocities, derivation)
     antiderivative = sp.integrate(force, s) if force != 0 else sp.Integer(0)
     if antiderivative.has(sp.Integral):
         raise StateLimit(f"integrate the work of the loads, {sp.sstr(force)} d{s}")
@@ -326,51 +323,7 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     energy = kinetic.xreplace(start) + potential.xreplace(start) - antiderivative.xreplace({s: s0})
     along = tidy(energy - potential.xreplace(positions) + antiderivative)
     return Path(coordinate, start, direction, positions, velocities, per_speed_squared, along, leaves=leaves,
-                work=work_said(scene, coords, s))
-
-
-def work_said(scene: Scene, coords: Coordinates, s: sp.Symbol) -> tuple[Sentence, ...]:
-    """What does work along a motion in `s`, said from the scene's parts: the constraints none
-    (each holds a gap at zero, and its force's power is its multiplier times the gap's rate),
-    gravity and springs through the potential energy, the other loads through the work of forces
-    that depend on the configuration alone; and the principle that follows (energy is conserved,
-    or the work-energy theorem).
-
-    >>> from derive.parts.gravity import Gravity
-    >>> from derive.parts.pin import Pin
-    >>> from derive.scene import Body
-    >>> m, L, g = sp.symbols("m L g", positive=True)
-    >>> rod = Body("rod", "rod", m, {"length": L}, m * L**2 / 12, at=(L / 2, 0), angle=0)
-    >>> scene = Scene({"rod": rod}, (Pin("hinge", "rod", (-L / 2, 0)),), Gravity(g))
-    >>> [s.words for s in work_said(scene, Coordinates(scene), sp.Symbol("theta_rod"))]  # doctest: +NORMALIZE_WHITESPACE
-    ["The pin hinge does no work: it holds a gap at zero, and the power of its force is its multiplier times
-    the gap's rate, zero.", 'Gravity stores potential energy: its work is the drop in .', 'So energy is
-    conserved: the kinetic energy at each  is the one at the start plus the drop in the potential energy  since
-    the start.']
-    """
-    held = list(scene.constraints)
-    loads = [p for p in scene.parts[len(held):]]
-    stored = [p for p in loads if p.potential(coords) != 0]
-    working = [p for p in loads if p.power(coords) != 0]
-    said = []
-    if held:
-        each = "it holds" if len(held) == 1 else "each holds"
-        said.append(Sentence((f"{capital(titled(held))} {'does' if len(held) == 1 else 'do'} no work: {each} a gap at "
-                              "zero, and the power of its force is its multiplier times the gap's rate, zero.",)))
-    if stored:
-        said.append(Sentence((f"{capital(titled(stored))} {'stores' if len(stored) == 1 else 'store'} potential energy: "
-                              f"{'its' if len(stored) == 1 else 'their'} work is the drop in ", POTENTIAL, ".")))
-    said += [Sentence((f"{capital(p.title)} does work at the rate ", tidy(p.power(coords)), ", its force depending on "
-                       "the configuration alone: its work is that force's integral along ", s, ".")) for p in working]
-    dropped = ("the drop in the potential energy ", POTENTIAL, " since the start") if stored else ()
-    if working:
-        said.append(Sentence(("So, by the work-energy theorem, the kinetic energy at each ", s, " is the one at the start "
-                              "plus ", *dropped, *((" and ",) if dropped else ()), f"the work of {titled(working)} since "
-                              "the start.")))
-    else:
-        said.append(Sentence(("So energy is conserved: the kinetic energy at each ", s, " is the one at the start",
-                              *((" plus ", *dropped) if dropped else ()), ".")))
-    return tuple(said)
+                work=work.work_said(scene, coords, s, kept), kept=kept)
 
 
 def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation: Derivation, decide,
@@ -543,6 +496,7 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
         s1 = first_root.first(sp.Eq(force, 0), force, path, decide, f"{condition.meaning} stays positive: it never falls to zero")
         steps.append(Step("It falls to zero at", (sp.Eq(s, s1),)))
         vanished = (condition.force,) if condition.force.is_Symbol else ()
+    work.check_kept(path, s1, derivation, decide)
     inertia = path.inertia.xreplace({s: s1})
     if inertia.has(sp.zoo, sp.oo, sp.nan) or not first_root.real(inertia, decide) or settled(1 / inertia) == 0:
         # the coordinate is extremal there (a bead's height at the bottom of a bowl): it has no
@@ -607,11 +561,6 @@ def _assumed(expr: sp.Expr) -> float:
     if expr.is_positive or expr.is_negative:
         return 1.0 if expr.is_positive else -1.0
     raise StateError(f"cannot decide the sign of {sp.sstr(expr)}: give the parameters ranges")
-
-
-def _holds_unknowns(expr: sp.Expr, scene: Scene) -> bool:
-    forces = {f for c in scene.constraints for f in c.unknowns().values()}
-    return bool(expr.free_symbols & forces)
 
 
 def _heading(start: dict, coords: Coordinates, derivation: Derivation, decide) -> dict[sp.Symbol, int]:
