@@ -531,6 +531,10 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         if result.has(sp.Piecewise):  # regimes: one case per regime, each in its simplest form
             folded = sp.piecewise_fold(result)
             result = tidy(folded) if isinstance(folded, sp.Piecewise) else folded
+        placed = {a: sign * a.args[0] for a in result.atoms(sp.Abs) for sign in (1, -1)
+                  if tidy(sign * a.args[0]) in self.scene.placed}
+        if placed:  # |R - r| at a loop's top as the scene is placed, a sign kept in every variant (conditions)
+            result = tidy(result.xreplace(placed))
         for size in ask.small:
             result = tidy(sp.limit(result, size, 0, "+"))
         if ask.zero_for:

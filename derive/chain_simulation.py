@@ -158,7 +158,7 @@ def _jump(solution, name: str, before: dict, values: dict, report: SimulationRep
                                      "it depends on how long the turn takes"))
         after = moved.values
     else:
-        impact = solution._impact(name, at, chain.joints[state.start], chain.made[name], "lagrange")
+        impact = solution._impact(name, at, solution._struck_with(name), chain.made[name], "lagrange")
         after = {**{c.q: before[c.q] for c in coords.all}, **impact.velocities}
     return {k: _number(v, values) for k, v in after.items()}
 

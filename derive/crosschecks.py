@@ -290,8 +290,7 @@ class CrossChecks:
         impulses) and by Newton–Euler (each body's impulse and momentum) agree, symbolically."""
         by_lagrange = self._chain.impacts[name]
         state = self.scene.states[name]
-        by_impulses = self._impact(name, self.states[state.start].values, self._chain.joints[state.start],
-                                   self._chain.made[name], "newton_euler")
+        by_impulses = self._impact_by(name, "newton_euler")
         # a rough bounce's regimes each on its own (where it holds is found from the grip's impulses)
         pairs = (zip((r.impact for r in by_lagrange.regimes), (r.impact for r in by_impulses.regimes))
                  if by_lagrange.regimes else [(by_lagrange, by_impulses)])
@@ -307,7 +306,7 @@ class CrossChecks:
                                        f"and {b} by impulses")
             # where no impulse from outside has a moment about a point, Newton–Euler's velocities
             # keep the angular momentum about it (and with none at all, the momentum)
-            with_touch = self._scene_with((*self._chain.joints[state.start], self._chain.made[name]))
+            with_touch = self._scene_with((*self._struck_with(name), self._chain.made[name]))
             kept = impacts.conserved(with_touch, self.coordinates, before,
                                      {**before, **second.velocities})
             for was, now in zip(*(iter(kept.equations if kept else ()),) * 2):

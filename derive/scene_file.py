@@ -211,7 +211,8 @@ def _pull(reader: Reader, index: int, spec, places: Places) -> Cord:
 def _placements(places: Places, scene: Scene) -> tuple[sp.Expr, ...]:
     """The factors whose sign the file's placement decides: each absolute value in a part's extents
     in the reference configuration (a block hanging at depth h below a pulley of radius R has a run
-    |h - R| long), with the sign it has at the middle of the ranges. The derivation takes them so
+    |h - R| long), or in the radius a round body's center rides on a circular surface (R - r in a
+    loop), with the sign it has at the middle of the ranges. The derivation takes them so
     (the answers read h - R, not |h - R|: sympy cannot cancel an absolute value, and an equilibrium
     was refused as none), and `Solution.conditions` keeps that sign in every variant."""
     from derive.mechanics.tidying import radicals
@@ -219,13 +220,19 @@ def _placements(places: Places, scene: Scene) -> tuple[sp.Expr, ...]:
 
     coords = Coordinates(scene)
     rest = coords.at_rest_in_reference()
+    sizes = [e.xreplace(rest) for part in scene.constraints + scene.loads for e, _ in part.extents(coords)]
+    # the radius of the circle a round body's center rides on a circular surface, |R - r| inside
+    # (a ball in a loop), the one it rests on or the one a transfer carries it onto
+    riding = [(c.surface, c.body) for c in scene.constraints if isinstance(c, Contact) and c.point is None]
+    riding += [(s.event.to, s.event.body) for s in scene.states.values() if s.event and s.event.kind == "transfer"]
+    sizes += [sp.Abs(scene.surfaces[surface].path_radius(scene.bodies[body].sizes.get("radius", sp.Integer(0))))
+              for surface, body in riding if isinstance(scene.surfaces.get(surface), Circle)]
     placed = {}
-    for part in scene.constraints + scene.loads:
-        for extent, _ in part.extents(coords):
-            for absolute in radicals(extent.xreplace(rest)).atoms(sp.Abs):
-                value = places.sample(absolute.args[0])
-                if value:
-                    placed[absolute.args[0] if value > 0 else -absolute.args[0]] = None
+    for size in sizes:
+        for absolute in radicals(size).atoms(sp.Abs):
+            value = places.sample(absolute.args[0])
+            if value:
+                placed[absolute.args[0] if value > 0 else -absolute.args[0]] = None
     return tuple(placed)
 
 

@@ -56,6 +56,7 @@ class Chain:
     made: dict[str, object]
     followed: dict[str, impacts.Regime] = dataclasses.field(default_factory=dict)
     starts: dict[str, Start | None] = dataclasses.field(default_factory=dict)
+    struck: dict[str, tuple] = dataclasses.field(default_factory=dict)
 
 
 class StateAnswers(StateEvents, StateConditions, StartRegimes):
@@ -72,7 +73,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
     @cached_property
     def _chain(self) -> Chain:
         """Each named state in turn, from the state it starts from (see Chain)."""
-        result, joints, solved, made, followed, starts = {}, {}, {}, {}, {}, {}
+        result, joints, solved, made, followed, starts, struck = {}, {}, {}, {}, {}, {}, {}
 
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
@@ -129,6 +130,11 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                         made[name] = self._joint(state, result)
                         solved[name] = self._impact(name, result[state.start].values, joints[name], made[name],
                                                     "lagrange")
+                        through = self._slides_through(solved[name], joints[name])
+                        if through is not None:  # solved again with the contact sliding for the instant
+                            joints[name] = struck[name] = through
+                            solved[name] = self._impact(name, result[state.start].values, through, made[name],
+                                                        "lagrange")
                         if state.event.kind != "bounce":  # a bounce's touch lasts the instant only
                             joints[name] = in_place(joints[name], made[name])
                         reached = self._after_impact(name, result[state.start].values, solved[name],
@@ -140,11 +146,46 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                 result[name] = reached
                 if state.rates and self._sliding is not None:  # its friction against the slip found
                     joints[name] = self._root_joints(state, result)
+                if name in struck:  # after it slid through the impact: against its slip from then on
+                    joints[name] = self._slides_after(joints[name], reached.values)
             except (state_motion.StateLimit, moves.MoveLimit) as error:
                 raise self.problem.limit(f"{error} (scene.states.{name})") from None
             except (state_motion.StateError, ValueError) as error:
                 raise self.problem.error(f"scene.states.{name}", str(error)) from None
-        return Chain(result, joints, solved, made, followed, starts)
+        return Chain(result, joints, solved, made, followed, starts, struck)
+
+    def _slides_through(self, impact: impacts.Impact, joints: tuple) -> tuple | None:
+        """The joints an impact is solved in again where a contact held by friction coefficients
+        would need a friction impulse to hold (None where it needs none): its friction, at most
+        mu N, gives none in an instant where N gives none, so the contact slides through the
+        impact (a rolling ball rebounding from a smooth cushion keeps its spin). A contact
+        `rolling` without coefficients holds by any impulse, as the file says.
+
+        Raises StateLimit where the normal impulse is not zero: whether it grips through the
+        impact is not decided."""
+        contact = self._sliding
+        held = next((j for j in self._scene_with(joints).constraints if j.name == contact.name), None) \
+            if contact else None
+        if held is None or not held.rolling:
+            return None
+        forces = held.unknowns()
+        friction_impulse = tidy(impact.impulses.get(forces["friction"], sp.Integer(0)))
+        normal_impulse = tidy(impact.impulses.get(forces["normal"], sp.Integer(0)))
+        if friction_impulse == 0:
+            return None
+        if normal_impulse != 0:
+            raise state_motion.StateLimit(
+                f"decide whether friction holds the {held.body} on {held.surface} through the impact: it would take "
+                f"the friction impulse {sp.sstr(friction_impulse)} with the normal impulse {sp.sstr(normal_impulse)}")
+        return in_place(joints, friction.slipping(contact, 0))
+
+    def _slides_after(self, joints: tuple, values: dict) -> tuple:
+        """After the contact slid through an impact, kinetic friction against its slip then (held
+        where it does not slip: the impact left it rolling)."""
+        contact = self._sliding
+        way = self._sample(contact.slip(self.coordinates).xreplace(values))
+        return in_place(joints, friction.slipping(contact, -1 if way > 0 else 1) if way else
+                        self._gripped(contact.name, values))
 
     def _middle_regime(self, impact: impacts.Impact) -> impacts.Regime:
         """The regime a rough bounce takes at the middle of the parameter ranges."""

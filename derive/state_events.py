@@ -57,7 +57,13 @@ class StateEvents:
         if route == "lagrange":
             return self._chain.impacts[name]
         start = self.scene.states[name].start
-        return self._impact(name, self.states[start].values, self._chain.joints[start], self._chain.made[name], route)
+        return self._impact(name, self.states[start].values, self._struck_with(name), self._chain.made[name], route)
+
+    def _struck_with(self, name: str) -> tuple:
+        """The joints the impact of the state `name` is solved in: those of the state before, with a
+        contact held by friction sliding for the instant where it would need a friction impulse
+        (state_answers._slides_through)."""
+        return self._chain.struck.get(name, self._chain.joints[self.scene.states[name].start])
 
     def _impulse(self, q: Quantity, name: str, route: str) -> sp.Expr:
         """The impulse a body takes in the impact of the state `name`, or a joint gives the body it
@@ -65,7 +71,7 @@ class StateEvents:
         Newton–Euler's from the impact's impulse equations."""
         start = self.scene.states[name].start
         before, coords = self.states[start].values, self.coordinates
-        scene = self._scene_with(in_place(self._chain.joints[start], self._chain.made[name]))
+        scene = self._scene_with(in_place(self._struck_with(name), self._chain.made[name]))
         solved = self._impact_by(name, route)
         joint = next((p for p in scene.constraints if p.name == q.target), None)
         if route == "lagrange":

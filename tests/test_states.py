@@ -752,3 +752,78 @@ def test_a_regime_condition_that_is_not_real_past_an_earlier_one_is_no_internal_
     path = Path(__file__).parent / "textbook/states/rough_table_hanging_ball.yaml"
     result = run_derive("solve", str(path), "--set", "m2=1")
     assert result.returncode == 0 and "internal error" not in result.stderr, result.stderr
+
+
+def test_an_impact_a_contact_held_by_friction_would_need_to_grip_through_is_an_engine_limit(tmp_path):
+    """Clay striking the side of a wheel rolling on a floor with friction coefficients: holding it
+    rolling through the impact takes a friction impulse while the floor's normal impulse is not
+    zero, and whether mu_s allows that is not decided; refused (exit 1), never a number. (Where
+    the normal impulse is zero, as a rolling ball off a cushion, it slides through:
+    tests/textbook/states/ball_rolls_into_cushion.yaml.)"""
+    (tmp_path / "clay.yaml").write_text(CLAY_ON_WHEEL)
+    done = run_derive("solve", str(tmp_path / "clay.yaml"))
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "decide whether friction holds the wheel on floor through the impact" in done.stderr
+
+
+CLAY_ON_WHEEL = """
+id: clay_on_wheel
+title: Clay strikes a rolling wheel
+parameters:
+  M: {meaning: mass of the wheel, unit: kg, value: 2}
+  m: {meaning: mass of the clay, unit: kg, value: 0.2}
+  R: {meaning: radius of the wheel, unit: m, value: 0.3}
+  v0: {meaning: speed of the wheel, unit: m/s, value: 2}
+  u: {meaning: speed of the clay, unit: m/s, value: 3}
+  mu: {meaning: coefficient of friction, unit: "1", value: 0.5}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    floor: {incline: {angle: 0}}
+  bodies:
+    wheel: {shape: disk, mass: M, radius: R, at: [0, R], on: floor, contact: rolling, friction: {static: mu, kinetic: mu}}
+    clay: {shape: point, mass: m, at: [R, R]}
+  loads:
+    - gravity: g
+  states:
+    going: {rates: {wheel.velocity.x: v0, wheel.angular_velocity: -v0/R, clay.velocity.x: -u, clay.velocity.y: 0}}
+    stuck: {from: going, event: {stick: clay, to: wheel}}
+ask:
+  w: {meaning: spin after, of: wheel.angular_velocity, in: stuck, unit: rad/s}
+question: Clay strikes a rolling wheel. How fast does it turn after?
+"""
+
+
+def test_a_start_at_rest_in_balance_per_variant_says_so(tmp_path):
+    """A trial's ball nudged on a dome's top at v0 in [0, 1]: at v0 = 0 it sits there in balance,
+    and the refusal said it left "the other way than at the middle of the ranges"."""
+    text = """id: dome_ball_nudged
+title: A ball nudged on a dome
+""" + DOME_BALL + """question: A ball rolls off a dome. Where does it leave it?
+"""
+    result = solve(tmp_path, text, "--set", "v0=0")
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert "the scene stays at rest at the start" in result.stderr and "the other way" not in result.stderr
+
+
+DOME_BALL = """parameters:
+  m: {meaning: mass of the ball, unit: kg, value: 0.2}
+  r: {meaning: radius of the ball, unit: m, value: 0.05}
+  R: {meaning: radius of the dome, unit: m, value: 1.0}
+  v0: {meaning: speed at the top, unit: m/s, range: [0, 1], sig_figs: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    dome: {circle: {radius: R, center: [0, 0], side: outside}}
+  bodies:
+    ball: {shape: sphere, mass: m, radius: r, at: [0, R + r], on: dome, contact: rolling}
+  loads:
+    - gravity: g
+  states:
+    nudged: {rates: {ball.velocity.x: v0}}
+    off: {from: nudged, when: {leaves: ball}}
+ask:
+  y: {meaning: height of the ball's centre above the dome's centre where it leaves, of: ball.position.y, in: off, unit: m}
+  v: {meaning: speed when it leaves, of: ball.speed, in: off, unit: m/s}
+  w: {meaning: angular velocity then, of: ball.angular_velocity, in: off, unit: rad/s}
+"""

@@ -670,6 +670,31 @@ EXPECTED.update({
         "v": lambda s: sp.sqrt(10 * s.g * s.d * _sin(s.theta) / 7),
         "f": lambda s: 2 * s.M * s.g * _sin(s.theta) / 7,
     },
+    # A rolling ball off a smooth cushion at the height of its center: v -> -e v0, the spin -v0/R
+    # kept (the cloth's friction, at most mu N, gives no impulse where N gives none); then it
+    # skids, the slip v + R omega = -(1 + e) v0 shrinking at (7/2) mu g (a = mu g, alpha = 5 mu g/(2 R)),
+    # for t = 2 (1 + e) v0/(7 mu g), and rolls at -e v0 + mu g t = (2 - 5 e) v0/7, its center at
+    # X - R - e v0 t + mu g t^2/2.
+    "ball_rolls_into_cushion": {
+        "vb": lambda s: -s.e * s.v0,
+        "wb": lambda s: -s.v0 / s.R,
+        "V": lambda s: (2 - 5 * s.e) * s.v0 / 7,
+        "t": lambda s: 2 * (1 + s.e) * s.v0 / (7 * s.mu * s.g),
+        "x": lambda s: (s.X - s.R - s.e * s.v0 * 2 * (1 + s.e) * s.v0 / (7 * s.mu * s.g)
+                        + s.mu * s.g * (2 * (1 + s.e) * s.v0 / (7 * s.mu * s.g)) ** 2 / 2),
+    },
+    # Kleppner & Kolenkow ch. 7: the ladder's top leaves the smooth wall where sin(phi) = (2/3)
+    # sin(th0), phi its angle above the floor; energy, phi'^2 = 3 g (sin(th0) - sin(phi))/L, so
+    # omega^2 = g sin(th0)/L there; the center then falls at 3 g/4 (y'' = (L/2)(cos(phi) phi'' -
+    # sin(phi) phi'^2) with phi'' = -(3 g/(2 L)) cos(phi)), so N = M g/4; the time is the integral
+    # of dphi/|phi'| from there to th0, which no table gives in closed form (mpmath's quadrature).
+    "ladder_leaves_wall": {
+        "y": lambda s: s.L * _sin(s.th0) / 3,
+        "w": lambda s: sp.sqrt(s.g * _sin(s.th0) / s.L),
+        "N": lambda s: s.M * s.g / 4,
+        "t": lambda s: sp.Integral(1 / sp.sqrt(3 * s.g * (_sin(s.th0) - _sin(_PHI)) / s.L),
+                                   (_PHI, sp.asin(2 * _sin(s.th0) / 3), s.th0)),
+    },
     # Serway & Jewett ch. 11: angular momentum about the pivot in the collision, m v L = I omega
     # with I = M L^2/3 + m L^2; just after, the rod is vertical and not accelerating, so the pin
     # holds the weight and the centripetal pull, (M + m) g + omega^2 L (M/2 + m); then energy:

@@ -53,6 +53,9 @@ def test_a_ball_rolls_down_a_ramp_and_round_a_loop_as_the_books_and_the_simulati
         assert sp.simplify((solution.expression(name) - book).xreplace(inside)) == 0, name
     least = solution.expression("d_min")
     assert sp.simplify(drop.xreplace({d: least}).xreplace(inside) - sp.Rational(27, 10) * gap) == 0
+    # as placed, R - r > 0 (kept in every variant): the answers read R - r, not |R - r|
+    assert R - r in solution.scene.placed
+    assert not any(solution.expression(n).has(sp.Abs) for n in ("N_top", "d_min")), solution.expression("N_top")
     # it spins as it rolls: omega = -v/r at the top (clockwise), kept through the transfer
     spin = solution.coordinates.of("ball", "theta").u
     assert solution.states["looping"].values[spin] == solution.states["entering"].values[spin]

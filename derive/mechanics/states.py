@@ -509,10 +509,12 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
     positive[:0] = steps_ahead if isinstance(condition, Gets) else []
     if path.leaves is not None:  # every variant leaves the start the way the middle of the ranges does
         way = "decreasing" if path.direction > 0 else "increasing"
-        positive.insert(0, (path.direction * path.leaves, f"at these values the motion leaves the start with {s} {way}, "
-                                                          "the other way than at the middle of the parameter ranges, "
-                                                          "where derive found the state: it does not get there as "
-                                                          "derived"))
+        positive[:0] = [(path.leaves**2, "at these values the scene stays at rest at the start (nothing pushes it: a "
+                                         "ball at rest on a dome's top), so it never gets to the state"),
+                        (path.direction * path.leaves, f"at these values the motion leaves the start with {s} {way}, "
+                                                       "the other way than at the middle of the parameter ranges, "
+                                                       "where derive found the state: it does not get there as "
+                                                       "derived")]
     positive += [(path.kinetic.xreplace({s: s0 + sp.Rational(k, ON_THE_WAY) * (s1 - s0)}),
                   f"the motion stops on its way to the state (its kinetic energy, sampled at {ON_THE_WAY - 1} "
                   "points between, falls to zero)") for k in range(1, ON_THE_WAY)]
