@@ -278,7 +278,10 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         if detail == "normal_force":
             return solved[forces["normal"]]
         if detail == "friction":
-            return solved[forces["friction"]]
+            there = self.scene_in(state).constraint(contact.name) if state else contact
+            if there.regime == "kinetic":  # mu_k N along the tangent, the way it acts there
+                return tidy(there.direction * there.kinetic * solved[forces["normal"]])
+            return solved[forces["friction"]] if there.rolling else sp.Integer(0)
         if detail == "min_friction_coefficient":  # of the grip, whatever the regime
             stuck = derivation.at(self.coordinates.at_rest_in_reference())
             ratio = tidy(stuck[forces["friction"]] / stuck[forces["normal"]])

@@ -49,6 +49,20 @@ def exact_decimal(value: sp.Expr) -> Decimal:
         return Decimal(str(sp.N(value, 60)))
 
 
+def _figures(value: sp.Expr) -> int | None:
+    """The significant figures of a value written as a decimal (at most 15), None for another
+    number (pi/6, 1/3: printed rounded, as any reader would).
+
+    >>> _figures(sp.Rational(1829, 100)), _figures(sp.Integer(1800)), _figures(sp.pi / 6)
+    (4, 2, None)
+    """
+    if not value.is_Rational or value == 0 or any(p not in (2, 5) for p in sp.factorint(value.q)):
+        return None
+    with localcontext() as context:
+        context.prec = 60
+        return min(len((Decimal(abs(value.p)) / Decimal(value.q)).normalize().as_tuple().digits), 15)
+
+
 _WIDE = Context(prec=60)  # a draw's arithmetic: room for any range's digits
 _FRACTION = Context(prec=28)  # a draw's fraction: the decimal module's default, which it once read
 _TWO_64, _FIVE_64 = Decimal(2**64), 5**64
@@ -253,6 +267,13 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         sig_figs = spec.get("sig_figs", DEFAULT_SIG_FIGS)
         if not isinstance(sig_figs, int) or isinstance(sig_figs, bool) or not 1 <= sig_figs <= 15:
             raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
+        written = _figures(value) if value is not None and bounds is None else None
+        if written is not None and written > sig_figs:  # a fixed value is printed as the answers use it
+            if "sig_figs" in spec:
+                raise reader.fail(f"{field}.sig_figs", f"the value {spec['value']} has {written} significant figures: "
+                                  f"printed to {sig_figs} the worksheet would differ from the value the answers use; "
+                                  f"give sig_figs: {written}, or the value rounded")
+            sig_figs = written
         if bounds is not None:
             low, high = Parameter(name, None, "", "", None, bounds, sig_figs).bounds()
             if low > high:

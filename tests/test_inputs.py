@@ -10,7 +10,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import run_derive
+from conftest import refused, run_derive, write_problem
 from derive import names, numeric, problem, worksheets
 from derive.errors import InputError, ProblemError
 
@@ -194,3 +194,16 @@ def test_a_range_whose_ends_cannot_be_told_apart_is_refused(tmp_path):
     path.write_text(disk_problem("[1/tanh(1000), 1]"))
     result = run_derive("solve", str(path))
     assert result.returncode == 2 and "narrow.yaml: parameters.M.range: low" in result.stderr, result.stderr
+
+
+def test_a_fixed_value_is_printed_as_the_answers_use_it(tmp_path):
+    """A trial's bowling lane, `L: {value: 18.29}` without sig_figs: the worksheet and key printed
+    18.3 (the default 3 figures) while the answers used 18.29, so a key value disagreed with the
+    printed data. A fixed decimal now keeps its own figures; with fewer sig_figs given it is refused."""
+    from derive.problem import load
+    text = (Path(__file__).parent / "textbook/states/puck_slides_to_stop.yaml").read_text()
+    text = text.replace("g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.8}",
+                        "g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.8066}")
+    assert load(str(write_problem(tmp_path, text))).parameters["g"].sig_figs == 5
+    message = refused(tmp_path, text.replace("value: 9.8066}", "value: 9.8066, sig_figs: 3}"), "parameters.g.sig_figs")
+    assert "has 5 significant figures" in message and "sig_figs: 5" in message

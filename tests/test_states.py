@@ -718,7 +718,13 @@ def test_kinetic_friction_whose_normal_force_changes_on_the_way_is_an_engine_lim
     the way: derive's check of the kept force (derive.mechanics.work) refuses it, never a wrong number."""
     result = solve(tmp_path, ROUGH_BOWL)
     assert result.returncode == 1, result.stdout + result.stderr
-    assert "kinetic friction whose normal force N^block changes on the way" in result.stderr
+    assert "kinetic friction whose normal force changes on the way (its motion curves" in result.stderr
+    # where the motion is a line but the normal force still changes (a cord pulling up at a slant
+    # from a high peg), the check along the way refuses it
+    peg = TABLE_AND_PULLEY.replace("table: {plane: {angle: 0, through: [0, R]}}", "table: {plane: {angle: 0, through: [0, -R]}}")
+    peg = peg.replace("at: [-D, R], on: table", "at: [-D, -R], on: table")
+    result = solve(tmp_path, peg)
+    assert result.returncode == 1 and "whose normal force N^block changes on the way" in result.stderr, result.stderr
 
 
 def test_forces_where_a_slide_stops_are_refused_and_the_next_segment_decides_afresh(tmp_path):
@@ -827,3 +833,37 @@ ask:
   v: {meaning: speed when it leaves, of: ball.speed, in: off, unit: m/s}
   w: {meaning: angular velocity then, of: ball.angular_velocity, in: off, unit: rad/s}
 """
+
+
+def test_kinetic_friction_asked_in_a_state_opposes_the_slip_there():
+    """`block.friction` asked `in:` a state of a slide was a KeyError (an internal error): the
+    sliding contact has no friction unknown. It is mu_k N along the surface's tangent, against the
+    slip in that state."""
+    from derive.answers import Solution
+    solution = Solution(problem.load(str(Path(__file__).parent / "textbook/states/block_down_rough_incline.yaml")))
+    contact = solution.scene_in("lower").constraint("block_contact")
+    normal = solution.in_state("lagrange", "lower")[contact.unknowns()["normal"]]
+    along = solution._contact_expression("block", "friction", solution.derivations_in("lower")["lagrange"], "lower")
+    slip = contact.slip(solution.coordinates).xreplace(solution.states["lower"].values)
+    point = {p.symbol: (p.range[0] + p.range[1]) / 2 if p.range else p.value
+             for p in solution.problem.parameters.values()}
+    assert abs(float(along.xreplace(point))) == pytest.approx(float((contact.kinetic * normal).xreplace(point)))
+    assert float((along * slip).xreplace(point)) < 0
+
+
+def test_rates_of_a_block_over_a_disk_pulley_name_the_velocity_they_leave_open(tmp_path):
+    """A trial's table and disk pulley given its rates: block.velocity.x alone was told it left
+    ydot_weight open (the cord fixes it; the weight's swing, xdot_weight, is the open one), and
+    with both of the weight's given, that the rates broke a constraint: the cord's run |L - 2 r|
+    was not read as placed."""
+    text = TABLE_AND_PULLEY.replace("    dropped: {when: {hanger.y: -D - R}}",
+                                    "    pushed: {rates: {block.velocity.x: v0}}\n"
+                                    "    dropped: {from: pushed, when: {hanger.y: -D - R}}").replace(
+        "parameters:\n", "parameters:\n  v0: {meaning: speed it is pushed at, unit: m/s, value: 0.5}\n")
+    message = refused(tmp_path, text, "scene.states.pushed")
+    assert "leave 1 velocity open (xdot_hanger)" in message
+    given = text.replace("{block.velocity.x: v0}", "{block.velocity.x: v0, hanger.velocity.x: 0, hanger.velocity.y: -v0}")
+    result = solve(tmp_path, given)
+    assert result.returncode == 0, result.stderr
+    v = float(json.loads(result.stdout)["answers"]["v"]["value"])  # (m1 + m2 + M/2) (v^2 - v0^2)/2 = (m2 - mu m1) g R
+    assert v == pytest.approx(math.sqrt(0.25 + 2 * (3 - 0.25 * 4) * 9.81 * 0.1 / (4 + 3 + 2 / 2)), rel=1e-12)

@@ -639,6 +639,7 @@ EXPECTED.update({
         "t": lambda s: sp.sqrt(2 * s.d / (s.g * (_sin(s.theta) - s.mu * _cos(s.theta)))),
         "N": lambda s: s.m * s.g * _cos(s.theta),
         "K": lambda s: s.m * s.g * s.d * (_sin(s.theta) - s.mu * _cos(s.theta)),
+        "f": lambda s: s.mu * s.m * s.g * _cos(s.theta),
     },
     # Halliday ch. 8: up a rough incline at v0, it stops after d = v0^2/(2 g (sin + mu_k cos)), at
     # the height d sin(theta), in v0/(g (sin + mu_k cos)); tan(theta) > mu_k, so it slides back,

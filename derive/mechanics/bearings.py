@@ -227,14 +227,14 @@ def angular_momentum_by_integral(shape: str, mass, sizes: tuple, rate, tilt, rol
     return integrand.applyfunc(lambda e: tidy(sp.integrate(sp.expand(e), *limits) if limits else e))
 
 
-#: The vectors a file may ask of a body in bearings (derive.scene.BEARING_QUANTITIES), by the key
+#: The vectors a file may ask of a body in bearings (derive.solid_scene.BEARING_QUANTITIES), by the key
 #: `motion` gives each.
 VECTORS = {"angular_momentum": "angular_momentum", "bearings.torque": "torque", "bearings.total_force": "force",
            "bearings.A.force": "bearing.A", "bearings.B.force": "bearing.B"}
 
 
 def quantity(found: dict, detail: str, tilt, apart=None) -> sp.Expr:
-    """One quantity a file may ask (derive.scene.BEARING_QUANTITIES) from a route's `motion`: a
+    """One quantity a file may ask (derive.solid_scene.BEARING_QUANTITIES) from a route's `motion`: a
     component or magnitude of a vector (VECTORS), the angle between L and omega (along +z), the
     kinetic energy, the drive's couple about the shaft, or the force of each bearing of a pair
     `apart` that supplies the torque across the shaft where the supports exert no net force.

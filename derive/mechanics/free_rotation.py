@@ -44,7 +44,7 @@ from sympy.physics import mechanics as me
 
 from derive.mechanics.derivation import KINETIC, Step
 from derive.mechanics.tidying import tidy
-from derive.scene import FREE_ROTATION_QUANTITIES
+from derive.solid_scene import FREE_ROTATION_QUANTITIES
 
 ROUTES = ("newton_euler", "lagrange")
 #: The asks of a symmetric body's free precession (the others: a steady rotation about an axis of a rank).

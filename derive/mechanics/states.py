@@ -40,7 +40,7 @@ import sympy as sp
 
 from derive.mechanics import first_integrals, first_root, free_flight, work
 from derive.mechanics.derivation import KINETIC, Derivation, Step
-from derive.mechanics.tidying import root, tidy
+from derive.mechanics.tidying import radicals, root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies
 from derive.mechanics.state_errors import Curved, StateError, StateLimit
@@ -88,7 +88,8 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     constraint."""
     placement = {c.q: sp.Integer(0) for c in coords.all}
     given = {c.u: sp.sympify(value) for c, value in rates.items()}  # safe: expressions derive.expr parsed, or ints
-    rows = [coords.ddt(g).xreplace(placement).xreplace(given) for c in scene.constraints for g in c.gaps(coords)]
+    rows = [tidy(radicals(coords.ddt(g).xreplace(placement).xreplace(given), scene.placed))  # a run |L - 2 r| as
+            for c in scene.constraints for g in c.gaps(coords)]  # placed: else a weight's swing reads as fixed
     others = [c.u for c in coords.all if c.u not in given]
     solved = {}
     if others:
@@ -357,7 +358,7 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     reached = _arrive(path, condition, derivation, decide)
     if not _on_line(scene, coords, path, reached.end, ratios, derivation, decide):
         raise curved
-    extents = [(tidy(e.xreplace(reached.values)), meaning)
+    extents = [(e.xreplace(reached.values), meaning)  # per variant in numbers: tidying took minutes (a slanted cord)
                for part in scene.constraints for e, meaning in part.extents(coords)]
     _positive_at_the_middle(extents, decide, ": narrow the ranges to where the state is on the scene's geometry")
     path = dataclasses.replace(path, line=(reached.end, decide))

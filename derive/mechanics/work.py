@@ -32,9 +32,15 @@ from derive.parts import listed, titled
 from derive.prose import Sentence, capital
 from derive.scene import TIME, Scene
 
-#: Points from the start to the state (the fractions k/KEPT_AT, both ends) where a contact force
-#: taken at its start value is checked to have it.
-KEPT_AT = 4
+#: Where a contact force taken at its start value is checked to have it: fractions of the way from
+#: the start to the state (not the state itself: where the motion stops there its rate, the root of
+#: a kinetic energy that is zero, may round to an imaginary number).
+CHECKED_AT = (sp.Integer(0), sp.Rational(1, 4), sp.Rational(1, 2), sp.Rational(3, 4), sp.Rational(31, 32))
+
+
+#: Kinetic friction where the motion curves: its normal force changes with the speed.
+CURVED = ("find a state reached under kinetic friction whose normal force changes on the way (its motion curves: "
+          "derive follows a slide along a straight line of the coordinates, as of a block on a plane)")
 
 
 def force_along(scene: Scene, coords: Coordinates, coordinate: Coordinate, start: dict, positions: dict,
@@ -44,12 +50,15 @@ def force_along(scene: Scene, coords: Coordinates, coordinate: Coordinate, start
     at their values at the start ((force, value) pairs: kinetic friction's normal force).
 
     Raises StateLimit where the force depends on the speed, the time or an acceleration (a
-    damper, a force given in t)."""
+    damper, a force given in t), or holds a contact force where the motion is not a straight line
+    of the coordinates (a block sliding in a bowl presses the harder the faster it goes)."""
     speed = coordinate.u
     force = tidy(nonconservative_power(scene, coords).xreplace(velocities).xreplace(positions) / speed)
     unknowns = {f for c in scene.constraints for f in c.unknowns().values()}
     kept = ()
     if force.free_symbols & unknowns:
+        if any(tidy(sp.diff(p, coordinate.q, 2)) != 0 for p in positions.values()):
+            raise StateLimit(CURVED)
         solved = derivation.at(start).raw
         kept = tuple((f, tidy(solved[f])) for f in sorted(force.free_symbols & unknowns, key=str))
         force = tidy(force.xreplace(dict(kept)))
@@ -61,7 +70,7 @@ def force_along(scene: Scene, coords: Coordinates, coordinate: Coordinate, start
 
 def check_kept(path, end: sp.Expr, derivation: Derivation, decide) -> None:
     """Refuse (StateLimit) where a contact force the path's work took at its start value
-    (`path.kept`) does not keep it, at the middle of the parameter ranges, at KEPT_AT + 1 points
+    (`path.kept`) does not keep it, at the middle of the parameter ranges, at the points CHECKED_AT
     from the start to s = `end` (to 1e-8 of its size), each moving at the rate energy gives."""
     if not path.kept:
         return
@@ -70,8 +79,8 @@ def check_kept(path, end: sp.Expr, derivation: Derivation, decide) -> None:
     parameters = set().union(*(e.free_symbols for e in derivation.equations)) - set(order) - set(derivation.unknowns)
     solve = derivation.numeric({p: decide(p) for p in parameters})
     s0 = path.start[path.s]
-    for k in range(KEPT_AT + 1):
-        where = s0 + sp.Rational(k, KEPT_AT) * (end - s0)
+    for fraction in CHECKED_AT:
+        where = s0 + fraction * (end - s0)
         at = path.values(where, path.rate(where), settle=False)
         unknowns = solve(np.array([decide(at[symbol]) for symbol in order]))
         for force, value in path.kept:
