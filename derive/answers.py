@@ -247,9 +247,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             return [sp.true]
         normal, grip = self._grip(route)
         ratio = tidy(grip / normal)
-        contact = friction.frictional(self.scene)
-        return [sp.Ge(friction.static_coefficient(contact), sp.Abs(ratio)),
-                *(ratio > 0 if regime.direction > 0 else sp.true for regime in self.regimes[1:])]
+        return list(friction.where_each(friction.frictional(self.scene), self.regimes, ratio))
 
     def regime_index(self, values: dict[sp.Symbol, sp.Expr]) -> int | None:
         """The index in `regimes` of the regime these parameter values give (None when a

@@ -74,9 +74,8 @@ class StartRegimes:
         normal, needed = tidy(solved[forces["normal"]]), tidy(solved[forces["friction"]])
         self._presses(contact, normal, needed)
         ratio = tidy(needed / normal)
-        regimes = tuple(friction.regimes(self.dynamics_scene, contact))
-        where = (sp.Ge(friction.static_coefficient(contact), sp.Abs(ratio)),
-                 *(ratio > 0 if r.direction > 0 else sp.true for r in regimes[1:]))
+        regimes = tuple(self.regimes)
+        where = friction.where_each(contact, self.regimes, ratio)
         chosen = round(self._sample(sp.Piecewise(*((sp.Integer(k), w) for k, w in enumerate(where)))))
         taken = regimes[chosen]
         at = f"in the state {before}" if before else "at the start"
@@ -100,8 +99,7 @@ class StartRegimes:
         else:
             said = (f"so the {contact.body} slips, and kinetic friction, ", contact.kinetic * n,
                     ", acts against the slip, the way ", f, " points, as long as it slides.")
-        still = "rolling without slipping" if friction.regimes(self.dynamics_scene, contact)[0].name == "rolls" \
-            else "at rest"
+        still = "rolling without slipping" if self.regimes[0].name == "rolls" else "at rest"
         compared = "at least" if taken.direction == 0 else "less than"
         return Step(f"{at.capitalize()}: does the {contact.body} grip or slip?", (sp.Eq(n, normal), sp.Eq(f, needed)),
                     sentences=(Sentence((f"Held by static friction {at}, {still}, the {contact.body} would need the "

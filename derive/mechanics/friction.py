@@ -74,6 +74,14 @@ def regimes(scene: Scene, contact: Contact) -> list[Regime]:
     return result
 
 
+def where_each(contact: Contact, regimes: list[Regime], ratio: sp.Expr) -> tuple:
+    """Where each of `regimes` holds, in their order (each where those before do not), from f/N,
+    the friction the stuck contact needs over its normal force: stuck while mu_s >= |f/N|, then
+    slipping the way f points."""
+    return (sp.Ge(static_coefficient(contact), sp.Abs(ratio)),
+            *(ratio > 0 if regime.direction > 0 else sp.true for regime in regimes[1:]))
+
+
 def static_coefficient(contact: Contact) -> sp.Expr:
     """mu_s, or mu_k where the file gives only that."""
     return contact.static if contact.static is not None else contact.kinetic
