@@ -191,6 +191,15 @@ def as_text(result: dict, solution: Solution) -> str:
             lines += indented(pretty(f"{regime.name}: ", *_where(where)))
         if result["regimes"]["applies"]:
             lines.append(f"  at these parameters the body {result['regimes']['applies']}")
+    started = {name: start for name, start in solution.starts.items() if start is not None} if solution.scene.states \
+        else {}
+    if started:  # the regime a segment's motion takes, which the equations above (held) do not show
+        lines += ["", "How each segment starts (decided by friction, as at the middle of the ranges):"]
+        for name, start in started.items():
+            was = solution.scene.states[name].start
+            lines.append(f"  to {name}: the {start.body} {start.taken.name} "
+                         f"{'from the state ' + was if was else 'from rest at the placement'}"
+                         + (", against kinetic friction" if start.taken.direction else ""))
     for state, cases in solution.impact_regimes().items():
         lines += ["", f"In the bounce {state} the contact (each where those above do not hold):"]
         for regime in cases:

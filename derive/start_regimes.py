@@ -34,13 +34,15 @@ from derive.prose import Sentence
 class Start:
     """A segment's start where the contact does not slip: where each regime holds (`where`, in
     the order of `regimes`, each where those before do not), the one taken at the middle of the
-    ranges (`chosen`), the joints the motion has in it, and the step that says why."""
+    ranges (`chosen`), the joints the motion has in it, the step that says why, and the body on
+    the contact."""
 
     regimes: tuple[friction.Regime, ...]
     where: tuple
     chosen: int
     joints: tuple
     step: Step
+    body: str
 
     @property
     def taken(self) -> friction.Regime:
@@ -87,7 +89,7 @@ class StartRegimes:
         others = tuple(j for j in joints if j.name != contact.name)
         motion = stuck if taken.direction == 0 else others + (friction.slipping(contact, taken.direction),)
         step = self._start_step(contact, held, taken, normal, needed, at)
-        return Start(regimes, where, chosen, motion, step)
+        return Start(regimes, where, chosen, motion, step, contact.body)
 
     def _start_step(self, contact: Contact, held: Contact, taken: friction.Regime, normal: sp.Expr,
                     needed: sp.Expr, at: str) -> Step:

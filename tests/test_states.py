@@ -867,3 +867,13 @@ def test_rates_of_a_block_over_a_disk_pulley_name_the_velocity_they_leave_open(t
     assert result.returncode == 0, result.stderr
     v = float(json.loads(result.stdout)["answers"]["v"]["value"])  # (m1 + m2 + M/2) (v^2 - v0^2)/2 = (m2 - mu m1) g R
     assert v == pytest.approx(math.sqrt(0.25 + 2 * (3 - 0.25 * 4) * 9.81 * 0.1 / (4 + 3 + 2 / 2)), rel=1e-12)
+
+
+def test_solve_says_how_each_segment_starts_where_friction_decides_it(tmp_path):
+    """A trial found `derive solve`'s text showed only the equations held at rest ("Static
+    friction ... it grips") for a block that slides in every state: it now says how each segment
+    starts, as the worked solution does."""
+    path = Path(__file__).parent / "textbook/states/crate_up_rough_ramp.yaml"
+    done = run_derive("solve", str(path))
+    assert done.returncode == 0, done.stderr
+    assert "to back: the crate slips from the state highest, against kinetic friction" in done.stdout
