@@ -385,6 +385,10 @@ class CrossChecks:
         at_reference = {c.q: 0 for c in coords.all}
         velocities = [c.u for c in coords.all]
         matrix, rhs = sp.linear_eq_to_matrix([r.xreplace(at_reference) for r in rates], velocities)
+        # at sample parameters a coefficient zero only by nested roots' identities (a cord's run to a
+        # weight hanging straight down, for its x) is a number: zero where it vanishes to 60 digits,
+        # else rref took it for a pivot and the velocities came out near 1e77, then NaN
+        matrix = matrix.applyfunc(lambda e: sp.Integer(0) if e.is_number and e != 0 and abs(sp.N(e, 60)) < 1e-45 else e)
         reduced, pivots = row_reduced(matrix.row_join(rhs))  # once: the free velocities, the rest in them
         free = [u for i, u in enumerate(velocities) if i not in pivots]
         solvable = len(velocities) not in pivots

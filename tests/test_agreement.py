@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 from flint import arb, ctx
 
-from derive import agreement
+from derive import agreement, report
 from derive.agreement import agree
 from derive.answers import Solution
 from derive.crosschecks import ROUTES, CheckFailure
@@ -96,3 +96,51 @@ def test_the_routes_check_catches_a_wrong_unknown_at_a_state(monkeypatch):
     monkeypatch.setattr(Derivation, "balls_at", mutated)
     with pytest.raises(CheckFailure, match="disagree on"):
         Solution(load("string_wrapped_disk")).checks()
+
+
+INCLINE_DISK_PULLEY = """id: incline_disk_pulley_rough
+title: A block on a rough incline, a massive pulley at the top, and a hanging block
+topic: friction
+source: Serway & Jewett ch. 10 problems (incline, pulley with moment of inertia, hanging mass, kinetic friction)
+parameters:
+  m1: {meaning: mass of the block on the incline, unit: kg, range: [2, 3], sig_figs: 2}
+  m2: {meaning: mass of the hanging block, unit: kg, range: [5, 6], sig_figs: 2}
+  M: {meaning: mass of the pulley (uniform disk), unit: kg, range: [1, 2], sig_figs: 2}
+  r: {meaning: radius of the pulley, unit: cm, range: [8, 12], sig_figs: 2}
+  theta: {meaning: angle of the incline, unit: deg, range: [25, 35], sig_figs: 2}
+  mu_s: {meaning: coefficient of static friction, unit: "1", range: [0.3, 0.4], sig_figs: 2}
+  mu_k: {meaning: coefficient of kinetic friction, unit: "1", range: [0.15, 0.25], sig_figs: 2}
+  h: {meaning: drop of the hanging block, unit: m, range: [0.5, 1], sig_figs: 2}
+  D: {meaning: distance from the block to the pulley along the slope, unit: m, value: 2}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    ramp: {plane: {angle: theta, descends: left, through: [0, 0]}}
+  bodies:
+    block: {shape: point, mass: m1, at: [0, 0], on: ramp, contact: sliding, friction: {static: mu_s, kinetic: mu_k}}
+    pulley: {shape: disk, mass: M, radius: r, joint: fixed_axle, at: [D*cos(theta) + r*sin(theta), D*sin(theta) - r*cos(theta)]}
+    weight: {shape: point, mass: m2, at: [D*cos(theta) + r*sin(theta) + r, D*sin(theta) - 1.5*D]}
+  cords:
+    rope: [block, {over: pulley}, weight]
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration of the weight, of: weight.acceleration.y, unit: m/s^2}
+question: |
+  A block ({{ m1 }}) on a rough incline at {{ theta }} (mu_s = {{ mu_s }}, mu_k = {{ mu_k }}) is tied by a cord over a uniform disk
+  pulley ({{ M }}, radius {{ r }}) to a hanging block ({{ m2 }}). Released from rest: speed after a drop {{ h }}, time, tensions.
+"""
+
+
+def test_check_states_on_a_cord_hanging_straight_down_have_finite_velocities(tmp_path):
+    """A trial's block on a rough incline tied over a disk pulley to a hanging block stopped with
+    "internal error: Indeterminate" in the routes check: the admissible velocities it compares the
+    routes at came out near 1e77 (then NaN), as rref took for a pivot the hanging run's coefficient
+    of the weight's x, zero only by nested roots' identities at the sample parameters."""
+    path = tmp_path / "incline.yaml"
+    path.write_text(INCLINE_DISK_PULLEY)
+    solution = Solution(load(str(path)))
+    for index in range(len(solution.regimes)):
+        for state in solution._check_states(index):
+            assert all(abs(float(sp.N(v, 30))) < 1e3 for v in state.values()), state
+    assert report.solve(solution.problem, solution=solution)["checks"]["lagrange_vs_newton_euler"]["passed"]

@@ -280,3 +280,4 @@ def test_a_kinetic_energy_of_zero_where_a_slide_stops_is_not_a_failure(tmp_path)
     report = chain_simulation.simulate(Solution(load(str(path))))
     assert report.passed, report.notes
     assert {"E", "x_stop", "t"} <= set(report.compared)
+
