@@ -179,11 +179,6 @@ def _answer(solution, report: SimulationReport, name: str, carried: dict, took: 
     elif q.kind in RATE_KINDS:
         start = solution.scene.states[state].start
         simulated = _float(solution.rate_at(q, carried[state], carried.get(start)), values)
-        if start in carried and q.kind not in ("kinetic_energy_change", "position", "angle"):
-            # its size where the segment starts: a speed or an energy that ends at zero (a stop)
-            # is compared to it, not to its own zero
-            scale = abs(_float(solution.rate_at(q, carried[start], carried.get(solution.scene.states[start].start)),
-                               values))
     else:
         read = _unknown(solution, q, state)
         if read is None:

@@ -182,10 +182,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
     def _slides_after(self, joints: tuple, values: dict) -> tuple:
         """After the contact slid through an impact, kinetic friction against its slip then (held
         where it does not slip: the impact left it rolling)."""
-        contact = self._sliding
-        way = self._sample(contact.slip(self.coordinates).xreplace(values))
-        return in_place(joints, friction.slipping(contact, -1 if way > 0 else 1) if way else
-                        self._gripped(contact.name, values))
+        return in_place(joints, self._against_slip(values) or self._gripped(self._sliding.name, values))
 
     def _middle_regime(self, impact: impacts.Impact) -> impacts.Regime:
         """The regime a rough bounce takes at the middle of the parameter ranges."""
@@ -237,8 +234,15 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             return ()
         if state.name not in found:  # the state itself, before its slip is known
             return (friction.slipping(contact, 0),)
-        way = self._sample(contact.slip(self.coordinates).xreplace(found[state.name].values))
-        return () if way == 0 else (friction.slipping(contact, -1 if way > 0 else 1),)
+        against = self._against_slip(found[state.name].values)
+        return () if against is None else (against,)
+
+    def _against_slip(self, values: dict) -> Contact | None:
+        """The contact of `_sliding` sliding with kinetic friction against its slip at `values`,
+        the way it slips at the middle of the ranges; None where it does not slip."""
+        contact = self._sliding
+        way = self._sample(contact.slip(self.coordinates).xreplace(values))
+        return None if way == 0 else friction.slipping(contact, -1 if way > 0 else 1)
 
     def _slipping(self, name: str) -> SlippingClutch | Contact | None:
         """The part of that name that slips until it grips: a slipping clutch, or a contact with
