@@ -17,8 +17,13 @@ question's general feedback and in the Canvas zip once, with its body and forces
 The tolerance follows the answer's policy: one unit in the last significant digit shown (the
 default), a percentage (`2%`) or an absolute amount in the answer's unit. Canvas keeps four decimal
 places of a numeric answer and its margin, so a quantity whose margin would fall below 1e-4 is
-asked in a scaled unit (10⁻ᵏ UNIT), one for all the variants of a question (`exponent`). `check`
-holds every exported tolerance to the LMS's limits.
+asked in a scaled unit (10⁻ᵏ UNIT), one for all the variants of a question (`exponent`). Moodle
+widens every interval it grades by 1e-14 · max(1, |answer|) (question/type/numerical/question.php,
+get_tolerance_interval; Moodle 4.5 by 1e-14 · max(|tolerance|, |answer|, 1e-14)), so below 1e-14
+any answer within 1e-28 of a tiny one would pass, zero and the wrong sign too: a quantity whose
+tolerance falls below 1e-8 is asked in a scaled unit there as well (`MOODLE_FLOOR`), so that the
+widening is at most a millionth of the tolerance. `check` holds every exported tolerance to the
+LMS's limits.
 
 A field is labelled as the worksheets name its symbol (render.symbol_latex: Omega_fast as
 \\(\\Omega_{\\mathrm{fast}}\\)) and its unit is text as a student reads it (kg·m², none for a pure
@@ -116,17 +121,24 @@ def _plain(number: Decimal) -> str:
 CANVAS_PLACES = 4  # Canvas rounds a numeric answer and its margin to four decimal places
 
 
-def exponent(margins: Iterable[str]) -> int:
+#: The least tolerance Moodle is given, in the question's unit and as a share of the answer: Moodle
+#: widens the interval it grades by 1e-14 · max(1, |answer|) (see the module), a millionth of this.
+MOODLE_FLOOR = Decimal("1e-8")
+
+
+def exponent(margins: Iterable[str], floor: Decimal = Decimal(1).scaleb(-CANVAS_PLACES)) -> int:
     """The k of a question's unit, 10^-k times the answer's (k a multiple of 3; 0: the unit itself):
-    the least for which every margin of its variants is at least 1e-4 and survives Canvas's
-    rounding. One unit for all the variants of a question, whichever a student is given.
+    the least for which every margin of its variants is at least `floor` (Canvas's: 1e-4, which
+    survives its rounding to four places; Moodle's: MOODLE_FLOOR). One unit for all the variants
+    of a question, whichever a student is given.
 
     >>> exponent(["0.01", "0"]), exponent(["1e-7", "1e-5"]), exponent(["1e-30", "1e-28"])
     (0, 3, 27)
+    >>> exponent(["1e-7"], MOODLE_FLOOR), exponent(["1e-48"], MOODLE_FLOOR)
+    (0, 42)
     """
-    smallest = Decimal(1).scaleb(-CANVAS_PLACES)
-    return max((3 * ((smallest.adjusted() - tol.adjusted() + 2) // 3)
-                for tol in map(Decimal, margins) if 0 < tol < smallest), default=0)
+    return max((3 * ((floor.adjusted() - tol.adjusted() + 2) // 3)
+                for tol in map(Decimal, margins) if 0 < tol < floor), default=0)
 
 
 def scaled(value: str, margin: str, k: int) -> tuple[str, str]:
@@ -155,21 +167,26 @@ def _questions(items: list[Item]) -> dict[tuple[str, str], list[Item]]:
 
 def _exponent(question: list[Item], target: str) -> int:
     """The k of a question's unit 10^-k UNIT, one for all its variants, numerical or multiple choice:
-    where any is numerical, Canvas's (`exponent`) or Moodle's own unit (Moodle stores doubles);
+    where any is numerical, the least that each LMS grades right (`exponent`: Canvas's four places,
+    Moodle's widening), and where that needs a scaled unit at all, one that shows the largest
+    value between 1 and 1000 if that is larger (587 × 10⁻⁴⁸ kg·m², not 0.000587 × 10⁻⁴² kg·m²);
     where every one is multiple choice, what shows its largest value between 1 and 1000 (12.3 ×
     10⁻⁶ m, not 0.0000123 m), or the unit itself where its values read well in it (1e-3 to 1e6).
 
     >>> item = Item("p", "P", 1, "", "I", "inertia", "1.23e-5", "kg·m²", "1e-7", ("2.46e-5", "6.1e-6", "1e-5"))
     >>> _exponent([item], "qti"), choice_text("1.23e-5", "kg·m²", 6)
     (6, '12.3 × 10⁻⁶ kg·m²')
+    >>> tiny = Item("p", "P", 1, "", "I", "inertia", "5.87e-46", "kg·m²", "1e-48")
+    >>> _exponent([tiny], "moodle"), _exponent([tiny], "qti")
+    (48, 48)
     """
     numerical = [item.tolerance for item in question if not item.wrong]
-    if numerical:
-        return exponent(numerical) if target == "qti" else 0
     largest = max(abs(Decimal(v)) for item in question for v in (item.value, *item.wrong))
-    if not largest or Decimal("1e-3") <= largest < Decimal("1e6"):
-        return 0
-    return -3 * (largest.adjusted() // 3)
+    readable = -3 * (largest.adjusted() // 3) if largest else 0
+    if numerical:
+        k = exponent(numerical) if target == "qti" else exponent(numerical, MOODLE_FLOOR)
+        return max(k, readable) if k else 0
+    return 0 if not largest or Decimal("1e-3") <= largest < Decimal("1e6") else readable
 
 
 def choice_text(value: str, unit: str, k: int) -> str:
@@ -182,7 +199,7 @@ def choice_text(value: str, unit: str, k: int) -> str:
 #: Magnitudes both LMSs store as numbers (double precision, with room for the tolerance).
 DOUBLE_RANGE = (Decimal("1e-300"), Decimal("1e300"))
 #: What each LMS can hold: Moodle compares in double precision; Canvas keeps 4 decimal places.
-LIMITS = {"moodle": "a tolerance of at least 1e-14 of the answer (double precision)",
+LIMITS = {"moodle": "a tolerance of at least 1e-8 of the answer (Moodle widens every interval by 1e-14 of it)",
           "qti": "a margin of at least 1e-4 after scaling (Canvas keeps four decimal places)"}
 
 
@@ -200,7 +217,7 @@ def check(items: list[Item], target: str) -> None:
         if value and tol >= value:
             raise InputError(f"{where}: ±{_with_unit(item.tolerance, item.unit)} accepts zero and the wrong sign "
                              f"(the answer is {item.value}); narrow it")
-        if target == "moodle" and value and tol < value * Decimal("1e-14"):
+        if target == "moodle" and value and tol < value * MOODLE_FLOOR:
             raise InputError(f"{where}: ±{_with_unit(item.tolerance, item.unit)} is finer than Moodle can compare "
                              f"({LIMITS['moodle']}); use fewer significant figures")
         if target == "qti" and value and not item.wrong and not _survives_canvas(*scaled(item.value, item.tolerance,
@@ -308,10 +325,15 @@ def _label(item: Item) -> str:
 
 
 def _cloze(item: Item, k: int) -> str:
-    """A cloze field: NUMERICAL with its tolerance, or MULTICHOICE with the unit on each choice, in
-    the question's unit 10^-k UNIT (`_exponent`)."""
+    """A cloze field: NUMERICAL with its tolerance and the unit after it, or MULTICHOICE with the
+    unit on each choice, in the question's unit 10^-k UNIT (`_exponent`).
+
+    >>> _cloze(Item("p", "P", 1, "", "I", "inertia", "5.87e-46", "kg·m²", "1e-48"), 48)
+    '{1:NUMERICAL:=587:1} 10⁻⁴⁸ kg·m²'
+    """
     if not item.wrong:
-        return _with_unit(f"{{1:NUMERICAL:={item.value}:{item.tolerance}}}", item.unit)
+        value, margin = scaled(item.value, item.tolerance, k)
+        return _with_unit(f"{{1:NUMERICAL:={value}:{margin}}}", scaled_unit(item.unit, k))
     options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(choice_text(v, item.unit, k))}"
                        + (f"#{_cloze_text(why)}" if why else "") for v, right, why in choices(item))
     return f"{{1:MULTICHOICE_V:{options}}}"

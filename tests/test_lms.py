@@ -357,4 +357,61 @@ def test_multiple_choice_options_share_one_scaled_unit_per_question_in_both_lms(
     texts = [e.text for e in assessment.iter("{*}mattext")]
     assert any(t.endswith("(in 10⁻⁹ kg·m²)</p>") for t in texts)  # the numerical variant's margin needs 10⁻⁹
     assert "12300 × 10⁻⁹ kg·m²" in texts  # and the other variant's options use it too
-    assert lms._exponent(mixed, "moodle") == 0  # Moodle stores the numerical answer as it is
+    # Moodle: the numerical variant's 1e-11 is below its floor, 1e-8, so the unit is scaled, and to
+    # show the largest value between 1 and 1000
+    assert lms._exponent(mixed, "moodle") == 6
+
+
+# --- Moodle grades tiny quantities right (issue 35, item 1) ------------------------------------
+
+def _moodle_interval(answer: float, tolerance: float, rule: str) -> tuple[float, float]:
+    """The interval Moodle's numerical grader accepts for an answer with a nominal tolerance, in
+    double precision as PHP computes it (precision = 14): qtype_numerical_answer::
+    get_tolerance_interval in question/type/numerical/question.php, Moodle 4.5 ("4.5") and before
+    ("old")."""
+    epsilon = 10.0 ** -14
+    widened = tolerance + epsilon * (max(abs(tolerance), abs(answer), epsilon) if rule == "4.5" else max(1, abs(answer)))
+    return answer - widened, answer + widened
+
+
+def _moodle_fields(quiz_path: Path) -> list[tuple[str, str, str]]:
+    """(value, tolerance, unit shown after the field) of each NUMERICAL field of a Moodle XML file."""
+    quiz = ET.parse(quiz_path).getroot()
+    return [re.fullmatch(r".* = \{1:NUMERICAL:=([^:]+):([^}]+)\}\s*(.*)", p).groups()
+            for q in quiz.iter("question") if q.get("type") == "cloze"
+            for p in re.findall(r"<p>(.*?)</p>", q.find("questiontext/text").text) if "{1:NUMERICAL" in p]
+
+
+def test_moodle_grades_tiny_answers_right_under_both_of_its_rules(labelled):
+    """A diatomic molecule's I ~ 1e-46 kg·m² with its tolerance as it is would be graded by Moodle
+    with 1e-28 of slack (1e-14 under older Moodles): 0 and the negation would pass. Each field read
+    back through Moodle's rule accepts the answer and 0.9 tolerances off, and refuses 0, the
+    negation and 1.1 tolerances off."""
+    fields = _moodle_fields(labelled / "moodle.xml")
+    assert fields and any(unit.startswith("10⁻") for _, _, unit in fields)  # tiny ones are scaled
+    for value, tolerance, unit in fields:
+        answer, margin = float(value), float(tolerance)
+        for rule in ("4.5", "old"):
+            low, high = _moodle_interval(answer, margin, rule)
+            accepted = lambda typed: low <= typed <= high
+            assert accepted(answer) and accepted(answer + 0.9 * margin) and accepted(answer - 0.9 * margin)
+            assert not accepted(answer + 1.1 * margin) and not accepted(answer - 1.1 * margin), (value, tolerance, rule)
+            if answer:
+                assert not accepted(0.0) and not accepted(-answer), (value, tolerance, rule)
+    key = json.loads((labelled / "key.json").read_text())
+    inertia = [v["problems"]["diatomic_molecule"]["answers"]["I"]["value"] for v in key["variants"]]
+    shown = [f for f in fields if f[2].endswith("kg·m²") and f[2].startswith("10⁻")]
+    assert len(shown) == len(inertia)
+    k = -int(shown[0][2].split()[0][2:].translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")))
+    assert {f[2] for f in shown} == {shown[0][2]}  # one unit for every variant of the question
+    assert sorted(Decimal(f[0]).scaleb(-k) for f in shown) == sorted(map(Decimal, inertia))
+
+
+def test_moodle_scales_a_question_whose_tolerance_falls_below_its_floor():
+    tiny = lms.Item("p", "P", 1, "q", "I", "inertia", "5.87e-46", "kg·m²", "1e-48")
+    html = ET.fromstring(lms.moodle([tiny], "s")).find("question[@type='cloze']/questiontext/text").text
+    assert "{1:NUMERICAL:=587:1} 10⁻⁴⁸ kg·m²" in html
+    plain = lms.Item("p", "P", 1, "q", "I", "inertia", "2.13", "kg·m²", "0.01")
+    assert "{1:NUMERICAL:=2.13:0.01} kg·m²" in lms.moodle([plain], "s")
+    with pytest.raises(InputError, match="finer than Moodle can compare"):
+        lms.check([lms.Item("p", "P", 1, "q", "I", "inertia", "2.13", "kg·m²", "1e-9")], "moodle")
