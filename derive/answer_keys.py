@@ -45,7 +45,8 @@ CSV_FIELDS = ("variant", "problem", "answer", "value", "tolerance", "unit", "mea
 @dataclass(frozen=True)
 class Keys:
     """A set's keys as text: key.json, key.csv, the rows of key.tex, and a note for each answer of a
-    multiple-choice set that too few mistakes apply to (asked as a number)."""
+    multiple-choice set that too few mistakes apply to (asked as a number), and for each general
+    result that the LMS exports leave out."""
 
     json: str
     csv: str
@@ -53,12 +54,18 @@ class Keys:
     notes: list[str]
 
 
+#: Why a general result (an expression) is in no LMS export: key.json's `lms` of the answer.
+LEFT_OUT = "not in the Moodle and Canvas exports: {} a general result (an expression), which an LMS cannot grade as a number"
+
+
 def write(problem_set: ProblemSet, prepared: list[ProblemVariants], variants: int, seed: int,
-          with_distractors: bool = False, choice: bool = False) -> Keys:
+          with_distractors: bool = False, choice: bool = False, lms: bool = False) -> Keys:
     """The keys of the set's `variants` variants. With `with_distractors` or `choice`, each answer's
     wrong values from mistaken set-ups; with `choice`, an answer too few apply to is marked as
-    asked as a number, with why (`numerical`, and a note)."""
-    keys = [_ProblemKey(item, with_distractors or choice, choice) for item in prepared]
+    asked as a number, with why (`numerical`, and a note). With `lms` (the set is exported to an
+    LMS), each general result is marked as left out of the exports (`lms`, and a note: a problem
+    all of whose answers are general results is missing from the quiz)."""
+    keys = [_ProblemKey(item, with_distractors or choice, choice, lms) for item in prepared]
     top = Stencil(json_text.dumps({"set": problem_set.id, "title": problem_set.title, "seed": seed,
                                    "conventions": CONVENTIONS, "variants": Raw(hole("variants"))}))
     entry = Stencil(json_text.dumps({"variant": Raw(hole("variant")),
@@ -77,7 +84,7 @@ def write(problem_set: ProblemSet, prepared: list[ProblemVariants], variants: in
     csv.writer(header, lineterminator="\n").writerow(CSV_FIELDS)
     notes = [f"{problem_id}: ask.{name}, variant{'s' if len(numbers) > 1 else ''} {', '.join(map(str, numbers))}: "
              f"{note}" for (problem_id, name, note), numbers in numerical.items()]
-    return Keys(text, header.getvalue() + "".join(csv_rows), tex_rows, notes)
+    return Keys(text, header.getvalue() + "".join(csv_rows), tex_rows, notes + [n for key in keys for n in key.left_out])
 
 
 def _too_few(found: int) -> str:
@@ -95,9 +102,9 @@ class _ProblemKey:
     key.tex, each from a stencil cut once (an entry's stencil once for each of its layouts: how
     each answer's digits are vouched for, whether it is asked as a number)."""
 
-    def __init__(self, item: ProblemVariants, with_distractors: bool, choice: bool):
+    def __init__(self, item: ProblemVariants, with_distractors: bool, choice: bool, lms: bool):
         self.item, self.id = item, item.problem.id
-        self.with_distractors, self.choice = with_distractors, choice
+        self.with_distractors, self.choice, self.lms = with_distractors, choice, lms
         self._entries: dict[tuple, Stencil] = {}
         # the names of the holes (below) of each parameter, and each answer's: v value, t tolerance,
         # r and b the radius and bits of its certificate, d its distractors
@@ -146,6 +153,8 @@ class _ProblemKey:
                 answer["distractors"] = Raw(hole(f"d:{name}"))
             if name in numerical:
                 answer["numerical"] = Raw(hole(f"n:{name}"))
+            if general and self.lms:
+                answer["lms"] = LEFT_OUT.format("it is")
             answers[name] = answer
         parameters = {name: {"value": Raw(hole(f"p:{name}")), "unit": p.unit} for name, p in problem.parameters.items()}
         return Stencil(json_text.dumps({"parameters": parameters, "answers": answers}, indent))
@@ -192,6 +201,15 @@ class _ProblemKey:
                                             tolerance=None if name in general else hole("tolerance"),
                                             unit=units.siunitx_unit(ask.unit)))
                 for name, ask in self.item.problem.asks.items()}
+
+    @property
+    def left_out(self) -> list[str]:
+        """What the LMS exports leave out of this problem, for the terminal: the whole problem where
+        every answer is a general result, else each general result; nothing without `lms`."""
+        general = [name for name in self.item.problem.asks if name in self._general] if self.lms else []
+        if general and len(general) == len(self.item.problem.asks):
+            return [f"{self.id}: the whole problem is {LEFT_OUT.format('every answer is')}"]
+        return [f"{self.id}: ask.{name}: {LEFT_OUT.format('it is')}" for name in general]
 
     @cached_property
     def _general(self) -> set[str]:

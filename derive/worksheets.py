@@ -304,8 +304,9 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         diagrams = _free_body_figures(prepared) if formats & {"moodle", "qti"} else {}
         figures.update({name: drawn.tikz for name, drawn in diagrams.items()})
         progress("each variant's answers, certified, and the keys")
-        keys = answer_keys.write(problem_set, prepared, variants, seed, "distractors" in formats, choice)
-        for note in keys.notes:  # the set is built; these answers are asked as numbers
+        keys = answer_keys.write(problem_set, prepared, variants, seed, "distractors" in formats, choice,
+                                 lms=bool(formats & {"moodle", "qti"}))
+        for note in keys.notes:  # the set is built; these answers are asked as numbers, or left out of the LMS
             print(f"derive: warning: {note}", file=sys.stderr, flush=True)
         contexts = [_solutions_context(i, siunitx=True) for i in prepared]
         items = []

@@ -415,3 +415,21 @@ def test_moodle_scales_a_question_whose_tolerance_falls_below_its_floor():
     assert "{1:NUMERICAL:=2.13:0.01} kg·m²" in lms.moodle([plain], "s")
     with pytest.raises(InputError, match="finer than Moodle can compare"):
         lms.check([lms.Item("p", "P", 1, "q", "I", "inertia", "2.13", "kg·m²", "1e-9")], "moodle")
+
+
+def test_a_problem_whose_answers_are_all_general_results_is_said_to_be_left_out_of_the_lms(tmp_path):
+    """keplers_second_law's answers are expressions: no LMS can grade them, so the quiz has one
+    problem fewer than the worksheet. derive says so on the terminal and in key.json (issue 35)."""
+    out = tmp_path / "out"
+    done = run_derive("sheet", "keplers_second_law", "string_wrapped_disk", "--variants", "2", "--to", "moodle",
+                      "--out", str(out))
+    assert done.returncode == 0, done.stderr
+    assert "derive: warning: keplers_second_law: the whole problem is not in the Moodle and Canvas exports: every " \
+           "answer is a general result" in done.stderr
+    key = json.loads((out / "key.json").read_text())
+    for variant in key["variants"]:
+        assert all("cannot grade as a number" in a["lms"] for a in variant["problems"]["keplers_second_law"]["answers"].values())
+        assert all("lms" not in a for a in variant["problems"]["string_wrapped_disk"]["answers"].values())
+    categories = [q.findtext("category/text") for q in ET.parse(out / "moodle.xml").getroot().iter("question")
+                  if q.get("type") == "category"]
+    assert [c.rsplit("/", 1)[1] for c in categories] == ["string_wrapped_disk"]
