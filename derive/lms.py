@@ -94,6 +94,30 @@ def tolerance(value: str, policy: str | None = None) -> str:
     return _absolute(policy)
 
 
+def unfair(value: str, tolerance: str) -> str | None:
+    """Why a tolerance would grade a right answer wrong or a wrong one right, or None: narrower than
+    the rounding of the digits shown (a student who gives more digits, or rounds the given values
+    as shown, would be marked wrong), or as wide as the answer (zero and the wrong sign pass).
+
+    >>> unfair("2.13", "0.01"), unfair("2.13", "0.001"), unfair("2.13", "3")
+    (None, 'narrower than the digits shown: 2.13 is rounded by up to 0.005', 'as wide as the answer: zero and the wrong sign would pass')
+    """
+    number, margin = Decimal(value), Decimal(tolerance)
+    if not number:
+        return None
+    rounding = Decimal(5).scaleb(number.as_tuple().exponent - 1)
+    if margin < rounding:
+        return f"narrower than the digits shown: {value} is rounded by up to {_plain(rounding)}"
+    if accepts_zero(number, margin):
+        return "as wide as the answer: zero and the wrong sign would pass"
+    return None
+
+
+def accepts_zero(value: Decimal, margin: Decimal) -> bool:
+    """Whether a margin around a (nonzero) answer reaches zero, and so the wrong sign."""
+    return margin >= abs(value)
+
+
 @lru_cache(maxsize=None)  # a set's answers share a few places
 def _last_place(exponent: int) -> str:
     """One unit in the decimal place 10^exponent.
@@ -214,7 +238,7 @@ def check(items: list[Item], target: str) -> None:
                              f"{_with_unit(item.value, item.unit)} lies outside what an LMS stores "
                              f"(double precision, 1e-300 to 1e300): ask it in another unit")
         where = f"{item.problem} variant {item.variant}: ask.{item.name}.tolerance"
-        if value and tol >= value:
+        if value and accepts_zero(value, tol):
             raise InputError(f"{where}: ±{_with_unit(item.tolerance, item.unit)} accepts zero and the wrong sign "
                              f"(the answer is {item.value}); narrow it")
         if target == "moodle" and value and tol < value * MOODLE_FLOOR:

@@ -422,6 +422,9 @@ def tolerance_policy(raw) -> str | None:
         raise ValueError(f"expected a percentage such as 2% or a positive amount in the answer's unit, got {text!r}")
     if text.endswith("%") and number >= 100:
         raise ValueError(f"{text} of the answer would accept zero and the wrong sign")
+    if not -300 <= number.adjusted() <= 300:  # 1e-999999999 would be written as 0, 1e999999999 overflow
+        raise ValueError(f"{text} is narrower than the digits any answer shows" if number < 1 else
+                         f"{text} lies outside what an LMS stores (1e-300 to 1e300)")
     return f"{number.normalize():f}%" if text.endswith("%") else f"{number.normalize():f}"
 
 

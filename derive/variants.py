@@ -171,10 +171,22 @@ class ProblemVariants:
                                                       for name, value in self.certified(draw).items()})
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
-        """Each numeric answer's absolute tolerance in its unit, under the answer's policy."""
-        return self._once(self._tolerances, draw, lambda: {
-            name: None if text is None else lms.tolerance(text, self.problem.asks[name].tolerance or self.tolerance)
-            for name, text in self.answers(draw).items()})
+        """Each numeric answer's absolute tolerance in its unit, under the answer's policy; InputError
+        where it would grade unfairly (lms.unfair), naming the ask's tolerance or the course's."""
+        def derive_tolerances() -> dict[str, str | None]:
+            tolerances = {}
+            for name, text in self.answers(draw).items():
+                policy = self.problem.asks[name].tolerance
+                tolerances[name] = None if text is None else lms.tolerance(text, policy or self.tolerance)
+                why = text and lms.unfair(text, tolerances[name])
+                if why:
+                    field = f"ask.{name}.tolerance: {policy}" if policy else \
+                        f"ask.{name}: the course's tolerance {self.tolerance} (derive.toml)"
+                    raise InputError(f"{self.problem.path}: {field} gives ±{tolerances[name]}, {why}; "
+                                     f"give a {'wider' if why.startswith('narrower') else 'narrower'} tolerance")
+            return tolerances
+
+        return self._once(self._tolerances, draw, derive_tolerances)
 
     def wrong(self, draw: dict[str, sp.Expr]) -> dict[str, list[dict[str, str]]]:
         """Each answer's distractors (value, mistake) for multiple choice."""

@@ -115,6 +115,9 @@ def test_tolerances_are_held_to_each_lms_limits(monkeypatch):
 @pytest.mark.parametrize("tolerance, reason", [
     ("150%", "150% of the answer would accept zero"), ("-1", "expected a percentage"), ("abc", "expected a percentage"),
     ("true", "expected a percentage"), ("0%", "expected a percentage"),
+    ("1e-999999999", "1e-999999999 is narrower than the digits any answer shows"),  # was written as 0
+    ("1e-999999999%", "1e-999999999% is narrower than the digits any answer shows"),
+    ("1e999999999", "1e999999999 lies outside what an LMS stores"),  # was an internal Decimal overflow
 ])
 def test_bad_tolerance_policies_name_the_field(tolerance, reason, tmp_path):
     text = load("rod_endpoint").path.read_text().replace("unit: kg*m^2}", f"unit: kg*m^2, tolerance: {tolerance}}}")
@@ -433,3 +436,21 @@ def test_a_problem_whose_answers_are_all_general_results_is_said_to_be_left_out_
     categories = [q.findtext("category/text") for q in ET.parse(out / "moodle.xml").getroot().iter("question")
                   if q.get("type") == "category"]
     assert [c.rsplit("/", 1)[1] for c in categories] == ["string_wrapped_disk"]
+
+
+@pytest.mark.parametrize("tolerance, reason", [
+    ("0.0001", r"ask\.I\.tolerance: 0\.0001 gives ±0\.0001, narrower than the digits shown: 0\.\d+ is rounded by up "
+               r"to 0\.0005; give a wider tolerance"),
+    ("0.001%", r"ask\.I\.tolerance: 0\.001% gives ±[0-9.E-]+, narrower than the digits shown"),
+    ("5000", r"ask\.I\.tolerance: 5000 gives ±5000, as wide as the answer: zero and the wrong sign would pass"),
+])
+def test_a_tolerance_that_would_grade_unfairly_is_refused_in_one_line(tolerance, reason, tmp_path):
+    """A tolerance narrower than the rounding of the digits shown marks a right answer wrong; one as
+    wide as the answer marks zero and the wrong sign right (issue 35, item 3)."""
+    problem = tmp_path / "p.yaml"
+    problem.write_text(load("rod_endpoint").path.read_text().replace(
+        "unit: kg*m^2}", f"unit: kg*m^2, tolerance: '{tolerance}'}}"))
+    done = run_derive("sheet", str(problem), "--to", "", "--out", str(tmp_path / "out"))
+    assert done.returncode == 2 and not (tmp_path / "out").exists()
+    (line,) = done.stderr.strip().splitlines()[-1:]
+    assert re.fullmatch(rf"derive: error: {re.escape(str(problem))}: {reason}.*", line), line
