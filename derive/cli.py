@@ -7,7 +7,9 @@ Heavy modules (sympy and what uses it) are imported inside the commands, so that
 from __future__ import annotations
 
 import functools
+import math
 import os
+import re
 import sys
 import traceback
 
@@ -84,6 +86,40 @@ def _internal(error: Exception):
     sys.exit(1)
 
 
+class Seconds(click.ParamType):
+    """A time limit in seconds: 0 or off for none, else a finite number up to limits.MAX_SECONDS."""
+
+    name = "seconds"
+
+    def convert(self, value, param, ctx) -> float:
+        from derive import limits  # light: no sympy
+
+        try:
+            return limits.parse(str(value), f"--time-limit {value}")
+        except InputError as error:
+            raise BadInput(str(error)) from None
+
+
+class FiniteRange(click.FloatRange):
+    """click's FloatRange, which lets nan and inf through its bounds' comparisons, without them."""
+
+    def convert(self, value, param, ctx) -> float:
+        number = super().convert(value, param, ctx)
+        if not math.isfinite(number):
+            self.fail(f"{value!r} is not a finite number", param, ctx)
+        return number
+
+
+def _check_environment() -> None:
+    """Refuse what the environment sets wrongly for a library derive imports: an empty or malformed
+    SOURCE_DATE_EPOCH stops numpy.f2py's import (scipy's integrators import it) with a ValueError.
+    derive's builds are reproducible without it (its LaTeX runs set their own)."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH")
+    if epoch is not None and not re.fullmatch(r"[0-9]+", epoch):
+        raise BadInput(f"SOURCE_DATE_EPOCH={epoch!r}: expected a whole number of seconds since 1970; derive's builds "
+                       "are the same without it: unset it (unset SOURCE_DATE_EPOCH)")
+
+
 def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:
     """`--set m=2 --set "M=200 g"` as {"m": "2", "M": "200 g"}."""
     result = {}
@@ -121,7 +157,8 @@ class DeriveGroup(click.Group):
         except click.UsageError as error:
             command = error.ctx.command_path if error.ctx else "derive"
             message = " ".join(error.format_message().split())
-            click.echo(f"{command}: error: {message} (see '{command} --help')", err=True)
+            where = command.partition(" ")[2]  # the subcommand, as every other error names its field
+            click.echo(f"derive: error: {where + ': ' if where else ''}{message} (see '{command} --help')", err=True)
             sys.exit(2)
         except click.ClickException as error:
             error.show()
@@ -136,9 +173,9 @@ class DeriveGroup(click.Group):
 @click.option("--version", is_flag=True, expose_value=False, is_eager=True,
               callback=_show_version,
               help="Print derive's version (of the distribution " + DISTRIBUTION + ") and exit.")
-@click.option("--time-limit", type=click.FloatRange(min=0), default=None, metavar="SECONDS",
+@click.option("--time-limit", type=Seconds(), default=None, metavar="SECONDS",
               help="Give up a symbolic step (an integral, a simplification, a derivation) after SECONDS, "
-                   "with exit status 2. [default: $DERIVE_TIME_LIMIT, else 60; 0: no limit]")
+                   "with exit status 2. [default: $DERIVE_TIME_LIMIT, else 60; 0 or off: no limit]")
 def main(time_limit: float | None) -> None:
     """Derive the mechanics of rotating bodies, and build problem sets from it.
 
@@ -156,6 +193,7 @@ def main(time_limit: float | None) -> None:
       derive check
       derive bench --quick
     """
+    _check_environment()
     if time_limit is not None:
         from derive import limits  # light: no sympy
 
@@ -319,7 +357,7 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
               help="Engines: the n-link pendulum up to this n (default 6; 3 with --quick).")
 @click.option("--repeats", type=click.IntRange(1, 20), default=3, show_default=True,
               help="Engines: runs of a job under 20 s, whose median is shown.")
-@click.option("--limit", type=click.FloatRange(1), default=None, metavar="SECONDS",
+@click.option("--limit", type=FiniteRange(1), default=None, metavar="SECONDS",
               help="Engines: CPU seconds a run may take before it is stopped and shown as "
                    "'over limit' (default 300; 60 with --quick).")
 @reports_errors

@@ -24,6 +24,7 @@ This module imports nothing heavy (the command line imports it before any comman
 """
 from __future__ import annotations
 
+import math
 import os
 import signal
 import threading
@@ -62,15 +63,32 @@ def seconds() -> float | None:
     text = os.environ.get(ENVIRONMENT, "").strip().lower()
     if not text:
         return DEFAULT_SECONDS
-    if text in ("0", "off", "none", "no"):
-        return None
+    return parse(text, f"{ENVIRONMENT}={text}") or None
+
+
+#: The longest limit (11 days): a timer cannot be armed for infinity; 0 means no limit.
+MAX_SECONDS = 1e6
+
+
+def parse(text: str, where: str) -> float:
+    """A limit in seconds as given (`--time-limit`, DERIVE_TIME_LIMIT): 0 (or off, none, no) for no
+    limit, else a number up to MAX_SECONDS; InputError naming `where` otherwise (inf, nan, -1).
+
+    >>> parse("90", "--time-limit"), parse("off", "--time-limit")
+    (90.0, 0.0)
+    >>> parse("inf", "--time-limit inf")
+    Traceback (most recent call last):
+    derive.errors.InputError: --time-limit inf: expected a number of seconds up to 1000000 (0 or off: no limit)
+    """
+    if text.strip().lower() in ("0", "off", "none", "no"):
+        return 0.0
     try:
         value = float(text)
     except ValueError:
-        raise InputError(f"{ENVIRONMENT}={text}: expected a number of seconds (0 or off: no limit)") from None
-    if not value == value or value < 0:  # NaN or negative
-        raise InputError(f"{ENVIRONMENT}={text}: expected a number of seconds (0 or off: no limit)")
-    return value or None
+        value = math.nan
+    if not 0 <= value <= MAX_SECONDS:  # NaN, negative, infinite or past a timer's reach
+        raise InputError(f"{where}: expected a number of seconds up to {MAX_SECONDS:.0f} (0 or off: no limit)")
+    return value
 
 
 def _on_alarm(signum, frame):

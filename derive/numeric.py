@@ -246,6 +246,19 @@ class Certified(NamedTuple):
         return {"method": "ball", "radius": self.radius_text, "bits": self.bits}
 
 
+def sign_of(text: str) -> int:
+    """The sign of a certified value's text, read from its digits: a condition's value may lie
+    beyond what a Decimal holds (M**(10**999) > 0 is 1.9e+477121254...).
+
+    >>> sign_of("-2.5e-3"), sign_of("0.000"), sign_of("1.90152e+4771212547196624372950")
+    (-1, 0, 1)
+    """
+    mantissa = text.lower().partition("e")[0]
+    if not mantissa.strip("+-0."):
+        return 0
+    return -1 if mantissa.startswith("-") else 1
+
+
 def starting_bits(digits: int) -> int:
     """The first working precision for `digits` significant digits: theirs and 24 bits more, up
     to a whole number of 64-bit words (a ball's midpoint is stored in words: the rest is free,
@@ -429,8 +442,7 @@ class Evaluator:
         for r, row in zip(undecided, self.certified([rows[r] for r in undecided], [6] * len(self.expressions))):
             for i, value in enumerate(row):
                 if results[r][i] is None and value is not None:
-                    number = Decimal(value.text)
-                    results[r][i] = (number > 0) - (number < 0)
+                    results[r][i] = sign_of(value.text)
         return results
 
     def _balls(self, rows, together: list[int], digits: list[int], results) -> None:

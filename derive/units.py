@@ -63,7 +63,7 @@ _ORDER = ["mass", "length", "time", "current", "temperature", "amount_of_substan
           "luminous_intensity"]
 _MAX_UNIT_LENGTH = 200
 _SPACE = re.compile(r"(?<=[\w)])\s+(?=[A-Za-z_(])")
-_QUANTITY = re.compile(r"([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*)", re.S)
+_QUANTITY = re.compile(r"([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*)", re.S | re.ASCII)  # 3, not ٣
 
 
 def _show(text: str) -> str:
@@ -175,6 +175,8 @@ def parse_quantity(text: str | int | float | decimal.Decimal,
     """Split "200 g" into (Rational(200), "g"); a bare number gets ``default_unit``."""
     if isinstance(text, str):
         m = _QUANTITY.fullmatch(text.strip()) if len(text) <= 1000 else None
+        if not m and any(c.isdigit() and not c.isascii() for c in text):  # as a problem file reads numbers
+            raise UnitError(f"a number is written with the digits 0-9, got {_show(text.strip())}")
         if not m:
             raise UnitError(f"expected a number and a unit, got {_show(text.strip())}")
         value, unit = _exact(m.group(1)), m.group(2).strip() or default_unit

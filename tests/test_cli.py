@@ -8,6 +8,7 @@ import mpmath
 import pytest
 
 from conftest import ROOT, close, refused, run_derive
+from derive.problem import load
 
 
 def close_to_digits(value: str, reference, digits: int = 15) -> bool:
@@ -348,3 +349,52 @@ def test_a_set_files_path_is_read_from_the_working_folder_and_the_error_says_so(
     assert done.returncode == 2
     assert done.stderr.strip().endswith("p.yaml: no such problem file (a path in a set file is read from the working "
                                         "folder, not the set file's: write sub/p.yaml to name the one beside it)")
+
+
+# --- bad input: one line, exit 2, one prefix (issue 35, items 10 to 13) ---------------------------
+
+@pytest.mark.parametrize("args, line", [
+    (["--time-limit", "inf", "solve", "rod_endpoint"], "derive: error: --time-limit inf: expected a number of seconds"),
+    (["--time-limit", "nan", "solve", "rod_endpoint"], "derive: error: --time-limit nan: expected a number of seconds"),
+    (["--time-limit", "1e400", "solve", "rod_endpoint"], "derive: error: --time-limit 1e400: expected a number"),
+    (["bench", "--limit", "nan"], "derive: error: bench: Invalid value for '--limit': 'nan' is not a finite number"),
+    (["sheet"], "derive: error: sheet: Missing argument"),  # was 'derive sheet: error:'
+    (["solve", "rod_endpoint", "--bogus"], "derive: error: solve: No such option '--bogus'"),
+    (["--bogus"], "derive: error: No such option '--bogus'"),
+    (["solve", "string_wrapped_disk", "--set", "m=\u0663"],  # an Arabic-Indic 3, refused as a file refuses it
+     "derive: error: --set m=\u0663: a number is written with the digits 0-9"),
+])
+def test_bad_command_lines_are_one_line_with_one_prefix(args, line):
+    done = run_derive(*args)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert done.stderr.startswith(line), done.stderr
+
+
+def test_a_time_limit_of_off_or_a_number_is_taken():
+    done = run_derive("--time-limit", "off", "solve", "rod_endpoint")
+    assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.parametrize("epoch", ["", "yesterday", "-5"])
+def test_a_malformed_source_date_epoch_is_one_line_not_an_internal_error(epoch):
+    """numpy.f2py's import (through scipy) reads SOURCE_DATE_EPOCH with int(): set but empty, every
+    PDF build stopped with an internal ValueError."""
+    done = run_derive("solve", "rod_endpoint", env={"SOURCE_DATE_EPOCH": epoch})
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert done.stderr.startswith(f"derive: error: SOURCE_DATE_EPOCH={epoch!r}: expected a whole number"), done.stderr
+    assert run_derive("solve", "rod_endpoint", env={"SOURCE_DATE_EPOCH": "1700000000"}).returncode == 0
+
+
+def test_a_condition_beyond_what_a_decimal_holds_is_decided(tmp_path):
+    """M**(10**999) > 0: its certified value, 1.9e+477121254..., stopped the draw with an internal
+    InvalidOperation when read as a Decimal; its sign is read from its digits."""
+    text = load("rolling_incline").path.read_text()
+    old = "- {holds: mu_s >= mu_min,"
+    assert old in text
+    problem = tmp_path / "p.yaml"
+    problem.write_text(text.replace(old, "- {holds: M**(10**999) > 0, because: it is positive}\n  " + old))
+    done = run_derive("sheet", str(problem), "--to", "", "--out", str(tmp_path / "out"))
+    assert done.returncode == 0, done.stderr
+    problem.write_text(text.replace(old, "- {holds: -M**(10**999) > 0, because: it is never so}\n  " + old))
+    done = run_derive("sheet", str(problem), "--to", "", "--out", str(tmp_path / "out2"))
+    assert done.returncode == 2 and "it is never so" in done.stderr.strip().splitlines()[-1], done.stderr
