@@ -10,6 +10,7 @@ text). Question text comes from problem files: its `{{ NAME }}` placeholders are
 """
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 
 import jinja2
@@ -17,6 +18,8 @@ import sympy as sp
 from jinja2.sandbox import SandboxedEnvironment
 from sympy.printing.conventions import split_super_sub
 from sympy.printing.latex import translate
+from sympy.printing.pretty.pretty_symbology import greek_unicode
+from sympy.printing.str import StrPrinter
 
 from derive import latex_safety, library, printed_form
 
@@ -72,6 +75,35 @@ def latex_of(expression) -> str:
     named = {s: symbol_latex(s.name) for s in (expression.atoms(sp.Symbol) if isinstance(expression, sp.Basic) else ())
              if not isinstance(s, sp.Dummy)}  # bound ones too (an integral's dx); a Dummy keeps sympy's own mark
     return sp.latex(printed_form.textbook(expression), symbol_names=named)
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+class _SpokenNames(StrPrinter):
+    """sympy's str printer, each symbol's name spoken: a Greek name as its letter, a subscript after
+    a space (the terms keep the order of the names as given)."""
+
+    def _print_Symbol(self, symbol: sp.Symbol) -> str:
+        base, supers, subs = split_super_sub(symbol.name)
+        return " ".join(greek_unicode.get(part, part) for part in (base, *subs, *supers))
+
+
+def spoken(expression: sp.Expr) -> str:
+    """An expression as plain text that reads as math, for an image's alternative text: a product
+    spaced (M g, not M*g), a Greek name as its letter, a subscript after a space (T string), a
+    whole power as a superscript.
+
+    sympy's str printer gives the grouping; the rest is the text it prints, rewritten here, since
+    sympy has no printer for words (its pretty printer draws fractions on several lines).
+
+    >>> M, g, mu_k, N, T = sp.symbols("M g mu_k N T_string")
+    >>> spoken(M * g), spoken(mu_k * N), spoken(T), spoken(M * g**2 / 2)
+    ('M g', 'N μ k', 'T string', 'M g²/2')
+    """
+    text = _SpokenNames().doprint(expression)
+    text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPTS), text)
+    return text.replace("**", "^").replace("*", " ")
 
 
 @lru_cache(maxsize=1)

@@ -32,7 +32,7 @@ wrong one. Same problem, same bytes.
 >>> drawn["disk"].tikz.startswith(r"\begin{tikzpicture}")
 True
 >>> drawn["block"].alt
-'Free-body diagram of the block: tension of string T_string; weight g*m.'
+'Free-body diagram of the block: the tension of string, T string; the weight, g m.'
 
 """
 from __future__ import annotations
@@ -59,7 +59,7 @@ REPEAT = 1.4  # an arrow drawn where another already is (the same point and dire
 class Arrow:
     """One force of a diagram: its point (a world offset from the center of mass, m), its unit
     direction, its label (LaTeX), the force it draws (the part's label: "weight") and its label as
-    plain text (sympy's str: "M*g"), for the diagram's alternative text."""
+    text that reads as math (render.spoken: "M g"), for the diagram's alternative text."""
 
     offset: tuple[float, float]
     direction: tuple[float, float]
@@ -97,7 +97,7 @@ class FreeBody:
         drawn: dict[str, list[str]] = {}
         for shown in (*self.arrows, *self.turns):
             drawn.setdefault(shown.force, []).append(shown.text)
-        forces = "; ".join(f"{force} {', '.join(texts)}" for force, texts in drawn.items())
+        forces = "; ".join(f"the {force}, {', '.join(texts)}" for force, texts in drawn.items())
         return f"Free-body diagram of the {self.body}: {forces or 'no forces'}."
 
 
@@ -132,7 +132,7 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
                     raise Undrawable(f"the {load.label} has no direction here")
                 shown = _size(vector, length) * amount
                 arrows.append(Arrow(offset, (direction[0] / length, direction[1] / length), render.latex_of(shown),
-                                    load.label, sp.sstr(shown)))
+                                    load.label, render.spoken(shown)))
         elif isinstance(load, AppliedTorque):
             for coefficient, amount in _split(sp.Matrix([load.torque.xreplace(rest)]), unknowns):
                 value = view.value(coefficient[0])
@@ -140,7 +140,7 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
                     raise Undrawable(f"the {load.label} has no sense here")
                 sign = 1 if value > 0 else -1
                 shown = sp.simplify(sign * coefficient[0]) * amount
-                turns.append(Turn(sign, render.latex_of(shown), load.label, sp.sstr(shown)))
+                turns.append(Turn(sign, render.latex_of(shown), load.label, render.spoken(shown)))
     return arrows, turns
 
 
