@@ -8,12 +8,13 @@ import signal
 import subprocess
 import sys
 import threading
+import time
 from pathlib import Path
 
 import pytest
 
 from conftest import ROOT
-from derive import leftovers, output_folder
+from derive import export, leftovers, output_folder
 
 DERIVE = Path(sys.executable).parent / "derive"
 
@@ -302,6 +303,79 @@ def test_a_killed_builds_lock_file_is_removed_and_a_users_file_of_that_name_kept
     lock.write_text("my lock notes")
     assert build(small_set, tmp_path / "out").returncode == 0
     assert lock.read_text() == "my lock notes"
+
+
+# --- SIGTERM, SIGKILL and TeX's scratch folders -------------------------------------------------
+
+def _processes_in(folder: Path) -> list[int]:
+    """The pids of processes whose working folder lies in `folder` (a TeX run left behind)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        try:
+            if entry.name.isdigit() and Path(os.readlink(entry / "cwd")).is_relative_to(folder):
+                found.append(int(entry.name))
+        except OSError:
+            continue
+    return found
+
+
+def test_sigterm_during_the_compiles_cleans_up_as_ctrl_c_does(tmp_path, small_set):
+    out, scratch = tmp_path / "out", tmp_path / "tmp"
+    scratch.mkdir()
+    assert build(small_set, out).returncode == 0
+    before = contents(out)
+    process = subprocess.Popen([str(DERIVE), "sheet", str(small_set), "--variants", "3", "--out", str(out), "--to",
+                                "pdf", "--progress", "none"], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, env={**os.environ, "TMPDIR": str(scratch)})
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and not any(scratch.glob("derive-tex-*")) and process.poll() is None:
+        time.sleep(0.02)
+    assert any(scratch.glob("derive-tex-*")), "no compile started"
+    process.terminate()
+    _, stderr = process.communicate(timeout=120)
+    assert process.returncode == 143 and stderr.strip().splitlines()[-1] == "derive: terminated", stderr
+    assert list(scratch.iterdir()) == [] and _processes_in(scratch) == []
+    assert contents(out) == before and sorted(p.name for p in tmp_path.iterdir()) == ["out", "small.yaml", "tmp"]
+
+
+def test_scratch_a_killed_build_left_is_swept_by_the_next(tmp_path, small_set):
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    env = {"TMPDIR": str(scratch)}
+    killed = build(small_set, tmp_path / "out", "--to", "pdf", env={**env, "DERIVE_FAULT_AT": "tex-scratch"})
+    assert killed.returncode == -signal.SIGKILL, killed.stderr
+    (left,) = scratch.iterdir()
+    assert left.name.startswith("derive-tex-") and leftovers.marked(left)
+    again = build(small_set, tmp_path / "out", "--to", "pdf", env=env)
+    assert again.returncode == 0, again.stderr
+    assert list(scratch.iterdir()) == []
+
+
+def test_the_sweep_removes_only_scratch_derive_can_prove_its_own(tmp_path, monkeypatch):
+    monkeypatch.setattr(export.tempfile, "tempdir", str(tmp_path))
+    ended = subprocess.Popen(["true"])
+    ended.wait()  # a pid whose process is gone
+
+    def folder(name: str, marked: bool, content: bool = True) -> Path:
+        path = tmp_path / name
+        path.mkdir()
+        if marked:
+            leftovers.mark(path)
+        if content:
+            (path / "work.tex").write_text("mine")
+        return path
+
+    swept = [folder(f"derive-tex-{ended.pid}-ab12", marked=True), folder(f"derive-tex-{ended.pid}-cd", False, False)]
+    kept = [folder(f"derive-tex-{ended.pid}-ef34", marked=False),  # a user's, named so
+            folder(f"derive-tex-{os.getpid()}-gh56", marked=True),  # a compile under way
+            folder("derive-tex-99999999999999999999-ij", marked=True),  # no process has that pid
+            folder(f"derive-tex-{ended.pid}", marked=True)]  # not a name derive gives
+    link = tmp_path / f"derive-tex-{ended.pid}-kl78"
+    link.symlink_to(swept[0].with_name("target"))
+    folder("target", marked=True)
+    export._sweep_scratch.__wrapped__()
+    assert not any(p.exists() for p in swept)
+    assert all(p.is_dir() for p in kept) and link.is_symlink() and (tmp_path / "target").is_dir()
 
 
 # --- a bad --out --------------------------------------------------------------------------------
