@@ -2,21 +2,25 @@
 
 Heavy modules (sympy and what uses it) are imported inside the commands, so that
 `derive --help` starts fast. Exit status: 0 success, 2 bad input (one line on stderr),
-3 a missing external program (with the command that installs it), 1 an internal error.
+3 a missing external program (with the command that installs it), 1 an internal error,
+130 Ctrl-C and 143 SIGTERM (either after cleaning up).
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
 import os
 import re
+import signal
 import sys
+import threading
 import traceback
 
 import click
 
 from derive import DISTRIBUTION, MAX_DIGITS, MAX_VARIANTS, version
-from derive.errors import EngineLimit, InputError, MissingTool
+from derive.errors import EngineLimit, InputError, MissingTool, Terminated
 
 FORMATS = click.Choice(["text", "latex", "json"])
 
@@ -66,9 +70,8 @@ def reports_errors(command):
                 _internal(error)  # a check between routes that fails (CheckFailure) is an engine bug
             click.echo(f"derive: error: {error}", err=True)
             sys.exit(1)
-        except KeyboardInterrupt:
-            click.echo("derive: interrupted", err=True)
-            sys.exit(130)
+        except KeyboardInterrupt as interruption:
+            _interrupted(interruption)
         except BrokenPipeError:  # the reader stopped (derive list | head): stop quietly
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
             sys.exit(0)
@@ -76,6 +79,36 @@ def reports_errors(command):
             _internal(error)
 
     return wrapper
+
+
+def _interrupted(interruption: BaseException | None):
+    """Ctrl-C (exit status 130) or SIGTERM (143, derive.errors.Terminated), each as 128 + the
+    signal, once the build has cleaned up: one line."""
+    if isinstance(interruption, Terminated):
+        click.echo("derive: terminated", err=True)
+        sys.exit(128 + signal.SIGTERM)
+    click.echo("derive: interrupted", err=True)
+    sys.exit(128 + signal.SIGINT)
+
+
+def _raise_terminated(signum, frame):
+    """The SIGTERM handler of _sigterm_as_ctrl_c."""
+    raise Terminated()
+
+
+@contextlib.contextmanager
+def _sigterm_as_ctrl_c():
+    """SIGTERM raises derive.errors.Terminated in the main thread while the command runs, so that
+    it cleans up as on Ctrl-C (staging and scratch folders removed, every TeX run stopped) instead
+    of dying at once."""
+    if threading.current_thread() is not threading.main_thread():  # only the main thread handles signals
+        yield
+        return
+    previous = signal.signal(signal.SIGTERM, _raise_terminated)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, signal.SIG_DFL if previous is None else previous)  # None: set outside Python
 
 
 def _internal(error: Exception):
@@ -153,7 +186,8 @@ class DeriveGroup(click.Group):
 
     def main(self, args=None, prog_name=None, **extra):
         try:
-            status = super().main(args, prog_name or "derive", standalone_mode=False, **extra)
+            with _sigterm_as_ctrl_c():
+                status = super().main(args, prog_name or "derive", standalone_mode=False, **extra)
         except click.UsageError as error:
             command = error.ctx.command_path if error.ctx else "derive"
             message = " ".join(error.format_message().split())
@@ -163,9 +197,8 @@ class DeriveGroup(click.Group):
         except click.ClickException as error:
             error.show()
             sys.exit(error.exit_code)
-        except click.Abort:
-            click.echo("derive: interrupted", err=True)
-            sys.exit(130)
+        except click.Abort as abort:  # click's word for a KeyboardInterrupt no command caught
+            _interrupted(abort.__cause__)
         sys.exit(status if isinstance(status, int) else 0)
 
 

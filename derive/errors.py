@@ -45,3 +45,8 @@ class MissingTool(Exception):
     def __init__(self, tool: str, install: str):
         super().__init__(f"{tool} is not installed; install it with: {install}")
         self.tool, self.install = tool, install
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised by the command line's handler: a build stops and cleans up as on Ctrl-C
+    (every `except KeyboardInterrupt` and `except BaseException` sees it), exit status 143."""

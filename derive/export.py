@@ -9,17 +9,20 @@ in parallel on the available cores.
 """
 from __future__ import annotations
 
+import functools
 import io
 import os
 import re
 import shutil
 import signal
+import stat
 import subprocess
 import tempfile
 import threading
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+from derive import leftovers, output_folder
 from derive.errors import InputError, MissingTool
 
 LATEXMK = ["latexmk", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "-no-shell-escape",
@@ -33,6 +36,8 @@ ENGINES = {"pdflatex": "-pdf", "lualatex": "-lualatex"}
 PDFLATEX_TEXT = frozenset(map(chr, range(32, 127))) | frozenset("\n\t") | frozenset(
     chr(c) for c in range(0xC0, 0x100) if c not in (0xD7, 0xF7)) | frozenset("§–—‘’“”…±°")
 DEFAULT_TEX_TIME_LIMIT = 120.0  # seconds for one document's latexmk run, all passes
+#: The name of each compile's scratch folder in the temporary folder begins with this and derive's pid.
+SCRATCH = "derive-tex-"
 # "! message" (TeX's own form) or "./file.tex:12: message" (with -file-line-error).
 ERROR_LINE = re.compile(r"^(! |\S+\.tex:\d+: )")
 
@@ -138,7 +143,9 @@ def pdf(tex: Path) -> Path:
     The compile runs in a scratch folder of its own that holds only a copy of the .tex (every
     figure is inline TikZ), with TeX's paranoid file access (openin_any/openout_any = p: no
     absolute paths, no `..`), so TeX can write nothing but its own scratch files; and with a
-    time limit (tex_time_limit), past which its whole process group is killed.
+    time limit (tex_time_limit), past which its whole process group is killed. The scratch folder
+    is named for this process and marked as derive's (derive.leftovers): one that a kill left
+    behind is removed by a later run (_sweep_scratch).
     """
     text = tex.read_text(encoding="utf-8")
     for tool in ("latexmk", engine(text)):
@@ -146,8 +153,11 @@ def pdf(tex: Path) -> Path:
     env = {**os.environ, "openin_any": "p", "openout_any": "p", "SOURCE_DATE_EPOCH": "0",
            "FORCE_SOURCE_DATE": "1"}
     seconds = tex_time_limit()
-    with tempfile.TemporaryDirectory(prefix="derive-tex-") as scratch:
+    _sweep_scratch()
+    with tempfile.TemporaryDirectory(prefix=f"{SCRATCH}{os.getpid()}-") as scratch:
         folder = Path(scratch)
+        leftovers.mark(folder)
+        output_folder.fault("tex-scratch")  # the fault test: killed with the scratch folder made
         (folder / tex.name).write_text(text, encoding="utf-8")
         command = [*LATEXMK, ENGINES[engine(text)], tex.name]
         try:
@@ -162,6 +172,29 @@ def pdf(tex: Path) -> Path:
         for suffix in (".aux", ".pdf"):
             shutil.move(folder / tex.with_suffix(suffix).name, tex.with_suffix(suffix))
     return tex.with_suffix(".pdf")
+
+
+@functools.cache  # once a process
+def _sweep_scratch() -> None:
+    """Remove the TeX scratch folders that derive runs killed outright (SIGKILL) left in the
+    temporary folder (see _ended_scratch); nothing else, whatever its name."""
+    for folder in Path(tempfile.gettempdir()).glob(f"{SCRATCH}*"):
+        if _ended_scratch(folder):
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+def _ended_scratch(folder: Path) -> bool:
+    """Whether `folder` is the scratch folder of a derive run that has ended: named for a pid whose
+    process is gone, this user's, and carrying derive's mark (or empty: killed before marking it)."""
+    match = re.fullmatch(rf"{SCRATCH}(?P<pid>[1-9]\d*)-\w+", folder.name)
+    process = leftovers.pid(match["pid"]) if match else None
+    try:
+        info = folder.lstat()
+        if process is None or not stat.S_ISDIR(info.st_mode) or info.st_uid != os.getuid():
+            return False
+        return not leftovers.alive(process) and (leftovers.marked(folder) or not any(folder.iterdir()))
+    except OSError:  # gone meanwhile, or not ours to read
+        return False
 
 
 def variant_pages(tex: Path) -> dict[str, int]:

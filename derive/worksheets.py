@@ -291,86 +291,86 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         export.require("latexmk")  # at once, not after the derivations
     if formats & figure_files.OUTPUTS:
         export.require("pdftocairo")  # the figures as images
-    out = output_folder.claim(out_dir or Path("build") / problem_set.id)
-    try:  # _prepare froze the derivations (alive to the end of the build) out of the collector's passes
-        prepared = _prepare(problem_set, variants, seed, progress)
-        header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due,
-                  "answer_space": problem_set.answer_space}
-        drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
-        # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
-        figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
-            if formats & figure_files.OUTPUTS else {}
-        # The free-body diagrams the LMS feedback shows, by image name: one per body, not per variant.
-        diagrams = _free_body_figures(prepared) if formats & {"moodle", "qti"} else {}
-        figures.update({name: drawn.tikz for name, drawn in diagrams.items()})
-        progress("each variant's answers, certified, and the keys")
-        keys = answer_keys.write(problem_set, prepared, variants, seed, "distractors" in formats, choice,
-                                 lms=bool(formats & {"moodle", "qti"}))
-        for note in keys.notes:  # the set is built; these answers are asked as numbers, or left out of the LMS
-            print(f"derive: warning: {note}", file=sys.stderr, flush=True)
-        contexts = [_solutions_context(i, siunitx=True) for i in prepared]
-        items = []
-        if formats & {"moodle", "qti"}:
-            progress("the worked solutions as the LMS questions' feedback (pandoc)")
-            shown = [_solutions_context(i, siunitx=False) for i in prepared]  # MathJax reads no siunitx
-            items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, shown, header))
-        for target in sorted(formats & {"moodle", "qti"}):
-            lms.check(items, target)  # before anything is written
+    with output_folder.claim(Path("build") / problem_set.id if out_dir is None else out_dir) as out:
+        try:  # _prepare froze the derivations (alive to the end of the build) out of the collector's passes
+            prepared = _prepare(problem_set, variants, seed, progress)
+            header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due,
+                      "answer_space": problem_set.answer_space}
+            drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
+            # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
+            figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
+                if formats & figure_files.OUTPUTS else {}
+            # The free-body diagrams the LMS feedback shows, by image name: one per body, not per variant.
+            diagrams = _free_body_figures(prepared) if formats & {"moodle", "qti"} else {}
+            figures.update({name: drawn.tikz for name, drawn in diagrams.items()})
+            progress("each variant's answers, certified, and the keys")
+            keys = answer_keys.write(problem_set, prepared, variants, seed, "distractors" in formats, choice,
+                                     lms=bool(formats & {"moodle", "qti"}))
+            for note in keys.notes:  # the set is built; these answers are asked as numbers, or left out of the LMS
+                print(f"derive: warning: {note}", file=sys.stderr, flush=True)
+            contexts = [_solutions_context(i, siunitx=True) for i in prepared]
+            items = []
+            if formats & {"moodle", "qti"}:
+                progress("the worked solutions as the LMS questions' feedback (pandoc)")
+                shown = [_solutions_context(i, siunitx=False) for i in prepared]  # MathJax reads no siunitx
+                items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, shown, header))
+            for target in sorted(formats & {"moodle", "qti"}):
+                lms.check(items, target)  # before anything is written
 
-        with output_folder.staged(out) as staging:
-            compiling = "pdf" in formats or bool(figures)
-            steps = 1 + compiling + bool(figures) + len(formats & {"html", "md", "docx", "moodle", "qti"})
-            with progress.task("writing", steps) as begin:
-                begin("LaTeX")
-                texs = [
-                    _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, tex=True)),
-                    _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
-                    _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=keys.tex_rows)),
-                ]
-                products = list(texs)
-                compiled = texs if "pdf" in formats else []
-                if figures:  # a scratch document of its own, compiled with the others (no product)
-                    compiled = compiled + [_write(staging, "figures.tex", figure_files.document(list(figures.values())))]
-                if compiling:  # each in a scratch folder of its own (export.pdf)
-                    begin(f"{len(compiled)} PDF{'s' * (len(compiled) > 1)} (latexmk, {export.workers()} in parallel)")
-                    pdfs = export.pdfs(compiled)
-                if "pdf" in formats:
-                    products += pdfs[:len(texs)]
-                    if variants > 1:  # each student's own worksheet: the whole set's pages, split
-                        products += _per_variant(texs[0], variants)
-                images = {}
-                if figures:
-                    begin(f"{len(figures)} figures as SVG and PNG (pdftocairo)")
-                    images = {name: dataclasses.replace(image, alt=diagrams[name].alt) if name in diagrams else image
-                              for name, image in figure_files.images(list(figures), pdfs[-1]).items()}
-                shown_images = [image for name, image in images.items() if name not in diagrams]  # the problems'
-                if shown_images and formats & {"html", "md"}:  # the SVG files they refer to
-                    folder = staging / figure_files.FOLDER
-                    folder.mkdir()
-                    for image in shown_images:
-                        (folder / image.file("svg")).write_bytes(image.svg)
-                    products.append(folder)
-                for target in ("html", "md", "docx"):
-                    if target in formats:
-                        begin(f"the worksheet as {target} (pandoc)")
-                        shown = _shown(prepared, images, target)
-                        products.append(export.convert(_worksheet(header, prepared, variants, shown, tex=False),
-                                                       staging / "worksheet",
-                                                       target, problem_set.title))
-                # The keys and the LMS files are written by Python after every TeX run, so no TeX run
-                # could have touched them.
-                products += [_write(staging, "key.csv", keys.csv), _write(staging, "key.json", keys.json + "\n")]
-                if "moodle" in formats:
-                    begin("Moodle XML")
-                    products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id, images)))
-                if "qti" in formats:
-                    begin("the Canvas QTI zip")
-                    path = staging / "canvas-qti.zip"
-                    path.write_bytes(lms.qti(items, problem_set.title, problem_set.id, seed, images))
-                    products.append(path)
-            return output_folder.commit(staging, out, products)
-    finally:
-        gc.unfreeze()
+            with output_folder.staged(out) as staging:
+                compiling = "pdf" in formats or bool(figures)
+                steps = 1 + compiling + bool(figures) + len(formats & {"html", "md", "docx", "moodle", "qti"})
+                with progress.task("writing", steps) as begin:
+                    begin("LaTeX")
+                    texs = [
+                        _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, tex=True)),
+                        _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
+                        _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=keys.tex_rows)),
+                    ]
+                    products = list(texs)
+                    compiled = texs if "pdf" in formats else []
+                    if figures:  # a scratch document of its own, compiled with the others (no product)
+                        compiled = compiled + [_write(staging, "figures.tex", figure_files.document(list(figures.values())))]
+                    if compiling:  # each in a scratch folder of its own (export.pdf)
+                        begin(f"{len(compiled)} PDF{'s' * (len(compiled) > 1)} (latexmk, {export.workers()} in parallel)")
+                        pdfs = export.pdfs(compiled)
+                    if "pdf" in formats:
+                        products += pdfs[:len(texs)]
+                        if variants > 1:  # each student's own worksheet: the whole set's pages, split
+                            products += _per_variant(texs[0], variants)
+                    images = {}
+                    if figures:
+                        begin(f"{len(figures)} figures as SVG and PNG (pdftocairo)")
+                        images = {name: dataclasses.replace(image, alt=diagrams[name].alt) if name in diagrams else image
+                                  for name, image in figure_files.images(list(figures), pdfs[-1]).items()}
+                    shown_images = [image for name, image in images.items() if name not in diagrams]  # the problems'
+                    if shown_images and formats & {"html", "md"}:  # the SVG files they refer to
+                        folder = staging / figure_files.FOLDER
+                        folder.mkdir()
+                        for image in shown_images:
+                            (folder / image.file("svg")).write_bytes(image.svg)
+                        products.append(folder)
+                    for target in ("html", "md", "docx"):
+                        if target in formats:
+                            begin(f"the worksheet as {target} (pandoc)")
+                            shown = _shown(prepared, images, target)
+                            products.append(export.convert(_worksheet(header, prepared, variants, shown, tex=False),
+                                                           staging / "worksheet",
+                                                           target, problem_set.title))
+                    # The keys and the LMS files are written by Python after every TeX run, so no TeX run
+                    # could have touched them.
+                    products += [_write(staging, "key.csv", keys.csv), _write(staging, "key.json", keys.json + "\n")]
+                    if "moodle" in formats:
+                        begin("Moodle XML")
+                        products.append(_write(staging, "moodle.xml", lms.moodle(items, problem_set.id, images)))
+                    if "qti" in formats:
+                        begin("the Canvas QTI zip")
+                        path = staging / "canvas-qti.zip"
+                        path.write_bytes(lms.qti(items, problem_set.title, problem_set.id, seed, images))
+                        products.append(path)
+                return output_folder.commit(staging, out, products)
+        finally:
+            gc.unfreeze()
 
 
 def _per_variant(worksheet: Path, variants: int) -> list[Path]:
@@ -430,8 +430,8 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
                               {n: item.shown(n, answers[n]) for n in problem.asks})
     context = {**_solutions_context(item, siunitx=True), "example": example,
                "limits": _limits_context(item, middle, progress)}
-    out = output_folder.claim(out_dir or Path("build") / "handouts" / problem.id)
-    with output_folder.staged(out) as staging:
+    with output_folder.claim(Path("build") / "handouts" / problem.id if out_dir is None else out_dir) as out, \
+            output_folder.staged(out) as staging:
         tex = _write(staging, f"{problem.id}.tex", render.render("handout.tex.j2", problem=context,
                                                                    question=item.question(middle, siunitx=True)))
         progress("compiling the PDF")

@@ -5,6 +5,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 import zipfile
 from contextlib import contextmanager
 from pathlib import Path
@@ -81,7 +82,7 @@ def kept_scratch(folder: Path):
         yield str(folder)
 
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(export, "tempfile", SimpleNamespace(TemporaryDirectory=scratch))
+        patch.setattr(export, "tempfile", SimpleNamespace(TemporaryDirectory=scratch, gettempdir=tempfile.gettempdir))
         yield folder
 
 

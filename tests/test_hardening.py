@@ -14,7 +14,7 @@ import yaml
 from jinja2.exceptions import SecurityError, TemplateNotFound, UndefinedError
 
 from conftest import ROOT, document, kept_scratch, run_derive
-from derive import export, latex_characters, latex_safety, library, limits, problem, problem_sets, render
+from derive import export, latex_characters, latex_safety, leftovers, library, limits, problem, problem_sets, render
 from derive.answers import Solution
 from derive.errors import InputError, ProblemError
 
@@ -507,7 +507,8 @@ def test_latexmk_runs_without_shell_escape_and_with_paranoid_files(monkeypatch, 
         export.pdf(tmp_path / "x.tex")
     assert "-no-shell-escape" in seen["args"] and not any("shell-escape" in a and "no" not in a for a in seen["args"])
     assert seen["env"]["openin_any"] == "p" and seen["env"]["openout_any"] == "p"
-    assert seen["files"] == ["x.tex"] and seen["cwd"] != tmp_path  # a scratch folder with the .tex alone
+    # A scratch folder with the .tex alone (and derive's mark, for a later run to sweep it if this one is killed).
+    assert seen["files"] == [leftovers.MARK, "x.tex"] and seen["cwd"] != tmp_path
 
 
 WRITER = r"""\documentclass{article}

@@ -1,5 +1,6 @@
 """Output folders belong to the user (derive.output_folder): refusals, kept files, symlinks, a
 kill at every step of the swap, full and read-only disks."""
+import hashlib
 import json
 import os
 import shutil
@@ -7,12 +8,13 @@ import signal
 import subprocess
 import sys
 import threading
+import time
 from pathlib import Path
 
 import pytest
 
 from conftest import ROOT
-from derive import output_folder
+from derive import export, leftovers, output_folder
 
 DERIVE = Path(sys.executable).parent / "derive"
 
@@ -32,6 +34,15 @@ def build(set_path, out, *extra, cwd=None, env=None):
 
 def contents(folder: Path) -> dict[str, bytes]:
     return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def write_build(folder: Path, files: dict[str, str]) -> None:
+    """A derive build by hand: `files` (name: text) and a manifest with their hashes."""
+    folder.mkdir()
+    for name, text in files.items():
+        (folder / name).write_text(text)
+    hashes = {name: hashlib.sha256(text.encode()).hexdigest() for name, text in files.items()}
+    (folder / output_folder.MANIFEST).write_text(json.dumps({"files": sorted(files), "sha256": hashes}))
 
 
 def one_line_exit_2(result):
@@ -71,10 +82,10 @@ def test_files_the_user_added_to_a_build_are_kept_and_never_replaced(tmp_path, s
     assert (out / "notes.txt").read_text() == "mine" and (out / "extra" / "a.txt").read_text() == "a"
     assert "notes.txt" not in json.loads((out / output_folder.MANIFEST).read_text())["files"]
     # A file of the user's with a product's name: refused, nothing changed.
-    (out / output_folder.MANIFEST).write_text(json.dumps({"files": ["key.tex"]}))
+    (out / output_folder.MANIFEST).write_text(json.dumps({"files": ["key.tex"], "sha256": {"key.tex": "0" * 64}}))
     before = contents(out)
     stderr = one_line_exit_2(build(small_set, out))
-    assert "derive did not write this file and will not replace it" in stderr and "key.csv" in stderr
+    assert "derive will not replace it" in stderr and ("key.csv" in stderr or "key.tex" in stderr)
     assert contents(out) == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out", "small.yaml"]
 
@@ -116,10 +127,11 @@ SWAP_STEPS = [("swap",), ("swapped",), ("swap", "no-exchange"), ("renamed-old", 
 def test_a_kill_at_each_step_of_the_swap_leaves_the_old_or_the_new_build(tmp_path, small_set, faults):
     out = tmp_path / "out"
     assert build(small_set, out, "--seed", "1").returncode == 0
+    (out / "notes.txt").write_text("mine")  # carried over by a hard link: a leftover holding it is derive's
     old = contents(out)
     new_dir = tmp_path / "reference"
     assert build(small_set, new_dir, "--seed", "2").returncode == 0
-    new = contents(new_dir)
+    new = {**contents(new_dir), "notes.txt": b"mine"}
     assert old != new
     killed = build(small_set, out, "--seed", "2", env={"DERIVE_FAULT_AT": ",".join(faults)})
     assert killed.returncode == -signal.SIGKILL, killed.stderr
@@ -132,14 +144,14 @@ def test_a_kill_at_each_step_of_the_swap_leaves_the_old_or_the_new_build(tmp_pat
     leftovers = [p.name for p in tmp_path.iterdir() if p.name.startswith(".out.")]
     assert leftovers  # what the kill left behind ...
     again = build(small_set, out, "--seed", "3")
-    assert again.returncode == 0, again.stderr
+    assert again.returncode == 0 and "warning" not in again.stderr, again.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out", "reference", "small.yaml"]  # ... is gone
+    assert (out / "notes.txt").read_text() == "mine"
 
 
 def test_recover_restores_an_old_build_cut_off_between_the_renames(tmp_path):
     old = tmp_path / ".out.old-999999999"
-    old.mkdir()
-    (old / "key.csv").write_text("old")
+    write_build(old, {"key.csv": "old"})
     partial = tmp_path / ".out.partial-999999998"
     partial.mkdir()
     output_folder.recover(tmp_path / "out")
@@ -147,20 +159,12 @@ def test_recover_restores_an_old_build_cut_off_between_the_renames(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
 
 
-def test_recover_leaves_the_folders_of_a_build_still_running(tmp_path):
-    running = tmp_path / f".out.partial-{os.getppid()}"
-    running.mkdir()
-    output_folder.recover(tmp_path / "out")
-    assert running.is_dir()
-
-
 def test_ctrl_c_during_the_renames_waits_until_the_new_build_is_in_place(tmp_path, monkeypatch):
     out = tmp_path / "out"
-    out.mkdir()
-    (out / "key.csv").write_text("old")
-    (out / output_folder.MANIFEST).write_text(json.dumps({"files": ["key.csv"]}))
+    write_build(out, {"key.csv": "old"})
     staging = tmp_path / ".out.partial-1"
     staging.mkdir()
+    leftovers.mark(staging)
     (staging / "key.csv").write_text("new")
     monkeypatch.setenv("DERIVE_FAULT_AT", "no-exchange")  # the path with two renames
     rename = Path.rename
@@ -182,6 +186,220 @@ def test_ctrl_c_during_the_renames_waits_until_the_new_build_is_in_place(tmp_pat
         other.join()
     assert (out / "key.csv").read_text() == "new"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # the old build removed
+
+
+# --- only what derive can prove its own is removed or replaced (issue 35) -----------------------
+
+def test_a_users_folders_named_like_leftovers_are_kept(tmp_path, small_set):
+    out = tmp_path / "out"
+    assert build(small_set, out).returncode == 0
+    thesis = tmp_path / ".out.old-1999"
+    thesis.mkdir()
+    (thesis / "thesis.tex").write_text("my thesis")
+    notes = tmp_path / ".out.partial-1999"
+    notes.mkdir()
+    (notes / "notes.md").write_text("my notes")
+    copied = tmp_path / ".out.old-1998"  # a copy of a build, and a file of the user's in it
+    shutil.copytree(out, copied)
+    (copied / "draft.tex").write_text("my draft")
+    done = build(small_set, out, "--seed", "5")
+    assert done.returncode == 0, done.stderr
+    assert contents(thesis) == {"thesis.tex": b"my thesis"} and contents(notes) == {"notes.md": b"my notes"}
+    assert (copied / "draft.tex").read_text() == "my draft"
+    assert done.stderr.count("cannot prove it made it; left as it is") == 3, done.stderr
+
+
+@pytest.mark.parametrize("manifest", [None, {"files": ["thesis.tex"]}])
+def test_a_users_folder_named_like_an_old_build_is_not_restored_into_place(tmp_path, small_set, manifest):
+    thesis = tmp_path / ".out.old-1999"
+    thesis.mkdir()
+    (thesis / "thesis.tex").write_text("my thesis")
+    if manifest:  # one of an older derive, without hashes: it proves nothing
+        (thesis / output_folder.MANIFEST).write_text(json.dumps(manifest))
+    before = contents(thesis)
+    out = tmp_path / "out"
+    assert build(small_set, out).returncode == 0
+    assert contents(thesis) == before and not (out / "thesis.tex").exists() and (out / "key.csv").is_file()
+
+
+@pytest.mark.parametrize("sha256", [None, "0" * 64], ids=["no-hash", "wrong-hash"])
+def test_a_planted_manifest_listing_a_users_file_does_not_make_a_build_delete_it(tmp_path, small_set, sha256):
+    out = tmp_path / "out"
+    assert build(small_set, out).returncode == 0
+    (out / "notes.txt").write_text("mine")
+    manifest = json.loads((out / output_folder.MANIFEST).read_text())
+    manifest["files"].append("notes.txt")
+    if sha256:
+        manifest.setdefault("sha256", {})["notes.txt"] = sha256
+    else:
+        manifest.pop("sha256", None)
+    (out / output_folder.MANIFEST).write_text(json.dumps(manifest))
+    for name in {"key.tex", "key.csv", "key.json", "solutions.tex", "worksheet.tex"}:  # so that none collides
+        (out / name).unlink()
+    assert build(small_set, out, "--seed", "4").returncode == 0
+    assert (out / "notes.txt").read_text() == "mine"
+
+
+def test_a_product_the_user_changed_is_never_replaced(tmp_path, small_set):
+    out = tmp_path / "out"
+    assert build(small_set, out).returncode == 0
+    (out / "key.tex").write_text("my corrected key")
+    before = contents(out)
+    stderr = one_line_exit_2(build(small_set, out, "--seed", "4"))
+    assert "key.tex: changed since derive wrote it" in stderr and "derive will not replace it" in stderr
+    assert contents(out) == before
+
+
+def test_a_folder_an_earlier_derive_built_is_refused_once_with_what_to_do(tmp_path, small_set):
+    """A manifest of an earlier derive records no hashes: none of its files can be proven derive's,
+    so the build says so for the folder, in one line, and changes nothing."""
+    out = tmp_path / "out"
+    assert build(small_set, out).returncode == 0
+    manifest = json.loads((out / output_folder.MANIFEST).read_text())
+    manifest.pop("sha256")
+    (out / output_folder.MANIFEST).write_text(json.dumps(manifest))
+    before = contents(out)
+    stderr = one_line_exit_2(build(small_set, out, "--seed", "4"))
+    assert f"--out {out}: built by an earlier derive, whose manifest records no hash" in stderr
+    assert "move the folder away or empty it" in stderr and contents(out) == before
+
+
+def test_a_folder_among_the_products_is_derives_only_while_each_file_in_it_is(tmp_path):
+    out = tmp_path / "out"
+
+    def commit(with_figures: bool):
+        with output_folder.staged(out) as staging:
+            (staging / "key.csv").write_text("key")
+            products = [staging / "key.csv"]
+            if with_figures:
+                (staging / "figures").mkdir()
+                (staging / "figures" / "a.svg").write_text("<svg/>")
+                products.append(staging / "figures")
+            output_folder.commit(staging, out, products)
+
+    commit(True)
+    assert set(json.loads((out / output_folder.MANIFEST).read_text())["sha256"]) == {"key.csv", "figures/a.svg"}
+    commit(True)  # derive's folder, replaced
+    (out / "figures" / "mine.svg").write_text("mine")
+    with pytest.raises(output_folder.OutputError, match="figures: changed since derive wrote it"):
+        commit(True)
+    commit(False)  # kept, with the user's file in it
+    assert contents(out / "figures") == {"a.svg": b"<svg/>", "mine.svg": b"mine"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+
+
+def test_a_leftover_named_for_a_pid_out_of_range_does_not_stop_builds(tmp_path, small_set):
+    huge = tmp_path / ".out.partial-99999999999999999999"
+    huge.mkdir()
+    (huge / "notes.md").write_text("mine")
+    done = build(small_set, tmp_path / "out")
+    assert done.returncode == 0, done.stderr
+    assert contents(huge) == {"notes.md": b"mine"}
+
+
+# --- one build at a time ------------------------------------------------------------------------
+
+def test_a_second_build_of_a_folder_refuses_while_the_first_holds_it(tmp_path, small_set):
+    out = tmp_path / "new"
+    with output_folder.claim(out):  # the first build, under way
+        stderr = one_line_exit_2(build(small_set, out))
+        assert f"--out {out}: another derive build is writing to this folder" in stderr
+        assert not out.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["small.yaml"]  # the lock file is gone
+    assert build(small_set, out).returncode == 0
+
+
+def test_a_killed_builds_lock_file_is_removed_and_a_users_file_of_that_name_kept(tmp_path, small_set):
+    lock = tmp_path / ".out.lock"
+    lock.write_text(leftovers.text(lock.name))  # a SIGKILLed build's
+    assert build(small_set, tmp_path / "out").returncode == 0
+    assert not lock.exists()
+    lock.write_text("my lock notes")
+    assert build(small_set, tmp_path / "out").returncode == 0
+    assert lock.read_text() == "my lock notes"
+
+
+# --- SIGTERM, SIGKILL and TeX's scratch folders -------------------------------------------------
+
+def _processes_in(folder: Path) -> list[int]:
+    """The pids of processes whose working folder lies in `folder` (a TeX run left behind)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        try:
+            if entry.name.isdigit() and Path(os.readlink(entry / "cwd")).is_relative_to(folder):
+                found.append(int(entry.name))
+        except OSError:
+            continue
+    return found
+
+
+def test_sigterm_during_the_compiles_cleans_up_as_ctrl_c_does(tmp_path, small_set):
+    out, scratch = tmp_path / "out", tmp_path / "tmp"
+    scratch.mkdir()
+    assert build(small_set, out).returncode == 0
+    before = contents(out)
+    process = subprocess.Popen([str(DERIVE), "sheet", str(small_set), "--variants", "3", "--out", str(out), "--to",
+                                "pdf", "--progress", "none"], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, env={**os.environ, "TMPDIR": str(scratch)})
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and not any(scratch.glob("derive-tex-*")) and process.poll() is None:
+        time.sleep(0.02)
+    assert any(scratch.glob("derive-tex-*")), "no compile started"
+    process.terminate()
+    _, stderr = process.communicate(timeout=120)
+    assert process.returncode == 143 and stderr.strip().splitlines()[-1] == "derive: terminated", stderr
+    assert list(scratch.iterdir()) == [] and _processes_in(scratch) == []
+    assert contents(out) == before and sorted(p.name for p in tmp_path.iterdir()) == ["out", "small.yaml", "tmp"]
+
+
+def test_scratch_a_killed_build_left_is_swept_by_the_next(tmp_path, small_set):
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    env = {"TMPDIR": str(scratch)}
+    killed = build(small_set, tmp_path / "out", "--to", "pdf", env={**env, "DERIVE_FAULT_AT": "tex-scratch"})
+    assert killed.returncode == -signal.SIGKILL, killed.stderr
+    (left,) = scratch.iterdir()
+    assert left.name.startswith("derive-tex-") and leftovers.marked(left)
+    again = build(small_set, tmp_path / "out", "--to", "pdf", env=env)
+    assert again.returncode == 0, again.stderr
+    assert list(scratch.iterdir()) == []
+
+
+def test_the_sweep_removes_only_scratch_derive_can_prove_its_own(tmp_path, monkeypatch):
+    monkeypatch.setattr(export.tempfile, "tempdir", str(tmp_path))
+    ended = subprocess.Popen(["true"])
+    ended.wait()  # a pid whose process is gone
+
+    def folder(name: str, marked: bool, content: bool = True) -> Path:
+        path = tmp_path / name
+        path.mkdir()
+        if marked:
+            leftovers.mark(path)
+        if content:
+            (path / "work.tex").write_text("mine")
+        return path
+
+    swept = [folder(f"derive-tex-{ended.pid}-ab12", marked=True), folder(f"derive-tex-{ended.pid}-cd", False, False)]
+    kept = [folder(f"derive-tex-{ended.pid}-ef34", marked=False),  # a user's, named so
+            folder(f"derive-tex-{os.getpid()}-gh56", marked=True),  # a compile under way
+            folder("derive-tex-99999999999999999999-ij", marked=True),  # no process has that pid
+            folder(f"derive-tex-{ended.pid}", marked=True)]  # not a name derive gives
+    link = tmp_path / f"derive-tex-{ended.pid}-kl78"
+    link.symlink_to(swept[0].with_name("target"))
+    folder("target", marked=True)
+    export._sweep_scratch.__wrapped__()
+    assert not any(p.exists() for p in swept)
+    assert all(p.is_dir() for p in kept) and link.is_symlink() and (tmp_path / "target").is_dir()
+
+
+# --- a bad --out --------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("out", ["", "/proc/x", "/proc/self/x", "loop/x"])
+def test_an_out_that_cannot_be_a_folder_is_a_one_line_error(tmp_path, small_set, out):
+    (tmp_path / "loop").symlink_to(tmp_path / "loop")
+    stderr = one_line_exit_2(build(small_set, out, cwd=tmp_path))
+    assert stderr.startswith("derive: error: --out "), stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["loop", "small.yaml"]  # no build/ made
 
 
 # --- full and read-only disks ------------------------------------------------------------------
