@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from functools import cached_property
 from json.encoder import encode_basestring
 
+from derive.latex import symbol_latex
 from derive import distractors, json_text, render, units
 from derive.json_text import Raw
 from derive.problem_sets import ProblemSet
@@ -188,7 +189,7 @@ class _ProblemKey:
         tolerance's columns (it has no tolerance, and a long one would run off the page)."""
         general = self._general
         return {name: Stencil(render.render("key-row.tex.j2", variant=hole("variant"), problem=self.id,
-                                            symbol=render.symbol_latex(name), value=f"${hole('value')}$",
+                                            symbol=symbol_latex(name), value=f"${hole('value')}$",
                                             tolerance=None if name in general else hole("tolerance"),
                                             unit=units.siunitx_unit(ask.unit)))
                 for name, ask in self.item.problem.asks.items()}

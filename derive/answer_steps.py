@@ -23,7 +23,8 @@ from derive.mechanics import friction, orbits, rolling, rolling_coin
 from derive.mechanics.derivation import Step
 from derive.parts.cord import Cord
 from derive.problem import Ask
-from derive.scene import DYNAMIC_KINDS, STATIC_KINDS, TIME
+from derive.expr import TIME
+from derive.scene import DYNAMIC_KINDS, STATIC_KINDS
 
 
 class AnswerSteps:

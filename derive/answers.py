@@ -37,7 +37,8 @@ from derive.solid_answers import SolidAnswers
 from derive.solid_checks import SolidChecks
 from derive.state_answers import StateAnswers
 from derive.problem import Ask, Problem
-from derive.scene import RATE_KINDS, SECOND_ROUTE_KINDS, TIME, Quantity
+from derive.expr import TIME
+from derive.scene import RATE_KINDS, SECOND_ROUTE_KINDS, Quantity
 
 class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAnswers, SolidChecks):
     """Everything derived for one problem, computed on first use."""

@@ -25,7 +25,9 @@ from pathlib import Path
 
 import sympy as sp
 
-from derive import MAX_DIGITS, MAX_VARIANTS, defaults, render, report, units
+from derive.latex import latex_of
+from derive import defaults, report, units
+from derive.limits import MAX_DIGITS, MAX_VARIANTS
 from derive import problem_sets
 from derive import worksheets as sheets
 from derive.answers import Solution
@@ -101,7 +103,7 @@ class Result:
 
     def _given(self) -> list[str]:
         """The parameters that have values, as LaTeX: M = 4.000\\,\\mathrm{kg}."""
-        return [f"{render.latex_of(self.problem.parameters[n].symbol)} = {p['value']}\\,{units.latex_unit(p['unit'])}"
+        return [f"{latex_of(self.problem.parameters[n].symbol)} = {p['value']}\\,{units.latex_unit(p['unit'])}"
                 for n, p in self.report["parameters"].items() if p["value"] is not None]
 
     def _repr_latex_(self) -> str:
@@ -204,4 +206,4 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
         problem_set, out_dir=out, questions=questions, progress=progress, defaults=course,
         variants=None if variants is None else _whole("variants", variants, 1, MAX_VARIANTS),
         seed=None if seed is None else _whole("seed", seed),
-        formats=None if to is None else problem_sets.outputs(to if isinstance(to, str) else ",".join(to), "--to"))
+        formats=None if to is None else defaults.outputs(to if isinstance(to, str) else ",".join(to), "--to"))

@@ -32,7 +32,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from derive import export, library, numeric, problem, problem_sets, variants, worksheets
+from derive import defaults, export, library, numeric, problem, variants, worksheets
 from derive.answers import Solution
 from derive.bench_engines import engines
 from derive.progress import Reporter
@@ -457,7 +457,7 @@ def sheet_build(say, with_pdfs: bool) -> None:
     keys, the .tex files, the PDF compiles, the figures' images, pandoc, writing the files)."""
     import tempfile
 
-    formats = problem_sets.DEFAULT_OUTPUTS if with_pdfs else frozenset()
+    formats = defaults.DEFAULT_OUTPUTS if with_pdfs else frozenset()
     with tempfile.TemporaryDirectory() as folder:
         out = Path(folder) / "out"
         steps = _build_steps(SHEET_PROBLEMS, 30, formats, out)

@@ -17,8 +17,9 @@ from derive.errors import InputError
 from derive.parts.pin import Pin
 from derive.parts.places import turned
 from derive.reader import Reader, describe
+from derive.expr import TIME
 from derive.scene import Path as MotionPath  # a prescribed motion, not a file path
-from derive.scene import SHAPE_SIZES, TIME, Body, Motion
+from derive.scene import SHAPE_SIZES, Body, Motion
 from derive.spelling import did_you_mean
 
 

@@ -13,7 +13,8 @@ import traceback
 
 import click
 
-from derive import DISTRIBUTION, MAX_DIGITS, MAX_VARIANTS, version
+from derive.library import DISTRIBUTION, version
+from derive.limits import MAX_DIGITS, MAX_VARIANTS
 from derive.errors import EngineLimit, InputError, MissingTool
 
 FORMATS = click.Choice(["text", "latex", "json"])
@@ -435,10 +436,10 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
       course: PHY141            due: 2026-12-01        variants: 30      seed: 141
       outputs: [pdf, moodle]    questions: choice      (options given here override it)
     """
-    from derive import defaults, problem_sets
+    from derive import defaults
     from derive import worksheets as sheets
 
-    wanted = None if formats is None else problem_sets.outputs(formats, "--to")
+    wanted = None if formats is None else defaults.outputs(formats, "--to")
     built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
                          questions=questions, defaults=defaults.load(), progress=progress)
     for path in built:

@@ -98,8 +98,6 @@ def moment_by_sum(made: CompositeParts) -> sp.Expr:
 
 def read(reader, raw, field: str) -> CompositeParts:
     """`parts: {NAME: {shape, mass, SIZES..., at: [x, y], angle}}`, at least two."""
-    from derive.scene import SHAPE_SIZES
-
     specs = reader.mapping(raw, field, free=True)
     if len(specs) < 2:
         raise reader.fail(field, "a composite has at least two parts (one part is a body of that shape)")
@@ -110,7 +108,7 @@ def read(reader, raw, field: str) -> CompositeParts:
         if shape not in inertia.SHAPES:
             raise reader.fail(f"{where}.shape", f"unknown shape {shape!r} (a part is one of: {', '.join(inertia.SHAPES)})"
                                                 + did_you_mean(shape, inertia.SHAPES))
-        sizes_needed = SHAPE_SIZES[shape]
+        sizes_needed = tuple(inertia.SHAPES[shape].sizes)
         spec = reader.mapping(spec, where, required=("shape", "mass", *sizes_needed), optional=("at", "angle"))
         mass = reader.positive(spec["mass"], f"{where}.mass", "kg", "a mass")
         sizes = {s: reader.positive(spec[s], f"{where}.{s}", "m", f"a {s}") for s in sizes_needed}

@@ -23,7 +23,7 @@ import sympy as sp
 from derive import inertia, limits, numeric, units
 from derive.errors import EngineLimit
 from derive.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
-from derive.mechanics import impacts, integrated_motion, lagrange, many_bodies, orbits, paths, states
+from derive.mechanics import impacts, integrated_motion, lagrange, many_bodies, orbits, paths, reaching
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import row_reduced
 from derive.problem import Ask, Problem
@@ -274,7 +274,7 @@ class CrossChecks:
             symbols -= coords.state | set(newton_euler.unknowns)
             values = sample_points(self.problem, sp.Add(*symbols), count=1)[0]
             expected = float(numeric.evaluate(period, values, 12))
-            simulated = integrated_motion.integrate_to(newton_euler, coords, values, turned, states.Stops(), expected + 1)
+            simulated = integrated_motion.integrate_to(newton_euler, coords, values, turned, reaching.Stops(), expected + 1)
             if simulated is None or abs(2 * simulated[0] - expected) > 1e-7 * expected:
                 raise CheckFailure(f"{self.problem.id}: the period at amplitude {ask.amplitude} is {expected} by energy, "
                                    f"{None if simulated is None else 2 * simulated[0]} by Newton–Euler's motion")

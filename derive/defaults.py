@@ -26,14 +26,31 @@ FILE = "derive.toml"
 KEYS = ("course", "outputs", "digits", "tolerance")
 COURSE_LIMIT = 200  # characters, as a set file's `course`
 DIGITS = (1, 50)  # as --digits
+#: What `derive sheet --to` (or a set's `outputs:`) can add to the .tex files and the keys.
+OUTPUTS = ("pdf", "html", "md", "docx", "moodle", "qti", "distractors")
+DEFAULT_OUTPUTS = frozenset({"pdf", "html"})
 
 
 @dataclass(frozen=True)
 class Defaults:
     course: str = ""
-    outputs: frozenset[str] | None = None  # None: the built-in default (derive.sheet.DEFAULT_OUTPUTS)
+    outputs: frozenset[str] | None = None  # None: the built-in default (DEFAULT_OUTPUTS)
     digits: int | None = None  # None: 15
     tolerance: str | None = None  # None: one unit in the last digit shown
+
+
+def outputs(text: str, where: str) -> frozenset[str]:
+    """A comma-separated list of outputs, checked against OUTPUTS.
+
+    >>> sorted(outputs("pdf, moodle", "--to"))
+    ['moodle', 'pdf']
+    """
+    wanted = frozenset(f.strip() for f in text.split(",") if f.strip())
+    unknown = sorted(wanted - set(OUTPUTS))
+    if unknown:
+        raise InputError(f"{where}: unknown output {unknown[0]!r} (outputs: {', '.join(OUTPUTS)})"
+                         + did_you_mean(unknown[0], OUTPUTS))
+    return wanted
 
 
 def load(folder: Path | None = None) -> Defaults:
@@ -77,13 +94,11 @@ def _read(path: Path, table, prefix: str) -> Defaults:
         latex_safety.check_plain(course, COURSE_LIMIT)
     except latex_safety.LatexError as error:
         raise fail("course", str(error)) from None
-    outputs = table.get("outputs")
-    if outputs is not None:
-        if not isinstance(outputs, list) or not all(isinstance(o, str) for o in outputs):
+    wanted = table.get("outputs")
+    if wanted is not None:
+        if not isinstance(wanted, list) or not all(isinstance(o, str) for o in wanted):
             raise fail("outputs", 'expected a list such as ["pdf", "moodle"]')
-        from derive.problem_sets import outputs as checked  # light files, heavy checks: only when given
-
-        outputs = checked(",".join(outputs), f"{path}: {prefix}outputs")
+        wanted = outputs(",".join(wanted), f"{path}: {prefix}outputs")
     digits = table.get("digits")
     if digits is not None and (not isinstance(digits, int) or isinstance(digits, bool)
                                or not DIGITS[0] <= digits <= DIGITS[1]):
@@ -96,4 +111,4 @@ def _read(path: Path, table, prefix: str) -> Defaults:
             tolerance = tolerance_policy(tolerance)
         except ValueError as error:
             raise fail("tolerance", str(error)) from None
-    return Defaults(course, outputs, digits, tolerance)
+    return Defaults(course, wanted, digits, tolerance)

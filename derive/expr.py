@@ -23,7 +23,7 @@ import sympy
 from derive import names
 from derive.errors import InputError
 
-__all__ = ["ExprError", "FUNCTIONS", "RESERVED", "parse", "parse_condition"]
+__all__ = ["ExprError", "FUNCTIONS", "RESERVED", "TIME", "parse", "parse_condition"]
 
 
 class ExprError(InputError):
@@ -37,6 +37,10 @@ FUNCTIONS: dict[str, Callable] = {
     "exp": sympy.exp, "log": sympy.log, "abs": sympy.Abs,
 }
 RESERVED: frozenset[str] = frozenset(FUNCTIONS) | {"pi"}
+
+#: The time, in an expression that varies with it (a force, a prescribed path): the same symbol as
+#: sympy.physics.mechanics' dynamicsymbols._t.
+TIME = sympy.Symbol("t")
 
 MAX_DEPTH = 60
 MAX_LOG10 = 1000  # numbers beyond 10**±1000 are refused

@@ -1,4 +1,4 @@
-"""Where problems, sets and templates live, and how an id becomes a file.
+"""Where problems, sets and templates live, how an id becomes a file, and the installed version.
 
 The library is the `problems/` folder of the source tree (or its copy inside an installed
 wheel), or the folder named by the DERIVE_LIBRARY environment variable.
@@ -16,8 +16,28 @@ from derive.errors import InputError
 from derive.spelling import did_you_mean
 
 _PACKAGE = Path(__file__).resolve().parent
+#: The name on the package index (`pip install derive-mechanics`); the command is `derive`.
+DISTRIBUTION = "derive-mechanics"
 ID_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")  # problem ids: file names and LaTeX labels
 SET_ID_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
+
+
+def version() -> str:
+    """The installed distribution's version (importlib.metadata); in a source tree that is not
+    installed (PYTHONPATH), the version in its pyproject.toml.
+
+    >>> version().count(".") >= 1
+    True
+    """
+    from importlib import metadata
+
+    try:
+        return metadata.version(DISTRIBUTION)
+    except metadata.PackageNotFoundError:
+        import tomllib
+
+        with open(_PACKAGE.parent / "pyproject.toml", "rb") as file:
+            return tomllib.load(file)["project"]["version"]
 
 
 class LibraryError(InputError):

@@ -1,4 +1,5 @@
-"""Time limits on symbolic steps (simplification, integration, a derivation).
+"""Time limits on symbolic steps (simplification, integration, a derivation), and the bounds on a
+build's work (variants, digits).
 
 sympy is pure Python, so a SIGALRM timer interrupts it between bytecodes: `time_limit`
 arms `signal.setitimer(ITIMER_REAL)` and turns the alarm into a `TimeLimitError`, an
@@ -33,6 +34,11 @@ from contextlib import contextmanager
 from derive.errors import InputError
 
 DEFAULT_SECONDS = 60.0
+#: The most variants one build makes, from the command line or a set file (a course of a few
+#: hundred students; a set file cannot ask for unbounded work).
+MAX_VARIANTS = 1000
+#: The most significant digits a value is computed to (`--digits`, `digits=`).
+MAX_DIGITS = 50
 ENVIRONMENT = "DERIVE_TIME_LIMIT"
 _REPEAT = 0.5  # seconds between alarms once the limit has passed
 

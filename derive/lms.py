@@ -20,7 +20,7 @@ places of a numeric answer and its margin, so a quantity whose margin would fall
 asked in a scaled unit (10⁻ᵏ UNIT), one for all the variants of a question (`exponent`). `check`
 holds every exported tolerance to the LMS's limits.
 
-A field is labelled as the worksheets name its symbol (render.symbol_latex: Omega_fast as
+A field is labelled as the worksheets name its symbol (latex.symbol_latex: Omega_fast as
 \\(\\Omega_{\\mathrm{fast}}\\)) and its unit is text as a student reads it (kg·m², none for a pure
 number: units.unicode_unit, applied where the items are made).
 
@@ -55,7 +55,8 @@ import lxml.html
 from lxml import etree
 from lxml.builder import E, ElementMaker
 
-from derive import render, units
+from derive.latex import symbol_latex
+from derive import units
 from derive.errors import InputError
 from derive.figure_files import FOLDER, Image
 
@@ -304,7 +305,7 @@ def _label(item: Item) -> str:
     >>> _label(Item("p", "P", 1, "", "Omega_fast", "fast precession rate", "1.5", "rad/s", "0.1"))
     'fast precession rate: \\(\\Omega_{\\mathrm{fast}}\\)'
     """
-    return f"{item.meaning}: \\({render.symbol_latex(item.name)}\\)"
+    return f"{item.meaning}: \\({symbol_latex(item.name)}\\)"
 
 
 def _cloze(item: Item, k: int) -> str:

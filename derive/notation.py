@@ -4,7 +4,7 @@ A document's symbols come from the problem file (its parameters and the names of
 the results print) and from the engine: the energies and the periods the steps solve for
 (`derivation.KINETIC`, `POTENTIAL`, `LAGRANGIAN`, `PERIOD`, `EXACT_PERIOD`, `GROWTH_RATE`), each
 route's unknown forces (`T_rope`, `N^ball`, `R_x^pin`) and the coordinates with their rates. Two
-of them that typeset alike (as `render.symbol_latex` prints them) but stand for different things
+of them that typeset alike (as `latex.symbol_latex` prints them) but stand for different things
 are a clash: an ask named T for a period where the steps call a tension T, a parameter V where
 the Lagrangian's potential energy is V. An ask of the quantity an engine symbol stands for (an ask
 `T` of the period, `K` of the kinetic energy) is that symbol, not a clash; any other symbol of the
@@ -29,7 +29,7 @@ from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from derive import render
+from derive.latex import symbol_latex
 from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, KINETIC, LAGRANGIAN, PERIOD, POTENTIAL
 
 #: The engine's symbols of a fixed meaning, and the asks (kind, detail; None: any detail) that mean it.
@@ -90,9 +90,9 @@ def clashes(names: Iterable[tuple[str, str, str]], shown: set[sp.Symbol], engine
     things: dict[str, dict[tuple, tuple[str, str | None]]] = {}  # latex -> identity -> (what, field)
     for field, name, what in names:
         identity = ("engine", same[field]) if field in same else ("name", name)
-        things.setdefault(render.symbol_latex(name), {})[identity] = (what, field)
+        things.setdefault(symbol_latex(name), {})[identity] = (what, field)
     for symbol in shown:
-        entry = things.setdefault(render.symbol_latex(symbol.name), {})
+        entry = things.setdefault(symbol_latex(symbol.name), {})
         named = [i for i, (_, f) in entry.items() if f is not None]  # the file's name typeset alike
         if symbol in origin or symbol in fixed:
             identity = ("engine", origin.get(symbol, symbol))
@@ -168,13 +168,13 @@ def named(problem, solution, steps: Mapping[str, list]) -> dict[str, list]:
     """
     by_ask = asked(problem)  # printed by the ask's name (T_small for the small-angle period)
     shown = step_symbols(s for route in steps.values() for s in route)
-    taken = {render.symbol_latex(n) for n in (*problem.parameters, *problem.asks)}
-    taken |= {render.symbol_latex(s.name) for s in shown}
+    taken = {symbol_latex(n) for n in (*problem.parameters, *problem.asks)}
+    taken |= {symbol_latex(s.name) for s in shown}
 
     def alternative(symbol):
-        free = [a for a in ALTERNATIVES.get(symbol, ()) if render.symbol_latex(a.name) not in taken]
+        free = [a for a in ALTERNATIVES.get(symbol, ()) if symbol_latex(a.name) not in taken]
         if free:
-            taken.add(render.symbol_latex(free[0].name))
+            taken.add(symbol_latex(free[0].name))
         return free[0] if free else None
 
     change = dict(by_ask)

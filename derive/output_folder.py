@@ -36,7 +36,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
-from derive import version
+from derive.library import version
 from derive.errors import InputError
 
 MANIFEST = ".derive-build.json"

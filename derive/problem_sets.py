@@ -19,8 +19,9 @@ from typing import Sequence
 
 import yaml
 
-from derive import MAX_VARIANTS, latex_safety, library
-from derive.defaults import Defaults
+from derive import latex_safety, library
+from derive.limits import MAX_VARIANTS
+from derive.defaults import DEFAULT_OUTPUTS, OUTPUTS, Defaults, outputs
 from derive.errors import InputError
 from derive.problem import load
 from derive.reader import Loader
@@ -30,9 +31,6 @@ SET_REQUIRED = ("title", "problems")
 SET_OPTIONAL = ("course", "due", "variants", "seed", "outputs", "questions", "answer_space")
 #: `answer_space:` of a set file: room left under each problem of the printed worksheet.
 ANSWER_SPACE = re.compile(r"(?:\d+(?:\.\d+)?)(?:cm|mm|in)")
-#: What `derive sheet --to` (or a set's `outputs:`) can add to the .tex files and the keys.
-OUTPUTS = ("pdf", "html", "md", "docx", "moodle", "qti", "distractors")
-DEFAULT_OUTPUTS = frozenset({"pdf", "html"})
 #: How the LMS exports ask: a number with a tolerance, or a choice among distractors.
 QUESTIONS = ("numerical", "choice")
 
@@ -52,20 +50,6 @@ class ProblemSet:
     questions: str = "numerical"
     tolerance: str | None = None  # the LMS tolerance of asks that give none (derive.defaults)
     answer_space: str = ""  # a TeX length left under each problem of the worksheet ("6cm"), or none
-
-
-def outputs(text: str, where: str) -> frozenset[str]:
-    """A comma-separated list of outputs, checked against OUTPUTS.
-
-    >>> sorted(outputs("pdf, moodle", "--to"))
-    ['moodle', 'pdf']
-    """
-    wanted = frozenset(f.strip() for f in text.split(",") if f.strip())
-    unknown = sorted(wanted - set(OUTPUTS))
-    if unknown:
-        raise InputError(f"{where}: unknown output {unknown[0]!r} (outputs: {', '.join(OUTPUTS)})"
-                         + did_you_mean(unknown[0], OUTPUTS))
-    return wanted
 
 
 def _topic(path: Path, index: int, entry: dict, seed: int) -> list[str]:

@@ -4,7 +4,7 @@ A part of a scene says what it contributes to a route in such sentences (`derive
 `Part.sentences`): "The cord does not slip on the disk, so ..." followed by the equation. The
 words stay words (no pseudo-math) and the math stays sympy, so each output prints both its own
 way: LaTeX with the math in `$...$` and the symbols named as the equations name them
-(`render.latex_of`: word subscripts upright), text with sympy's unicode pretty-printer.
+(`latex.latex_of`: word subscripts upright), text with sympy's unicode pretty-printer.
 
 >>> import sympy as sp
 >>> v, w, R = sp.symbols("v omega R")
@@ -23,7 +23,7 @@ from typing import Callable
 
 import sympy as sp
 
-from derive import render
+from derive.latex import latex_of, tex_escape
 from derive.terminal import pretty
 
 
@@ -42,7 +42,7 @@ class Sentence:
 
     def latex(self) -> str:
         """The sentence as LaTeX: words escaped, each piece of math in `$...$`."""
-        return "".join(render.tex_escape(p) if isinstance(p, str) else f"${render.latex_of(p)}$" for p in self.pieces)
+        return "".join(tex_escape(p) if isinstance(p, str) else f"${latex_of(p)}$" for p in self.pieces)
 
     def text(self) -> str:
         """The sentence for a terminal (a fraction takes three lines, on one baseline)."""

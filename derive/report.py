@@ -17,7 +17,8 @@ import json
 
 import sympy as sp
 
-from derive import notation, numeric, render, units
+from derive.latex import latex_of, symbol_latex
+from derive import notation, numeric, units
 from derive.terminal import indented, pretty
 from derive.answers import Solution
 from derive.mechanics.derivation import at_state
@@ -96,7 +97,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         answers[name] = {
             "meaning": ask.meaning,
             "expr": sp.sstr(expression),
-            "latex": render.latex_of(expression),
+            "latex": latex_of(expression),
             "unit": ask.unit,
             "value": numbers[name],
         }
@@ -136,7 +137,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         "energy": energy,
         "steps": {
             route: [{"sentences": [{"text": t.text(), "latex": t.latex()} for t in s.sentences],
-                     "text": s.text, "latex": [render.latex_of(e) for e in s.equations]} for s in route_steps]
+                     "text": s.text, "latex": [latex_of(e) for e in s.equations]} for s in route_steps]
             for route, route_steps in steps.items()
         },
     }
@@ -243,7 +244,7 @@ def answer_latex(name: str, answer: dict) -> str:
     '\\omega_{0} = \\sqrt{\\frac{g}{L}} = 3.13\\,\\mathrm{rad}/\\mathrm{s}'
     """
     value = f" = {answer['value']}\\,{units.latex_unit(answer['unit'])}" if answer["value"] is not None else ""
-    return f"{render.symbol_latex(name)} = {answer['latex']}{value}"
+    return f"{symbol_latex(name)} = {answer['latex']}{value}"
 
 
 def aligned(latex_equation: str) -> str:

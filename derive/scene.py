@@ -36,8 +36,6 @@ SHAPE_SIZES: dict[str, tuple[str, ...]] = {
 }
 
 
-TIME = sp.Symbol("t")  # the same symbol as sympy.physics.mechanics' dynamicsymbols._t
-
 #: What a point mass on a prescribed path can be asked.
 PATH_QUANTITIES = ("velocity.x", "velocity.y", "speed", "acceleration.x", "acceleration.y", "acceleration.radial",
                    "acceleration.tangential", "angular_momentum", "areal_velocity")

@@ -236,6 +236,30 @@ def _placements(places: Places, scene: Scene) -> tuple[sp.Expr, ...]:
     return tuple(placed)
 
 
+def _cord(reader: Reader, places: Places, name: str, path, field: str) -> Cord:
+    """A cord read from its path (derive.parts.cord), its runs checked in the reference configuration."""
+    made = cord.read(reader, places, name, path, field)
+    _check_runs(reader, places, made, field)
+    return made
+
+
+def _check_runs(reader: Reader, places: Places, made: Cord, field: str) -> None:
+    """Every run has a length in the reference configuration, and no circle overlaps the next."""
+    from derive.mechanics.kinematics import Coordinates
+
+    coords = Coordinates(Scene(places.bodies))
+    rest = coords.at_rest_in_reference()
+    for i, (a, b) in enumerate(zip(made.path, made.path[1:])):
+        if a.kind == "pulled" or b.kind == "pulled":
+            continue
+        between = (b.center(coords) - a.center(coords)).xreplace(rest)
+        reach = places.sample(between.dot(between)) - places.sample((b.rho - a.rho) ** 2)
+        if reach <= 1e-12 * (1 + places.sample(between.dot(between))):
+            raise reader.fail(f"{field}[{i + 1}]", f"the cord's run from {cord.describe(a)} to {cord.describe(b)} has no "
+                                                   "length (the two are at one place, or their circles overlap): "
+                                                   "place the bodies with at")
+
+
 def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
     """Before anything is derived: each body on a surface touches it, and no cord whose tension is
     unknown pulls it straight off or into its surface (a body resting on a surface does not hang
@@ -341,8 +365,8 @@ def read_scene(reader: Reader, raw) -> Scene:
                 else ""
             raise reader.fail(field, f"expected one joint kind ({', '.join(JOINTS)}){hint}")
         joints.append(JOINTS[kind[0]](reader, places, name, spec, field))
-    cords = [cord.read(reader, places, name, spec["path"], spec["field"]) for name, spec in strings]
-    cords += [cord.read(reader, places, name, path, f"scene.cords.{name}")
+    cords = [_cord(reader, places, name, spec["path"], spec["field"]) for name, spec in strings]
+    cords += [_cord(reader, places, name, path, f"scene.cords.{name}")
               for name, path in reader.named(raw.get("cords"), "cords").items()]
     found, loads = _loads(reader, raw.get("loads") or [], places)
     # a part with no force of its own to find (a cord pulled with a given force, a slipping

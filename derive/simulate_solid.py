@@ -41,6 +41,7 @@ from derive import rigid_motion
 from derive.crosschecks import sample_points
 from derive.mechanics import bearings, free_rotation
 from derive.scene import Quantity
+from derive.solid_scene import own_axis
 from derive.simulate import SimulationReport
 
 #: The 3D kinds of asks this module simulates.
@@ -400,7 +401,7 @@ class _Simulation:
         parts = body.composite.parts if body.composite is not None else None
         tensor = self.matrix(bearings.body_tensor(body.shape, body.mass, body.sizes, parts))
         tilt, roll, rate = (self.number(v) for v in (held.tilt, held.roll, held.rate))
-        axis = bearings.own_axis(body.shape)
+        axis = own_axis(body.shape)
         mounted = self.matrix(bearings.mounted_axes(tilt, roll, axis))
         center = -np.array([self.number(c) for c in held.through])  # from the shaft's point, body frame
         mass = self.number(body.mass)

@@ -18,6 +18,7 @@ from derive.mechanics.derivation import Step
 from derive.mechanics.tidying import tidy
 from derive.parts.torque import Torque
 from derive.scene import Quantity
+from derive.solid_scene import own_axis
 
 
 class SolidAnswers:
@@ -30,7 +31,7 @@ class SolidAnswers:
         body, held = self.scene.bodies[name], self.scene.bearings[name]
         parts = body.composite.parts if body.composite is not None else None
         tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        return bearings.motion(tensor, held.rate, held.tilt, held.roll, bearings.own_axis(body.shape), route,
+        return bearings.motion(tensor, held.rate, held.tilt, held.roll, own_axis(body.shape), route,
                                body.mass, held.through, self.shaft_gravity(name), held.apart, held.thrust)
 
     def shaft_gravity(self, name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
@@ -86,7 +87,7 @@ class SolidAnswers:
         else:
             parts = body.composite.parts if body.composite is not None else None
             tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-            k = "xyz".index(bearings.own_axis(body.shape))
+            k = "xyz".index(own_axis(body.shape))
             across = [i for i in range(3) if i != k]
             if any(tidy(tensor[i, j]) != 0 for i in range(3) for j in range(i)) \
                     or tidy(tensor[across[0], across[0]] - tensor[across[1], across[1]]) != 0:

@@ -11,10 +11,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.bearings import own_axis
 from derive.reader import Reader
 from derive.scene import Body
-from derive.solid_scene import Bearings, FreeRotation, PivotPoint, RollsOnEdge
+from derive.solid_scene import Bearings, FreeRotation, PivotPoint, RollsOnEdge, own_axis
 def _at_range_ends(reader: Reader, value: sp.Expr) -> list[sp.Expr]:
     """The value at every corner of its parameters' ranges in SI (a fixed parameter at its value)."""
     corners = [{}]

@@ -13,10 +13,16 @@ from dataclasses import dataclass
 import sympy as sp
 
 
+def own_axis(shape: str) -> str:
+    """The body axis the tilt is measured from: x for a rod (its length) or a composite (its
+    parts' frame), z (the symmetry axis) for every other shape."""
+    return "x" if shape in ("rod", "composite") else "z"
+
+
 @dataclass(frozen=True)
 class Bearings:
     """A body turning at the constant `rate` about a fixed shaft, its own axis
-    (derive.mechanics.bearings.own_axis) tilted by `tilt` from the shaft, the body turned by `roll`
+    (`own_axis`) tilted by `tilt` from the shaft, the body turned by `roll`
     about that axis; the shaft passes through the body's point `through` (x, y, z from the center of
     mass in the body's own frame); `apart` is the distance between the two bearings, either side of
     that point (None: not given); `incline`, the shaft's angle above the horizontal under gravity;

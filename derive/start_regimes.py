@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics import friction
+from derive.mechanics import reaching
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Step
 from derive.mechanics.tidying import tidy
@@ -141,6 +142,6 @@ class StartRegimes:
         return result
 
 
-def with_start_step(reached: state_motion.Reached, start: Start | None) -> state_motion.Reached:
+def with_start_step(reached: reaching.Reached, start: Start | None) -> reaching.Reached:
     """The state with the step that says how its motion starts first."""
     return reached if start is None else dataclasses.replace(reached, steps=(start.step, *reached.steps))

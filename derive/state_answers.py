@@ -21,6 +21,7 @@ import sympy as sp
 
 from derive import limits
 from derive.mechanics import durations, friction, grips, impacts, lagrange, moves, newton_euler
+from derive.mechanics import reaching
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Solved, Step
 from derive.mechanics.tidying import root, tidy
@@ -50,7 +51,7 @@ class Chain:
     scene); per state whose motion starts just after a bounce that grips or slides by the variant,
     the bounce's regime it was derived in (`followed`: the one at the middle of the ranges)."""
 
-    reached: dict[str, state_motion.Reached]
+    reached: dict[str, reaching.Reached]
     joints: dict[str, tuple]
     impacts: dict[str, impacts.Impact | moves.Moved]
     made: dict[str, object]
@@ -64,7 +65,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
     states: derive.state_conditions)."""
 
     @property
-    def states(self) -> dict[str, state_motion.Reached]:
+    def states(self) -> dict[str, reaching.Reached]:
         """Every coordinate and velocity in each named state of the scene (derive.mechanics.states):
         the placement moving at given rates, where a coordinate gets to from another state, or
         just after an impact (derive.mechanics.impacts)."""
@@ -204,7 +205,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                  f"derived where it {regime.name}, as at the middle of the ranges: narrow the ranges")
                 for k, other in enumerate(regimes) if other is not regime]
 
-    def _state(self, state, found: dict, joints: tuple) -> state_motion.Reached:
+    def _state(self, state, found: dict, joints: tuple) -> reaching.Reached:
         coords = self.coordinates
         if state.rates:
             return state_motion.moving(self._scene_with(joints), coords, {coords.of(body, kind): value
@@ -340,27 +341,27 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             by_newton_euler = newton_euler.derive(scene, self.coordinates)
         return {"lagrange": by_lagrange, "newton_euler": by_newton_euler}
 
-    def _condition(self, state, scene=None) -> state_motion.Gets | state_motion.GetsRate | state_motion.Stops | \
-            state_motion.Vanishes:
+    def _condition(self, state, scene=None) -> reaching.Gets | reaching.GetsRate | reaching.Stops | \
+            reaching.Vanishes:
         """Where a state reached by the motion is: a coordinate's value or its rate's, a stop, a force at zero
         (of a part of `scene`, the scene on the way: by default the scene in the state)."""
         if state.until is None:
             body, kind, value = state.when
             if state.rate:
-                return state_motion.GetsRate(self.coordinates.of(body, kind), value)
-            return state_motion.Gets(self.coordinates.of(body, kind), value - self.scene.bodies[body].placed(kind))
+                return reaching.GetsRate(self.coordinates.of(body, kind), value)
+            return reaching.Gets(self.coordinates.of(body, kind), value - self.scene.bodies[body].placed(kind))
         kind, name = state.until
         if kind == "stops":
-            return state_motion.Stops()
+            return reaching.Stops()
         if kind == "grips":  # the slip rate, positive at the middle of the ranges at the start
             slip = self._slipping(name).slip(self.coordinates)
             start = self.states[state.start].values if state.start else state_motion.rest(self.coordinates)
-            return state_motion.Vanishes(sp.sign(self._sample(slip.xreplace(start))) * slip,
+            return reaching.Vanishes(sp.sign(self._sample(slip.xreplace(start))) * slip,
                                          f"the slip rate of {name}")
         part = (scene or self.scene_in(state.name)).constraint(name)
         if kind == "slips":
             forces = part.unknowns()
-            return state_motion.Vanishes(self._grip_margin(part), f"the grip margin of the {part.body} at {name}", (
+            return reaching.Vanishes(self._grip_margin(part), f"the grip margin of the {part.body} at {name}", (
                 Sentence((f"The {part.body} grips the {part.surface} while static friction can supply the friction ",
                           forces["friction"], " it needs, at most ", friction.static_coefficient(part) * forces["normal"],
                           " in size: while ", self._grip_margin(part), " is not negative.")),
@@ -371,7 +372,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         holds = (f"The {part.body} stays on the {part.surface} while the normal force on it, ", force) \
             if kind == "leaves" else (f"{capital(part.title)} stays taut while its tension, ", force)
         ends = f"the {part.body} leaves the {part.surface}" if kind == "leaves" else "it goes slack"
-        return state_motion.Vanishes(force, what, (
+        return reaching.Vanishes(force, what, (
             Sentence((*holds, ", is positive.")),
             Sentence(("Along the way the equations of motion, with the rates energy gives, say how large it is at "
                       f"each point: {ends} where it first falls to zero.",))))

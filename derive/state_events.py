@@ -20,6 +20,7 @@ import functools
 import sympy as sp
 
 from derive.mechanics import impacts, impulses, moves, transfers
+from derive.mechanics import reaching
 from derive.mechanics import states as state_motion
 from derive.mechanics.derivation import Step
 from derive.mechanics.tidying import tidy
@@ -84,7 +85,7 @@ class StateEvents:
                                       q.target if joint is None else joint.body)
         return vector[0 if q.detail == "x" else 1]
 
-    def _after_impact(self, name: str, before: dict, impact: impacts.Impact, scene) -> state_motion.Reached:
+    def _after_impact(self, name: str, before: dict, impact: impacts.Impact, scene) -> reaching.Reached:
         """The state just after an impact: where the bodies were, at the velocities the impact leaves."""
         values = {**{c.q: before[c.q] for c in self.coordinates.all}, **impact.velocities}
         lost = impacts.energy_lost(self.dynamics_scene, self.coordinates, before, values)
@@ -102,7 +103,7 @@ class StateEvents:
         steps = (Step(f"The impact: {what}", (), sentences=tuple(said)), *impact.steps, *((kept,) if kept else ()),
                  Step("Kinetic energy taken by the impact (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), lost),),
                       sentences=(impacts.lost_said(event),)))
-        return state_motion.Reached(values, (), steps)
+        return reaching.Reached(values, (), steps)
 
     def _transferred(self, state, before: dict, old: Contact) -> Contact:
         """The contact `old` on the surface the transfer of `state` carries it onto, where the body
@@ -124,7 +125,7 @@ class StateEvents:
         return made
 
     def _after_transfer(self, name: str, before: dict, impact: impacts.Impact, made: Contact,
-                        old: str) -> state_motion.Reached:
+                        old: str) -> reaching.Reached:
         """The state just after a transfer: the bodies where they were, at the velocities they had,
         once the impact with the new contact is proved to need no impulse (else refused: a kink)."""
         def size(impulse: sp.Expr) -> float:
@@ -145,7 +146,7 @@ class StateEvents:
                  Step("Kinetic energy taken by the transfer (before minus after)", (sp.Eq(sp.Symbol("Delta_K"), 0),),
                       sentences=(Sentence(("Kinetic energy is conserved through the transfer: no impulse acts, so "
                                            "nothing does work in the instant.",)),)))
-        return state_motion.Reached(dict(before), (), steps)
+        return reaching.Reached(dict(before), (), steps)
 
     def _move(self, name: str, before: dict, joints: tuple, route: str) -> moves.Moved:
         """The move or turn of the state `name` by `route`, in the scene with the joints before it."""
@@ -153,7 +154,7 @@ class StateEvents:
         return (moves.turn if event.kind == "turn" else moves.move)(self._scene_with(joints), self.coordinates, before,
                                                                    event, route, self._sample)
 
-    def _after_move(self, name: str, before: dict, moved: moves.Moved, pin: Pin | None = None) -> state_motion.Reached:
+    def _after_move(self, name: str, before: dict, moved: moves.Moved, pin: Pin | None = None) -> reaching.Reached:
         """The state after a move or a turn, with the kinetic energy the forces that make it add; a
         move's `pin` holds the mover at its new place."""
         event = self.scene.states[name].event
@@ -176,4 +177,4 @@ class StateEvents:
                           "do work, which is the change below." if added != 0 else
                           f"The forces inside the scene that make the {event.kind} do work on the way, but none in all: "
                           "the kinetic energy after it is the one before.",)),)))
-        return state_motion.Reached(moved.values, (), steps)
+        return reaching.Reached(moved.values, (), steps)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.conventions import split_super_sub
 
-from derive import render
+from derive.latex import latex_of, symbol_latex
 
 #: Characters of display math a line of the page holds (16.6 cm of text at 11 pt), less the
 #: alignment's indent; `room` below it where a note shares the line (the results' meanings).
@@ -37,7 +37,7 @@ def width(expression) -> float:
         return float(len(str(e)))
     if isinstance(e, sp.Symbol):
         base, supers, subs = split_super_sub(e.name)
-        letter = 1 if render.symbol_latex(base).startswith("\\") or len(base) == 1 else len(base)
+        letter = 1 if symbol_latex(base).startswith("\\") or len(base) == 1 else len(base)
         return float(letter + SCRIPT * sum(len(s) for s in (*supers, *subs)))
     if isinstance(e, sp.Rational) and not isinstance(e, sp.Integer):
         return max(len(str(abs(e.p))), len(str(e.q))) + (1 if e.is_negative else 0)
@@ -68,8 +68,8 @@ def width(expression) -> float:
 def _signed(term: sp.Expr, first: bool) -> str:
     """A term of a sum as a line shows it: "+ t" or "- t" after the first."""
     if term.could_extract_minus_sign():
-        return "- " + render.latex_of(-term)
-    return ("" if first else "+ ") + render.latex_of(term)
+        return "- " + latex_of(-term)
+    return ("" if first else "+ ") + latex_of(term)
 
 
 #: Of a line, what a note beside an equation takes (NOTE_WIDTH of \linewidth, a parbox).
@@ -94,10 +94,10 @@ def rows(lhs: sp.Expr, rhs: sp.Expr, room: float = LINE, beside: str = "") -> st
     """`lhs = rhs` as rows of an align environment (`lhs &= ...`), the sum on the right cut between
     its terms where the line would be wider than `room` characters (`width`); `beside`, a `note`,
     ends the first row (the room left for the equation shrinks by its width)."""
-    head = render.latex_of(lhs) + " &= "
+    head = latex_of(lhs) + " &= "
     available = (room * (1 - NOTE_WIDTH - 0.05) if beside else room) - width(lhs) - 3
     if width(rhs) <= available or not isinstance(rhs, sp.Add):
-        return head + render.latex_of(rhs) + beside
+        return head + latex_of(rhs) + beside
     lines, line, used = [], [], 0.0
     for term in rhs.as_ordered_terms():
         size = width(term) + 3

@@ -25,7 +25,8 @@ from typing import Sequence
 
 import sympy as sp
 
-from derive import distractors, latex_safety, lms, numeric, render, units
+from derive.latex import latex_of
+from derive import distractors, latex_safety, lms, numeric, units
 from derive.answers import Solution
 from derive.errors import InputError
 from derive.figure import free_body
@@ -121,7 +122,7 @@ class ProblemVariants:
     @cached_property
     def expression_latexes(self) -> dict[str, str]:
         """Each answer's expression as LaTeX, for a general (symbolic) result in every variant."""
-        return {name: render.latex_of(expression) for name, expression in self.solution.expressions.items()}
+        return {name: latex_of(expression) for name, expression in self.solution.expressions.items()}
 
     @cached_property
     def expression_texts(self) -> dict[str, str]:

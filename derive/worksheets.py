@@ -21,6 +21,7 @@ from typing import Sequence
 
 import sympy as sp
 
+from derive.latex import latex_of, symbol_latex, tex_escape
 from derive import (answer_keys, distractors, export, figure, figure_files, limiting_cases, lms, notation,
                     output_folder, render, typesetting, units)
 from derive.answers import Solution
@@ -43,8 +44,8 @@ def typeset(equation: sp.Eq, beside: str = "", tag: str = "") -> str:
     """An equation for an align environment, a long sum broken across lines (typesetting.rows),
     `beside` a note at its first row, `tag` its number at its last (`tag`); one too long to
     typeset at all becomes a short note."""
-    if len(render.latex_of(equation)) > LONGEST_EQUATION:
-        return (render.latex_of(equation.lhs) + r" &= \text{(too long to typeset here: see derive solve "
+    if len(latex_of(equation)) > LONGEST_EQUATION:
+        return (latex_of(equation.lhs) + r" &= \text{(too long to typeset here: see derive solve "
                 r"--format latex)}" + beside + tag)
     return typesetting.rows(equation.lhs, equation.rhs, beside=beside) + tag
 
@@ -112,10 +113,10 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
 def _check_latex(check, problem: Problem, siunitx: bool) -> str:
     """A check as a worked solution prints it: its reading, the units of the answers in math."""
     if check.name == "dimensions":
-        units_of = ", ".join(f"${render.symbol_latex(n)}$ in ${unit_latex(a.unit, siunitx)}$" if unit_latex(a.unit, siunitx)
-                             else f"${render.symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
+        units_of = ", ".join(f"${symbol_latex(n)}$ in ${unit_latex(a.unit, siunitx)}$" if unit_latex(a.unit, siunitx)
+                             else f"${symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
         return f"Every answer has the units it should: {units_of}."
-    return render.tex_escape(check.reading)
+    return tex_escape(check.reading)
 
 
 def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
@@ -139,9 +140,9 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
                           "sentences": [sentence.latex() for sentence in s.sentences]})
         routes.append({"title": route_title(route), "steps": shown})
     answers = [
-        {"symbol": render.symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
+        {"symbol": symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
          "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
-                         typesetting.note(render.tex_escape(a.meaning), tex=siunitx))}
+                         typesetting.note(tex_escape(a.meaning), tex=siunitx))}
         for n, a in problem.asks.items()
     ]
     variants = _numbers(item, siunitx)
@@ -155,8 +156,8 @@ def numbers_context(item: ProblemVariants, siunitx: bool, given: dict[str, str],
     """A variant's numbers as the templates show them: its given values (`given`: each
     parameter's value and unit as math) and its results (`results`: each answer's LaTeX)."""
     problem = item.problem
-    return {"given": [f"${render.latex_of(p.symbol)} = {given[n]}$" for n, p in problem.parameters.items()],
-            "results": [{"symbol": render.symbol_latex(n), "value": results[n],
+    return {"given": [f"${latex_of(p.symbol)} = {given[n]}$" for n, p in problem.parameters.items()],
+            "results": [{"symbol": symbol_latex(n), "value": results[n],
                          "unit": units.after_number(a.unit, unit_latex(a.unit, siunitx))} for n, a in problem.asks.items()]}
 
 
@@ -409,9 +410,9 @@ def _limits_context(item: ProblemVariants, middle: dict[str, sp.Expr], progress:
     cases = [(name, c) for name in problem.asks
              for c in limiting_cases.limiting_cases(solution.expression(name), varying, allowed)]
     point = {0: "0", sp.oo: r"\infty"}
-    return [{"equation": rf"\lim_{{{render.latex_of(c.symbol)} \to {point[c.point]}}} {render.symbol_latex(name)} "
-                         rf"&= {render.latex_of(c.value)}"
-                         + typesetting.note(render.tex_escape(limiting_cases.reading(c, ranged[c.symbol][1].meaning)))}
+    return [{"equation": rf"\lim_{{{latex_of(c.symbol)} \to {point[c.point]}}} {symbol_latex(name)} "
+                         rf"&= {latex_of(c.value)}"
+                         + typesetting.note(tex_escape(limiting_cases.reading(c, ranged[c.symbol][1].meaning)))}
             for name, c in limiting_cases.chosen(cases, varying)]
 
 

@@ -11,6 +11,7 @@ import pytest
 import sympy as sp
 
 from conftest import ROOT, copy_library, run_derive
+from derive.latex import tex_escape
 from derive import export, figure, library, problem, problem_sets, render, worksheets
 from derive.figure.canvas import _f, _pt
 
@@ -55,7 +56,7 @@ def test_a_pinned_body_hangs_from_a_pivot_and_an_axle_is_a_circled_dot(figures):
     pivot = re.search(r"\\draw\[fill=gray!30\] \((-?[\d.]+),(-?[\d.]+)\) -- .* -- cycle;", pendulum)
     assert pivot and "pattern=north east lines" in pendulum
     assert f"\\draw[fill=white] ({pivot[1]},{pivot[2]}) circle" in pendulum  # the pin at the triangle's apex
-    assert "{$R_{\\mathrm{cm}}$}" in pendulum  # Rcm, as the equations name it (render.symbol_latex)
+    assert "{$R_{\\mathrm{cm}}$}" in pendulum  # Rcm, as the equations name it (latex.symbol_latex)
     for free in ("rolling_incline", "kepler_orbit", "rod_midpoint"):
         assert "\\draw[fill=gray!30]" not in figures[free], free
     assert "circle (0.1); \\fill (0,0) circle (0.035);" in figures["string_wrapped_disk"]  # the axle
@@ -152,9 +153,9 @@ def test_names_with_latex_specials_are_escaped(special):
 def test_every_figure_compiles(tmp_path, problems, figures, special):
     """One document with the project's preamble and every figure (the library's, and the scenes of
     parts in tests/figures): it compiles, and the labels show."""
-    body = "\n\n".join(f"\\section*{{{render.tex_escape(p.id)}}}\n{figures[p.id]}" for p in problems)
+    body = "\n\n".join(f"\\section*{{{tex_escape(p.id)}}}\n{figures[p.id]}" for p in problems)
     scenes = [scene_problem(path.stem) for path in sorted(FIGURES.glob("*.yaml"))]
-    body += "\n\n" + "\n\n".join(f"\\section*{{{render.tex_escape(p.id)}}}\n{figure.tikz(p)}" for p in scenes)
+    body += "\n\n" + "\n\n".join(f"\\section*{{{tex_escape(p.id)}}}\n{figure.tikz(p)}" for p in scenes)
     tex = tmp_path / "figures.tex"
     tex.write_text(render.render("preamble.tex.j2") + "\\begin{document}\n" + body + "\n\n"
                    + figure.tikz(special) + "\n\\end{document}\n", encoding="utf-8")

@@ -13,7 +13,8 @@ import sys
 import pytest
 
 from conftest import ROOT, run_derive, write_problem
-from derive import problem, render, worksheets
+from derive.latex import latex_of, tex_escape
+from derive import problem, worksheets
 from derive.answers import Solution
 from derive.figure.free_body import free_bodies
 from test_library_sheet import _overfull
@@ -124,7 +125,7 @@ def test_each_label_is_a_term_of_the_bodys_balance(drawn):
         steps = {s.body: s for s in solution.derivations["newton_euler"].steps if s.body}
         assert set(steps) == set(diagrams), name
         for body, diagram in diagrams.items():
-            equations = " ".join(render.latex_of(e) for e in steps[body].equations)
+            equations = " ".join(latex_of(e) for e in steps[body].equations)
             for label in [a.label for a in diagram.arrows] + [t.label for t in diagram.turns]:
                 assert label in equations, (name, body, label)
 
@@ -183,7 +184,7 @@ def test_the_solutions_show_each_diagram_after_its_step_and_compile_with_nothing
     for name, (solution, diagrams) in drawn.items():
         for body, diagram in diagrams.items():
             heading = next(s.text for s in solution.derivations["newton_euler"].steps if s.body == body)
-            after = text.index(render.tex_escape(heading), text.index(render.tex_escape(solution.problem.title)))
+            after = text.index(tex_escape(heading), text.index(tex_escape(solution.problem.title)))
             assert text.index(diagram.tikz, after) < text.index("\\subsection*{Results}", after), (name, body)
     assert text.count("\\begin{tikzpicture}") == len(PROBLEMS) + sum(len(d) for _, d in drawn.values())
     assert (tmp_path / "set" / "solutions.pdf").read_bytes().startswith(b"%PDF")

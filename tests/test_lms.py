@@ -12,7 +12,8 @@ import pytest
 from pathlib import Path
 
 from conftest import copy_library, image_kind, moodle_cloze, qti_package, run_derive
-from derive import lms, problem_sets, render, units
+from derive.latex import symbol_latex
+from derive import lms, problem_sets, units
 from derive.errors import InputError, ProblemError
 from derive.problem import load, parse
 
@@ -290,7 +291,7 @@ def _shown_unit(unit: str) -> bool:
     ("angle", r"\mathit{angle}"), ("hbar", r"\hbar"), ("v_cm_x", r"v_{\mathrm{cm},x}"), ("x", "x"),
 ])
 def test_symbols_read_as_math(name, latex):
-    assert render.symbol_latex(name) == latex and _reads_as_math(latex)
+    assert symbol_latex(name) == latex and _reads_as_math(latex)
 
 
 def test_lms_labels_and_units_read_as_a_student_reads_them(labelled):

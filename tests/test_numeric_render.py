@@ -8,6 +8,7 @@ import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
+from derive.latex import tex_escape
 from derive import latex_safety, numeric, render
 
 
@@ -32,7 +33,7 @@ def test_evaluate_needs_every_symbol():
 
 
 def test_tex_escape():
-    assert render.tex_escape("50% of $5 & #1_a {b} ~ ^") == (
+    assert tex_escape("50% of $5 & #1_a {b} ~ ^") == (
         r"50\% of \$5 \& \#1\_a \{b\} \textasciitilde{} \textasciicircum{}")
 
 
@@ -40,7 +41,7 @@ def test_templates_are_strict_and_sandboxed():
     with pytest.raises(latex_safety.LatexError, match=r"\{\{ q \}\}: not a parameter"):
         render.question("mass {{ q }}", {"m": "1"})
     text = "{{ ''.__class__.__mro__[1].__subclasses__() }}"  # questions are no templates: literal text
-    assert render.question(text, {}) == render.tex_escape(text)
+    assert render.question(text, {}) == tex_escape(text)
     env = render.templates()
     assert env.variable_start_string == r"\VAR{" and env.undefined is jinja2.StrictUndefined
     with pytest.raises(jinja2.UndefinedError):

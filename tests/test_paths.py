@@ -5,7 +5,8 @@ import sympy as sp
 
 from derive import problem, report
 from derive.mechanics.paths import by_mechanics, quantity
-from derive.scene import TIME, Path
+from derive.expr import TIME
+from derive.scene import Path
 
 r = sp.Function("r")(TIME)
 theta = sp.Function("theta")(TIME)

@@ -11,7 +11,7 @@ from conftest import run_derive
 from derive import problem, report
 from derive.crosschecks import CheckFailure
 from derive.errors import EngineLimit
-from derive.mechanics import durations, first_root, states
+from derive.mechanics import durations, first_root, reaching
 
 ROD = """\
 id: rod_states
@@ -126,8 +126,8 @@ def test_a_wrong_state_is_caught_by_the_integrated_motion(tmp_path, monkeypatch)
     """The second route: a rate 1% off is found by integrating Newton–Euler's equations."""
     path = tmp_path / "problem.yaml"
     path.write_text(ROD.replace("TARGET", "-pi/2"))
-    original = states.root
-    monkeypatch.setattr(states, "root", lambda expr: original(expr) * 101 / 100)
+    original = reaching.root
+    monkeypatch.setattr(reaching, "root", lambda expr: original(expr) * 101 / 100)
     with pytest.raises(CheckFailure, match="differ"):
         report.solve(problem.load(path), {}, 4)
 

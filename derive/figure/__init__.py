@@ -5,7 +5,7 @@ scene has nothing to draw. Bodies are drawn by shape (a disk a circle with its c
 ring a thick circle, a rod a thick bar, a sphere a shaded ball, a point a dot or a block),
 joints as a hatched support (a pivot) or a circled dot (an axle), surfaces as an incline,
 a floor or a loop, and forces (gravity, pulls, tension), velocities and spins as arrows,
-each labelled with the problem's own symbols (``render.latex_of``). Relative sizes come from the
+each labelled with the problem's own symbols (``latex.latex_of``). Relative sizes come from the
 middle of each parameter's range (or its value), clamped so that the figure stays legible.
 The scene-level systems (orbit, spinning wheel, standing wave, internal forces, a turning body,
 prescribed paths) have schematics of their own; bodies in 3D (in bearings, on a fixed point, rolling

@@ -5,8 +5,10 @@ import math
 
 import sympy as sp
 
-from derive import inertia, render, units
-from derive.scene import TIME, Body, Motion
+from derive.latex import latex_of, symbol_latex
+from derive import inertia, units
+from derive.expr import TIME
+from derive.scene import Body, Motion
 
 #: Styles every figure declares (TikZ libraries: arrows.meta, patterns).
 STYLES = (r"font=\small, >={Stealth[length=2mm]}, "
@@ -102,7 +104,7 @@ class _Figure:
         expression = sp.sympify(expression, strict=True)  # safe: scene values, strict refuses text
         if not expression.free_symbols <= self.parameters:
             return None
-        return render.latex_of(expression)
+        return latex_of(expression)
 
     def m(self, expression) -> str | None:
         """The expression as inline math for a label, or None."""
@@ -123,7 +125,7 @@ class _Figure:
         for name, ask in self.problem.asks.items():
             q = ask.quantity
             if q.kind == kind and (target is None or q.target == target) and (detail is None or q.detail == detail):
-                return render.symbol_latex(name)
+                return symbol_latex(name)
         return None
 
     # drawing

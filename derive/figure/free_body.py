@@ -17,7 +17,7 @@ the unknown times that coefficient's length (N, or mu_k N for kinetic friction);
 weight, an applied force, a stretched spring) is one arrow along itself labelled by its magnitude
 (M g). A force zero there (a spring at its rest length, a damper at rest) is in no equation of the
 step and is not drawn. An arrow pulls from its point, or pushes into it where it points into the
-body from the rim (a normal force at a contact). Labels are `render.latex_of`, as the equations
+body from the rim (a normal force at a contact). Labels are `latex.latex_of`, as the equations
 print them. Arrows are of one length: their sizes are not to scale. A force not linear in the
 unknowns, one that changes with time (`t`: its sense may too), or a direction that does not
 evaluate to a real nonzero vector leaves that body without a diagram (None) rather than with a
@@ -42,13 +42,13 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive import render
+from derive.latex import latex_of
 from derive.figure.canvas import _add, _f, _Figure, _pt, _unit
 from derive.figure.drawn_view import ARROW, DIRECTIONS, LAYERS, Undrawable, _Body, _Scene
 from derive.figure.vectors import _degrees, _on_segment, _perp, _sub
 from derive.mechanics.newton_euler import all_forces
 from derive.parts import AppliedForce, AppliedTorque
-from derive.scene import TIME
+from derive.expr import TIME
 
 REACH = {"round": 0.7, "point": 1.0}  # cm: how far the body's outline and loads reach from its center (else 1.1)
 OUTSIDE = 0.75  # cm: how far an arrow from a point of the body reaches beyond its outline
@@ -131,7 +131,7 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
                 if length < 1e-9:
                     raise Undrawable(f"the {load.label} has no direction here")
                 shown = _size(vector, length) * amount
-                arrows.append(Arrow(offset, (direction[0] / length, direction[1] / length), render.latex_of(shown),
+                arrows.append(Arrow(offset, (direction[0] / length, direction[1] / length), latex_of(shown),
                                     load.label, sp.sstr(shown)))
         elif isinstance(load, AppliedTorque):
             for coefficient, amount in _split(sp.Matrix([load.torque.xreplace(rest)]), unknowns):
@@ -140,7 +140,7 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
                     raise Undrawable(f"the {load.label} has no sense here")
                 sign = 1 if value > 0 else -1
                 shown = sp.simplify(sign * coefficient[0]) * amount
-                turns.append(Turn(sign, render.latex_of(shown), load.label, sp.sstr(shown)))
+                turns.append(Turn(sign, latex_of(shown), load.label, sp.sstr(shown)))
     return arrows, turns
 
 

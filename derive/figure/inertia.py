@@ -5,7 +5,7 @@ import sympy as sp
 
 from derive import inertia
 from derive.figure.canvas import WIDTH, _add, _clamp, _f, _Figure, _label_mass, _pt, _unit
-from derive.render import tex_escape
+from derive.latex import tex_escape
 from derive.scene import Body
 
 

@@ -67,7 +67,7 @@ from derive.parts.surfaces import Circle, Plane
 from derive.parts.torque import Torque
 from derive.parts.torsional_spring import TorsionalSpring
 from derive.parts.weld import Weld
-from derive.render import tex_escape
+from derive.latex import tex_escape
 
 CORE_WIDTH, CORE_HEIGHT = 4.2, 3.6  # cm: the scene's geometry, before anchors, arrows and labels
 

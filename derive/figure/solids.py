@@ -35,6 +35,7 @@ from derive.figure.canvas import _clamp, _f, _Figure, _pt
 from derive.figure.oblique import Oblique, along, page, silhouette
 from derive.figure.drawn_view import Undrawable
 from derive.mechanics import bearings, fixed_point, free_rotation, rolling_coin
+from derive.solid_scene import own_axis
 
 OMEGA_LABEL, MOMENTUM_LABEL = r"$\vec\omega$", r"$\vec L$"
 OMEGA_STYLE, MOMENTUM_STYLE = "velocity", "very thick, ->, green!40!black"
@@ -89,7 +90,7 @@ def _bearings(fig: _Figure) -> None:
     name, rotation = next(iter(fig.scene.bearings.items()))
     body = fig.scene.bodies[name]
     weighed = fig.scene.gravity is not None
-    axis = bearings.own_axis(body.shape)
+    axis = own_axis(body.shape)
     found = Solution(fig.problem).bearing_motion(name, "newton_euler")
     momentum = numbers(fig, found["angular_momentum"])
     if weighed:

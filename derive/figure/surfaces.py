@@ -6,7 +6,7 @@ import math
 import sympy as sp
 
 from derive.figure.canvas import _add, _clamp, _f, _Figure, _pt, _unit, given_motion, regime_text
-from derive.render import tex_escape
+from derive.latex import tex_escape
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.surfaces import Circle

@@ -40,14 +40,9 @@ from sympy.physics import mechanics as me
 
 from derive import inertia
 from derive.mechanics.tidying import tidy
+from derive.solid_scene import own_axis
 
 ROUTES = ("newton_euler", "lagrange")
-
-
-def own_axis(shape: str) -> str:
-    """The body axis the tilt is measured from: x for a rod (its length) or a composite (its
-    parts' frame), z (the symmetry axis) for every other shape."""
-    return "x" if shape in ("rod", "composite") else "z"
 
 
 def body_tensor(shape: str, mass, sizes: dict, parts: dict | None = None) -> sp.ImmutableMatrix:

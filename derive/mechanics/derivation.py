@@ -21,7 +21,7 @@ from derive.mechanics.tidying import radicals, simplest, tidy
 
 
 #: The symbols the steps name energies by: K for the kinetic energy (T is a tension in most
-#: problems) and a script L for the Lagrangian (L is often a length). render.symbol_latex prints
+#: problems) and a script L for the Lagrangian (L is often a length). latex.symbol_latex prints
 #: a name that starts with a backslash as it is (a problem file's names are identifiers).
 KINETIC = sp.Symbol("K")
 LAGRANGIAN = sp.Symbol(r"\mathcal{L}")

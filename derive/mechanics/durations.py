@@ -5,7 +5,8 @@ amplitude (twice the time between its turning points).
 >>> import sympy as sp
 >>> from derive.mechanics import lagrange
 >>> from derive.mechanics.kinematics import Coordinates
->>> from derive.mechanics.states import Gets, reach, rest
+>>> from derive.mechanics.reaching import Gets
+>>> from derive.mechanics.states import reach, rest
 >>> from derive.parts.gravity import Gravity
 >>> from derive.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
@@ -22,7 +23,8 @@ import sympy as sp
 from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step
 from derive.mechanics.tidying import root, tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
-from derive.mechanics.states import Path, Reached, Stops, reach
+from derive.mechanics.reaching import Path, Reached, Stops
+from derive.mechanics.states import reach
 from derive.prose import Sentence
 from derive.scene import Scene
 

@@ -27,7 +27,8 @@ import sympy as sp
 from derive.mechanics.derivation import Derivation, Step
 from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinate, Coordinates
-from derive.scene import TIME, Scene
+from derive.expr import TIME
+from derive.scene import Scene
 
 
 def flight(scene: Scene, coords: Coordinates, start: dict, derivation: Derivation

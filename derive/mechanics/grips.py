@@ -38,7 +38,8 @@ import sympy as sp
 from derive.mechanics.derivation import Derivation, Step
 from derive.mechanics.tidying import tidy
 from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.states import Reached, StateError, StateLimit
+from derive.mechanics.reaching import Reached
+from derive.mechanics.state_errors import StateError, StateLimit
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.prose import Sentence
 

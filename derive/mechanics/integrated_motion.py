@@ -5,7 +5,8 @@ energy, or by constant accelerations, with it).
 >>> import sympy as sp
 >>> from derive.mechanics import newton_euler
 >>> from derive.mechanics.kinematics import Coordinates
->>> from derive.mechanics.states import Gets, reach, rest
+>>> from derive.mechanics.reaching import Gets
+>>> from derive.mechanics.states import reach, rest
 >>> from derive.mechanics import lagrange
 >>> from derive.parts.gravity import Gravity
 >>> from derive.scene import Body, Scene
@@ -26,7 +27,7 @@ from scipy.integrate import solve_ivp
 
 from derive.mechanics.derivation import Derivation
 from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.states import Gets, GetsRate, Reached, Stops
+from derive.mechanics.reaching import Gets, GetsRate, Reached, Stops
 
 
 def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reached: Reached, condition,

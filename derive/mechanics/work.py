@@ -30,7 +30,8 @@ from derive.mechanics.state_errors import StateLimit
 from derive.mechanics.tidying import tidy
 from derive.parts import listed, titled
 from derive.prose import Sentence, capital
-from derive.scene import TIME, Scene
+from derive.expr import TIME
+from derive.scene import Scene
 
 #: Where a contact force taken at its start value is checked to have it: fractions of the way from
 #: the start to the state (not the state itself: where the motion stops there its rate, the root of

@@ -21,6 +21,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive import units
+from derive.expr import TIME
 from derive.spelling import did_you_mean
 
 ZERO = sp.Integer(0)
@@ -92,8 +93,6 @@ class Places:
 
     def with_time(self) -> dict[str, sp.Symbol]:
         """The symbols an expression may use, with the time t (a force that varies in time)."""
-        from derive.scene import TIME
-
         if "t" in self.reader.symbols:
             return dict(self.reader.symbols)
         self.reader.symbol_units.setdefault(TIME, "s")
