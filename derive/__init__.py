@@ -5,8 +5,8 @@ The package stays light to import: `derive --help` must not load sympy. The Pyth
 """
 from importlib import import_module as _import_module
 
-from derive.library import DISTRIBUTION, version
-from derive.limits import MAX_DIGITS, MAX_VARIANTS
+from derive.core.library import DISTRIBUTION, version
+from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
 
 __all__ = ["load", "solve", "sheet", "version", "DISTRIBUTION", "MAX_VARIANTS", "MAX_DIGITS"]
 

@@ -1,7 +1,7 @@
 r"""The Python API, for notebooks and scripts: `derive.load`, `derive.solve` and `derive.sheet`.
 
 They do what `derive solve` and `derive sheet` do (the command line calls them), and raise
-derive.errors.InputError with the command line's one-line message on bad input. A solved
+derive.core.errors.InputError with the command line's one-line message on bad input. A solved
 problem and each of its answers show as math in Jupyter (`_repr_latex_`, `_repr_html_`).
 
 >>> import derive
@@ -25,15 +25,15 @@ from pathlib import Path
 
 import sympy as sp
 
-from derive.latex import latex_of
-from derive import defaults, report, units
-from derive.limits import MAX_DIGITS, MAX_VARIANTS
-from derive import problem_sets
-from derive import worksheets as sheets
-from derive.answers import Solution
-from derive.errors import InputError
-from derive.problem import Problem, load
-from derive.progress import MODES, Reporter
+from derive.text.latex import latex_of
+from derive.language import defaults, problem_sets
+from derive.publishing import report, worksheets as sheets
+from derive.core import units
+from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
+from derive.solution.answers import Solution
+from derive.core.errors import InputError
+from derive.language.problem import Problem, load
+from derive.publishing.progress import MODES, Reporter
 
 __all__ = ["load", "solve", "sheet", "Result", "Answer"]
 
@@ -163,7 +163,7 @@ def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, d
     >>> solve("rod_endpoint", {"q": 1})
     Traceback (most recent call last):
     ...
-    derive.errors.ProblemError: --set q: rod_endpoint has no parameter 'q' (parameters: m, L)
+    derive.core.errors.ProblemError: --set q: rod_endpoint has no parameter 'q' (parameters: m, L)
     """
     problem = problem if isinstance(problem, Problem) else load(problem)
     return Result(problem, Solution(problem), values, _digits(digits))
@@ -184,7 +184,7 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
     >>> sheet(["rod_endpoint"], to="pfd")
     Traceback (most recent call last):
     ...
-    derive.errors.InputError: --to: unknown output 'pfd' (outputs: pdf, html, md, docx, moodle, qti, distractors); did you mean 'pdf'?
+    derive.core.errors.InputError: --to: unknown output 'pfd' (outputs: pdf, html, md, docx, moodle, qti, distractors); did you mean 'pdf'?
     """
     course = defaults.load()  # derive.toml or [tool.derive] of the working folder, as for `derive sheet`
     if isinstance(ids_or_set, (str, os.PathLike)):

@@ -9,12 +9,13 @@ import sympy as sp
 from sympy.physics.vector import ReferenceFrame
 
 from conftest import refused, write_problem
-from derive import export, figure, inertia, render, report
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
+from derive.publishing import export, figure, render, report
+from derive.model import inertia
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
 from derive.mechanics import bearings
-from derive.problem import load
-from derive.solid_scene import own_axis
+from derive.language.problem import load
+from derive.model.solid_scene import own_axis
 
 m, w, a, psi, s, e, d, g = sp.symbols("m omega alpha psi s e d g", positive=True)
 TEXTBOOK = Path(__file__).resolve().parent / "textbook"

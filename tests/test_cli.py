@@ -280,8 +280,8 @@ def test_figures_as_images_need_pdftocairo(tmp_path):
 def test_missing_pandoc_is_a_missing_tool(tmp_path, monkeypatch):
     import pypandoc
 
-    from derive import export
-    from derive.errors import MissingTool
+    from derive.publishing import export
+    from derive.core.errors import MissingTool
 
     def nowhere():
         raise OSError("No pandoc was found")
@@ -331,7 +331,7 @@ def test_course_defaults_refused(tmp_path, file, text, fragment):
 
 def test_a_set_files_due_date_may_be_written_as_yaml_reads_a_date(tmp_path):
     """`due: 2026-12-01` (as `derive sheet --help` shows it) is a YAML date: it is the text written."""
-    from derive import problem_sets
+    from derive.language import problem_sets
 
     week = tmp_path / "week.yaml"
     week.write_text("title: Week 9\nproblems: [rod_endpoint]\ndue: 2026-12-01\n")

@@ -1,4 +1,4 @@
-"""derive.figure.free_body: each body's free-body diagram, drawn from the Newton–Euler route's own
+"""derive.publishing.figure.free_body: each body's free-body diagram, drawn from the Newton–Euler route's own
 forces, checked against the scene's geometry (each force at its point, along its direction, as the
 problem file places the bodies), labelled as the equations name the forces, beside the balance step
 of the worked solutions and the handout, compiling with nothing off the page."""
@@ -13,10 +13,11 @@ import sys
 import pytest
 
 from conftest import ROOT, run_derive, write_problem
-from derive.latex import latex_of, tex_escape
-from derive import problem, worksheets
-from derive.answers import Solution
-from derive.figure.free_body import free_bodies
+from derive.text.latex import latex_of, tex_escape
+from derive.language import problem
+from derive.publishing import worksheets
+from derive.solution.answers import Solution
+from derive.publishing.figure.free_body import free_bodies
 from test_library_sheet import _overfull
 
 TEXTBOOK = ROOT / "tests" / "textbook"
@@ -165,8 +166,8 @@ question: Find them.
 
 def test_same_problem_same_bytes_in_any_process(drawn):
     digest = hashlib.sha256("".join(d.tikz for _, diagrams in drawn.values() for d in diagrams.values()).encode()).hexdigest()
-    code = ("import hashlib; from derive import problem; from derive.answers import Solution; "
-            "from derive.figure.free_body import free_bodies\n"
+    code = ("import hashlib; from derive.language import problem; from derive.solution.answers import Solution; "
+            "from derive.publishing.figure.free_body import free_bodies\n"
             "text = ''\n"
             f"for reference in {list(PROBLEMS.values())!r}:\n"
             "    s = Solution(problem.load(reference))\n"

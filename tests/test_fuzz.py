@@ -15,9 +15,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import TEX_OWN_FILES, document, kept_scratch
-from derive.latex import tex_escape
-from derive import export, expr, latex_grammar, latex_safety, library, limits, problem
-from derive.errors import InputError
+from derive.text.latex import tex_escape
+from derive.publishing import export
+from derive.core import expr, library, limits
+from derive.text import latex_grammar, latex_safety
+from derive.language import problem
+from derive.core.errors import InputError
 
 FUZZ = settings(derandomize=True, database=None, deadline=None, print_blob=False,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
@@ -197,7 +200,7 @@ def test_library_files_still_load():
 
 
 def test_decimal_keys_and_values_stay_exact():
-    from derive.reader import Loader
+    from derive.language.reader import Loader
     assert yaml.load("m: 0.1", Loader=Loader) == {"m": Decimal("0.1")}
 
 

@@ -14,10 +14,13 @@ import yaml
 from jinja2.exceptions import SecurityError, TemplateNotFound, UndefinedError
 
 from conftest import ROOT, document, kept_scratch, run_derive
-from derive.latex import tex_escape
-from derive import export, latex_characters, latex_grammar, latex_safety, library, limits, problem, problem_sets, render
-from derive.answers import Solution
-from derive.errors import InputError, ProblemError
+from derive.text.latex import tex_escape
+from derive.publishing import export, render
+from derive.text import latex_characters, latex_grammar, latex_safety
+from derive.core import library, limits
+from derive.language import problem, problem_sets
+from derive.solution.answers import Solution
+from derive.core.errors import InputError, ProblemError
 
 EXOTIC = """\
 id: exotic
@@ -607,7 +610,7 @@ def test_set_references_that_are_no_set_files(reference):
 
 
 def _build(out):
-    from derive import worksheets
+    from derive.publishing import worksheets
     return worksheets.build("demo", variants=2, seed=1, out_dir=str(out), formats=frozenset())
 
 

@@ -17,8 +17,8 @@ import yaml
 from lxml import etree
 
 from conftest import qti_package, run_derive
-from derive import lms
-from derive.spreadsheet import safe_cell
+from derive.publishing import lms
+from derive.publishing.spreadsheet import safe_cell
 from test_hardening import problem_text
 
 HOSTILE = "\" ' < > & ]]> = {{ }}"

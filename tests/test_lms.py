@@ -12,10 +12,12 @@ import pytest
 from pathlib import Path
 
 from conftest import copy_library, image_kind, moodle_cloze, qti_package, run_derive
-from derive.latex import symbol_latex
-from derive import lms, problem_sets, units
-from derive.errors import InputError, ProblemError
-from derive.problem import load, parse
+from derive.text.latex import symbol_latex
+from derive.publishing import lms
+from derive.language import problem_sets
+from derive.core import units
+from derive.core.errors import InputError, ProblemError
+from derive.language.problem import load, parse
 
 
 @pytest.fixture(scope="module")

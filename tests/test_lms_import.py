@@ -12,7 +12,8 @@ import pytest
 from lxml import etree
 
 from conftest import image_kind, moodle_cloze, qti_package, run_derive
-from derive import lms, problem_sets
+from derive.publishing import lms
+from derive.language import problem_sets
 
 PROBLEMS = problem_sets.load_set("demo").problems  # rod_endpoint (asks 1), string_wrapped_disk (3), compound_pendulum (2)
 

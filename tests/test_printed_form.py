@@ -1,4 +1,4 @@
-"""Issue 15: results print in the textbook's grouping (derive.printed_form), and the printed form is
+"""Issue 15: results print in the textbook's grouping (derive.text.printed_form), and the printed form is
 the answer: compared with it at random points over every answer of the library and of the textbook
 problems of the tests."""
 import random
@@ -8,10 +8,11 @@ import pytest
 import sympy as sp
 from sympy.polys.polyerrors import PolynomialError
 
-from derive.latex import latex_of
-from derive import library, printed_form, terminal
-from derive.answers import Solution
-from derive.problem import load
+from derive.text.latex import latex_of
+from derive.core import library
+from derive.text import printed_form, terminal
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 TEXTBOOK = sorted((Path(__file__).parent / "textbook").glob("*.yaml"))
 theta, M, R, g, I = sp.symbols("theta M R g I", positive=True)

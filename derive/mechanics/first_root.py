@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.tidying import radicals, tidy
-from derive.mechanics.kinematics import roots
+from derive.core.tidying import radicals, tidy
+from derive.model.kinematics import roots
 from derive.mechanics.reaching import Gets, Path
 from derive.mechanics.state_errors import StateError, StateLimit
 

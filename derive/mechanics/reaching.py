@@ -11,9 +11,9 @@ from functools import cached_property
 import sympy as sp
 
 from derive.mechanics.derivation import Step
-from derive.mechanics.kinematics import Coordinate
-from derive.mechanics.tidying import root, tidy
-from derive.prose import Sentence
+from derive.model.kinematics import Coordinate
+from derive.core.tidying import root, tidy
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)

@@ -14,13 +14,13 @@ cords, smooth or rolling contacts do no work):
 with V the potential energy of gravity and springs and Q the generalized force of the other loads
 (forces and torques that depend on the configuration alone). The other route is Newton–Euler's
 equations integrated numerically from the start to the state (derive.mechanics.integrated_motion,
-checked at every solve by derive.crosschecks); the time it takes is derive.mechanics.durations.
+checked at every solve by derive.solution.crosschecks); the time it takes is derive.mechanics.durations.
 
 >>> import sympy as sp
 >>> from derive.mechanics import lagrange
 >>> from derive.parts.gravity import Gravity
 >>> from derive.parts.pin import Pin
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g, L = sp.symbols("m g L", positive=True)
 >>> rod = Body("rod", "rod", m, {"length": L}, m * L**2 / 12, at=(L / 2, 0), angle=0)
 >>> scene = Scene({"rod": rod}, (Pin("hinge", "rod", (-L / 2, 0)),), Gravity(g))
@@ -39,13 +39,13 @@ import sympy as sp
 from derive.mechanics import first_integrals, first_root, free_flight, work
 from derive.mechanics.derivation import KINETIC, Derivation, Step
 from derive.mechanics.reaching import Gets, GetsRate, Path, Reached, Stops, Vanishes, settled
-from derive.mechanics.tidying import radicals, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
+from derive.core.tidying import radicals, tidy
+from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies
 from derive.mechanics.state_errors import Curved, StateError, StateLimit
 from derive.parts import listed, titled
-from derive.prose import Sentence, capital
-from derive.scene import Scene
+from derive.text.prose import Sentence, capital
+from derive.model.scene import Scene
 
 #: Points between the start and a state where the motion must still move (the kinetic energy
 #: stays positive): a turning point on the way would mean the state is never reached.
@@ -68,7 +68,7 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     (dg/dt = 0 at the placement); refused where the rates leave a velocity open or break a
     constraint."""
     placement = {c.q: sp.Integer(0) for c in coords.all}
-    given = {c.u: sp.sympify(value) for c, value in rates.items()}  # safe: expressions derive.expr parsed, or ints
+    given = {c.u: sp.sympify(value) for c, value in rates.items()}  # safe: expressions derive.core.expr parsed, or ints
     rows = [tidy(radicals(coords.ddt(g).xreplace(placement).xreplace(given), scene.placed))  # a run |L - 2 r| as
             for c in scene.constraints for g in c.gaps(coords)]  # placed: else a weight's swing reads as fixed
     others = [c.u for c in coords.all if c.u not in given]
@@ -178,7 +178,7 @@ def _rolled(coordinate: Coordinate, gaps: list[sp.Expr]) -> bool:
     """Whether the gaps hold a coordinate, and each only linearly: a rolling body's angle, in its
     gap as r theta beside the arc along the surface (not a swinging rod's, inside a cosine).
 
-    >>> from derive.mechanics.kinematics import Coordinate
+    >>> from derive.model.kinematics import Coordinate
     >>> r, x, th = sp.symbols("r x theta")
     >>> angle = Coordinate("ball", "theta", th, sp.Symbol("w"), sp.Symbol("a"))
     >>> _rolled(angle, [r * th + sp.atan2(x, r)]), _rolled(angle, [x - r * sp.cos(th)])

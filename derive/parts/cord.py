@@ -33,8 +33,8 @@ the body's material point at the tangent point (a gripping circle: the cord move
 >>> cord = Cord("string", (reel, Attachment("point", "block")))
 >>> [s.tension_name for s in cord.segments()]
 ['tension']
->>> from derive.scene import Body, Scene
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
 >>> scene = Scene({"disk": Body("disk", "disk", m, {"radius": R}), "block": Body("block", "point", m, {})})
 >>> cord.sentences("lagrange", Coordinates(scene))[1].latex()
 "It does not slip on the disk, so the disk's rim moves with it: the arc of its turn, $R \\\\theta_{\\\\mathrm{disk}}$, counts in the length."
@@ -47,7 +47,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedForce, Part, Sign, acting, at_placement
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 ZERO = (sp.Integer(0), sp.Integer(0))
 
@@ -295,8 +295,8 @@ class Cord(Part):
         giving an expression's value at the middle of the parameter ranges) and the sides that would
         take the other sense, and so the other tangent from a neighbour.
 
-        >>> from derive.mechanics.kinematics import Coordinates
-        >>> from derive.scene import Body, Scene
+        >>> from derive.model.kinematics import Coordinates
+        >>> from derive.model.scene import Body, Scene
         >>> R = sp.Symbol("R", positive=True)
         >>> reel = Attachment("wound", "disk", radius=R, turn=-1, side="right", other_sides=("left",))
         >>> scene = Scene({"disk": Body("disk", "disk", 1, {"radius": R}), "block": Body("block", "point", 1, {},
