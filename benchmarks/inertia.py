@@ -1,4 +1,4 @@
-"""Print figures for derive.inertia: cold and warm (cached) time per (shape, axis) and per
+"""Print figures for derive.model.inertia: cold and warm (cached) time per (shape, axis) and per
 tensor, and a 300-variant loop of one custom-density shape. Figures, not assertions.
 
 Run: .venv/bin/python benchmarks/inertia.py
@@ -8,8 +8,9 @@ import time
 
 import sympy as sp
 
-from derive import inertia, numeric
-from derive.inertia import R, r
+from derive.model import inertia
+from derive.numbers import numeric
+from derive.model.inertia import R, r
 
 
 def timed(call) -> float:

@@ -20,7 +20,7 @@ def child(problem_set: str, variants: int, trace: bool) -> dict:
     import resource
     import tracemalloc
 
-    from derive import worksheets
+    from derive.publishing import worksheets
 
     if trace:
         tracemalloc.start()

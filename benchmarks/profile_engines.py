@@ -6,7 +6,7 @@ comprehension to the function it is in) at the line running, with the sympy call
     .venv/bin/python benchmarks/profile_engines.py                      # the slowest scenes
     .venv/bin/python benchmarks/profile_engines.py yo_yo chain:6 --top 8
 
-A scene is an id of derive.bench_anchors.SCENES or "chain:n" for the n-link pendulum. Each runs in
+A scene is an id of derive.bench.anchors.SCENES or "chain:n" for the n-link pendulum. Each runs in
 a fresh process (cold). Sampling costs little (unlike cProfile, which slows sympy about 2.5x).
 Figures, not a test.
 """
@@ -28,8 +28,8 @@ INTERVAL = 0.002  # seconds between samples
 
 
 def reference(scene: str, folder: str) -> str:
-    """The problem file of a scene of derive.bench_anchors.SCENES, or of "chain:n", the n-link pendulum."""
-    from derive import bench_anchors
+    """The problem file of a scene of derive.bench.anchors.SCENES, or of "chain:n", the n-link pendulum."""
+    from derive.bench import anchors as bench_anchors
 
     if scene.startswith("chain:"):
         n = int(scene.split(":")[1])
@@ -54,8 +54,8 @@ def _charge(frame, root: str):
 
 
 def child(path: str, top: int, seconds: float | None = None) -> dict:
-    from derive import problem
-    from derive.answers import Solution
+    from derive.language import problem
+    from derive.solution.answers import Solution
 
     root = str(Path(__file__).resolve().parent.parent / "derive")
     main = threading.main_thread().ident

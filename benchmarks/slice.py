@@ -24,8 +24,9 @@ def startup(runs: int = 10) -> float:
 
 def main() -> None:
     print(f"derive --help: median {startup():.3f} s over 10 runs")
-    from derive import problem, variants
-    from derive.answers import Solution
+    from derive.language import problem
+    from derive.publishing import variants
+    from derive.solution.answers import Solution
 
     for problem_id in ("rod_endpoint", "string_wrapped_disk", "compound_pendulum"):
         p = problem.load(problem_id)

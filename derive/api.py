@@ -1,7 +1,7 @@
 r"""The Python API, for notebooks and scripts: `derive.load`, `derive.solve` and `derive.sheet`.
 
 They do what `derive solve` and `derive sheet` do (the command line calls them), and raise
-derive.errors.InputError with the command line's one-line message on bad input. A solved
+derive.core.errors.InputError with the command line's one-line message on bad input. A solved
 problem and each of its answers show as math in Jupyter (`_repr_latex_`, `_repr_html_`).
 
 >>> import derive
@@ -25,13 +25,15 @@ from pathlib import Path
 
 import sympy as sp
 
-from derive import MAX_DIGITS, MAX_VARIANTS, defaults, render, report, units
-from derive import problem_sets
-from derive import worksheets as sheets
-from derive.answers import Solution
-from derive.errors import InputError
-from derive.problem import Problem, load
-from derive.progress import MODES, Reporter
+from derive.text.latex import latex_of
+from derive.language import defaults, problem_sets
+from derive.publishing import report, worksheets as sheets
+from derive.core import units
+from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
+from derive.solution.answers import Solution
+from derive.core.errors import InputError
+from derive.language.problem import Problem, load
+from derive.publishing.progress import MODES, Reporter
 
 __all__ = ["load", "solve", "sheet", "Result", "Answer"]
 
@@ -101,7 +103,7 @@ class Result:
 
     def _given(self) -> list[str]:
         """The parameters that have values, as LaTeX: M = 4.000\\,\\mathrm{kg}."""
-        return [f"{render.latex_of(self.problem.parameters[n].symbol)} = {p['value']}\\,{units.latex_unit(p['unit'])}"
+        return [f"{latex_of(self.problem.parameters[n].symbol)} = {p['value']}\\,{units.latex_unit(p['unit'])}"
                 for n, p in self.report["parameters"].items() if p["value"] is not None]
 
     def _repr_latex_(self) -> str:
@@ -161,7 +163,7 @@ def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, d
     >>> solve("rod_endpoint", {"q": 1})
     Traceback (most recent call last):
     ...
-    derive.errors.ProblemError: --set q: rod_endpoint has no parameter 'q' (parameters: m, L)
+    derive.core.errors.ProblemError: --set q: rod_endpoint has no parameter 'q' (parameters: m, L)
     """
     problem = problem if isinstance(problem, Problem) else load(problem)
     return Result(problem, Solution(problem), values, _digits(digits))
@@ -182,7 +184,7 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
     >>> sheet(["rod_endpoint"], to="pfd")
     Traceback (most recent call last):
     ...
-    derive.errors.InputError: --to: unknown output 'pfd' (outputs: pdf, html, md, docx, moodle, qti, distractors); did you mean 'pdf'?
+    derive.core.errors.InputError: --to: unknown output 'pfd' (outputs: pdf, html, md, docx, moodle, qti, distractors); did you mean 'pdf'?
     """
     course = defaults.load()  # derive.toml or [tool.derive] of the working folder, as for `derive sheet`
     if isinstance(ids_or_set, (str, os.PathLike)):
@@ -204,4 +206,4 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
         problem_set, out_dir=out, questions=questions, progress=progress, defaults=course,
         variants=None if variants is None else _whole("variants", variants, 1, MAX_VARIANTS),
         seed=None if seed is None else _whole("seed", seed),
-        formats=None if to is None else problem_sets.outputs(to if isinstance(to, str) else ",".join(to), "--to"))
+        formats=None if to is None else defaults.outputs(to if isinstance(to, str) else ",".join(to), "--to"))

@@ -3,7 +3,7 @@
 For each problem: the independent routes (Lagrange and Newton–Euler, energy, conservation
 and impulses, integration and the parallel-axis theorem, ...), the dimensions of every
 answer, and a numerical simulation where the scene moves (of a chain of states, each of its
-motion segments from the state the link before produced: derive.chain_simulation).
+motion segments from the state the link before produced: derive.checks.chain_simulation).
 
 >>> rows = audit(["rod_endpoint"])
 >>> rows[0].passed, rows[0].routes
@@ -14,12 +14,14 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 
-from derive import chain_simulation, library, problem, simulate, simulate_solid
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
-from derive.scene import DYNAMIC_KINDS
-from derive.errors import InputError
-from derive.progress import Reporter
+from derive.checks import chain_simulation, simulate, simulate_solid
+from derive.core import library
+from derive.language import problem
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
+from derive.model.scene import DYNAMIC_KINDS
+from derive.core.errors import InputError
+from derive.publishing.progress import Reporter
 
 
 @dataclass
@@ -90,7 +92,7 @@ def table(rows: list[Row]) -> str:
     failed = [r for r in rows if not r.passed]
     figures = [f"  {r.id}: {f}" for r in rows for f in r.figures]
     if figures:
-        lines += ["", "simulated in 3D (derive.simulate_solid):", *figures]
+        lines += ["", "simulated in 3D (derive.checks.simulate_solid):", *figures]
     lines.append("")
     lines.append(f"{len(rows) - len(failed)} passed, {len(failed)} failed")
     lines += [f"FAILED {r.id}: {r.failure}" for r in failed]
@@ -112,10 +114,10 @@ class Spread:
 def stress(references: list[str] | None, seeds: int, progress: Reporter = Reporter()) -> tuple[list[Spread], list[str]]:
     """Draw each problem's parameters with `seeds` seeds: every draw must meet the problem's
     conditions and give a key equal to `derive solve` at those parameters, and a chain of states
-    must simulate to its closed forms at it (derive.chain_simulation)."""
+    must simulate to its closed forms at it (derive.checks.chain_simulation)."""
     import random
 
-    from derive import report, variants
+    from derive.publishing import report, variants
 
     references = references or [str(p) for p in library.problem_files()]
     spreads, failures = [], []

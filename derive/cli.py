@@ -19,8 +19,9 @@ import traceback
 
 import click
 
-from derive import DISTRIBUTION, MAX_DIGITS, MAX_VARIANTS, version
-from derive.errors import EngineLimit, InputError, MissingTool, Terminated
+from derive.core.library import DISTRIBUTION, version
+from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
+from derive.core.errors import EngineLimit, InputError, MissingTool, Terminated
 
 FORMATS = click.Choice(["text", "latex", "json"])
 
@@ -35,14 +36,14 @@ class BadInput(click.ClickException):
 
 
 def progress_option(command):
-    """`--progress auto|bar|lines|none`, handed to the command as a derive.progress.Reporter."""
+    """`--progress auto|bar|lines|none`, handed to the command as a derive.publishing.progress.Reporter."""
 
     @click.option("--progress", "progress_mode", type=click.Choice(["auto", "bar", "lines", "none"]),
                   default="auto", show_default=True,
                   help="Progress on stderr: a bar on a terminal and lines otherwise (auto), or as chosen.")
     @functools.wraps(command)
     def wrapper(*args, progress_mode: str, **kwargs):
-        from derive.progress import Reporter  # light: no sympy
+        from derive.publishing.progress import Reporter  # light: no sympy
 
         return command(*args, progress=Reporter(progress_mode), **kwargs)
 
@@ -64,7 +65,7 @@ def reports_errors(command):
             click.echo(f"derive: error: {error}", err=True)
             sys.exit(3)
         except RuntimeError as error:
-            from derive.export import BuildError
+            from derive.publishing.export import BuildError
 
             if not isinstance(error, (BuildError, EngineLimit)):
                 _internal(error)  # a check between routes that fails (CheckFailure) is an engine bug
@@ -125,7 +126,7 @@ class Seconds(click.ParamType):
     name = "seconds"
 
     def convert(self, value, param, ctx) -> float:
-        from derive import limits  # light: no sympy
+        from derive.core import limits  # light: no sympy
 
         try:
             return limits.parse(str(value), f"--time-limit {value}")
@@ -175,9 +176,13 @@ def course_digits(digits: int | None, otherwise: int | None = 15) -> int | None:
     """--digits, else the course defaults' (derive.toml), else `otherwise`."""
     if digits is not None:
         return digits
-    from derive import defaults  # light: no sympy
+    from derive.language import defaults  # light: no sympy
 
     return defaults.load().digits or otherwise
+
+
+#: click 8.2 and later raise this usage error for a group called without a command (8.1 shows the help).
+_NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
 
 
 class DeriveGroup(click.Group):
@@ -188,6 +193,9 @@ class DeriveGroup(click.Group):
         try:
             with _sigterm_as_ctrl_c():
                 status = super().main(args, prog_name or "derive", standalone_mode=False, **extra)
+        except _NO_ARGS_IS_HELP as error:  # `derive` alone: its help, as --help shows it
+            click.echo(error.ctx.get_help())
+            sys.exit(0)
         except click.UsageError as error:
             command = error.ctx.command_path if error.ctx else "derive"
             message = " ".join(error.format_message().split())
@@ -228,7 +236,7 @@ def main(time_limit: float | None) -> None:
     """
     _check_environment()
     if time_limit is not None:
-        from derive import limits  # light: no sympy
+        from derive.core import limits  # light: no sympy
 
         limits.configure(time_limit)
 
@@ -316,7 +324,7 @@ def inertia(shape: str, axis: str | None, about: str | None, density: str | None
       derive inertia disk --density "rho0*(r/R)^k" --set rho0=3 --set k=2 --set R=0.5
       derive inertia point --axis 0,0,1 --about d,0,0
     """
-    from derive import inertia_report
+    from derive.publishing import inertia_report
 
     result = inertia_report.report(shape, axis, parse_assignments(assignments), course_digits(digits), about, density,
                                    show_tensor)
@@ -328,7 +336,8 @@ def inertia(shape: str, axis: str | None, about: str | None, density: str | None
 @reports_errors
 def list_problems(topic: str | None) -> None:
     """List the problems of the library: id, topic and title."""
-    from derive import library, problem
+    from derive.core import library
+    from derive.language import problem
 
     rows = []
     for path in library.problem_files():
@@ -385,7 +394,7 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
               help="Print the engines section's figures as one JSON document on stdout (the other "
                    "sections' lines and the progress go to stderr).")
 @click.option("--scenes", default=None, metavar="LIST",
-              help="Engines: these scenes only (comma-separated ids of derive.bench_anchors.SCENES).")
+              help="Engines: these scenes only (comma-separated ids of derive.bench.anchors.SCENES).")
 @click.option("--max-n", type=click.IntRange(1, 12), default=None,
               help="Engines: the n-link pendulum up to this n (default 6; 3 with --quick).")
 @click.option("--repeats", type=click.IntRange(1, 20), default=3, show_default=True,
@@ -410,7 +419,7 @@ def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_
     Engines (derive against sympy.physics.mechanics, in the same run):
     - 14 scenes (pendulums, Atwood machine, cords over pulleys, rolling, loops, a yo-yo,
       a spring, pin linkages), each a problem file derive reads and the same physics built
-      with KanesMethod (derive.bench_anchors). Both must give the same accelerations,
+      with KanesMethod (derive.bench.anchors). Both must give the same accelerations,
       constraint forces and answers at a sample point; a scene where they differ is
       reported, with no timing.
     - derive's time: the problem read, Lagrange and Newton-Euler (equations formed and
@@ -424,11 +433,11 @@ def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_
     """
     import json
 
-    from derive import bench as benchmarks
+    from derive.bench import runs as benchmarks
 
     options = {"repeats": repeats, "max_n": max_n, "limit": limit}
     if scenes:
-        from derive.bench_anchors import SCENES
+        from derive.bench.anchors import SCENES
 
         options["scenes"] = [s.strip() for s in scenes.split(",") if s.strip()]
         unknown = [s for s in options["scenes"] if s not in SCENES]
@@ -459,7 +468,7 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
     \b
     Example:  derive handout tugged_spool --out build/spool
     """
-    from derive import worksheets as sheets
+    from derive.publishing import worksheets as sheets
 
     for path in sheets.handout(problem, out_dir, progress=progress):
         click.echo(str(path))
@@ -506,10 +515,10 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
       course: PHY141            due: 2026-12-01        variants: 30      seed: 141
       outputs: [pdf, moodle]    questions: choice      (options given here override it)
     """
-    from derive import defaults, problem_sets
-    from derive import worksheets as sheets
+    from derive.language import defaults
+    from derive.publishing import worksheets as sheets
 
-    wanted = None if formats is None else problem_sets.outputs(formats, "--to")
+    wanted = None if formats is None else defaults.outputs(formats, "--to")
     built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
                          questions=questions, defaults=defaults.load(), progress=progress)
     for path in built:

@@ -59,7 +59,8 @@ def derive():
 
 def solve(problem_id: str, **values) -> tuple[dict, dict]:
     """(answers as 50-digit mpmath numbers, the whole result) of `derive solve` at 15 digits."""
-    from derive import problem, report
+    from derive.language import problem
+    from derive.publishing import report
 
     result = report.solve(problem.load(problem_id), {k: str(v) for k, v in values.items()}, 15)
     return {n: mpmath.mpf(a["value"]) for n, a in result["answers"].items()}, result
@@ -74,7 +75,7 @@ def close(value, reference, digits: int = 15) -> bool:
 def kept_scratch(folder: Path):
     """export.pdf compiling in `folder`, kept afterwards (export deletes its scratch folder): a
     test reads TeX's log there and lists what TeX wrote."""
-    from derive import export
+    from derive.publishing import export
 
     @contextmanager
     def scratch(prefix=""):
@@ -93,7 +94,7 @@ TEX_OWN_FILES = {".tex", ".aux", ".log", ".pdf", ".fls", ".fdb_latexmk"}
 
 def document(body: str) -> str:
     """A document in derive's real preamble (templates/preamble.tex.j2)."""
-    from derive import render
+    from derive.publishing import render
 
     return render.render("preamble.tex.j2") + "\\begin{document}\n" + body + "\n\\end{document}\n"
 

@@ -1,4 +1,4 @@
-"""derive.agreement and the routes check built on it: cheap exact proofs, balls where those fail,
+"""derive.numbers.agreement and the routes check built on it: cheap exact proofs, balls where those fail,
 and a route made wrong (by 1e-20, in a regime the ranges never reach) still caught."""
 from pathlib import Path
 
@@ -6,12 +6,13 @@ import pytest
 import sympy as sp
 from flint import arb, ctx
 
-from derive import agreement, report
-from derive.agreement import agree
-from derive.answers import Solution
-from derive.crosschecks import ROUTES, CheckFailure
+from derive.numbers import agreement
+from derive.publishing import report
+from derive.numbers.agreement import agree
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import ROUTES, CheckFailure
 from derive.mechanics.derivation import Derivation
-from derive.problem import load
+from derive.language.problem import load
 
 TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 x, y, theta = sp.symbols("x y theta", positive=True)

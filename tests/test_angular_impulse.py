@@ -14,9 +14,10 @@ import pytest
 import sympy as sp
 
 from conftest import refused, run_derive
-from derive import problem, report
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
+from derive.language import problem
+from derive.publishing import report
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
 from derive.mechanics import angular_impulse
 
 KEYS = Path(__file__).parent / "keys" / "tilting_wheel"

@@ -1,4 +1,4 @@
-"""The keys filled into stencils (derive.answer_keys) are the text the JSON and CSV writers give
+"""The keys filled into stencils (derive.publishing.answer_keys) are the text the JSON and CSV writers give
 for the same key written whole, whatever layout each variant's entry takes: digits vouched for by
 balls, by the exact fallback or by agreement, distractors, answers asked as numbers in some
 variants only (issue 17: the per-variant path made lean, its text unchanged)."""
@@ -8,12 +8,14 @@ import random
 
 import pytest
 
-from derive import answer_keys, distractors, json_text, numeric, units, variants
-from derive.answers import Solution
-from derive.problem import load
-from derive.problem_sets import set_of
-from derive.spreadsheet import safe_cell
-from derive.stencil import Stencil, hole
+from derive.publishing import answer_keys, distractors, json_text, variants
+from derive.numbers import numeric
+from derive.core import units
+from derive.solution.answers import Solution
+from derive.language.problem import load
+from derive.language.problem_sets import set_of
+from derive.publishing.spreadsheet import safe_cell
+from derive.text.stencil import Stencil, hole
 
 
 def _whole(problem_set, prepared, count, seed, with_distractors, choice):

@@ -13,7 +13,7 @@ from nbclient import NotebookClient
 
 import derive
 from conftest import ROOT, run_derive, write_problem
-from derive.errors import InputError
+from derive.core.errors import InputError
 from test_hardening import problem_text
 
 NOTEBOOK = ROOT / "docs" / "examples" / "api.ipynb"

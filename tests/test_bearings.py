@@ -9,11 +9,13 @@ import sympy as sp
 from sympy.physics.vector import ReferenceFrame
 
 from conftest import refused, write_problem
-from derive import export, figure, inertia, render, report
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
+from derive.publishing import export, figure, render, report
+from derive.model import inertia
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
 from derive.mechanics import bearings
-from derive.problem import load
+from derive.language.problem import load
+from derive.model.solid_scene import own_axis
 
 m, w, a, psi, s, e, d, g = sp.symbols("m omega alpha psi s e d g", positive=True)
 TEXTBOOK = Path(__file__).resolve().parent / "textbook"
@@ -26,7 +28,7 @@ SIZES = {"length": s, "radius": s, "height": 3 * s, "inner_radius": s, "outer_ra
 def test_the_routes_agree_for_every_shape(shape):
     sizes = {name: SIZES[name] for name in inertia.SHAPES[shape].sizes}
     tensor = bearings.body_tensor(shape, m, sizes)
-    found = [bearings.motion(tensor, w, a, psi, bearings.own_axis(shape), r) for r in bearings.ROUTES]
+    found = [bearings.motion(tensor, w, a, psi, own_axis(shape), r) for r in bearings.ROUTES]
     for key in ("angular_momentum", "torque", "kinetic_energy"):
         assert sp.simplify(sp.Matrix([found[0][key] - found[1][key]])).is_zero_matrix, key
     momentum, torque = found[0]["angular_momentum"], found[0]["torque"]

@@ -3,8 +3,10 @@ import random
 
 
 from conftest import copy_library, run_derive
-from derive import bench, bench_engines, problem, variants
-from derive.answers import Solution
+from derive.bench import runs as bench, engines as bench_engines
+from derive.language import problem
+from derive.publishing import variants
+from derive.solution.answers import Solution
 
 
 def test_bench_sections_print_figures():
@@ -62,15 +64,15 @@ def test_unsatisfiable_conditions_are_an_error_naming_the_problem(tmp_path):
     assert done.returncode == 2 and "top_precession_exact.yaml: parameters: no draw in 200" in done.stderr
 
 
-# --- derive against sympy.physics.mechanics (derive.bench_anchors) ---------------------------------
+# --- derive against sympy.physics.mechanics (derive.bench.anchors) ---------------------------------
 
 import json  # noqa: E402
 
 import pytest  # noqa: E402
 
-from derive import bench_anchors  # noqa: E402
+from derive.bench import anchors as bench_anchors  # noqa: E402
 from derive.mechanics import lagrange  # noqa: E402
-from derive.mechanics.kinematics import Coordinates  # noqa: E402
+from derive.model.kinematics import Coordinates  # noqa: E402
 
 def _lagrange_at_rest(p) -> dict:
     """derive's Lagrange route in the reference configuration at rest: every acceleration and force."""

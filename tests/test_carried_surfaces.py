@@ -11,9 +11,9 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive import figure, report
-from derive.answers import Solution
-from derive.problem import load
+from derive.publishing import figure, report
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 DRUM = """\
 id: ball_in_drum

@@ -14,8 +14,11 @@ from hypothesis import strategies as st
 
 from flint import arb, ctx
 
-from derive import balls, library, numeric, problem, variants
-from derive.answers import Solution
+from derive.numbers import balls, numeric
+from derive.core import library
+from derive.language import problem
+from derive.publishing import variants
+from derive.solution.answers import Solution
 
 TEXTBOOK = Path(__file__).parent / "textbook"
 PROBLEMS = [path.stem for path in library.problem_files()] + [str(path) for path in sorted(TEXTBOOK.glob("*.yaml"))]

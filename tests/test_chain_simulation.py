@@ -1,4 +1,4 @@
-"""Simulation of chains of states (derive.chain_simulation, issue 12): every chain of the library
+"""Simulation of chains of states (derive.checks.chain_simulation, issue 12): every chain of the library
 and of the textbook suite simulated link by link, agreeing with its closed forms, and a closed form
 or a jump 1 % off caught."""
 import dataclasses
@@ -8,10 +8,11 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive import chain_simulation, library
-from derive.answers import Solution
+from derive.checks import chain_simulation
+from derive.core import library
+from derive.solution.answers import Solution
 from derive.mechanics import states
-from derive.problem import load
+from derive.language.problem import load
 
 TEXTBOOK = Path(__file__).parent / "textbook" / "states"
 
@@ -178,8 +179,8 @@ def test_a_sheet_redraws_the_variants_whose_bounce_takes_another_regime_and_each
     chain at the variant's own values, as derive check --seeds runs it)."""
     import random
 
-    from derive import variants
-    from derive.problem import load as load_problem
+    from derive.publishing import variants
+    from derive.language.problem import load as load_problem
 
     p = load_problem(str(_wheel_bounce_then_turn(tmp_path)))
     solution = Solution(p)

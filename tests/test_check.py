@@ -3,10 +3,11 @@ import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
-from derive import library, simulate
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
-from derive.problem import load
+from derive.core import library
+from derive.checks import simulate
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
+from derive.language.problem import load
 
 
 def test_simulation_agrees_with_the_closed_forms():
@@ -79,7 +80,7 @@ def test_every_check_and_step_of_the_library_reads_as_prose(problem_id):
     """Worked solutions and handouts print each check's reading (issue 15): "Energy is conserved:
     the constraint forces do no work.", never "work_energy: T + V conserved (numeric)"; and each
     step's sentence says in words what its equations say in math (no d/dt(dL/dq'), no mu_s N >= |f|),
-    and so does each part's sentence, its math kept apart from its words (derive.prose)."""
+    and so does each part's sentence, its math kept apart from its words (derive.text.prose)."""
     solution = Solution(load(problem_id))
     checks = solution.checks()
     assert checks and all(_reads_as_a_sentence(c.reading) for c in checks), [c.reading for c in checks]

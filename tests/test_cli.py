@@ -8,7 +8,7 @@ import mpmath
 import pytest
 
 from conftest import ROOT, close, refused, run_derive
-from derive.problem import load
+from derive.language.problem import load
 
 
 def close_to_digits(value: str, reference, digits: int = 15) -> bool:
@@ -281,8 +281,8 @@ def test_figures_as_images_need_pdftocairo(tmp_path):
 def test_missing_pandoc_is_a_missing_tool(tmp_path, monkeypatch):
     import pypandoc
 
-    from derive import export
-    from derive.errors import MissingTool
+    from derive.publishing import export
+    from derive.core.errors import MissingTool
 
     def nowhere():
         raise OSError("No pandoc was found")
@@ -332,7 +332,7 @@ def test_course_defaults_refused(tmp_path, file, text, fragment):
 
 def test_a_set_files_due_date_may_be_written_as_yaml_reads_a_date(tmp_path):
     """`due: 2026-12-01` (as `derive sheet --help` shows it) is a YAML date: it is the text written."""
-    from derive import problem_sets
+    from derive.language import problem_sets
 
     week = tmp_path / "week.yaml"
     week.write_text("title: Week 9\nproblems: [rod_endpoint]\ndue: 2026-12-01\n")
@@ -398,3 +398,8 @@ def test_a_condition_beyond_what_a_decimal_holds_is_decided(tmp_path):
     problem.write_text(text.replace(old, "- {holds: -M**(10**999) > 0, because: it is never so}\n  " + old))
     done = run_derive("sheet", str(problem), "--to", "", "--out", str(tmp_path / "out2"))
     assert done.returncode == 2 and "it is never so" in done.stderr.strip().splitlines()[-1], done.stderr
+
+
+def test_derive_alone_shows_its_help():
+    done = run_derive()
+    assert done.returncode == 0 and done.stdout.startswith("Usage: derive") and "Commands:" in done.stdout, done.stderr

@@ -1,4 +1,4 @@
-"""Composite bodies (`shape: composite`, derive.composite): parts placed in the body's own frame,
+"""Composite bodies (`shape: composite`, derive.model.composite): parts placed in the body's own frame,
 composed by the inertia module, moved as one body by both routes.
 
 Closed forms: the parallel-axis theorem (Halliday, Resnick & Walker, Fundamentals of Physics,
@@ -9,9 +9,9 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive import figure
-from derive.answers import Solution
-from derive.problem import load
+from derive.publishing import figure
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 TEE = """\
 id: tee

@@ -11,10 +11,11 @@ import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
-from derive import expr, units, variants
-from derive.answers import Solution
-from derive.errors import ProblemError
-from derive.problem import load, parse
+from derive.core import expr, units
+from derive.publishing import variants
+from derive.solution.answers import Solution
+from derive.core.errors import ProblemError
+from derive.language.problem import load, parse
 
 r, R, e = sp.symbols("r R e")
 
@@ -117,7 +118,7 @@ def test_a_magnitude_whose_sign_was_read_at_samples_is_checked_at_each_variant(m
 def test_sample_points_are_the_same_whatever_the_hash_seed():
     """The points a sign is read at (a magnitude, a root in range) do not depend on the order of a
     set of symbols, which changes with PYTHONHASHSEED: a key built twice is the same."""
-    script = ("from derive.crosschecks import sample_points; from derive.problem import load; import sympy as sp; "
+    script = ("from derive.solution.crosschecks import sample_points; from derive.language.problem import load; import sympy as sp; "
               "p = load('tugged_spool'); e = sum(q.symbol for q in p.parameters.values()); "
               "print(sorted((str(k), str(v)) for point in sample_points(p, e) for k, v in point.items()))")
     runs = {subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,

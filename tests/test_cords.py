@@ -5,8 +5,8 @@ Sample Problem 5.04 (a block on a frictionless table pulled by a hanging block):
 import sympy as sp
 
 from conftest import run_derive
-from derive.answers import Solution
-from derive.problem import load
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 TABLE_AND_PEG = """\
 id: table_peg

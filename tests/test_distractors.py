@@ -9,9 +9,10 @@ import mpmath
 import pytest
 
 from conftest import copy_library, run_derive
-from derive import distractors, library, variants
-from derive.answers import Solution
-from derive.problem import load
+from derive.publishing import distractors, variants
+from derive.core import library
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 
 def test_rolling_sphere_distractors_are_the_classic_mistakes():

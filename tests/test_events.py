@@ -10,8 +10,9 @@ import mpmath
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derive import problem, units
-from derive.answers import Solution
+from derive.language import problem
+from derive.core import units
+from derive.solution.answers import Solution
 from derive.mechanics import impacts
 from conftest import close, solve
 

@@ -1,11 +1,11 @@
-"""Tests for derive.expr, the safe expression parser."""
+"""Tests for derive.core.expr, the safe expression parser."""
 import decimal
 import time
 
 import pytest
 import sympy
 
-from derive.expr import FUNCTIONS, RESERVED, ExprError, parse
+from derive.core.expr import FUNCTIONS, RESERVED, ExprError, parse
 
 NAMES = ["x", "y", "M", "R", "g", "m", "I", "E", "S", "N", "omega", "beta", "gamma", "lambda_", "e"]
 SYM = {n: sympy.Symbol(n) for n in NAMES}
@@ -225,7 +225,7 @@ def test_moderate_nesting_is_fine():
 def test_no_dangerous_calls_in_source():
     import inspect
 
-    import derive.expr as module
+    import derive.core.expr as module
     source = inspect.getsource(module)
     for forbidden in ["eval(", "exec(", "sympify", "parse_expr", "S(\"", "S('"]:
         assert forbidden not in source.replace('mode="eval"', "")

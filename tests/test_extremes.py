@@ -9,10 +9,12 @@ import pytest
 import sympy as sp
 
 from conftest import close
-from derive import numeric, problem, report
-from derive.bench import EXTREME_CASES
-from derive.answers import Solution
-from derive.errors import ProblemError
+from derive.numbers import numeric
+from derive.language import problem
+from derive.publishing import report
+from derive.bench.runs import EXTREME_CASES
+from derive.solution.answers import Solution
+from derive.core.errors import ProblemError
 
 EXTREMES = EXTREME_CASES
 

@@ -1,4 +1,4 @@
-"""derive.figure: every library problem draws itself as a TikZ figure that compiles, from its own
+"""derive.publishing.figure: every library problem draws itself as a TikZ figure that compiles, from its own
 geometry, the same bytes each time; the figures reach the worksheet, solutions and handout."""
 import hashlib
 import math
@@ -11,8 +11,11 @@ import pytest
 import sympy as sp
 
 from conftest import ROOT, copy_library, run_derive
-from derive import export, figure, library, problem, problem_sets, render, worksheets
-from derive.figure.canvas import _f, _pt
+from derive.text.latex import tex_escape
+from derive.publishing import export, figure, render, worksheets
+from derive.core import library
+from derive.language import problem, problem_sets
+from derive.publishing.figure.canvas import _f, _pt
 
 COORDINATE = re.compile(r"\((-?\d+(?:\.\d+)?),(-?\d+(?:\.\d+)?)\)")
 
@@ -55,7 +58,7 @@ def test_a_pinned_body_hangs_from_a_pivot_and_an_axle_is_a_circled_dot(figures):
     pivot = re.search(r"\\draw\[fill=gray!30\] \((-?[\d.]+),(-?[\d.]+)\) -- .* -- cycle;", pendulum)
     assert pivot and "pattern=north east lines" in pendulum
     assert f"\\draw[fill=white] ({pivot[1]},{pivot[2]}) circle" in pendulum  # the pin at the triangle's apex
-    assert "{$R_{\\mathrm{cm}}$}" in pendulum  # Rcm, as the equations name it (render.symbol_latex)
+    assert "{$R_{\\mathrm{cm}}$}" in pendulum  # Rcm, as the equations name it (latex.symbol_latex)
     for free in ("rolling_incline", "kepler_orbit", "rod_midpoint"):
         assert "\\draw[fill=gray!30]" not in figures[free], free
     assert "circle (0.1); \\fill (0,0) circle (0.035);" in figures["string_wrapped_disk"]  # the axle
@@ -108,7 +111,8 @@ def test_same_problem_same_bytes_in_any_process(problems, figures):
     scenes = sorted((ROOT / "tests" / "figures").glob("*.yaml"))
     drawn = [figures[p.id] for p in problems] + [figure.tikz(problem.parse(p.read_text(), p)) for p in scenes]
     digest = hashlib.sha256("".join(drawn).encode()).hexdigest()
-    code = ("import hashlib, pathlib; from derive import figure, library, problem; print(hashlib.sha256(''.join("
+    code = ("import hashlib, pathlib; from derive.core import library; from derive.language import problem; "
+            "from derive.publishing import figure; print(hashlib.sha256(''.join("
             "[figure.tikz(problem.load(p)) for p in library.problem_files()] + [figure.tikz(problem.parse("
             "p.read_text(), p)) for p in sorted(pathlib.Path('tests/figures').glob('*.yaml'))]).encode()).hexdigest())")
     for seed in ("1", "2"):
@@ -152,9 +156,9 @@ def test_names_with_latex_specials_are_escaped(special):
 def test_every_figure_compiles(tmp_path, problems, figures, special):
     """One document with the project's preamble and every figure (the library's, and the scenes of
     parts in tests/figures): it compiles, and the labels show."""
-    body = "\n\n".join(f"\\section*{{{render.tex_escape(p.id)}}}\n{figures[p.id]}" for p in problems)
+    body = "\n\n".join(f"\\section*{{{tex_escape(p.id)}}}\n{figures[p.id]}" for p in problems)
     scenes = [scene_problem(path.stem) for path in sorted(FIGURES.glob("*.yaml"))]
-    body += "\n\n" + "\n\n".join(f"\\section*{{{render.tex_escape(p.id)}}}\n{figure.tikz(p)}" for p in scenes)
+    body += "\n\n" + "\n\n".join(f"\\section*{{{tex_escape(p.id)}}}\n{figure.tikz(p)}" for p in scenes)
     tex = tmp_path / "figures.tex"
     tex.write_text(render.render("preamble.tex.j2") + "\\begin{document}\n" + body + "\n\n"
                    + figure.tikz(special) + "\n\\end{document}\n", encoding="utf-8")
@@ -187,7 +191,7 @@ def test_the_handout_includes_the_figure(tmp_path):
     assert (tmp_path / "h" / "tugged_spool.pdf").read_bytes().startswith(b"%PDF")
 
 
-# The general layout: every part where the scene puts it (derive.figure.parts). The scenes are in
+# The general layout: every part where the scene puts it (derive.publishing.figure.parts). The scenes are in
 # tests/figures; each check recomputes the geometry from the parts, independently of the figure code
 # but for the one map from the scene (m) to the figure (cm): a uniform scale and a shift.
 FIGURES = ROOT / "tests" / "figures"
@@ -203,8 +207,8 @@ def scene_problem(name):
 @pytest.fixture(scope="module")
 def drawn_scenes():
     """name: (problem, figure, the map from a reference-configuration point in m to the figure in cm)."""
-    from derive.figure.canvas import _Figure
-    from derive.figure.parts import _Layout
+    from derive.publishing.figure.canvas import _Figure
+    from derive.publishing.figure.parts import _Layout
 
     result = {}
     for path in sorted(FIGURES.glob("*.yaml")):
@@ -215,7 +219,7 @@ def drawn_scenes():
 
 def reference(p):
     """A point or an expression of the scene in its reference configuration, at the middle of the ranges."""
-    from derive.mechanics.kinematics import Coordinates
+    from derive.model.kinematics import Coordinates
 
     coords = Coordinates(p.scene)
     rest = {s: sp.Integer(v) for s, v in coords.at_rest_in_reference().items()}
@@ -237,8 +241,8 @@ def lines(drawn, style=None):
 
 
 def test_the_scenes_of_parts_draw_in_the_general_layout(drawn_scenes):
-    from derive.figure.layout import _LAYOUTS
-    from derive.figure.parts import _parts
+    from derive.publishing.figure.layout import _LAYOUTS
+    from derive.publishing.figure.parts import _parts
 
     for name, (p, drawn, _) in drawn_scenes.items():
         assert next(draw for applies, draw in _LAYOUTS if applies(p)) is _parts, name
@@ -430,8 +434,8 @@ def test_a_peg_of_no_size_holds_the_cord_where_its_runs_meet(drawn_scenes):
     scene = dataclasses.replace(p.scene, constraints=tuple(
         dataclasses.replace(cord, path=(cord.path[0], peg, cord.path[2])) if c is cord else c
         for c in p.scene.constraints))
-    from derive.figure.canvas import _Figure
-    from derive.figure.parts import _Layout
+    from derive.publishing.figure.canvas import _Figure
+    from derive.publishing.figure.parts import _Layout
 
     pegged = SimpleNamespace(scene=scene, parameters=p.parameters, asks=p.asks)
     drawn = figure.tikz(pegged)

@@ -1,4 +1,4 @@
-"""The 3D slices' figures (derive.figure.solids in the oblique projection of derive.figure.oblique):
+"""The 3D slices' figures (derive.publishing.figure.solids in the oblique projection of derive.publishing.figure.oblique):
 the omega and L arrows read back from the TikZ point along the derived vectors' projections, the
 angle between them is the derived one, and every 3D file of the library and the textbook set has a
 figure that compiles."""
@@ -11,11 +11,11 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from derive import export, figure, render
-from derive.answers import Solution
-from derive.figure.canvas import _Figure
-from derive.figure.oblique import page
-from derive.problem import load
+from derive.publishing import export, figure, render
+from derive.solution.answers import Solution
+from derive.publishing.figure.canvas import _Figure
+from derive.publishing.figure.oblique import page
+from derive.language.problem import load
 
 ROOT = Path(__file__).resolve().parent.parent
 TEXTBOOK = ROOT / "tests" / "textbook"

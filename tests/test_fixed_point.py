@@ -11,10 +11,11 @@ from scipy.integrate import solve_ivp
 from sympy.physics import mechanics as me
 
 from conftest import refused
-from derive import problem, report
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
-from derive.errors import InputError
+from derive.language import problem
+from derive.publishing import report
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
+from derive.core.errors import InputError
 from derive.mechanics import bearings, fixed_point
 
 m, g, l, I1, I3, w, th, s = sp.symbols("m g l I_1 I_3 omega theta s", positive=True)

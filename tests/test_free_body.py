@@ -1,4 +1,4 @@
-"""derive.figure.free_body: each body's free-body diagram, drawn from the Newton–Euler route's own
+"""derive.publishing.figure.free_body: each body's free-body diagram, drawn from the Newton–Euler route's own
 forces, checked against the scene's geometry (each force at its point, along its direction, as the
 problem file places the bodies), labelled as the equations name the forces, beside the balance step
 of the worked solutions and the handout, compiling with nothing off the page."""
@@ -13,9 +13,11 @@ import sys
 import pytest
 
 from conftest import ROOT, run_derive, write_problem
-from derive import problem, render, worksheets
-from derive.answers import Solution
-from derive.figure.free_body import free_bodies
+from derive.text.latex import latex_of, tex_escape
+from derive.language import problem
+from derive.publishing import worksheets
+from derive.solution.answers import Solution
+from derive.publishing.figure.free_body import free_bodies
 from test_library_sheet import _overfull
 
 TEXTBOOK = ROOT / "tests" / "textbook"
@@ -124,7 +126,7 @@ def test_each_label_is_a_term_of_the_bodys_balance(drawn):
         steps = {s.body: s for s in solution.derivations["newton_euler"].steps if s.body}
         assert set(steps) == set(diagrams), name
         for body, diagram in diagrams.items():
-            equations = " ".join(render.latex_of(e) for e in steps[body].equations)
+            equations = " ".join(latex_of(e) for e in steps[body].equations)
             for label in [a.label for a in diagram.arrows] + [t.label for t in diagram.turns]:
                 assert label in equations, (name, body, label)
 
@@ -164,8 +166,8 @@ question: Find them.
 
 def test_same_problem_same_bytes_in_any_process(drawn):
     digest = hashlib.sha256("".join(d.tikz for _, diagrams in drawn.values() for d in diagrams.values()).encode()).hexdigest()
-    code = ("import hashlib; from derive import problem; from derive.answers import Solution; "
-            "from derive.figure.free_body import free_bodies\n"
+    code = ("import hashlib; from derive.language import problem; from derive.solution.answers import Solution; "
+            "from derive.publishing.figure.free_body import free_bodies\n"
             "text = ''\n"
             f"for reference in {list(PROBLEMS.values())!r}:\n"
             "    s = Solution(problem.load(reference))\n"
@@ -183,7 +185,7 @@ def test_the_solutions_show_each_diagram_after_its_step_and_compile_with_nothing
     for name, (solution, diagrams) in drawn.items():
         for body, diagram in diagrams.items():
             heading = next(s.text for s in solution.derivations["newton_euler"].steps if s.body == body)
-            after = text.index(render.tex_escape(heading), text.index(render.tex_escape(solution.problem.title)))
+            after = text.index(tex_escape(heading), text.index(tex_escape(solution.problem.title)))
             assert text.index(diagram.tikz, after) < text.index("\\subsection*{Results}", after), (name, body)
     assert text.count("\\begin{tikzpicture}") == len(PROBLEMS) + sum(len(d) for _, d in drawn.values())
     assert (tmp_path / "set" / "solutions.pdf").read_bytes().startswith(b"%PDF")

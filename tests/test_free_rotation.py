@@ -11,9 +11,11 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from conftest import refused
-from derive import distractors, figure, problem, report, simulate_solid
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
+from derive.publishing import distractors, figure, report
+from derive.language import problem
+from derive.checks import simulate_solid
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
 from derive.mechanics import free_rotation
 
 I1, I2, I3, w3, wt, W = sp.symbols("I_1 I_2 I_3 omega_3 omega_t W", positive=True)

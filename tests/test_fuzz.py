@@ -15,8 +15,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import TEX_OWN_FILES, document, kept_scratch
-from derive import export, expr, latex_safety, leftovers, library, limits, problem, render
-from derive.errors import InputError
+from derive.text.latex import tex_escape
+from derive.publishing import export, leftovers
+from derive.core import expr, library, limits
+from derive.text import latex_grammar, latex_safety
+from derive.language import problem
+from derive.core.errors import InputError
 
 FUZZ = settings(derandomize=True, database=None, deadline=None, print_blob=False,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
@@ -196,13 +200,13 @@ def test_library_files_still_load():
 
 
 def test_decimal_keys_and_values_stay_exact():
-    from derive.reader import Loader
+    from derive.language.reader import Loader
     assert yaml.load("m: 0.1", Loader=Loader) == {"m": Decimal("0.1")}
 
 
 # --- question text: every text the check accepts compiles -----------------------------------
 
-S = latex_safety
+S = latex_grammar
 HOSTILE = [r"\catcode`\^=11 ", "^^5c", "^^M", "^^", r"\iow_open:Nn \g_k_iow {key.csv}", r"\iow_now:Nn", r"\tl_set:Nn",
            r"\cs_new:Npn \x {\x}", r"\ExplSyntaxOn", r"\ExplSyntaxOff", r"\NewDocumentCommand{\x}{}{\x}", r"\use:c {in put}",
            r"\csname input\endcsname", r"\input{key}", r"\write18{ls}", r"\def\x{\x}\x", r"\makeatletter", r"\@gobble",
@@ -321,7 +325,7 @@ def fuzzed() -> dict[str, list[str]]:
         else:
             found["refused"].append(question)
         if _accepts(latex_safety.check_plain, plain, latex_safety.TITLE_LIMIT):
-            found["plain"].append(render.tex_escape(plain))
+            found["plain"].append(tex_escape(plain))
         assert time.monotonic() - start < 1
 
     check()

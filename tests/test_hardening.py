@@ -14,9 +14,13 @@ import yaml
 from jinja2.exceptions import SecurityError, TemplateNotFound, UndefinedError
 
 from conftest import ROOT, document, kept_scratch, run_derive
-from derive import export, latex_characters, latex_safety, leftovers, library, limits, problem, problem_sets, render
-from derive.answers import Solution
-from derive.errors import InputError, ProblemError
+from derive.text.latex import tex_escape
+from derive.publishing import export, leftovers, render
+from derive.text import latex_characters, latex_grammar, latex_safety
+from derive.core import library, limits
+from derive.language import problem, problem_sets
+from derive.solution.answers import Solution
+from derive.core.errors import InputError, ProblemError
 
 EXOTIC = """\
 id: exotic
@@ -332,8 +336,8 @@ def test_library_questions_are_unchanged_by_the_escaping():
 
 
 def vocabulary_question() -> str:
-    """A question that uses every entry of latex_safety's tables, each where it may stand."""
-    s = latex_safety
+    """A question that uses every entry of latex_grammar's tables, each where it may stand."""
+    s = latex_grammar
     kinds = {"math": "{a}", "text": "{b $c^2$ 5%}", "name": "{sgn}"}
     parts = [f"$x^\\{n}_\\{n} \\{n} y$" for n in sorted(s.MATH_SYMBOLS)]
     parts += [f"$x^{{\\{n}}} \\{n} y$" for n in sorted(s.MATH_WORDS)]
@@ -542,7 +546,7 @@ def test_tex_cannot_write_beside_its_document(tmp_path):
 def test_question_text_is_no_template(text):
     """No template engine reads a question: jinja's syntax is literal text, printed as written."""
     p = problem.parse(problem_text(question=text), Path("sandbox.yaml"))
-    assert render.question(p.question, {"M": "$1$", "R": "$2$"}) == render.tex_escape(text) + "\n"
+    assert render.question(p.question, {"M": "$1$", "R": "$2$"}) == tex_escape(text) + "\n"
 
 
 def test_placeholders_name_parameters_only():
@@ -607,7 +611,7 @@ def test_set_references_that_are_no_set_files(reference):
 
 
 def _build(out):
-    from derive import worksheets
+    from derive.publishing import worksheets
     return worksheets.build("demo", variants=2, seed=1, out_dir=str(out), formats=frozenset())
 
 

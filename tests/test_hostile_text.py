@@ -17,8 +17,8 @@ import yaml
 from lxml import etree
 
 from conftest import qti_package, run_derive
-from derive import lms
-from derive.spreadsheet import safe_cell
+from derive.publishing import canvas, lms
+from derive.publishing.spreadsheet import safe_cell
 from test_hardening import problem_text
 
 HOSTILE = "\" ' < > & ]]> = {{ }}"
@@ -122,7 +122,7 @@ def test_lms_exports_of_both_question_kinds_show_hostile_text_as_written():
     assert question == f"Find \\(x\\) {HOSTILE}"
     assert field.startswith(f"{ASK}: \\(x\\) = {{1:NUMERICAL:")
     assert choice.startswith(f"{ASK}: \\(y\\) = {{1:MULTICHOICE_V:")
-    with zipfile.ZipFile(io.BytesIO(lms.qti(items, SET_TITLE, "week", 0))) as archive:
+    with zipfile.ZipFile(io.BytesIO(canvas.qti(items, SET_TITLE, "week", 0))) as archive:
         assessment = qti_assessment(archive)
     assert assessment.find("{*}assessment").get("title") == SET_TITLE
     texts = [paragraphs(m.text) for m in assessment.iter("{*}mattext") if m.get("texttype") == "text/html"]

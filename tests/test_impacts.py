@@ -11,9 +11,10 @@ import pytest
 import sympy as sp
 
 from conftest import refused, run_derive, write_problem
-from derive import problem, report
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
+from derive.language import problem
+from derive.publishing import report
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
 from derive.mechanics import impacts
 
 DISKS = """\

@@ -5,9 +5,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from derive import inertia, units
-from derive.errors import InputError
-from derive.inertia import R1, R2, L, M, R, a, b, c, h, phi, r, x, y, z
+from derive.model import inertia
+from derive.core import units
+from derive.core.errors import InputError
+from derive.model.inertia import R1, R2, L, M, R, a, b, c, h, phi, r, x, y, z
 
 NUMBERS = {L: 2.0, R: 1.5, R1: 0.8, R2: 1.5, h: 2.5, a: 1.0, b: 2.0, c: 3.0}  # sizes for the Monte Carlo
 N = 1_000_000
@@ -387,6 +388,6 @@ def test_results_are_cached_for_300_variants():
 def test_text_is_never_parsed_by_the_inertia_api():
     import pytest
 
-    from derive.errors import InputError
+    from derive.core.errors import InputError
     with pytest.raises(InputError):
         inertia.moment_of_inertia("disk", "symmetry", density="__import__('os')")

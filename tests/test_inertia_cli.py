@@ -14,9 +14,10 @@ import sympy as sp
 from click.testing import CliRunner
 
 from conftest import run_derive
-from derive import expr, inertia
+from derive.core import expr
+from derive.model import inertia
 from derive.cli import main
-from derive.inertia import L, M, R, a, b, h
+from derive.model.inertia import L, M, R, a, b, h
 
 ERRORS = {  # run as processes of the console script: one case per option
     ("cube",): "SHAPE: unknown shape 'cube'",

@@ -2,7 +2,7 @@
 import mpmath
 import pytest
 
-from derive import problem
+from derive.language import problem
 from conftest import close, solve
 
 

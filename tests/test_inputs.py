@@ -11,8 +11,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from conftest import refused, run_derive, write_problem
-from derive import names, numeric, problem, worksheets
-from derive.errors import InputError, ProblemError
+from derive.core import names
+from derive.numbers import numeric
+from derive.language import problem
+from derive.publishing import worksheets
+from derive.core.errors import InputError, ProblemError
 
 
 def disk_problem(mass_range="[1, 2]", sig_figs=2, parameter="M", mass_expression="M", problem_id="plain_disk"):
@@ -200,7 +203,7 @@ def test_a_fixed_value_is_printed_as_the_answers_use_it(tmp_path):
     """A trial's bowling lane, `L: {value: 18.29}` without sig_figs: the worksheet and key printed
     18.3 (the default 3 figures) while the answers used 18.29, so a key value disagreed with the
     printed data. A fixed decimal now keeps its own figures; with fewer sig_figs given it is refused."""
-    from derive.problem import load
+    from derive.language.problem import load
     text = (Path(__file__).parent / "textbook/states/puck_slides_to_stop.yaml").read_text()
     text = text.replace("g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.8}",
                         "g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.8066}")

@@ -1,9 +1,9 @@
-"""derive.json_text writes the text json.dumps(indent=2, ensure_ascii=False) writes (key.json's)."""
+"""derive.publishing.json_text writes the text json.dumps(indent=2, ensure_ascii=False) writes (key.json's)."""
 import json
 
 from hypothesis import given, strategies as st
 
-from derive import json_text
+from derive.publishing import json_text
 
 SCALARS = st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text()
 VALUES = st.recursive(SCALARS, lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(), inner, max_size=4),

@@ -2,7 +2,8 @@
 where it is sound, computed here at 50 digits), through the same code path as `derive solve`."""
 import mpmath
 
-from derive import problem, report
+from derive.language import problem
+from derive.publishing import report
 from conftest import close, solve
 
 
@@ -68,8 +69,8 @@ def test_large_amplitude_period_against_the_series_and_a_simulated_wide_swing():
     answers, _ = solve("compound_pendulum_large", M=2, Rcm=0.3, I_cm=0.05, theta0=small)
     series = answers["T_small"] * (1 + small**2 / 16 + 11 * small**4 / 3072)
     assert abs(answers["T"] / series - 1) < mpmath.mpf("1e-9")   # next term ~ theta0^6
-    from derive import simulate
-    from derive.answers import Solution
+    from derive.checks import simulate
+    from derive.solution.answers import Solution
     wide = problem.load("compound_pendulum_large")
     report = simulate.check(Solution(wide))
     assert report.passed and "T" in report.compared

@@ -6,7 +6,9 @@ from pathlib import Path
 import pytest
 
 from conftest import copy_library, run_derive
-from derive import export, library, problem, report
+from derive.publishing import export, report
+from derive.core import library
+from derive.language import problem
 
 
 @pytest.fixture(scope="module")
@@ -58,7 +60,7 @@ def _overfull(tex: Path, folder: Path) -> list[str]:
 
 def test_no_line_of_the_library_documents_runs_off_the_page(everything, tmp_path):
     """Issue 15: no overfull box in the logs of the worksheet, solutions and key of the whole
-    library: long sums broken across lines (derive.typesetting), meanings in narrow boxes beside
+    library: long sums broken across lines (derive.text.typesetting), meanings in narrow boxes beside
     their equations, paragraphs of text and math allowed to stretch."""
     _, out = everything
     for name in ("worksheet", "solutions", "key"):

@@ -6,10 +6,10 @@ import re
 import sympy as sp
 
 from conftest import run_derive
-from derive.answers import Solution
-from derive import limiting_cases as lc
-from derive.limiting_cases import limiting_cases
-from derive.problem import load
+from derive.solution.answers import Solution
+from derive.publishing import limiting_cases as lc
+from derive.publishing.limiting_cases import limiting_cases
+from derive.language.problem import load
 
 m, M, g, theta = sp.symbols("m M g theta", positive=True)
 

@@ -12,9 +12,12 @@ import pytest
 from pathlib import Path
 
 from conftest import copy_library, image_kind, moodle_cloze, qti_package, run_derive
-from derive import lms, problem_sets, render, units
-from derive.errors import InputError, ProblemError
-from derive.problem import load, parse
+from derive.text.latex import symbol_latex
+from derive.publishing import canvas, lms
+from derive.language import problem_sets
+from derive.core import units
+from derive.core.errors import InputError, ProblemError
+from derive.language.problem import load, parse
 
 
 @pytest.fixture(scope="module")
@@ -293,7 +296,7 @@ def _shown_unit(unit: str) -> bool:
     ("angle", r"\mathit{angle}"), ("hbar", r"\hbar"), ("v_cm_x", r"v_{\mathrm{cm},x}"), ("x", "x"),
 ])
 def test_symbols_read_as_math(name, latex):
-    assert render.symbol_latex(name) == latex and _reads_as_math(latex)
+    assert symbol_latex(name) == latex and _reads_as_math(latex)
 
 
 def test_lms_labels_and_units_read_as_a_student_reads_them(labelled):
@@ -350,12 +353,12 @@ def test_multiple_choice_options_share_one_scaled_unit_per_question_in_both_lms(
                for _, field in moodle_cloze(q.find("questiontext/text").text)[1] for _, a in field]
     assert len(options) == 8 and all(re.fullmatch(r"\d+(\.\d+)? × 10⁻⁶ kg·m²", o) for o in options), options
     assert "12.3 × 10⁻⁶ kg·m²" in options and "0.45 × 10⁻⁶ kg·m²" in options
-    with zipfile.ZipFile(io.BytesIO(lms.qti(chosen, "T", "s", 1))) as archive:
+    with zipfile.ZipFile(io.BytesIO(canvas.qti(chosen, "T", "s", 1))) as archive:
         _, assessment, _ = qti_package(archive)
     shown = [e.text for e in assessment.iter("{*}mattext") if e.get("texttype") == "text/plain"]
     assert sorted(shown) == sorted(options)
     mixed = [item(1, "1.23e-5", ("2.46e-5", "6.15e-6", "1.64e-5")), item(2, "4.5e-7", tolerance="1e-11")]
-    with zipfile.ZipFile(io.BytesIO(lms.qti(mixed, "T", "s", 1))) as archive:
+    with zipfile.ZipFile(io.BytesIO(canvas.qti(mixed, "T", "s", 1))) as archive:
         _, assessment, _ = qti_package(archive)
     texts = [e.text for e in assessment.iter("{*}mattext")]
     assert any(t.endswith("(in 10⁻⁹ kg·m²)</p>") for t in texts)  # the numerical variant's margin needs 10⁻⁹

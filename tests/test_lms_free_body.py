@@ -9,10 +9,10 @@ import pytest
 from lxml import etree
 
 from conftest import image_kind, qti_package
-from derive import figure_files, lms, worksheets
-from derive.answers import Solution
-from derive.figure import free_body
-from derive.problem import load
+from derive.publishing import figure_files, lms, worksheets
+from derive.solution.answers import Solution
+from derive.publishing.figure import free_body
+from derive.language.problem import load
 
 PNG = b"\x89PNG\r\n\x1a\n"
 VARIANTS = 3

@@ -12,7 +12,8 @@ import pytest
 from lxml import etree
 
 from conftest import image_kind, moodle_cloze, qti_package, run_derive
-from derive import lms, problem_sets
+from derive.publishing import canvas as canvas_export, lms
+from derive.language import problem_sets
 
 PROBLEMS = problem_sets.load_set("demo").problems  # rod_endpoint (asks 1), string_wrapped_disk (3), compound_pendulum (2)
 
@@ -198,12 +199,12 @@ def _items(problem: str = "p") -> list[lms.Item]:
 
 
 def test_identifiers_are_the_same_for_the_same_set_and_seed_and_differ_otherwise(built, tmp_path):
-    same = _identifiers(lms.qti(_items(), "T", "week", 4))
+    same = _identifiers(canvas_export.qti(_items(), "T", "week", 4))
     assert len(set(same)) == len(same) == 2 + 1 + 2 + 4 + 1  # resources, manifest, groups, items, assignment
-    assert _identifiers(lms.qti(_items(), "Other title", "week", 4)) == same
-    for other in (lms.qti(_items(), "T", "week", 5), lms.qti(_items(), "T", "week2", 4)):
+    assert _identifiers(canvas_export.qti(_items(), "Other title", "week", 4)) == same
+    for other in (canvas_export.qti(_items(), "T", "week", 5), canvas_export.qti(_items(), "T", "week2", 4)):
         assert not set(_identifiers(other)) & set(same)
-    questions = _identifiers(lms.qti(_items("q"), "T", "week", 4))  # another problem: its own groups and items
+    questions = _identifiers(canvas_export.qti(_items("q"), "T", "week", 4))  # another problem: its own groups and items
     assert questions[:3] + questions[-1:] == same[:3] + same[-1:] and not set(questions[3:-1]) & set(same)
     first = _identifiers((built / "canvas-qti.zip").read_bytes())  # a whole set: seed 4, then seed 5
     second = _identifiers((_build(tmp_path, 5) / "canvas-qti.zip").read_bytes())

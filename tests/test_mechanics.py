@@ -8,12 +8,12 @@ from scipy.integrate import solve_ivp
 
 from derive.mechanics import lagrange, newton_euler
 from derive.mechanics.derivation import solve_linear
-from derive.mechanics.kinematics import Coordinates
+from derive.model.kinematics import Coordinates
 from derive.mechanics.oscillation import OscillationError, small_oscillation
 from derive.parts.cord import Attachment, Cord
 from derive.parts.gravity import Gravity
 from derive.parts.pin import Pin
-from derive.scene import Body, Scene
+from derive.model.scene import Body, Scene
 
 m, M, R, g, d, I = sp.symbols("m M R g d I_cm", positive=True)
 

@@ -9,9 +9,9 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive import simulate
-from derive.answers import Solution
-from derive.problem import load
+from derive.checks import simulate
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 G = 9.81
 

@@ -10,10 +10,10 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive import simulate
-from derive.answers import Solution
-from derive.errors import EngineLimit, ProblemError
-from derive.problem import load
+from derive.checks import simulate
+from derive.solution.answers import Solution
+from derive.core.errors import EngineLimit, ProblemError
+from derive.language.problem import load
 
 TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 

@@ -1,4 +1,4 @@
-"""Issue 15: no typeset symbol stands for two things in one document (derive.notation): the library's
+"""Issue 15: no typeset symbol stands for two things in one document (derive.publishing.notation): the library's
 worked solutions are free of clashes, a problem file's name that takes an engine symbol (V, T, K, a)
 renames the engine's quantity in the document, and any other clash it makes is refused."""
 from pathlib import Path
@@ -7,11 +7,12 @@ import pytest
 import sympy as sp
 
 from conftest import refused, run_derive, write_problem
-from derive import library, notation, variants, worksheets
-from derive.answers import Solution
-from derive.errors import ProblemError
+from derive.core import library
+from derive.publishing import notation, variants, worksheets
+from derive.solution.answers import Solution
+from derive.core.errors import ProblemError
 from derive.mechanics.derivation import KINETIC, PERIOD, POTENTIAL
-from derive.problem import load, parse
+from derive.language.problem import load, parse
 
 PENDULUM = (library.problems_dir() / "torque" / "compound_pendulum.yaml").read_text()
 DISK = (library.problems_dir() / "torque" / "string_wrapped_disk.yaml").read_text()

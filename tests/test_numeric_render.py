@@ -8,7 +8,10 @@ import pytest
 import sympy as sp
 
 from conftest import copy_library, run_derive
-from derive import latex_safety, numeric, render
+from derive.text.latex import tex_escape
+from derive.text import latex_safety
+from derive.numbers import numeric
+from derive.publishing import render
 
 
 @pytest.mark.parametrize("value, digits, text", [
@@ -32,7 +35,7 @@ def test_evaluate_needs_every_symbol():
 
 
 def test_tex_escape():
-    assert render.tex_escape("50% of $5 & #1_a {b} ~ ^") == (
+    assert tex_escape("50% of $5 & #1_a {b} ~ ^") == (
         r"50\% of \$5 \& \#1\_a \{b\} \textasciitilde{} \textasciicircum{}")
 
 
@@ -40,7 +43,7 @@ def test_templates_are_strict_and_sandboxed():
     with pytest.raises(latex_safety.LatexError, match=r"\{\{ q \}\}: not a parameter"):
         render.question("mass {{ q }}", {"m": "1"})
     text = "{{ ''.__class__.__mro__[1].__subclasses__() }}"  # questions are no templates: literal text
-    assert render.question(text, {}) == render.tex_escape(text)
+    assert render.question(text, {}) == tex_escape(text)
     env = render.templates()
     assert env.variable_start_string == r"\VAR{" and env.undefined is jinja2.StrictUndefined
     with pytest.raises(jinja2.UndefinedError):
@@ -58,12 +61,12 @@ def test_undeclared_name_in_question_is_bad_input(tmp_path):
     rod = library / "inertia" / "rod_midpoint.yaml"
     rod.write_text(rod.read_text().replace("{{ m }}", "{{ mass }}"))
     done = run_derive("sheet", "one", "--to", "", "--out", str(tmp_path / "out"), library=library)
-    # refused when the file is read (derive.latex_safety: placeholders of parameters only)
+    # refused when the file is read (derive.text.latex_safety: placeholders of parameters only)
     assert done.returncode == 2 and "rod_midpoint.yaml: question: {{ mass }}: not a parameter" in done.stderr
 
 
 def test_latex_error_prints_the_log_lines_of_the_error(tmp_path, monkeypatch):
-    """A TeX error (no problem text causes one now: derive.latex_safety; here a broken TikZ library
+    """A TeX error (no problem text causes one now: derive.text.latex_safety; here a broken TikZ library
     that TeX finds first on TEXINPUTS) is reported with the lines of its log."""
     library = one_problem_library(tmp_path)
     with tempfile.TemporaryDirectory(dir="/tmp") as packages:  # a short path: TeX's log wraps long lines
@@ -81,7 +84,7 @@ def test_an_answer_exactly_zero_by_trigonometry_prints_zero():
     sin(1) tan(1/2) = 2 sin(1/2)^2 settles it (it crashed with PrecisionExhausted)."""
     import sympy as sp
 
-    from derive import numeric
+    from derive.numbers import numeric
 
     half = sp.Rational(1, 2)
     value = (-981 * sp.sin(1) * sp.tan(half) / 25 + 1962 * sp.sin(half) ** 2 / 25) / (2 * (sp.sin(half) ** 2 + 3))

@@ -7,7 +7,8 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from conftest import copy_library, run_derive
-from derive import problem, report
+from derive.language import problem
+from derive.publishing import report
 from derive.mechanics import orbits
 
 GM, l, a = sp.symbols("GM l a", positive=True)

@@ -1,4 +1,4 @@
-"""Output folders belong to the user (derive.output_folder): refusals, kept files, symlinks, a
+"""Output folders belong to the user (derive.publishing.output_folder): refusals, kept files, symlinks, a
 kill at every step of the swap, full and read-only disks."""
 import hashlib
 import json
@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from conftest import ROOT
-from derive import export, leftovers, output_folder
+from derive.publishing import export, leftovers, output_folder
 
 DERIVE = Path(sys.executable).parent / "derive"
 

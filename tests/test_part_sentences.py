@@ -11,10 +11,10 @@ import pytest
 import sympy as sp
 
 import derive.parts
-from derive import render, report, variants, worksheets
-from derive.answers import Solution
+from derive.publishing import render, report, variants, worksheets
+from derive.solution.answers import Solution
 from derive.mechanics.impacts import Touch
-from derive.mechanics.kinematics import Coordinates
+from derive.model.kinematics import Coordinates
 from derive.mechanics.moves import _Couple
 from derive.parts import Part
 from derive.parts.clutch import Clutch
@@ -31,8 +31,8 @@ from derive.parts.surfaces import Plane
 from derive.parts.torque import Torque
 from derive.parts.torsional_spring import TorsionalSpring
 from derive.parts.weld import Weld
-from derive.problem import load
-from derive.scene import Body, Scene
+from derive.language.problem import load
+from derive.model.scene import Body, Scene
 from test_check import PSEUDO_MATH
 
 TEXTBOOK = Path(__file__).resolve().parent / "textbook"

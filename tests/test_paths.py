@@ -3,9 +3,11 @@ import mpmath
 import pytest
 import sympy as sp
 
-from derive import problem, report
+from derive.language import problem
+from derive.publishing import report
 from derive.mechanics.paths import by_mechanics, quantity
-from derive.scene import TIME, Path
+from derive.core.expr import TIME
+from derive.model.scene import Path
 
 r = sp.Function("r")(TIME)
 theta = sp.Function("theta")(TIME)

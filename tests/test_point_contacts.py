@@ -9,8 +9,8 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive.answers import Solution
-from derive.problem import load
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 LADDER = """\
 id: ladder

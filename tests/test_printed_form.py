@@ -1,4 +1,4 @@
-"""Issue 15: results print in the textbook's grouping (derive.printed_form), and the printed form is
+"""Issue 15: results print in the textbook's grouping (derive.text.printed_form), and the printed form is
 the answer: compared with it at random points over every answer of the library and of the textbook
 problems of the tests."""
 import random
@@ -8,9 +8,11 @@ import pytest
 import sympy as sp
 from sympy.polys.polyerrors import PolynomialError
 
-from derive import library, printed_form, render, terminal
-from derive.answers import Solution
-from derive.problem import load
+from derive.text.latex import latex_of
+from derive.core import library
+from derive.text import printed_form, terminal
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 TEXTBOOK = sorted((Path(__file__).parent / "textbook").glob("*.yaml"))
 theta, M, R, g, I = sp.symbols("theta M R g I", positive=True)
@@ -53,7 +55,7 @@ _VALUED = (sp.sin, sp.cos, sp.tan, sp.asin, sp.acos, sp.atan, sp.Abs, sp.ellipti
 
 def test_the_pendulum_s_period_is_one_root():
     solution = Solution(load("compound_pendulum"))
-    assert render.latex_of(solution.expression("T")) == (
+    assert latex_of(solution.expression("T")) == (
         r"2 \pi \sqrt{\frac{I_{\mathrm{cm}} + M R_{\mathrm{cm}}^{2}}{M R_{\mathrm{cm}} g}}")
     assert "√" not in "".join(terminal.pretty(solution.expression("T"))).replace("╲╱", "", 1)
 
@@ -67,12 +69,12 @@ def test_sines_cosines_and_tangents_as_few_as_can_be():
 
 
 def test_a_square_over_its_absolute_value_and_roots_of_unknown_sign():
-    assert render.latex_of(sp.acos(sp.sin(x) ** 2 / sp.Abs(sp.sin(x)))) == (
+    assert latex_of(sp.acos(sp.sin(x) ** 2 / sp.Abs(sp.sin(x)))) == (
         r"\operatorname{acos}{\left(\left|{\sin{\left(x \right)}}\right| \right)}")
     assert printed_form.textbook(x**2 / sp.Abs(sp.Symbol("z"))) == x**2 / sp.Abs(sp.Symbol("z"))
     # sqrt(x)/sqrt(g) is sqrt(x/g) only for x >= 0: kept apart
-    assert render.latex_of(sp.sqrt(x) / sp.sqrt(g)) == r"\frac{\sqrt{x}}{\sqrt{g}}"
-    assert render.latex_of(sp.sqrt(M) * sp.sqrt(g) / (sp.sqrt(R) * sp.sqrt(I))) == r"\sqrt{\frac{M g}{I R}}"
+    assert latex_of(sp.sqrt(x) / sp.sqrt(g)) == r"\frac{\sqrt{x}}{\sqrt{g}}"
+    assert latex_of(sp.sqrt(M) * sp.sqrt(g) / (sp.sqrt(R) * sp.sqrt(I))) == r"\sqrt{\frac{M g}{I R}}"
 
 
 @pytest.mark.parametrize("where, name, latex", [
@@ -84,7 +86,7 @@ def test_a_square_over_its_absolute_value_and_roots_of_unknown_sign():
 ])
 def test_a_coefficient_and_powers_taken_into_the_root(where, name, latex):
     problem = load(str(Path(__file__).parent.parent / where) if where.endswith(".yaml") else where)
-    assert render.latex_of(Solution(problem).expression(name)) == latex
+    assert latex_of(Solution(problem).expression(name)) == latex
 
 
 @pytest.mark.parametrize("name, latex", [  # the notes, §4.1: a = -g 2m/(M+2m), alpha = a/R, T = m g M/(M+2m)
@@ -93,7 +95,7 @@ def test_a_coefficient_and_powers_taken_into_the_root(where, name, latex):
     ("T", r"g m \frac{M}{M + 2 m}"),
 ])
 def test_a_term_s_share_of_a_sum_as_the_notes_group_it(name, latex):
-    assert render.latex_of(Solution(load("string_wrapped_disk")).expression(name)) == latex
+    assert latex_of(Solution(load("string_wrapped_disk")).expression(name)) == latex
 
 
 def test_a_numerator_holding_two_of_the_terms_or_none_is_left_as_it_is():

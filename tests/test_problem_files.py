@@ -4,8 +4,8 @@ import textwrap
 import pytest
 import sympy as sp
 
-from derive import problem
-from derive.library import problem_files
+from derive.language import problem
+from derive.core.library import problem_files
 
 GOOD = textwrap.dedent("""\
     id: hanging

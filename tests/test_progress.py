@@ -1,6 +1,6 @@
 """Progress on stderr: lines in logs, a rich bar on a terminal, nothing when asked."""
 from conftest import run_derive
-from derive.progress import Reporter
+from derive.publishing.progress import Reporter
 
 
 def test_lines_name_each_step_with_its_count(capsys):

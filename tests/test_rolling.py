@@ -6,11 +6,11 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
-from derive.errors import ProblemError
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
+from derive.core.errors import ProblemError
 from derive.mechanics import rolling
-from derive.problem import load, parse
+from derive.language.problem import load, parse
 
 
 def _as(shape: str, tmp_path):

@@ -12,10 +12,11 @@ from scipy.integrate import solve_ivp
 from sympy.physics import mechanics as me
 
 from conftest import refused
-from derive import problem, report
-from derive.answers import Solution
-from derive.crosschecks import CheckFailure
-from derive.errors import InputError
+from derive.language import problem
+from derive.publishing import report
+from derive.solution.answers import Solution
+from derive.solution.crosschecks import CheckFailure
+from derive.core.errors import InputError
 from derive.mechanics import bearings, rolling_coin
 
 m, g, a, b, R, th, I1, I3 = sp.symbols("m g a b R theta I_1 I_3", positive=True)
@@ -174,7 +175,7 @@ def test_a_second_body_or_no_gravity_is_refused(tmp_path):
 
 
 def test_the_figure_draws_the_coin_leaning_toward_its_circles_axis(tmp_path):
-    from derive import figure
+    from derive.publishing import figure
     path = tmp_path / "coin.yaml"
     path.write_text(COIN_FILE.replace("ASK", "coin.steady.precession").replace("KEY", "{tilt: theta, circle: R}")
                     .replace("UNIT", "rad/s"))

@@ -155,7 +155,7 @@ def test_a_build_leaves_nothing_frozen_out_of_the_collector(tmp_path):
     a notebook that builds again and again collects the cycles of the builds before."""
     import gc
 
-    from derive import worksheets
+    from derive.publishing import worksheets
 
     worksheets.build("demo", variants=2, out_dir=str(tmp_path / "out"), formats=frozenset())
     assert gc.get_freeze_count() == 0
@@ -207,8 +207,8 @@ def test_a_root_is_chosen_by_the_parameters_range_in_si(tmp_path):
     """theta_c of a spool whose theta is drawn in degrees: the roots of a(theta) are radians and the
     range [6, 60] deg is compared as [pi/30, pi/3] (it was compared as [6, 60], and took the root
     2*pi - acos(r/R) there for one inside it, or refused both)."""
-    from derive.answers import Solution
-    from derive.problem import load
+    from derive.solution.answers import Solution
+    from derive.language.problem import load
 
     text = (ROOT / "problems/torque/tugged_spool.yaml").read_text().replace(
         "unit: rad, range: [0.1, 1.2]", "unit: deg, range: [6, 60]")

@@ -1,4 +1,4 @@
-"""The 3D answers against the full nonlinear motion (derive.simulate_solid, derive.rigid_motion): every
+"""The 3D answers against the full nonlinear motion (derive.checks.simulate_solid, derive.mechanics.rigid_motion): every
 textbook file of a top, a rolling coin, a free body and a body in bearings agrees with its simulation
 (rates, angles and forces to 1e-6 relative, most to 1e-9), and an answer 1 % off, or a start off the
 steady motion, is caught. The numerical model itself keeps what it must: energy, L_z about the
@@ -11,9 +11,10 @@ import pytest
 import sympy as sp
 
 from conftest import run_derive, write_problem
-from derive import rigid_motion, simulate_solid
-from derive.answers import Solution
-from derive.problem import load
+from derive.mechanics import rigid_motion
+from derive.checks import simulate_solid
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 #: Each textbook file's asks the simulation compares (the fast-top limits are not simulated).
@@ -149,7 +150,7 @@ def test_check_prints_a_figure_line_for_each_3d_ask():
     assert done.returncode == 0, done.stdout + done.stderr
     assert "ok: Omega_slow, Omega_fast" in done.stdout and "ok: L_z, L_x, angle" in done.stdout
     lines = done.stdout.splitlines()
-    figures = lines[lines.index("simulated in 3D (derive.simulate_solid):") + 1:]
+    figures = lines[lines.index("simulated in 3D (derive.checks.simulate_solid):") + 1:]
     slow = next(f for f in figures if f.strip().startswith("top_precession_exact: Omega_slow:"))
     assert "steady precession" in slow and float(slow.rpartition("relative difference ")[2]) < 1e-6
     assert any("Omega_approx: top.precession.fast_top not simulated (a fast-top limit)" in f for f in figures)

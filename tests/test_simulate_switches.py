@@ -1,9 +1,9 @@
 """A check's simulation never runs away: where a kinetic friction's slip changes sign the run
-stops and says so (derive.simulate.switches), and a run that chatters is given up after
+stops and says so (derive.checks.simulate.switches), and a run that chatters is given up after
 MAX_EVALUATIONS (a new user's slipping clutch took 15 minutes and 17.7 GB in `derive check`)."""
-from derive import simulate
-from derive.answers import Solution
-from derive.problem import load
+from derive.checks import simulate
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 CLUTCH = """\
 id: clutch_plates

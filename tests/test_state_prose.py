@@ -2,7 +2,7 @@
 motion, each impact, move or turn) as its own section, headed in words and in the file's order, and
 says in sentences the principle each of its steps uses, from the facts the derivation holds (which
 parts do no work, about which point a momentum is kept, the restitution, the kinetic friction), in
-the parts' Sentence machinery (derive.prose)."""
+the parts' Sentence machinery (derive.text.prose)."""
 import functools
 from decimal import Decimal
 from pathlib import Path
@@ -11,9 +11,10 @@ from types import SimpleNamespace
 import pytest
 import sympy as sp
 
-from derive import library, render, variants, worksheets
-from derive.answers import Solution
-from derive.problem import load
+from derive.core import library
+from derive.publishing import render, variants, worksheets
+from derive.solution.answers import Solution
+from derive.language.problem import load
 from test_check import PSEUDO_MATH
 
 TEXTBOOK = Path(__file__).resolve().parent / "textbook" / "states"

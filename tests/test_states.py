@@ -8,10 +8,11 @@ from pathlib import Path
 import pytest
 
 from conftest import run_derive
-from derive import problem, report
-from derive.crosschecks import CheckFailure
-from derive.errors import EngineLimit
-from derive.mechanics import durations, first_root, states
+from derive.language import problem
+from derive.publishing import report
+from derive.solution.crosschecks import CheckFailure
+from derive.core.errors import EngineLimit
+from derive.mechanics import durations, first_root, reaching
 
 ROD = """\
 id: rod_states
@@ -126,8 +127,8 @@ def test_a_wrong_state_is_caught_by_the_integrated_motion(tmp_path, monkeypatch)
     """The second route: a rate 1% off is found by integrating Newton–Euler's equations."""
     path = tmp_path / "problem.yaml"
     path.write_text(ROD.replace("TARGET", "-pi/2"))
-    original = states.root
-    monkeypatch.setattr(states, "root", lambda expr: original(expr) * 101 / 100)
+    original = reaching.root
+    monkeypatch.setattr(reaching, "root", lambda expr: original(expr) * 101 / 100)
     with pytest.raises(CheckFailure, match="differ"):
         report.solve(problem.load(path), {}, 4)
 
@@ -190,7 +191,7 @@ def test_a_state_off_the_geometry_at_some_values_is_refused_there(tmp_path):
 
     import sympy as sp
 
-    from derive.answers import Solution
+    from derive.solution.answers import Solution
     path = tmp_path / "problem.yaml"
     path.write_text(BALL)
     solution = Solution(problem.load(path))
@@ -507,9 +508,11 @@ def test_the_period_by_energy_meets_the_elliptic_integral(monkeypatch):
     is the elliptic integral's value to 12 digits (amplitude 2.4 rad, near the top)."""
     import sympy as sp
 
-    from derive import answers, library, numeric
-    from derive.answers import Solution
-    from derive.crosschecks import sample_points
+    from derive.solution import answers
+    from derive.core import library
+    from derive.numbers import numeric
+    from derive.solution.answers import Solution
+    from derive.solution.crosschecks import sample_points
     from derive.mechanics.oscillation import NotAPendulum
 
     loaded = problem.load(library.find_problem("compound_pendulum_large"))
@@ -839,7 +842,7 @@ def test_kinetic_friction_asked_in_a_state_opposes_the_slip_there():
     """`block.friction` asked `in:` a state of a slide was a KeyError (an internal error): the
     sliding contact has no friction unknown. It is mu_k N along the surface's tangent, against the
     slip in that state."""
-    from derive.answers import Solution
+    from derive.solution.answers import Solution
     solution = Solution(problem.load(str(Path(__file__).parent / "textbook/states/block_down_rough_incline.yaml")))
     contact = solution.scene_in("lower").constraint("block_contact")
     normal = solution.in_state("lagrange", "lower")[contact.unknowns()["normal"]]

@@ -13,9 +13,10 @@ from types import SimpleNamespace
 import pytest
 import sympy as sp
 
-from derive import numeric, report
-from derive.answers import Solution
-from derive.problem import load
+from derive.numbers import numeric
+from derive.publishing import report
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 FOLDER = Path(__file__).resolve().parent / "textbook"
 

@@ -7,9 +7,9 @@ from pathlib import Path
 import sympy as sp
 
 from conftest import refused
-from derive import chain_simulation
-from derive.answers import Solution
-from derive.problem import load
+from derive.checks import chain_simulation
+from derive.solution.answers import Solution
+from derive.language.problem import load
 
 TEXTBOOK = Path(__file__).parent / "textbook" / "states"
 LOOP = (TEXTBOOK / "block_ramp_into_loop.yaml").read_text()

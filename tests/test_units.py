@@ -1,4 +1,4 @@
-"""Tests for derive.units."""
+"""Tests for derive.core.units."""
 import subprocess
 import time
 
@@ -6,8 +6,7 @@ import pytest
 import sympy
 from sympy.physics import units as u
 
-from derive.units import (UNITS, UnitError, dimension, expression_dimension, latex_unit, siunitx_unit, unicode_unit,
-                          parse_quantity, parse_unit, same_dimension, si_factor, to_unit)
+from derive.core.units import (UNITS, UnitError, dimension, expression_dimension, latex_unit, siunitx_unit, unicode_unit, parse_quantity, parse_unit, same_dimension, si_factor, to_unit)
 
 pi = sympy.pi
 
@@ -162,7 +161,7 @@ def test_set_spellings_give_their_si_value(text, declared, si):
 
 
 def test_every_sympy_unit_converts_or_is_refused_in_one_line():
-    from derive.units import sympy_units
+    from derive.core.units import sympy_units
 
     refused = set()
     for name in sympy_units():
@@ -373,8 +372,8 @@ def test_unicode_unit(text):
 
 def test_every_library_unit_reads_as_text_without_operators():
     """No `*`, `^` or a lone "1" in any unit a library problem declares, written as text."""
-    from derive import library
-    from derive.problem import load
+    from derive.core import library
+    from derive.language.problem import load
     problems = [load(path) for path in library.problem_files()]
     declared = {q.unit for p in problems for q in [*p.parameters.values(), *p.asks.values()]}
     assert {"1", "kg*m^2", "m/s^2"} <= declared
@@ -414,10 +413,10 @@ def test_atan2_of_two_lengths_is_an_angle():
 def test_a_derived_answer_whose_dimension_cannot_be_found_is_an_engine_limit_naming_the_ask(monkeypatch):
     """Not the file's fault: an engine limit (exit 1) naming the file and the ask, not a bare
     "derive: error: atan2() of length" with exit 2, which read as bad input and named nothing."""
-    from derive import crosschecks
-    from derive.answers import Solution
-    from derive.errors import EngineLimit
-    from derive.problem import load
+    from derive.solution import crosschecks
+    from derive.solution.answers import Solution
+    from derive.core.errors import EngineLimit
+    from derive.language.problem import load
 
     def refuse(expression, symbol_units):
         raise UnitError("atan2() of length; its argument must be dimensionless")

@@ -7,7 +7,7 @@ space acts from t = 0 to t = dt. Two routes to L at the end:
 
 - impulse: the angular impulse about the fixed point, dL/dt = tau integrated: L1 = L0 + tau dt a;
 - euler: Euler's equations in the body frame, I omega' + omega x (I omega) = R^T tau a, with the
-  orientation (a quaternion), integrated numerically by derive.rigid_motion (scipy DOP853, rtol
+  orientation (a quaternion), integrated numerically by derive.mechanics.rigid_motion (scipy DOP853, rtol
   1e-12), the route derive check's 3D simulations take; L1 = R I omega.
 
 L turns through the angle between L0 and L1, atan2(|L0 x L1|, L0 . L1): atan(tau dt/(I3 omega))
@@ -30,8 +30,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from derive import rigid_motion
-from derive.mechanics.tidying import tidy
+from derive.mechanics import rigid_motion
+from derive.core.tidying import tidy
 from derive.mechanics.free_rotation import angle_between
 
 
@@ -52,7 +52,7 @@ def small_angle(axial, spin, axis, couple, torque, duration) -> sp.Expr:
 
 def euler(moments, spin, axis, couple, torque, duration) -> tuple[float, float]:
     """(the angle L turns through, the angle the axle turns through) by Euler's equations integrated
-    with the orientation (derive.rigid_motion: a quaternion, scipy DOP853 at rtol 1e-12), for
+    with the orientation (derive.mechanics.rigid_motion: a quaternion, scipy DOP853 at rtol 1e-12), for
     numbers: `moments` (I1, I3) about the point, the body's own z its axis."""
     transverse, axial = (float(m) for m in moments)
     inertia = np.diag([transverse, transverse, axial])

@@ -7,7 +7,7 @@ toward +x, the body first turned by `roll` about that axis; vectors are given in
 instant the own axis lies in N's xz plane. Three routes, by sympy.physics.mechanics:
 
 - Newton–Euler: the body frame turned about N.z by the spin angle phi(t), L = I·ω about the
-  center (the inertia dyadic from derive.inertia's tensor), the bearings' torque tau = dL/dt
+  center (the inertia dyadic from derive.model.inertia's tensor), the bearings' torque tau = dL/dt
   (the time derivative in N), the kinetic energy of the RigidBody;
 - Lagrange: the body free to turn by body-fixed angles q3, q2, q1 (about z, y, x) ahead of its
   mounting; the bearings hold q1 = q2 = 0 and turn q3 = omega t (LagrangesMethod with
@@ -38,21 +38,16 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive import inertia
-from derive.mechanics.tidying import tidy
+from derive.model import inertia
+from derive.core.tidying import tidy
+from derive.model.solid_scene import own_axis
 
 ROUTES = ("newton_euler", "lagrange")
 
 
-def own_axis(shape: str) -> str:
-    """The body axis the tilt is measured from: x for a rod (its length) or a composite (its
-    parts' frame), z (the symmetry axis) for every other shape."""
-    return "x" if shape in ("rod", "composite") else "z"
-
-
 def body_tensor(shape: str, mass, sizes: dict, parts: dict | None = None) -> sp.ImmutableMatrix:
     """The inertia tensor about the center of mass in the body's own frame; a composite's
-    `parts` (derive.composite: name -> (shape, mass, sizes, (x, y), angle)) composed in 3D."""
+    `parts` (derive.model.composite: name -> (shape, mass, sizes, (x, y), angle)) composed in 3D."""
     if parts is not None:
         placed = [inertia.Part(s, m, z, (x, y, 0), sp.rot_axis3(-angle))
                   for s, m, z, (x, y), angle in parts.values()]
@@ -227,14 +222,14 @@ def angular_momentum_by_integral(shape: str, mass, sizes: tuple, rate, tilt, rol
     return integrand.applyfunc(lambda e: tidy(sp.integrate(sp.expand(e), *limits) if limits else e))
 
 
-#: The vectors a file may ask of a body in bearings (derive.solid_scene.BEARING_QUANTITIES), by the key
+#: The vectors a file may ask of a body in bearings (derive.model.solid_scene.BEARING_QUANTITIES), by the key
 #: `motion` gives each.
 VECTORS = {"angular_momentum": "angular_momentum", "bearings.torque": "torque", "bearings.total_force": "force",
            "bearings.A.force": "bearing.A", "bearings.B.force": "bearing.B"}
 
 
 def quantity(found: dict, detail: str, tilt, apart=None) -> sp.Expr:
-    """One quantity a file may ask (derive.solid_scene.BEARING_QUANTITIES) from a route's `motion`: a
+    """One quantity a file may ask (derive.model.solid_scene.BEARING_QUANTITIES) from a route's `motion`: a
     component or magnitude of a vector (VECTORS), the angle between L and omega (along +z), the
     kinetic energy, the drive's couple about the shaft, or the force of each bearing of a pair
     `apart` that supplies the torque across the shaft where the supports exert no net force.

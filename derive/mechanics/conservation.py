@@ -11,7 +11,7 @@ cords) are what make this valid: the scenes here have no others.
 >>> from derive.parts.contact import Contact
 >>> from derive.parts.gravity import Gravity
 >>> from derive.parts.surfaces import Plane
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> M, R, g, H, a = sp.symbols("M R g H alpha", positive=True)
 >>> scene = Scene({"hoop": Body("hoop", "ring", M, {"radius": R})},
 ...               (Contact("c", "hoop", "ramp", True),), Gravity(g), {"ramp": Plane("ramp", a, H)})
@@ -25,10 +25,10 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics.derivation import KINETIC, POTENTIAL, Step
-from derive.mechanics.tidying import root, tidy
-from derive.mechanics.kinematics import Coordinates, solve_gaps
+from derive.core.tidying import root, tidy
+from derive.model.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power
-from derive.scene import Scene
+from derive.model.scene import Scene
 
 
 class ConservationError(ValueError):
@@ -72,7 +72,7 @@ def _idle(scene: Scene, coords: Coordinates, kinetic: sp.Expr, potential: sp.Exp
     to another (the spin of a ball sliding without friction): each one's momentum dT/du is c u and
     conserved, so from rest it stays zero.
 
-    >>> from derive.scene import Body, Scene
+    >>> from derive.model.scene import Body, Scene
     >>> M, R = sp.symbols("M R", positive=True)
     >>> scene = Scene({"ball": Body("ball", "sphere", M, {"radius": R})}, ())
     >>> coords = Coordinates(scene)

@@ -15,19 +15,20 @@ from flint import arb, arb_mat, ctx
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyerrors import CoercionFailed
 
-from derive import balls, limits
+from derive.numbers import balls
+from derive.core import limits
 from derive.mechanics import jets
-from derive.mechanics.tidying import radicals, simplest, tidy
+from derive.core.tidying import radicals, simplest, tidy
 
 
 #: The symbols the steps name energies by: K for the kinetic energy (T is a tension in most
-#: problems) and a script L for the Lagrangian (L is often a length). render.symbol_latex prints
+#: problems) and a script L for the Lagrangian (L is often a length). latex.symbol_latex prints
 #: a name that starts with a backslash as it is (a problem file's names are identifiers).
 KINETIC = sp.Symbol("K")
 LAGRANGIAN = sp.Symbol(r"\mathcal{L}")
 POTENTIAL = sp.Symbol("V")
 #: The period of small oscillations, the period at an amplitude and the growth rate the steps solve
-#: for (derive.notation prints each by the name of the ask of it, and renames one a problem file's
+#: for (derive.publishing.notation prints each by the name of the ask of it, and renames one a problem file's
 #: name takes with another meaning).
 PERIOD = sp.Symbol("T")
 EXACT_PERIOD = sp.Symbol("T_exact")
@@ -42,7 +43,7 @@ class Step:
     their numbers ("from (4) to (11)"); "" for any other step. `body`: the body whose balance a
     Newton–Euler step states (its free-body diagram goes beside it), "" for any other step.
     `sentences`: what the scene's parts contribute to it, in words with their symbols
-    (derive.prose), said before it."""
+    (derive.text.prose), said before it."""
 
     text: str
     equations: tuple[sp.Eq, ...] = ()
@@ -106,7 +107,7 @@ class Derivation:
     unknowns: list[sp.Symbol]
     written: Callable[[Derivation], list[Step]] = lambda derivation: []
     rates: list[sp.Expr] = field(default_factory=list)
-    coords: object = None  # derive.mechanics.kinematics.Coordinates, for the rates' derivatives
+    coords: object = None  # derive.model.kinematics.Coordinates, for the rates' derivatives
     gaps: list[sp.Expr] = field(default_factory=list)  # when each rate is dg/dt of a gap g(q)
     _states: dict = field(default_factory=dict, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)
@@ -161,7 +162,7 @@ class Derivation:
         return self._states[key]
 
     def balls_at(self, state: dict[sp.Symbol, sp.Expr], bits: int = 256) -> dict[sp.Symbol, arb]:
-        """Every unknown's ball (derive.balls) in a state that gives every symbol a number: the
+        """Every unknown's ball (derive.numbers.balls) in a state that gives every symbol a number: the
         linear system's entries as balls, solved by python-flint (arb_mat.solve, which rounds
         outward), so each exact value lies in its ball. A check needs no exact solution: over the
         algebraic numbers of a cord's geometry (sin(9/20), its roots) the exact one took 3 s a state.

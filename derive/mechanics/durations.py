@@ -4,10 +4,11 @@ amplitude (twice the time between its turning points).
 
 >>> import sympy as sp
 >>> from derive.mechanics import lagrange
->>> from derive.mechanics.kinematics import Coordinates
->>> from derive.mechanics.states import Gets, reach, rest
+>>> from derive.model.kinematics import Coordinates
+>>> from derive.mechanics.reaching import Gets
+>>> from derive.mechanics.states import reach, rest
 >>> from derive.parts.gravity import Gravity
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
 >>> scene = Scene({"ball": Body("ball", "point", m, {})}, gravity=Gravity(g))
 >>> coords = Coordinates(scene)
@@ -20,17 +21,18 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step
-from derive.mechanics.tidying import root, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
-from derive.mechanics.states import Path, Reached, Stops, reach
-from derive.prose import Sentence
-from derive.scene import Scene
+from derive.core.tidying import root, tidy
+from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
+from derive.mechanics.reaching import Path, Reached, Stops
+from derive.mechanics.states import reach
+from derive.text.prose import Sentence
+from derive.model.scene import Scene
 
 
 def duration(path: Path, end: sp.Expr) -> tuple[sp.Expr, Step]:
     """The time the motion takes along the path from its start to s = `end`: t = integral of
     ds/|s'|. Where s'' is constant (s'^2 = K/k linear in s) in closed form, t = (s'1 - s'0)/s'';
-    else as an integral, evaluated numerically (derive.numeric vouches for its digits by two
+    else as an integral, evaluated numerically (derive.numbers.numeric vouches for its digits by two
     precisions)."""
     s, s0 = path.s, path.start[path.s]
     squared = tidy(path.kinetic / path.inertia)  # s'^2

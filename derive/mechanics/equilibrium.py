@@ -13,7 +13,7 @@ near side of its anchor, not the mirror image beyond it); a scene with none is r
 >>> from derive.parts.force import Force
 >>> from derive.parts.gravity import Gravity
 >>> from derive.parts.pin import Pin
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g, L, F = sp.symbols("m g L F", positive=True)
 >>> rod = Body("rod", "rod", m, {"length": L}, m * L**2 / 12, at=(0, -L / 2), angle=-sp.pi / 2)
 >>> scene = Scene({"rod": rod}, (Pin("hinge", "rod", (-L / 2, 0)),), Gravity(g), loads=(
@@ -29,9 +29,9 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics.derivation import Derivation, Step
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
-from derive.scene import Scene
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
+from derive.model.scene import Scene
 
 
 class EquilibriumError(ValueError):
@@ -127,7 +127,7 @@ def _within(root: sp.Expr, resolve) -> sp.Expr | None:
         return root
     try:
         return resolve(root)
-    except ValueError:  # derive.errors.ProblemError: no branch holds over the ranges
+    except ValueError:  # derive.core.errors.ProblemError: no branch holds over the ranges
         return None
 
 

@@ -11,10 +11,10 @@ it) and Newton–Euler's (no force on the bodies has a component along it), and 
 dT/du . xi and sum m v, must be the same expression.
 
 >>> import sympy as sp
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.kinematics import Coordinates
 >>> from derive.mechanics.states import rest
 >>> from derive.parts.gravity import Gravity
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
 >>> scene = Scene({"stone": Body("stone", "point", m, {})}, gravity=Gravity(g))
 >>> coords = Coordinates(scene)
@@ -30,9 +30,9 @@ import sympy as sp
 
 from derive.mechanics import moves
 from derive.mechanics.derivation import Step
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinates
-from derive.scene import Scene
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinates
+from derive.model.scene import Scene
 
 
 class RoutesDisagree(AssertionError):

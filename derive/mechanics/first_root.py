@@ -7,17 +7,13 @@ a root in every variant (`a_root`).
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.tidying import radicals, tidy
-from derive.mechanics.kinematics import roots
+from derive.core.tidying import radicals, tidy
+from derive.model.kinematics import roots
+from derive.mechanics.reaching import Gets, Path
 from derive.mechanics.state_errors import StateError, StateLimit
-
-if TYPE_CHECKING:
-    from derive.mechanics.states import Gets, Path
 
 
 def toward(positions: dict, condition: Gets, s: sp.Symbol, s0: sp.Expr, decide) -> int:

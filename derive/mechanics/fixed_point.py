@@ -37,7 +37,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive.mechanics.tidying import tidy
+from derive.core.tidying import tidy
 
 ROUTES = ("lagrange", "newton_euler", "kane")
 OMEGA = sp.Symbol("Omega", real=True)  # the precession rate

@@ -8,9 +8,9 @@ Newton–Euler's motion integrated checks the state at every solve).
 
 >>> import sympy as sp
 >>> from derive.mechanics import lagrange
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.kinematics import Coordinates
 >>> from derive.parts.gravity import Gravity
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g, v = sp.symbols("m g v", positive=True)
 >>> scene = Scene({"ball": Body("ball", "point", m, {})}, gravity=Gravity(g))
 >>> coords = Coordinates(scene)
@@ -25,9 +25,10 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.mechanics.derivation import Derivation, Step
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates
-from derive.scene import TIME, Scene
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinate, Coordinates
+from derive.core.expr import TIME
+from derive.model.scene import Scene
 
 
 def flight(scene: Scene, coords: Coordinates, start: dict, derivation: Derivation

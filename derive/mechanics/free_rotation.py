@@ -43,8 +43,8 @@ import sympy as sp
 from sympy.physics import mechanics as me
 
 from derive.mechanics.derivation import KINETIC, Step
-from derive.mechanics.tidying import tidy
-from derive.solid_scene import FREE_ROTATION_QUANTITIES
+from derive.core.tidying import tidy
+from derive.model.solid_scene import FREE_ROTATION_QUANTITIES
 
 ROUTES = ("newton_euler", "lagrange")
 #: The asks of a symmetric body's free precession (the others: a steady rotation about an axis of a rank).

@@ -24,9 +24,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.tidying import tidy
+from derive.core.tidying import tidy
 from derive.parts.contact import Contact
-from derive.scene import Scene
+from derive.model.scene import Scene
 
 
 @dataclass(frozen=True)

@@ -9,15 +9,15 @@ everywhere (the start's, checked along the motion they make: disks on axles, a b
 wheel, a ball on a level floor), the motion is q = q0 + u0 t + a t^2/2 and the slip rate
 s = s0 + s' t falls to zero at t = -s0/s'. Where they change along the motion derive refuses
 the state. From then on it grips: the scene has a clutch
-in the slipping clutch's place, a rolling contact in the sliding one's (derive.state_answers). The other route is
-Newton–Euler's equations integrated until the slip vanishes (derive.crosschecks).
+in the slipping clutch's place, a rolling contact in the sliding one's (derive.solution.state_answers). The other route is
+Newton–Euler's equations integrated until the slip vanishes (derive.solution.crosschecks).
 
 >>> import sympy as sp
 >>> from derive.mechanics import lagrange
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.kinematics import Coordinates
 >>> from derive.parts.pin import Pin
 >>> from derive.parts.slipping_clutch import SlippingClutch
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> I1, I2, C, w = sp.symbols("I1 I2 C omega", positive=True)
 >>> disks = {n: Body(n, "custom", sp.Symbol("M"), {}, i) for n, i in (("lower", I1), ("upper", I2))}
 >>> plates = SlippingClutch("plates", "upper", "lower", C)
@@ -36,11 +36,12 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics.derivation import Derivation, Step
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.states import Reached, StateError, StateLimit
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinates
+from derive.mechanics.reaching import Reached
+from derive.mechanics.state_errors import StateError, StateLimit
 from derive.parts.slipping_clutch import SlippingClutch
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 def grip(coords: Coordinates, start: dict, part, derivation: Derivation, decide) -> Reached:

@@ -27,9 +27,9 @@ A sliding touch closes either route with J_t = +-mu J_n in place of its tangenti
 Kinetic energy is not conserved in such an impact: `energy_lost` is the ledger's entry.
 
 >>> import sympy as sp
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.kinematics import Coordinates
 >>> from derive.parts.pin import Pin
->>> from derive.scene import Body, Event, Scene
+>>> from derive.model.scene import Body, Event, Scene
 >>> m, M, L, v = sp.symbols("m M L v", positive=True)
 >>> rod = Body("rod", "rod", M, {"length": L}, M * L**2 / 12, at=(0, -L / 2), angle=-sp.pi / 2)
 >>> bullet = Body("bullet", "point", m, {}, at=(0, -L))
@@ -49,15 +49,15 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics.derivation import Step, solve_linear
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinates
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinates
 from derive.mechanics.lagrange import energies
 from derive.parts import AppliedForce, AppliedTorque, Part, Sign, titled
 from derive.parts.clutch import Clutch
 from derive.parts.pin import Pin
 from derive.parts.weld import Weld
-from derive.prose import Sentence
-from derive.scene import Event, Scene
+from derive.text.prose import Sentence
+from derive.model.scene import Event, Scene
 
 
 @dataclass(frozen=True)
@@ -172,7 +172,7 @@ class Regime:
 
 
 def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: str, decide=None) -> Part:
-    """The joint an impact (derive.scene.Event) makes as the bodies are in the state
+    """The joint an impact (derive.model.scene.Event) makes as the bodies are in the state
     `values`: a clutch (`lock`, at the turn between them then); for `stick` a pin holding a point
     mass where it is on the other body, or a weld of two turning bodies; for `bounce` the touch
     of a point mass or a round body's rim on the other body, for the instant (along the rod's

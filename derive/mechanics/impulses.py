@@ -12,8 +12,8 @@ A rod struck by a ball while it hangs on a pin takes the pin's impulse J (3 d/(2
 blow J at d below the pin: none at the center of percussion, d = 2 L/3.
 
 >>> import sympy as sp
->>> from derive.mechanics.kinematics import Coordinates
->>> from derive.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
 >>> m, v, e = sp.symbols("m v e", positive=True)
 >>> scene = Scene({"ball": Body("ball", "point", m, {})})
 >>> coords = Coordinates(scene)
@@ -26,10 +26,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinates
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinates
 from derive.parts import AppliedForce, Part
-from derive.scene import Scene
+from derive.model.scene import Scene
 
 
 def by_momentum(scene: Scene, coords: Coordinates, before: dict, after: dict, body: str) -> sp.Matrix:

@@ -1,14 +1,15 @@
 """The second route to a state: Newton–Euler's equations of motion integrated numerically from
-the state's start until its condition holds (derive.crosschecks compares the state found by
+the state's start until its condition holds (derive.solution.crosschecks compares the state found by
 energy, or by constant accelerations, with it).
 
 >>> import sympy as sp
 >>> from derive.mechanics import newton_euler
->>> from derive.mechanics.kinematics import Coordinates
->>> from derive.mechanics.states import Gets, reach, rest
+>>> from derive.model.kinematics import Coordinates
+>>> from derive.mechanics.reaching import Gets
+>>> from derive.mechanics.states import reach, rest
 >>> from derive.mechanics import lagrange
 >>> from derive.parts.gravity import Gravity
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
 >>> scene = Scene({"ball": Body("ball", "point", m, {})}, gravity=Gravity(g))
 >>> coords = Coordinates(scene)
@@ -25,8 +26,8 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from derive.mechanics.derivation import Derivation
-from derive.mechanics.kinematics import Coordinates
-from derive.mechanics.states import Gets, GetsRate, Reached, Stops
+from derive.model.kinematics import Coordinates
+from derive.mechanics.reaching import Gets, GetsRate, Reached, Stops
 
 
 def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reached: Reached, condition,

@@ -6,7 +6,7 @@ springs); each constraint g(q) = 0 enters with a multiplier that is the force it
 
 >>> import sympy as sp
 >>> from derive.parts.gravity import Gravity
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
 >>> d = derive(Scene({"ball": Body("ball", "point", m, {})}, gravity=Gravity(g)))
 >>> d.solution[sp.Symbol("yddot_ball", real=True)]
@@ -16,10 +16,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, POTENTIAL, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing
-from derive.mechanics.tidying import simplest
-from derive.mechanics.kinematics import Coordinates
-from derive.scene import Scene
+from derive.mechanics.derivation import (FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, POTENTIAL, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing)
+from derive.core.tidying import simplest
+from derive.model.kinematics import Coordinates
+from derive.model.scene import Scene
 
 
 def energies(scene: Scene, coords: Coordinates) -> tuple[sp.Expr, sp.Expr]:

@@ -14,7 +14,7 @@ import itertools
 
 import sympy as sp
 
-from derive.mechanics.tidying import tidy
+from derive.core.tidying import tidy
 
 
 def _positions(count: int) -> list[sp.Matrix]:

@@ -29,9 +29,9 @@ joints, fixes where the bodies end (from rest: I1 dtheta1 + I2 dtheta2 = 0). Oth
 they end depends on how long the turn takes: those coordinates are `loose`.
 
 >>> import sympy as sp
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.kinematics import Coordinates
 >>> from derive.parts.pin import Pin
->>> from derive.scene import Body, Event, Scene
+>>> from derive.model.scene import Body, Event, Scene
 >>> m, M, R, w = sp.symbols("m M R omega", positive=True)
 >>> platform = Body("platform", "disk", M, {"radius": R}, M * R**2 / 2)
 >>> child = Body("child", "point", m, {}, at=(R, 0))
@@ -55,13 +55,13 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics.derivation import Step, solve_linear
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinates, solve_gaps
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, generalized_forces
 from derive.parts import AppliedForce, AppliedTorque, Part, titled
 from derive.parts.pin import Pin
-from derive.prose import Sentence
-from derive.scene import Event, Scene
+from derive.text.prose import Sentence
+from derive.model.scene import Event, Scene
 
 
 class MoveLimit(ValueError):
@@ -315,7 +315,7 @@ def kept_said(scene: Scene, coords: Coordinates, symmetry: Symmetry, route: str,
     it); by Newton–Euler, the moments of the parts' forces on the moved bodies (from outside
     them, none about the point; between them, equal and opposite).
 
-    >>> from derive.scene import Body
+    >>> from derive.model.scene import Body
     >>> m, M, R = sp.symbols("m M R", positive=True)
     >>> scene = Scene({"platform": Body("platform", "disk", M, {"radius": R}, M * R**2 / 2),
     ...                "child": Body("child", "point", m, {}, at=(R, 0))},

@@ -6,7 +6,7 @@ differentiated once to relate the accelerations.
 
 >>> import sympy as sp
 >>> from derive.parts.gravity import Gravity
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g = sp.symbols("m g", positive=True)
 >>> d = derive(Scene({"ball": Body("ball", "point", m, {})}, gravity=Gravity(g)))
 >>> d.solution[sp.Symbol("yddot_ball", real=True)]
@@ -19,10 +19,10 @@ import dataclasses
 import sympy as sp
 
 from derive.parts import AppliedForce, AppliedTorque
-from derive.mechanics.derivation import FIXED_LEFT_OUT, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing
-from derive.mechanics.tidying import simplest
-from derive.mechanics.kinematics import Coordinates
-from derive.scene import Scene
+from derive.mechanics.derivation import (FIXED_LEFT_OUT, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing)
+from derive.core.tidying import simplest
+from derive.model.kinematics import Coordinates
+from derive.model.scene import Scene
 
 
 def all_forces(scene: Scene, coords: Coordinates) -> list[AppliedForce | AppliedTorque]:

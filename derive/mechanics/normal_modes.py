@@ -13,7 +13,7 @@ numbered from the lowest frequency.
 >>> import sympy as sp
 >>> from derive.parts.slider import Slider
 >>> from derive.parts.spring import Spring
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> from derive.mechanics import lagrange
 >>> m, k = sp.symbols("m k", positive=True)
 >>> bodies = {n: Body(n, "point", m, {}, at=(x, 0)) for n, x in (("a", 1), ("b", 2))}
@@ -34,12 +34,12 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics.derivation import Derivation, Step
-from derive.mechanics.tidying import root, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates
+from derive.core.tidying import root, tidy
+from derive.model.kinematics import Coordinate, Coordinates
 from derive.mechanics.lagrange import energies
 from derive.mechanics.oscillation import (OscillationError, OscillationLimit, at_equilibrium, first_order,
                                           free_directions)
-from derive.scene import Scene
+from derive.model.scene import Scene
 
 #: The angular frequency, as the worked solution writes the characteristic equation.
 OMEGA = sp.Symbol("omega")
@@ -179,7 +179,7 @@ def _roots(polynomial: sp.Poly) -> tuple[int, list[sp.Expr]]:
 
 
 def _frequency(square: sp.Expr) -> sp.Expr:
-    """sqrt(omega^2), one root of the radicand as `_plainest` wrote it (derive.mechanics.tidying.root
+    """sqrt(omega^2), one root of the radicand as `_plainest` wrote it (derive.core.tidying.root
     would put it back in compact form), unless it is a perfect square."""
     value = root(square)
     return sp.Pow(square, sp.S.Half, evaluate=False) if value == sp.Pow(tidy(square), sp.S.Half, evaluate=False) else value

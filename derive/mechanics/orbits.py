@@ -18,7 +18,8 @@ from functools import lru_cache
 import sympy as sp
 
 from derive.mechanics.paths import quantity
-from derive.scene import TIME, Path
+from derive.core.expr import TIME
+from derive.model.scene import Path
 
 r = sp.Symbol("r", positive=True)
 f = sp.Symbol("f", real=True)

@@ -7,7 +7,7 @@ reference configuration at rest, and q'' = -omega^2 q gives the angular frequenc
 >>> import sympy as sp
 >>> from derive.parts.gravity import Gravity
 >>> from derive.parts.pin import Pin
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> M, g, d, I = sp.symbols("M g d I", positive=True)
 >>> scene = Scene({"bob": Body("bob", "custom", M, {}, I)}, (Pin("pivot", "bob", (0, d)),), Gravity(g))
 >>> from derive.mechanics import lagrange
@@ -21,9 +21,9 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, Step, solve_linear
-from derive.mechanics.tidying import root, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
-from derive.scene import Scene
+from derive.core.tidying import root, tidy
+from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
+from derive.model.scene import Scene
 
 
 class OscillationError(ValueError):
@@ -127,7 +127,7 @@ def free_directions(scene: Scene, coords: Coordinates) -> list[sp.Matrix]:
     order: the null space of the constraints' Jacobian there (every coordinate's own direction
     where nothing constrains them).
 
-    >>> from derive.scene import Body, Scene
+    >>> from derive.model.scene import Body, Scene
     >>> scene = Scene({"ball": Body("ball", "point", sp.Symbol("m"), {})})
     >>> [list(v) for v in free_directions(scene, Coordinates(scene))]
     [[1, 0], [0, 1]]

@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.scene import TIME, Path
+from derive.core.expr import TIME
+from derive.model.scene import Path
 
 def _simplify(expr: sp.Expr) -> sp.Expr:
     return sp.simplify(sp.trigsimp(sp.expand(expr)))

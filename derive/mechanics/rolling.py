@@ -8,7 +8,7 @@ rotation, each by two routes that share only the scene:
   K = I_P omega^2 / 2, the body turning about the contact point with I_P = I_cm + M R^2.
 
 >>> import sympy as sp
->>> from derive.problem import load
+>>> from derive.language.problem import load
 >>> problem = load("rolling_kinetic_energy")
 >>> rolling(problem.scene, "wheel", "center of mass")[0]["rotational_fraction"]
 1/3
@@ -18,9 +18,9 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.mechanics.derivation import KINETIC, Step
-from derive.mechanics.tidying import tidy
-from derive.mechanics.kinematics import Coordinates
-from derive.scene import Scene
+from derive.core.tidying import tidy
+from derive.model.kinematics import Coordinates
+from derive.model.scene import Scene
 
 ROUTES = ("center of mass", "contact point")
 QUANTITIES = ("angular_velocity", "distance_per_turn", "kinetic_energy", "translational_energy",

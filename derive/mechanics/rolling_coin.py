@@ -38,7 +38,7 @@ import sympy as sp
 from sympy.physics import mechanics as me
 
 from derive.mechanics.derivation import Step
-from derive.mechanics.tidying import tidy
+from derive.core.tidying import tidy
 
 ROUTES = ("lagrange", "kane", "newton_euler")
 #: What a steady motion on a circle gives (each a magnitude; `friction` points to the circle's axis).

@@ -14,13 +14,13 @@ cords, smooth or rolling contacts do no work):
 with V the potential energy of gravity and springs and Q the generalized force of the other loads
 (forces and torques that depend on the configuration alone). The other route is Newton–Euler's
 equations integrated numerically from the start to the state (derive.mechanics.integrated_motion,
-checked at every solve by derive.crosschecks); the time it takes is derive.mechanics.durations.
+checked at every solve by derive.solution.crosschecks); the time it takes is derive.mechanics.durations.
 
 >>> import sympy as sp
 >>> from derive.mechanics import lagrange
 >>> from derive.parts.gravity import Gravity
 >>> from derive.parts.pin import Pin
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, g, L = sp.symbols("m g L", positive=True)
 >>> rod = Body("rod", "rod", m, {"length": L}, m * L**2 / 12, at=(L / 2, 0), angle=0)
 >>> scene = Scene({"rod": rod}, (Pin("hinge", "rod", (-L / 2, 0)),), Gravity(g))
@@ -32,21 +32,20 @@ checked at every solve by derive.crosschecks); the time it takes is derive.mecha
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
-from functools import cached_property
 
 import numpy as np
 import sympy as sp
 
 from derive.mechanics import first_integrals, first_root, free_flight, work
 from derive.mechanics.derivation import KINETIC, Derivation, Step
-from derive.mechanics.tidying import radicals, root, tidy
-from derive.mechanics.kinematics import Coordinate, Coordinates, solve_gaps
+from derive.mechanics.reaching import Gets, GetsRate, Path, Reached, Stops, Vanishes, settled
+from derive.core.tidying import radicals, tidy
+from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies
 from derive.mechanics.state_errors import Curved, StateError, StateLimit
 from derive.parts import listed, titled
-from derive.prose import Sentence, capital
-from derive.scene import Scene
+from derive.text.prose import Sentence, capital
+from derive.model.scene import Scene
 
 #: Points between the start and a state where the motion must still move (the kinetic energy
 #: stays positive): a turning point on the way would mean the state is never reached.
@@ -59,24 +58,6 @@ NO_COORDINATE = ("find a coordinate that describes the whole motion from the sta
                  "(when:), such as a bead at the side of its hoop, and reach this one from it (from:)")
 
 
-@dataclass(frozen=True)
-class Reached:
-    """Every coordinate and velocity in a state (`values`), what must stay positive for the
-    motion to get there ((expression, meaning) pairs), the steps that found it, the path the
-    motion was followed along (None at the placement), where on the path the state is (`end`,
-    the value of its coordinate), and the constraint forces that are zero
-    there by its definition (`vanished`: a body leaving its surface); for a state reached
-    along no path (a clutch that grips), the time it takes and the step that found it (`took`)."""
-
-    values: dict[sp.Symbol, sp.Expr]
-    positive: tuple[tuple[sp.Expr, str], ...] = ()
-    steps: tuple[Step, ...] = ()
-    path: Path | None = None
-    end: sp.Expr | None = None
-    vanished: tuple[sp.Symbol, ...] = ()
-    took: tuple[sp.Expr, Step] | None = None
-
-
 def rest(coords: Coordinates) -> dict[sp.Symbol, sp.Expr]:
     """The placement at rest: every coordinate and velocity zero."""
     return {s: sp.Integer(0) for s in coords.at_rest_in_reference()}
@@ -87,7 +68,7 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     (dg/dt = 0 at the placement); refused where the rates leave a velocity open or break a
     constraint."""
     placement = {c.q: sp.Integer(0) for c in coords.all}
-    given = {c.u: sp.sympify(value) for c, value in rates.items()}  # safe: expressions derive.expr parsed, or ints
+    given = {c.u: sp.sympify(value) for c, value in rates.items()}  # safe: expressions derive.core.expr parsed, or ints
     rows = [tidy(radicals(coords.ddt(g).xreplace(placement).xreplace(given), scene.placed))  # a run |L - 2 r| as
             for c in scene.constraints for g in c.gaps(coords)]  # placed: else a weight's swing reads as fixed
     others = [c.u for c in coords.all if c.u not in given]
@@ -114,97 +95,6 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
     steps = (Step("The placement, moving at the given rates (the constraints give the others)",
                   tuple(sp.Eq(c.u, values[c.u]) for c in coords.all if values[c.u] != 0), sentences=tuple(said)),)
     return Reached(values, (), steps)
-
-
-@dataclass(frozen=True)
-class Gets:
-    """The state where a coordinate gets to a value (a displacement from the placement)."""
-
-    coordinate: Coordinate
-    value: sp.Expr
-
-
-@dataclass(frozen=True)
-class GetsRate:
-    """The state where a coordinate's rate gets to a value (a ball at the top of its flight, where
-    its vertical velocity is zero)."""
-
-    coordinate: Coordinate
-    value: sp.Expr
-
-
-@dataclass(frozen=True)
-class Stops:
-    """The state where the motion stops (a turning point: the highest point, the widest swing)."""
-
-
-@dataclass(frozen=True)
-class Vanishes:
-    """The state where a constraint force first falls to zero: a body leaves its surface (the
-    normal force), a cord goes slack (its tension); or an expression of the forces does: where a
-    grip fails, mu_s^2 N^2 - f^2 (zero where |f| = mu_s N, N > 0; smooth, unlike |f|). `said`:
-    what holds while it is positive, and what happens where it falls to zero, in words."""
-
-    force: sp.Expr
-    meaning: str  # "the normal force N^bead", for the steps
-    said: tuple[Sentence, ...] = ()
-
-
-@dataclass(frozen=True)
-class Path:
-    """The motion from a start along its one free coordinate s (`coordinate`): every coordinate
-    as a function of s (`positions`), the kinetic energy per s'^2 (`inertia`, k(s)) and where s
-    is (`kinetic`, K(s) by the work-energy theorem from the start), and the way s moves
-    (`direction`, +1 or -1); `velocities` in s and its rate s' (the coordinate's u)."""
-
-    coordinate: Coordinate
-    start: dict
-    direction: int
-    positions: dict
-    velocities: dict
-    inertia: sp.Expr
-    kinetic: sp.Expr
-    line: tuple | None = None  # on a line: where the state is, and the sign function (see `frozen`)
-    leaves: sp.Expr | None = None  # the start's rate (from rest, acceleration) in s, whose sign is `direction`
-    work: tuple[Sentence, ...] = ()  # what does work along it, and the principle that gives `kinetic`
-    kept: tuple = ()  # contact forces its work takes at their start values (derive.mechanics.work)
-
-    @property
-    def s(self) -> sp.Symbol:
-        return self.coordinate.q
-
-    def rate(self, where: sp.Expr) -> sp.Expr:
-        """s' where s = `where`, moving the path's way."""
-        return self.direction * root(self.kinetic.xreplace({self.s: where}) / self.inertia.xreplace({self.s: where}))
-
-    @cached_property  # one function per path: Derivation.at caches its solutions by it
-    def frozen(self):
-        """On a line, the rewriting of a route's equations at the general point that puts their
-        coefficients constant along it at the start (`_constant_along`); None elsewhere."""
-        return None if self.line is None else _constant_along(self, *self.line)
-
-    @cached_property  # one set of symbols per path, so that a route's solution in them is reused
-    def general(self) -> tuple[dict[sp.Symbol, sp.Expr], sp.Dummy, sp.Dummy]:
-        """Every coordinate and velocity at a point of the path, in two new symbols for s and s'
-        (the route's equations are solved in them, then the state put in): the coordinates' own
-        would be moved again where a route differentiates along the motion."""
-        where, rate = sp.Dummy(str(self.s), real=True), sp.Dummy(str(self.coordinate.u), real=True)
-        return self.values(where, rate, settle=False), where, rate
-
-    def values(self, where: sp.Expr, rate: sp.Expr, settle: bool = True) -> dict[sp.Symbol, sp.Expr]:
-        """Every coordinate and velocity where s = `where`, moving at s' = `rate`."""
-        at = {self.s: where, self.coordinate.u: rate}
-        done = settled if settle else (lambda expr: expr)
-        return {**{q: done(p.xreplace({self.s: where})) for q, p in self.positions.items()},
-                **{u: done(v.xreplace(at)) for u, v in self.velocities.items()}}
-
-
-def settled(expr: sp.Expr) -> sp.Expr:
-    """tidy, with each root's radicand factored first: where a state lies on a circle, sqrt(R^2 - y^2)
-    at y = a root holds a perfect square, which then leaves the root (the routes' linear solve
-    in that state took 26 s with it nested, for a ball rolling off a dome)."""
-    return tidy(sp.sympify(expr).replace(  # safe: an engine expression; replace works from the leaves up
-        lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer, lambda e: sp.factor(e.base) ** e.exp))
 
 
 def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
@@ -288,7 +178,7 @@ def _rolled(coordinate: Coordinate, gaps: list[sp.Expr]) -> bool:
     """Whether the gaps hold a coordinate, and each only linearly: a rolling body's angle, in its
     gap as r theta beside the arc along the surface (not a swinging rod's, inside a cosine).
 
-    >>> from derive.mechanics.kinematics import Coordinate
+    >>> from derive.model.kinematics import Coordinate
     >>> r, x, th = sp.symbols("r x theta")
     >>> angle = Coordinate("ball", "theta", th, sp.Symbol("w"), sp.Symbol("a"))
     >>> _rolled(angle, [r * th + sp.atan2(x, r)]), _rolled(angle, [x - r * sp.cos(th)])
@@ -391,37 +281,6 @@ def _clear_of_surfaces(gaps: list[tuple[sp.Expr, str]], path: Path, end: sp.Expr
         result += [(landed, meaning)] if landed != 0 else []
     _positive_at_the_middle(result, decide, ": narrow the ranges to where the flight clears them")
     return tuple(result)
-
-
-def _constant_along(path: Path, end: sp.Expr, decide):
-    """The rewriting of a route's equations at the path's general point (Path.general) that puts
-    each coefficient (of an unknown, or the free term) that does not change along the line at its
-    value at the start. On a line a cord's runs keep their directions, but their formulas (roots
-    of the distances between the centers) do not say so, and the linear solve in them gave up
-    after 60 s for an Atwood machine. A coefficient is constant where, at the middle of the
-    parameter ranges, it has its start's value (to 25 digits) at three points between the start and
-    the state, each moving at the rate energy gives: an analytic function of s that is not
-    constant meets a value at isolated points only."""
-    general, where, rate = path.general
-    s0 = path.start[path.s]
-    probes = [{where: s0 + sp.Rational(k, 4) * (end - s0), rate: path.rate(s0 + sp.Rational(k, 4) * (end - s0))}
-              for k in (1, 2, 3)]
-
-    def constant(entry: sp.Expr) -> sp.Expr:
-        if not entry.has(where):
-            return entry
-        start = entry.xreplace({where: s0})
-        for probe in probes:
-            here = start.xreplace({rate: probe[rate]})  # the difference at 30 digits, before any float
-            if abs(decide(entry.xreplace(probe) - here)) > 1e-25 * (1 + abs(decide(here))):
-                return entry
-        return tidy(start)
-
-    def frozen(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> list[sp.Eq]:
-        matrix, rhs = sp.linear_eq_to_matrix([e.lhs - e.rhs for e in equations], unknowns)
-        return [sp.Eq(sum((constant(matrix[i, j]) * u for j, u in enumerate(unknowns)), sp.Integer(0)),
-                      constant(rhs[i])) for i in range(len(equations))]
-    return frozen
 
 
 def _on_line(scene: Scene, coords: Coordinates, path: Path, end: sp.Expr, ratios: dict, derivation: Derivation,

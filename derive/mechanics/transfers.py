@@ -7,9 +7,9 @@ its forces the same unknowns (N, f), so that asks read them in the states after 
 the arc along the new surface plus R theta counts from where it passes (`slipped`), so that its
 rolling gap is zero there. The body must touch the new surface where it is (`gap`: zero).
 
-derive.state_answers solves the change as an impact whose joint is the new contact, by both routes
+derive.solution.state_answers solves the change as an impact whose joint is the new contact, by both routes
 of derive.mechanics.impacts (the generalized momenta jump by the joints' generalized impulses, and
-each body's impulse and momentum), compared by derive.crosschecks. Where the two paths are tangent
+each body's impulse and momentum), compared by derive.solution.crosschecks. Where the two paths are tangent
 at the junction and the body's contact point is at rest on the new surface as it was on the old
 (rolling: the spin is continuous), the velocities already meet the new contact's constraints: every
 impulse is zero, and the velocities, and so the kinetic energy, are what they were. Where they meet
@@ -20,10 +20,10 @@ tangent junction. So a kink, or a grip that would need a friction impulse, is re
 names the impulse) rather than taken as one impact model's answer.
 
 >>> import sympy as sp
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.kinematics import Coordinates
 >>> from derive.parts.contact import Contact
 >>> from derive.parts.surfaces import Circle, Plane
->>> from derive.scene import Body, Scene
+>>> from derive.model.scene import Body, Scene
 >>> m, R = sp.symbols("m R", positive=True)
 >>> scene = Scene({"block": Body("block", "point", m, {}, at=(-R, R))}, (Contact("block_contact", "block", "ramp",
 ...               False),), surfaces={"ramp": Circle("ramp", R, (0, R)), "floor": Plane("floor", 0)})
@@ -40,9 +40,9 @@ import dataclasses
 
 import sympy as sp
 
-from derive.mechanics.tidying import tidy
+from derive.core.tidying import tidy
 from derive.parts.contact import Contact
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 def onto(contact: Contact, surface: str, coords, values: dict) -> Contact:

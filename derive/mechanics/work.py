@@ -10,10 +10,10 @@ spring) it is its value at the start, and the work is mu_k N times the distance 
 it so, then checks it (`check_kept`) at points from the start to the state, with the routes'
 equations solved numerically there at the rates energy gives, and refuses the state where it
 changes. The other route, Newton–Euler's motion integrated from the start, checks every such
-state at each solve (derive.crosschecks).
+state at each solve (derive.solution.crosschecks).
 
->>> from derive.answers import Solution
->>> from derive.problem import load
+>>> from derive.solution.answers import Solution
+>>> from derive.language.problem import load
 >>> stopped = Solution(load("tests/textbook/states/puck_slides_to_stop.yaml")).states["stopped"]
 >>> stopped.path.kept, stopped.path.kinetic
 (((N^puck, g*m),), m*(-2*g*mu*x_puck + v0**2)/2)
@@ -24,13 +24,14 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics.derivation import POTENTIAL, Derivation
-from derive.mechanics.kinematics import Coordinate, Coordinates
+from derive.model.kinematics import Coordinate, Coordinates
 from derive.mechanics.lagrange import nonconservative_power
 from derive.mechanics.state_errors import StateLimit
-from derive.mechanics.tidying import tidy
+from derive.core.tidying import tidy
 from derive.parts import listed, titled
-from derive.prose import Sentence, capital
-from derive.scene import TIME, Scene
+from derive.text.prose import Sentence, capital
+from derive.core.expr import TIME
+from derive.model.scene import Scene
 
 #: Where a contact force taken at its start value is checked to have it: fractions of the way from
 #: the start to the state (not the state itself: where the motion stops there its rate, the root of
@@ -101,7 +102,7 @@ def work_said(scene: Scene, coords: Coordinates, s: sp.Symbol, kept: tuple = ())
 
     >>> from derive.parts.gravity import Gravity
     >>> from derive.parts.pin import Pin
-    >>> from derive.scene import Body
+    >>> from derive.model.scene import Body
     >>> m, L, g = sp.symbols("m L g", positive=True)
     >>> rod = Body("rod", "rod", m, {"length": L}, m * L**2 / 12, at=(L / 2, 0), angle=0)
     >>> scene = Scene({"rod": rod}, (Pin("hinge", "rod", (-L / 2, 0)),), Gravity(g))

@@ -12,7 +12,7 @@ the contributions it makes to each route. The two routes never share a formula o
   unknowns in them) and `conditions` (velocity expressions the part holds at zero, from
   rigid-body kinematics v = v_cm + omega z x r), one per unknown.
 
-Each part also says in words what it contributes to each route (`sentences`, derive.prose): the
+Each part also says in words what it contributes to each route (`sentences`, derive.text.prose): the
 Lagrange route opens its energies with them, Newton–Euler each body's balance with those about
 that body and its constraints with the rest ("The axle pushes on the disk with its reaction ...
 at its center of mass, so it exerts no torque about it.").
@@ -23,7 +23,7 @@ components follow from it), and `signs` the physical signs its forces must keep 
 >= 0, a normal force >= 0), checked over the parameter ranges.
 
 Adding a part: write its module here with a dataclass deriving from `Part`, override what it
-contributes, and register its problem-file key in `derive.scene_file` (docs/design.md, Parts).
+contributes, and register its problem-file key in `derive.language.scene_file` (docs/design.md, Parts).
 
 >>> import sympy as sp
 >>> Part().unknowns(), Part().potential(None)
@@ -38,7 +38,7 @@ import re
 
 import sympy as sp
 
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)
@@ -157,8 +157,8 @@ def at_placement(expression: sp.Expr, coords) -> sp.Expr:
     zero; the velocities left free): a short one in compact form (sin^2 + cos^2 folded,
     cancelled, factored), a long one expanded.
 
-    >>> from derive.scene import Body, Scene
-    >>> from derive.mechanics.kinematics import Coordinates
+    >>> from derive.model.scene import Body, Scene
+    >>> from derive.model.kinematics import Coordinates
     >>> h, r = sp.symbols("h r", positive=True)
     >>> coords = Coordinates(Scene({"disk": Body("disk", "disk", h, {"radius": r})}))
     >>> theta = sp.Symbol("theta_disk", real=True)
@@ -202,8 +202,8 @@ def acting(load: AppliedForce | AppliedTorque, coords, signed: tuple = ()) -> tu
     factors and forces that keep their sign (`signed`: a tension, a normal force), less a minus
     sign, which is clockwise (an angle's cosine, of either sign to sympy, leaves it unsaid).
 
-    >>> from derive.scene import Body, Scene
-    >>> from derive.mechanics.kinematics import Coordinates
+    >>> from derive.model.scene import Body, Scene
+    >>> from derive.model.kinematics import Coordinates
     >>> R, T, M = sp.symbols("R T M", positive=True)
     >>> coords = Coordinates(Scene({"disk": Body("disk", "disk", M, {"radius": R})}))
     >>> pull = AppliedForce("disk", sp.Matrix([R, 0]), sp.Matrix([0, -T]), "tension")

@@ -8,8 +8,8 @@ theta_to - turn (the multiplier is the couple on the body). Newton–Euler: that
 body, its opposite on the other; their angular velocities are equal.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Scene
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
 >>> I = sp.Symbol("I")
 >>> scene = Scene({n: Body(n, "custom", sp.Symbol("M"), {}, I) for n in ("top", "bottom")})
 >>> Clutch("plates", "top", "bottom").gaps(Coordinates(scene))
@@ -23,7 +23,7 @@ import sympy as sp
 
 from derive.parts import AppliedTorque, Part
 from derive.parts.slipping_clutch import SlippingClutch
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)

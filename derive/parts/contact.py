@@ -10,7 +10,7 @@ plus R theta (multiplier: the friction along the surface); kinetic friction is p
 P = mu_k N s (t . v_contact), with s the direction it acts. Newton–Euler: the forces at the point
 of contact; it does not move into the surface and, rolling, not along it either.
 
-Which regime a body is in, when the file gives mu_s (and mu_k), is decided by derive.answers:
+Which regime a body is in, when the file gives mu_s (and mu_k), is decided by derive.solution.answers:
 rolling while the friction it needs is at most mu_s N, kinetic sliding beyond.
 
 >>> import sympy as sp
@@ -26,8 +26,8 @@ import sympy as sp
 
 from derive.parts import AppliedForce, Part, Sign, acting, at_placement
 from derive.parts.surfaces import carried
-from derive.prose import Sentence
-from derive.spelling import no_such
+from derive.text.prose import Sentence
+from derive.core.spelling import no_such
 
 
 @dataclass(frozen=True)

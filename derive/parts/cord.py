@@ -33,8 +33,8 @@ the body's material point at the tangent point (a gripping circle: the cord move
 >>> cord = Cord("string", (reel, Attachment("point", "block")))
 >>> [s.tension_name for s in cord.segments()]
 ['tension']
->>> from derive.scene import Body, Scene
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
 >>> scene = Scene({"disk": Body("disk", "disk", m, {"radius": R}), "block": Body("block", "point", m, {})})
 >>> cord.sentences("lagrange", Coordinates(scene))[1].latex()
 "It does not slip on the disk, so the disk's rim moves with it: the arc of its turn, $R \\\\theta_{\\\\mathrm{disk}}$, counts in the length."
@@ -47,7 +47,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedForce, Part, Sign, acting, at_placement
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 ZERO = (sp.Integer(0), sp.Integer(0))
 
@@ -295,8 +295,8 @@ class Cord(Part):
         giving an expression's value at the middle of the parameter ranges) and the sides that would
         take the other sense, and so the other tangent from a neighbour.
 
-        >>> from derive.mechanics.kinematics import Coordinates
-        >>> from derive.scene import Body, Scene
+        >>> from derive.model.kinematics import Coordinates
+        >>> from derive.model.scene import Body, Scene
         >>> R = sp.Symbol("R", positive=True)
         >>> reel = Attachment("wound", "disk", radius=R, turn=-1, side="right", other_sides=("left",))
         >>> scene = Scene({"disk": Body("disk", "disk", 1, {"radius": R}), "block": Body("block", "point", 1, {},
@@ -336,7 +336,7 @@ class Cord(Part):
             for r in s.runs(coords):
                 if r.length is not None:
                     result.append((r.direction.xreplace(rest).dot(r.end_point - r.start_point),
-                                   f"the cord {self.name}'s run from {_describe(r.start)} to {_describe(r.end)} would "
+                                   f"the cord {self.name}'s run from {describe(r.start)} to {describe(r.end)} would "
                                    "shrink to nothing (its ends would meet)"))
         return result
 
@@ -388,9 +388,7 @@ def read(reader, places, name: str, path, field: str) -> Cord:
         attachments.append(Attachment(e["kind"], e["body"], e["offset"], e.get("radius", sp.Integer(0)),
                                       e.get("turn", 0), e.get("grips", False), e.get("force"), e.get("angle"),
                                       e.get("side_name", ""), e.get("other_sides", ())))
-    cord = Cord(name, tuple(attachments))
-    _check_runs(reader, places, cord, field)
-    return cord
+    return Cord(name, tuple(attachments))
 
 
 def _element(reader, places, value, field: str, end: bool) -> dict:
@@ -442,24 +440,6 @@ def _element(reader, places, value, field: str, end: bool) -> dict:
     return {"kind": "point" if end else "around", "body": body, "offset": offset}
 
 
-def _check_runs(reader, places, cord: Cord, field: str) -> None:
-    """Every run has a length in the reference configuration, and no circle overlaps the next."""
-    from derive.mechanics.kinematics import Coordinates
-    from derive.scene import Scene
-
-    coords = Coordinates(Scene(places.bodies))
-    rest = coords.at_rest_in_reference()
-    for i, (a, b) in enumerate(zip(cord.path, cord.path[1:])):
-        if a.kind == "pulled" or b.kind == "pulled":
-            continue
-        between = (b.center(coords) - a.center(coords)).xreplace(rest)
-        reach = places.sample(between.dot(between)) - places.sample((b.rho - a.rho) ** 2)
-        if reach <= 1e-12 * (1 + places.sample(between.dot(between))):
-            raise reader.fail(f"{field}[{i + 1}]", f"the cord's run from {_describe(a)} to {_describe(b)} has no "
-                                                   "length (the two are at one place, or their circles overlap): "
-                                                   "place the bodies with at")
-
-
 def _where(a: Attachment, first: bool) -> str:
     """How a sentence names a place on a cord's path: from the disk, around the pulley, ..."""
     end = "from" if first else "to"
@@ -486,8 +466,9 @@ def _on_circle(sample, offset: sp.Matrix) -> str:
 
 def _named(a: Attachment) -> str:
     """An attachment as a sentence names it: the disk, the ground point, the pull."""
-    return "the pull" if a.kind == "pulled" else f"the {a.body}" if a.body is not None else _describe(a)
+    return "the pull" if a.kind == "pulled" else f"the {a.body}" if a.body is not None else describe(a)
 
 
-def _describe(a: Attachment) -> str:
+def describe(a: Attachment) -> str:
+    """An attachment by its body's name, or "the ground point"."""
     return a.body if a.body is not None else "the ground point"

@@ -3,8 +3,8 @@
 Lagrange: V = sum m g y (heights from the reference configuration). Newton–Euler: the weight m g at each center of mass.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Scene
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
 >>> m, g = sp.symbols("m g", positive=True)
 >>> Gravity(g).potential(Coordinates(Scene({"ball": Body("ball", "point", m, {})})))
 g*m*y_ball
@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedForce, Part, acting
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)

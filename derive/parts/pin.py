@@ -5,8 +5,8 @@ reaction's component on the body. Newton–Euler: the reaction R at the body's p
 other body's point; their material points have the same velocity.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Scene
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
 >>> d = sp.Symbol("d", positive=True)
 >>> scene = Scene({"rod": Body("rod", "custom", sp.Symbol("M"), {}, sp.Symbol("I"))})
 >>> Pin("hinge", "rod", (0, d)).gaps(Coordinates(scene))
@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedForce, Part, acting
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)

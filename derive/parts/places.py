@@ -5,7 +5,7 @@ A point is written as
   a rod's `end` and `start`, a round body's `top`, `bottom`, `left`, `right` on its rim, a plate's
   or a box's sides), in the body's own frame (before the body is turned by its `angle`);
 - `{BODY: [x, y]}`: any point in the body's frame, from its center of mass (a composite's from
-  the origin its parts are placed from: `derive.composite`);
+  the origin its parts are placed from: `derive.model.composite`);
 - `[x, y]`, or the name of a point declared under `scene.points`: a fixed point of the ground.
 
 `Places` resolves these for the scene reader, and evaluates reference geometry at the middle of the
@@ -20,8 +20,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive import units
-from derive.spelling import did_you_mean
+from derive.core import units
+from derive.core.expr import TIME
+from derive.core.spelling import did_you_mean
 
 ZERO = sp.Integer(0)
 
@@ -92,8 +93,6 @@ class Places:
 
     def with_time(self) -> dict[str, sp.Symbol]:
         """The symbols an expression may use, with the time t (a force that varies in time)."""
-        from derive.scene import TIME
-
         if "t" in self.reader.symbols:
             return dict(self.reader.symbols)
         self.reader.symbol_units.setdefault(TIME, "s")

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedForce, AppliedTorque, Part, acting
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)

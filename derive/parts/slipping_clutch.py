@@ -9,8 +9,8 @@ Lagrange: the couple's power, -C |omega_body - omega_to| (its generalized forces
 -C sign(omega_body - omega_to) on the body, its opposite on the other.
 
 >>> import sympy as sp
->>> from derive.scene import Body, Scene
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
 >>> C, I = sp.symbols("C I", positive=True)
 >>> scene = Scene({n: Body(n, "custom", sp.Symbol("M"), {}, I) for n in ("top", "bottom")})
 >>> coords = Coordinates(scene)
@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedTorque, Part, at_placement
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)

@@ -4,8 +4,8 @@ Lagrange: V = k (l - l0)^2 / 2 with l the distance between the points. Newton–
 k (l - l0) at each end, pulling it toward the other (pushing when compressed).
 
 >>> import sympy as sp
->>> from derive.scene import Body, Scene
->>> from derive.mechanics.kinematics import Coordinates
+>>> from derive.model.scene import Body, Scene
+>>> from derive.model.kinematics import Coordinates
 >>> k, m = sp.symbols("k m", positive=True)
 >>> scene = Scene({"block": Body("block", "point", m, {}, at=(sp.Integer(1), sp.Integer(0)))})
 >>> Spring("s", ("block", None), ((0, 0), (0, 0)), k, sp.Integer(1)).potential(Coordinates(scene))
@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.parts import AppliedForce, Part, acting, at_placement
-from derive.prose import Sentence
+from derive.text.prose import Sentence
 
 
 @dataclass(frozen=True)

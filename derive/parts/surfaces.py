@@ -140,8 +140,8 @@ def carried(surface: Surface, coords) -> Surface:
     """The surface where its carrier has moved it (turned with it about the carrier's center of
     mass, and shifted with it); a fixed surface as it is.
 
-    >>> from derive.mechanics.kinematics import Coordinates
-    >>> from derive.scene import Body, Scene
+    >>> from derive.model.kinematics import Coordinates
+    >>> from derive.model.scene import Body, Scene
     >>> scene = Scene({"wedge": Body("wedge", "point", sp.Symbol("M"), {})})
     >>> carried(Plane("face", sp.pi / 6, carrier="wedge"), Coordinates(scene)).through
     (x_wedge, y_wedge)

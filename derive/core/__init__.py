@@ -1,0 +1,4 @@
+"""The ground every layer stands on: errors and their one-line messages (errors), names and their
+spelling (names, spelling), the limits on work (limits), the expression language of problem files
+(expr, ASCII names to sympy) and its units (units), exact expressions in their readable forms
+(tidying), and where the library's files are (library). Nothing here knows mechanics."""

@@ -1,0 +1,205 @@
+"""A body's entry under `scene.bodies`: its shape, mass (or density), sizes or given inertia, its
+place and angle, its joint to the ground, a prescribed path, its parts (a composite), and where
+it starts moving; what touches it and what acts on it are read with the scene (derive.language.scene_file).
+
+Every field goes through the `derive.language.reader.Reader`, so errors name the file and the field.
+
+>>> from derive.language.problem import load
+>>> load("string_wrapped_disk").scene.bodies["disk"].shape
+'disk'
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.model import composite, inertia
+from derive.language import solid_file
+from derive.core import units
+from derive.core.errors import InputError
+from derive.parts.pin import Pin
+from derive.parts.places import turned
+from derive.language.reader import Reader, describe
+from derive.core.expr import TIME
+from derive.model.scene import Path as MotionPath  # a prescribed motion, not a file path
+from derive.model.scene import SHAPE_SIZES, Body, Motion
+from derive.core.spelling import did_you_mean
+
+
+#: A body's keys that start it moving: its place (`at`) and its velocity (a rolling body's).
+MOTION_KEYS = ("at", "velocity")
+#: The units of a shape's coordinates in a density.
+COORDINATE_UNITS = {"x": "m", "y": "m", "z": "m", "r": "m", "phi": "rad", "theta": "rad"}
+#: A prescribed path's coordinates and their units, by kind.
+PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
+
+
+def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
+    """The body `name` and its joint to the ground (None without one)."""
+    field = f"scene.bodies.{name}"
+    all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
+    spec = reader.mapping(spec, field, required=("shape",),
+                          optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
+                                    "path", "bearings", "pivot_point", "rolls_on_edge", "free_rotation", "angle", "parts", *MOTION_KEYS, *all_sizes))
+    shape = spec["shape"]
+    if shape not in SHAPE_SIZES:
+        raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
+                                            + did_you_mean(shape, SHAPE_SIZES))
+    if (shape == "composite") != ("parts" in spec):
+        raise reader.fail(f"{field}.parts", "a composite body has parts: {NAME: {shape, mass, sizes, at}}; other "
+                                            "shapes have none")
+    if shape == "composite":
+        return _composite(reader, name, spec, field)
+    if "mass" in spec:
+        mass = reader.positive(spec["mass"], f"{field}.mass", "kg", "a mass")
+    elif "density" in spec:
+        mass = None  # from the density, once the sizes are known
+    else:
+        mass = reader.unspecified(f"m_{name}", "kg")
+    sizes = {}
+    for size in all_sizes:
+        if shape == "custom" and size == "radius" and size in spec:  # a custom body may roll
+            sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", "a radius")
+        elif size in SHAPE_SIZES[shape]:
+            if size in spec:
+                sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", f"a {size}")
+            else:
+                sizes[size] = reader.unspecified(f"{size}_{name}", "m")
+        elif size in spec:
+            raise reader.fail(f"{field}.{size}", f"a {shape} has no {size}" + did_you_mean(size, SHAPE_SIZES[shape]))
+    given = None
+    if shape == "custom" and "free_rotation" in spec:
+        given = solid_file.free_inertia(reader, spec, field)[2]  # the moment about z; the rest is read with the rotation
+    elif shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec):
+        given = solid_file.axial_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the key
+    elif shape == "custom":
+        if "inertia" not in spec:
+            raise reader.fail(f"{field}.inertia", "a custom body needs its moment of inertia about its center of mass")
+        given = reader.dimensioned(spec["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia")
+        if given.is_nonnegative is not True:
+            raise reader.fail(f"{field}.inertia", "a moment of inertia cannot be negative")
+    elif "inertia" in spec:
+        raise reader.fail(f"{field}.inertia", f"the inertia of a {shape} is derived, not given (use shape: custom)")
+    density = None
+    if "density" in spec:
+        density, mass = _density(reader, spec["density"], f"{field}.density", shape, sizes, mass)
+    path = None
+    if "path" in spec:
+        if shape != "point" or "joint" in spec or "on" in spec:
+            raise reader.fail(f"{field}.path", "a prescribed path is for a free point mass")
+        path = _path(reader, spec["path"], f"{field}.path", name)
+    at = (reader.vector(spec["at"], f"{field}.at", "m", "a position") if "at" in spec
+          else (sp.Integer(0), sp.Integer(0)))
+    angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
+    if angle != 0 and shape == "point":
+        raise reader.fail(f"{field}.angle", "a point mass has no orientation")
+    body = Body(name, shape, mass, sizes, given, path, density, at, angle)
+    joint = _joint(reader, body, spec.get("joint"), f"{field}.joint")
+    about = "center" if "pivot_point" in spec or "free_rotation" in spec else spec.get("inertia_about", "center")
+    if about not in ("center", "pivot") or about == "pivot" and (given is None or joint is None or joint.name != "pivot"):
+        raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body on a pivot joint")
+    if about == "pivot":
+        # Given about the pivot: the center-of-mass moment follows from the parallel-axis theorem.
+        distance = joint.offset[0] ** 2 + joint.offset[1] ** 2
+        body = Body(name, shape, mass, sizes, given - mass * distance, at=at, angle=angle)
+    return body, joint
+
+
+def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body, Pin | None]:
+    """A body made of parts (derive.model.composite): `at` places the origin of the parts' frame."""
+    for key in ("mass", "density", "inertia", "inertia_about", "path"):
+        if key in spec:
+            raise reader.fail(f"{field}.{key}", f"a composite's {key.replace('_', ' ')} comes from its parts"
+                              if key in ("mass", "density", "inertia", "inertia_about") else
+                              f"a composite body has no {key}")
+    for size in sorted({s for sizes in SHAPE_SIZES.values() for s in sizes} & set(spec)):
+        raise reader.fail(f"{field}.{size}", f"a composite has no {size} of its own: its parts have sizes")
+    made = composite.read(reader, spec["parts"], f"{field}.parts")
+    origin = (reader.vector(spec["at"], f"{field}.at", "m", "a position") if "at" in spec
+              else (sp.Integer(0), sp.Integer(0)))
+    angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
+    at = tuple(sp.Matrix(origin) + turned(angle, made.center))
+    radius = made.radius(reader)
+    body = Body(name, "composite", made.mass, {} if radius is None else {"radius": radius}, made.inertia,
+                at=at, angle=angle, composite=made)
+    return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
+
+
+def _density(reader: Reader, raw, field: str, shape: str, sizes: dict, mass: sp.Expr | None):
+    """A body's density in its shape's coordinates: with a mass, a profile scaled to that mass
+    (dimensionless); without, an absolute density whose integral gives the mass."""
+    if shape not in inertia.SHAPES or shape == "point":
+        raise reader.fail(field, f"a {shape} has no density to give")
+    coordinates = inertia.SHAPES[shape].density_symbols
+    clash = sorted(set(coordinates) & set(reader.symbols))
+    if clash:
+        raise reader.fail(field, f"the parameter {clash[0]} has the name of a {shape} coordinate: rename it")
+    density = reader.expression(raw, field, {**reader.symbols, **coordinates})
+    units_here = {**reader.symbol_units, **{s: COORDINATE_UNITS[n] for n, s in coordinates.items()}}
+    try:
+        found = units.expression_dimension(density, units_here)
+    except units.UnitError as error:
+        raise reader.fail(field, str(error)) from None
+    if mass is not None:
+        if found:
+            raise reader.fail(field, f"with a mass given, the density is a profile without dimension; it has "
+                                     f"{describe(found)}")
+        return density, mass
+    try:
+        derived, _ = inertia.body_moment(shape, inertia.PLANAR_AXIS[shape], None, sizes, density)
+        found = units.expression_dimension(derived, units_here)
+    except (units.UnitError, InputError) as error:
+        raise reader.fail(field, str(error)) from None
+    if not units.same_dimension(found, units.dimension(units.parse_unit("kg"))):
+        raise reader.fail(field, f"the density integrates to {describe(found)}, not to a mass")
+    return density, derived
+
+
+def motion(reader: Reader, name: str, spec: dict, bodies: dict[str, Body]) -> Motion | None:
+    """A body placed at a given point (`at`), or rolling at a given `velocity`."""
+    field = f"scene.bodies.{name}"
+    if not any(k in spec for k in MOTION_KEYS):
+        return None
+    velocity = reader.vector(spec["velocity"], f"{field}.velocity", "m/s", "a velocity") if "velocity" in spec \
+        else (sp.Integer(0), sp.Integer(0))
+    return Motion(bodies[name].at, velocity)  # the center of mass (a composite's `at` is its parts' origin)
+
+
+def _path(reader: Reader, raw, field: str, body: str) -> MotionPath:
+    """`{polar: {r: EXPR, theta: EXPR}}` or `{cartesian: {x: ..., y: ...}}` in the parameters and
+    the time t; `any` leaves a coordinate an arbitrary function of time."""
+    raw = reader.mapping(raw, field, optional=tuple(PATH_COORDINATES))
+    if len(raw) != 1:
+        raise reader.fail(field, "expected polar or cartesian")
+    (kind, spec), = raw.items()
+    names = PATH_COORDINATES[kind]
+    spec = reader.mapping(spec, f"{field}.{kind}", required=tuple(n for n, _ in names))
+    if "t" in reader.symbols:
+        raise reader.fail(f"{field}.{kind}", "t is the time in a path: rename the parameter t")
+    reader.symbol_units.setdefault(TIME, "s")
+    allowed = {**reader.symbols, "t": TIME}
+    functions = []
+    for name, unit in names:
+        if spec[name] == "any":
+            function = sp.Function(name)(TIME)
+            reader.symbol_units[function] = unit
+            functions.append(function)
+        else:
+            functions.append(reader.dimensioned(spec[name], f"{field}.{kind}.{name}", unit, f"a path's {name}", allowed))
+    return MotionPath(kind, tuple(functions))
+
+
+def _joint(reader: Reader, body: Body, spec, field: str) -> Pin | None:
+    """`joint: fixed_axle` or `joint: {pivot: {distance, side}}`: the body turns about a fixed point."""
+    if spec is None:
+        return None
+    if not body.rotates:
+        raise reader.fail(field, "a point mass has no joint")
+    if spec == "fixed_axle":
+        return Pin("axle", body.name, (0, 0))
+    spec = reader.mapping(spec, field, optional=("pivot",))
+    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",), optional=("side",))
+    distance = reader.positive(pivot["distance"], f"{field}.pivot.distance", "m", "a pivot distance")
+    side = pivot.get("side", "above")
+    if side not in ("above", "below"):
+        raise reader.fail(f"{field}.pivot.side", "above (the body hangs) or below (the body stands on it)")
+    return Pin("pivot", body.name, (0, distance if side == "above" else -distance))

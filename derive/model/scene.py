@@ -1,0 +1,513 @@
+"""The scene model: bodies, joints and constraints, loads — data only, no physics.
+
+A scene is planar: the xy plane with y up, angles counter-clockwise (+z) positive,
+as in the lecture notes. `derive.language.problem` builds a Scene from a problem file; the
+modules in `derive.mechanics` derive its motion.
+
+>>> import sympy as sp
+>>> m = sp.Symbol("m", positive=True)
+>>> Scene(bodies={"ball": Body("ball", "point", m, {})}).degrees_of_freedom()
+2
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from derive.model import inertia
+from derive.model.composite import CompositeParts
+from derive.parts import Part
+from derive.parts.contact import Contact
+from derive.parts.gravity import Gravity
+from derive.parts.surfaces import Circle, Plane, Surface
+from derive.model.solid_scene import (BEARING_QUANTITIES, FREE_ROTATION_QUANTITIES, IMPULSE_TURN_QUANTITIES, PIVOT_POINT_QUANTITIES, ROLLING_COIN_QUANTITIES, Bearings, FreeRotation, PivotPoint, RollsOnEdge)
+from derive.core.spelling import did_you_mean
+
+#: Body shapes a scene may use, with the size names each needs (from the inertia module's shapes).
+SHAPE_SIZES: dict[str, tuple[str, ...]] = {
+    "point": (),
+    "custom": (),
+    "composite": (),
+    **{name: tuple(shape.sizes) for name, shape in inertia.SHAPES.items()},
+}
+
+
+#: What a point mass on a prescribed path can be asked.
+PATH_QUANTITIES = ("velocity.x", "velocity.y", "speed", "acceleration.x", "acceleration.y", "acceleration.radial",
+                   "acceleration.tangential", "angular_momentum", "areal_velocity")
+
+
+@dataclass(frozen=True)
+class Path:
+    """A body's prescribed motion: ("polar", (r(t), theta(t))) or ("cartesian", (x(t), y(t)))."""
+
+    kind: str
+    functions: tuple[sp.Expr, sp.Expr]
+
+    @property
+    def position(self) -> sp.Matrix:
+        if self.kind == "polar":
+            r, theta = self.functions
+            return sp.Matrix([r * sp.cos(theta), r * sp.sin(theta)])
+        return sp.Matrix(self.functions)
+
+    @property
+    def radius_and_angle(self) -> tuple[sp.Expr, sp.Expr]:
+        if self.kind == "polar":
+            return self.functions
+        x, y = self.functions
+        return sp.sqrt(x**2 + y**2), sp.atan2(y, x)
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body (or a point mass) in the plane.
+
+    `inertia` is the moment of inertia about the axis through the center of mass normal to
+    the plane: given for a custom body, composed from the parts of a composite, otherwise
+    integrated by `derive.model.inertia`.
+    """
+
+    name: str
+    shape: str
+    mass: sp.Expr
+    sizes: dict[str, sp.Expr]
+    given_inertia: sp.Expr | None = None
+    path: Path | None = None
+    density: sp.Expr | None = None
+    at: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))  # the center of mass, reference configuration
+    angle: sp.Expr = sp.Integer(0)  # the body frame's angle from the world's axes there
+    composite: CompositeParts | None = None  # a body made of parts: derive.model.composite
+
+    @property
+    def rotates(self) -> bool:
+        """A point mass has no orientation; every other body has an angle."""
+        return self.shape != "point"
+
+    def placed(self, kind: str) -> sp.Expr:
+        """Where the file places the coordinate `kind` (x, y or theta): every coordinate of the
+        engine is a displacement from it."""
+        return self.angle if kind == "theta" else self.at[0 if kind == "x" else 1]
+
+    @property
+    def inertia(self) -> sp.Expr:
+        if self.given_inertia is not None:
+            return self.given_inertia
+        if self.density is not None:
+            return inertia.body_moment(self.shape, inertia.PLANAR_AXIS[self.shape], self.mass, self.sizes,
+                                       self.density)[1]
+        return inertia.central_moment(self.shape, self.mass, self.sizes)
+
+
+@dataclass(frozen=True)
+class Orbit:
+    """A small mass in the inverse-square field of a mass M at the origin (per unit mass):
+    given its angular momentum l, or the ellipse's semi-major axis a and eccentricity e."""
+
+    GM: sp.Expr
+    angular_momentum: sp.Expr | None = None
+    semi_major_axis: sp.Expr | None = None
+    eccentricity: sp.Expr | None = None
+
+
+#: What an orbit can be asked, and what each needs of the orbit's description.
+ORBIT_QUANTITIES = {
+    "circular_radius": "angular_momentum", "effective_potential_minimum": "angular_momentum",
+    "energy": "semi_major_axis", "angular_momentum": "semi_major_axis", "period": "semi_major_axis",
+    "periapsis": "semi_major_axis", "apoapsis": "semi_major_axis",
+}
+
+
+@dataclass(frozen=True)
+class Motion:
+    """A body's given placement and motion: center position, velocity (a body rolling at a given
+    speed) and spin (rad/s, +z; the figures take a state's rates so)."""
+
+    position: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    velocity: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    spin: sp.Expr = sp.Integer(0)
+
+
+@dataclass(frozen=True)
+class StandingWave:
+    """A particle whose de Broglie wavelength fits `wavelengths` times around a circle (§8)."""
+
+    radius: sp.Expr
+    planck: sp.Expr
+    wavelengths: sp.Expr
+
+
+#: Scene-level systems and what each can be asked: (scene attribute, quantities).
+SYSTEMS = {
+    "standing_wave": ("wave", ("momentum", "angular_momentum")),
+    "internal_forces": ("internal_forces", ("torque",)),
+}
+def constraint_bodies(part: Part) -> tuple[str, ...]:
+    """The bodies a part couples."""
+    return part.bodies()
+
+
+@dataclass(frozen=True)
+class Event:
+    """What happens to the scene in an instant, or by its own forces, between two states: an
+    impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
+    `restitution` and, rough, its `friction` (mu for the grip, mu for the slide) or `grips`
+    always; a bounce's `to` may be a fixed surface), a move (`kind` move: the point mass `body` carried to `place` on the body
+    `to`, in its frame, where the pin `joint` holds it), a turn (`kind` turn: the body `body`
+    turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie),
+    or a transfer (`kind` transfer: the contact `joint` of the body `body` passes onto the surface
+    `to`, a ball rolling from a ramp into a loop).
+
+    >>> Event("stick", "bullet", "rod").restitution is None
+    True
+    """
+
+    kind: str
+    body: str
+    to: str
+    restitution: sp.Expr | None = None
+    friction: tuple[sp.Expr, sp.Expr] | None = None
+    grips: bool = False
+    place: tuple[sp.Expr, sp.Expr] | None = None
+    joint: str | None = None
+    angle: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class State:
+    """A named state of a scene (`states:`), where asks may be read (`in: STATE`).
+
+    Either the placement moving at given `rates` ((body, coordinate kind, value) with kind x, y
+    or theta), or a state the motion from the state `start` (None: the placement at rest) gets
+    to first: where one body coordinate reaches a value (`when`: an absolute x, y of the center
+    or angle, as `at` and `angle` are given; with `rate`, where its rate does), or (`until`) where the motion stops, ("stops",
+    None), or a part's force falls to zero: ("leaves", CONTACT) or ("slack", CORD); or the state
+    just after an `event` in the state `start`: an impact (a stick, the body held where it is; a
+    lock, the two turning together from then on, the scene keeping the joint the impact made; a
+    bounce off a body), a move of a point mass on the body that holds it, a turn of one body
+    relative to another, or a body's contact passing onto another surface.
+
+    >>> State("vertical", when=("rod", "theta", -sp.pi / 2)).start is None
+    True
+    """
+
+    name: str
+    rates: tuple[tuple[str, str, sp.Expr], ...] = ()
+    when: tuple[str, str, sp.Expr] | None = None
+    start: str | None = None
+    until: tuple[str, str | None] | None = None
+    event: Event | None = None
+    rate: bool = False  # `when` gives a rate (velocity.x|y, angular_velocity), not a position
+
+
+@dataclass(frozen=True)
+class Scene:
+    """Bodies and parts: the constraints (parts with unknown forces: pins, sliders, welds, cords,
+    contacts), gravity and the other loads (forces, torques, springs, dampers, pulled cords);
+    what `derive.mechanics` derives the motion of."""
+
+    bodies: dict[str, Body]
+    constraints: tuple[Part, ...] = ()
+    gravity: Gravity | None = None
+    surfaces: dict[str, Surface] = field(default_factory=dict)
+    loads: tuple[Part, ...] = ()
+    orbit: Orbit | None = None
+    motions: dict[str, Motion] = field(default_factory=dict)
+    wave: StandingWave | None = None
+    internal_forces: int | None = None
+    bearings: dict[str, Bearings] = field(default_factory=dict)
+    pivot_points: dict[str, PivotPoint] = field(default_factory=dict)
+    rolls_on_edge: dict[str, RollsOnEdge] = field(default_factory=dict)
+    free_rotations: dict[str, FreeRotation] = field(default_factory=dict)
+    states: dict[str, State] = field(default_factory=dict)
+    placed: tuple[sp.Expr, ...] = ()  # positive where the file places the bodies (scene_file._placed)
+
+    @property
+    def parts(self) -> tuple[Part, ...]:
+        """Every part that acts in the dynamics: the constraints, gravity, the other loads."""
+        return self.constraints + ((self.gravity,) if self.gravity is not None else ()) + self.loads
+
+    def constraint(self, name: str) -> Part:
+        for c in self.constraints:
+            if c.name == name:
+                return c
+        raise KeyError(name)
+
+    def degrees_of_freedom(self) -> int:
+        """Coordinates (x, y and, for rotating bodies, an angle) less the scalar constraints."""
+        coordinates = sum(3 if b.rotates else 2 for b in self.bodies.values())
+        return coordinates - sum(len(c.unknowns()) for c in self.constraints)
+
+    def component(self, body: str) -> "Scene":
+        """The sub-scene of the bodies coupled to `body` through constraints."""
+        members, grew = {body}, True
+        while grew:
+            grew = False
+            for c in self.constraints:
+                coupled = set(c.bodies())
+                if coupled & members and not coupled <= members:
+                    members |= coupled
+                    grew = True
+        constraints = tuple(c for c in self.constraints if set(c.bodies()) <= members)
+        bodies = {name: b for name, b in self.bodies.items() if name in members}
+        loads = tuple(p for p in self.loads if set(p.bodies()) <= members)
+        return Scene(bodies, constraints, self.gravity, self.surfaces, loads)
+
+    def contact_of(self, body: str) -> Contact | None:
+        """The contact of a body resting on a surface by its rim or as a point mass (`body` names the
+        body), or the named contact of a body touching at a material point (`body` names the contact)."""
+        return next((c for c in self.constraints if isinstance(c, Contact)
+                     and (c.body == body and c.point is None or c.point is not None and c.name == body)), None)
+
+
+#: Quantities that come out of the equations of motion (both routes).
+DYNAMIC_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "small_oscillation", "oscillation",
+                 "equilibrium", "velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
+                 "kinetic_energy_change", "center_of_mass_velocity", "impulse"}
+#: Read in a state (`in: STATE`): the rates only there, the others at the placement at rest without it.
+STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velocity", "angular_velocity", "speed",
+               "position", "angle", "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass_velocity",
+               "impulse"}
+#: What a state gives: read only with `in: STATE` (positions and times only in a state reached).
+RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
+              "kinetic_energy_change", "center_of_mass_velocity", "impulse"}
+#: Answered by a small system of derive.mechanics, with a second route of its own.
+SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rolling")
+#: Quantities of the bodies and their arrangement, with no motion.
+STATIC_KINDS = {"inertia", "mass", "position_cm", "system"}
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A quantity a problem may ask of its scene, parsed from a dotted path.
+
+    kinds: "inertia" (target a body, detail an axis), "acceleration" (a body; x or y),
+    "angular_acceleration" (a body), "force" (a constraint; tension, reaction.x, reaction.y),
+    "contact" (a body on a surface; one of CONTACT_QUANTITIES), "path" (a point mass on a
+    prescribed path; one of PATH_QUANTITIES), "orbit" (one of ORBIT_QUANTITIES), "mass" (a body), "position_cm" (a body's position from the system's center of mass; x or y),
+    "system" (inertia about the center of mass, reduced_mass of two bodies), "pivot_point" (a body on a
+    fixed point; PIVOT_POINT_QUANTITIES), "rolls_on_edge" (a coin rolling on its rim; ROLLING_COIN_QUANTITIES),
+    "free_rotation" (a body turning with no torque; FREE_ROTATION_QUANTITIES), "angular_impulse" (a body on a
+    fixed point at its center of mass under a couple for a time; IMPULSE_TURN_QUANTITIES),
+    "oscillation" (period at the ask's amplitude), the SYSTEMS
+    ("standing_wave", "internal_forces"), "bearings" (a body turning in bearings; BEARING_QUANTITIES),
+    "small_oscillation" (omega, period, growth_rate; modes.N.omega|period), "equilibrium" (a body's angle, x or y where
+    the scene rests: derive.mechanics.equilibrium); read in a state (RATE_KINDS) also
+    "kinetic_energy_change" (every body's, in the state minus in the state it comes from),
+    "center_of_mass_velocity" (of every body; x or y) and, just after an impact, "impulse" (a
+    body's, or a joint's on the body it holds; x or y: derive.mechanics.impulses).
+    """
+
+    kind: str
+    target: str | None
+    detail: str | None
+
+
+
+#: The heads of ask paths that name no body or part: a body, joint, cord or load may not be named so.
+RESERVED_NAMES = ("system", "orbit", "oscillation", "small_oscillation", "ground",
+                  "time", "kinetic_energy", "kinetic_energy_change", "center_of_mass")
+
+#: What a body on a surface can be asked, besides what every body can.
+CONTACT_QUANTITIES = ("acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient",
+                      "speed_at_bottom", "time_to_bottom", "min_release_height")
+#: Of a body rolling without slipping at its given velocity (derive.mechanics.rolling).
+ROLLING_QUANTITIES = ("angular_velocity", "distance_per_turn", "kinetic_energy", "translational_energy",
+                      "rotational_energy", "rotational_fraction")
+#: A body's impulse, or a joint's on the body it holds, just after an impact.
+IMPULSES = ("impulse.x", "impulse.y")
+INCLINE_ONLY = ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom")
+
+def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity:
+    """Parse an answer path such as ``block.acceleration.y`` against a scene.
+
+    Raises ValueError with a one-line reason when the path names nothing in the scene.
+
+    >>> import sympy as sp
+    >>> scene = Scene({"ball": Body("ball", "point", sp.Symbol("m"), {})})
+    >>> parse_quantity(scene, "ball.acceleration.y")
+    Quantity(kind='acceleration', target='ball', detail='y')
+    """
+    head, _, rest = path.partition(".")
+    if head in SYSTEMS:
+        attribute, allowed = SYSTEMS[head]
+        if getattr(scene, attribute) is None or rest not in allowed:
+            raise ValueError(f"a scene's {head} has {', '.join(allowed)}")
+        return Quantity(head, None, rest)
+    if head in scene.bearings and rest not in ("mass", "inertia"):
+        if rest not in BEARING_QUANTITIES:
+            raise ValueError(f"a body in bearings has {', '.join(BEARING_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, BEARING_QUANTITIES))
+        held = scene.bearings[head]
+        if rest.startswith(("bearings.force", "bearings.A.", "bearings.B.")) and held.apart is None:
+            raise ValueError(f"{head}.{rest} needs the distance between the bearings: bearings: {{apart: d}}")
+        if rest == "bearings.force" and (scene.gravity is not None or any(c != 0 for c in held.through)):
+            raise ValueError(f"{head}.bearings.force is each bearing's force of a couple: where the weight or an "
+                             "offset shaft puts a net force on them, ask bearings.A.force and bearings.B.force")
+        if rest.startswith("bearings.") and (scene.constraints or scene.loads):
+            raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body under its weight alone: a "
+                             "scene with other loads or joints is not modelled")
+        return Quantity("bearings", head, rest)
+    if head in scene.pivot_points and scene.pivot_points[head].centered and rest not in ("mass", "inertia"):
+        if rest not in IMPULSE_TURN_QUANTITIES:
+            raise ValueError(f"a body on a fixed point at its center of mass (no weight's torque about it) has "
+                             f"{', '.join(IMPULSE_TURN_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, IMPULSE_TURN_QUANTITIES))
+        return Quantity("angular_impulse", head, rest)
+    if head in scene.pivot_points and rest not in ("mass", "inertia"):
+        if rest not in PIVOT_POINT_QUANTITIES:
+            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, PIVOT_POINT_QUANTITIES))
+        return Quantity("pivot_point", head, rest)
+    if head in scene.rolls_on_edge and rest not in ("mass", "inertia"):
+        if rest not in ROLLING_COIN_QUANTITIES:
+            raise ValueError(f"a body rolling on its edge has {', '.join(ROLLING_COIN_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, ROLLING_COIN_QUANTITIES))
+        rolling = scene.rolls_on_edge[head]
+        if rest.startswith("steady.") and (rolling.tilt is None or rolling.circle is None):
+            raise ValueError(f"{head}.{rest} is read in the steady motion on a circle: give its lean and the contact "
+                             "point's circle, rolls_on_edge: {tilt: theta, circle: R}")
+        return Quantity("rolls_on_edge", head, rest)
+    if head in scene.free_rotations and rest not in ("mass", "inertia"):
+        stable = {"intermediate": "unstable (the tennis-racket theorem): ask rotation.intermediate.growth_rate",
+                  "least": "stable: ask rotation.least.wobble", "greatest": "stable: ask rotation.greatest.wobble"}
+        rank = rest.split(".")[1] if rest.count(".") == 2 and rest.startswith("rotation.") else None
+        if rest not in FREE_ROTATION_QUANTITIES and rank in stable and rest.endswith((".wobble", ".growth_rate")):
+            raise ValueError(f"a steady rotation about the axis of {rank} moment is {stable[rank]}")
+        if rest not in FREE_ROTATION_QUANTITIES:
+            raise ValueError(f"a body in free rotation has {', '.join(FREE_ROTATION_QUANTITIES)}, mass and inertia"
+                             + did_you_mean(rest, FREE_ROTATION_QUANTITIES))
+        return Quantity("free_rotation", head, rest)
+    if head == "system":
+        if rest not in ("inertia", "reduced_mass"):
+            raise ValueError("the system has inertia (about its center of mass) and reduced_mass")
+        if rest == "reduced_mass" and len(scene.bodies) != 2:
+            raise ValueError("a reduced mass is for a system of two bodies")
+        return Quantity("system", None, rest)
+    if head in scene.bodies and rest in ("mass", "position_cm.x", "position_cm.y"):
+        return Quantity(rest.partition(".")[0], head, rest.partition(".")[2] or None)
+    if head == "orbit":
+        if scene.orbit is None:
+            raise ValueError("the scene has no orbit")
+        if rest not in ORBIT_QUANTITIES:
+            raise ValueError(f"an orbit has {', '.join(ORBIT_QUANTITIES)}; not {rest!r}")
+        if getattr(scene.orbit, ORBIT_QUANTITIES[rest]) is None:
+            raise ValueError(f"orbit.{rest} needs the orbit's {ORBIT_QUANTITIES[rest].replace('_', ' ')}")
+        return Quantity("orbit", None, rest)
+    if head == "time":
+        if rest or not scene.states:
+            raise ValueError("time is asked as of: time, in: STATE (the time the motion takes from the state's "
+                             "from: to it)" if scene.states else "time needs a state: add scene.states")
+        return Quantity("time", None, None)
+    if head == "kinetic_energy":
+        if rest or not scene.states:
+            raise ValueError("kinetic_energy is asked as of: kinetic_energy, in: STATE (of every body, in that state)"
+                             if scene.states else "kinetic_energy needs a state: add scene.states")
+        return Quantity("kinetic_energy", None, None)
+    if head == "kinetic_energy_change":
+        if rest or not scene.states:
+            raise ValueError("kinetic_energy_change is asked as of: kinetic_energy_change, in: STATE (of every body, "
+                             "in that state minus in the state it comes from)" if scene.states else
+                             "kinetic_energy_change needs a state: add scene.states")
+        return Quantity("kinetic_energy_change", None, None)
+    if head == "center_of_mass":
+        if rest not in ("velocity.x", "velocity.y") or not scene.states:
+            raise ValueError("the center of mass of every body has velocity.x and velocity.y, asked in: STATE"
+                             if scene.states else "center_of_mass.velocity needs a state: add scene.states")
+        return Quantity("center_of_mass_velocity", None, rest[-1])
+    if head == "oscillation":
+        if rest != "period":
+            raise ValueError("an oscillation at a given amplitude has period (give amplitude:)")
+        return Quantity("oscillation", None, "period")
+    if head == "small_oscillation":
+        ratio = re.fullmatch(r"modes\.[1-9][0-9]?\.ratio\.(\w+)\.(x|y|angle)\.to\.(\w+)\.(x|y|angle)", rest, re.ASCII)
+        if rest not in ("omega", "period", "growth_rate") and not ratio \
+                and not re.fullmatch(r"modes\.[1-9][0-9]?\.(omega|period)", rest):
+            raise ValueError("small_oscillation has omega, period, growth_rate (about an unstable equilibrium) and, "
+                             "with several degrees of freedom, modes.N.omega and modes.N.period (N = 1, 2, ...: the "
+                             "normal modes, lowest frequency first) and modes.N.ratio.BODY.x.to.BODY.x (the ratio of "
+                             "two amplitudes in the mode; x, y or angle)")
+        for body, kind in (ratio.group(1, 2), ratio.group(3, 4)) if ratio else ():
+            if body not in scene.bodies or kind == "angle" and not scene.bodies[body].rotates:
+                raise ValueError(f"{body}.{kind} is not a coordinate of the scene in a mode's ratio"
+                                 + did_you_mean(body, list(scene.bodies)))
+        return Quantity("small_oscillation", None, rest)
+    if head in scene.bodies:
+        body = scene.bodies[head]
+        if body.path is not None:
+            if rest not in PATH_QUANTITIES:
+                raise ValueError(f"a body on a path has {', '.join(PATH_QUANTITIES)}; not {rest!r}")
+            return Quantity("path", head, rest)
+        if rest == "inertia":
+            shape = inertia.SHAPES.get(body.shape)
+            axes = tuple(shape.axes) if shape else ()
+            if axis is None and body.shape != "point":
+                return Quantity("inertia", head, None)
+            if axis not in axes:
+                raise ValueError(f"axis of a {body.shape} is one of: {', '.join(axes) or 'none'}" + did_you_mean(axis, axes))
+            return Quantity("inertia", head, axis)
+        if rest in ("acceleration.x", "acceleration.y"):
+            return Quantity("acceleration", head, rest[-1])
+        if rest in ("velocity.x", "velocity.y"):
+            return Quantity("velocity", head, rest[-1])
+        if rest in IMPULSES:
+            return Quantity("impulse", head, rest[-1])
+        if rest == "speed" or rest in ("angular_velocity", "angle") and body.rotates:
+            return Quantity(rest, head, None)
+        if rest in ("position.x", "position.y"):
+            return Quantity("position", head, rest[-1])
+        if rest in ("equilibrium.x", "equilibrium.y") or rest == "equilibrium.angle" and body.rotates:
+            return Quantity("equilibrium", head, rest.partition(".")[2])
+        if rest == "angular_acceleration" and body.rotates:
+            return Quantity("angular_acceleration", head, None)
+        contact = scene.contact_of(head)
+        if rest.startswith("rolling."):
+            if rest[len("rolling."):] not in ROLLING_QUANTITIES:
+                raise ValueError(f"a rolling body has {', '.join('rolling.' + q for q in ROLLING_QUANTITIES)}")
+            if contact is None or not contact.rolling or head not in scene.motions or "radius" not in body.sizes:
+                raise ValueError(f"{head}.rolling needs a round body rolling on a surface (on:, contact: rolling) "
+                                 "with a velocity")
+            return Quantity("rolling", head, rest[len("rolling."):])
+        if contact and rest in CONTACT_QUANTITIES:
+            if rest in ("friction", "min_friction_coefficient") and not contact.rolling and not contact.has_friction:
+                raise ValueError(f"{head} slides without friction: it has no {rest}")
+            surface = scene.surfaces[contact.surface]
+            if rest in INCLINE_ONLY and not isinstance(surface, Plane):
+                raise ValueError(f"{rest} is for a body on an incline")
+            if rest in (*INCLINE_ONLY, "min_release_height") and surface.carrier is not None:
+                raise ValueError(f"{rest} is measured on a fixed surface; {contact.surface} moves with the "
+                                 f"{surface.carrier}: ask {head}.acceleration.x|y")
+            if rest == "min_release_height" and not (isinstance(surface, Circle) and surface.side == "inside"):
+                raise ValueError("min_release_height is for a body riding a loop")
+            if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
+                raise ValueError(f"{rest} needs the height of {contact.surface}")
+            return Quantity("contact", head, rest)
+        known = ("inertia, acceleration.x, acceleration.y, velocity.x, velocity.y, speed, position.x, position.y, "
+                 "equilibrium.x, equilibrium.y, impulse.x, impulse.y"
+                 + (", angular_acceleration, angular_velocity, angle, equilibrium.angle" if body.rotates else ""))
+        if contact:
+            known += ", " + ", ".join(CONTACT_QUANTITIES)
+        raise ValueError(f"a body has {known}; not {rest!r}" + did_you_mean(rest, known.split(", ")))
+    names = {c.name: c for c in scene.constraints}
+    if head in names:
+        part = names[head]
+        pushes = any(k.startswith("reaction") or k == "normal" for k in part.unknowns())  # a force at a point
+        if rest in IMPULSES:
+            if not pushes:
+                raise ValueError(f"{head} gives no force at a point, so no impulse of one: a body's impulse is asked "
+                                 "as BODY.impulse.x|y")
+            return Quantity("impulse", head, rest[-1])
+        allowed = tuple(part.unknowns())
+        if isinstance(part, Contact) and part.has_friction and "friction" not in allowed:
+            allowed += ("friction",)
+        if isinstance(part, Contact) and part.point is not None and "friction" in allowed:
+            allowed += ("min_friction_coefficient",)
+        if rest not in allowed:
+            offered = allowed + (IMPULSES if pushes else ())
+            raise ValueError(f"{head} has {', '.join(offered)}; not {rest!r}" + did_you_mean(rest, offered))
+        return Quantity("contact" if rest == "min_friction_coefficient" else "force", head, rest)
+    known = sorted(scene.bodies) + sorted(names) + ["small_oscillation"]
+    raise ValueError(f"{head!r} is neither a body nor a constraint of the scene (known: {', '.join(known)})"
+                     + did_you_mean(head, [*known, *SYSTEMS]))

@@ -1,0 +1,510 @@
+"""The independent checks of a Solution: every answer again by a second route.
+
+Lagrange against Newton–Euler (answers symbolically, every acceleration and force at random
+states the constraints allow), the work-energy theorem, energy against dynamics, conservation
+laws against impulses, both routes of orbits, the top, a couple's angular impulse and the small systems,
+integration against the tensor and the parallel-axis theorem, projections against
+sympy.physics.mechanics, and the dimensions of every answer. `CrossChecks` is a mixin of
+`derive.solution.answers.Solution`, whose derivations it reads; the 3D slices' checks are
+`derive.solution.solid_checks`'.
+
+>>> import sympy as sp
+>>> agree(sp.sin(sp.Symbol("x"))**2 + sp.cos(sp.Symbol("x"))**2, sp.Integer(1))
+'symbolic'
+"""
+from __future__ import annotations
+
+import functools
+import random
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.model import inertia
+from derive.core import limits, units
+from derive.numbers import numeric
+from derive.core.errors import EngineLimit
+from derive.numbers.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
+from derive.mechanics import impacts, integrated_motion, lagrange, many_bodies, orbits, paths, reaching
+from derive.mechanics.oscillation import NotAPendulum, exact_period
+from derive.mechanics.derivation import row_reduced
+from derive.language.problem import Ask, Problem
+from derive.model.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
+
+ROUTES = ("lagrange", "newton_euler")
+
+
+#: The parallel-axis check, as a worked solution reads it.
+PARALLEL_AXIS = "The parallel-axis theorem gives the same moment of inertia as direct integration."
+
+
+class CheckFailure(RuntimeError):
+    """Two routes of derivation disagree: a bug in the engine, never bad input."""
+
+
+@dataclass(frozen=True)
+class Check:
+    """One independent check: its `name` and `method`, the `detail` `derive check` and the JSON
+    give, and its `reading`, one sentence a student can read in a worked solution."""
+
+    name: str
+    passed: bool
+    method: str
+    detail: str
+    reading: str
+
+
+class CrossChecks:
+    """Checks of a Solution's answers by independent routes (mixed into Solution)."""
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem; the checks do not change
+    def checks(self) -> list[Check]:
+        """Every independent check that applies: routes, parallel axes, dimensions (within the
+        time limit of derive.core.limits)."""
+        with limits.time_limit(f"{self.problem.path}: checks"):
+            return self._checks()
+
+    def _checks(self) -> list[Check]:
+        result = [self._dimension_check()]
+        kinds = {a.quantity.kind for a in self.problem.asks.values()}
+        if kinds & DYNAMIC_KINDS:
+            result.append(self._routes_check())
+            result.append(self._work_energy_check())
+        if any(not state.rates for state in self.scene.states.values()):
+            result.append(self._states_check())
+        if "oscillation" in kinds:
+            result.append(self._period_check())
+        if "orbit" in kinds:
+            result.append(self._orbit_check())
+        if self.energy_balances:
+            result.append(self._energy_check())
+        if "system" in kinds:
+            result.append(self._system_check())
+        if "inertia" in kinds:
+            result.append(self._tensor_check())
+        if "path" in kinds:
+            result.append(self._path_check())
+        if "pivot_point" in kinds:
+            result.append(self._pivot_point_check())
+        if "rolls_on_edge" in kinds:
+            result.append(self._rolls_on_edge_check())
+        if "angular_impulse" in kinds:
+            result.append(self._angular_impulse_check())
+        if "bearings" in kinds:
+            result += self._bearings_checks()
+        if "free_rotation" in kinds:
+            result.append(self._free_rotation_check())
+        agreed: dict[str, list[str]] = {}
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind in SECOND_ROUTE_KINDS:
+                first, second, name = self._second_routes(ask.quantity)
+                if agree(first, second) is None:
+                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {first} one way, {second} the other")
+                agreed.setdefault(name, []).append(ask.name)
+        result += [Check(name, True, "symbolic", f"{', '.join(asks)} agree",
+                         f"A second, independent derivation gives the same {', '.join(asks)}.")
+                   for name, asks in agreed.items()]
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
+                check = self._parallel_axis_check(ask)
+                if check:
+                    result.append(check)
+        return result
+
+    def _dimension_check(self) -> Check:
+        found = {}
+        for name, ask in self.problem.asks.items():
+            if self.expressions[name] == 0:  # zero has every dimension
+                found[name] = ask.unit
+                continue
+            try:
+                dimension = units.expression_dimension(self.expressions[name], self.problem.symbol_units)
+            except units.UnitError as error:  # of derive's own expression, not of the file's
+                raise EngineLimit(f"{self.problem.path}: ask.{name}", f"find the dimension of its derived "
+                                  f"answer ({error})") from None
+            wanted = units.dimension(units.parse_unit(ask.unit))
+            if not units.same_dimension(dimension, wanted):
+                raise self.problem.error(
+                    f"ask.{name}.unit", f"declared {ask.unit}, but the derived answer has dimension {dimension or 'none'}"
+                )
+            found[name] = ask.unit
+        return Check("dimensions", True, "dimensional analysis", ", ".join(f"{k} [{v}]" for k, v in found.items()),
+                     "Every answer has the units it should: " + ", ".join(
+                         f"{k} in {units.unicode_unit(v)}" if units.unicode_unit(v) else f"{k} a pure number"
+                         for k, v in found.items()) + ".")
+
+    def _routes_check(self) -> Check:
+        """Lagrange's method and Newton–Euler give the same answers (symbolically where that is
+        cheap, else certified by balls at points of the ranges: derive.numbers.agreement) and the same
+        value of every acceleration and constraint force at random states (each route's linear
+        system solved in balls: simplifying them all would cost far more than the question)."""
+        methods, by_balls = set(), True
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind not in DYNAMIC_KINDS:
+                continue
+            a, b = (self._route_expression(ask, r) for r in ROUTES)
+            method = agree(a, b, points=sample_points(self.problem, sp.Tuple(a, b), count=MIN_POINTS))
+            if method is None:
+                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {name}: {a} vs {b}")
+            methods.add(method)
+        for index, regime in enumerate(self.regimes):  # every friction regime, each on its own motions
+            where = f" where the {regime.name}" if regime.name else ""
+            for state in self._check_states(index):
+                by_balls &= self._unknowns_agree(index, state, where)
+        asked = " or ".join(m if m != "balls" else "by balls at 30 digits" for m in METHODS if m in methods)
+        unknowns = "by balls" if by_balls else "numeric"
+        return Check("lagrange_vs_newton_euler", True, f"answers {asked}, all unknowns {unknowns}",
+                     f"answers and {len(self._regime_derivations(0)['lagrange'].unknowns)} accelerations and forces "
+                     "agree" + ("" if methods <= {"symbolic"} else " (answers at 30 digits at points of the ranges)"),
+                     "Lagrange's method and the Newton–Euler equations (the forces and torques on each body) give "
+                     "the same accelerations and forces.")
+
+    def _unknowns_agree(self, index: int, state: dict, where: str) -> bool:
+        """Every unknown of both routes at a state of the index-th regime, in balls (True), or
+        where balls cannot tell, from the exact solutions at 30 digits (False); a difference
+        raises CheckFailure."""
+        routes = self._regime_derivations(index)
+        try:
+            solved = [routes[r].balls_at(state) for r in ROUTES]
+        except ValueError:
+            solved = None
+        by_balls = True
+        for unknown in routes["lagrange"].unknowns:
+            verdict = None if solved is None else same_ball(solved[0][unknown], solved[1][unknown], BITS[-1])
+            if verdict is None:
+                by_balls = False
+                exact = [routes[r].at(state).raw[unknown].xreplace(state) for r in ROUTES]
+                verdict = agree(*exact, symbolic=False) is not None
+            if not verdict:
+                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {unknown}{where}")
+        return by_balls
+
+    def energy_ledger(self, scene=None) -> dict[str, sp.Expr]:
+        """Kinetic energy (translational, rotational), potential energy and the power of the
+        non-conservative applied forces, in the coordinates of the scene (by default the one
+        the derivations describe)."""
+        scene = scene or self.dynamics_scene
+        coords = self.coordinates
+        translational = sum((b.mass * (coords.of(n, "x").u ** 2 + coords.of(n, "y").u ** 2) / 2
+                             for n, b in self.scene.bodies.items()), sp.Integer(0))
+        rotational = sum((b.inertia * coords.angular_velocity(n) ** 2 / 2
+                          for n, b in self.scene.bodies.items() if b.rotates), sp.Integer(0))
+        _, potential = lagrange.energies(scene, coords)
+        power = sp.trigsimp(sp.expand(lagrange.nonconservative_power(scene, coords)))
+        return {"kinetic_translational": translational, "kinetic_rotational": rotational,
+                "potential": potential, "power_nonconservative": power}
+
+    def _states_check(self) -> Check:
+        """Each state reached by the motion (energy, derive.mechanics.states) against Newton–Euler's
+        equations integrated numerically from its start until its condition holds (a coordinate
+        gets there, the motion turns, a force falls to zero), at a point of the parameter ranges
+        where the motion gets there (the middle, else the first of 20 draws that meets every
+        condition): every coordinate and velocity, and the time it takes, within 1e-7."""
+        coords = self.coordinates
+        impacts = 0
+        for name, state in self.scene.states.items():
+            if state.rates:
+                continue
+            if state.event:
+                (self._move_check if state.event.kind in ("move", "turn") else self._impact_check)(name)
+                impacts += 1
+                continue
+            newton_euler = self.derivations_to(name)["newton_euler"]  # to a grip: with the part slipping
+            reached = self.states[name]
+            start = reached.path.start if reached.path else self.states[state.start].values
+            time = self._duration(name)[0]
+            exprs = [*reached.values.values(), *start.values(), time,
+                     *(e.lhs - e.rhs for e in newton_euler.balances)]
+            values = self.reaching_point(exprs, set(newton_euler.unknowns), name)
+            expected = {k: float(sp.N(v.xreplace(values), 20)) for k, v in reached.values.items()}
+            try:
+                expected_time = float(numeric.evaluate(time, values, 12))  # an integral: by mpmath's quadrature
+            except ValueError as error:
+                raise CheckFailure(f"{self.problem.id}: the time to the state {name}: {error}") from None
+            horizon = 2 * expected_time + 1
+            simulated = integrated_motion.integrate_to(newton_euler, coords, values, reached, self._condition(state), horizon,
+                                            start)
+            if simulated is None:
+                raise CheckFailure(f"{self.problem.id}: Newton–Euler's motion from the start does not reach the "
+                                   f"state {name} in {horizon:.3g} s")
+            took, simulated = simulated
+            worst = max(abs(simulated[k] - expected[k]) / (1 + abs(expected[k])) for k in expected)
+            worst = max(worst, abs(took - expected_time) / (1 + expected_time))
+            if worst > 1e-7:
+                raise CheckFailure(f"{self.problem.id}: the state {name} by energy and by Newton–Euler's motion "
+                                   f"differ by {worst:.2e}")
+        detail = "every state reached, and the time it takes: energy against Newton–Euler's motion, integrated"
+        if impacts:
+            detail += (f"; {impacts} impact{'s' if impacts > 1 else ''} or move{'s' if impacts > 1 else ''}: generalized "
+                       "momenta against each body's impulses or moments")
+        reading = ("Newton–Euler's equations, integrated numerically from the start, reach each state at the same "
+                   "place, speed and time as the derivation.")
+        if impacts:
+            reading += " In each impact or move, the velocities agree with each body's impulse and momentum."
+        return Check("states", True, "numeric", detail, reading)
+
+    def reaching_point(self, exprs: list, unknowns: set, name: str) -> dict[sp.Symbol, sp.Expr]:
+        """A point of the parameter ranges where the motion gets to the state `name` (the middle,
+        else the first of 20 draws that meets every condition), with values for every symbol of
+        `exprs` but the coordinates, the velocities and the `unknowns`."""
+        symbols = set().union(*(e.free_symbols for e in exprs), *(c.free_symbols for c, _, _ in self.conditions))
+        symbols -= self.coordinates.state | unknowns
+        values = next((point for point in sample_points(self.problem, sp.Add(*symbols), count=20)
+                       if self.violated(point) is None), None)
+        if values is None:
+            raise self.problem.error(f"scene.states.{name}", "the motion gets to this state at none of 20 points "
+                                                             "of the parameter ranges: narrow them")
+        return values
+
+    def _period_check(self) -> Check:
+        """Each period found by energy between the turning points (not a pendulum's elliptic
+        integral) against Newton–Euler's motion integrated from rest at the amplitude to the turning
+        point on the other side, at the middle of the ranges: twice its time, within 1e-7."""
+        coords, newton_euler = self.coordinates, self.derivations["newton_euler"]
+        compared = 0
+        for ask in self.problem.asks.values():
+            if ask.quantity.kind != "oscillation":
+                continue
+            try:
+                exact_period(self.scene, self.derivations["lagrange"], ask.amplitude)
+                continue  # a pendulum: the elliptic integral, compared by the routes check
+            except NotAPendulum:
+                period, _, turned = self._period_by_energy(ask.amplitude)
+            compared += 1
+            symbols = (period.free_symbols | set().union(*(e.free_symbols for e in newton_euler.equations))
+                       | set().union(*(v.free_symbols for v in turned.path.start.values())))
+            symbols -= coords.state | set(newton_euler.unknowns)
+            values = sample_points(self.problem, sp.Add(*symbols), count=1)[0]
+            expected = float(numeric.evaluate(period, values, 12))
+            simulated = integrated_motion.integrate_to(newton_euler, coords, values, turned, reaching.Stops(), expected + 1)
+            if simulated is None or abs(2 * simulated[0] - expected) > 1e-7 * expected:
+                raise CheckFailure(f"{self.problem.id}: the period at amplitude {ask.amplitude} is {expected} by energy, "
+                                   f"{None if simulated is None else 2 * simulated[0]} by Newton–Euler's motion")
+        if not compared:
+            return Check("period", True, "symbolic", "a pendulum's period: the elliptic integral by both routes",
+                         "Both methods give the same period, an elliptic integral.")
+        return Check("period", True, "numeric", "the period at its amplitude by energy between the turning points "
+                                                "against Newton–Euler's motion, integrated",
+                     "The period found from energy agrees with Newton–Euler's motion integrated over a swing.")
+
+    def _impact_check(self, name: str) -> None:
+        """The velocities and impulses just after an impact by Lagrange (generalized momenta and
+        impulses) and by Newton–Euler (each body's impulse and momentum) agree, symbolically."""
+        by_lagrange = self._chain.impacts[name]
+        state = self.scene.states[name]
+        by_impulses = self._impact_by(name, "newton_euler")
+        # a rough bounce's regimes each on its own (where it holds is found from the grip's impulses)
+        pairs = (zip((r.impact for r in by_lagrange.regimes), (r.impact for r in by_impulses.regimes))
+                 if by_lagrange.regimes else [(by_lagrange, by_impulses)])
+        before = self.states[state.start].values
+        for first, second in pairs:
+            for key in (*first.velocities, *first.impulses):
+                # |R - r| of a circle's normal where a body is on it: as the parameter ranges have it
+                a, b = (self._within_ranges(e, absolute=True) if e.has(sp.Abs) and not by_lagrange.regimes else e
+                        for e in ({**first.velocities, **first.impulses}[key],
+                                  {**second.velocities, **second.impulses}[key]))
+                if agree(a, b) is None:
+                    raise CheckFailure(f"{self.problem.id}: in the impact {name}, {key} is {a} by generalized momenta "
+                                       f"and {b} by impulses")
+            # where no impulse from outside has a moment about a point, Newton–Euler's velocities
+            # keep the angular momentum about it (and with none at all, the momentum)
+            with_touch = self._scene_with((*self._struck_with(name), self._chain.made[name]))
+            kept = impacts.conserved(with_touch, self.coordinates, before,
+                                     {**before, **second.velocities})
+            for was, now in zip(*(iter(kept.equations if kept else ()),) * 2):
+                if agree(was.rhs, now.rhs) is None:
+                    raise CheckFailure(f"{self.problem.id}: in the impact {name}, {was.lhs} is {was.rhs} before and "
+                                       f"{now.rhs} after")
+
+    def _move_check(self, name: str) -> None:
+        """The state after a move or a turn by Lagrange (momenta of the rigid motions that leave the
+        Lagrangian and the gaps unchanged) and by Newton–Euler (angular momenta about points where
+        the forces from outside have no moment) agree, symbolically."""
+        by_lagrange = self._chain.impacts[name]
+        start = self.scene.states[name].start
+        by_moments = self._move(name, self.states[start].values, self._chain.joints[start], "newton_euler")
+        kind = self.scene.states[name].event.kind
+        if by_lagrange.loose != by_moments.loose:
+            raise CheckFailure(f"{self.problem.id}: after the {kind} {name}, the Lagrangian's symmetries leave "
+                               f"{by_lagrange.loose} loose and moments about points {by_moments.loose}")
+        for key, a in by_lagrange.values.items():
+            if agree(a, by_moments.values[key]) is None:
+                raise CheckFailure(f"{self.problem.id}: after the {kind} {name}, {key} is {a} by the Lagrangian's "
+                                   f"symmetries and {by_moments.values[key]} by moments about points")
+
+    def _work_energy_check(self) -> Check:
+        """d(T + V)/dt = power of the applied non-conservative forces, with the solved accelerations,
+        on motions the constraints allow: the constraint forces do no work. Each side in balls,
+        with Lagrange's accelerations and forces solved in balls (else exactly, at 30 digits)."""
+        coords = self.coordinates
+        kinds = set()
+        for index, regime in enumerate(self.regimes):
+            ledger = self.energy_ledger(regime.scene)
+            rate = coords.ddt(ledger["kinetic_translational"] + ledger["kinetic_rotational"] + ledger["potential"])
+            lagrange_route = self._regime_derivations(index)["lagrange"]
+            for state in self._check_states(index):
+                left, right = rate.xreplace(state), ledger["power_nonconservative"].xreplace(state)
+                try:
+                    verdict = by_balls(left, right, [lagrange_route.balls_at(state)])
+                except ValueError:
+                    verdict = None
+                if verdict is None:
+                    solved = lagrange_route.at(state).raw
+                    verdict = agree(left.xreplace(solved), right.xreplace(solved), symbolic=False) is not None
+                if not verdict:
+                    raise CheckFailure(f"{self.problem.id}: the work-energy theorem fails"
+                                       + (f" where the {regime.name}" if regime.name else ""))
+            kinds.add(ledger["power_nonconservative"] == 0)
+        kind = "conserved" if kinds == {True} else "changes by the work of the applied forces"
+        sliding = " and of kinetic friction where it slides" if any("slip" in r.name for r in self.regimes) else ""
+        reading = ("Energy is conserved: the constraint forces do no work." if kinds == {True} else
+                   f"The energy changes only by the work of the applied forces{sliding}: the constraint forces do "
+                   "no work.")
+        return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work", reading)
+
+    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, three regimes at most
+    def _check_states(self, index: int) -> list[dict[sp.Symbol, sp.Expr]]:
+        """The states the routes and the work-energy checks compare in the index-th friction
+        regime: motions on its constraints, at sample parameters (the checks are numeric, and each
+        derivative along a motion is then taken of a number-valued geometry, not of the general
+        one). The same states for both checks: each route solves them once."""
+        routes = self._regime_derivations(index).values()
+        symbols = set().union(*(e.free_symbols for d in routes for e in [*d.balances, *d.rates]))
+        symbols -= self.coordinates.state | {u for d in routes for u in d.unknowns}
+        parameters = sample_points(self.problem, sp.Add(*symbols), count=1)[0] if symbols else {}
+        return self._states_on_constraints(scene=self.regimes[index].scene, parameters=parameters)
+
+    def _states_on_constraints(self, count: int = 2, scene=None, parameters=None) -> list[dict[sp.Symbol, sp.Expr]]:
+        """Motions the constraints of the scene (by default the one the derivations describe)
+        allow: the reference configuration (where every gap vanishes) with random velocities
+        solving dg/dt = 0 (with `parameters`, at those values, which the states then include).
+        Off the constraints the two routes' descriptions of a curved contact differ, so only
+        states on them are compared."""
+        coords = self.coordinates
+        parameters = parameters or {}
+        rates = [coords.ddt(g).xreplace(parameters) for c in (scene or self.dynamics_scene).constraints
+                 for g in c.gaps(coords)]
+        at_reference = {c.q: 0 for c in coords.all}
+        velocities = [c.u for c in coords.all]
+        matrix, rhs = sp.linear_eq_to_matrix([r.xreplace(at_reference) for r in rates], velocities)
+        # at sample parameters a coefficient zero only by nested roots' identities (a cord's run to a
+        # weight hanging straight down, for its x) is a number: zero where it vanishes to 60 digits,
+        # else rref took it for a pivot and the velocities came out near 1e77, then NaN
+        matrix = matrix.applyfunc(lambda e: sp.Integer(0) if e.is_number and e != 0 and abs(sp.N(e, 60)) < 1e-45 else e)
+        reduced, pivots = row_reduced(matrix.row_join(rhs))  # once: the free velocities, the rest in them
+        free = [u for i, u in enumerate(velocities) if i not in pivots]
+        solvable = len(velocities) not in pivots
+        rng = random.Random(2)
+        states = []
+        for _ in range(count):
+            chosen = {u: sp.Rational(rng.randint(-90, 90), 37) for u in free}
+            solved = {velocities[p]: reduced(row, len(velocities)) - sum(
+                (reduced(row, velocities.index(u)) * value for u, value in chosen.items()), sp.Integer(0))
+                for row, p in enumerate(pivots)} if solvable else {}
+            states.append({**parameters, **at_reference, **chosen, **solved})
+        return states
+
+    def _orbit_check(self) -> Check:
+        """Lagrange's and Newton's radial equations agree; for an ellipse, the energy is the same
+        at both turning points (where the velocity is l / r)."""
+        orbit = self.scene.orbit
+        l = sp.Symbol("l", positive=True)
+        routes = [orbits.radial_acceleration(orbit.GM, l, route) for route in ROUTES]
+        if agree(*routes) is None:
+            raise CheckFailure(f"{self.problem.id}: the radial equations differ: {routes}")
+        detail = "radial equations agree"
+        if orbit.semi_major_axis is not None:
+            k = orbits.kepler(orbit.GM, orbit.semi_major_axis, orbit.eccentricity)
+            at = [(k["angular_momentum"] / d) ** 2 / 2 - orbit.GM / d for d in (k["periapsis"], k["apoapsis"])]
+            if agree(*at) is None or agree(at[0], k["energy"]) is None:
+                raise CheckFailure(f"{self.problem.id}: the energy differs at periapsis and apoapsis")
+            detail += "; energy equal at periapsis and apoapsis"
+        return Check("lagrange_vs_newton_euler", True, "symbolic", detail,
+                     "Lagrange's method and Newton's second law give the same orbit.")
+
+    def _path_check(self) -> Check:
+        """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""
+        for name, ask in self.problem.asks.items():
+            if ask.quantity.kind == "path":
+                body = self.scene.bodies[ask.quantity.target]
+                other = paths.by_mechanics(body.path, body.mass, ask.quantity.detail)
+                if agree(other, self.expressions[name]) is None:
+                    raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} by projection, "
+                                       f"{other} by sympy.physics.mechanics")
+        return Check("path_vs_mechanics", True, "symbolic", "every path quantity agrees",
+                     "The kinematics of SymPy's mechanics package (rotating frames) give the same velocities and "
+                     "accelerations on the path.")
+
+    def _system_check(self) -> Check:
+        """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,
+        the inertia about the center of mass is mu d^2."""
+        total, composed = self._system("inertia", "sum"), self._system("inertia", "tensor")
+        if agree(total, composed) is None:
+            raise CheckFailure(f"{self.problem.id}: the system's inertia is {total} summed, {composed} composed")
+        detail = "parallel-axis sum equals the composed tensor"
+        bodies = list(self.scene.bodies.values())
+        if len(bodies) == 2 and all(b.shape == "point" for b in bodies):
+            gap = self._position(bodies[1].name) - self._position(bodies[0].name)
+            if agree(total, many_bodies.reduced_mass(bodies[0].mass, bodies[1].mass) * gap.dot(gap)) is None:
+                raise CheckFailure(f"{self.problem.id}: I differs from mu d^2")
+            detail += "; I = mu d^2"
+        return Check("system_inertia", True, "symbolic", detail,
+                     "The system's mass and moment of inertia agree by two routes.")
+
+    def _energy_check(self) -> Check:
+        """Energy conservation gives the same speeds as the accelerations integrated."""
+        methods = set()
+        for body, balance in self.energy_balances.items():
+            dynamics = self._contact_expression(body, "speed_at_bottom", self.derivations["lagrange"])
+            method = agree(balance.speed, dynamics)
+            if method is None:
+                raise CheckFailure(f"{self.problem.id}: energy gives {balance.speed}, dynamics {dynamics} for {body}")
+            methods.add(method)
+        return Check("energy_vs_dynamics", True, "symbolic" if methods == {"symbolic"} else "numeric",
+                     f"speeds of {', '.join(self.energy_balances)} agree",
+                     "Energy conservation and the equations of motion give the same speeds.")
+
+    def _parallel_axis_check(self, ask: Ask) -> Check | None:
+        body = self.scene.bodies[ask.quantity.target]
+        derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
+        if ask.shift is not None:  # the shifted axis, integrated directly, against I_cm + M h^2
+            theorem = inertia.parallel_axis(self._inertia_about(body, ask.quantity.detail), body.mass, ask.shift)
+            if agree(theorem, self.expressions[ask.name]) is None:
+                raise CheckFailure(f"{self.problem.id}: the shifted axis gives {self.expressions[ask.name]}, "
+                                   f"the parallel-axis theorem {theorem}")
+            return Check("parallel_axis", True, "symbolic",
+                         f"{ask.name}: integration about the shifted axis equals I_cm + M h^2", PARALLEL_AXIS)
+        if derived.distance_from_center == 0:
+            return None
+        center_axis = inertia.PLANAR_AXIS[body.shape]
+        central = inertia.moment_of_inertia(body.shape, center_axis).I
+        theorem = inertia.parallel_axis(central, inertia.M, derived.distance_from_center)
+        if agree(theorem, derived.I) is None:
+            raise CheckFailure(f"{self.problem.id}: the parallel-axis theorem gives {theorem}, integration {derived.I}")
+        return Check(
+            "parallel_axis", True, "symbolic",
+            f"{ask.name}: integration equals I_cm + M d^2 with d = {derived.distance_from_center}", PARALLEL_AXIS,
+        )
+
+
+def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:
+    """Points where `expr` can be evaluated, in SI units like the answers: parameters inside
+    their ranges (the middle, then random draws), sizes the problem leaves open at positive
+    values, open angles in (0, pi/2)."""
+    rng = random.Random(1)
+    by_symbol = {p.symbol: p for p in problem.parameters.values()}
+    points = []
+    for i in range(count):
+        point = {}
+        for s in sorted(expr.free_symbols, key=str):  # in one order whatever the hash seed: the same points
+            p = by_symbol.get(s)
+            si = units.si_factor(units.parse_unit(p.unit)) if p is not None else 1
+            if p is not None and p.range is not None:
+                fraction = sp.Rational(1, 2) if i == 0 else sp.Rational(rng.randint(1, 99), 100)
+                point[s] = (p.range[0] + fraction * (p.range[1] - p.range[0])) * si
+            elif p is not None and p.value is not None:
+                point[s] = p.value * si
+            else:
+                point[s] = sp.Rational(rng.randint(5, 145), 100)  # open sizes; below pi/2 for angles
+        points.append(point)
+    return points

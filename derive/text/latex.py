@@ -1,0 +1,104 @@
+r"""Text and sympy expressions as LaTeX: plain text escaped (`tex_escape`), a symbol's name as a
+reader expects it (`symbol_latex`), an expression or equation in the grouping a textbook prints
+(`latex_of`). The engine's sentences (derive.text.prose), the figures and every document print through
+them.
+
+>>> tex_escape("50% & more")
+'50\\% \\& more'
+"""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+import sympy as sp
+from sympy.printing.conventions import split_super_sub
+from sympy.printing.latex import translate
+from sympy.printing.pretty.pretty_symbology import greek_unicode
+from sympy.printing.str import StrPrinter
+
+from derive.text import printed_form
+from derive.text.latex_grammar import SPECIALS
+
+
+@lru_cache(maxsize=1024)  # a problem's id, title and the set's are escaped in every variant
+def tex_escape(text: str) -> str:
+    """Plain text made safe to typeset: LaTeX's special characters escaped."""
+    return "".join(SPECIALS.get(c, c) for c in str(text))
+
+
+@lru_cache(maxsize=1024)  # a symbol is typeset in every variant
+def symbol_latex(name: str) -> str:
+    r"""LaTeX of a symbol's name as a reader expects it: a Greek name as its letter, a word
+    subscript upright, a word as one symbol.
+
+    sympy's own LaTeX (split_super_sub, translate) does the splitting and the Greek; it sets every
+    subscript in italics (Omega_fast as f a s t) and a word as a product (Rcm as R c m), so these
+    rules are written here: a subscript of two letters or more is upright (a one-letter subscript
+    may be an index, x_i, and stays italic); a capital followed by one or two small letters is the
+    capital with them as its subscript (Rcm as R_cm; Mass stays a word); a letter then a Greek
+    name is a product (dphi as d phi); any other word is one italic symbol.
+
+    >>> symbol_latex("Omega_fast"), symbol_latex("Rcm"), symbol_latex("theta_c"), symbol_latex("omega0")
+    ('\\Omega_{\\mathrm{fast}}', 'R_{\\mathrm{cm}}', '\\theta_{c}', '\\omega_{0}')
+    >>> symbol_latex("dphi_exact"), symbol_latex("GM"), symbol_latex("a_theta"), symbol_latex("Mass")
+    ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
+    """
+    if name.startswith("\\"):  # a name the engine gives in LaTeX (derivation.LAGRANGIAN)
+        return name
+    base, supers, subs = split_super_sub(name)
+    letter = translate(base)
+    if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent
+        if base[0].isupper() and base[1:].islower() and len(base) <= 3:  # Rcm, Mp; not a word (Mass)
+            letter, subs = base[0], [base[1:], *subs]
+        elif translate(base[1:]) != base[1:]:
+            letter = base[0] + translate(base[1:])
+        else:
+            letter = rf"\mathit{{{base}}}"
+
+    def script(parts: list[str]) -> str:
+        return ",".join(translate(p) if translate(p) != p or len(p) == 1 or p.isdigit() else rf"\mathrm{{{p}}}"
+                        for p in parts)
+
+    return letter + (f"_{{{script(subs)}}}" if subs else "") + (f"^{{{script(supers)}}}" if supers else "")
+
+
+def latex_of(expression) -> str:
+    r"""sympy's LaTeX for an expression or equation, its symbols named by symbol_latex, in the
+    grouping a textbook prints (`printed_form.textbook`: one square root, sin for cos tan).
+
+    >>> latex_of(sp.Eq(sp.Symbol("Omega_fast"), sp.Symbol("M") * sp.Symbol("Rcm")))
+    '\\Omega_{\\mathrm{fast}} = M R_{\\mathrm{cm}}'
+    """
+    named = {s: symbol_latex(s.name) for s in (expression.atoms(sp.Symbol) if isinstance(expression, sp.Basic) else ())
+             if not isinstance(s, sp.Dummy)}  # bound ones too (an integral's dx); a Dummy keeps sympy's own mark
+    return sp.latex(printed_form.textbook(expression), symbol_names=named)
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+class _SpokenNames(StrPrinter):
+    """sympy's str printer, each symbol's name spoken: a Greek name as its letter, a subscript after
+    a space (the terms keep the order of the names as given)."""
+
+    def _print_Symbol(self, symbol: sp.Symbol) -> str:
+        base, supers, subs = split_super_sub(symbol.name)
+        return " ".join(greek_unicode.get(part, part) for part in (base, *subs, *supers))
+
+
+def spoken(expression: sp.Expr) -> str:
+    """An expression as plain text that reads as math, for an image's alternative text: a product
+    spaced (M g, not M*g), a Greek name as its letter, a subscript after a space (T string), a
+    whole power as a superscript.
+
+    sympy's str printer gives the grouping; the rest is the text it prints, rewritten here, since
+    sympy has no printer for words (its pretty printer draws fractions on several lines).
+
+    >>> M, g, mu_k, N, T = sp.symbols("M g mu_k N T_string")
+    >>> spoken(M * g), spoken(mu_k * N), spoken(T), spoken(M * g**2 / 2)
+    ('M g', 'N μ k', 'T string', 'M g²/2')
+    """
+    text = _SpokenNames().doprint(expression)
+    text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPTS), text)
+    return text.replace("**", "^").replace("*", " ")

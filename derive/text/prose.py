@@ -1,0 +1,66 @@
+"""Sentences of a worked solution that hold math: words and expressions in the order they are read.
+
+A part of a scene says what it contributes to a route in such sentences (`derive.parts`,
+`Part.sentences`): "The cord does not slip on the disk, so ..." followed by the equation. The
+words stay words (no pseudo-math) and the math stays sympy, so each output prints both its own
+way: LaTeX with the math in `$...$` and the symbols named as the equations name them
+(`latex.latex_of`: word subscripts upright), text with sympy's unicode pretty-printer.
+
+>>> import sympy as sp
+>>> v, w, R = sp.symbols("v omega R")
+>>> s = Sentence(("The block moves with the rim: ", sp.Eq(v, w * R), "."))
+>>> s.latex()
+'The block moves with the rim: $v = R \\\\omega$.'
+>>> s.text()
+'The block moves with the rim: v = R⋅ω.'
+>>> s.words
+'The block moves with the rim: .'
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import Callable
+
+import sympy as sp
+
+from derive.text.latex import latex_of, tex_escape
+from derive.text.terminal import pretty
+
+
+@dataclass(frozen=True)
+class Sentence:
+    """`pieces`: words (str) and math (sympy expressions and equations), read in order. `body`:
+    the body whose Newton–Euler balance the sentence explains (None: the scene's constraints)."""
+
+    pieces: tuple
+    body: str | None = None
+
+    @property
+    def words(self) -> str:
+        """The words alone (what the prose checks read)."""
+        return "".join(p for p in self.pieces if isinstance(p, str))
+
+    def latex(self) -> str:
+        """The sentence as LaTeX: words escaped, each piece of math in `$...$`."""
+        return "".join(tex_escape(p) if isinstance(p, str) else f"${latex_of(p)}$" for p in self.pieces)
+
+    def text(self) -> str:
+        """The sentence for a terminal (a fraction takes three lines, on one baseline)."""
+        return "\n".join(pretty(*self.pieces))
+
+    def with_math(self, change: Callable[[sp.Basic], sp.Basic]) -> Sentence:
+        """The sentence with `change` applied to each piece of math (the routes' `simplest`)."""
+        def changed(piece):
+            if isinstance(piece, sp.Eq):
+                return sp.Eq(change(piece.lhs), change(piece.rhs), evaluate=False)
+            return change(piece)
+        return replace(self, pieces=tuple(p if isinstance(p, str) else changed(p) for p in self.pieces))
+
+
+def capital(words: str) -> str:
+    """`words` opening a sentence: the first letter a capital, the rest as it is (a name keeps its case).
+
+    >>> capital("the ball's contact with the Dome")
+    "The ball's contact with the Dome"
+    """
+    return words[:1].upper() + words[1:]
