@@ -161,7 +161,7 @@ class Ask:
     magnitude: bool = False
     zero_for: str | None = None
     small: tuple[sp.Symbol, ...] = ()
-    shift: sp.Expr | None = None
+    shift: sp.Expr | tuple[sp.Expr, sp.Expr, sp.Expr] | None = None  # a distance, or a vector in the body's frame
     amplitude: sp.Expr | None = None
     exact: str | None = None  # this ask approximates that one
     tolerance: str | None = None  # "2%" or an absolute amount in `unit`; None: the last digit shown
@@ -428,12 +428,20 @@ def tolerance_policy(raw) -> str | None:
     return f"{number.normalize():f}%" if text.endswith("%") else f"{number.normalize():f}"
 
 
-def _shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
-    """`shift: h`: the asked axis moved parallel to itself by the distance h."""
+def _shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | tuple[sp.Expr, sp.Expr, sp.Expr] | None:
+    """`shift: [dx, dy]`: the asked axis moved parallel to itself by that vector in the body's frame
+    (a rod along x); `shift: h`: by the distance h, which needs no direction only where the axis
+    passes through the body's center of mass (every direction then gives the same moment: the
+    Solution refuses it elsewhere)."""
     if raw is None:
         return None
     if quantity.kind != "inertia" or quantity.detail is None:
         raise reader.fail(field, "a shift moves a named inertia axis (give axis: too)")
+    if isinstance(raw, list):
+        dx, dy = reader.vector(raw, field, "m", "a shift", " in the body's frame (x along a rod)")
+        if dx == 0 and dy == 0:
+            raise reader.fail(field, "a shift of [0, 0] moves nothing: leave it out")
+        return (dx, dy, sp.S.Zero)
     return reader.positive(raw, field, "m", "a shift")
 
 

@@ -465,24 +465,40 @@ def central_moment(shape_name: str, mass: sp.Expr, sizes: dict[str, sp.Expr]) ->
     return moment_of_inertia(shape_name, PLANAR_AXIS[shape_name]).substitute(mass, sizes)
 
 
+def _shielded(shape: Shape, sizes: dict[str, sp.Expr], *exprs) -> dict[sp.Symbol, sp.Dummy]:
+    """Dummies for the symbols of a body's own expressions (its density, an offset) that happen to be
+    this module's generic ones (R, M, ...) without standing for the same size: kept apart from them
+    during the integration. A body's size that is the generic symbol itself (a rod's length L, and L
+    in its density) is that size, and not kept apart: (x + L/2)/L is the rod's own L."""
+    same = {shape.sizes[name] for name, value in sizes.items() if value == shape.sizes[name]}
+    generic = {M, *shape.sizes.values()} - same
+    found = set().union(*(sp.sympify(e).free_symbols for e in exprs if e is not None))
+    return {s: sp.Dummy(s.name, **s.assumptions0) for s in found if s in generic}
+
+
 def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp.Expr],
-                density: sp.Expr | None = None, route: str = "integral") -> tuple[sp.Expr, sp.Expr]:
-    """(mass, moment of inertia) of a body of this shape and sizes about a named axis.
+                density: sp.Expr | None = None, route: str = "integral", offset: Vector | None = None
+                ) -> tuple[sp.Expr, sp.Expr]:
+    """(mass, moment of inertia) of a body of this shape and sizes about a named axis, or about
+    (point, direction) in the shape's frame, moved by `offset` (a vector in the body's own symbols).
 
     Uniform with the given mass; or with a `density` in the shape's coordinates: a profile
     scaled to the given mass, or, with mass None, an absolute density whose integral is the
-    mass. A body's own symbols that happen to be this module's generic ones (R, M, ...) are
-    kept apart from them during the integration. `route="tensor"` takes n^T I n from the
-    inertia tensor about a point of the axis instead of integrating d^2: a second route.
+    mass (`_shielded` says which of its symbols are the body's sizes). `route="tensor"` takes
+    n^T I n from the inertia tensor about a point of the axis instead of integrating d^2: a
+    second route.
 
     >>> body_moment("disk", "symmetry", None, {"radius": 2}, sp.Symbol("sigma", positive=True))
     (4*pi*sigma, 8*pi*sigma)
+    >>> body_moment("rod", "center", M, {"length": L}, (x + L / 2) / L, offset=(L / 2, 0, 0))[1]
+    L**2*M/6
     """
     shape = _shape(shape_name)
-    generic = {M, *shape.sizes.values()}
-    shield = {s: sp.Dummy(s.name, **s.assumptions0) for s in (density.free_symbols if density is not None else ())
-              if s in generic}
+    shield = _shielded(shape, sizes, density, *(offset or ()))
     shielded = None if density is None else density.xreplace(shield)
+    if offset is not None:
+        point, direction = shape.axes[axis] if isinstance(axis, str) else axis
+        axis = (tuple(sp.sympify(p) + sp.sympify(o).xreplace(shield) for p, o in zip(point, offset)), direction)
     result = moment_of_inertia(shape_name, axis, shielded)
     moment = result.I
     if route == "tensor":
@@ -498,3 +514,27 @@ def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp
     if mass is None:
         return integrated_mass, moment
     return mass, sp.simplify(mass * moment / integrated_mass)
+
+
+def body_center(shape_name: str, sizes: dict[str, sp.Expr], density: sp.Expr | None = None) -> Vector:
+    """A body's center of mass in its shape's frame, in the body's own symbols.
+
+    >>> body_center("rod", {"length": L}, (x + L / 2) / L)
+    (L/6, 0, 0)
+    """
+    shape = _shape(shape_name)
+    shield = _shielded(shape, sizes, density)
+    mapping = {shape.sizes[name]: value for name, value in sizes.items()}
+    restore = {d: s for s, d in shield.items()}
+    center = center_of_mass(shape_name, None if density is None else density.xreplace(shield))
+    return tuple(sp.simplify(c.xreplace(mapping).xreplace(restore)) for c in center)
+
+
+def across(direction: Vector) -> Vector:
+    """The direction a distance from an axis is measured along where none is given: the first of x,
+    y, z square to the axis (along a rod for an axis normal to the page).
+
+    >>> across((0, 0, 1)), across((1, 0, 0))
+    ((1, 0, 0), (0, 1, 0))
+    """
+    return next(e for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1)) if sp.Matrix(e).dot(sp.Matrix(direction)) == 0)

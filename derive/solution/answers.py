@@ -405,16 +405,32 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
                 return None  # a custom body's inertia is given, not derived
             ask = Ask(ask.name, ask.meaning, ask.path, Quantity("inertia", body.name, inertia.PLANAR_AXIS[body.shape]),
                       ask.unit, ask.sig_figs, shift=ask.shift)
-        axis = ask.quantity.detail
-        if ask.shift is not None:
-            point, direction = inertia.SHAPES[body.shape].axes[axis]
-            across = sp.Matrix(direction).cross(sp.Matrix([0, 0, 1]) if direction[2] == 0 else sp.Matrix([1, 0, 0]))
-            axis = (tuple(sp.Matrix(point) + ask.shift * across / across.norm()), direction)
-        return self._inertia_about(body, axis, route)
+        return self._inertia_about(body, ask.quantity.detail, route, self.shift_vector(ask))
 
-    def _inertia_about(self, body, axis, route: str = "integral") -> sp.Expr:
-        moment = inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density, route)[1]
+    def _inertia_about(self, body, axis, route: str = "integral", offset=None) -> sp.Expr:
+        moment = inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density, route, offset)[1]
         return self._within_ranges(moment)
+
+    def shift_vector(self, ask: Ask) -> tuple[sp.Expr, sp.Expr, sp.Expr] | None:
+        """How far an ask's axis is moved, as a vector in the body's frame: as the file gives it, or a
+        distance along `inertia.across` the axis, which is allowed only where the named axis passes
+        through the center of mass (else the direction decides the moment: a rod denser at one end
+        has I = ML^2/3 a half-length across its middle axis, ML^2/6 along it to its heavy end)."""
+        if ask.shift is None or isinstance(ask.shift, tuple):
+            return ask.shift
+        body = self.scene.bodies[ask.quantity.target]
+        shape = inertia.SHAPES[body.shape]
+        point, direction = shape.axes[ask.quantity.detail]
+        generic = {shape.sizes[n]: v for n, v in body.sizes.items()}
+        off = sp.Matrix(inertia.body_center(body.shape, body.sizes, body.density)) - \
+            sp.Matrix([sp.sympify(c).xreplace(generic) for c in point])
+        n = sp.Matrix(direction) / sp.Matrix(direction).norm()
+        if sp.simplify(off - off.dot(n) * n) != sp.zeros(3, 1):
+            raise self.problem.error(
+                f"ask.{ask.name}.shift", f"the {body.name}'s {ask.quantity.detail} axis does not pass through its center "
+                f"of mass, so the moment about an axis {ask.shift} from it depends on the direction it is moved: give "
+                f"the shift as [dx, dy] in the {body.name}'s frame, e.g. shift: [{ask.shift}, 0]")
+        return tuple(ask.shift * e for e in inertia.across(direction))
 
     def _within_ranges(self, expr: sp.Expr, absolute: bool = False) -> sp.Expr:
         """Resolve what an integral left open, using the parameter ranges: the branch of a Piecewise

@@ -1,6 +1,8 @@
 """Bodies on their own (an inertia question): side by side, with their sizes and the asked axes."""
 from __future__ import annotations
 
+import math
+
 import sympy as sp
 
 from derive.model import inertia
@@ -57,9 +59,13 @@ def _specimen(fig: _Figure, body: Body, center, slot: float) -> None:
         _label_mass(fig, body, _add(center, (0, -0.12)), (0, -1))
     for point, direction, shift in _asked_axes(fig, body):
         where = _add(center, (point[0] * scale, point[1] * scale))
-        if shift is not None:
-            moved = _add(where, (_clamp(fig.num(shift, 0) * scale, 0.4, half + 0.6), 0))
-            fig.dimension(where, moved, fig.tex(shift), side=1, gap=0.45)
+        if shift is not None:  # drawn the way the Solution moves it (Solution.shift_vector), to scale up to a clamp
+            vector = shift if isinstance(shift, tuple) else tuple(shift * e for e in inertia.across(direction))
+            dx, dy = fig.num(vector[0], 0), fig.num(vector[1], 0)
+            reach = _clamp(math.hypot(dx, dy) * scale, 0.4, half + 0.6) / (math.hypot(dx, dy) or 1)
+            moved = _add(where, (dx * reach, dy * reach))
+            distance = shift if not isinstance(shift, tuple) else sp.sqrt(vector[0] ** 2 + vector[1] ** 2)
+            fig.dimension(where, moved, fig.tex(distance), side=1, gap=0.45)
             where = moved
         if tuple(direction) == (0, 0, 1):
             fig.out_of_page(where)
