@@ -3,6 +3,7 @@ for the same key written whole, whatever layout each variant's entry takes: digi
 balls, by the exact fallback or by agreement, distractors, answers asked as numbers in some
 variants only (issue 17: the per-variant path made lean, its text unchanged)."""
 import csv
+import json
 import io
 import random
 
@@ -20,7 +21,7 @@ from derive.text.stencil import Stencil, hole
 
 def _whole(problem_set, prepared, count, seed, with_distractors, choice):
     """The key written whole, as derive wrote it before the stencils: dicts, then the writers."""
-    key = {"set": problem_set.id, "title": problem_set.title, "seed": seed, "conventions": answer_keys.CONVENTIONS,
+    key = {"set": problem_set.id, "title": problem_set.title, "seed": seed, "conventions": answer_keys.conventions(prepared),
            "variants": []}
     rows = []
     for number in range(1, count + 1):
@@ -90,3 +91,20 @@ def test_a_stencil_keeps_braces_and_names_each_holes_indent():
     assert stencil.indents == {"a": "", "b": "    "}
     with pytest.raises(KeyError):
         stencil.fill({"a": "1"})
+
+
+def test_a_key_with_answers_in_other_units_than_si_says_so(tmp_path):
+    """With an answer in cm/s^2 the key said "SI units; angles in radians" (issue 37, degrees)."""
+    from conftest import run_derive
+
+    text = load("string_wrapped_disk").path.read_text()
+    asked = "of: block.acceleration.y, unit: m/s^2"
+    assert asked in text
+    problem = tmp_path / "p.yaml"
+    problem.write_text(text.replace(asked, asked.replace("m/s^2", "cm/s^2")))
+    done = run_derive("sheet", str(problem), "--to", "", "--out", str(tmp_path / "out"))
+    assert done.returncode == 0, done.stderr
+    assert json.loads((tmp_path / "out/key.json").read_text())["conventions"] == answer_keys.OWN_UNITS
+    assert "Each value in the unit its row gives" in (tmp_path / "out/key.tex").read_text()
+    done = run_derive("sheet", "string_wrapped_disk", "--to", "", "--out", str(tmp_path / "si"))
+    assert json.loads((tmp_path / "si/key.json").read_text())["conventions"] == answer_keys.CONVENTIONS

@@ -41,6 +41,16 @@ from derive.publishing.variants import ProblemVariants, number_latex
 
 CONVENTIONS = ("SI units; angles in radians (rad is dimensionless); y up; counter-clockwise positive; values to "
                "the significant figures shown")
+#: The conventions of a key some of whose answers are in other units (deg, cm, rpm): each row's own.
+OWN_UNITS = ("Each value in the unit its row gives (angles in deg where it says deg, else in radians); y up; "
+             "counter-clockwise positive; values to the significant figures shown")
+
+
+def conventions(prepared: list[ProblemVariants]) -> str:
+    """What a key says of its values: CONVENTIONS where every answer is in an SI unit, else OWN_UNITS
+    (a key of answers in degrees said "angles in radians")."""
+    asks = (ask for item in prepared for ask in item.problem.asks.values())
+    return CONVENTIONS if all(units.si_factor(units.parse_unit(ask.unit)) == 1 for ask in asks) else OWN_UNITS
 CSV_FIELDS = ("variant", "problem", "answer", "value", "tolerance", "unit", "meaning")
 
 
@@ -54,6 +64,7 @@ class Keys:
     csv: str
     tex_rows: list[str]
     notes: list[str]
+    conventions: str = CONVENTIONS
 
 
 #: Why a general result (an expression) is in no LMS export: key.json's `lms` of the answer.
@@ -69,7 +80,7 @@ def write(problem_set: ProblemSet, prepared: list[ProblemVariants], variants: in
     all of whose answers are general results is missing from the quiz)."""
     keys = [_ProblemKey(item, with_distractors or choice, choice, lms) for item in prepared]
     top = Stencil(json_text.dumps({"set": problem_set.id, "title": problem_set.title, "seed": seed,
-                                   "conventions": CONVENTIONS, "variants": Raw(hole("variants"))}))
+                                   "conventions": conventions(prepared), "variants": Raw(hole("variants"))}))
     entry = Stencil(json_text.dumps({"variant": Raw(hole("variant")),
                                      "problems": {key.id: Raw(hole(key.id)) for key in keys}},
                                     top.indents["variants"] + "  "))
@@ -86,7 +97,8 @@ def write(problem_set: ProblemSet, prepared: list[ProblemVariants], variants: in
     csv.writer(header, lineterminator="\n").writerow(CSV_FIELDS)
     notes = [f"{problem_id}: ask.{name}, variant{'s' if len(numbers) > 1 else ''} {', '.join(map(str, numbers))}: "
              f"{note}" for (problem_id, name, note), numbers in numerical.items()]
-    return Keys(text, header.getvalue() + "".join(csv_rows), tex_rows, notes + [n for key in keys for n in key.left_out])
+    return Keys(text, header.getvalue() + "".join(csv_rows), tex_rows, notes + [n for key in keys for n in key.left_out],
+                conventions(prepared))
 
 
 def _too_few(found: int) -> str:

@@ -328,7 +328,8 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                     texs = [
                         _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, tex=True)),
                         _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
-                        _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=keys.tex_rows)),
+                        _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=keys.tex_rows,
+                                                                   conventions=keys.conventions)),
                     ]
                     products = list(texs)
                     compiled = texs if "pdf" in formats else []
