@@ -194,6 +194,7 @@ class Problem:
     corrections: tuple[dict[str, str], ...]
     scene_units: dict[sp.Symbol, str]
     conditions: tuple[Condition, ...] = ()
+    held_to_range: frozenset[sp.Symbol] = frozenset()  # parameters the file's signs were proven over the ranges of
 
     def error(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -234,6 +235,11 @@ class Problem:
                 result[p.symbol] = units.to_unit(number, unit, p.unit) * units.si_factor(units.parse_unit(p.unit))
             except units.UnitError as error:
                 raise ProblemError(f"--set {name}={text}: {error}") from None
+            low, high = p.si_ends
+            if p.symbol in self.held_to_range and not low <= result[p.symbol] <= high:
+                raise ProblemError(f"--set {name}={text}: outside {name}'s range ({float(p.range[0]):g} to {float(p.range[1]):g} {p.unit}), "
+                                   "over which the file's sizes were proven positive: give a value within it, or widen "
+                                   "the range in the file")
             if p.symbol.is_positive and not result[p.symbol] > 0:
                 # The derivation assumed it positive (its range is): a value of the other sign is invalid.
                 raise ProblemError(f"--set {name}={text}: {name} must be positive (its range is "
@@ -534,6 +540,7 @@ def parse(text: str, path: Path) -> Problem:
         corrections=corrections,
         scene_units=dict(reader.symbol_units),
         conditions=conditions,
+        held_to_range=frozenset(reader.held_to_range),
     )
 
 

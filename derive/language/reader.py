@@ -18,6 +18,7 @@ import sympy as sp
 import yaml
 
 from derive.core import expr, names, units
+from derive.numbers import intervals
 from derive.text import latex_safety
 from derive.core.errors import ProblemError
 from derive.core.spelling import did_you_mean
@@ -117,6 +118,7 @@ class Reader:
         self.symbol_units: dict[sp.Symbol, str] = {}
         self.parameters: dict = {}  # name -> derive.language.problem.Parameter, as they are read
         self.used: set[sp.Symbol] = set()  # the symbols the expressions read so far name
+        self.held_to_range: set[sp.Symbol] = set()  # parameters a sign was proven over the ranges of
 
     def fail(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -225,10 +227,25 @@ class Reader:
         return symbol
 
     def positive(self, value, field: str, unit: str, what: str) -> sp.Expr:
+        """An expression of the dimension of `unit`, positive for every value the parameters may take:
+        by sympy's assumptions, else proven in balls over the ranges the file declares (d*sin(theta)
+        with theta in [0.05, 0.15]; sympy knows only that theta is positive)."""
         result = self.dimensioned(value, field, unit, what)
-        if result.is_positive is not True:
+        if result.is_positive is not True and not self.proven_over_ranges(result):
             raise self.fail(field, f"{what} must be positive for every allowed parameter value (got {result})")
         return result
+
+
+    def proven_over_ranges(self, expression: sp.Expr, strict: bool = True) -> bool:
+        """Whether `expression` is proven positive (not `strict`: not negative) over the declared
+        ranges of the parameters it uses (each its SI ends); False where it uses a symbol that is no
+        parameter read so far. The parameters are then held to their ranges (Problem.values)."""
+        ends = {p.symbol: p.si_ends for p in self.parameters.values()}
+        proven = expression.free_symbols <= set(ends) and intervals.positive_over(
+            expression, {s: ends[s] for s in expression.free_symbols}, strict)
+        if proven:  # a value given outside its range (derive solve --set) could break it
+            self.held_to_range |= expression.free_symbols
+        return proven
 
 
 def describe(dimension: dict) -> str:

@@ -473,8 +473,13 @@ def _orbit(reader: Reader, raw) -> Orbit:
     if "semi_major_axis" in raw:
         a = reader.positive(raw["semi_major_axis"], f"{field}.semi_major_axis", "m", "a semi-major axis")
         e = reader.dimensioned(raw["eccentricity"], f"{field}.eccentricity", "1", "an eccentricity")
-        bounds = [p.si_ends for p in reader.parameters.values() if p.symbol in e.free_symbols]
-        if e.is_negative or not e.free_symbols and not e < 1 or any(b[0] < 0 or b[1] >= 1 for b in bounds):
+        ends = {p.symbol: p.si_ends for p in reader.parameters.values()}
+        if e in ends:  # a parameter: its range's ends, exactly
+            ellipse = 0 <= ends[e][0] and ends[e][1] < 1
+        else:  # an expression (rp*vp**2/GM - 1): proven over the ranges
+            ellipse = (e.is_nonnegative or reader.proven_over_ranges(e, strict=False)) and \
+                ((1 - e).is_positive or reader.proven_over_ranges(1 - e))
+        if not ellipse:
             raise reader.fail(f"{field}.eccentricity", "an ellipse has 0 <= e < 1 (e >= 1 is a parabola or hyperbola)")
     return Orbit(GM, l, a, e)
 
