@@ -530,6 +530,23 @@ def body_center(shape_name: str, sizes: dict[str, sp.Expr], density: sp.Expr | N
     return tuple(sp.simplify(c.xreplace(mapping).xreplace(restore)) for c in center)
 
 
+def off_axis(shape_name: str, axis: str, sizes: dict[str, sp.Expr], density: sp.Expr | None,
+             offset: Vector = (0, 0, 0)) -> sp.Expr:
+    """The squared distance from a body's center of mass to its named axis moved by `offset` (a
+    vector in the body's own symbols): zero where the axis passes through it.
+
+    >>> off_axis("rod", "center", {"length": L}, (x + L / 2) / L), off_axis("rod", "end", {"length": L}, None)
+    (L**2/36, L**2/4)
+    """
+    shape = _shape(shape_name)
+    point, direction = shape.axes[axis]
+    generic = {shape.sizes[name]: value for name, value in sizes.items()}
+    apart = sp.Matrix([sp.sympify(c).xreplace(generic) + o for c, o in zip(point, offset)]) - \
+        sp.Matrix(body_center(shape_name, sizes, density))
+    n = sp.Matrix(direction) / sp.Matrix(direction).norm()
+    return sp.simplify(apart.dot(apart) - apart.dot(n) ** 2)
+
+
 def across(direction: Vector) -> Vector:
     """The direction a distance from an axis is measured along where none is given: the first of x,
     y, z square to the axis (along a rod for an axis normal to the page).

@@ -419,18 +419,12 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         if ask.shift is None or isinstance(ask.shift, tuple):
             return ask.shift
         body = self.scene.bodies[ask.quantity.target]
-        shape = inertia.SHAPES[body.shape]
-        point, direction = shape.axes[ask.quantity.detail]
-        generic = {shape.sizes[n]: v for n, v in body.sizes.items()}
-        off = sp.Matrix(inertia.body_center(body.shape, body.sizes, body.density)) - \
-            sp.Matrix([sp.sympify(c).xreplace(generic) for c in point])
-        n = sp.Matrix(direction) / sp.Matrix(direction).norm()
-        if sp.simplify(off - off.dot(n) * n) != sp.zeros(3, 1):
+        if inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density) != 0:
             raise self.problem.error(
                 f"ask.{ask.name}.shift", f"the {body.name}'s {ask.quantity.detail} axis does not pass through its center "
                 f"of mass, so the moment about an axis {ask.shift} from it depends on the direction it is moved: give "
                 f"the shift as [dx, dy] in the {body.name}'s frame, e.g. shift: [{ask.shift}, 0]")
-        return tuple(ask.shift * e for e in inertia.across(direction))
+        return tuple(ask.shift * e for e in inertia.across(inertia.SHAPES[body.shape].axes[ask.quantity.detail][1]))
 
     def _within_ranges(self, expr: sp.Expr, absolute: bool = False) -> sp.Expr:
         """Resolve what an integral left open, using the parameter ranges: the branch of a Piecewise

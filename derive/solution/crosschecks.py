@@ -491,15 +491,12 @@ class CrossChecks:
         """The parallel-axis theorem for a shifted axis: the moment about the parallel axis through the
         center of mass, integrated, plus M d^2, d the distance between the two axes. Through the
         center of mass always: from any other axis the theorem does not hold (a rod denser at one end)."""
-        shape = inertia.SHAPES[body.shape]
-        point, direction = shape.axes[ask.quantity.detail]
-        generic = {shape.sizes[n]: v for n, v in body.sizes.items()}
-        center = sp.Matrix(inertia.body_center(body.shape, body.sizes, body.density))
-        apart = sp.Matrix([sp.sympify(c).xreplace(generic) for c in point]) + sp.Matrix(self.shift_vector(ask)) - center
-        n = sp.Matrix(direction) / sp.Matrix(direction).norm()
+        direction = inertia.SHAPES[body.shape].axes[ask.quantity.detail][1]
+        center = inertia.body_center(body.shape, body.sizes, body.density)
         mass, central = inertia.body_moment(body.shape, ((0, 0, 0), direction), body.mass, body.sizes, body.density,
-                                            offset=tuple(center))
-        return self._within_ranges(central + mass * sp.simplify(apart.dot(apart) - apart.dot(n) ** 2))
+                                            offset=center)
+        apart = inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density, self.shift_vector(ask))
+        return self._within_ranges(central + mass * apart)
 
 def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:
     """Points where `expr` can be evaluated, in SI units like the answers: parameters inside
