@@ -457,3 +457,32 @@ def test_a_tolerance_that_would_grade_unfairly_is_refused_in_one_line(tolerance,
     assert done.returncode == 2 and not (tmp_path / "out").exists()
     (line,) = done.stderr.strip().splitlines()[-1:]
     assert re.fullmatch(rf"derive: error: {re.escape(str(problem))}: {reason}.*", line), line
+
+
+# --- what Moodle reads from what students type (docs/lms.md, issue 35 item 4) -------------------
+
+def _moodle_reads(response: str, decsep: str = ".", thousandssep: str = ",") -> float | None:
+    """qtype_numerical_answer_processor::apply_units (question/type/numerical/questiontype.php) for a
+    field without units: its regex, thousands separators stripped, the text after the number dropped;
+    None where Moodle reads no number."""
+    number = (rf"([+-]?[{re.escape(thousandssep)}\d]*)(?:{re.escape(decsep)}(\d*))?"
+              r"(?:(?:e|E|(?:x|\*|×)10(?:\^|\*\*))([+-]?\d+))?")
+    match = re.match(number, response)
+    before, decimals, exponent = match.groups()
+    before = before.replace(thousandssep, "")
+    if not before.strip("+-") and not decimals:
+        return None
+    return float(f"{before or '0'}.{decimals or ''}" + (f"e{exponent}" if exponent else ""))
+
+
+@pytest.mark.parametrize("typed, read", [
+    ("2.13", 2.13), ("2,13", 213.0), ("\u22122.13", None), ("2.13 N", 2.13), ("213 cm", 213.0),
+    ("1.2e-5", 1.2e-5), ("1.2x10^-5", 1.2e-5), ("1.2×10^-5", 1.2e-5), ("1.2*10**-5", 1.2e-5), ("", None),
+])
+def test_docs_say_what_moodle_reads_from_what_students_type(typed, read):
+    assert _moodle_reads(typed) == read
+    table = (Path(__file__).parent.parent / "docs" / "lms.md").read_text()
+    shown = {"2,13": "read as **213**", "\u22122.13": "not a number, graded wrong", "2.13 N": "read as 2.13",
+             "213 cm": "read as **213**", "1.2e-5": "read as 1.2 × 10⁻⁵", "": "no marks for it"}
+    if typed in shown:
+        assert shown[typed] in table
