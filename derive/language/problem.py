@@ -248,6 +248,28 @@ class Problem:
 
 
 
+def _amount(reader: Reader, raw, field: str, unit: str) -> sp.Expr:
+    """A parameter's value or a range's end in the parameter's `unit`: an expression (2.5, pi/6), or
+    a number with a unit of the same dimension, converted exactly (25°, 25 deg, 250 g for kg).
+
+    >>> from pathlib import Path
+    >>> reader = Reader(Path("p.yaml"))
+    >>> _amount(reader, "25°", "value", "deg"), _amount(reader, "250 g", "value", "kg"), _amount(reader, 3, "value", "m")
+    (25, 1/4, 3)
+    """
+    if isinstance(raw, str):
+        try:
+            number, given = units.parse_quantity(raw, "")
+        except units.UnitError:
+            given = ""  # not a number with a unit: an expression, read below
+        if given:
+            try:
+                return units.to_unit(number, given, unit)
+            except units.UnitError as error:
+                raise reader.fail(field, f"{raw}: {error}") from None
+    return reader.expression(raw, field, {})
+
+
 def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
     raw = reader.mapping(raw, "parameters", free=True)
     result = {}
@@ -259,12 +281,13 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         spec = reader.mapping(spec, field, required=("meaning", "unit"), optional=("value", "range", "sig_figs"))
         if "value" not in spec and "range" not in spec:
             raise reader.fail(field, "needs a value or a range")
-        value = reader.expression(spec["value"], f"{field}.value", {}) if "value" in spec else None
+        unit = reader.unit(spec["unit"], f"{field}.unit")
+        value = _amount(reader, spec["value"], f"{field}.value", unit) if "value" in spec else None
         bounds = None
         if "range" in spec:
             if not isinstance(spec["range"], list) or len(spec["range"]) != 2:
                 raise reader.fail(f"{field}.range", "expected [low, high]")
-            bounds = tuple(reader.expression(v, f"{field}.range", {}) for v in spec["range"])
+            bounds = tuple(_amount(reader, v, f"{field}.range", unit) for v in spec["range"])
             if (bounds[1] - bounds[0]).is_positive is not True:  # sympy decides it, or the range is refused
                 raise reader.fail(f"{field}.range", f"low ({bounds[0]}) must be below high ({bounds[1]}), by a "
                                                     "difference that can be told from zero")
@@ -289,7 +312,6 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         if value is not None:
             lowest = min(lowest, value)
         symbol = sp.Symbol(name, positive=True) if lowest > 0 else sp.Symbol(name, real=True)
-        unit = reader.unit(spec["unit"], f"{field}.unit")
         reader.symbols[name] = symbol
         reader.symbol_units[symbol] = unit
         result[name] = Parameter(name, symbol, reader.text(spec["meaning"], f"{field}.meaning", MEANING_LIMIT), unit, value, bounds,
