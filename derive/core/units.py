@@ -316,12 +316,16 @@ _DEGREES = ("deg", "degree", "degrees")
 
 def after_number(text: str, tex: str) -> str:
     r"""What follows a number in a unit `text` typeset as `tex` (latex_unit or siunitx_unit): a thin
-    space and the unit, but nothing between a number and a degree sign (30°, as SI writes it).
+    space and the unit, but nothing between a number and a degree sign (30°, as SI writes it), whose
+    superscript then rests on the number: latex_unit's empty base `{}`, which a unit alone needs, is
+    an empty box in pandoc's DOCX (25.0□°).
 
     >>> after_number("kg", r"\mathrm{kg}"), after_number("deg", r"{}^{\circ}"), after_number("1", "")
-    ('\\,\\mathrm{kg}', '{}^{\\circ}', '')
+    ('\\,\\mathrm{kg}', '^{\\circ}', '')
     """
-    return tex if not tex or text.strip() in _DEGREES else r"\," + tex
+    if text.strip() in _DEGREES:
+        return tex.removeprefix("{}")
+    return tex and r"\," + tex
 
 
 def _tex_name(name: str) -> str:

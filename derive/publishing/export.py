@@ -253,8 +253,11 @@ def pdfs(texs: list[Path]) -> list[Path]:
 #: only refer to their figures' files; a DOCX's figures come as data URIs, which pandoc decodes).
 PANDOC_SAFETY = ["--sandbox"]
 PANDOC_TARGETS = {
-    "html": ("html5", ".html", ["--standalone", "--mathml"]),
-    "md": ("markdown", ".md", ["--standalone"]),
+    # LaTeX's center environment is a div of class center in pandoc's HTML, which its template leaves unstyled
+    "html": ("html5", ".html", ["--standalone", "--mathml",
+                                "--variable=header-includes:<style>div.center { text-align: center; }</style>"]),
+    # without divs: pandoc's fenced divs (::: center, :::: minipage) are LaTeX's layout, noise in Markdown
+    "md": ("markdown-fenced_divs-native_divs-raw_html", ".md", ["--standalone"]),
     "docx": ("docx", ".docx", []),
 }
 

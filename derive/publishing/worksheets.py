@@ -252,10 +252,10 @@ def _worksheet(header: dict, prepared: list[ProblemVariants], variants: int, fig
     boxes = [{"name": name, "figure": drawn} for name, drawn in zip(names, figures) if drawn and tex]
     shown = [rf"\usebox{{{name}}}" if drawn and tex else drawn for name, drawn in zip(names, figures)]
     stencil = Stencil(render.render("worksheet-variant.tex.j2", set=header, variant={
-        "number": hole("number"), "problems": [{"title": item.problem.title, "question": hole(f"q{i}"), "figure": figure}
+        "number": hole("number"), "printed": tex, "problems": [{"title": item.problem.title, "question": hole(f"q{i}"), "figure": figure}
                                                for i, (item, figure) in enumerate(zip(prepared, shown))]}))
     questions = [item.questions(tex) for item in prepared]
-    return render.render("worksheet.tex.j2", set=header, boxes=boxes, variants=[
+    return render.render("worksheet.tex.j2", set=header, boxes=boxes, printed=tex, variants=[
         stencil.fill({"number": str(n), **{f"q{i}": asked[n - 1] for i, asked in enumerate(questions)}})
         for n in range(1, variants + 1)])
 
