@@ -333,19 +333,39 @@ def inertia(shape: str, axis: str | None, about: str | None, density: str | None
 
 @main.command(name="list")
 @click.option("--topic", default=None, help="Only problems of this topic.")
+@click.option("--search", default=None, metavar="WORDS",
+              help="Only problems whose id, title, question or source holds every one of these words "
+                   "(any case; a word of four letters or more also finds longer ones: pulley finds pulleys).")
 @reports_errors
-def list_problems(topic: str | None) -> None:
-    """List the problems of the library: id, topic and title."""
+def list_problems(topic: str | None, search: str | None) -> None:
+    """List the problems of the library: id, topic and title.
+
+    \b
+    Examples:
+      derive list --topic rolling
+      derive list --search "yo-yo"
+      derive list --topic torque --search pulley
+    """
     from derive.core import library
     from derive.language import problem
 
+    def words(text: str) -> list[str]:
+        return re.findall(r"[a-z0-9]+", text.lower())
+
+    def holds(found: list[str], word: str) -> bool:
+        """A word of the text, or the start of one for four letters or more (pulley: pulleys)."""
+        return any(w == word or len(word) >= 4 and w.startswith(word) for w in found)
+
+    wanted = words(search) if search else []
     rows = []
     for path in library.problem_files():
         p = problem.load(str(path))
-        if topic is None or p.topic == topic:
+        found = words(" ".join((p.id.replace("_", " "), p.title, p.question, p.source)))
+        if (topic is None or p.topic == topic) and all(holds(found, w) for w in wanted):
             rows.append((p.id, p.topic, p.title))
     if not rows:
-        raise BadInput(f"no problems of topic {topic!r}")
+        asked = " and ".join(x for x in (topic and f"of topic {topic!r}", search and f"matching {search!r}") if x)
+        raise BadInput(f"no problems {asked}")
     widths = [max(len(r[k]) for r in rows) for k in (0, 1)]  # aligned columns, the title last
     for problem_id, problem_topic, title in rows:
         click.echo(f"{problem_id:<{widths[0]}}  {problem_topic:<{widths[1]}}  {title}")

@@ -403,3 +403,15 @@ def test_a_condition_beyond_what_a_decimal_holds_is_decided(tmp_path):
 def test_derive_alone_shows_its_help():
     done = run_derive()
     assert done.returncode == 0 and done.stdout.startswith("Usage: derive") and "Commands:" in done.stdout, done.stderr
+
+
+def test_list_searches_the_library_by_words_and_topic():
+    found = run_derive("list", "--search", "wrapped disk")
+    assert found.returncode == 0 and found.stdout.split()[0] == "string_wrapped_disk", found.stdout
+    assert [line.split()[0] for line in run_derive("list", "--topic", "rolling", "--search", "loop").stdout.splitlines()] \
+        == ["loop_the_loop", "loop_the_loop_ball"]
+    pulled = [line.split()[0] for line in run_derive("list", "--search", "pulle").stdout.splitlines()]
+    assert "tugged_spool" in pulled  # four letters or more: the start of a word ("pulled")
+    assert run_derive("list", "--search", "yo").returncode == 2  # under four: whole words only ("you" is no match)
+    none = run_derive("list", "--topic", "torque", "--search", "zzz")
+    assert none.returncode == 2 and none.stderr.strip() == "derive: error: no problems of topic 'torque' and matching 'zzz'"
