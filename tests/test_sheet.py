@@ -227,3 +227,14 @@ def test_a_tilt_in_degrees_is_checked_against_its_limits_in_si(tmp_path):
     (tmp_path / "rod.yaml").write_text(text)
     done = run_derive("solve", str(tmp_path / "rod.yaml"))
     assert done.returncode == 0, done.stderr
+
+
+def test_sources_and_corrections_to_the_notes_are_the_instructors(tmp_path):
+    """"Correction to the notes (§6.4.1)" and "Source: lecture notes §..." reached the students in the
+    worked solutions and the LMS feedback (issue 37, item 5); they are in the instructor's key."""
+    done = run_derive("sheet", "sticky_impact_pivoted", "string_wrapped_disk", "--to", "", "--out", str(tmp_path / "o"))
+    assert done.returncode == 0, done.stderr
+    solutions, key = ((tmp_path / "o" / name).read_text() for name in ("solutions.tex", "key.tex"))
+    assert "Correction" not in solutions and "Source" not in solutions and "lecture notes" not in solutions
+    assert "Sources and corrections to the notes" in key and "Correction} (§6.4.1" in key
+    assert "lecture notes §4.1" in key

@@ -206,6 +206,13 @@ def _worked_solutions(prepared: list[ProblemVariants], contexts: list[dict], hea
     return dict(zip(keys, fragments))
 
 
+def _sources(prepared: list[ProblemVariants]) -> list[dict]:
+    """What the instructor's key says of each problem that has a source or corrections to the notes:
+    neither reaches the students (their solutions, the LMS feedback)."""
+    return [{"title": item.problem.title, "source": item.problem.source, "corrections": list(item.problem.corrections)}
+            for item in prepared if item.problem.source or item.problem.corrections]
+
+
 def _included(problem: str, body: str) -> str:
     r"""A body's free-body diagram as pandoc reads an image ("" for none): its PNG in the figures
     folder, at a path derive.publishing.lms rewrites (with the image's width and alternative text) for each LMS.
@@ -329,7 +336,8 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                         _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, tex=True)),
                         _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
                         _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=keys.tex_rows,
-                                                                   conventions=keys.conventions)),
+                                                                   conventions=keys.conventions,
+                                                                   sources=_sources(prepared))),
                     ]
                     products = list(texs)
                     compiled = texs if "pdf" in formats else []
