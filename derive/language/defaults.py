@@ -105,7 +105,7 @@ def _read(path: Path, table, prefix: str) -> Defaults:
         raise fail("digits", f"expected a whole number from {DIGITS[0]} to {DIGITS[1]}")
     tolerance = table.get("tolerance")
     if tolerance is not None:
-        from derive.language.problem import tolerance_policy
+        from derive.language.ask_options import tolerance_policy
 
         try:
             tolerance = tolerance_policy(tolerance)

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from decimal import ROUND_CEILING, ROUND_FLOOR, Context, Decimal, InvalidOperation, localcontext
+from decimal import ROUND_CEILING, ROUND_FLOOR, Context, Decimal, localcontext
 from functools import cached_property
 from pathlib import Path
 
@@ -25,6 +25,7 @@ from derive.core import expr, library, units
 from derive.numbers import numeric
 from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT, TITLE_LIMIT, TOPIC_LIMIT)
 from derive.core.errors import EngineLimit, ProblemError
+from derive.language import ask_options
 from derive.language.reader import Loader, Reader
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
@@ -350,11 +351,11 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
         result[name] = Ask(
             name, reader.text(spec["meaning"], f"{field}.meaning", MEANING_LIMIT), path, quantity,
             reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False), zero_for,
-            _small(reader, spec.get("small"), f"{field}.small", scene),
-            _shift(reader, spec.get("shift"), f"{field}.shift", quantity),
-            _amplitude(reader, spec.get("amplitude"), f"{field}.amplitude", quantity),
+            ask_options.small(reader, spec.get("small"), f"{field}.small", scene),
+            ask_options.shift(reader, spec.get("shift"), f"{field}.shift", quantity),
+            ask_options.amplitude(reader, spec.get("amplitude"), f"{field}.amplitude", quantity),
             spec.get("exact"),
-            _tolerance(reader, spec.get("tolerance"), f"{field}.tolerance"),
+            ask_options.tolerance(reader, spec.get("tolerance"), f"{field}.tolerance"),
             _state(reader, spec.get("in"), f"{field}.in", scene, quantity, path),
         )
     for name, ask in result.items():
@@ -420,77 +421,6 @@ def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pa
         raise reader.fail(field, f"the state {raw} is just after an impact, which takes no time: ask the time in a "
                                  "state the motion gets to (when:)")
     return raw
-
-
-def _tolerance(reader: Reader, raw, field: str) -> str | None:
-    """`tolerance: 2%` (of the answer) or `tolerance: 0.05` (in the answer's unit): what an
-    LMS accepts around the answer; by default one unit in the last significant digit shown."""
-    try:
-        return tolerance_policy(raw)
-    except ValueError as error:
-        raise reader.fail(field, str(error)) from None
-
-
-def tolerance_policy(raw) -> str | None:
-    """An answer's tolerance as an ask (or the course defaults, derive.language.defaults) gives it: "P%"
-    or a positive amount, normalized; None (not given) stays None; ValueError says what is wrong.
-
-    >>> tolerance_policy("2.50 %"), tolerance_policy(Decimal("0.050")), tolerance_policy(None)
-    ('2.5%', '0.05', None)
-    """
-    if raw is None:
-        return None
-    text = str(raw).strip()
-    amount = text[:-1].strip() if text.endswith("%") else text
-    try:
-        number = Decimal(amount)
-    except InvalidOperation:
-        number = None
-    if isinstance(raw, bool) or number is None or not number.is_finite() or number <= 0:
-        raise ValueError(f"expected a percentage such as 2% or a positive amount in the answer's unit, got {text!r}")
-    if text.endswith("%") and number >= 100:
-        raise ValueError(f"{text} of the answer would accept zero and the wrong sign")
-    if not -300 <= number.adjusted() <= 300:  # 1e-999999999 would be written as 0, 1e999999999 overflow
-        raise ValueError(f"{text} is narrower than the digits any answer shows" if number < 1 else
-                         f"{text} lies outside what an LMS stores (1e-300 to 1e300)")
-    return f"{number.normalize():f}%" if text.endswith("%") else f"{number.normalize():f}"
-
-
-def _shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | tuple[sp.Expr, sp.Expr, sp.Expr] | None:
-    """`shift: [dx, dy]`: the asked axis moved parallel to itself by that vector in the body's frame
-    (a rod along x); `shift: h`: by the distance h, which needs no direction only where the axis
-    passes through the body's center of mass (every direction then gives the same moment: the
-    Solution refuses it elsewhere)."""
-    if raw is None:
-        return None
-    if quantity.kind != "inertia" or quantity.detail is None:
-        raise reader.fail(field, "a shift moves a named inertia axis (give axis: too)")
-    if isinstance(raw, list):
-        dx, dy = reader.vector(raw, field, "m", "a shift", " in the body's frame (x along a rod)")
-        if dx == 0 and dy == 0:
-            raise reader.fail(field, "a shift of [0, 0] moves nothing: leave it out")
-        return (dx, dy, sp.S.Zero)
-    return reader.positive(raw, field, "m", "a shift")
-
-
-def _amplitude(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
-    if (raw is None) != (quantity.kind != "oscillation"):
-        raise reader.fail(field, "oscillation.period needs an amplitude, and only it takes one")
-    return None if raw is None else reader.positive(raw, field, "rad", "an amplitude")
-
-
-def _small(reader: Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ...]:
-    """`small: ball.radius` (or a list): sizes taken to zero in the answer (the notes' r << R)."""
-    if raw is None:
-        return ()
-    result = []
-    for item in raw if isinstance(raw, list) else [raw]:
-        body, _, size = str(item).partition(".")
-        value = scene.bodies[body].sizes.get(size) if body in scene.bodies else None
-        if not isinstance(value, sp.Symbol):
-            raise reader.fail(field, f"{item!r} is not a size of a body (BODY.SIZE, e.g. ball.radius)")
-        result.append(value)
-    return tuple(result)
 
 
 def _conditions(reader: Reader, raw, asks: dict[str, Ask]) -> tuple[Condition, ...]:

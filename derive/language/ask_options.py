@@ -1,0 +1,85 @@
+"""What an ask may say besides what it asks (derive.language.problem reads the rest): the tolerance an
+LMS grades it with, an inertia axis shifted, a pendulum's amplitude, sizes taken to zero.
+
+>>> tolerance_policy("2%")
+'2%'
+"""
+from __future__ import annotations
+
+from decimal import Decimal, InvalidOperation
+
+import sympy as sp
+
+from derive.language.reader import Reader
+from derive.model.scene import Quantity, Scene
+
+
+def tolerance(reader: Reader, raw, field: str) -> str | None:
+    """`tolerance: 2%` (of the answer) or `tolerance: 0.05` (in the answer's unit): what an
+    LMS accepts around the answer; by default one unit in the last significant digit shown."""
+    try:
+        return tolerance_policy(raw)
+    except ValueError as error:
+        raise reader.fail(field, str(error)) from None
+
+
+def tolerance_policy(raw) -> str | None:
+    """An answer's tolerance as an ask (or the course defaults, derive.language.defaults) gives it: "P%"
+    or a positive amount, normalized; None (not given) stays None; ValueError says what is wrong.
+
+    >>> tolerance_policy("2.50 %"), tolerance_policy(Decimal("0.050")), tolerance_policy(None)
+    ('2.5%', '0.05', None)
+    """
+    if raw is None:
+        return None
+    text = str(raw).strip()
+    amount = text[:-1].strip() if text.endswith("%") else text
+    try:
+        number = Decimal(amount)
+    except InvalidOperation:
+        number = None
+    if isinstance(raw, bool) or number is None or not number.is_finite() or number <= 0:
+        raise ValueError(f"expected a percentage such as 2% or a positive amount in the answer's unit, got {text!r}")
+    if text.endswith("%") and number >= 100:
+        raise ValueError(f"{text} of the answer would accept zero and the wrong sign")
+    if not -300 <= number.adjusted() <= 300:  # 1e-999999999 would be written as 0, 1e999999999 overflow
+        raise ValueError(f"{text} is narrower than the digits any answer shows" if number < 1 else
+                         f"{text} lies outside what an LMS stores (1e-300 to 1e300)")
+    return f"{number.normalize():f}%" if text.endswith("%") else f"{number.normalize():f}"
+
+
+def shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | tuple[sp.Expr, sp.Expr, sp.Expr] | None:
+    """`shift: [dx, dy]`: the asked axis moved parallel to itself by that vector in the body's frame
+    (a rod along x); `shift: h`: by the distance h, which needs no direction only where the axis
+    passes through the body's center of mass (every direction then gives the same moment: the
+    Solution refuses it elsewhere)."""
+    if raw is None:
+        return None
+    if quantity.kind != "inertia" or quantity.detail is None:
+        raise reader.fail(field, "a shift moves a named inertia axis (give axis: too)")
+    if isinstance(raw, list):
+        dx, dy = reader.vector(raw, field, "m", "a shift", " in the body's frame (x along a rod)")
+        if dx == 0 and dy == 0:
+            raise reader.fail(field, "a shift of [0, 0] moves nothing: leave it out")
+        return (dx, dy, sp.S.Zero)
+    return reader.positive(raw, field, "m", "a shift")
+
+
+def amplitude(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:
+    if (raw is None) != (quantity.kind != "oscillation"):
+        raise reader.fail(field, "oscillation.period needs an amplitude, and only it takes one")
+    return None if raw is None else reader.positive(raw, field, "rad", "an amplitude")
+
+
+def small(reader: Reader, raw, field: str, scene: Scene) -> tuple[sp.Symbol, ...]:
+    """`small: ball.radius` (or a list): sizes taken to zero in the answer (the notes' r << R)."""
+    if raw is None:
+        return ()
+    result = []
+    for item in raw if isinstance(raw, list) else [raw]:
+        body, _, size = str(item).partition(".")
+        value = scene.bodies[body].sizes.get(size) if body in scene.bodies else None
+        if not isinstance(value, sp.Symbol):
+            raise reader.fail(field, f"{item!r} is not a size of a body (BODY.SIZE, e.g. ball.radius)")
+        result.append(value)
+    return tuple(result)
