@@ -472,7 +472,8 @@ def _shielded(shape: Shape, sizes: dict[str, sp.Expr], *exprs) -> dict[sp.Symbol
     in its density) is that size, and not kept apart: (x + L/2)/L is the rod's own L."""
     same = {shape.sizes[name] for name, value in sizes.items() if value == shape.sizes[name]}
     generic = {M, *shape.sizes.values()} - same
-    found = set().union(*(sp.sympify(e).free_symbols for e in exprs if e is not None))
+    found = set().union(*(sp.sympify(e, strict=True).free_symbols  # safe: parsed sympy or the table's ints; no text
+                          for e in exprs if e is not None))
     return {s: sp.Dummy(s.name, **s.assumptions0) for s in found if s in generic}
 
 
@@ -498,7 +499,8 @@ def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp
     shielded = None if density is None else density.xreplace(shield)
     if offset is not None:
         point, direction = shape.axes[axis] if isinstance(axis, str) else axis
-        axis = (tuple(sp.sympify(p) + sp.sympify(o).xreplace(shield) for p, o in zip(point, offset)), direction)
+        axis = (tuple(sp.sympify(p, strict=True) + sp.sympify(o, strict=True).xreplace(shield)  # safe: no text
+                      for p, o in zip(point, offset)), direction)  # the shape table's coordinates, a parsed offset
     result = moment_of_inertia(shape_name, axis, shielded)
     moment = result.I
     if route == "tensor":
@@ -541,7 +543,8 @@ def off_axis(shape_name: str, axis: str, sizes: dict[str, sp.Expr], density: sp.
     shape = _shape(shape_name)
     point, direction = shape.axes[axis]
     generic = {shape.sizes[name]: value for name, value in sizes.items()}
-    apart = sp.Matrix([sp.sympify(c).xreplace(generic) + o for c, o in zip(point, offset)]) - \
+    apart = sp.Matrix([sp.sympify(c, strict=True).xreplace(generic) + o  # safe: the shape table's, never text
+                       for c, o in zip(point, offset)]) - \
         sp.Matrix(body_center(shape_name, sizes, density))
     n = sp.Matrix(direction) / sp.Matrix(direction).norm()
     return sp.simplify(apart.dot(apart) - apart.dot(n) ** 2)

@@ -40,7 +40,8 @@ def positive_over(expression: sp.Expr, box: dict[sp.Symbol, tuple], strict: bool
     if not expression.free_symbols <= set(box) or not balls.mapped(expression):
         return False
     program = balls.Program([expression])
-    pending = [{s: (sp.sympify(low), sp.sympify(high)) for s, (low, high) in box.items()}]
+    pending = [{s: (sp.sympify(low, strict=True), sp.sympify(high, strict=True))  # safe: parsed ends, never text
+                for s, (low, high) in box.items()}]
     tried = 0
     while pending:
         piece = pending.pop()
