@@ -83,7 +83,7 @@ def reports_errors(command):
 
 
 def _interrupted(interruption: BaseException | None):
-    """Ctrl-C (exit status 130) or SIGTERM (143, derive.errors.Terminated), each as 128 + the
+    """Ctrl-C (exit status 130) or SIGTERM (143, derive.core.errors.Terminated), each as 128 + the
     signal, once the build has cleaned up: one line."""
     if isinstance(interruption, Terminated):
         click.echo("derive: terminated", err=True)
@@ -99,7 +99,7 @@ def _raise_terminated(signum, frame):
 
 @contextlib.contextmanager
 def _sigterm_as_ctrl_c():
-    """SIGTERM raises derive.errors.Terminated in the main thread while the command runs, so that
+    """SIGTERM raises derive.core.errors.Terminated in the main thread while the command runs, so that
     it cleans up as on Ctrl-C (staging and scratch folders removed, every TeX run stopped) instead
     of dying at once."""
     if threading.current_thread() is not threading.main_thread():  # only the main thread handles signals
@@ -343,25 +343,16 @@ def list_problems(topic: str | None, search: str | None) -> None:
     \b
     Examples:
       derive list --topic rolling
-      derive list --search "yo-yo"
-      derive list --topic torque --search pulley
+      derive list --search "wrapped disk"
+      derive list --topic rolling --search loop
     """
     from derive.core import library
     from derive.language import problem
 
-    def words(text: str) -> list[str]:
-        return re.findall(r"[a-z0-9]+", text.lower())
-
-    def holds(found: list[str], word: str) -> bool:
-        """A word of the text, or the start of one for four letters or more (pulley: pulleys)."""
-        return any(w == word or len(word) >= 4 and w.startswith(word) for w in found)
-
-    wanted = words(search) if search else []
     rows = []
     for path in library.problem_files():
         p = problem.load(str(path))
-        found = words(" ".join((p.id.replace("_", " "), p.title, p.question, p.source)))
-        if (topic is None or p.topic == topic) and all(holds(found, w) for w in wanted):
+        if (topic is None or p.topic == topic) and library.matches(search or "", p.id, p.title, p.question, p.source):
             rows.append((p.id, p.topic, p.title))
     if not rows:
         asked = " and ".join(x for x in (topic and f"of topic {topic!r}", search and f"matching {search!r}") if x)

@@ -59,6 +59,19 @@ def templates_dir() -> Path:
     return _data_dir("templates")
 
 
+def matches(search: str, *texts: str) -> bool:
+    """Whether every word of `search` is in the texts (an id's underscores separate words): a whole
+    word, or the start of one for a word of four letters or more (pulley finds pulleys; yo does
+    not find you). `derive list --search`.
+
+    >>> matches("wrapped disk", "string_wrapped_disk"), matches("pulle", "it is pulled"), matches("yo", "you")
+    (True, True, False)
+    """
+    found = re.findall(r"[a-z0-9]+", " ".join(texts).replace("_", " ").lower())
+    return all(any(w == word or len(word) >= 4 and w.startswith(word) for w in found)
+               for word in re.findall(r"[a-z0-9]+", search.lower()))
+
+
 def problem_files() -> list[Path]:
     """Every problem file of the library, sorted by path (sets excluded)."""
     root = problems_dir()

@@ -79,8 +79,9 @@ def write(problem_set: ProblemSet, prepared: list[ProblemVariants], variants: in
     LMS), each general result is marked as left out of the exports (`lms`, and a note: a problem
     all of whose answers are general results is missing from the quiz)."""
     keys = [_ProblemKey(item, with_distractors or choice, choice, lms) for item in prepared]
+    said = conventions(prepared)
     top = Stencil(json_text.dumps({"set": problem_set.id, "title": problem_set.title, "seed": seed,
-                                   "conventions": conventions(prepared), "variants": Raw(hole("variants"))}))
+                                   "conventions": said, "variants": Raw(hole("variants"))}))
     entry = Stencil(json_text.dumps({"variant": Raw(hole("variant")),
                                      "problems": {key.id: Raw(hole(key.id)) for key in keys}},
                                     top.indents["variants"] + "  "))
@@ -98,7 +99,7 @@ def write(problem_set: ProblemSet, prepared: list[ProblemVariants], variants: in
     notes = [f"{problem_id}: ask.{name}, variant{'s' if len(numbers) > 1 else ''} {', '.join(map(str, numbers))}: "
              f"{note}" for (problem_id, name, note), numbers in numerical.items()]
     return Keys(text, header.getvalue() + "".join(csv_rows), tex_rows, notes + [n for key in keys for n in key.left_out],
-                conventions(prepared))
+                said)
 
 
 def _too_few(found: int) -> str:
