@@ -398,9 +398,12 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
 @main.command()
 @click.option("--quick", is_flag=True,
               help="A shorter run: fewer problems, samples and variants; 4 scenes and chains up to n = 3.")
+# The sections of derive.bench.runs.SECTIONS (not imported here: the command line starts without sympy)
 @click.option("--only", type=click.Choice(["startup", "derivations", "backends", "answer_key", "set_rate", "sheet",
-                                           "mechanics_alone", "work_precision", "engines"]),
-              default=None, help="Run one section (engines: derive against sympy.physics.mechanics).")
+                                           "mechanics_alone", "work_precision", "engines", "solution_length"]),
+              default=None,
+              help="Run one section (engines: derive against sympy.physics.mechanics; solution_length: the "
+                   "displayed equations of every worked solution).")
 @click.option("--json", "as_json", is_flag=True,
               help="Print the engines section's figures as one JSON document on stdout (the other "
                    "sections' lines and the progress go to stderr).")

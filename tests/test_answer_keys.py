@@ -28,20 +28,22 @@ def _whole(problem_set, prepared, count, seed, with_distractors, choice):
         entry = {"variant": number, "problems": {}}
         for item in prepared:
             draw = item.draws[number - 1]
-            certified, tolerances = item.certified(draw), item.tolerances(draw)
+            certified, tolerances, directions = item.certified(draw), item.tolerances(draw), item.directions(draw)
             answers = {}
             for name, ask in item.problem.asks.items():
                 value = certified[name]
                 answers[name] = {"value": value and value.text, "tolerance": tolerances[name],
                                  "expr": item.expression_texts[name], "unit": ask.unit, "meaning": ask.meaning,
                                  "certificate": value and value.certificate()}
+                if item.solution.senses[name] is not None:
+                    answers[name]["direction"] = directions[name]
                 if with_distractors or choice:
                     wrong = item.wrong(draw)[name]
                     answers[name]["distractors"] = wrong
                     if choice and value is not None and len(wrong) < distractors.WANTED:
                         answers[name]["numerical"] = answer_keys._too_few(len(wrong))
                 rows.append([number, item.problem.id, name, value.text if value else item.expression_texts[name],
-                             tolerances[name] or "", units.unicode_unit(ask.unit), ask.meaning])
+                             tolerances[name] or "", units.unicode_unit(ask.unit), ask.meaning, directions[name] or ""])
             entry["problems"][item.problem.id] = {
                 "parameters": {n: {"value": numeric.significant(draw[n], p.sig_figs), "unit": p.unit}
                                for n, p in item.problem.parameters.items()},

@@ -35,7 +35,7 @@ def test_check_command_prints_a_table_and_passes(derive):
 def test_check_command_fails_with_exit_1(tmp_path):
     library = copy_library(tmp_path)
     disk = library / "torque" / "string_wrapped_disk.yaml"
-    disk.write_text(disk.read_text().replace("unit: m/s^2}", "unit: m/s}"))
+    disk.write_text(disk.read_text().replace("block.acceleration.y, unit: m/s^2,", "block.acceleration.y, unit: m/s,"))
     done = run_derive("check", "string_wrapped_disk", library=library)
     assert done.returncode == 1
     assert "0 passed, 1 failed" in done.stdout and "FAILED string_wrapped_disk" in done.stdout

@@ -15,7 +15,7 @@ import pytest
 from conftest import ROOT, run_derive, write_problem
 from derive.text.latex import latex_of, tex_escape
 from derive.language import problem
-from derive.publishing import worksheets
+from derive.publishing import variants, worksheets
 from derive.solution.answers import Solution
 from derive.publishing.figure.free_body import free_bodies
 from test_library_sheet import _overfull
@@ -182,12 +182,21 @@ def test_the_solutions_show_each_diagram_after_its_step_and_compile_with_nothing
     built = worksheets.build(list(PROBLEMS.values()), out_dir=str(tmp_path / "set"), formats=frozenset({"pdf"}))
     tex = next(p for p in built if p.name == "solutions.tex")
     text = tex.read_text()
+    appendix = text.index("\\appendix")
+    students = 0
     for name, (solution, diagrams) in drawn.items():
+        title = text.index(tex_escape(solution.problem.title))
+        student = variants.ProblemVariants(solution.problem, solution, []).student_free_bodies
+        steps = {id(s): s for section in solution.student_steps.values() for s in section}
+        for step_id, diagram in student.items():  # beside the student's balance, before the results
+            after = text.index(tex_escape(steps[step_id].text), title)
+            assert text.index(diagram.tikz, after) < text.index("\\subsection*{Results}", after), (name, step_id)
+        students += len(student)
+        proof = text.index(tex_escape(solution.problem.title), appendix)  # the proof by two routes, in the appendix
         for body, diagram in diagrams.items():
             heading = next(s.text for s in solution.derivations["newton_euler"].steps if s.body == body)
-            after = text.index(tex_escape(heading), text.index(tex_escape(solution.problem.title)))
-            assert text.index(diagram.tikz, after) < text.index("\\subsection*{Results}", after), (name, body)
-    assert text.count("\\begin{tikzpicture}") == len(PROBLEMS) + sum(len(d) for _, d in drawn.values())
+            assert text.index(diagram.tikz, text.index(tex_escape(heading), proof)) > appendix, (name, body)
+    assert text.count("\\begin{tikzpicture}") == len(PROBLEMS) + students + sum(len(d) for _, d in drawn.values())
     assert (tmp_path / "set" / "solutions.pdf").read_bytes().startswith(b"%PDF")
     assert _overfull(tex, tmp_path) == []
 
@@ -197,7 +206,7 @@ def test_the_handout_shows_the_diagrams_and_compiles_with_nothing_off_the_page(d
     assert done.returncode == 0, done.stderr
     tex = tmp_path / "h" / "rolling_incline.tex"
     text = tex.read_text()
-    newton_euler = text.index("\\section*{Newton")
+    newton_euler = text.index("\\subsection*{Newton")  # the proof by two routes, after the student's route
     for diagram in drawn["rolling_incline"][1].values():
         assert text.index(diagram.tikz) > newton_euler
     assert _overfull(tex, tmp_path) == []
@@ -211,8 +220,8 @@ def test_the_lms_feedback_shows_the_diagrams_as_images_not_tikz(drawn, tmp_path)
     built = worksheets.build(["string_wrapped_disk"], out_dir=str(tmp_path / "lms"), formats=frozenset({"moodle"}))
     xml = next(p for p in built if p.name == "moodle.xml").read_text()
     feedback = html.unescape(re.search(r"<generalfeedback format=\"html\">\s*<text>(.*?)</text>", xml, re.S)[1])
-    heading = next(s.text for s in solution.derivations["newton_euler"].steps if s.body == "block")
-    assert heading.split(" (")[0] in feedback
+    heading = next(s.text for section in solution.student_steps.values() for s in section if s.body == "block")
+    assert heading.replace("'", "’") in " ".join(feedback.split())
     assert "tikzpicture" not in xml and "draw[force]" not in xml
     centered = re.findall(r'<div class="center">(.*?)</div>', feedback, re.S)
     assert len(centered) == 2 and all("<img " in block for block in centered)  # the disk's and the block's

@@ -1,4 +1,4 @@
-"""Free-body diagrams in the LMS feedback: each body's diagram from the Newton–Euler route, an image
+"""Free-body diagrams in the LMS feedback: each body's diagram beside its balance in the student's route, an image
 of the worked solution in both exports (a base64 PNG <file> of Moodle's general feedback, a listed
 file of the Canvas zip), drawn once per problem however many variants show it."""
 import base64
@@ -21,9 +21,19 @@ WITHOUT = "kepler_orbit"  # an orbit: the radial equation by Lagrange and by New
 
 
 def _balances(problem: str) -> dict[str, str]:
-    """Each body's Newton–Euler balance step, by body: its text names the forces on it."""
+    """Each body's first balance step in the student's route (which the LMS feedback shows), by body."""
     solution = Solution(load(problem))
-    return {s.body: s.text for s in solution.derivations["newton_euler"].steps if s.body}
+    result = {}
+    for step in (s for section in solution.student_steps.values() for s in section if s.body):
+        result.setdefault(step.body, step.text)
+    return result
+
+
+def _forces(problem: str) -> dict[str, list[str]]:
+    """The forces on each body, as its Newton–Euler balance step names them ("tension of string, weight")."""
+    solution = Solution(load(problem))
+    return {s.body: s.text.partition("(")[2].rstrip(")").split(", ")
+            for s in solution.derivations["newton_euler"].steps if s.body}
 
 
 @pytest.fixture(scope="module")
@@ -71,7 +81,7 @@ def test_each_moodle_feedback_shows_a_png_diagram_per_body_from_a_file_of_its_ow
             assert data.startswith(PNG) and image_kind(data) == "png"
             alt = img.get("alt")
             assert alt.startswith(f"Free-body diagram of the {body}: ")
-            named = balances[body].partition("(")[2].rstrip(")").split(", ")  # "reaction of axle, ..., weight"
+            named = _forces(WITH)[body]  # "reaction of axle, ..., weight"
             assert named and all(f"the {force}, " in alt for force in named), (alt, named)
             assert not set(alt) & set("*_^"), alt  # words and math as read aloud ("the weight, M g"), not code
             assert int(img.get("width")) > 0
@@ -81,10 +91,11 @@ def test_each_moodle_feedback_shows_a_png_diagram_per_body_from_a_file_of_its_ow
 
 def test_the_diagram_follows_its_bodys_balance_in_the_feedback(built):
     feedback = " ".join(_moodle(built[0])[WITH][0].findtext("generalfeedback/text").split())  # pandoc wraps lines
-    for body, text in _balances(WITH).items():
-        balance = feedback.index(text.split(" (")[0])
+    balances = _balances(WITH)
+    for body, text in balances.items():
+        balance = feedback.index(text.split(" (")[0].replace("'", "’"))
         diagram = feedback.index(f"{WITH}-free-body-{body}.png")
-        later = [feedback.find(f"Forces and torques on the {other}", balance + 1) for other in _balances(WITH)]
+        later = [feedback.find(other.split(" (")[0].replace("'", "’"), balance + 1) for other in balances.values()]
         assert balance < diagram < min([i for i in later if i > balance] + [len(feedback)])
 
 
@@ -120,7 +131,8 @@ def test_the_canvas_zip_holds_and_lists_every_diagram_its_feedback_shows(built):
 
 def test_diagrams_are_drawn_and_compiled_once_per_problem_not_per_variant(built):
     _, drawn, compiled = built
-    assert drawn.count(WITH) == 1 and drawn.count(WITHOUT) == 0  # the orbit has no Newton–Euler balances
+    # once for the student's route (forces drawn the way they act), once for the proof's Newton–Euler balances
+    assert drawn.count(WITH) == 2 and drawn.count(WITHOUT) == 0  # the orbit has no Newton–Euler balances
     diagrams = [n for n in compiled if "-free-body-" in n]
     assert sorted(diagrams) == sorted(f"{WITH}-free-body-{body}" for body in _balances(WITH))
 

@@ -195,15 +195,18 @@ def test_spring_says_its_energy_and_its_pull():
 
 
 def test_solutions_and_handout_print_the_sentences():
-    """The sheet's worked solutions (before each step) and the handout (under each step's heading),
-    and so pandoc's HTML, Markdown and DOCX made from the same LaTeX, print the parts' sentences."""
+    """The sheet's worked solutions (before each step, in the proof by two routes of the appendix) and
+    the handout (its proof), and so pandoc's HTML, Markdown and DOCX made from the same LaTeX, print the
+    parts' sentences."""
     problem = load("string_wrapped_disk")
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
     context = worksheets._solutions_context(variants.ProblemVariants(problem, Solution(problem), [middle]), siunitx=True)
     handout = render.render("handout.tex.j2", problem={**context, "limits": [], "example": {"given": [], "results": []}},
                             question="")
-    sheet = render.render("solutions.tex.j2", problems=[context],
+    sheet = render.render("solutions.tex.j2", problems=[context], verification=True,
                           set=SimpleNamespace(title="Week 9", course="Mechanics", due="Friday"))
+    # the student's route comes first; the routes, with the parts' sentences, are the proof after it
+    assert context["verification"] and "Forces and torques along the motion" in sheet.split("\\appendix")[0]
     for tex in (handout, sheet):
         assert r"The cord string pulls the disk along its run with the tension $T_{\mathrm{string}}$" in tex
         assert tex.index("The axle holds the disk's center in place") < tex.index(r"K &=")  # before the energies

@@ -38,6 +38,7 @@ from derive.core import library
 from derive.numbers import numeric
 from derive.solution.answers import Solution
 from derive.bench.engines import engines
+from derive.bench.solution_length import solution_length
 from derive.publishing.progress import Reporter
 
 
@@ -478,7 +479,7 @@ def sheet_build(say, with_pdfs: bool) -> None:
 
 #: The sections of `derive bench`, in order (`--only` runs one).
 SECTIONS = ("startup", "derivations", "backends", "answer_key", "set_rate", "sheet", "mechanics_alone", "work_precision",
-            "engines")
+            "engines", "solution_length")
 
 
 def run(say, quick: bool = False, only: str | None = None, note=None, **engine_options) -> dict:
@@ -504,6 +505,8 @@ def run(say, quick: bool = False, only: str | None = None, note=None, **engine_o
         mechanics_alone(say)
     if wanted("work_precision"):
         work_precision(say)
+    if only == "solution_length" or only is None and not quick:
+        solution_length(say)
     if wanted("engines"):
         return engines(say, note or say, quick=quick, **engine_options)
     return {}

@@ -191,10 +191,11 @@ def _answer(solution, report: SimulationReport, name: str, carried: dict, took: 
         scale = float(np.max(np.abs(solved)))
     if ask.magnitude:
         simulated = abs(simulated)
-    expected = _float(solution.expressions[name], values)
+    exact = solution.expressions[name] if ask.magnitude else solution.signed(name)  # what is simulated
+    expected = _float(exact, values)
     # an answer exactly zero (the kinetic energy where a motion from rest stops) against the float
     # noise of the simulated state: 1e-20 in SI, far below any mechanics a scene holds
-    floor = 1e-20 if solution.expressions[name] == 0 else 1e-300
+    floor = 1e-20 if exact == 0 else 1e-300
     if abs(simulated - expected) > ANSWER_TOLERANCE * (abs(expected) + scale) + floor:
         report.fail(f"{name}: simulation {simulated:.10g}, closed form {expected:.10g} (in the state {state})")
     report.compared.append(name)

@@ -223,18 +223,18 @@ def check(solution: Solution, duration: float = 1.0) -> SimulationReport:
             continue  # read in a state, not at release: derive.checks.chain_simulation's, from the simulated state
         if q.kind in ("acceleration", "angular_acceleration"):
             simulated = mean_acceleration(q.target, q.detail if q.kind == "acceleration" else "theta")
-            compare(report, name, simulated, solution.expressions[name], values)
+            compare(report, name, simulated, solution.signed(name), values)
         elif q.kind == "contact" and q.detail == "acceleration.down_incline":
             down = solution.scene.surfaces[solution.scene.contact_of(q.target).surface].down.xreplace(values)
             simulated = float(down[0]) * mean_acceleration(q.target, "x") + float(down[1]) * mean_acceleration(q.target, "y")
-            compare(report, name, simulated, solution.expressions[name], values)
+            compare(report, name, simulated, solution.signed(name), values)
         elif q.kind == "small_oscillation" and q.detail.endswith(("omega", "period")):
             period = _small_period(solution, rhs, values, q.detail)
             compare(report, name, period if q.detail.endswith("period") else 2 * np.pi / period,
-                     solution.expressions[name], values)
+                     solution.signed(name), values)
         elif q.kind == "oscillation":
             amplitude = float(sp.N(ask.amplitude.xreplace(values)))
-            compare(report, name, _period(solution, rhs, values, amplitude), solution.expressions[name], values)
+            compare(report, name, _period(solution, rhs, values, amplitude), solution.signed(name), values)
     return report
 
 

@@ -262,3 +262,23 @@ def radicals(expr, placed: tuple[sp.Expr, ...] = ()):
              if a.exp.is_Rational and not a.exp.is_Integer and _rational_trigonometric(a.base)}
     expr = expr.xreplace(roots)
     return expr.xreplace({a: _unsigned(a.args[0], placed) for a in expr.atoms(sp.Abs)})
+
+
+def leading_plus(expr: sp.Expr) -> sp.Expr:
+    """`expr` written without a leading minus where one of its factors is a sum whose terms can
+    take it: g (m2 - m1 sin(theta))/(m1 + m2), not -g (m1 sin(theta) - m2)/(m1 + m2). The form a
+    teacher writes a positive quantity in (tidy leaves the minus outside: sympy's canonical order).
+
+    >>> a, b, c = sp.symbols("a b c", positive=True)
+    >>> leading_plus(-c * (a - b)), leading_plus(-a * b)
+    (c*(-a + b), -a*b)
+    """
+    if not expr.could_extract_minus_sign():
+        return expr
+    numerator, denominator = sp.fraction(sp.together(expr))
+    coefficient, factors = numerator.as_coeff_mul()
+    for i, factor in enumerate(factors):
+        if factor.is_Add:
+            turned = sp.Add(*(-term for term in factor.args), evaluate=False)
+            return sp.Mul(-coefficient, *factors[:i], turned, *factors[i + 1:]) / denominator
+    return expr

@@ -11,6 +11,7 @@ from decimal import Decimal, InvalidOperation
 import sympy as sp
 
 from derive.language.reader import Reader
+from derive.model.directions import directional
 from derive.model.scene import Quantity, Scene
 
 
@@ -46,6 +47,27 @@ def tolerance_policy(raw) -> str | None:
         raise ValueError(f"{text} is narrower than the digits any answer shows" if number < 1 else
                          f"{text} lies outside what an LMS stores (1e-300 to 1e300)")
     return f"{number.normalize():f}%" if text.endswith("%") else f"{number.normalize():f}"
+
+
+def sign(reader: Reader, raw, field: str, quantity: Quantity, question) -> str | None:
+    """`sign: y up`: the sign convention the question states for a quantity with a direction, in the
+    question's own words (which the question must contain): the answer is then the signed component.
+    Without it such a quantity is answered as its magnitude, with its direction in words
+    (derive.model.directions), so that no student is graded wrong for a sign nothing told them."""
+    if raw is None:
+        return None
+    text = reader.text(raw, field, 80)
+    if not directional(quantity):
+        raise reader.fail(field, "only a quantity with a direction (a component, a rotation, a friction, a change "
+                                 "of energy) takes a sign convention")
+    if _plain(text) not in _plain(str(question)):
+        raise reader.fail(field, f"the question must state the sign convention: it does not say {text!r}")
+    return text
+
+
+def _plain(text: str) -> str:
+    """Text compared for a stated convention: lower case, no math dollars or braces, spaces collapsed."""
+    return " ".join(text.lower().replace("$", " ").replace("{", " ").replace("}", " ").split())
 
 
 def shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | tuple[sp.Expr, sp.Expr, sp.Expr] | None:

@@ -167,6 +167,7 @@ class Ask:
     exact: str | None = None  # this ask approximates that one
     tolerance: str | None = None  # "2%" or an absolute amount in `unit`; None: the last digit shown
     state: str | None = None  # read in this state of the scene (`in:`); None: the placement at rest
+    sign: str | None = None  # the sign convention the question states (`sign:`); None: a magnitude and a direction
 
 
 @dataclass(frozen=True)
@@ -322,7 +323,7 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
 
 
 
-def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -> dict[str, Ask]:
+def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], raw_question) -> dict[str, Ask]:
     raw = reader.mapping(raw, "ask", free=True)
     if not raw:
         raise reader.fail("ask", "a problem asks for at least one quantity")
@@ -334,7 +335,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
                               optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift", "amplitude",
-                                        "exact", "tolerance", "in"))
+                                        "exact", "tolerance", "in", "sign"))
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -357,6 +358,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter]) -
             spec.get("exact"),
             ask_options.tolerance(reader, spec.get("tolerance"), f"{field}.tolerance"),
             _state(reader, spec.get("in"), f"{field}.in", scene, quantity, path),
+            ask_options.sign(reader, spec.get("sign"), f"{field}.sign", quantity, raw_question),
         )
     for name, ask in result.items():
         if ask.exact is not None and (ask.exact not in result or ask.exact == name):
@@ -469,7 +471,7 @@ def parse(text: str, path: Path) -> Problem:
     parameters = _parameters(reader, raw["parameters"])
     reader.used = set()
     scene = read_scene(reader, raw["scene"])
-    asks = _asks(reader, raw["ask"], scene, parameters)
+    asks = _asks(reader, raw["ask"], scene, parameters, raw["question"])
     conditions = _conditions(reader, raw.get("conditions"), asks)
     _check_used(reader, raw, scene, asks, parameters, conditions)
     corrections = raw.get("corrections") or []

@@ -125,6 +125,12 @@ class Contact(Part):
         turned = coords.angle(self.body) - (coords.angle(self.carrier) if self.carrier else 0)
         return surface.arc(center, radius) + radius * turned
 
+    def friction_direction(self, coords) -> sp.Matrix:
+        """The direction friction acts along where its unknown is positive: the surface's tangent where
+        the body touches it (derive.model.directions words it)."""
+        surface, center, radius = self._geometry(coords)
+        return surface.tangent_at(center, radius)
+
     def _kinetic_force(self, coords) -> sp.Matrix:
         surface, center, radius = self._geometry(coords)
         return self.kinetic * self.direction * self.unknowns()["normal"] * surface.tangent_at(center, radius)

@@ -1,8 +1,9 @@
 """A set's answer keys: key.json, key.csv and the rows of key.tex.
 
 key.json records each variant's parameters and answers (the value, its tolerance, the
-expression, the unit, the meaning and the certificate of its digits, derive.numbers.numeric); key.csv
-and key.tex give one row per answer. Every variant's part has the same layout with other values
+expression, the unit, the meaning and the certificate of its digits, derive.numbers.numeric; for a
+quantity with a direction, its value a magnitude, the direction in words: derive.model.directions);
+key.csv and key.tex give one row per answer. Every variant's part has the same layout with other values
 in it, so each problem's layout is written once, by the JSON writer, the CSV writer and the
 key-row template, with holes where a variant's values go (derive.text.stencil), and each variant
 fills them: a key of 300 variants costs a join per problem and variant, not a pass of each
@@ -20,7 +21,7 @@ writer (issue 17). The text is that the writers would give (tests/keys holds key
 ...     item.answers(item.draws[0])["a"]
 True
 >>> keys.csv.splitlines()[0]
-'variant,problem,answer,value,tolerance,unit,meaning'
+'variant,problem,answer,value,tolerance,unit,meaning,direction'
 """
 from __future__ import annotations
 
@@ -51,7 +52,8 @@ def conventions(prepared: list[ProblemVariants]) -> str:
     (a key of answers in degrees said "angles in radians")."""
     asks = (ask for item in prepared for ask in item.problem.asks.values())
     return CONVENTIONS if all(units.si_factor(units.parse_unit(ask.unit)) == 1 for ask in asks) else OWN_UNITS
-CSV_FIELDS = ("variant", "problem", "answer", "value", "tolerance", "unit", "meaning")
+#: `direction`: which way a quantity with a direction points, its value the magnitude (derive.model.directions).
+CSV_FIELDS = ("variant", "problem", "answer", "value", "tolerance", "unit", "meaning", "direction")
 
 
 @dataclass(frozen=True)
@@ -122,9 +124,9 @@ class _ProblemKey:
         self.with_distractors, self.choice, self.lms = with_distractors, choice, lms
         self._entries: dict[tuple, Stencil] = {}
         # the names of the holes (below) of each parameter, and each answer's: v value, t tolerance,
-        # r and b the radius and bits of its certificate, d its distractors
+        # r and b the radius and bits of its certificate, d its distractors, w its direction in words
         self._parameter_holes = [f"p:{name}" for name in item.problem.parameters]
-        self._answer_holes = [tuple(f"{kind}:{name}" for kind in "vtrbd") for name in item.problem.asks]
+        self._answer_holes = [tuple(f"{kind}:{name}" for kind in "vtrbdw") for name in item.problem.asks]
 
     def entry(self, number: int, indent: str, numerical: dict) -> str:
         """The problem's entry in variant `number` of key.json, written at `indent`; an answer asked
@@ -139,8 +141,10 @@ class _ProblemKey:
         stencil = self._entries.get(layout) or self._entries.setdefault(layout, self._entry(*layout))
         values = {hole_name: encode_basestring(text) for hole_name, text in zip(self._parameter_holes,
                                                                                item.numbers[number - 1].values())}
-        tolerances = item.tolerances(draw)
-        for (name, value), (v, t, r, b, d) in zip(certified.items(), self._answer_holes):
+        tolerances, directions = item.tolerances(draw), item.directions(draw)
+        for (name, value), (v, t, r, b, d, w) in zip(certified.items(), self._answer_holes):
+            if item.solution.senses[name] is not None:
+                values[w] = _string(directions[name])
             if value is not None:
                 values[v], values[t] = encode_basestring(value.text), _string(tolerances[name])
                 if value.method == "ball":
@@ -164,6 +168,8 @@ class _ProblemKey:
                       "expr": self.item.expression_texts[name], "unit": ask.unit, "meaning": ask.meaning,
                       "certificate": None if general else {"method": method} if method != "ball" else
                       {"method": "ball", "radius": Raw(hole(f"r:{name}")), "bits": Raw(hole(f"b:{name}"))}}
+            if self.item.solution.senses[name] is not None:  # its value is a magnitude: which way it points
+                answer["direction"] = Raw(hole(f"w:{name}"))
             if self.with_distractors:
                 answer["distractors"] = Raw(hole(f"d:{name}"))
             if name in numerical:
@@ -178,8 +184,10 @@ class _ProblemKey:
         """The problem's rows of key.csv in variant `number`: a value and a tolerance are decimals,
         which a CSV writer neither quotes nor marks (spreadsheet.safe_cell)."""
         item = self.item
-        answers, tolerances = item.answers(item.draws[number - 1]), item.tolerances(item.draws[number - 1])
-        return [stencil.fill({"variant": str(number), "value": answers[name] or "", "tolerance": tolerances[name] or ""})
+        draw = item.draws[number - 1]
+        answers, tolerances, directions = item.answers(draw), item.tolerances(draw), item.directions(draw)
+        return [stencil.fill({"variant": str(number), "value": answers[name] or "", "tolerance": tolerances[name] or "",
+                              "direction": directions[name] or ""})
                 for name, stencil in self._csv_stencils.items()]
 
     @cached_property
@@ -193,7 +201,7 @@ class _ProblemKey:
             row = {"variant": hole("variant"), "problem": self.id, "answer": name,
                    "value": self.item.expression_texts[name] if name in general else hole("value"),
                    "tolerance": "" if name in general else hole("tolerance"),
-                   "unit": units.unicode_unit(ask.unit), "meaning": ask.meaning}
+                   "unit": units.unicode_unit(ask.unit), "meaning": ask.meaning, "direction": hole("direction")}
             csv.writer(buffer, lineterminator="\n").writerow([safe_cell(row[f]) for f in CSV_FIELDS])
             stencils[name] = Stencil(buffer.getvalue())
         return stencils
@@ -201,8 +209,10 @@ class _ProblemKey:
     def tex_rows(self, number: int) -> list[str]:
         """The problem's rows of key.tex in variant `number`."""
         item = self.item
-        answers, tolerances = item.answers(item.draws[number - 1]), item.tolerances(item.draws[number - 1])
+        draw = item.draws[number - 1]
+        answers, tolerances, directions = item.answers(draw), item.tolerances(draw), item.directions(draw)
         return [stencil.fill({"variant": str(number), "value": item.shown(name, answers[name]),
+                              "direction": f" {directions[name]}" if directions[name] else "",
                               "tolerance": "" if tolerances[name] is None else f"${number_latex(tolerances[name].lower())}$"})
                 for name, stencil in self._tex_stencils.items()]
 
@@ -214,7 +224,7 @@ class _ProblemKey:
         return {name: Stencil(render.render("key-row.tex.j2", variant=hole("variant"), problem=self.id,
                                             symbol=symbol_latex(name), value=f"${hole('value')}$",
                                             tolerance=None if name in general else hole("tolerance"),
-                                            unit=units.siunitx_unit(ask.unit)))
+                                            unit=units.siunitx_unit(ask.unit), direction=hole("direction")))
                 for name, ask in self.item.problem.asks.items()}
 
     @property

@@ -106,13 +106,26 @@ def _multiple_choice(item: Item, k: int) -> tuple[str, str, etree._Element, etre
             {f"choice{n}": why for n, (_, _, why) in enumerate(options) if why})
 
 
-def _qti_item(item: Item, k: int, ident: str, figure: str = "", solution: str = "") -> etree._Element:
+def _direction(item: Item) -> tuple[str, str, etree._Element, etree._Element, dict[str, str]]:
+    """(question type, prompt, response, correct condition, feedback by choice: none): which way the
+    quantity points, one of the ways it can (`Item.senses`), where they differ between variants."""
+    labels = (QTI.response_label(QTI.material(QTI.mattext(sense, texttype="text/plain")), ident=f"choice{n}")
+              for n, sense in enumerate(item.senses))
+    response = QTI.response_lid(QTI.render_choice(*labels), ident="response1", rcardinality="Single")
+    right = item.senses.index(item.direction)
+    return ("multiple_choice_question", f"{item.meaning}: which way does it point?", response,
+            QTI.varequal(f"choice{right}", respident="response1"), {})
+
+
+def _qti_item(item: Item, k: int, ident: str, figure: str = "", solution: str = "",
+              direction: bool = False) -> etree._Element:
     """A Canvas item: its question type and points, the question's HTML (with the problem's
     `figure`, HTML), the response (numerical in the question's unit 10^-k UNIT), its scoring and
     the worked solution (`solution`, HTML: the item's, its images resolved) as general feedback; a
     wrong choice's feedback (`{choice}_fb`, as text2qti writes it and Canvas's
     assessment_item_converter reads it) names its mistake."""
-    kind, prompt, response, condition, mistaken = _multiple_choice(item, k) if item.wrong else _numerical(item, k)
+    kind, prompt, response, condition, mistaken = (_direction(item) if direction else _multiple_choice(item, k)
+                                                   if item.wrong else _numerical(item, k))
     text = _paragraphs(_mathjax(item.question)) + figure + _paragraphs(prompt)
     scoring = [QTI.respcondition(QTI.conditionvar(condition), QTI.setvar("100", action="Set", varname="SCORE"),
                                  {"continue": "No"})]
@@ -135,7 +148,7 @@ def _qti_item(item: Item, k: int, ident: str, figure: str = "", solution: str = 
         QTI.resprocessing(QTI.outcomes(QTI.decvar(maxvalue="100", minvalue="0", varname="SCORE", vartype="Decimal")),
                           *scoring),
         *feedback,
-        ident=ident, title=f"{item.problem} v{item.variant} {item.name}")
+        ident=ident, title=f"{item.problem} v{item.variant} {item.name}{' direction' if direction else ''}")
 
 
 def qti(items: list[Item], title: str, set_id: str, seed: int, figures: Mapping[str, Image] = {}) -> bytes:
@@ -168,9 +181,18 @@ def qti(items: list[Item], title: str, set_id: str, seed: int, figures: Mapping[
             ident=identifier("group", set_id, seed, problem, name),
             title=f"{group[0].title}: {group[0].meaning}"[:GROUP_TITLE_LIMIT])
         for (problem, name), group in groups.items() for k in [_exponent(group, "qti")]]
+    sections += [  # where the way a quantity points differs between variants, a group that asks it
+        QTI.section(
+            QTI.selection_ordering(QTI.selection(QTI.selection_number("1"),
+                                                 QTI.selection_extension(QTI.points_per_item(str(POINTS))))),
+            *(_qti_item(i, 0, identifier("item", set_id, seed, problem, i.variant, name, "direction"),
+                        shown.get(problem, ""), solutions[i.solution], direction=True) for i in group),
+            ident=identifier("group", set_id, seed, problem, name, "direction"),
+            title=f"{group[0].title}: {group[0].meaning}, direction"[:GROUP_TITLE_LIMIT])
+        for (problem, name), group in groups.items() if group[0].senses]
     assessment = QTI.questestinterop(QTI.assessment(QTI.section(*sections, ident="root_section"),
                                                     ident=quiz, title=title))
-    points = str(POINTS * len(groups))
+    points = str(POINTS * len(sections))
     meta = CANVAS.quiz(
         CANVAS.title(title), CANVAS.description(""), CANVAS.shuffle_answers("false"),
         CANVAS.scoring_policy("keep_highest"), CANVAS.quiz_type("assignment"), CANVAS.points_possible(points),

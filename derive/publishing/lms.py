@@ -80,6 +80,8 @@ class Item:
     wrong: tuple[str, ...] = ()  # wrong choices (multiple choice); none: a numerical question
     solution: str = ""  # the variant's worked solution, HTML with MathJax math: the general feedback
     mistakes: tuple[str, ...] = ()  # what gives each wrong choice (distractors): its feedback
+    direction: str = ""  # which way it points, its value the magnitude (derive.model.directions); "" none
+    senses: tuple[str, ...] = ()  # the ways it can point, where they differ between variants: asked too
 
 
 def tolerance(value: str, policy: str | None = None) -> str:
@@ -344,7 +346,8 @@ def _label(item: Item) -> str:
     >>> _label(Item("p", "P", 1, "", "Omega_fast", "fast precession rate", "1.5", "rad/s", "0.1"))
     'fast precession rate: \\(\\Omega_{\\mathrm{fast}}\\)'
     """
-    return f"{item.meaning}: \\({symbol_latex(item.name)}\\)"
+    magnitude = ", its magnitude" if item.direction and "magnitude" not in item.meaning else ""
+    return f"{item.meaning}{magnitude}: \\({symbol_latex(item.name)}\\)"
 
 
 def _cloze(item: Item, k: int) -> str:
@@ -356,10 +359,24 @@ def _cloze(item: Item, k: int) -> str:
     """
     if not item.wrong:
         value, margin = scaled(item.value, item.tolerance, k)
-        return _with_unit(f"{{1:NUMERICAL:={value}:{margin}}}", scaled_unit(item.unit, k))
+        return _with_unit(f"{{1:NUMERICAL:={value}:{margin}}}", scaled_unit(item.unit, k)) + _direction_field(item)
     options = "~".join(f"{'=' if right else '%0%'}{_cloze_text(choice_text(v, item.unit, k))}"
                        + (f"#{_cloze_text(why)}" if why else "") for v, right, why in choices(item))
-    return f"{{1:MULTICHOICE_V:{options}}}"
+    return f"{{1:MULTICHOICE_V:{options}}}" + _direction_field(item)
+
+
+def _direction_field(item: Item) -> str:
+    """Where the way a quantity points differs between variants, a second cloze field asks it: a
+    drop-down of the ways (`Item.senses`), the right one marked.
+
+    >>> _direction_field(Item("p", "P", 1, "", "f", "friction", "2.1", "N", "0.1", direction="up the slope",
+    ...                       senses=("down the slope", "up the slope")))
+    ', {1:MULTICHOICE:%0%down the slope~=up the slope}'
+    """
+    if not item.senses:
+        return ""
+    return ", {1:MULTICHOICE:" + "~".join(f"{'=' if sense == item.direction else '%0%'}{_cloze_text(sense)}"
+                                         for sense in item.senses) + "}"
 
 
 #: Characters written as numeric character references in Moodle's question HTML. Until the HTML

@@ -22,6 +22,7 @@ from derive.publishing import notation
 from derive.numbers import numeric
 from derive.core import units
 from derive.text.terminal import indented, pretty
+from derive.solution import answer_signs
 from derive.solution.answers import Solution
 from derive.mechanics.derivation import at_state
 from derive.model.scene import DYNAMIC_KINDS
@@ -102,6 +103,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
             "latex": latex_of(expression),
             "unit": ask.unit,
             "value": numbers[name],
+            "direction": answer_signs.direction(solution, name, values),
         }
     for name, ask in problem.asks.items():
         if ask.exact is not None:  # an approximation: its relative error at these parameters
@@ -184,7 +186,7 @@ def as_text(result: dict, solution: Solution) -> str:
         value = f" = {a['value']}{' ' + unit if unit else ''}" if a["value"] is not None else \
             (f"  [{unit}]" if unit else "")
         lines += indented(pretty(sp.Symbol(name), " = ", solution.expression(name), value))
-        lines.append(f"    ({a['meaning']})")
+        lines.append(f"    ({a['meaning']}{', ' + a['direction'] if a.get('direction') else ''})")
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:
             lines.append(f"    approximates {a['approximation']['exact']}: relative error "
                          f"{a['approximation']['relative_error']}")

@@ -30,6 +30,7 @@ from derive.publishing import distractors, lms
 from derive.text import latex_safety
 from derive.numbers import numeric
 from derive.core import units
+from derive.solution import answer_signs, textbook
 from derive.solution.answers import Solution
 from derive.core.errors import InputError
 from derive.publishing.figure import free_body
@@ -112,6 +113,7 @@ class ProblemVariants:
     _answers: dict[int, dict[str, numeric.Certified | None]] = field(default_factory=dict, repr=False)
     _texts: dict[int, dict[str, str | None]] = field(default_factory=dict, repr=False)
     _tolerances: dict[int, dict[str, str | None]] = field(default_factory=dict, repr=False)
+    _directions: dict[int, dict[str, str | None]] = field(default_factory=dict, repr=False)
     _wrong: dict[int, dict[str, list[dict[str, str]]]] = field(default_factory=dict, repr=False)
     _questions: dict[bool, list[str]] = field(default_factory=dict, repr=False)  # by siunitx
 
@@ -151,6 +153,29 @@ class ProblemVariants:
                 if s.body and drawn.get(s.body) is not None}
 
     @cached_property
+    def student_free_bodies(self) -> dict[int, free_body.FreeBody]:
+        """Each body's free-body diagram beside the first step of the student's route that states its
+        balance (derive.solution.textbook), each force drawn the way it acts, its symbol a magnitude
+        (friction up the slope); none where the route is not written."""
+        steps, route = self.solution.student_steps, self.solution.textbook_route
+        if steps is None:
+            return {}
+        drawn = free_body.free_bodies(self.problem, self.solution.dynamics_scene, self.solution.coordinates,
+                                      route.acting, textbook.names(self.solution))
+        result, seen = {}, set()
+        for step in (s for section in steps.values() for s in section):
+            if step.body and step.body not in seen and drawn.get(step.body) is not None:
+                seen.add(step.body)
+                result[id(step)] = drawn[step.body]
+        return result
+
+    @cached_property
+    def shown_free_bodies(self) -> dict[int, free_body.FreeBody]:
+        """The diagrams the students' worked solution (and so the LMS feedback) shows: the student's
+        route's where it is written, else Newton–Euler's."""
+        return self.student_free_bodies if self.solution.student_steps is not None else self.free_bodies
+
+    @cached_property
     def _evaluator(self) -> numeric.Evaluator:
         return numeric.evaluator(tuple(self.in_declared_units.values()))
 
@@ -173,6 +198,17 @@ class ProblemVariants:
         """Each answer's value to its significant figures; None for a general (symbolic) result."""
         return self._once(self._texts, draw, lambda: {name: None if value is None else value.text
                                                       for name, value in self.certified(draw).items()})
+
+    def directions(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
+        """Which way each asked quantity with a direction points in this variant, in words ("up the
+        slope"; derive.solution.answer_signs), its value being the magnitude; None for the others."""
+        return self._once(self._directions, draw, lambda: {
+            name: answer_signs.direction(self.solution, name, self.si_values(draw)) for name in self.problem.asks})
+
+    @cached_property
+    def varying_directions(self) -> set[str]:
+        """The asks whose direction is not the same in every variant: the LMS exports ask it too."""
+        return {name for name in self.problem.asks if len({self.directions(d)[name] for d in self.draws}) > 1}
 
     def tolerances(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Each numeric answer's absolute tolerance in its unit, under the answer's policy; InputError

@@ -126,10 +126,31 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
     numbers (units in siunitx where LaTeX compiles it: `unit_latex`), its checks."""
     problem, solution = item.problem, item.solution
     numbered = iter(range(1, 10**6))  # the problem's equations, numbered through its routes
+    student, proof = solution.student_steps, solution.steps()
+    routes = _routes(item, student, numbered, siunitx, item.student_free_bodies) if student is not None else \
+        _routes(item, proof, numbered, siunitx, item.free_bodies)
+    # Lagrange's method and Newton–Euler in full: the instructor's verification where the student's route is written
+    verification = _routes(item, proof, numbered, siunitx, item.free_bodies) if student is not None else []
+    answers = [
+        {"symbol": symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
+         "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
+                         typesetting.note(tex_escape(a.meaning), tex=siunitx))}
+        for n, a in problem.asks.items()
+    ]
+    variants = _numbers(item, siunitx)
+    checks = [_check_latex(c, problem, siunitx) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
+    return {"title": problem.title, "source": problem.source, "routes": routes, "verification": verification,
+            "answers": answers,
+            "variants": variants, "checks": checks, "corrections": list(problem.corrections),
+            "figure": figure.tikz(problem)}
+
+
+def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, diagrams: dict) -> list[dict]:
+    """Routes of a worked solution for the templates: each step's text, its equations numbered on
+    from `numbered`, the free-body diagram beside a balance (`diagrams`, by the id of its step), the
+    parts' sentences."""
+    printed = notation.named(item.problem, item.solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
     routes = []
-    all_steps = solution.steps()
-    diagrams = item.free_bodies
-    printed = notation.named(problem, solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
     for route, steps in all_steps.items():
         shown, solved = [], []  # the numbers of the equations this route solves
         for original, s in zip(steps, printed[route]):
@@ -141,26 +162,28 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
                           "body": diagrams[id(original)].body if id(original) in diagrams else "",
                           "sentences": [sentence.latex() for sentence in s.sentences]})
         routes.append({"title": route_title(route), "steps": shown})
-    answers = [
-        {"symbol": symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
-         "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
-                         typesetting.note(tex_escape(a.meaning), tex=siunitx))}
-        for n, a in problem.asks.items()
-    ]
-    variants = _numbers(item, siunitx)
-    checks = [_check_latex(c, problem, siunitx) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
-    return {"title": problem.title, "source": problem.source, "routes": routes, "answers": answers,
-            "variants": variants, "checks": checks, "corrections": list(problem.corrections),
-            "figure": figure.tikz(problem)}
+    return routes
 
 
-def numbers_context(item: ProblemVariants, siunitx: bool, given: dict[str, str], results: dict[str, str]) -> dict:
+def numbers_context(item: ProblemVariants, siunitx: bool, given: dict[str, str], results: dict[str, str],
+                    directions: dict[str, str]) -> dict:
     """A variant's numbers as the templates show them: its given values (`given`: each
-    parameter's value and unit as math) and its results (`results`: each answer's LaTeX)."""
+    parameter's value and unit as math), its results (`results`: each answer's LaTeX) and which way
+    each points (`directions`: LaTeX after the unit, "" for none)."""
     problem = item.problem
     return {"given": [f"${latex_of(p.symbol)} = {given[n]}$" for n, p in problem.parameters.items()],
-            "results": [{"symbol": symbol_latex(n), "value": results[n],
+            "results": [{"symbol": symbol_latex(n), "value": results[n], "direction": directions[n],
                          "unit": units.after_number(a.unit, unit_latex(a.unit, siunitx))} for n, a in problem.asks.items()]}
+
+
+def direction_latex(words: str | None) -> str:
+    r"""Which way an answer points, after its unit in math ("" for none): words from
+    derive.model.directions, a fixed vocabulary (no text from a file).
+
+    >>> direction_latex("up the slope"), direction_latex(None)
+    ('\\ \\text{up the slope}', '')
+    """
+    return rf"\ \text{{{words}}}" if words else ""
 
 
 def _numbers(item: ProblemVariants, siunitx: bool) -> list[str]:
@@ -169,12 +192,14 @@ def _numbers(item: ProblemVariants, siunitx: bool) -> list[str]:
     problem = item.problem
     stencil = Stencil(render.render("solutions-numbers.tex.j2", variant={
         "number": hole("number"), **numbers_context(item, siunitx, {n: hole(f"g:{n}") for n in problem.parameters},
-                                                    {n: hole(f"r:{n}") for n in problem.asks})}))
+                                                    {n: hole(f"r:{n}") for n in problem.asks},
+                                                    {n: hole(f"d:{n}") for n in problem.asks})}))
     texts = []
     for number, (draw, given) in enumerate(zip(item.draws, item.numbers), start=1):
         answers = item.answers(draw)
         values = {f"g:{n}": text for n, text in item.quantities(given, siunitx).items()}
         values.update({f"r:{n}": item.shown(n, answers[n]) for n in problem.asks})
+        values.update({f"d:{n}": direction_latex(words) for n, words in item.directions(draw).items()})
         values["number"] = str(number)
         texts.append(stencil.fill(values))
     return texts
@@ -184,7 +209,7 @@ def _free_body_figures(prepared: list[ProblemVariants]) -> dict[str, free_body.F
     """Every free-body diagram of the set by its image's name (figure_files.free_body_name): what
     the LMS feedback shows as images, each compiled once whatever the number of variants."""
     return {figure_files.free_body_name(item.problem.id, drawn.body): drawn
-            for item in prepared for drawn in item.free_bodies.values()}
+            for item in prepared for drawn in item.shown_free_bodies.values()}
 
 
 def _worked_solutions(prepared: list[ProblemVariants], contexts: list[dict], header: dict) -> dict[tuple[str, int], str]:
@@ -200,7 +225,7 @@ def _worked_solutions(prepared: list[ProblemVariants], contexts: list[dict], hea
         for number, variant in enumerate(context["variants"], start=1):
             keys.append((item.problem.id, number))
             problems.append({**context, "figure": "", "routes": routes, "variants": [variant]})
-    fragments = export.html_sections(render.render("solutions.tex.j2", set=header, problems=problems))
+    fragments = export.html_sections(render.render("solutions.tex.j2", set=header, problems=problems, verification=False))
     if len(fragments) != len(keys):
         raise export.BuildError(f"pandoc made {len(fragments)} worked solutions of {len(keys)}")
     return dict(zip(keys, fragments))
@@ -232,7 +257,7 @@ def _lms_items(prepared: list[ProblemVariants], variants: int, choice: bool,
     for number in range(1, variants + 1):
         for item in prepared:
             values = item.draws[number - 1]
-            answers, tolerances = item.answers(values), item.tolerances(values)
+            answers, tolerances, directions = item.answers(values), item.tolerances(values), item.directions(values)
             wrong = item.wrong(values) if choice else {}
             question = item.questions(siunitx=False)[number - 1]  # MathJax reads no siunitx
             for name, ask in item.problem.asks.items():
@@ -243,8 +268,16 @@ def _lms_items(prepared: list[ProblemVariants], variants: int, choice: bool,
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
                                       answers[name], units.unicode_unit(ask.unit), tolerances[name],
                                       choices if asked else (), solutions[item.problem.id, number],
-                                      tuple(d["mistake"] for d in wrong.get(name, ())) if asked else ()))
+                                      tuple(d["mistake"] for d in wrong.get(name, ())) if asked else (),
+                                      directions[name] or "", _senses(item, name)))
     return items
+
+
+def _senses(item: ProblemVariants, name: str) -> tuple[str, ...]:
+    """The ways an asked quantity can point, where they differ between the problem's variants (the
+    LMS exports ask which); none where every variant's is the same (its value, a magnitude, is asked)."""
+    sense = item.solution.senses[name]
+    return (sense.positive, sense.negative) if sense is not None and name in item.varying_directions else ()
 
 
 def _worksheet(header: dict, prepared: list[ProblemVariants], variants: int, figures: list[str | None],
@@ -334,7 +367,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                     begin("LaTeX")
                     texs = [
                         _write(staging, "worksheet.tex", _worksheet(header, prepared, variants, drawn, tex=True)),
-                        _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts)),
+                        _write(staging, "solutions.tex", render.render("solutions.tex.j2", set=header, problems=contexts, verification=True)),
                         _write(staging, "key.tex", render.render("key.tex.j2", set=header, rows=keys.tex_rows,
                                                                    conventions=keys.conventions,
                                                                    sources=_sources(prepared))),
@@ -439,7 +472,8 @@ def handout(reference: str, out_dir: str | None = None, progress: Reporter = Rep
     item = ProblemVariants(problem, solution, [middle])
     answers = item.answers(middle)
     example = numbers_context(item, True, item.quantities(item.numbers[0], siunitx=True),
-                              {n: item.shown(n, answers[n]) for n in problem.asks})
+                              {n: item.shown(n, answers[n]) for n in problem.asks},
+                              {n: direction_latex(words) for n, words in item.directions(middle).items()})
     context = {**_solutions_context(item, siunitx=True), "example": example,
                "limits": _limits_context(item, middle, progress)}
     with output_folder.claim(Path("build") / "handouts" / problem.id if out_dir is None else out_dir) as out, \

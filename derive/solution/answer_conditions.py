@@ -81,7 +81,7 @@ class AnswerConditions:
         the samples and the formula does not hold there."""
         result = []
         for name, ask in self.problem.asks.items():
-            if not ask.magnitude:
+            if not (ask.magnitude or self.senses[name]):
                 continue
             try:
                 magnitude = self.expression(name)

@@ -18,7 +18,8 @@ import sympy as sp
 from flint import ctx
 
 from derive.numbers import balls
-from derive.model import composite, inertia
+from derive.model import composite, directions, inertia
+from derive.model.directions import Sense
 from derive.core import limits
 from derive.core.errors import EngineLimit
 from derive.mechanics import (lagrange, many_bodies, newton_euler, orbits, paths, quantum, rolling, durations, friction, states as state_motion)
@@ -30,6 +31,7 @@ from derive.model.kinematics import Coordinates
 from derive.mechanics.normal_modes import NormalModes, normal_modes
 from derive.mechanics.oscillation import (NotAPendulum, Oscillation, OscillationError, OscillationLimit,
                                          exact_period, free_directions, small_oscillation)
+from derive.solution import answer_signs, system, textbook
 from derive.solution.answer_conditions import AnswerConditions
 from derive.solution.answer_steps import AnswerSteps
 from derive.solution.crosschecks import CrossChecks, sample_points
@@ -284,7 +286,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         if detail == "min_friction_coefficient":  # of the grip, whatever the regime
             stuck = derivation.at(self.coordinates.at_rest_in_reference())
             ratio = tidy(stuck[forces["friction"]] / stuck[forces["normal"]])
-            return self._magnitude(ratio, f"{body}.min_friction_coefficient")
+            return answer_signs.magnitude(self.problem, ratio)
         if detail == "min_release_height":
             return self._release_height(body, derivation.route)[0]
         acceleration = sp.Matrix([solved[self.coordinates.of(body, k).a] for k in ("x", "y")])
@@ -357,31 +359,6 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
                 except ConservationError as error:
                     raise self.problem.error(f"ask.{ask.name}", str(error)) from None
         return result
-
-    def _magnitude(self, expr: sp.Expr, what: str) -> sp.Expr:
-        """|expr|: expr or -expr when its sign is the same over the parameter ranges, else Abs(expr)."""
-        signs = {sp.sign(sp.N(expr.xreplace(point), 30)) for point in sample_points(self.problem, expr)}
-        if signs == {1}:
-            return expr
-        if signs == {-1}:
-            return tidy(-expr)
-        return sp.Abs(expr)
-
-    def _zero_for(self, expr: sp.Expr, ask: Ask) -> sp.Expr:
-        """The value of a parameter at which the quantity vanishes (a critical angle, say)."""
-        parameter = self.problem.parameters[ask.zero_for]
-        roots = [r for r in sp.solve(sp.numer(sp.together(expr)), parameter.symbol)
-                 if not r.has(sp.I) and r.is_nonnegative is not False]
-        if parameter.range is not None:
-            low, high = parameter.si_ends  # the roots are in SI, as the symbol is
-            # Keep the roots that land in the parameter's range for some parameter values.
-            inside = [r for r in roots if any(low <= sp.N(r.xreplace(p), 30) <= high
-                                              for p in sample_points(self.problem, r))]
-            roots = inside or roots
-        if len(roots) != 1:
-            raise self.problem.error(f"ask.{ask.name}.zero_for", f"{ask.path} vanishes at {len(roots)} values of "
-                                     f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
-        return tidy(roots[0])
 
     def _orbit(self, detail: str, route: str) -> sp.Expr:
         orbit = self.scene.orbit
@@ -484,32 +461,46 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             return float(ball.mid())
         return float(sp.N(value, 30))
 
-    def _position(self, body: str) -> sp.Matrix:
-        motion = self.scene.motions.get(body)
-        return sp.Matrix(motion.position) if motion else sp.zeros(2, 1)
-
-    def _center_of_mass(self) -> sp.Matrix:
-        total = sum((b.mass for b in self.scene.bodies.values()), sp.Integer(0))
-        return sum((b.mass * self._position(n) for n, b in self.scene.bodies.items()), sp.zeros(2, 1)) / total
-
-    def _system(self, detail: str, route: str) -> sp.Expr:
-        """The system's moment of inertia about its center of mass (normal to the plane), by the
-        scalar parallel-axis sum or by composing the bodies' tensors; or the reduced mass of two
-        bodies, from the kinetic energy of their relative motion with the center of mass at rest."""
-        if detail == "reduced_mass":
-            return many_bodies.reduced_mass(*(b.mass for b in self.scene.bodies.values()))
-        center = self._center_of_mass()
-        if route == "sum":
-            return tidy(sum((b.inertia + b.mass * (self._position(n) - center).dot(self._position(n) - center)
-                             for n, b in self.scene.bodies.items()), sp.Integer(0)))
-        parts = [inertia.Part(b.shape, b.mass, b.sizes, (*self._position(n), 0)) for n, b in self.scene.bodies.items()]
-        return tidy(inertia.composite_tensor(parts, about=(*center, 0)).tensor[2, 2])
-
     def expression(self, name: str) -> sp.Expr:
         """The exact answer, in the parameter symbols, for SI values of the parameters
         (within the time limit of derive.core.limits: a runaway integral is an input error)."""
         with limits.time_limit(f"{self.problem.path}: ask.{name}"):
+            result = self._expression(name)
+            ask = self.problem.asks[name]
+            return answer_signs.magnitude(self.problem, result) if ask.magnitude or self.senses[name] else result
+
+    def signed_expression(self, name: str) -> sp.Expr:
+        """The answer as the routes give it: a component along its axis, a rotation counter-clockwise
+        positive, before `expression` takes the magnitude of a quantity with a direction."""
+        with limits.time_limit(f"{self.problem.path}: ask.{name}"):
             return self._expression(name)
+
+    @cached_property
+    def textbook_route(self):
+        """The route along the motion a solution manual takes (derive.solution.textbook), or None."""
+        return textbook.route(self)
+
+    @cached_property
+    def student_steps(self) -> dict[str, list[Step]] | None:
+        """The student's worked solution by section (derive.solution.textbook), or None: the routes'."""
+        return textbook.student_steps(self)
+
+    def signed(self, name: str) -> sp.Expr:
+        """The answer as the routes give it (`signed_expression`), what a simulation measures."""
+        return self.signed_expressions.get(name, self.expressions[name])
+
+    @cached_property
+    def signed_expressions(self) -> dict[str, sp.Expr]:
+        """The signed answer of each quantity with a direction (`senses`), for its direction per variant."""
+        return {name: self.signed_expression(name) for name, sense in self.senses.items() if sense is not None}
+
+    @cached_property
+    def senses(self) -> dict[str, Sense | None]:
+        """The words for the two ways each asked quantity can point (derive.model.directions), None where
+        it has none, the question states its sign convention (`sign:`) or the answer is the parameter
+        where it vanishes (`zero_for:`); the others are answered as magnitudes."""
+        return {name: None if ask.sign or ask.zero_for else directions.sense(self.scene, ask.quantity, self.coordinates, self._sample)
+                for name, ask in self.problem.asks.items()}
 
     def _expression(self, name: str) -> sp.Expr:
         ask = self.problem.asks[name]
@@ -522,10 +513,10 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         elif ask.quantity.kind == "mass":
             result = self.scene.bodies[ask.quantity.target].mass
         elif ask.quantity.kind == "position_cm":
-            offset = self._position(ask.quantity.target) - self._center_of_mass()
+            offset = system.position(self.scene, ask.quantity.target) - system.center_of_mass(self.scene)
             result = tidy(offset[0 if ask.quantity.detail == "x" else 1])
         elif ask.quantity.kind == "system":
-            result = self._system(ask.quantity.detail, "sum")
+            result = system.quantity(self.scene, ask.quantity.detail, "sum")
         elif ask.quantity.kind == "pivot_point":
             result = self._pivot_point(ask.quantity)
         elif ask.quantity.kind == "rolls_on_edge":
@@ -550,9 +541,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         for size in ask.small:
             result = tidy(sp.limit(result, size, 0, "+"))
         if ask.zero_for:
-            result = self._zero_for(result, ask)
-        if ask.magnitude:
-            result = self._magnitude(result, name)
+            result = answer_signs.zero_for(self.problem, result, ask)
         leftover = result.free_symbols - {p.symbol for p in self.problem.parameters.values()} - {TIME}
         if leftover:
             names = ", ".join(sorted(map(str, leftover)))

@@ -30,6 +30,7 @@ from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.derivation import row_reduced
 from derive.language.problem import Ask, Problem
 from derive.model.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
+from derive.solution import system
 
 ROUTES = ("lagrange", "newton_euler")
 
@@ -78,6 +79,8 @@ class CrossChecks:
             result.append(self._orbit_check())
         if self.energy_balances:
             result.append(self._energy_check())
+        if self.textbook_route is not None:
+            result.append(self._textbook_check())
         if "system" in kinds:
             result.append(self._system_check())
         if "inertia" in kinds:
@@ -158,6 +161,24 @@ class CrossChecks:
                      "agree" + ("" if methods <= {"symbolic"} else " (answers at 30 digits at points of the ranges)"),
                      "Lagrange's method and the Newton–Euler equations (the forces and torques on each body) give "
                      "the same accelerations and forces.")
+
+    def _textbook_check(self) -> Check:
+        """The student's route (derive.solution.textbook: Newton's law along the motion, torques about
+        the center or a pivot) gives every acceleration and force it finds as Lagrange's method does;
+        it is built from Newton–Euler's balances, projected, so an error of the projection shows here."""
+        reference = self.derivations["lagrange"].at(self.coordinates.at_rest_in_reference())
+        methods = set()
+        for unknown, value in self.textbook_route.values.items():
+            expected = reference[unknown]
+            method = agree(value, expected, points=sample_points(self.problem, sp.Tuple(value, expected), count=5))
+            if method is None:
+                raise CheckFailure(f"{self.problem.id}: the route along the motion gives {unknown} = {value}, "
+                                   f"Lagrange's method {expected}")
+            methods.add(method)
+        return Check("textbook_route", True, "route along the motion vs Lagrange, " + " or ".join(sorted(methods)),
+                     f"{len(self.textbook_route.values)} accelerations and forces agree",
+                     "Newton's second law along the motion, with the torques, gives the same accelerations and "
+                     "forces as Lagrange's method and the Newton–Euler equations.")
 
     def _unknowns_agree(self, index: int, state: dict, where: str) -> bool:
         """Every unknown of both routes at a state of the index-th regime, in balls (True), or
@@ -438,13 +459,13 @@ class CrossChecks:
     def _system_check(self) -> Check:
         """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,
         the inertia about the center of mass is mu d^2."""
-        total, composed = self._system("inertia", "sum"), self._system("inertia", "tensor")
+        total, composed = system.quantity(self.scene, "inertia", "sum"), system.quantity(self.scene, "inertia", "tensor")
         if agree(total, composed) is None:
             raise CheckFailure(f"{self.problem.id}: the system's inertia is {total} summed, {composed} composed")
         detail = "parallel-axis sum equals the composed tensor"
         bodies = list(self.scene.bodies.values())
         if len(bodies) == 2 and all(b.shape == "point" for b in bodies):
-            gap = self._position(bodies[1].name) - self._position(bodies[0].name)
+            gap = system.position(self.scene, bodies[1].name) - system.position(self.scene, bodies[0].name)
             if agree(total, many_bodies.reduced_mass(bodies[0].mass, bodies[1].mass) * gap.dot(gap)) is None:
                 raise CheckFailure(f"{self.problem.id}: I differs from mu d^2")
             detail += "; I = mu d^2"

@@ -101,25 +101,29 @@ class FreeBody:
         return f"Free-body diagram of the {self.body}: {forces or 'no forces'}."
 
 
-def free_bodies(problem, scene, coords) -> dict[str, FreeBody | None]:
+def free_bodies(problem, scene, coords, acting: dict | None = None, names: dict | None = None
+                ) -> dict[str, FreeBody | None]:
     """Each body's free-body diagram (None where one of its forces cannot be drawn truthfully), from
-    Newton–Euler's forces of `scene` in the coordinates `coords` (the derivation's)."""
+    Newton–Euler's forces of `scene` in the coordinates `coords` (the derivation's). `acting`: the
+    sense each constraint force acts in (-1: against its axis, drawn so, its symbol a magnitude:
+    derive.mechanics.along_motion), else every one along its axis; `names`: symbols the labels print
+    otherwise (f for f^ball, as the student's route does)."""
     loads = all_forces(scene, coords)
     unknowns = [u for part in scene.constraints for u in part.unknowns().values()]
-    rest = coords.at_rest_in_reference()
+    rest = {**coords.at_rest_in_reference(), **{u: -u for u, sign in (acting or {}).items() if sign < 0}}
     result = {}
     for name in scene.bodies:
         fig = _Figure(problem)
         view = _Scene(fig)
         try:
-            arrows, turns = _forces(view, [f for f in loads if f.body == name], unknowns, rest)
+            arrows, turns = _forces(view, [f for f in loads if f.body == name], unknowns, rest, names or {})
             result[name] = _draw(fig, view, name, arrows, turns)
         except Undrawable:
             result[name] = None
     return result
 
 
-def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn]]:
+def _forces(view: _Scene, loads, unknowns, rest, names: dict) -> tuple[list[Arrow], list[Turn]]:
     """The arrows and turns of a body's loads in the reference configuration at rest."""
     arrows, turns = [], []
     for load in loads:
@@ -130,7 +134,7 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
                 length = math.hypot(*direction)
                 if length < 1e-9:
                     raise Undrawable(f"the {load.label} has no direction here")
-                shown = _size(vector, length) * amount
+                shown = (_size(vector, length) * amount).xreplace(names)
                 arrows.append(Arrow(offset, (direction[0] / length, direction[1] / length), latex_of(shown),
                                     load.label, spoken(shown)))
         elif isinstance(load, AppliedTorque):
@@ -139,7 +143,7 @@ def _forces(view: _Scene, loads, unknowns, rest) -> tuple[list[Arrow], list[Turn
                 if abs(value) < 1e-12:
                     raise Undrawable(f"the {load.label} has no sense here")
                 sign = 1 if value > 0 else -1
-                shown = sp.simplify(sign * coefficient[0]) * amount
+                shown = (sp.simplify(sign * coefficient[0]) * amount).xreplace(names)
                 turns.append(Turn(sign, latex_of(shown), load.label, spoken(shown)))
     return arrows, turns
 

@@ -1,0 +1,84 @@
+"""An answer's sign: a magnitude and the direction it points in words, or a parameter's value where
+an answer vanishes.
+
+A quantity with a direction (derive.model.directions) is answered as its magnitude unless the
+question states its sign convention (`sign:`); `direction` gives the words for one variant.
+
+>>> import sympy as sp
+>>> from derive.language.problem import load
+>>> from derive.solution.answers import Solution
+>>> solution = Solution(load("rolling_incline"))
+>>> solution.signed_expression("f"), solution.expression("f")
+(-2*M*g*sin(theta)/7, 2*M*g*sin(theta)/7)
+>>> direction(solution, "f", {s: sp.Integer(1) for s in solution.signed_expression("f").free_symbols})
+'up the slope'
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.core.tidying import leading_plus, tidy
+from derive.solution.crosschecks import sample_points
+
+
+def magnitude(problem, expr: sp.Expr) -> sp.Expr:
+    """|expr|: expr or -expr when its sign is the same over the parameter ranges, else Abs(expr)
+    (its sign is checked per variant: derive.solution.answer_conditions)."""
+    signs = {sp.sign(sp.N(expr.xreplace(point), 30)) for point in sample_points(problem, expr)}
+    if signs == {1}:
+        return expr
+    if signs == {-1}:
+        return negated(expr)
+    return sp.Abs(expr)
+
+
+def negated(expr: sp.Expr) -> sp.Expr:
+    """-expr in its tidiest form without a double negative: (I w - R m v)/(I + m R^2), not
+    -(-I w + R m v)/(I + m R^2).
+
+    >>> a, b, c = sp.symbols("a b c", positive=True)
+    >>> negated((-a + b) / c), negated(-a * b)
+    ((a - b)/c, a*b)
+    """
+    return leading_plus(tidy(-expr))
+
+
+def direction(solution, name: str, values: dict[sp.Symbol, sp.Expr]) -> str | None:
+    """The words for which way the asked quantity points at these parameter values (SI, by symbol):
+    None where it has no direction, the question states its sign convention, or it is zero."""
+    sense = solution.senses[name]
+    if sense is None:
+        return None
+    value = sp.N(solution.signed_expressions[name].xreplace(values), 30)
+    if not value.is_number:  # a general result: the direction it has in every variant, if one
+        return general_direction(solution, name)
+    if value == 0:
+        return None
+    return sense.of(1 if value > 0 else -1)
+
+
+def general_direction(solution, name: str) -> str | None:
+    """The words for which way the quantity points in every variant, where its sign is the same over
+    the parameter ranges (its magnitude needs no |...|); None where it has no direction or the sign
+    depends on the parameters."""
+    sense = solution.senses[name]
+    if sense is None or solution.expression(name).has(sp.Abs):
+        return None
+    return sense.of(1 if solution.expression(name) == solution.signed_expressions[name] else -1)
+
+
+def zero_for(problem, expr: sp.Expr, ask) -> sp.Expr:
+    """The value of a parameter at which the quantity vanishes (a critical angle, say)."""
+    parameter = problem.parameters[ask.zero_for]
+    roots = [r for r in sp.solve(sp.numer(sp.together(expr)), parameter.symbol)
+             if not r.has(sp.I) and r.is_nonnegative is not False]
+    if parameter.range is not None:
+        low, high = parameter.si_ends  # the roots are in SI, as the symbol is
+        # Keep the roots that land in the parameter's range for some parameter values.
+        inside = [r for r in roots if any(low <= sp.N(r.xreplace(p), 30) <= high
+                                          for p in sample_points(problem, r))]
+        roots = inside or roots
+    if len(roots) != 1:
+        raise problem.error(f"ask.{ask.name}.zero_for", f"{ask.path} vanishes at {len(roots)} values of "
+                            f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
+    return tidy(roots[0])

@@ -1,0 +1,198 @@
+"""The student's worked solution: the route a solution manual takes, chosen from the scene and the asks.
+
+One principle a step, each a law the course teaches: speeds between two states by energy
+(derive.mechanics.conservation); accelerations and forces at the placement by Newton's second law
+along the motion and torques about the center of mass or a fixed pivot (derive.mechanics.along_motion);
+the time down a slope from the constant acceleration; the least coefficient of friction from the
+friction and normal force found. Lagrange's method and Newton–Euler stay as the proof (the
+instructor's verification): this route is a third one, which must agree with them
+(derive.solution.crosschecks: the check textbook_route).
+
+Where an ask lies outside these principles (a state reached by impacts, an oscillation, a top), no
+student route is written (`steps` is None) and the worked solution shows the two routes.
+
+>>> from derive.language.problem import load
+>>> from derive.solution.answers import Solution
+>>> steps = Solution(load("rolling_incline")).student_steps
+>>> list(steps)
+['Forces and torques along the motion', 'The speed at the bottom, by energy', 'The time to the bottom']
+"""
+from __future__ import annotations
+
+import dataclasses
+
+import sympy as sp
+
+from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
+from derive.core.tidying import tidy
+from derive.mechanics.derivation import KINETIC, Step
+from derive.mechanics.statics import statics
+from derive.model.scene import Quantity
+from derive.parts.contact import Contact
+from derive.numbers.agreement import agree
+from derive.solution.crosschecks import sample_points
+from derive.parts.surfaces import Plane
+
+#: The contact quantities the route along the motion gives (at the placement, at rest).
+ALONG = {"acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient"}
+#: What energy and the constant acceleration give, of a body on a slope.
+ON_SLOPE = {"speed_at_bottom", "time_to_bottom"}
+
+
+def covered(quantity: Quantity) -> bool:
+    """Whether the student's route answers the quantity."""
+    if quantity.kind in ("acceleration", "angular_acceleration", "force"):
+        return True
+    return quantity.kind == "contact" and quantity.detail in ALONG | ON_SLOPE
+
+
+def route(solution) -> AlongMotion | None:
+    """The route along the motion of the solution's scene, where every ask is one the student's route
+    answers at the placement (None otherwise)."""
+    asks = solution.problem.asks.values()
+    if not asks or any(a.state is not None or a.zero_for or not covered(a.quantity) for a in asks):
+        return None
+    if len(solution.regimes) != 1 or solution.scene.states:
+        return None
+    arguments = (solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
+                 solution._sample, solution._needed_unknowns())
+    for principle in (along_motion, statics):
+        try:
+            return principle(*arguments)
+        except NotAlongALine:
+            continue
+    return None
+
+
+def student_steps(solution) -> dict[str, list[Step]] | None:
+    """The student's worked solution by section, or None where it is not written (`route`)."""
+    along = solution.textbook_route
+    if along is None:
+        return None
+    title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"
+    result = {title: list(along.steps)}
+    for ask in solution.problem.asks.values():
+        if ask.quantity.detail == "min_friction_coefficient":
+            result[title].append(_least_coefficient(solution, ask))
+    for body, balance in solution.energy_balances.items():
+        result["The speed at the bottom, by energy" if len(solution.energy_balances) == 1
+               else f"The speed of the {body} at the bottom, by energy"] = _energy(solution, body, balance, along)
+    for ask in solution.problem.asks.values():
+        if ask.quantity.detail == "time_to_bottom":
+            step = _time_down(solution, ask)
+            if step is None:
+                return None
+            result["The time to the bottom"] = [step]
+    change = names(solution)
+    return {title: [_renamed(step, change) for step in steps] for title, steps in result.items()}
+
+
+def names(solution) -> dict[sp.Symbol, sp.Symbol]:
+    """How the student's route prints the engine's forces and its own symbols (`_plain_names`,
+    `_clashes`): the free-body diagrams beside it label them so too."""
+    along = solution.textbook_route
+    return {**_plain_names(solution, along), **_clashes(solution, along)} if along is not None else {}
+
+
+def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
+    """Each constraint force as a textbook names it, where that names one thing: f and N for the one
+    contact's friction and normal force (f^ball), T for the one cord's tension (T_string), T_1 and
+    T_2 on the two sides of a pulley; a name a parameter takes, or an ask of something else, is kept."""
+    shown = {x for step in along.steps for e in step.equations for x in e.free_symbols}
+    forces = [u for u in along.acting if u in shown]
+    plain = {u: _plain(u.name) for u in forces}
+    counts = {}
+    for name in plain.values():
+        counts[name] = counts.get(name, 0) + 1
+    surfaces = {u: part.surface for part in solution.dynamics_scene.constraints if isinstance(part, Contact)
+                for u in part.unknowns().values()}
+    problem, result = solution.problem, {}
+    for u, name in plain.items():
+        if counts[name] > 1 and u in surfaces:  # two normal forces: N_floor and N_wall
+            name = f"{name}_{surfaces[u]}"
+        if counts.get(name, 0) > 1 or name in problem.parameters or name == u.name:
+            continue
+        if name in problem.asks and not _same(solution, name, along.acting[u] * along.values[u]):
+            continue
+        result[u] = sp.Symbol(name, real=True)
+    return result
+
+
+def _plain(name: str) -> str:
+    """f^ball -> f, R_x^hinge -> R_x, T_string -> T, T_rope_1 -> T_1."""
+    head = name.split("^")[0]
+    parts = head.split("_")
+    if parts[0] == "T" and len(parts) > 1:
+        return "T" + (f"_{parts[-1]}" if parts[-1].isdigit() else "")
+    return head
+
+
+def _same(solution, name: str, value) -> bool:
+    """Whether the ask `name` is the quantity `value` (the same expression at points of the ranges)."""
+    if value is None:
+        return False
+    mine = solution.expression(name)
+    return agree(mine, value, points=sample_points(solution.problem, sp.Tuple(mine, value), count=3)) is not None
+
+
+def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
+    """The route's own symbols that a problem file's name takes with another meaning (a parameter a,
+    or an ask a that is the block's y component, y up), each renamed after its body: a_block."""
+    problem, result = solution.problem, {}
+    for symbol, value in along.own.items():
+        name = str(symbol)
+        if name in problem.parameters or name in problem.asks and not _same(solution, name, value):
+            owner = next(body for (body, _), named in along.names.items() if named == symbol)
+            result[symbol] = sp.Symbol(f"{name}_{owner}", real=True)
+    return result
+
+
+def _renamed(step: Step, change: dict) -> Step:
+    if not change:
+        return step
+    return dataclasses.replace(step, equations=tuple(e.xreplace(change) for e in step.equations))
+
+
+def _energy(solution, body: str, balance, along: AlongMotion) -> list[Step]:
+    """The work-energy theorem as a textbook writes it: K = M v^2/2 + I omega^2/2, with the moment of
+    inertia and the rolling condition omega = v/R put in, then energy conserved from rest (the
+    balance's own last step)."""
+    held = solution.scene.bodies[body]
+    v, omega = sp.Symbol("v"), sp.Symbol("omega")
+    translation = held.mass * v**2 / 2
+    turning = along.names.get((body, "alpha"))
+    if turning is None:
+        return [Step("Energy is conserved: only gravity does work", (sp.Eq(KINETIC, translation),)), balance.steps[-1]]
+    taken = {*solution.problem.parameters, *solution.problem.asks}
+    moment = held.inertia if isinstance(held.inertia, sp.Symbol) else \
+        sp.Symbol(next(n for n in ("I", "I_cm", "I_c", "I_0") if n not in taken))
+    ratio = tidy(along.own[turning] / along.own[along.names[body, "a"]])
+    given = () if moment == held.inertia else (sp.Eq(moment, held.inertia),)
+    return [Step(f"Energy is conserved: gravity does work, the normal force none, and static friction none either, "
+                 f"acting at a point of the {body} that does not slip. Its kinetic energy is that of its center's motion "
+                 f"and of its rotation about the center, with its moment of inertia and its rate of turning",
+                 (*given, sp.Eq(omega, ratio * v), sp.Eq(KINETIC, translation + moment * omega**2 / 2),
+                  sp.Eq(KINETIC, balance.steps[1].equations[0].rhs))),
+            balance.steps[-1]]
+
+
+def _least_coefficient(solution, ask) -> Step:
+    """mu_min = f / N, the friction and normal force the route found."""
+    forces = solution.dynamics_scene.contact_of(ask.quantity.target).unknowns()
+    mu = sp.Symbol(ask.name)
+    holds = "It rolls without slipping" if solution.textbook_route.names else "It stays put"
+    return Step(f"{holds} while static friction can supply the friction found, that is while that is at most the "
+                "coefficient of static friction times the normal force: the least coefficient",
+                (sp.Eq(mu, forces["friction"] / forces["normal"]), sp.Eq(mu, solution.expression(ask.name))))
+
+
+def _time_down(solution, ask) -> Step | None:
+    """From rest at the constant acceleration a down the slope's length H / sin(theta): H / sin(theta) = a t^2 / 2."""
+    contact = solution.scene.contact_of(ask.quantity.target)
+    surface = solution.scene.surfaces[contact.surface]
+    if not isinstance(surface, Plane) or surface.height is None:
+        return None
+    a, t = solution.textbook_route.names[ask.quantity.target, "a"], sp.Symbol("t")
+    length = surface.height / sp.sin(surface.angle)
+    return Step("From rest at the constant acceleration found, along the slope, whose length is its height over the "
+                "sine of its angle", (sp.Eq(length, a * t**2 / 2), sp.Eq(t, solution.expression(ask.name))))

@@ -1,0 +1,144 @@
+"""A student's worked solution takes the route a textbook takes (issue 37, item 1): Newton's second
+law along the motion and torques about the center or a fixed pivot, the ties between the motions,
+energy for a speed between two states, and the two engine routes only as the proof.
+
+Each case names the textbook route it follows and checks the principle of each step, the number of
+equations, and the result against the closed form the text prints (written here, not read back).
+"""
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from conftest import run_derive
+from derive.core import library
+from derive.language.problem import load
+from derive.solution.answers import Solution
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _load(problem_id: str):
+    """A library problem, or a textbook setup of the test suite not (yet) in the library."""
+    if problem_id in {p.stem for p in library.problem_files()}:
+        return load(problem_id)
+    (path,) = (ROOT / "tests" / "textbook").rglob(f"{problem_id}.yaml")
+    return load(path)
+
+
+def _symbols(*names):
+    return [sp.Symbol(n, positive=True) for n in names]
+
+
+def _principles(steps) -> list[str]:
+    """Each step's principle, by the words it opens with."""
+    kinds = {"Newton's second law": "newton", "Torque about": "torque", "Across its motion": "across",
+             "Solving": "solve", "Energy is conserved": "energy", "Energy conservation": "energy",
+             "From rest at the constant acceleration": "kinematics", "It rolls without slipping while": "friction"}
+    result = []
+    for step in steps:
+        kind = next((k for opening, k in kinds.items() if step.text.startswith(opening)), None)
+        if kind is None and ("rolls without slipping" in step.text or "neither stretches" in step.text
+                             or "turns about its pin" in step.text):
+            kind = "ties"
+        result.append(kind or step.text)
+    return result
+
+
+def _solved(steps, name: str) -> sp.Expr:
+    (value,) = [e.rhs for s in steps if s.role == "solve" for e in s.equations if str(e.lhs) == name]
+    return value
+
+
+def _same(a, b) -> bool:
+    return sp.simplify(a - b) == 0
+
+
+def test_the_rolling_sphere_reads_as_the_textbook_solves_it():
+    """Halliday, Resnick & Walker, Fundamentals of Physics 10th ed., ch. 11, Module 11-2 (forces of
+    rolling, eq. 11-10: a = g sin(theta)/(1 + I/(M R^2)); the ball rolling down a ramp by energy,
+    v = sqrt(10 g h / 7)): Newton along the slope with friction up it, the torque about the center,
+    a = R alpha; energy for the speed at the bottom."""
+    solution = Solution(load("rolling_incline"))
+    steps = solution.student_steps
+    assert list(steps) == ["Forces and torques along the motion", "The speed at the bottom, by energy",
+                           "The time to the bottom"]
+    along = steps["Forces and torques along the motion"]
+    assert _principles(along) == ["newton", "ties", "across", "solve", "friction"]
+    M, g, theta, R, H = _symbols("M", "g", "theta", "R", "H")
+    a, f = sp.Symbol("a", real=True), sp.Symbol("f", real=True)
+    newton, torque = along[0].equations
+    assert _same(newton.lhs - newton.rhs, M * a - (M * g * sp.sin(theta) - f))  # friction up the slope: a magnitude
+    assert _same(_solved(along, "a"), sp.Rational(5, 7) * g * sp.sin(theta))
+    assert _same(_solved(along, "f"), sp.Rational(2, 7) * M * g * sp.sin(theta))
+    energy = steps["The speed at the bottom, by energy"]
+    assert _principles(energy) == ["energy", "energy"]
+    assert _same(energy[-1].equations[-1].rhs, sp.sqrt(sp.Rational(10, 7) * g * H))
+    assert sum(len(s.equations) for s in along[:4]) <= 8  # a and f in at most eight equations
+
+
+def test_the_atwood_machine_with_a_massive_pulley():
+    """Serway & Jewett, Physics for Scientists and Engineers 9th ed., ch. 10 (an Atwood machine with
+    a massive pulley): Newton for each block, the torque about the axle, a = R alpha;
+    a = (m1 - m2) g/(m1 + m2 + M/2)."""
+    steps = Solution(_load("atwood_massive_pulley")).student_steps["Forces and torques along the motion"]
+    assert _principles(steps) == ["torque", "newton", "newton", "ties", "solve"]
+    m1, m2, M, g = _symbols("m1", "m2", "M", "g")
+    assert _same(_solved(steps, "a"), (m1 - m2) * g / (m1 + m2 + M / 2))
+    assert {"T_1", "T_2"} <= {str(e.lhs) for s in steps for e in s.equations}  # a tension on each side
+
+
+def test_the_yo_yo_falls_by_newton_and_the_torque_about_its_center():
+    """Halliday, Resnick & Walker 10th ed., ch. 11, Module 11-3 (the yo-yo, eq. 11-13:
+    a = g/(1 + I/(M R0^2)), R0 the axle's radius)."""
+    steps = Solution(_load("yoyo_axle")).student_steps["Forces and torques along the motion"]
+    assert _principles(steps) == ["newton", "ties", "solve"]
+    M, g, R, r = _symbols("M", "g", "R", "r")
+    assert _same(_solved(steps, "a"), g / (1 + (M * R**2 / 2) / (M * r**2)))
+
+
+def test_the_rod_released_from_horizontal_turns_about_its_pivot():
+    """Serway & Jewett 9th ed., ch. 10 (a rod pinned at one end released from rest horizontal):
+    the torque about the pivot, which the pivot's force has no moment about, I_P alpha = M g L/2 with
+    I_P = M L^2/3: alpha = 3 g/(2 L); the hinge's force from Newton's law for the center, M g/4."""
+    steps = Solution(_load("rod_released_horizontal")).student_steps["Forces and torques along the motion"]
+    assert _principles(steps)[:2] == ["torque", "ties"] and steps[0].text.startswith("Torque about the rod's pivot")
+    M, g, L = _symbols("M", "g", "L")
+    (torque,) = steps[0].equations
+    assert _same(torque.lhs / sp.Symbol("alpha", real=True), M * L**2 / 3)
+    assert _same(_solved(steps, "a"), sp.Rational(3, 4) * g)  # the center's, (L/2) alpha
+    assert _same(_solved(steps, "R_y"), M * g / 4)
+
+
+def test_a_disk_on_its_axle_with_a_hanging_block():
+    """The lecture notes' §4.1 and Halliday ch. 10 (a block hanging from a cord wound on a disk):
+    m g - T = m a, T R = (M R^2/2) alpha, a = R alpha; a = 2 m g/(M + 2 m)."""
+    steps = Solution(load("string_wrapped_disk")).student_steps["Forces and torques along the motion"]
+    assert _principles(steps) == ["torque", "newton", "ties", "solve"]
+    m, M, g = _symbols("m", "M", "g")
+    # the ask `a` is the block's y component (y up), negative: the route's acceleration is renamed
+    assert _same(_solved(steps, "a_block"), 2 * m * g / (M + 2 * m))
+
+
+def test_the_route_agrees_with_both_routes_in_derive_check():
+    done = run_derive("check", "rolling_incline", "string_wrapped_disk")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.count("textbook_route") == 2
+
+
+@pytest.mark.parametrize("problem_id", ["compound_pendulum", "beetle_lazy_susan", "kepler_orbit"])
+def test_problems_outside_the_route_keep_the_engines_routes(problem_id):
+    """A small oscillation, an impact, an orbit: not (yet) the route along the motion; their worked
+    solutions show the engine's derivation as before."""
+    solution = Solution(load(problem_id))
+    assert solution.student_steps is None and solution.steps()
+
+
+def test_the_solutions_pdf_shows_the_route_and_the_proof_in_an_appendix(tmp_path):
+    out = tmp_path / "out"
+    done = run_derive("sheet", "rolling_incline", "--out", str(out), "--to", "")
+    assert done.returncode == 0, done.stderr
+    tex = (out / "solutions.tex").read_text()
+    route, appendix = tex.split(r"\appendix")
+    assert "Forces and torques along the motion" in route and r"\subsection*{Lagrange" not in route
+    assert r"\subsubsection*{Lagrange's method}" in appendix and r"\subsubsection*{Newton–Euler}" in appendix
