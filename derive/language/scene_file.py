@@ -362,8 +362,8 @@ def read_scene(reader: Reader, raw) -> Scene:
     raw = reader.mapping(raw, "scene", keys=SCENE, optional=RETIRED)
     if "events" in raw:
         raise reader.fail("scene.events", "write events as states: `struck: {from: flying, event: {stick: bullet, "
-                                          "to: rod}}` (stick, lock, bounce, move, turn or transfer; see the README's "
-                                          "states)")
+                                          "to: rod}}` (stick, lock, bounce, move, turn or transfer; see the "
+                                          "documentation's States and events)")
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     if "top" in raw:
         raise reader.fail("scene.top", "a top is a body on a fixed point: bodies: {top: {shape: custom, mass: m, "
