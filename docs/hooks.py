@@ -32,7 +32,7 @@ PAGES = [
     ("parameters", "Parameters", "parameters: {NAME: ...}", "derive.language.problem:PARAMETER", []),
     ("asks", "Asks", "ask: {NAME: ...}", "derive.language.ask_options:ASK", ["derive.language.ask_options"]),
     ("bodies", "Bodies", "scene: {bodies: {NAME: ...}}", "derive.language.body_file:BODY",
-     ["derive.language.body_file", "derive.language.body_file:read", "derive.language.body_file:_joint"]),
+     ["derive.language.body_file", "derive.language.body_file:_joint"]),
     ("surfaces", "Surfaces", "scene: {surfaces: {NAME: ...}}", "derive.language.scene_file:SURFACE",
      ["derive.parts.surfaces", "derive.language.scene_file:_surfaces"]),
     ("pin", "Pin", "scene: {joints: {NAME: {pin: ...}}}", "derive.parts.pin:KEYS",

@@ -22,13 +22,13 @@ from dataclasses import dataclass
 
 #: What a key's value may be, in words (the documentation's column "value").
 KINDS = {
-    "expression": "a number or an expression of the parameters (`2*m`, `pi/2`)",
-    "quantity": "a number, an expression, or a number with a unit (`25 deg`, `200 g`)",
-    "name": "a name declared elsewhere in the file (a body, a surface, a parameter, ...)",
+    "expression": "a number or an expression (`2*m`, `pi/2`)",
+    "quantity": "a number, an expression or a value with a unit (`25 deg`)",
+    "name": "a name",
     "text": "text",
-    "point": "a point: `BODY`, `BODY.POINT`, `{BODY: [x, y]}`, `[x, y]` or a ground point's name",
-    "points": "a list of two points",
-    "vector": "a list of coordinates, `[x, y]` (or `[x, y, z]` in 3D), each an expression",
+    "point": "a point (`BODY`, `BODY.POINT`, `{BODY: [x, y]}`, `[x, y]`, a ground point)",
+    "points": "two points",
+    "vector": "`[x, y]` (in 3D `[x, y, z]`), each an expression",
     "boolean": "`true` or `false`",
     "integer": "a whole number",
     "list": "a list",
