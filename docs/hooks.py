@@ -79,6 +79,17 @@ PAGES = [
     ("set-file", "The set file", "a set file (problems/sets/)", "derive.language.problem_sets:SET",
      ["derive.language.problem_sets:load_set"]),
 ]
+#: Where a page's part shows in a file's scene: (the scene's section, the key within an entry), to list
+#: the library problems that use it.
+USES = {"bodies": ("bodies", None), "surfaces": ("surfaces", None), "pin": ("joints", "pin"),
+        "slider": ("joints", "slider"), "weld": ("joints", "weld"), "clutch": ("joints", "clutch"),
+        "contact": ("joints", "touches"), "cord": ("cords", None), "string": ("constraints", "string"),
+        "gravity": ("loads", "gravity"), "force": ("loads", "force"), "torque": ("loads", "torque"),
+        "spring": ("loads", "spring"), "torsional-spring": ("loads", "torsional_spring"),
+        "damper": ("loads", "damper"), "pull": ("loads", "pull"), "states": ("states", None),
+        "bearings": ("bodies", "bearings"), "pivot-point": ("bodies", "pivot_point"),
+        "rolls-on-edge": ("bodies", "rolls_on_edge"), "free-rotation": ("bodies", "free_rotation"),
+        "orbit": ("orbit", None), "standing-wave": ("standing_wave", None), "internal-forces": ("internal_forces", None)}
 SECTION = "Scene language"
 INCLUDE = re.compile(r"^--8<-- (problem|file): (\S+)$", re.M)
 
@@ -119,7 +130,33 @@ def _table(keys: Keys, heading: str, level: int) -> list[str]:
     return lines
 
 
-def page(name: str, title: str, where: str, keys: str | None, docs: list[str]) -> str:
+def _library() -> dict[str, dict]:
+    """Each library problem's scene, read as derive reads YAML."""
+    import yaml
+
+    from derive.core.library import problem_files
+    from derive.language.reader import Loader
+    return {path.stem: yaml.load(path.read_text(encoding="utf-8"), Loader=Loader).get("scene") or {}  # noqa: S506
+            for path in problem_files()}
+
+
+def users(name: str, scenes: dict[str, dict]) -> list[str]:
+    """The library problems whose scene uses the part of page `name`."""
+    if name not in USES:
+        return []
+    section, key = USES[name]
+    found = []
+    for problem_id, scene in sorted(scenes.items()):
+        entries = scene.get(section)
+        if entries is None:
+            continue
+        entries = list(entries.values()) if isinstance(entries, dict) else entries  # named, or a list
+        if key is None or any(isinstance(e, dict) and key in e for e in entries):
+            found.append(problem_id)
+    return found
+
+
+def page(name: str, title: str, where: str, keys: str | None, docs: list[str], scenes: dict | None = None) -> str:
     """The Markdown of one generated page."""
     modules = sorted({d.partition(":")[0] for d in docs + ([keys] if keys else [])})
     lines = [f"# {title}", "",
@@ -139,6 +176,10 @@ def page(name: str, title: str, where: str, keys: str | None, docs: list[str]) -
         lines += ["## Value", "", "`gravity:` takes one expression, the field strength in m/s^2, along -y.", ""]
     elif keys:
         lines += _table(_lookup(keys), "Keys", 2)
+    used = users(name, scenes or {})
+    if used:
+        lines += ["## In the library", "", "Problems of the library that use it (`derive solve ID` derives one; "
+                  "`derive list` shows them all): " + ", ".join(f"`{u}`" for u in used) + ".", ""]
     return "\n".join(lines)
 
 
@@ -151,8 +192,9 @@ def on_config(config):
 
 
 def on_files(files, config):
+    scenes = _library()
     for name, title, where, keys, docs in PAGES:
-        files.append(File.generated(config, f"scene/{name}.md", content=page(name, title, where, keys, docs)))
+        files.append(File.generated(config, f"scene/{name}.md", content=page(name, title, where, keys, docs, scenes)))
     from derive.language.schema import problem_schema, set_schema
     for name, schema in (("problem", problem_schema()), ("set", set_schema())):
         files.append(File.generated(config, f"schema/{name}.json", content=json.dumps(schema, indent=1)))

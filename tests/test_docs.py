@@ -63,6 +63,8 @@ def test_a_part_page_lists_the_keys_its_code_reads(site):
         for key in keys:
             assert f"<code>{key}</code>" in text, (name, key)
         assert keys[next(iter(keys))].meaning.split(",")[0] in text
+    pull = (site / "scene" / "pull.html").read_text(encoding="utf-8")
+    assert "In the library" in pull and "<code>tugged_spool</code>" in pull  # the problems that use it
 
 
 def test_the_cli_page_is_clicks_help(site):
