@@ -1,16 +1,17 @@
-# The README's commands: `make sheet` (set up, then build the demo set) and `make test`.
+# The README's commands: `make setup`, `make test` (what CI runs: .ci/run), `make sheet` (the demo set)
+# and `make docs` (the documentation site, build/site; tests/test_docs.py builds it too).
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: setup tools sheet test bench clean
+.PHONY: setup tools sheet test docs bench clean
 
 setup: $(VENV)/.installed tools
 
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[test]'
+	$(BIN)/pip install --quiet -e '.[test,docs]'
 	touch $@
 
 tools:
@@ -19,8 +20,11 @@ tools:
 sheet: setup
 	$(BIN)/derive sheet demo --out build/demo
 
+docs: setup
+	$(BIN)/mkdocs build --strict
+
 test: setup
-	$(BIN)/python -m pyflakes derive tests benchmarks
+	$(BIN)/python -m pyflakes derive tests benchmarks docs/hooks.py
 	# one worker per core (pytest-xdist): the suite takes 7 to 14 min on 2 cores. A fixed hash seed, so
 	# that a run can be repeated: sympy orders terms by string hashes
 	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto

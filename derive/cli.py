@@ -363,6 +363,26 @@ def list_problems(topic: str | None, search: str | None) -> None:
 
 
 @main.command()
+@click.option("--set", "of_set", is_flag=True, help="The schema of a set file instead of a problem file.")
+@reports_errors
+def schema(of_set: bool) -> None:
+    """Print the JSON Schema of a problem file (or, with --set, of a set file).
+
+    An editor's YAML support then completes and checks keys as you type. Save it and name it on
+    the first line of a problem file:
+
+    \b
+      derive schema > problem.schema.json
+      # yaml-language-server: $schema=problem.schema.json
+    """
+    import json
+
+    from derive.language import schema as schemas
+
+    click.echo(json.dumps(schemas.set_schema() if of_set else schemas.problem_schema(), indent=1))
+
+
+@main.command()
 @click.argument("problems", nargs=-1)
 @click.option("--seeds", type=click.IntRange(1, 10000), default=None,
               help="Instead: draw each problem's parameters with N seeds and check every draw (conditions "
@@ -515,7 +535,7 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
     files, PDFs (latexmk), HTML (pandoc) and the answer key as CSV and JSON; with --to also
     Markdown and DOCX (pandoc), Moodle XML (a cloze question per problem and variant) and a
     QTI 1.2 zip for Canvas. A derive.toml in the working folder gives course defaults
-    (README: Course defaults).
+    (see the documentation: Course defaults).
 
     \b
     Examples:

@@ -10,9 +10,28 @@ from decimal import Decimal, InvalidOperation
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.language.reader import Reader
 from derive.model.directions import directional
 from derive.model.scene import Quantity, Scene
+
+#: An ask's entry under `ask:`.
+ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
+           of=Key("text", "the quantity asked: BODY.acceleration.y, ROPE.tension, BODY.inertia, ...", required=True),
+           unit=Key("text", "its unit (m/s^2, N, kg m^2, deg, ...)", required=True),
+           axis=Key("text", "the axis a moment of inertia is about (see derive inertia --help)"),
+           sig_figs=Key("integer", "significant figures of the answer (default 3 in a set)"),
+           magnitude=Key("boolean", "ask its magnitude (default false)"),
+           zero_for=Key("name", "ask instead the parameter's value at which the quantity vanishes"),
+           small=Key("any", "a size (BODY.SIZE), or a list of them, taken to zero in the answer"),
+           shift=Key("any", "the axis moved parallel to itself: [dx, dy] in the body's frame, or a distance"),
+           amplitude=Key("expression", "a pendulum's amplitude: the period at it"),
+           exact=Key("name", "the ask this one approximates (its relative error is reported)"),
+           tolerance=Key("any", "what an LMS accepts around the answer: 2% or an amount in its unit"),
+           sign=Key("text", "the sign convention the question states (y up): the answer is then the signed "
+                            "component; without it a quantity with a direction is asked as its magnitude"),
+           **{"in": Key("name", "the state the quantity is asked in")})
+
 
 
 def tolerance(reader: Reader, raw, field: str) -> str | None:

@@ -15,6 +15,8 @@ import sympy as sp
 from derive.model import composite, inertia
 from derive.language import solid_file
 from derive.core import units
+from derive.core.keys import Key, Keys
+from derive.parts import contact
 from derive.core.errors import InputError
 from derive.parts.pin import Pin
 from derive.parts.places import turned
@@ -33,13 +35,47 @@ COORDINATE_UNITS = {"x": "m", "y": "m", "z": "m", "r": "m", "phi": "rad", "theta
 PATH_COORDINATES = {"polar": (("r", "m"), ("theta", "rad")), "cartesian": (("x", "m"), ("y", "m"))}
 
 
+#: The sizes any shape takes (each shape its own: SHAPE_SIZES).
+ALL_SIZES = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
+#: `joint: {pivot: ...}`: the body turns about a fixed point off its center.
+PIVOT = Keys(distance=Key("expression", "how far the pin is from the center of mass, in m", required=True),
+             side=Key("name", "above (the body hangs) or below (it stands on it), in its own frame (default above)",
+                      choices=("above", "below")))
+#: `path: {polar: ...}` or `{cartesian: ...}`: a prescribed motion.
+PATH = Keys(**{kind: Key("mapping", f"the {kind} coordinates as functions of t (or any)",
+                         keys=Keys(**{c: Key("expression", f"{c}, in {unit}", required=True) for c, unit in names}))
+               for kind, names in PATH_COORDINATES.items()})
+#: A body's entry under `scene.bodies`.
+BODY = Keys(shape=Key("name", "its shape: one of derive inertia's, composite or custom", required=True,
+                      choices=(*SHAPE_SIZES,)),
+            mass=Key("expression", "its mass, in kg"),
+            density=Key("expression", "its density instead of a mass (a function of the shape's coordinates)"),
+            inertia=Key("any", "a custom body's moment about its center (an expression), or in 3D {axial, transverse} "
+                               "or {principal: [Ix, Iy, Iz]}"),
+            inertia_about=Key("name", "where a custom inertia is taken: center (default) or pivot",
+                              choices=("center", "pivot")),
+            joint=Key("any", "fixed_axle (a pin at its center) or {pivot: {distance, side}}"),
+            on=Key("name", "the surface it rests on"),
+            contact=Key("name", "how it moves on the surface (rolling: a round body's default)",
+                        choices=("rolling", "sliding")),
+            friction=Key("mapping", "coefficients of its contact; derive decides the regime", keys=contact.FRICTION),
+            path=Key("mapping", "a prescribed motion", keys=PATH),
+            bearings=Key("mapping", "in 3D: it turns at a constant rate about a fixed shaft", keys=solid_file.BEARINGS),
+            pivot_point=Key("mapping", "in 3D: it turns about a fixed point (a top)", keys=solid_file.PIVOT_POINT),
+            rolls_on_edge=Key("mapping", "in 3D: it rolls on its rim on the horizontal plane",
+                              keys=solid_file.ROLLS_ON_EDGE),
+            free_rotation=Key("mapping", "in 3D: it turns with no torque", keys=solid_file.FREE_ROTATION),
+            angle=Key("quantity", "its angle in the reference configuration, from +x counter-clockwise (default 0)"),
+            parts=Key("mapping", "a composite's parts, each {shape, mass, sizes, at, angle} in the body's frame"),
+            at=Key("vector", "where its center of mass is placed, [x, y] in m (a composite's: its origin)"),
+            velocity=Key("vector", "its velocity [vx, vy] in m/s where it starts (a rolling body's)"),
+            **{size: Key("expression", "a size of its shape, in m (see derive inertia --help)") for size in ALL_SIZES})
+
+
 def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     """The body `name` and its joint to the ground (None without one)."""
     field = f"scene.bodies.{name}"
-    all_sizes = sorted({s for sizes in SHAPE_SIZES.values() for s in sizes})
-    spec = reader.mapping(spec, field, required=("shape",),
-                          optional=("mass", "density", "inertia", "inertia_about", "joint", "on", "contact", "friction",
-                                    "path", "bearings", "pivot_point", "rolls_on_edge", "free_rotation", "angle", "parts", *MOTION_KEYS, *all_sizes))
+    spec = reader.mapping(spec, field, keys=BODY)
     shape = spec["shape"]
     if shape not in SHAPE_SIZES:
         raise reader.fail(f"{field}.shape", f"unknown shape {shape!r} (shapes: {', '.join(SHAPE_SIZES)})"
@@ -56,7 +92,7 @@ def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     else:
         mass = reader.unspecified(f"m_{name}", "kg")
     sizes = {}
-    for size in all_sizes:
+    for size in ALL_SIZES:
         if shape == "custom" and size == "radius" and size in spec:  # a custom body may roll
             sizes[size] = reader.positive(spec[size], f"{field}.{size}", "m", "a radius")
         elif size in SHAPE_SIZES[shape]:
@@ -167,12 +203,12 @@ def motion(reader: Reader, name: str, spec: dict, bodies: dict[str, Body]) -> Mo
 def _path(reader: Reader, raw, field: str, body: str) -> MotionPath:
     """`{polar: {r: EXPR, theta: EXPR}}` or `{cartesian: {x: ..., y: ...}}` in the parameters and
     the time t; `any` leaves a coordinate an arbitrary function of time."""
-    raw = reader.mapping(raw, field, optional=tuple(PATH_COORDINATES))
+    raw = reader.mapping(raw, field, keys=PATH)
     if len(raw) != 1:
         raise reader.fail(field, "expected polar or cartesian")
     (kind, spec), = raw.items()
     names = PATH_COORDINATES[kind]
-    spec = reader.mapping(spec, f"{field}.{kind}", required=tuple(n for n, _ in names))
+    spec = reader.mapping(spec, f"{field}.{kind}", keys=PATH[kind].keys)
     if "t" in reader.symbols:
         raise reader.fail(f"{field}.{kind}", "t is the time in a path: rename the parameter t")
     reader.symbol_units.setdefault(TIME, "s")
@@ -197,7 +233,7 @@ def _joint(reader: Reader, body: Body, spec, field: str) -> Pin | None:
     if spec == "fixed_axle":
         return Pin("axle", body.name, (0, 0))
     spec = reader.mapping(spec, field, optional=("pivot",))
-    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", required=("distance",), optional=("side",))
+    pivot = reader.mapping(spec.get("pivot"), f"{field}.pivot", keys=PIVOT)
     distance = reader.positive(pivot["distance"], f"{field}.pivot.distance", "m", "a pivot distance")
     side = pivot.get("side", "above")
     if side not in ("above", "below"):

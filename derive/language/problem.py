@@ -25,16 +25,40 @@ from derive.core import expr, library, units
 from derive.numbers import numeric
 from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT, TITLE_LIMIT, TOPIC_LIMIT)
 from derive.core.errors import EngineLimit, ProblemError
+from derive.core.keys import Key, Keys
 from derive.language import ask_options
 from derive.language.reader import Loader, Reader
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.model.scene import DYNAMIC_KINDS, RATE_KINDS, STATE_KINDS, Quantity, Scene, parse_quantity
-from derive.language.scene_file import read_scene
+from derive.language.scene_file import SCENE, read_scene
 from derive.core.spelling import did_you_mean, no_such
 
 DEFAULT_SIG_FIGS = 3
-TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections", "conditions"}
+#: A parameter's entry under `parameters:`.
+PARAMETER = Keys(meaning=Key("text", "what it is, in words", required=True),
+                 unit=Key("text", "its unit (kg, m, rad, deg, m/s^2, ...)", required=True),
+                 value=Key("quantity", "a fixed value (or give a range)"),
+                 range=Key("list", "[low, high]: each variant draws a value in it"),
+                 sig_figs=Key("integer", "significant figures of a drawn value, 1 to 15 (default 3)"))
+CONDITION = Keys(holds=Key("text", "an inequality among parameters and asks, in SI (mu_s >= mu_min)", required=True),
+                 because=Key("text", "why the answers need it", required=True))
+CORRECTION = Keys(where=Key("text", "where in the notes", required=True),
+                  notes=Key("text", "what the notes say", required=True),
+                  derived=Key("text", "what derive derives", required=True),
+                  proof=Key("text", "the test that proves it"))
+#: The top level of a problem file (the scene's keys: derive.language.scene_file.SCENE).
+PROBLEM = Keys(id=Key("text", "its id: letters, digits and _", required=True),
+               title=Key("text", "its title", required=True),
+               topic=Key("text", "its topic (derive list --topic)"),
+               source=Key("text", "where the setup comes from"),
+               parameters=Key("mapping", "the parameters, by name", required=True, values=PARAMETER),
+               scene=Key("mapping", "the physical setup", required=True, keys=SCENE),
+               ask=Key("mapping", "the quantities asked, by name", required=True, values=ask_options.ASK),
+               question=Key("text", "the question for students (LaTeX; {{ NAME }} prints a parameter)", required=True),
+               corrections=Key("list", "errors of the notes this problem corrects", items=CORRECTION),
+               conditions=Key("list", "what the answers need to make sense; a variant is redrawn until they hold",
+                              items=CONDITION))
 
 
 def exact_decimal(value: sp.Expr) -> Decimal:
@@ -280,7 +304,7 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         reader.name(name, field, "a parameter name")
         if name in expr.RESERVED:
             raise reader.fail(field, f"{name!r} is reserved for a function or constant")
-        spec = reader.mapping(spec, field, required=("meaning", "unit"), optional=("value", "range", "sig_figs"))
+        spec = reader.mapping(spec, field, keys=PARAMETER)
         if "value" not in spec and "range" not in spec:
             raise reader.fail(field, "needs a value or a range")
         unit = reader.unit(spec["unit"], f"{field}.unit")
@@ -333,9 +357,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], r
         reader.name(name, field, "an answer name")
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
-        spec = reader.mapping(spec, field, required=("meaning", "of", "unit"),
-                              optional=("axis", "sig_figs", "magnitude", "zero_for", "small", "shift", "amplitude",
-                                        "exact", "tolerance", "in", "sign"))
+        spec = reader.mapping(spec, field, keys=ask_options.ASK)
         zero_for = spec.get("zero_for")
         if zero_for is not None and zero_for not in parameters:
             raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
@@ -437,7 +459,7 @@ def _conditions(reader: Reader, raw, asks: dict[str, Ask]) -> tuple[Condition, .
     result = []
     for i, spec in enumerate(raw):
         field = f"conditions[{i}]"
-        spec = reader.mapping(spec, field, required=("holds", "because"))
+        spec = reader.mapping(spec, field, keys=CONDITION)
         try:
             parts = expr.parse_condition(spec["holds"], {**reader.symbols, **placeholders})
         except expr.ExprError as error:
@@ -464,7 +486,7 @@ def parse(text: str, path: Path) -> Problem:
         where = f"line {mark.line + 1}" if mark else "yaml"
         reason = getattr(error, "problem", None) or str(error).splitlines()[0]
         raise ProblemError(f"{path}: {where}: invalid YAML: {reason}") from None
-    raw = reader.mapping(raw, "", required=("id", "title", "parameters", "scene", "ask", "question"), optional=TOP_LEVEL)
+    raw = reader.mapping(raw, "", keys=PROBLEM)
     problem_id = reader.text(raw["id"], "id", NAME_LIMIT)
     if not library.ID_PATTERN.fullmatch(problem_id):
         raise reader.fail("id", "an id is letters, digits and _, starting with a letter")
@@ -479,7 +501,7 @@ def parse(text: str, path: Path) -> Problem:
         raise reader.fail("corrections", "expected a list")
     corrections = tuple(
         {key: reader.text(text, f"corrections[{i}].{key}", CORRECTION_LIMIT) for key, text in
-         reader.mapping(c, f"corrections[{i}]", required=("where", "notes", "derived"), optional=("proof",)).items()}
+         reader.mapping(c, f"corrections[{i}]", keys=CORRECTION).items()}
         for i, c in enumerate(corrections))
     return Problem(
         id=problem_id,

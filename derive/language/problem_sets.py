@@ -24,16 +24,28 @@ from derive.core import library
 from derive.core.limits import MAX_VARIANTS
 from derive.language.defaults import DEFAULT_OUTPUTS, OUTPUTS, Defaults, outputs
 from derive.core.errors import InputError
+from derive.core.keys import Key, Keys
 from derive.language.problem import load
 from derive.language.reader import Loader
 from derive.core.spelling import did_you_mean
 
-SET_REQUIRED = ("title", "problems")
-SET_OPTIONAL = ("course", "due", "variants", "seed", "outputs", "questions", "answer_space")
+#: A problem of a set by topic: `{topic: rolling}` (all of them) or `{topic: rolling, count: 2}`.
+TOPIC = Keys(topic=Key("text", "a library topic (derive list shows them)", required=True),
+             count=Key("integer", "how many of its problems, picked by the seed (default all)"))
+#: The keys of a set file.
+SET = Keys(title=Key("text", "the set's title, printed on every page", required=True),
+           problems=Key("list", "library ids, problem files, or {topic: TOPIC, count: N}", required=True, items=TOPIC),
+           course=Key("text", "the course named in the header (default: derive.toml's course)"),
+           due=Key("text", "when it is due, as text"),
+           variants=Key("integer", "how many variants, one per student (default 1)"),
+           seed=Key("integer", "the seed the variants are drawn with (default 0)"),
+           outputs=Key("list", "what derive sheet writes (default pdf and html)", choices=OUTPUTS),
+           questions=Key("name", "how the LMS exports ask (default numerical)", choices=("numerical", "choice")),
+           answer_space=Key("text", "room to write under each problem of the printed worksheet: 6cm, 40mm, 2in"))
 #: `answer_space:` of a set file: room left under each problem of the printed worksheet.
 ANSWER_SPACE = re.compile(r"(?:\d+(?:\.\d+)?)(?:cm|mm|in)")
 #: How the LMS exports ask: a number with a tolerance, or a choice among distractors.
-QUESTIONS = ("numerical", "choice")
+QUESTIONS = SET["questions"].choices
 
 
 @dataclass(frozen=True)
@@ -160,12 +172,12 @@ def load_set(reference: str, defaults: Defaults = Defaults()) -> ProblemSet:
     path = library.find_set(reference)
     raw = _read_set(path)
     if not isinstance(raw, dict):
-        raise InputError(f"{path}: expected a mapping with {', '.join(SET_REQUIRED)}")
+        raise InputError(f"{path}: expected a mapping with {', '.join(SET.required)}")
     for key in raw:
-        if key not in SET_REQUIRED + SET_OPTIONAL:
-            raise InputError(f"{path}: {key}: unknown key (allowed: {', '.join(SET_REQUIRED + SET_OPTIONAL)})"
-                             + did_you_mean(key, SET_REQUIRED + SET_OPTIONAL))
-    for key in SET_REQUIRED:
+        if key not in SET:
+            raise InputError(f"{path}: {key}: unknown key (allowed: {', '.join(SET)})"
+                             + did_you_mean(key, SET))
+    for key in SET.required:
         if key not in raw:
             raise InputError(f"{path}: {key}: missing")
     variants = _whole(path, raw, "variants", 1, 1, MAX_VARIANTS)

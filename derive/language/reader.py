@@ -21,6 +21,7 @@ from derive.core import expr, names, units
 from derive.numbers import intervals
 from derive.text import latex_safety
 from derive.core.errors import ProblemError
+from derive.core.keys import Keys
 from derive.core.spelling import did_you_mean
 
 MAX_CHARACTERS = 200_000  # a library problem file is a few thousand
@@ -123,10 +124,14 @@ class Reader:
     def fail(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
 
-    def mapping(self, value, field: str, required=(), optional=(), free: bool = False, points=()) -> dict:
-        """A mapping with the given keys; `free` allows any keys (names of parameters, bodies, ...);
-        `points`: keys whose values are points (`BODY.POINT`, `{BODY: [x, y]}`, `[x, y]`), which
-        `derive.parts.places` reads, rather than names."""
+    def mapping(self, value, field: str, required=(), optional=(), free: bool = False, points=(),
+                keys: Keys | None = None) -> dict:
+        """A mapping with the given keys, or those `keys` declares (derive.core.keys); `free` allows
+        any keys (names of parameters, bodies, ...); `points`: keys whose values are points
+        (`BODY.POINT`, `{BODY: [x, y]}`, `[x, y]`), which `derive.parts.places` reads, rather than names."""
+        if keys is not None:
+            required, optional = keys.required, (*optional, *keys.optional)
+            points = (*points, *(name for name, key in keys.items() if key.kind == "point"))
         if not isinstance(value, dict):
             raise self.fail(field, f"expected a mapping, got {type(value).__name__}")
         unknown = [] if free else [k for k in value if k not in required and k not in optional]

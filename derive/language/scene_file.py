@@ -16,6 +16,7 @@ import sympy as sp
 
 from derive.language import body_file, solid_file, state_file
 from derive.core.errors import EngineLimit
+from derive.core.keys import Key, Keys
 from derive.parts import (clutch, contact, cord, damper, force, gravity, pin, slider, spring, torque, torsional_spring, weld)
 from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
@@ -27,10 +28,47 @@ from derive.language.reader import Reader
 from derive.core.spelling import did_you_mean, no_such
 from derive.model.scene import RESERVED_NAMES, SYSTEMS, Body, Orbit, Scene, StandingWave
 
-#: Parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by their key.
-JOINTS = {"pin": pin.read, "slider": slider.read, "weld": weld.read, "clutch": clutch.read, "touches": contact.read}
-LOADS = {"gravity": gravity.read, "force": force.read, "torque": torque.read, "spring": spring.read,
-         "torsional_spring": torsional_spring.read, "damper": damper.read}
+#: The modules of the parts under `scene.joints` (a mapping of names) and `scene.loads` (a list), by
+#: their key; each reads its entry (`read`) and declares its keys (`KEYS`, but gravity's value is one
+#: expression).
+JOINTS = {"pin": pin, "slider": slider, "weld": weld, "clutch": clutch, "touches": contact}
+LOADS = {"gravity": gravity, "force": force, "torque": torque, "spring": spring, "torsional_spring": torsional_spring,
+         "damper": damper}
+#: The shorthand `pull:` of a cord wound on a hub and pulled by a force.
+PULL = Keys(on=Key("name", "the turning body (a spool)", required=True),
+            force=Key("expression", "the pulling force, in N", required=True),
+            angle=Key("quantity", "its direction above the horizontal", required=True),
+            hub_radius=Key("expression", "the radius of the hub the cord leaves from below, in m", required=True))
+#: The shorthand `string:` under `constraints:`: a cord wound on a reel, its load hanging straight down.
+STRING = Keys(wound_on=Key("name", "the disk or ring the cord is wound on", required=True),
+              hangs=Key("name", "the body hanging from it", required=True),
+              side=Key("name", "the side of the reel the cord leaves from (default right)", choices=("right", "left")),
+              name=Key("name", "the cord's name (default string)"))
+#: Surfaces under `scene.surfaces`, by their kind.
+PLANE = Keys(angle=Key("quantity", "its angle below the horizontal, in [0, pi/2)"),
+             descends=Key("name", "the way it goes down (default right)", choices=("left", "right")),
+             height=Key("expression", "how far it drops below where the bodies on it start, in m"),
+             through=Key("vector", "a point it passes through, [x, y] (default [0, 0])"))
+CIRCLE = Keys(radius=Key("expression", "its radius, in m", required=True),
+              center=Key("vector", "its center, [x, y]"),
+              side=Key("name", "the side bodies ride on (default inside: a bowl)", choices=("inside", "outside")))
+LOOP = Keys(radius=Key("expression", "its radius, in m (a circle ridden inside)", required=True))
+WALL = Keys(facing=Key("name", "the side bodies touch it from", required=True, choices=("left", "right")),
+            through=Key("vector", "a point it passes through, [x, y] (default [0, 0])"))
+SURFACE = Keys(plane=Key("mapping", "a straight incline or floor", keys=PLANE),
+               incline=Key("mapping", "the same as plane", keys=PLANE),
+               circle=Key("mapping", "a circle: a bowl or a dome", keys=CIRCLE),
+               loop=Key("mapping", "a loop ridden inside", keys=LOOP),
+               wall=Key("mapping", "a vertical plane", keys=WALL),
+               carried_by=Key("name", "the body that carries it (a wedge's face, a cart's track)"))
+STANDING_WAVE = Keys(radius=Key("expression", "the radius of the orbit, in m", required=True),
+                     planck=Key("expression", "Planck's constant, in J s", required=True),
+                     wavelengths=Key("integer", "how many wavelengths fit around it (default 1)"))
+INTERNAL_FORCES = Keys(bodies=Key("integer", "how many bodies, 2 to 5", required=True))
+ORBIT = Keys(GM=Key("expression", "the central body's G M, in m^3/s^2", required=True),
+             angular_momentum=Key("expression", "the angular momentum per unit mass, in m^2/s"),
+             semi_major_axis=Key("expression", "the ellipse's semi-major axis, in m"),
+             eccentricity=Key("expression", "the ellipse's eccentricity, 0 to 1"))
 
 
 def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str) -> Contact | None:
@@ -74,7 +112,7 @@ def _surfaces(reader: Reader, raw) -> dict:
     for name, spec in raw.items():
         field = f"scene.surfaces.{name}"
         reader.name(name, field, "a surface name")
-        spec = dict(reader.mapping(spec, field, optional=("plane", "incline", "circle", "loop", "wall", "carried_by")))
+        spec = dict(reader.mapping(spec, field, keys=SURFACE))
         carrier = spec.pop("carried_by", None)
         if carrier is not None:
             reader.name(carrier, f"{field}.carried_by", "a body's name")
@@ -83,7 +121,7 @@ def _surfaces(reader: Reader, raw) -> dict:
         (kind, details), = spec.items()
         where = f"{field}.{kind}"
         if kind == "wall":
-            details = reader.mapping(details, where, required=("facing",), optional=("through",))
+            details = reader.mapping(details, where, keys=WALL)
             if details["facing"] not in ("left", "right"):
                 raise reader.fail(f"{where}.facing", "left or right (the side bodies touch it from)")
             through = reader.vector(details["through"], f"{where}.through", "m", "a position") \
@@ -92,8 +130,7 @@ def _surfaces(reader: Reader, raw) -> dict:
             result[name] = Plane(name, sp.pi / 2, None, through, carrier, descends=details["facing"])
             continue
         if kind in ("circle", "loop"):
-            details = reader.mapping(details, where, required=("radius",),
-                                     optional=("center", "side") if kind == "circle" else ())
+            details = reader.mapping(details, where, keys=SURFACE[kind].keys)
             side = details.get("side", "inside")
             if side not in ("inside", "outside"):
                 raise reader.fail(f"{where}.side", "inside (a bowl, a loop) or outside (a dome)")
@@ -102,7 +139,7 @@ def _surfaces(reader: Reader, raw) -> dict:
             result[name] = Circle(name, reader.positive(details["radius"], f"{where}.radius", "m", "a radius"),
                                   center, side, carrier)
             continue
-        details = reader.mapping(details or {}, where, optional=("angle", "descends", "height", "through"))
+        details = reader.mapping(details or {}, where, keys=PLANE)
         descends = details.get("descends", "right")
         if descends not in ("left", "right"):
             raise reader.fail(f"{where}.descends", "left or right (the way the plane goes down)")
@@ -128,8 +165,7 @@ def _string(reader: Reader, index: int, spec, bodies: dict[str, Body]) -> tuple[
     spec = reader.mapping(spec, field, optional=("string",))
     if len(spec) != 1:
         raise reader.fail(field, "expected one constraint kind (string); joints and cords have their own sections")
-    cord_spec = reader.mapping(spec["string"], f"{field}.string", required=("wound_on", "hangs"),
-                               optional=("side", "name"))
+    cord_spec = reader.mapping(spec["string"], f"{field}.string", keys=STRING)
     for key in ("wound_on", "hangs"):
         if cord_spec[key] not in bodies:
             raise reader.fail(f"{field}.string.{key}", no_such("body", cord_spec[key], bodies, "bodies"))
@@ -184,10 +220,10 @@ def _loads(reader: Reader, raw, places: Places) -> tuple[list, list]:
         elif kind == "gravity":
             if found:
                 raise reader.fail(field, "gravity is given twice")
-            found.append(LOADS[kind](reader, places, "gravity", spec, f"{field}.gravity"))
+            found.append(LOADS[kind].read(reader, places, "gravity", spec, f"{field}.gravity"))
         else:
             reader.name(name, f"{field}.{kind}.name", "a load's name")
-            others.append(LOADS[kind](reader, places, name, spec, f"{field}.{kind}"))
+            others.append(LOADS[kind].read(reader, places, name, spec, f"{field}.{kind}"))
     return found, others
 
 
@@ -196,7 +232,7 @@ def _pull(reader: Reader, index: int, spec, places: Places) -> Cord:
     hub of radius r, leaving it from below (the tugged spool of the notes), pulled with force F
     toward theta above the horizontal."""
     field = f"scene.loads[{index}].pull"
-    pull = reader.mapping(spec, field, required=("on", "force", "angle", "hub_radius"))
+    pull = reader.mapping(spec, field, keys=PULL)
     bodies = places.bodies
     if pull["on"] not in bodies or not bodies[pull["on"]].rotates:
         raise reader.fail(f"{field}.on", f"no turning body {pull['on']!r} (bodies: {', '.join(bodies)})")
@@ -303,15 +339,31 @@ def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
                                               "surface)")
 
 
+#: The sections of `scene:`. Joints, loads, cords and constraints hold the parts of JOINTS and
+#: LOADS, the cords' paths (derive.parts.cord) and STRING; derive.language.schema spells them out.
+SCENE = Keys(bodies=Key("mapping", "the bodies, by name", values=body_file.BODY),
+             points=Key("mapping", "points of the ground, by name: [x, y]", values=Key("vector", "a point of the ground")),
+             surfaces=Key("mapping", "the surfaces, by name", values=SURFACE),
+             joints=Key("mapping", "joints, by name: one of " + ", ".join(JOINTS)),
+             cords=Key("mapping", "cords, by name: each a path from end to end"),
+             constraints=Key("list", "the shorthand string: entries", items=Keys(string=Key("mapping", "a string wound "
+                                                                                 "on a reel", keys=STRING))),
+             loads=Key("list", "the loads, each one of " + ", ".join(LOADS) + " or pull"),
+             states=Key("mapping", "states of the motion, by name, in order", values=state_file.STATE),
+             orbit=Key("mapping", "a body in a Kepler orbit", keys=ORBIT),
+             standing_wave=Key("mapping", "a standing wave on a circle (Bohr's model)", keys=STANDING_WAVE),
+             internal_forces=Key("mapping", "internal forces between bodies", keys=INTERNAL_FORCES))
+#: Keys of earlier versions, refused with what to write instead.
+RETIRED = ("events", "top", "spinning_wheel")
+
+
 def read_scene(reader: Reader, raw) -> Scene:
     """The scene section, validated, as a Scene."""
-    raw = reader.mapping(raw, "scene", optional=("bodies", "points", "surfaces", "joints", "cords", "constraints",
-                                                 "loads", "orbit", "events", "top", "spinning_wheel", "standing_wave",
-                                                 "internal_forces", "states"))
+    raw = reader.mapping(raw, "scene", keys=SCENE, optional=RETIRED)
     if "events" in raw:
         raise reader.fail("scene.events", "write events as states: `struck: {from: flying, event: {stick: bullet, "
-                                          "to: rod}}` (stick, lock, bounce, move, turn or transfer; see the README's "
-                                          "states)")
+                                          "to: rod}}` (stick, lock, bounce, move, turn or transfer; see the "
+                                          "documentation's States and events)")
     orbit = _orbit(reader, raw["orbit"]) if "orbit" in raw else None
     if "top" in raw:
         raise reader.fail("scene.top", "a top is a body on a fixed point: bodies: {top: {shape: custom, mass: m, "
@@ -364,7 +416,7 @@ def read_scene(reader: Reader, raw) -> Scene:
             hint = next((h for k in spec if (h := did_you_mean(k, JOINTS))), "") if not kind and isinstance(spec, dict) \
                 else ""
             raise reader.fail(field, f"expected one joint kind ({', '.join(JOINTS)}){hint}")
-        joints.append(JOINTS[kind[0]](reader, places, name, spec, field))
+        joints.append(JOINTS[kind[0]].read(reader, places, name, spec, field))
     cords = [_cord(reader, places, name, spec["path"], spec["field"]) for name, spec in strings]
     cords += [_cord(reader, places, name, path, f"scene.cords.{name}")
               for name, path in reader.named(raw.get("cords"), "cords").items()]
@@ -426,7 +478,7 @@ def read_scene(reader: Reader, raw) -> Scene:
 
 def _wave(reader: Reader, raw) -> StandingWave:
     field = "scene.standing_wave"
-    raw = reader.mapping(raw, field, required=("radius", "planck"), optional=("wavelengths",))
+    raw = reader.mapping(raw, field, keys=STANDING_WAVE)
     n = reader.expression(raw.get("wavelengths", 1), f"{field}.wavelengths", {})
     if not (n.is_integer and n.is_positive):
         raise reader.fail(f"{field}.wavelengths", "a whole number of wavelengths, 1 or more")
@@ -435,7 +487,7 @@ def _wave(reader: Reader, raw) -> StandingWave:
 
 
 def _internal_forces(reader: Reader, raw) -> int:
-    raw = reader.mapping(raw, "scene.internal_forces", required=("bodies",))
+    raw = reader.mapping(raw, "scene.internal_forces", keys=INTERNAL_FORCES)
     if not isinstance(raw["bodies"], int) or not 2 <= raw["bodies"] <= 5:
         raise reader.fail("scene.internal_forces.bodies", "a whole number of bodies from 2 to 5")
     return raw["bodies"]
@@ -462,7 +514,7 @@ def _couples_in_3d(reader: Reader, raw: list, loads: list, pivoted: dict) -> Non
 
 def _orbit(reader: Reader, raw) -> Orbit:
     field = "scene.orbit"
-    raw = reader.mapping(raw, field, required=("GM",), optional=("angular_momentum", "semi_major_axis", "eccentricity"))
+    raw = reader.mapping(raw, field, keys=ORBIT)
     GM = reader.positive(raw["GM"], f"{field}.GM", "m^3/s^2", "GM")
     l = None
     if "angular_momentum" in raw:

@@ -11,9 +11,38 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.language.reader import Reader
 from derive.model.scene import Body
 from derive.model.solid_scene import Bearings, FreeRotation, PivotPoint, RollsOnEdge, own_axis
+
+#: `bearings:` a body turning at a constant rate about a fixed shaft.
+BEARINGS = Keys(rate=Key("expression", "the constant rate about the shaft (the z axis), in rad/s", required=True),
+                tilt=Key("quantity", "the body's own axis from the shaft toward +x, 0 to pi", required=True),
+                roll=Key("quantity", "the body's turn about its own axis first (default 0)"),
+                apart=Key("expression", "the distance between the two bearings, in m"),
+                through=Key("any", "the body's point the shaft passes through: a named point or [x, y, z] in the "
+                                   "body's frame (default: its center of mass)"),
+                incline=Key("quantity", "the shaft's angle above the horizontal under gravity, -pi/2 to pi/2"),
+                thrust=Key("name", "the bearing that takes the weight along an inclined shaft", choices=("A", "B")))
+#: `rolls_on_edge:` a thin round body rolling on its rim on the horizontal plane.
+ROLLS_ON_EDGE = Keys(tilt=Key("quantity", "its plane's lean from the vertical in the steady motion, 0 to pi/2"),
+                     circle=Key("expression", "the radius of the circle its contact point traces, in m"))
+#: `inertia:` of an axially symmetric custom body in 3D.
+AXIAL_INERTIA = Keys(axial=Key("expression", "the moment about its symmetry axis, I3, in kg m^2", required=True),
+                     transverse=Key("expression", "the moment across it, I1, in kg m^2"))
+#: `inertia:` of a custom body in free rotation, by its principal moments.
+PRINCIPAL_INERTIA = Keys(principal=Key("vector", "the principal moments [Ix, Iy, Iz] about the center of mass",
+                                       required=True))
+#: `pivot_point:` a body turning about a fixed point (a top, a gyroscope).
+PIVOT_POINT = Keys(at=Key("any", "where the point is: a distance below the center of mass along the body's axis, "
+                                 "tip, end, center or a composite's named point", required=True),
+                   tilt=Key("quantity", "the axis's tilt from the vertical, 0 to pi/2"),
+                   spin=Key("expression", "omega's component along the axis, in rad/s"))
+#: `free_rotation:` a body turning with no torque.
+FREE_ROTATION = Keys(spin=Key("expression", "omega's component along the body's own axis, in rad/s", required=True),
+                     across=Key("expression", "omega's component across it, in rad/s"))
+
 def _at_range_ends(reader: Reader, value: sp.Expr) -> list[sp.Expr]:
     """The value at every corner of its parameters' ranges in SI (a fixed parameter at its value)."""
     corners = [{}]
@@ -36,8 +65,7 @@ def bearings(reader: Reader, spec: dict, field: str, body: Body, weighed: bool) 
     other = next((k for k in ("joint", "on", "path", "velocity") if k in spec), None)
     if other:
         raise reader.fail(f"{field}.{other}", "a body in bearings is held by its shaft alone")
-    raw = reader.mapping(spec["bearings"], field_here, required=("rate", "tilt"),
-                         optional=("roll", "apart", "through", "incline", "thrust"))
+    raw = reader.mapping(spec["bearings"], field_here, keys=BEARINGS)
     tilt = reader.dimensioned(raw["tilt"], f"{field_here}.tilt", "rad", "a tilt")
     if not all(v.is_number and 0 <= v <= sp.pi for v in _at_range_ends(reader, tilt)):
         raise reader.fail(f"{field_here}.tilt", "the tilt from the shaft is between 0 and pi (turn the body by "
@@ -113,7 +141,7 @@ def rolls_on_edge(reader: Reader, spec: dict, field: str, body: Body) -> RollsOn
     if RIMS[body.shape] not in body.sizes:
         raise reader.fail(f"{field}.radius", "a custom body rolling on its edge needs the radius of its rim")
     moments = axial_inertia(reader, spec, field) if body.shape == "custom" else None
-    raw = reader.mapping(spec["rolls_on_edge"] or {}, here, optional=("tilt", "circle"))
+    raw = reader.mapping(spec["rolls_on_edge"] or {}, here, keys=ROLLS_ON_EDGE)
     if ("tilt" in raw) != ("circle" in raw):
         raise reader.fail(here, "the steady motion needs both the lean and the circle: {tilt: theta, circle: R}")
     tilt = circle = None
@@ -135,7 +163,7 @@ def axial_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.E
         raise reader.fail(f"{field}.inertia", "an axially symmetric custom body (on a fixed point, rolling on its "
                                               "edge, in free rotation) needs inertia: {axial: I3, transverse: I1} "
                                               "(in free rotation, or {principal: [Ix, Iy, Iz]})")
-    raw = reader.mapping(spec["inertia"], f"{field}.inertia", required=("axial",), optional=("transverse",))
+    raw = reader.mapping(spec["inertia"], f"{field}.inertia", keys=AXIAL_INERTIA)
     axial = reader.positive(raw["axial"], f"{field}.inertia.axial", "kg*m^2", "a moment of inertia")
     if "transverse" not in raw:
         return reader.unspecified(f"I_transverse_{field.rpartition('.')[2]}", "kg*m^2"), axial
@@ -168,7 +196,7 @@ def pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoin
     other = next((k for k in ("joint", "on", "path", "velocity", "bearings") if k in spec), None)
     if other:
         raise reader.fail(f"{field}.{other}", "a body on a fixed point is held by that point alone")
-    raw = reader.mapping(spec["pivot_point"], here, required=("at",), optional=("tilt", "spin"))
+    raw = reader.mapping(spec["pivot_point"], here, keys=PIVOT_POINT)
     at = raw["at"]
     axis = own_axis(body.shape)
     named = _named_points(body)
@@ -214,7 +242,7 @@ def free_rotation(reader: Reader, spec: dict, field: str, body: Body) -> FreeRot
     if other:
         raise reader.fail(f"{field}.{other}", "a body in free rotation is held by nothing (its moments are about "
                                               "its center of mass)")
-    raw = reader.mapping(spec["free_rotation"], here, required=("spin",), optional=("across",))
+    raw = reader.mapping(spec["free_rotation"], here, keys=FREE_ROTATION)
     spin = reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin")
     across = (reader.positive(raw["across"], f"{here}.across", "rad/s", "omega's component across the axis")
               if "across" in raw else reader.unspecified(f"across_{body.name}", "rad/s"))
@@ -227,7 +255,7 @@ def free_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.Ex
     rotation: `inertia: {principal: [Ix, Iy, Iz]}`, or `{axial: I3, transverse: I1}` (I1, I1, I3)."""
     raw = spec.get("inertia")
     if isinstance(raw, dict) and "principal" in raw:
-        raw = reader.mapping(raw, f"{field}.inertia", required=("principal",))
+        raw = reader.mapping(raw, f"{field}.inertia", keys=PRINCIPAL_INERTIA)
         here = f"{field}.inertia.principal"
         if not isinstance(raw["principal"], list) or len(raw["principal"]) != 3:
             raise reader.fail(here, "three principal moments about the center of mass, [Ix, Iy, Iz]")

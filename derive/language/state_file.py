@@ -8,6 +8,7 @@ zero). derive.mechanics.states finds them; derive.solution.state_answers answers
 """
 from __future__ import annotations
 
+from derive.core.keys import Key, Keys
 from derive.parts import contact
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
@@ -38,7 +39,7 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
         field = f"scene.states.{name}"
         if name in taken:
             raise reader.fail(field, f"the name {name!r} is taken: name the state otherwise")
-        spec = reader.mapping(spec, field, optional=("rates", "when", "from", "event"))
+        spec = reader.mapping(spec, field, keys=STATE)
         if not isinstance(spec.get("from", ""), str):
             raise reader.fail(f"{field}.from", "the name of a state above this one")
         earlier = result.get(spec.get("from"))
@@ -102,6 +103,22 @@ EVENTS = {"stick": "the body sticks to the other where it touches it",
           "transfer": "a body resting on a surface (or a contact joint) passes onto the surface to:, where it "
                       "touches both and the two meet tangentially (a ball rolling down a ramp into a loop)"}
 
+#: `event:` what happens in the state `from:` (exactly one of EVENTS, with what it takes).
+EVENT = Keys(**{kind: Key("name", f"the body (or contact) of the event: {meaning}") for kind, meaning in EVENTS.items()},
+             to=Key("point", "the other body, surface or point of the event"),
+             restitution=Key("expression", "a bounce's coefficient of restitution, e"),
+             relative_to=Key("name", "a turn's other body"),
+             angle=Key("quantity", "the angle a turn turns through"),
+             friction=Key("mapping", "a rough bounce's coefficients", keys=contact.FRICTION),
+             grips=Key("boolean", "a rough bounce that grips (default false)"))
+#: A state's entry under `scene.states`: exactly one of rates, when and event.
+STATE = Keys(rates=Key("mapping", "rates at the placement: {BODY.angular_velocity: w0, BODY.velocity.x: v0, ...}"),
+             when=Key("any", "where the motion from from: gets to: stops, {BODY.x|y|angle: value}, "
+                             "{BODY.velocity.x|y: value}, {leaves: BODY}, {slack: CORD}, {slips: BODY}, {grips: NAME}"),
+             event=Key("mapping", "an impact, a move, a turn or a transfer in the state from:", keys=EVENT),
+             **{"from": Key("name", "the state this one follows (default: the placement, at rest)")})
+
+
 
 def _event(reader: Reader, name: str, spec: dict, field: str, places, constraints: list,
            found: dict[str, State]) -> State:
@@ -115,8 +132,7 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     if spec.get("from") not in found:
         raise reader.fail(f"{field}.from", f"an event happens in a state: give from: a state named above this one "
                                            f"(states: {', '.join(found) or 'none'})")
-    raw = reader.mapping(spec["event"], f"{field}.event", optional=(*EVENTS, "to", "restitution", "relative_to",
-                                                                     "angle", "friction", "grips"), points=("to",))
+    raw = reader.mapping(spec["event"], f"{field}.event", keys=EVENT)
     kinds = [k for k in EVENTS if k in raw]
     if len(kinds) != 1:
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))

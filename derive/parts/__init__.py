@@ -22,8 +22,9 @@ contribution comes from a part. `bodies` names the bodies a part couples (a scen
 components follow from it), and `signs` the physical signs its forces must keep (a cord's tension
 >= 0, a normal force >= 0), checked over the parameter ranges.
 
-Adding a part: write its module here with a dataclass deriving from `Part`, override what it
-contributes, and register its problem-file key in `derive.language.scene_file` (docs/design.md, Parts).
+Adding a part: write its module here with a dataclass deriving from `Part` and its keys as
+`KEYS` (derive.core.keys), override what it contributes, and register the module under its
+problem-file key in `derive.language.scene_file` (docs/design.md, Parts).
 
 >>> import sympy as sp
 >>> Part().unknowns(), Part().potential(None)

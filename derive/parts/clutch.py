@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedTorque, Part
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.text.prose import Sentence
@@ -67,11 +68,17 @@ class Clutch(Part):
         return [coords.angular_velocity(self.body) - (coords.angular_velocity(self.to) if self.to else 0)]
 
 
+KEYS = Keys(clutch=Key("name", "one of the two turning bodies", required=True),
+            to=Key("name", "the other turning body, or ground (a brake)", required=True),
+            slipping=Key("expression", "the kinetic friction couple in N m while the plates slip (until a state "
+                                       "when: {grips: NAME})"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Clutch | SlippingClutch:
     """`{clutch: BODY, to: OTHER}`: two turning bodies that turn together (`to: ground`: a
     brake that holds the body); with `slipping: C`, their plates slip with the kinetic couple C
     until they grip (a state `when: {grips: NAME}`)."""
-    spec = reader.mapping(spec, field, required=("clutch", "to"), optional=("slipping",))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, _ = places.point(spec["clutch"], f"{field}.clutch", ground=False)
     to = None if spec["to"] == "ground" else places.point(spec["to"], f"{field}.to", ground=False)[0]
     if to == body:

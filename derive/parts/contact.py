@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, Part, Sign, acting, at_placement
 from derive.parts.surfaces import carried
 from derive.text.prose import Sentence
@@ -205,6 +206,14 @@ class Contact(Part):
                      "its normal force")]
 
 
+FRICTION = Keys(static=Key("expression", "the coefficient of static friction, mu_s"),
+                kinetic=Key("expression", "the coefficient of kinetic friction, mu_k (mu_s defaults to it)"))
+KEYS = Keys(touches=Key("point", "the material point of a body that touches the surface (BODY.POINT)", required=True),
+            on=Key("name", "the surface it rests on", required=True),
+            grips=Key("boolean", "held by static friction as needed (default false: smooth)"),
+            friction=Key("mapping", "coefficients; the engine decides whether it holds", keys=FRICTION))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Contact:
     """`{touches: BODY.POINT, on: SURFACE}`: the body touches the surface at that material point,
     smoothly unless `grips: true` (static friction holds the point as needed) or `friction:
@@ -212,7 +221,7 @@ def read(reader, places, name: str, spec: dict, field: str) -> Contact:
 
     The point must lie on its body and on the surface in the reference configuration (checked
     with the scene's geometry)."""
-    spec = reader.mapping(spec, field, required=("touches", "on"), optional=("grips", "friction"))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, point = places.point(spec["touches"], f"{field}.touches", ground=False)
     places.on_body(body, point, f"{field}.touches")
     if spec["on"] not in places.surfaces:
@@ -237,7 +246,7 @@ def coefficients(reader, spec: dict, field: str) -> tuple[sp.Expr | None, sp.Exp
     """(mu_s, mu_k) from `friction: {static: mu_s, kinetic: mu_k}`, each None when not given."""
     if "friction" not in spec:
         return None, None
-    friction = reader.mapping(spec["friction"], f"{field}.friction", optional=("static", "kinetic"))
+    friction = reader.mapping(spec["friction"], f"{field}.friction", keys=FRICTION)
     if not friction:
         raise reader.fail(f"{field}.friction", "give static: mu_s, kinetic: mu_k or both")
     return tuple(reader.positive(friction[k], f"{field}.friction.{k}", "1", "a coefficient of friction")

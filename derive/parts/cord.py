@@ -46,6 +46,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, Part, Sign, acting, at_placement
 from derive.text.prose import Sentence
 
@@ -349,6 +350,19 @@ class Cord(Part):
 #: Where a cord touches a circle it goes around (or leaves a body it is wound on).
 SIDES = {"over": (0, 1), "under": (0, -1), "left": (-1, 0), "right": (1, 0), "top": (0, 1), "bottom": (0, -1)}
 
+#: The elements of a cord's path that are mappings (an element may also be a point).
+PULL = Keys(force=Key("expression", "the force pulling the free end, in N", required=True),
+            angle=Key("quantity", "its direction from +x, counter-clockwise (default 0)"))
+PULLED = Keys(pulled=Key("mapping", "an end of the cord pulled by a given force", required=True, keys=PULL))
+WOUND = Keys(wound=Key("point", "an end wound on this body, unwinding from its rim", required=True),
+             side=Key("name", "the side of the body the cord leaves it from", required=True, choices=tuple(SIDES)),
+             radius=Key("expression", "the radius it is wound at, in m (default: the body's radius)"))
+AROUND = {side: Keys(**{side: Key("point", f"the cord passes around this body or point, touching its {side} side",
+                                  required=True)},
+                     radius=Key("expression", "the radius of the circle it goes around, in m (default: the body's)"),
+                     smooth=Key("boolean", "the cord slides over it (default false: a pulley turns with the cord)"))
+          for side in SIDES}
+
 
 def read(reader, places, name: str, path, field: str) -> Cord:
     """A cord's path: a list from one end to the other.
@@ -400,8 +414,8 @@ def _element(reader, places, value, field: str, end: bool) -> dict:
         if kind == "pulled":
             if not end:
                 raise reader.fail(field, "a pulled end is an end of the cord")
-            reader.mapping(value, field, required=("pulled",))
-            pull = reader.mapping(value["pulled"], f"{field}.pulled", required=("force",), optional=("angle",))
+            reader.mapping(value, field, keys=PULLED)
+            pull = reader.mapping(value["pulled"], f"{field}.pulled", keys=PULL)
             return {"kind": "pulled", "body": None, "offset": ZERO,
                     "force": reader.positive(pull["force"], f"{field}.pulled.force", "N", "a pulling force"),
                     "angle": reader.dimensioned(pull.get("angle", 0), f"{field}.pulled.angle", "rad", "an angle")}
@@ -409,10 +423,10 @@ def _element(reader, places, value, field: str, end: bool) -> dict:
             if not end:
                 raise reader.fail(field, "a cord is wound on a body at one of its ends; in between it goes around "
                                          "(over, under, left, right)")
-            spec = reader.mapping(value, field, required=("wound", "side"), optional=("radius",))
+            spec = reader.mapping(value, field, keys=WOUND)
             side = spec["side"]
         else:
-            spec = reader.mapping(value, field, required=(kind,), optional=("radius", "smooth"))
+            spec = reader.mapping(value, field, keys=AROUND[kind])
             side = kind
         if side not in SIDES:
             raise reader.fail(f"{field}.side", f"expected one of {', '.join(SIDES)}")

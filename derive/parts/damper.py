@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, AppliedTorque, Part, acting, at_placement
 from derive.text.prose import Sentence
 
@@ -73,10 +74,17 @@ class Damper(Part):
                 for load in self.loads(coords)]
 
 
+KEYS = Keys(coefficient=Key("expression", "the damping coefficient: N s/m for a dashpot, N m s on a turning body",
+                             required=True),
+            between=Key("points", "the two points a dashpot joins (or on:)"),
+            on=Key("name", "the turning body a rotational damper acts on (or between:)"),
+            name=Key("name", "its name in the equations (default damperN)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Damper:
     """`{between: [POINT, POINT], coefficient: b}` (a dashpot, N s/m) or `{on: BODY, coefficient: c}`
     (a rotational damper on a turning body, N m s)."""
-    spec = reader.mapping(spec, field, required=("coefficient",), optional=("between", "on", "name"))
+    spec = reader.mapping(spec, field, keys=KEYS)
     if ("between" in spec) == ("on" in spec):
         raise reader.fail(field, "give between: [POINT, POINT] (a dashpot) or on: BODY (a rotational damper)")
     if "on" in spec:

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, Part, acting, at_placement
 from derive.text.prose import Sentence
 
@@ -50,9 +51,15 @@ class Force(Part):
                           f"pushes the {self.body}", *acting(load, coords), "."), self.body)]
 
 
+KEYS = Keys(on=Key("point", "the point of a body it acts at (BODY or BODY.POINT)", required=True),
+            magnitude=Key("expression", "its magnitude in N; may be a function of t", required=True),
+            angle=Key("quantity", "its direction from +x, counter-clockwise (default 0)"),
+            name=Key("name", "its name in the equations (default forceN)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Force:
     """`{on: BODY.POINT, magnitude: F, angle: EXPR}` (angle from +x, counter-clockwise; default 0)."""
-    spec = reader.mapping(spec, field, required=("on", "magnitude"), optional=("angle", "name"), points=("on",))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, offset = places.point(spec["on"], f"{field}.on", ground=False)
     places.on_body(body, offset, f"{field}.on")
     magnitude = reader.dimensioned(spec["magnitude"], f"{field}.magnitude", "N", "a force", places.with_time())

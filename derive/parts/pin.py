@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, Part, acting
 from derive.text.prose import Sentence
 
@@ -87,10 +88,14 @@ class Pin(Part):
         return list(here - there)
 
 
+KEYS = Keys(pin=Key("point", "the point of a body that is pinned (BODY.POINT)", required=True),
+            to=Key("point", "the other body's point it is pinned to (default: the ground where the point is)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Pin:
     """`{pin: BODY.POINT}` (to the ground where the point is) or `{pin: POINT, to: POINT}` (to
     another body's point, or a point of the ground, where the first point is)."""
-    spec = reader.mapping(spec, field, required=("pin",), optional=("to",), points=("to",))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, offset = places.point(spec["pin"], f"{field}.pin", ground=False)
     places.on_body(body, offset, f"{field}.pin")
     if "to" not in spec or spec["to"] == "ground":

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, AppliedTorque, Part, acting
 from derive.text.prose import Sentence
 
@@ -84,10 +85,15 @@ class Slider(Part):
         return result
 
 
+KEYS = Keys(slider=Key("point", "the point of a body that keeps to a line (BODY or BODY.POINT)", required=True),
+            angle=Key("quantity", "the line's angle from +x, counter-clockwise (default 0, level)"),
+            turns=Key("boolean", "whether the body may turn as it slides (default false)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Slider:
     """`{slider: BODY.POINT, angle: EXPR, turns: false}`: the point keeps to the line through it
     at `angle` (default 0, level); the body does not turn unless `turns: true`."""
-    spec = reader.mapping(spec, field, required=("slider",), optional=("angle", "turns"))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, offset = places.point(spec["slider"], f"{field}.slider", ground=False)
     places.on_body(body, offset, f"{field}.slider")
     angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, Part, acting, at_placement
 from derive.text.prose import Sentence
 
@@ -71,10 +72,17 @@ class Spring(Part):
                           "its stretch, ", pull, *acting(load, coords), "."), load.body) for load in self.loads(coords)]
 
 
+KEYS = Keys(between=Key("points", "the two points it joins", required=True),
+            stiffness=Key("expression", "its stiffness, in N/m", required=True),
+            rest_length=Key("expression", "its length unstretched, in m (default: the distance between the points as "
+                                          "placed)"),
+            name=Key("name", "its name in the equations (default springN)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Spring:
     """`{between: [POINT, POINT], stiffness: k, rest_length: L0}` (rest length by default the
     distance between the points in the reference configuration: unstretched there)."""
-    spec = reader.mapping(spec, field, required=("between", "stiffness"), optional=("rest_length", "name"))
+    spec = reader.mapping(spec, field, keys=KEYS)
     ends = places.two_points(spec["between"], f"{field}.between")
     stiffness = reader.positive(spec["stiffness"], f"{field}.stiffness", "N/m", "a stiffness")
     first, second = (places.world(b, o) for b, o in ends)

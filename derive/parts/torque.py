@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedTorque, Part, acting
 from derive.text.prose import Sentence
 
@@ -53,12 +54,20 @@ class Torque(Part):
                           *acting(load, coords), "."), self.body)]
 
 
+KEYS = Keys(on=Key("name", "the turning body the couple acts on", required=True),
+            magnitude=Key("expression", "the couple in N m, counter-clockwise positive; may be a function of t",
+                          required=True),
+            axis=Key("vector", "in 3D: the direction [x, y, z] fixed in the ground the couple is about"),
+            duration=Key("expression", "in 3D: how long the couple acts, in s"),
+            name=Key("name", "its name in the equations (default torqueN)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Torque:
     """`{on: BODY, magnitude: EXPR}`: a couple (counter-clockwise positive), constant or a
     function of the time t; in 3D `{on: BODY, magnitude: tau, axis: [0, 0, 1], duration: dt}`, a
     constant couple about a direction fixed in the ground for a time (scene_file checks that the
     body turns about a fixed point at its center of mass)."""
-    spec = reader.mapping(spec, field, required=("on", "magnitude"), optional=("name", "axis", "duration"))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, offset = places.point(spec["on"], f"{field}.on", ground=False)
     if any(offset) or not places.bodies[body].rotates:
         raise reader.fail(f"{field}.on", "a torque acts on a turning body as a whole: name the body")

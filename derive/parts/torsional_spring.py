@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedTorque, Part, at_placement
 from derive.text.prose import Sentence
 
@@ -59,10 +60,18 @@ class TorsionalSpring(Part):
         return result
 
 
+KEYS = Keys(on=Key("name", "the turning body it acts on", required=True),
+            stiffness=Key("expression", "its stiffness, in N m/rad", required=True),
+            to=Key("name", "the other turning body (default ground)"),
+            rest_angle=Key("quantity", "the turn from the reference configuration at which it exerts no torque "
+                                       "(default 0)"),
+            name=Key("name", "its name in the equations (default torsional_springN)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> TorsionalSpring:
     """`{on: BODY, to: OTHER, stiffness: kappa, rest_angle: EXPR}` (to the ground by default;
     rest angle: the turn from the reference configuration at which it exerts no torque, 0)."""
-    spec = reader.mapping(spec, field, required=("on", "stiffness"), optional=("to", "rest_angle", "name"))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, _ = places.point(spec["on"], f"{field}.on", ground=False)
     to = None if spec.get("to", "ground") == "ground" else places.point(spec["to"], f"{field}.to", ground=False)[0]
     for b in (body, to):

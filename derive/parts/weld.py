@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.keys import Key, Keys
 from derive.parts import AppliedForce, AppliedTorque, Part, acting
 from derive.text.prose import Sentence
 
@@ -91,9 +92,13 @@ class Weld(Part):
         return [*(velocity - carried), coords.angular_velocity(self.body) - coords.angular_velocity(self.to)]
 
 
+KEYS = Keys(weld=Key("name", "the turning body that is welded", required=True),
+            to=Key("name", "the other turning body (default ground)"))
+
+
 def read(reader, places, name: str, spec: dict, field: str) -> Weld:
     """`{weld: BODY}` (to the ground) or `{weld: BODY, to: OTHER}`."""
-    spec = reader.mapping(spec, field, required=("weld",), optional=("to",))
+    spec = reader.mapping(spec, field, keys=KEYS)
     body, _ = places.point(spec["weld"], f"{field}.weld", ground=False)
     to = spec.get("to", "ground")
     if to != "ground":
