@@ -126,12 +126,27 @@ def test_the_route_agrees_with_both_routes_in_derive_check():
     assert done.stdout.count("textbook_route") == 2
 
 
-@pytest.mark.parametrize("problem_id", ["compound_pendulum", "beetle_lazy_susan", "kepler_orbit"])
+def test_the_compound_pendulum_swings_by_the_torque_about_its_pivot():
+    """Serway & Jewett 9th ed., ch. 15 (the physical pendulum): tau = -m g d sin(theta) ~ -m g d theta
+    about the pivot, I theta'' = tau, omega = sqrt(m g d / I) with I = I_cm + m d^2 (parallel axes)."""
+    solution = Solution(load("compound_pendulum"))
+    (steps,) = solution.student_steps.values()
+    assert [s.text.split(" ")[0] for s in steps] == ["The", "Turned", "Newton's"]
+    assert "parallel-axis theorem" in steps[0].text and "torque" in steps[1].text
+    M, g, d, inertia = _symbols("M", "g", "Rcm", "I_cm")
+    (moment,) = steps[0].equations
+    assert _same(moment.rhs, inertia + M * d**2)
+    assert _same(steps[1].equations[0].rhs, -M * g * d * sp.sin(sp.Symbol("theta", real=True)))
+    assert _same(steps[2].equations[2].rhs, sp.sqrt(M * g * d / (inertia + M * d**2)))
+    assert sum(len(s.equations) for s in steps) <= 8
+
+
+@pytest.mark.parametrize("problem_id", ["beetle_lazy_susan", "kepler_orbit", "top_precession"])
 def test_problems_outside_the_route_keep_the_engines_routes(problem_id):
-    """A small oscillation, an impact, an orbit: not (yet) the route along the motion; their worked
-    solutions show the engine's derivation as before."""
+    """An impact, an orbit, a top: not (yet) a student's route; their worked solutions show the
+    engine's derivation as before."""
     solution = Solution(load(problem_id))
-    assert solution.student_steps is None and solution.steps()
+    assert solution.student_steps is None and solution.steps() is not None
 
 
 def test_the_solutions_pdf_shows_the_route_and_the_proof_in_an_appendix(tmp_path):
@@ -142,3 +157,18 @@ def test_the_solutions_pdf_shows_the_route_and_the_proof_in_an_appendix(tmp_path
     route, appendix = tex.split(r"\appendix")
     assert "Forces and torques along the motion" in route and r"\subsection*{Lagrange" not in route
     assert r"\subsubsection*{Lagrange's method}" in appendix and r"\subsubsection*{Newton–Euler}" in appendix
+
+
+def test_the_ladder_against_a_smooth_wall_by_balances_and_the_torque_about_its_foot():
+    """Serway & Jewett 9th ed., ch. 12 (Example 12.4, the leaning ladder): the forces balance
+    across (f = P) and up (N = M g), and the torques about the foot, where the floor's two forces
+    have no moment: P L sin(theta) = M g (L/2) cos(theta); mu_min = 1/(2 tan(theta))."""
+    solution = Solution(_load("ladder_statics"))
+    (steps,) = solution.student_steps.values()
+    assert "torques about the point where it touches the floor" in steps[0].text
+    assert len(steps[0].equations) == 3 and steps[1].text == "Solving"
+    M, g, theta, L = _symbols("M", "g", "theta", "L")
+    torque = steps[0].equations[2].rhs
+    assert not torque.has(sp.Symbol("f", real=True))  # the foot's forces drop out
+    assert _same(_solved(steps, "N_wall"), M * g / (2 * sp.tan(theta)))
+    assert _same(steps[-1].equations[-1].rhs, 1 / (2 * sp.tan(theta)))

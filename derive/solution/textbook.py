@@ -4,7 +4,9 @@ One principle a step, each a law the course teaches: speeds between two states b
 (derive.mechanics.conservation); accelerations and forces at the placement by Newton's second law
 along the motion and torques about the center of mass or a fixed pivot (derive.mechanics.along_motion);
 the time down a slope from the constant acceleration; the least coefficient of friction from the
-friction and normal force found. Lagrange's method and Newton–Euler stay as the proof (the
+friction and normal force found; statics by the balances of forces and of torques about the point
+that removes the most unknowns (derive.mechanics.statics); small oscillations about a pivot by
+tau = -kappa theta (derive.mechanics.small_swings). Lagrange's method and Newton–Euler stay as the proof (the
 instructor's verification): this route is a third one, which must agree with them
 (derive.solution.crosschecks: the check textbook_route).
 
@@ -26,6 +28,7 @@ import sympy as sp
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
 from derive.core.tidying import tidy
 from derive.mechanics.derivation import KINETIC, Step
+from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
 from derive.parts.contact import Contact
@@ -46,10 +49,18 @@ def covered(quantity: Quantity) -> bool:
     return quantity.kind == "contact" and quantity.detail in ALONG | ON_SLOPE
 
 
-def route(solution) -> AlongMotion | None:
-    """The route along the motion of the solution's scene, where every ask is one the student's route
-    answers at the placement (None otherwise)."""
+SWINGS = {("small_oscillation", "omega"), ("small_oscillation", "period")}
+
+
+def route(solution) -> AlongMotion | SmallSwing | None:
+    """The route along the motion of the solution's scene (or its balance, or its small swing about a
+    pivot), where every ask is one the student's route answers at the placement (None otherwise)."""
     asks = solution.problem.asks.values()
+    if asks and {(a.quantity.kind, a.quantity.detail) for a in asks} <= SWINGS and not solution.scene.states:
+        try:
+            return small_swing(solution.dynamics_scene, solution.coordinates)
+        except NotAlongALine:
+            return None
     if not asks or any(a.state is not None or a.zero_for or not covered(a.quantity) for a in asks):
         return None
     if len(solution.regimes) != 1 or solution.scene.states:
@@ -69,6 +80,8 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     along = solution.textbook_route
     if along is None:
         return None
+    if isinstance(along, SmallSwing):
+        return {"Small oscillations about the pivot": list(along.steps)}
     title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"
     result = {title: list(along.steps)}
     for ask in solution.problem.asks.values():
@@ -91,7 +104,9 @@ def names(solution) -> dict[sp.Symbol, sp.Symbol]:
     """How the student's route prints the engine's forces and its own symbols (`_plain_names`,
     `_clashes`): the free-body diagrams beside it label them so too."""
     along = solution.textbook_route
-    return {**_plain_names(solution, along), **_clashes(solution, along)} if along is not None else {}
+    if along is None or isinstance(along, SmallSwing):
+        return {}
+    return {**_plain_names(solution, along), **_clashes(solution, along)}
 
 
 def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:

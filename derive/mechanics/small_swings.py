@@ -1,0 +1,79 @@
+"""Small oscillations of a body on a fixed pivot as a textbook derives them: the restoring torque
+about the pivot, tau = -kappa theta for a small angle, and I_P theta'' = tau.
+
+For a compound pendulum a solution manual writes: I_P = I_cm + M d^2 (the parallel-axis theorem),
+tau = -M g d sin(theta) ~ -M g d theta, so theta'' = -(M g d / I_P) theta, omega = sqrt(M g d / I_P)
+and T = 2 pi / omega. The torque here is the loads' own, -dV/dtheta of the scene's potential energy
+(gravity, springs) with the pin's constraint solved for the center, at the body's angle theta from
+where the file places it (its equilibrium); kappa is its slope there. The frequency it gives must
+be the engine's (derive.mechanics.oscillation, checked in derive.solution.crosschecks).
+
+>>> from derive.language.problem import load
+>>> from derive.solution.answers import Solution
+>>> solution = Solution(load("compound_pendulum"))
+>>> swing = small_swing(solution.dynamics_scene, solution.coordinates)
+>>> swing.omega
+sqrt(M)*sqrt(Rcm)*sqrt(g)/sqrt(I_cm + M*Rcm**2)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.core.tidying import tidy
+from derive.mechanics.along_motion import NotAlongALine
+from derive.mechanics.derivation import Step
+from derive.model.kinematics import Coordinates
+from derive.model.scene import Scene
+from derive.parts.pin import Pin
+
+
+@dataclass(frozen=True)
+class SmallSwing:
+    """The steps, and the angular frequency they give."""
+
+    steps: tuple[Step, ...]
+    omega: sp.Expr
+
+
+def small_swing(scene: Scene, coords: Coordinates) -> SmallSwing:
+    """The route for one body turning about a pin fixed to the ground, placed at rest where it
+    hangs; NotAlongALine for any other scene."""
+    bodies = list(scene.bodies.values())
+    pins = [c for c in scene.constraints if isinstance(c, Pin) and c.to is None]
+    if len(bodies) != 1 or not bodies[0].rotates or len(pins) != 1 or len(scene.constraints) != 1:
+        raise NotAlongALine("not one body swinging on a fixed pivot")
+    body, (pin,) = bodies[0], pins
+    x, y, theta = (coords.of(body.name, k) for k in ("x", "y", "theta"))
+    held = sp.solve(pin.gaps(coords), [x.q, y.q], dict=True)
+    if len(held) != 1:
+        raise NotAlongALine("the pin does not hold the center in one place for each angle")
+    potential = sum((part.potential(coords) for part in scene.parts), sp.Integer(0)).xreplace(held[0])
+    angle = sp.Symbol("theta", real=True)
+    torque = tidy(-sp.diff(potential, theta.q).xreplace({theta.q: angle}))
+    stiffness = tidy(-sp.diff(torque, angle).xreplace({angle: 0}))
+    if torque.xreplace({angle: 0}) != 0 or stiffness == 0 or stiffness.is_negative:
+        raise NotAlongALine("not placed at a stable equilibrium")
+    point = coords.rotated(body.name, pin.offset).xreplace(coords.at_rest_in_reference())
+    distance = tidy(sp.sqrt(point.dot(point)))
+    moment = sp.Symbol("I_P")
+    about = tidy(body.inertia + body.mass * distance**2)
+    omega, period, tau = sp.Symbol("omega"), sp.Symbol("T"), sp.Symbol("tau")
+    kappa = stiffness if isinstance(stiffness, sp.Symbol) else sp.Symbol("kappa")  # a torsion spring's own kappa
+    frequency = tidy(sp.sqrt(stiffness / about))
+    inertia = (Step(f"The {body.name} turns about its pivot, off its center of mass: by the parallel-axis theorem its "
+                    "moment of inertia about the pivot is", (sp.Eq(moment, body.inertia + body.mass * distance**2),))
+               if distance != 0 else Step(f"The {body.name} turns about an axle through its center of mass, its moment "
+                                          "of inertia about it", (sp.Eq(moment, body.inertia),)))
+    steps = (
+        inertia,
+        Step(f"Turned by an angle from where it rests, the {body.name} is pulled back by the torque of the loads about "
+             "the pivot (the pivot's force has no moment about it); for a small angle it is proportional to the angle",
+             (sp.Eq(tau, torque), sp.Eq(tau, -kappa * angle), *((sp.Eq(kappa, stiffness),) if kappa != stiffness else ()))),
+        Step("Newton's second law for the rotation about the pivot is then that of simple harmonic motion, of "
+             "angular frequency and period", (sp.Eq(moment * sp.Symbol("thetaddot"), -kappa * angle),
+                                              sp.Eq(omega, sp.sqrt(kappa / moment)), sp.Eq(omega, frequency),
+                                              sp.Eq(period, 2 * sp.pi / omega))),
+    )
+    return SmallSwing(steps, frequency)
