@@ -141,9 +141,9 @@ def test_the_compound_pendulum_swings_by_the_torque_about_its_pivot():
     assert sum(len(s.equations) for s in steps) <= 8
 
 
-@pytest.mark.parametrize("problem_id", ["beetle_lazy_susan", "kepler_orbit", "top_precession"])
+@pytest.mark.parametrize("problem_id", ["sticky_impact_free", "kepler_orbit", "top_precession"])
 def test_problems_outside_the_route_keep_the_engines_routes(problem_id):
-    """An impact, an orbit, a top: not (yet) a student's route; their worked solutions show the
+    """A free impact, an orbit, a top: not (yet) a student's route; their worked solutions show the
     engine's derivation as before."""
     solution = Solution(load(problem_id))
     assert solution.student_steps is None and solution.steps() is not None
@@ -172,3 +172,27 @@ def test_the_ladder_against_a_smooth_wall_by_balances_and_the_torque_about_its_f
     assert not torque.has(sp.Symbol("f", real=True))  # the foot's forces drop out
     assert _same(_solved(steps, "N_wall"), M * g / (2 * sp.tan(theta)))
     assert _same(steps[-1].equations[-1].rhs, 1 / (2 * sp.tan(theta)))
+
+
+def test_a_sticky_impact_on_an_axle_is_one_line_of_angular_momentum():
+    """Halliday, Resnick & Walker 10th ed., ch. 11, Module 11-7 (conservation of angular momentum;
+    a mass sticking to a body on an axle): L about the axle before, m v b, equals L after,
+    (I + m R^2) omega, as the axle's impulse has no moment about it."""
+    solution = Solution(load("sticky_impact_pivoted"))
+    (steps,) = solution.student_steps.values()
+    assert len(steps) == 3 and "no moment about it" in steps[0].text
+    M, m, v, b, R = _symbols("M", "m", "v", "b", "R")
+    assert _same(steps[0].equations[0].rhs, m * v * b)
+    assert _same(steps[1].equations[0].rhs, sp.Rational(2, 5) * M * R**2 + m * R**2)
+    assert _same(steps[2].equations[0].rhs, m * v * b / (sp.Rational(2, 5) * M * R**2 + m * R**2))
+
+
+def test_the_beetle_stops_and_the_lazy_susan_keeps_the_angular_momentum():
+    """Halliday, Resnick & Walker 10th ed., ch. 11 (a beetle and a lazy Susan, angular momentum
+    about the axle): I omega0 - m R v clockwise before, (I + m R^2) omega after; the kinetic energy
+    the impact takes is the difference of the two, I m (R omega0 + v)^2 / (2 (I + m R^2))."""
+    solution = Solution(load("beetle_lazy_susan"))
+    (steps,) = solution.student_steps.values()
+    I, omega0, m, R, v = _symbols("I", "omega0", "m", "R", "v")
+    assert "clockwise" in steps[0].text and _same(steps[0].equations[0].rhs, I * omega0 - m * R * v)
+    assert _same(steps[3].equations[-1].rhs, I * m * (R * omega0 + v) ** 2 / (2 * (I + m * R**2)))
