@@ -196,3 +196,58 @@ def test_the_beetle_stops_and_the_lazy_susan_keeps_the_angular_momentum():
     I, omega0, m, R, v = _symbols("I", "omega0", "m", "R", "v")
     assert "clockwise" in steps[0].text and _same(steps[0].equations[0].rhs, I * omega0 - m * R * v)
     assert _same(steps[3].equations[-1].rhs, I * m * (R * omega0 + v) ** 2 / (2 * (I + m * R**2)))
+
+
+def _sym(name):
+    return sp.Symbol(name, positive=True)
+
+
+#: (setup, the route's principles in order, {a symbol the route solves for: the text's closed form}),
+#: each the textbook's route for its setup (the source each file cites).
+ROUTES = [
+    # Halliday 10th ed., ch. 11, Module 11-2, eq. 11-10: a = g sin(theta)/(1 + I/(M R^2)), I = M R^2
+    ("hoop_rolls_incline", ["newton", "ties", "across", "solve"],
+     {"a": lambda: _sym("g") * sp.sin(_sym("theta")) / 2}),
+    # Kleppner & Kolenkow 2nd ed., ch. 7: a force F at a rolling disk's axle, a = 2F/(3M), friction F/3
+    ("disk_pulled_at_axle", ["newton", "ties", "across", "solve"],
+     {"a": lambda: 2 * _sym("F") / (3 * _sym("M"))}),
+    # Kleppner & Kolenkow 2nd ed., ch. 7: a rolling cylinder pulled by a cord to a hanging mass m,
+    # a = 2 m g/(3 M + 2 m)
+    ("cylinder_table_hanging_block", ["newton", "newton", "ties", "solve"],
+     {"a": lambda: 2 * _sym("m") * _sym("g") / (3 * _sym("M") + 2 * _sym("m"))}),
+    # Serway & Jewett 9th ed., Example 5.10: a = (m2 - m1 sin(theta)) g/(m1 + m2), T = m1 m2 g (1 + sin(theta))/(m1 + m2)
+    ("incline_hanging_block", ["newton", "newton", "across", "solve"],
+     {"a": lambda: (_sym("m2") - _sym("m1") * sp.sin(_sym("theta"))) * _sym("g") / (_sym("m1") + _sym("m2"))}),
+    # Halliday ch. 11: a yo-yo pulled along the floor by its string from below the axle rolls toward the pull,
+    # a = 2 F (R - r)/(3 M R)
+    ("yoyo_pulled_horizontal", ["newton", "ties", "solve"],
+     {"a": lambda: 2 * _sym("F") * (_sym("R") - _sym("r")) / (3 * _sym("M") * _sym("R"))}),
+    # Halliday 10th ed., Sample Problem 12.02: the wall's force g a (M/2 + m/3)/h, a = sqrt(L^2 - h^2)
+    ("ladder_firefighter", ["The forces on the ladder balance, and so do their torques about the point where it "
+                            "touches the floor", "solve"],
+     {"N_wall": lambda: _sym("g") * sp.sqrt(_sym("L")**2 - _sym("h")**2) * (_sym("M") / 2 + _sym("m") / 3) / _sym("h")}),
+]
+
+
+@pytest.mark.parametrize("problem_id, principles, closed", ROUTES, ids=[r[0] for r in ROUTES])
+def test_more_textbook_setups_take_the_textbooks_route(problem_id, principles, closed):
+    solution = Solution(_load(problem_id))
+    (steps,) = [s for title, s in solution.student_steps.items() if title.startswith("Forces and torques")]
+    assert _principles(steps)[:len(principles)] == principles
+    for name, form in closed.items():
+        assert _same(_solved(steps, name), form()), name
+    assert sum(len(s.equations) for s in steps) <= 10  # with the least coefficient of friction where asked
+
+
+@pytest.mark.parametrize("problem_id, period", [
+    # Halliday 10th ed., ch. 15, Module 15-4: a torsion pendulum T = 2 pi sqrt(I/kappa), I = M R^2/2
+    ("torsion_pendulum", lambda: 2 * sp.pi * sp.sqrt(_sym("M") * _sym("R")**2 / (2 * _sym("kappa")))),
+    # Halliday 10th ed., ch. 15, Module 15-4: a rod pivoted at its end, T = 2 pi sqrt(2L/(3g))
+    ("rod_end_pendulum", lambda: 2 * sp.pi * sp.sqrt(2 * _sym("L") / (3 * _sym("g")))),
+])
+def test_pendulums_swing_by_the_torque_about_their_pivot(problem_id, period):
+    solution = Solution(_load(problem_id))
+    (steps,) = solution.student_steps.values()
+    omega = next(e.rhs for e in steps[-1].equations if str(e.lhs) == "omega" and not e.rhs.has(sp.Symbol("I_P")))
+    assert _same(2 * sp.pi / omega, period())
+    assert len(steps) == 3
