@@ -86,3 +86,20 @@ def test_a_handouts_pages_are_kept_as_images_for_a_reviewer(tmp_path):
     print(f"the handout's pages as images: {', '.join(map(str, pages))}")
     assert len(pages) >= 2
     assert all(page.stat().st_size > 5000 for page in pages)  # a blank page compresses to far less
+
+
+def test_no_asked_magnitude_of_the_library_shows_a_minus_sign(everything):
+    """Issue 37: a quantity with a direction is graded as its magnitude, its direction in words; only
+    an ask whose question states its sign convention (sign:) may be negative."""
+    from derive.model.directions import directional
+
+    ids, out = everything
+    key = json.loads((out / "key.json").read_text())
+    (variant,) = key["variants"]
+    for problem_id, entry in variant["problems"].items():
+        p = problem.load(problem_id)
+        for name, answer in entry["answers"].items():
+            ask = p.asks[name]
+            if directional(ask.quantity) and not ask.sign and not ask.zero_for and answer["value"] is not None:
+                assert not answer["value"].startswith("-"), (problem_id, name, answer["value"])
+                assert "direction" in answer, (problem_id, name)
