@@ -15,7 +15,7 @@ unknown's assumed positive axis (a pin's R_x along +x on its body and along -x o
 normal force off its surface, a rolling contact's friction along the surface's tangent), labelled by
 the unknown times that coefficient's length (N, or mu_k N for kinetic friction); what is known (a
 weight, an applied force, a stretched spring) is one arrow along itself labelled by its magnitude
-(M g). A force zero there (a spring at its rest length, a damper at rest) is in no equation of the
+(M g). A contact's surface is a short gray line across its normal force, where it pushes from. A force zero there (a spring at its rest length, a damper at rest) is in no equation of the
 step and is not drawn. An arrow pulls from its point, or pushes into it where it points into the
 body from the rim (a normal force at a contact). Labels are `latex.latex_of`, as the equations
 print them. Arrows are of one length: their sizes are not to scale. A force not linear in the
@@ -52,6 +52,7 @@ from derive.core.expr import TIME
 
 REACH = {"round": 0.7, "point": 1.0}  # cm: how far the body's outline and loads reach from its center (else 1.1)
 OUTSIDE = 0.75  # cm: how far an arrow from a point of the body reaches beyond its outline
+SURFACE = 0.6  # cm: half the length of the line a contact's surface is drawn as, across its normal force
 REPEAT = 1.4  # an arrow drawn where another already is (the same point and direction) is this much longer
 
 
@@ -193,6 +194,10 @@ def _draw(fig: _Figure, view: _Scene, name: str, arrows: list[Arrow], turns: lis
     ways = [_way(view, drawn, arrow) for arrow in arrows]
     pushing = [(point, direction) for point, direction, pushes in ways if pushes]
     for arrow, (point, direction, pushes) in zip(arrows, ways):
+        if arrow.force == "normal force":  # the surface it pushes from, a short line across the normal
+            across = (-direction[1] * SURFACE, direction[0] * SURFACE)
+            view.put("surfaces", f"\\draw[thin, gray] {_pt(_add(point, across))} -- {_pt(_add(point, across, -1))};")
+            view.ink_line(_add(point, across), _add(point, across, -1))
         _arrow(view, arrow.label, point, direction, pushes, ARROW if pushes else _pull_length(drawn, point, direction, pushing),
                placed, drawn_at)
     for turn in turns:
