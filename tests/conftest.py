@@ -58,12 +58,21 @@ def derive():
 
 
 def solve(problem_id: str, **values) -> tuple[dict, dict]:
-    """(answers as 50-digit mpmath numbers, the whole result) of `derive solve` at 15 digits."""
+    """(answers as 50-digit mpmath numbers, the whole result) of `derive solve` at 15 digits; a
+    magnitude given with its direction in words (derive.model.directions) is turned back into the
+    component along the file's axes (y up, counter-clockwise positive), which the books' formulas give."""
     from derive.language import problem
     from derive.publishing import report
+    from derive.solution.answers import Solution
 
-    result = report.solve(problem.load(problem_id), {k: str(v) for k, v in values.items()}, 15)
-    return {n: mpmath.mpf(a["value"]) for n, a in result["answers"].items()}, result
+    solution = Solution(problem.load(problem_id))
+    result = report.solve(solution.problem, {k: str(v) for k, v in values.items()}, 15, solution=solution)
+    answers = {}
+    for n, a in result["answers"].items():
+        sense = solution.senses[n]
+        sign = -1 if a["direction"] and not solution.problem.asks[n].magnitude and a["direction"] == sense.negative else 1
+        answers[n] = sign * mpmath.mpf(a["value"])
+    return answers, result
 
 
 def close(value, reference, digits: int = 15) -> bool:

@@ -44,8 +44,8 @@ def test_a_ground_point_inside_a_cord_is_a_smooth_peg(tmp_path):
     problem = load(path)
     solution = Solution(problem)
     m1, m2, g = (problem.parameters[k].symbol for k in ("m1", "m2", "g"))
-    assert sp.simplify(solution.expression("a") + m2 * g / (m1 + m2)) == 0
-    assert sp.simplify(solution.expression("T") - m1 * m2 * g / (m1 + m2)) == 0
+    assert sp.simplify(solution.signed("a") + m2 * g / (m1 + m2)) == 0
+    assert sp.simplify(solution.signed("T") - m1 * m2 * g / (m1 + m2)) == 0
     result = run_derive("solve", str(path))
     assert result.returncode == 0, result.stderr
     assert "[ok] lagrange_vs_newton_euler" in result.stdout
@@ -60,7 +60,7 @@ def test_a_peg_is_the_limit_of_a_smooth_pulley(tmp_path):
                       .replace("edge: [0, 0]", "edge: [0, -d/4]").replace("at: [0, -d]", "at: [d/4, -d]"))
     by_peg, by_pulley = Solution(load(peg)), Solution(load(pulley))
     for name in ("a", "T"):
-        assert sp.simplify(by_peg.expression(name) - by_pulley.expression(name)) == 0
+        assert sp.simplify(by_peg.signed(name) - by_pulley.signed(name)) == 0
 
 
 INCLINE_AND_PULLEY = """\
@@ -108,8 +108,8 @@ def test_a_pulley_whose_top_is_in_line_with_the_incline(tmp_path):
     folds); before tidying.radicals sympy's linear solve did not finish in 15 minutes."""
     path, solution, s = _incline_and_pulley(tmp_path, "-1")
     expected = s["g"] * (s["m2"] - s["m1"] * sp.sin(s["theta"])) / (s["m1"] + s["m2"] + s["M"] / 2)
-    assert sp.simplify(solution.expression("ay") + expected) == 0
-    assert sp.simplify(solution.expression("a") + expected) == 0  # the block goes up the incline
+    assert sp.simplify(solution.signed("ay") + expected) == 0
+    assert sp.simplify(solution.signed("a") + expected) == 0  # the block goes up the incline
     result = run_derive("solve", str(path))
     assert result.returncode == 0, result.stderr
     assert "[ok] lagrange_vs_newton_euler" in result.stdout
@@ -124,8 +124,8 @@ def test_a_pulley_above_the_incline_pulls_at_an_angle(tmp_path):
     path, solution, s = _incline_and_pulley(tmp_path, "1")
     c = sp.Rational(99, 101)
     falls = s["g"] * c * (s["m2"] * c - s["m1"] * sp.sin(s["theta"])) / (c**2 * (s["M"] / 2 + s["m2"]) + s["m1"])
-    assert sp.simplify(solution.expression("ay") + falls) == 0
-    assert sp.simplify(solution.expression("a") + falls / c) == 0
+    assert sp.simplify(solution.signed("ay") + falls) == 0
+    assert sp.simplify(solution.signed("a") + falls / c) == 0
 
 
 def test_a_plane_at_a_negative_angle_is_refused(tmp_path):
@@ -207,7 +207,7 @@ def test_derive_solve_says_which_tangent_a_side_takes(tmp_path):
             "would wind it the other way, on the other tangent.") in left.stdout
     assert "D" not in top.stdout.split("Answers:")[1].split("(acceleration")[0]  # parallel: no free length
     solution = Solution(load(tmp_path / "left.yaml"))
-    assert solution.expression("a").has(solution.problem.parameters["D"].symbol)  # at an angle: it has
+    assert solution.signed("a").has(solution.problem.parameters["D"].symbol)  # at an angle: it has
     assert solution.steps()["how the cords run"][0].text in left.stdout  # the worked solution says it too
 
 

@@ -97,7 +97,7 @@ def test_notes_6_5_elroy_from_the_notes_equation():
     I1, I2 = (solution.problem.parameters[n].symbol for n in ("I1", "I2"))
     dtheta, dpsi, psi = sp.symbols("dtheta dpsi psi")
     rate = sp.solve(I1 * dtheta + I2 * (dpsi + dtheta), dtheta)[0] / dpsi
-    assert sp.simplify(solution.expression("dtheta") - sp.integrate(rate, (psi, 0, 2 * sp.pi))) == 0
+    assert sp.simplify(solution.signed("dtheta") - sp.integrate(rate, (psi, 0, 2 * sp.pi))) == 0
     assert solution.problem.corrections[0]["where"].startswith("§6.5")
 
 

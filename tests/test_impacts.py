@@ -76,9 +76,9 @@ def test_a_clutch_takes_the_energy_of_the_difference_of_the_rates(tmp_path):
     coupling, here from the kinetic energies the engine derives before and after."""
     solution = Solution(problem.load(write_problem(tmp_path, DISKS.replace("EVENT", "{lock: upper, to: lower}"))))
     M1, M2, R, w1, w2 = sp.symbols("M1 M2 R w1 w2", positive=True)
-    w2 = next(s for s in solution.expression("K0").free_symbols if s.name == "w2")
+    w2 = next(s for s in solution.signed("K0").free_symbols if s.name == "w2")
     I1, I2 = M1 * R**2 / 2, M2 * R**2 / 2
-    lost = solution.expression("K0") - solution.expression("K1")
+    lost = solution.signed("K0") - solution.signed("K1")
     assert sp.simplify(lost - I1 * I2 * (w1 - w2) ** 2 / (2 * (I1 + I2))) == 0
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
 
@@ -92,8 +92,8 @@ def test_the_change_of_kinetic_energy_and_the_velocity_of_the_center_of_mass_in_
         "  V: {meaning: velocity of the center of mass, of: center_of_mass.velocity.x, in: coupled, unit: m/s}\n"
         "question:"))
     solution = Solution(problem.load(write_problem(tmp_path, text)))
-    assert sp.simplify(solution.expression("dK") - solution.expression("K1") + solution.expression("K0")) == 0
-    assert solution.expression("dK") != 0 and solution.expression("V") == 0
+    assert sp.simplify(solution.signed("dK") - solution.signed("K1") + solution.signed("K0")) == 0
+    assert solution.signed("dK") != 0 and solution.signed("V") == 0
 
 
 @pytest.mark.parametrize("ask, field, words", [
@@ -230,8 +230,8 @@ question: |
     solution = Solution(problem.load(write_problem(tmp_path, text)))
     M1, M2, R, tau = sp.symbols("M1 M2 R tau", positive=True)
     alpha = tau / ((M1 + M2) * R**2 / 2)
-    assert sp.simplify(solution.expression("alpha") - alpha) == 0
-    assert sp.simplify(solution.expression("C") - M2 * R**2 / 2 * alpha) == 0
+    assert sp.simplify(solution.signed("alpha") - alpha) == 0
+    assert sp.simplify(solution.signed("C") - M2 * R**2 / 2 * alpha) == 0
 
 
 WHEEL = """\
@@ -267,11 +267,11 @@ def test_a_smooth_bounce_off_a_wheel_on_its_axle_does_not_turn_it(tmp_path):
     wheel does not turn, and the ball's velocity along the radius reverses, scaled by e (the
     axle takes the impulse), while the tangential one is kept."""
     solution = Solution(problem.load(write_problem(tmp_path, WHEEL.replace("EVENT", "{bounce: ball, to: wheel, restitution: e}"))))
-    v, e = (next(s for s in solution.expression("vx").free_symbols if s.name == n) for n in ("v", "e"))
-    assert solution.expression("omega") == 0
+    v, e = (next(s for s in solution.signed("vx").free_symbols if s.name == n) for n in ("v", "e"))
+    assert solution.signed("omega") == 0
     n = sp.Matrix([-sp.cos(sp.pi / 6), sp.sin(sp.pi / 6)])  # outward, at the ball
     t = sp.Matrix([-n[1], n[0]])
-    before, after = sp.Matrix([v, 0]), sp.Matrix([solution.expression("vx"), solution.expression("vy")])
+    before, after = sp.Matrix([v, 0]), sp.Matrix([solution.signed("vx"), solution.signed("vy")])
     assert sp.simplify(after.dot(n) + e * before.dot(n)) == 0
     assert sp.simplify(after.dot(t) - before.dot(t)) == 0
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
@@ -302,7 +302,7 @@ def test_a_worked_impact_shows_the_angular_momentum_it_keeps():
     solution = Solution(problem.load("tests/textbook/states/rod_ballistic_pendulum.yaml"))
     steps = solution.steps()[solution.state_heading("struck")]
     (kept,) = [s for s in steps if s.text.startswith("Check: the angular momentum about the pin")]
-    m, v, L = (next(s for s in solution.expression("omega").free_symbols if s.name == n) for n in ("m", "v", "L"))
+    m, v, L = (next(s for s in solution.signed("omega").free_symbols if s.name == n) for n in ("m", "v", "L"))
     assert [sp.simplify(e.rhs - m * v * L) for e in kept.equations] == [0, 0]
 
 
@@ -321,8 +321,8 @@ question: |
     solution = Solution(problem.load(write_problem(tmp_path, text)))
     # about the center of mass of the rod and bullet: m v (L/2) ... = (I_cm + ...) omega; by the
     # textbook, omega = 6 m v/(L (M + 4 m)) for a bullet into the end of a free rod
-    M, m, v, L = (next(s for s in solution.expression("omega").free_symbols if s.name == n) for n in ("M", "m", "v", "L"))
-    assert sp.simplify(solution.expression("omega") - 6 * m * v / (L * (M + 4 * m))) == 0
+    M, m, v, L = (next(s for s in solution.signed("omega").free_symbols if s.name == n) for n in ("M", "m", "v", "L"))
+    assert sp.simplify(solution.signed("omega") - 6 * m * v / (L * (M + 4 * m))) == 0
     steps = solution.steps()[solution.state_heading("struck")]
     (kept,) = [s for s in steps if s.text.startswith("Check: no impulse from outside")]
     pairs = list(zip(kept.equations[::2], kept.equations[1::2]))
@@ -359,8 +359,8 @@ def test_a_rough_bounce_at_the_boundary_grips_and_just_past_it_slides():
     boundary, below = {**at, mu: sp.Rational(4, 21)}, {**at, mu: sp.Rational(4, 21) - sp.Rational(1, 1000)}
     assert solution.impact_regime_at("bounced", boundary) == "grips"
     assert solution.impact_regime_at("bounced", below) == "slides (friction along -t)"
-    assert sp.simplify(solution.expression("vx").xreplace(boundary) - 5 * 3 * sp.sin(sp.pi / 4) / 7) == 0
-    spin = solution.expression("omega").xreplace(below)
+    assert sp.simplify(solution.signed("vx").xreplace(boundary) - 5 * 3 * sp.sin(sp.pi / 4) / 7) == 0
+    spin = solution.signed("omega").xreplace(below)
     assert sp.simplify(spin + 5 * below[mu] * sp.Rational(3, 2) * 3 * sp.cos(sp.pi / 4) / (2 * at[R])) == 0
     assert solution.violated(below) is None and solution.violated(boundary) is None
     result = report.solve(solution.problem, {"mu": "0.05", "theta": "0.5", "v": "5", "e": "0.5", "m": "0.2", "R": "0.05"},
@@ -392,8 +392,8 @@ def test_a_ball_that_always_grips_leaves_rolling_and_keeps_its_angular_momentum_
         " and the\n  coefficient of friction {{ mu }}.", ", and it grips.")
     solution = Solution(problem.load(write_problem(tmp_path, text)))
     m, R, v, theta = _symbols(solution, "m", "R", "v", "theta")
-    assert not solution.expression("vx").has(sp.Piecewise) and not solution.impact_regimes()
-    assert sp.simplify(solution.expression("vx") + R * solution.expression("omega")) == 0
+    assert not solution.signed("vx").has(sp.Piecewise) and not solution.impact_regimes()
+    assert sp.simplify(solution.signed("vx") + R * solution.signed("omega")) == 0
     (kept,) = [s for s in solution.steps()[solution.state_heading("bounced")] if "about the point of contact" in s.text]
     assert [sp.simplify(eq.rhs + m * v * R * sp.sin(theta)) for eq in kept.equations] == [0, 0]
 
@@ -404,7 +404,7 @@ def test_a_rough_bounce_off_a_wheel_on_its_axle_turns_it(tmp_path):
     solution = Solution(problem.load(write_problem(tmp_path, WHEEL.replace(
         "EVENT", "{bounce: ball, to: wheel, restitution: e, grips: true}"))))
     m, M, R, v = _symbols(solution, "m", "M", "R", "v")
-    omega, vx, vy = (solution.expression(n) for n in ("omega", "vx", "vy"))
+    omega, vx, vy = (solution.signed(n) for n in ("omega", "vx", "vy"))
     r = sp.Matrix([-R * sp.cos(sp.pi / 6), R * sp.sin(sp.pi / 6)])
     t = sp.Matrix([r[1], -r[0]]) / R
     rim = omega * sp.Matrix([-r[1], r[0]])
@@ -472,7 +472,7 @@ def test_the_motion_after_a_bounce_is_answered_in_the_variants_regime_or_refused
     path = write_problem(tmp_path, text)
     solution = Solution(problem.load(path))
     m, M, R, v = _symbols(solution, "m", "M", "R", "v")
-    assert sp.simplify(solution.expression("t") - sp.pi * R * (M + 2 * m) / (2 * m * v)) == 0
+    assert sp.simplify(solution.signed("t") - sp.pi * R * (M + 2 * m) / (2 * m * v)) == 0
     assert any("where it grips, as at the middle" in s.text for s in solution.steps()[solution.state_heading("turned")])
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
     fixed = ["--set", "m=0.1", "--set", "M=3", "--set", "R=0.3", "--set", "v=2", "--set", "e=0.3"]
@@ -516,7 +516,7 @@ def test_a_ball_bouncing_on_a_floor_takes_the_impulse_m_1_plus_e_v(tmp_path):
     leaves at e v takes m (1 + e) v, up; by its momentum and by the impact's impulse equations."""
     solution = Solution(problem.load(write_problem(tmp_path, DROPPED)))
     m, v, e = _symbols(solution, "m", "v", "e")
-    assert sp.simplify(solution.expression("Jy") - m * (1 + e) * v) == 0 and solution.expression("Jx") == 0
+    assert sp.simplify(solution.signed("Jy") - m * (1 + e) * v) == 0 and solution.signed("Jx") == 0
     checks = report.solve(solution.problem, solution=solution)["checks"]
     assert all(c["passed"] for c in checks.values()) and "Jy in N·s" in checks["dimensions"]["reading"]
 
@@ -532,9 +532,9 @@ def test_the_pin_of_a_struck_rod_takes_the_change_of_momentum_of_the_rod_and_the
     solution = Solution(problem.load(write_problem(tmp_path, text)))
     m, M, L, v = _symbols(solution, "m", "M", "L", "v")
     omega = 3 * m * v / (L * (M + 3 * m))
-    assert sp.simplify(solution.expression("P") - ((M * L / 2 + m * L) * omega - m * v)) == 0
-    assert sp.simplify(solution.expression("Jb") - m * (L * omega - v)) == 0
-    assert sp.simplify(solution.expression("P") - m * M * v / (2 * (M + 3 * m))) == 0
+    assert sp.simplify(solution.signed("P") - ((M * L / 2 + m * L) * omega - m * v)) == 0
+    assert sp.simplify(solution.signed("Jb") - m * (L * omega - v)) == 0
+    assert sp.simplify(solution.signed("P") - m * M * v / (2 * (M + 3 * m))) == 0
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
 
 
@@ -581,7 +581,7 @@ def test_two_rough_pucks_that_grip_share_the_tangential_impulse_of_their_effecti
                   "  w2: {meaning: spin, of: target.angular_velocity, in: struck, unit: rad/s}\n")
     solution = Solution(problem.load(write_problem(tmp_path, text)))
     m1, m2, R1, R2, phi, v = _symbols(solution, "m1", "m2", "R1", "R2", "phi", "v")
-    x = {n: solution.expression(n) for n in ("v1x", "v1y", "v2x", "v2y", "w1", "w2")}
+    x = {n: solution.signed(n) for n in ("v1x", "v1y", "v2x", "v2y", "w1", "w2")}
     n, contact = sp.Matrix([-sp.cos(phi), sp.sin(phi)]), R2 * sp.Matrix([-sp.cos(phi), sp.sin(phi)])
     t = sp.Matrix([n[1], -n[0]])
     centers = {1: (R1 + R2) * n, 2: sp.zeros(2, 1)}
@@ -614,7 +614,7 @@ def test_a_puck_off_a_rod_on_a_pin_keeps_the_angular_momentum_about_the_pin(tmp_
         "  e: {", "  r: {meaning: radius of the puck, unit: m, range: [0.02, 0.05], sig_figs: 2}\n  e: {")
     solution = Solution(problem.load(write_problem(tmp_path, text)))
     m, M, L, d, v, e = _symbols(solution, "m", "M", "L", "d", "v", "e")
-    assert sp.simplify(solution.expression("dp") - 2 * L / 3) == 0  # a smooth puck: as a point mass
+    assert sp.simplify(solution.signed("dp") - 2 * L / 3) == 0  # a smooth puck: as a point mass
     (kept,) = [s for s in solution.steps()[solution.state_heading("bounced")] if "about the pin" in s.text]
     assert [sp.simplify(eq.rhs - m * v * d) for eq in kept.equations] == [0, 0]
     assert all(c["passed"] for c in report.solve(solution.problem, solution=solution)["checks"].values())
@@ -647,7 +647,7 @@ def test_a_wheel_named_first_bounces_a_ball_as_the_ball_off_the_wheel(tmp_path):
     one, two = (Solution(problem.load(write_problem(tmp_path / name, WHEEL.replace("EVENT", event))))
                 for name, event in (("a", "{bounce: ball, to: wheel, restitution: e}"),
                                     ("b", "{bounce: wheel, to: ball, restitution: e}")))
-    assert all(sp.simplify(one.expression(n) - two.expression(n)) == 0 for n in ("omega", "vx", "vy"))
+    assert all(sp.simplify(one.signed(n) - two.signed(n)) == 0 for n in ("omega", "vx", "vy"))
 
 
 def test_a_rough_bounces_impulses_are_given_in_each_regime(tmp_path):
@@ -661,7 +661,7 @@ def test_a_rough_bounces_impulses_are_given_in_each_regime(tmp_path):
     m, v, theta, e, mu, R = _symbols(solution, "m", "v", "theta", "e", "mu", "R")
     at = {m: sp.Rational(1, 5), R: sp.Rational(1, 20), v: 3, theta: sp.pi / 4, e: sp.Rational(1, 2)}
     grips, slides = {**at, mu: sp.Rational(4, 5)}, {**at, mu: sp.Rational(1, 10)}
-    jx, jy = solution.expression("Jx"), solution.expression("Jy")
+    jx, jy = solution.signed("Jx"), solution.signed("Jy")
     vx, vy = 3 * sp.sin(sp.pi / 4), 3 * sp.cos(sp.pi / 4)
     assert sp.simplify(jy.xreplace(grips) - sp.Rational(1, 5) * sp.Rational(3, 2) * vy) == 0
     assert sp.simplify(jx.xreplace(grips) + sp.Rational(2, 7) * sp.Rational(1, 5) * vx) == 0

@@ -53,7 +53,7 @@ def values(problem, **given):
 
 
 def number(solution, name, at):
-    return float(sp.N(solution.expression(name).xreplace(at), 20))
+    return float(sp.N(solution.signed(name).xreplace(at), 20))
 
 
 def test_a_sphere_rolls_or_slips_as_its_friction_allows(tmp_path):
@@ -399,7 +399,7 @@ def test_a_damper_slows_the_small_oscillation(tmp_path):
     the linearization was taken at rest, where a dashpot exerts no force."""
     problem = load(write(tmp_path, DAMPED.replace("RANGE", "2, 10")))
     m, k, b = (problem.parameters[n].symbol for n in ("m", "k", "b"))
-    omega = Solution(problem).expression("omega")
+    omega = Solution(problem).signed("omega")
     assert sp.simplify(omega**2 - (k / m - b**2 / (4 * m**2))) == 0
     result = run_derive("check", str(problem.path))  # against the period of a simulated motion
     assert result.returncode == 0 and "ok: omega" in result.stdout, result.stdout + result.stderr
@@ -499,7 +499,7 @@ def test_a_cord_slack_at_the_equilibrium_for_some_parameters_is_refused_for_thos
     path = write(tmp_path, text)
     problem = load(path)
     m, M, k = (problem.parameters[n].symbol for n in ("m", "M", "k"))
-    assert sp.simplify(Solution(problem).expression("omega") - sp.sqrt(k / (m + M / 2))) == 0
+    assert sp.simplify(Solution(problem).signed("omega") - sp.sqrt(k / (m + M / 2))) == 0
     given = ("--set", "m=1", "--set", "M=1", "--set", "R=0.1", "--set", "k=100")
     assert run_derive("solve", str(path), *given, "--set", "tau=1").returncode == 0
     slack = run_derive("solve", str(path), *given, "--set", "tau=0")
@@ -518,4 +518,4 @@ def test_a_contact_that_carries_nothing_along_the_swing_is_not_refused(tmp_path)
         "  b: {meaning: damping coefficient, unit: N*s/m, range: [2, 10], sig_figs: 3}\n", ""))
     problem = load(path)
     m, k = (problem.parameters[n].symbol for n in ("m", "k"))
-    assert sp.simplify(Solution(problem).expression("omega") - sp.sqrt(k / m)) == 0
+    assert sp.simplify(Solution(problem).signed("omega") - sp.sqrt(k / m)) == 0

@@ -22,7 +22,7 @@ def _as(shape: str, tmp_path):
                                           ("ring", sp.Rational(1, 2)), ("spherical_shell", sp.Rational(2, 5))])
 def test_the_share_of_rotation_follows_the_shape(shape, share, tmp_path):
     solution = Solution(_as(shape, tmp_path))
-    assert solution.expression("share") == share
+    assert solution.signed("share") == share
     assert any(c.name == "center_of_mass_vs_contact_point" for c in solution.checks())
 
 
@@ -31,9 +31,9 @@ def test_omega_is_v_over_r_clockwise_and_one_turn_covers_the_circumference():
     p = load("rolling_kinetic_energy")
     solution = Solution(p)
     V, R, M = (p.parameters[n].symbol for n in ("V", "R", "M"))
-    assert solution.expression("omega") == -V / R  # moving in +x, the disk turns clockwise
-    assert solution.expression("d") == 2 * sp.pi * R
-    assert solution.expression("K") == sp.Rational(3, 4) * M * V**2  # eq. (11) with I = M R^2 / 2
+    assert solution.signed("omega") == -V / R  # moving in +x, the disk turns clockwise
+    assert solution.signed("d") == 2 * sp.pi * R
+    assert solution.signed("K") == sp.Rational(3, 4) * M * V**2  # eq. (11) with I = M R^2 / 2
 
 
 def test_a_forgotten_parallel_axis_term_is_caught(monkeypatch):
@@ -73,7 +73,7 @@ def test_a_ball_of_finite_size_needs_27_tenths_of_its_path_radius(placed, tmp_pa
     path.write_text(text)
     problem = load(path)
     R, r = problem.parameters["R"].symbol, problem.parameters["r"].symbol
-    assert sp.simplify(Solution(problem).expression("h_roll") - sp.Rational(27, 10) * (R - r)) == 0
+    assert sp.simplify(Solution(problem).signed("h_roll") - sp.Rational(27, 10) * (R - r)) == 0
 
 
 def test_a_ball_sliding_without_friction_in_a_loop_needs_five_halves_of_its_path_radius(tmp_path):
@@ -84,12 +84,12 @@ def test_a_ball_sliding_without_friction_in_a_loop_needs_five_halves_of_its_path
     text = load("loop_the_loop_ball").path.read_text().replace("contact: rolling", "contact: sliding")
     problem = parse(text, tmp_path / "slide.yaml")
     R, r = problem.parameters["R"].symbol, problem.parameters["r"].symbol
-    assert sp.simplify(Solution(problem).expression("h_roll") - sp.Rational(5, 2) * (R - r)) == 0
+    assert sp.simplify(Solution(problem).signed("h_roll") - sp.Rational(5, 2) * (R - r)) == 0
     (contact,) = problem.scene.constraints
     rough = dataclasses.replace(contact, kinetic=sp.Rational(1, 10))
     rough = dataclasses.replace(problem, scene=dataclasses.replace(problem.scene, constraints=(rough,)))
     with pytest.raises(ProblemError, match="energy is not conserved"):
-        Solution(rough).expression("h_roll")
+        Solution(rough).signed("h_roll")
 
 
 def test_an_incline_that_descends_to_the_left_is_the_mirror_image(tmp_path):
@@ -105,8 +105,8 @@ def test_an_incline_that_descends_to_the_left_is_the_mirror_image(tmp_path):
     left = Solution(parse(mirrored, tmp_path / "left.yaml"))
     R, theta, g = (sp.Symbol(n, positive=True) for n in ("R", "theta", "g"))
     for name in ("a", "f", "mu_min"):
-        assert sp.simplify(left.expression(name) - right.expression(name)) == 0, name
-    assert sp.simplify(left.expression("a") - 5 * g * sp.sin(theta) / 7) == 0
-    assert sp.simplify(left.expression("ax") + 5 * g * sp.sin(theta) * sp.cos(theta) / 7) == 0  # to the left
-    assert sp.simplify(left.expression("alpha") - 5 * g * sp.sin(theta) / (7 * R)) == 0  # counter-clockwise
+        assert sp.simplify(left.signed(name) - right.signed(name)) == 0, name
+    assert sp.simplify(left.signed("a") - 5 * g * sp.sin(theta) / 7) == 0
+    assert sp.simplify(left.signed("ax") + 5 * g * sp.sin(theta) * sp.cos(theta) / 7) == 0  # to the left
+    assert sp.simplify(left.signed("alpha") - 5 * g * sp.sin(theta) / (7 * R)) == 0  # counter-clockwise
     assert all(c.passed for c in left.checks())

@@ -59,7 +59,9 @@ def refused(tmp_path, text, field):
 def test_a_rod_released_horizontal_turns_at_sqrt_3g_over_L_when_vertical(tmp_path):
     result = solve(tmp_path, ROD.replace("TARGET", "-pi/2"), "--set", "L=1.5")
     assert result.returncode == 0, result.stderr
-    assert json.loads(result.stdout)["answers"]["omega"]["value"].startswith("-4.429")  # -sqrt(3*9.81/1.5): clockwise
+    omega = json.loads(result.stdout)["answers"]["omega"]
+    assert omega["value"].startswith("4.429") and omega["direction"] == "clockwise"  # sqrt(3*9.81/1.5)
+    assert omega["component"].startswith("-4.429")  # along the file's axes: counter-clockwise positive
 
 
 def test_a_state_the_motion_does_not_reach_is_refused(tmp_path):
@@ -306,7 +308,7 @@ def test_a_rod_on_a_smooth_floor_falls_with_its_center_straight_down(tmp_path):
     assert result.returncode == 0, result.stderr
     phi0, phi = math.pi / 2 - 1, math.pi / 2 - 0.5
     expected = -math.sqrt(12 * 9.81 * (math.cos(phi0) - math.cos(phi)) / (1.5 * (1 + 3 * math.sin(phi) ** 2)))
-    assert float(json.loads(result.stdout)["answers"]["omega"]["value"]) == pytest.approx(expected, rel=1e-9)
+    assert float(json.loads(result.stdout)["answers"]["omega"]["component"]) == pytest.approx(expected, rel=1e-9)
     steps = json.dumps(json.loads(result.stdout)["steps"])
     assert "momentum of the whole scene along x is kept" in steps
 
@@ -349,7 +351,7 @@ def test_the_flight_off_the_wedge_matches_a_simulation_and_the_routes_check():
 
     wedge = problem.load(Path(__file__).parent / "textbook/states/ball_bounces_off_wedge.yaml")
     result = report.solve(wedge, {"h": "1", "H": "0.35", "e": "0.85", "m": "0.2"}, 12)
-    value = {name: float(a["value"]) for name, a in result["answers"].items()}
+    value = {name: float(a.get("component") or a["value"]) for name, a in result["answers"].items()}
     fall = solve_ivp(lambda t, y: [y[2], y[3], 0, -9.81], (0, 5), [0, 0, value["vx"], value["vy"]],
                      events=lambda t, y: y[1] + 0.35, rtol=1e-12, atol=1e-14, method="DOP853")
     assert fall.t_events[0][0] == pytest.approx(value["t"], rel=1e-9)
@@ -516,7 +518,7 @@ def test_the_period_by_energy_meets_the_elliptic_integral(monkeypatch):
     from derive.mechanics.oscillation import NotAPendulum
 
     loaded = problem.load(library.find_problem("compound_pendulum_large"))
-    exact = Solution(loaded).expression("T")
+    exact = Solution(loaded).signed("T")
     values = {**sample_points(loaded, exact, count=1)[0], next(s for s in exact.free_symbols if s.name == "theta0"):
               sp.Rational(24, 10)}
     elliptic = numeric.evaluate(exact, values, 15)
@@ -524,7 +526,7 @@ def test_the_period_by_energy_meets_the_elliptic_integral(monkeypatch):
     def not_a_pendulum(*args):
         raise NotAPendulum("forced")
     monkeypatch.setattr(answers, "exact_period", not_a_pendulum)
-    by_energy = Solution(loaded).expression("T")
+    by_energy = Solution(loaded).signed("T")
     assert by_energy.has(sp.Integral)
     assert abs(float(numeric.evaluate(by_energy, values, 15)) - float(elliptic)) <= 1e-12 * abs(float(elliptic))
 
@@ -659,7 +661,7 @@ question: A stick standing on its end topples. How fast does it turn as it hits 
     (tmp_path / "nudged.yaml").write_text(nudged)
     done = run_derive("solve", str(tmp_path / "nudged.yaml"), "--format", "json")
     assert done.returncode == 0, done.stderr
-    w = float(json.loads(done.stdout)["answers"]["w"]["value"])  # (1/2)(M L^2/3)(w^2 - w0^2) = M g L/2
+    w = float(json.loads(done.stdout)["answers"]["w"]["component"])  # (1/2)(M L^2/3)(w^2 - w0^2) = M g L/2
     assert w == pytest.approx(-math.sqrt(3 * 9.81 / 1 + 0.01**2), rel=1e-9)
 
 

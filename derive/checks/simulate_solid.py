@@ -137,8 +137,7 @@ class _Simulation:
         if not ask.small or self.small:  # the ask's own answer (a small-size limit: at the sizes shrunk)
             note = (f" (the small-size limit; {', '.join(map(str, self.small))} at {SHRINK:g} of the sample)"
                     if self.small else "")
-            measure(name, q, self.number(self.solution.expressions[name] if ask.magnitude else self.solution.signed(name)),
-                    note)
+            measure(name, q, self.number(self.solution.signed(name)), note)
             return
         # before the limit, by the route the answers use
         exact = {"pivot_point": self.solution._pivot_point, "rolls_on_edge": self.solution._rolls_on_edge,

@@ -76,6 +76,17 @@ def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: 
     return result
 
 
+def _component(solution: Solution, name: str, values: dict, digits: int | None) -> str | None:
+    """A quantity with a direction as the component along the file's axes (y up, counter-clockwise
+    positive), for programs that read `derive solve`'s JSON; the value itself is its magnitude."""
+    ask = solution.problem.asks[name]
+    try:
+        return numeric.evaluate(_in_unit(solution.signed(name), ask.unit), values,
+                                figures_supported(solution, name) if digits is None else digits)
+    except (ValueError, ZeroDivisionError):
+        return None
+
+
 def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int | None = 15,
           solution: Solution | None = None) -> dict:
     """The JSON contract of `derive solve`: parameters, answers, equations of motion, checks;
@@ -105,6 +116,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
             "value": numbers[name],
             "direction": answer_signs.direction(solution, name, values),
         }
+        if solution.senses[name] is not None and not ask.magnitude:  # the component along the file's axes too
+            answers[name]["component"] = _component(solution, name, values, digits)
     for name, ask in problem.asks.items():
         if ask.exact is not None:  # an approximation: its relative error at these parameters
             approximate, exact = answers[name]["value"], answers[ask.exact]["value"]

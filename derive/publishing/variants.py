@@ -30,6 +30,7 @@ from derive.publishing import distractors, lms
 from derive.text import latex_safety
 from derive.numbers import numeric
 from derive.core import units
+from derive.mechanics.along_motion import AlongMotion
 from derive.solution import answer_signs, textbook
 from derive.solution.answers import Solution
 from derive.core.errors import InputError
@@ -158,7 +159,7 @@ class ProblemVariants:
         balance (derive.solution.textbook), each force drawn the way it acts, its symbol a magnitude
         (friction up the slope); none where the route is not written."""
         steps, route = self.solution.student_steps, self.solution.textbook_route
-        if steps is None:
+        if steps is None or not isinstance(route, AlongMotion):  # a swing, an impact: no body's balance
             return {}
         drawn = free_body.free_bodies(self.problem, self.solution.dynamics_scene, self.solution.coordinates,
                                       route.acting, textbook.names(self.solution))

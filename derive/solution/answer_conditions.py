@@ -81,7 +81,7 @@ class AnswerConditions:
         the samples and the formula does not hold there."""
         result = []
         for name, ask in self.problem.asks.items():
-            if not (ask.magnitude or self.senses[name]):
+            if not ask.magnitude:  # a direction in words: its magnitude's sign proven, or |...| (answer_signs)
                 continue
             try:
                 magnitude = self.expression(name)

@@ -18,12 +18,23 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.core.tidying import leading_plus, tidy
+from derive.numbers import intervals
 from derive.solution.crosschecks import sample_points
 
 
-def magnitude(problem, expr: sp.Expr) -> sp.Expr:
-    """|expr|: expr or -expr when its sign is the same over the parameter ranges, else Abs(expr)
-    (its sign is checked per variant: derive.solution.answer_conditions)."""
+def magnitude(problem, expr: sp.Expr, proven: bool = False) -> sp.Expr:
+    """|expr|: expr or -expr when its sign is the same over the parameter ranges, else Abs(expr).
+    With `proven` (a quantity answered with its direction in words) the sign must be proven over
+    the whole box of the ranges in balls (derive.numbers.intervals), else the answer is |expr| and
+    each variant's direction its own; without it (an ask's `magnitude: true`, as before) the sign is
+    read off samples of the ranges and checked per variant (derive.solution.answer_conditions)."""
+    box = {p.symbol: p.si_ends for p in problem.parameters.values() if p.range is not None or p.value is not None}
+    if proven and expr.free_symbols <= set(box):
+        if intervals.positive_over(expr, box, strict=False):
+            return expr
+        if intervals.positive_over(-expr, box, strict=False):
+            return negated(expr)
+        return sp.Abs(expr)
     signs = {sp.sign(sp.N(expr.xreplace(point), 30)) for point in sample_points(problem, expr)}
     if signs == {1}:
         return expr

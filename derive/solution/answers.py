@@ -467,7 +467,9 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         with limits.time_limit(f"{self.problem.path}: ask.{name}"):
             result = self._expression(name)
             ask = self.problem.asks[name]
-            return answer_signs.magnitude(self.problem, result) if ask.magnitude or self.senses[name] else result
+            if ask.magnitude or self.senses[name] is None:
+                return answer_signs.magnitude(self.problem, result) if ask.magnitude else result
+            return answer_signs.magnitude(self.problem, result, proven=True)
 
     def signed_expression(self, name: str) -> sp.Expr:
         """The answer as the routes give it: a component along its axis, a rotation counter-clockwise
@@ -486,7 +488,11 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         return textbook.student_steps(self)
 
     def signed(self, name: str) -> sp.Expr:
-        """The answer as the routes give it (`signed_expression`), what a simulation measures."""
+        """The answer in the file's own axes, before a direction in words: a component, a rotation
+        counter-clockwise positive (`signed_expression`), the magnitude where the file asks
+        `magnitude: true`; what a simulation measures."""
+        if self.problem.asks[name].magnitude:
+            return self.expressions[name]
         return self.signed_expressions.get(name, self.expressions[name])
 
     @cached_property
