@@ -50,6 +50,23 @@ def progress_option(command):
     return wrapper
 
 
+def derives_options(command):
+    """`--jobs N` (default: the cores) and `--no-cache`, handed to the command as jobs and cache."""
+
+    @click.option("--jobs", type=click.IntRange(1, 256), default=None, metavar="N",
+                  help="Derive the problems in N processes at once (the output is the same). [default: the cores]")
+    @click.option("--no-cache", "no_cache", is_flag=True,
+                  help="Derive every problem again, neither reading nor writing the derivation cache "
+                       "(see `derive cache --help`).")
+    @functools.wraps(command)
+    def wrapper(*args, jobs: int | None, no_cache: bool, **kwargs):
+        from derive.publishing.deriving import cores  # light: no sympy
+
+        return command(*args, jobs=jobs or cores(), cache=not no_cache, **kwargs)
+
+    return wrapper
+
+
 def reports_errors(command):
     """Turn bad input into exit 2 with one line, and anything unexpected into exit 1."""
 
@@ -499,10 +516,11 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
 @click.option("--questions", type=click.Choice(["numerical", "choice"]), default=None,
               help="How the Moodle and Canvas exports ask: a number with a tolerance, or multiple choice "
                    "among wrong answers derived from common mistakes. [default: the set's, else numerical]")
+@derives_options
 @progress_option
 @reports_errors
 def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, out_dir: str | None,
-          formats: str | None, questions: str | None, progress) -> None:
+          formats: str | None, questions: str | None, progress, jobs: int, cache: bool) -> None:
     """Build a problem set: worksheet, worked solutions and answer key.
 
     SET is a set file or the id of one in problems/sets/; or give one or more PROBLEMs
@@ -512,12 +530,15 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
     files, PDFs (latexmk), HTML (pandoc) and the answer key as CSV and JSON; with --to also
     Markdown and DOCX (pandoc), Moodle XML (a cloze question per problem and variant) and a
     QTI 1.2 zip for Canvas. A derive.toml in the working folder gives course defaults
-    (README: Course defaults).
+    (README: Course defaults). Each problem's derivation is kept in the derivation cache
+    (`derive cache --help`): a rebuild after a new seed or a question's text derives nothing;
+    the others are derived --jobs at a time.
 
     \b
     Examples:
       derive sheet demo --variants 30 --seed 7 --to pdf,moodle
       derive sheet rod_endpoint tugged_spool --out build/two
+      derive sheet demo --jobs 1 --no-cache
 
     \b
     A set file needs a title and its problems; the rest has defaults:
@@ -531,9 +552,47 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
 
     wanted = None if formats is None else defaults.outputs(formats, "--to")
     built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
-                         questions=questions, defaults=defaults.load(), progress=progress)
+                         questions=questions, defaults=defaults.load(), progress=progress, jobs=jobs, cache=cache)
     for path in built:
         click.echo(str(path))
+
+
+@main.group()
+def cache() -> None:
+    """The derivation cache: each problem's derivation, kept for the next build.
+
+    An entry is keyed by what the derivation reads (the scene, the asks and the parameters
+    with their ranges, not the question's text, title or source) and by derive's, sympy's
+    and python-flint's versions; an entry that does not match is never used. It lives in the
+    user's cache folder, or $DERIVE_CACHE_DIR, capped at $DERIVE_CACHE_MB megabytes (512):
+    the entries used longest ago go first. `derive sheet --no-cache` neither reads nor writes it.
+
+    \b
+    Examples:
+      derive cache info
+      derive cache clear
+      DERIVE_CACHE_DIR=/tmp/derive-cache derive sheet demo
+    """
+
+
+@cache.command(name="info")
+@reports_errors
+def cache_info() -> None:
+    """Print the cache's folder, its entries, their size and the cap."""
+    from derive.publishing import derivation_cache
+
+    shown = derivation_cache.info()
+    click.echo(f"{shown['folder']}: {shown['entries']} entries, {shown['bytes'] / 2**20:.1f} MB "
+               f"of {shown['cap'] / 2**20:.0f} MB")
+
+
+@cache.command(name="clear")
+@reports_errors
+def cache_clear() -> None:
+    """Remove every entry of the cache."""
+    from derive.publishing import derivation_cache
+
+    click.echo(f"removed {derivation_cache.clear()} entries from {derivation_cache.folder()}")
 
 
 if __name__ == "__main__":

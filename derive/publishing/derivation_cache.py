@@ -1,0 +1,237 @@
+"""Derivations kept on disk, so that a set rebuilt after a typo or with a new seed derives nothing again.
+
+An entry is one problem's derived `Solution` (its answers, checks and worked steps), pickled
+(cloudpickle: the derivations hold functions written inside functions, which the standard
+pickle refuses; python-flint's balls are written exactly, `_arb`). Its key is a SHA-256 of what
+the derivation reads, never of a file's name or time:
+
+- the problem file's parsed content less the text the derivation never reads (the question,
+  title, topic, source and corrections): so the scene, the asks and the parameters, ranges
+  included, since the signs of the answers are proven over the ranges (derive.numbers.intervals)
+  and their branches chosen by them: a changed range derives again, never stale;
+- derive's version and a digest of its own source files (an engine changed in place derives
+  again), and the versions of Python, sympy, python-flint and cloudpickle.
+
+A file is trusted only if it starts with MAGIC, names the key asked for, and its payload has
+the SHA-256 it records; anything else (truncated, foreign, another key) is ignored and
+rebuilt. The folder is DERIVE_CACHE_DIR, else the user's cache folder (platformdirs), capped
+at DERIVE_CACHE_MB megabytes (default 512): the entries used longest ago go first.
+
+>>> import tempfile, os
+>>> from derive.language.problem import load
+>>> os.environ["DERIVE_CACHE_DIR"] = tempfile.mkdtemp()
+>>> problem = load("rod_endpoint")
+>>> fetch(problem) is None
+True
+>>> store(problem, derived(problem))
+True
+>>> fetch(problem).expressions
+{'I': L**2*m/3}
+"""
+from __future__ import annotations
+
+import functools
+import hashlib
+import io
+import json
+import os
+import pickle
+import sys
+import tempfile
+from pathlib import Path
+
+import cloudpickle
+import flint
+import platformdirs
+import sympy as sp
+import yaml
+
+from derive.core.library import version
+from derive.language.problem import Problem
+from derive.language.reader import Loader
+from derive.solution.answers import Solution
+
+MAGIC = b"derive derivation cache 1\n"
+TEXT_ONLY = ("question", "title", "topic", "source", "corrections")  # fields no derivation reads
+DEFAULT_MB = 512
+FOLDER_VARIABLE, SIZE_VARIABLE = "DERIVE_CACHE_DIR", "DERIVE_CACHE_MB"
+
+
+def folder() -> Path:
+    """Where the entries are: DERIVE_CACHE_DIR, else derive's folder in the user's cache folder."""
+    given = os.environ.get(FOLDER_VARIABLE, "").strip()
+    return Path(given) if given else Path(platformdirs.user_cache_dir("derive")) / "derivations"
+
+
+def size_cap() -> int:
+    """The cap in bytes (DERIVE_CACHE_MB, default DEFAULT_MB); a value that is not a number is refused."""
+    text = os.environ.get(SIZE_VARIABLE, "").strip()
+    try:
+        megabytes = float(text) if text else DEFAULT_MB
+    except ValueError:
+        megabytes = -1
+    if not megabytes >= 0:
+        from derive.core.errors import InputError
+
+        raise InputError(f"{SIZE_VARIABLE}={text}: expected a size in megabytes (0 or more)")
+    return int(megabytes * 2**20)
+
+
+@functools.lru_cache(maxsize=1)
+def engine() -> str:
+    """What a derivation's result depends on besides the problem: the versions and derive's own sources."""
+    sources = hashlib.sha256()
+    package = Path(__file__).resolve().parents[1]
+    for path in sorted(package.rglob("*.py")):
+        sources.update(path.relative_to(package).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return json.dumps({"derive": version(), "sources": sources.hexdigest(), "sympy": sp.__version__,
+                       "python-flint": flint.__version__, "cloudpickle": cloudpickle.__version__,
+                       "python": list(sys.version_info[:2])})
+
+
+def _canonical(raw):
+    """The parsed YAML as JSON would write it with its keys sorted (keys as text)."""
+    if isinstance(raw, dict):
+        return {str(k): _canonical(v) for k, v in raw.items()}
+    if isinstance(raw, (list, tuple)):
+        return [_canonical(v) for v in raw]
+    return raw if isinstance(raw, (str, int, float, bool, type(None))) else repr(raw)
+
+
+def key(problem: Problem) -> str:
+    """The entry's key: what the derivation reads of the file (module docstring), and `engine()`."""
+    raw = yaml.load(problem.path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a hardened SafeLoader
+    read = {name: value for name, value in raw.items() if name not in TEXT_ONLY}
+    text = json.dumps([engine(), _canonical(read)], sort_keys=True, ensure_ascii=False)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def derived(problem: Problem) -> Solution:
+    """A problem derived as a set needs it: its answers, their checks and the worked steps."""
+    solution = Solution(problem)
+    solution.expressions
+    solution.checks()
+    solution.steps()
+    return solution
+
+
+def _arb(ball: flint.arb):
+    """A ball written exactly: its midpoint and radius as (mantissa, exponent), which flint.arb
+    reads back bit for bit whatever the working precision (python-flint pickles none)."""
+    if not (ball.mid().is_finite() and ball.rad().is_finite()):
+        raise pickle.PicklingError("a ball that is not finite is not cached")
+    return flint.arb, (ball.mid().man_exp(), ball.rad().man_exp())
+
+
+class _Pickler(cloudpickle.Pickler):
+    """cloudpickle's, writing python-flint's balls too (`_arb`)."""
+
+    def reducer_override(self, obj):
+        return _arb(obj) if type(obj) is flint.arb else super().reducer_override(obj)
+
+
+def dumps(solution: Solution) -> bytes | None:
+    """The solution's bytes, None where something in it cannot be written (it is then not cached)."""
+    buffer = io.BytesIO()
+    try:
+        _Pickler(buffer, protocol=pickle.HIGHEST_PROTOCOL).dump(solution)
+    except (pickle.PicklingError, TypeError, AttributeError, RecursionError):
+        return None
+    return buffer.getvalue()
+
+
+def loads(payload: bytes, problem: Problem) -> Solution | None:
+    """The solution in `payload` for `problem` (which replaces the one it was derived with: the
+    same content but for the text), None if the bytes hold anything else."""
+    try:
+        with sp.evaluate(False):  # each expression rebuilt as it was: held unevaluated where derive held it
+            solution = pickle.loads(payload)  # noqa: S301 - bytes this module wrote, their digest checked
+    except Exception:  # noqa: BLE001 - whatever a damaged pickle raises: not an entry
+        return None
+    if not isinstance(solution, Solution) or getattr(solution, "problem", None) is None \
+            or solution.problem.id != problem.id:
+        return None
+    solution.problem = problem
+    return solution
+
+
+def _path(entry: str) -> Path:
+    return folder() / f"{entry}.pickle"
+
+
+def fetch(problem: Problem, entry: str | None = None) -> Solution | None:
+    """The cached solution of `problem`, None where there is none to trust (missing, damaged, foreign)."""
+    entry = entry or key(problem)
+    path = _path(entry)
+    try:
+        data = path.read_bytes()
+    except OSError:
+        return None
+    header = MAGIC + entry.encode() + b"\n"
+    digest_end = len(header) + 65
+    if not data.startswith(header) or len(data) < digest_end:
+        return None
+    digest, payload = data[len(header):digest_end - 1].decode("ascii", "replace"), data[digest_end:]
+    if hashlib.sha256(payload).hexdigest() != digest:
+        return None
+    solution = loads(payload, problem)
+    if solution is not None:
+        try:
+            os.utime(path)  # used now: the last to go when the cap is reached
+        except OSError:
+            pass
+    return solution
+
+
+def store(problem: Problem, solution: Solution, entry: str | None = None, payload: bytes | None = None) -> bool:
+    """Write the entry (atomically: a reader sees the old file or the new one); False where the
+    solution cannot be written or the folder cannot be. Then trim the folder to its cap."""
+    payload = dumps(solution) if payload is None else payload
+    if payload is None:
+        return False
+    entry = entry or key(problem)
+    where = folder()
+    try:
+        where.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=where, prefix=".writing-", delete=False) as file:
+            file.write(MAGIC + entry.encode() + b"\n" + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload)
+        os.replace(file.name, _path(entry))
+    except OSError:
+        return False
+    trim(size_cap())
+    return True
+
+
+def entries() -> list[Path]:
+    """The entry files, the least recently used first."""
+    try:
+        files = [p for p in folder().glob("*.pickle") if p.is_file()]
+    except OSError:
+        return []
+    return sorted(files, key=lambda p: p.stat().st_mtime)
+
+
+def trim(cap: int) -> None:
+    """Remove the least recently used entries until the folder holds at most `cap` bytes."""
+    files = entries()
+    total = sum(p.stat().st_size for p in files)
+    for path in files:
+        if total <= cap:
+            return
+        total -= path.stat().st_size
+        path.unlink(missing_ok=True)
+
+
+def clear() -> int:
+    """Remove every entry (and any file left half written); return how many entries there were."""
+    files = entries()
+    for path in files + list(folder().glob(".writing-*")):
+        path.unlink(missing_ok=True)
+    return len(files)
+
+
+def info() -> dict:
+    """The folder, its entries, their size and the cap, as `derive cache info` prints them."""
+    files = entries()
+    return {"folder": str(folder()), "entries": len(files), "bytes": sum(p.stat().st_size for p in files),
+            "cap": size_cap()}
