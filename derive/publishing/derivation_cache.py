@@ -6,7 +6,7 @@ pickle refuses; python-flint's balls are written exactly, `_arb`). Its key is a 
 the derivation reads, never of a file's name or time:
 
 - the problem file's parsed content less the text the derivation never reads (the question,
-  title, topic, source and corrections): so the scene, the asks and the parameters, ranges
+  title, topic, source and corrections: Problem.derivation_source): so the scene, the asks and the parameters, ranges
   included, since the signs of the answers are proven over the ranges (derive.numbers.intervals)
   and their branches chosen by them: a changed range derives again, never stale;
 - derive's version and a digest of its own source files (an engine changed in place derives
@@ -44,15 +44,12 @@ import cloudpickle
 import flint
 import platformdirs
 import sympy as sp
-import yaml
 
 from derive.core.library import version
 from derive.language.problem import Problem
-from derive.language.reader import Loader
 from derive.solution.answers import Solution
 
 MAGIC = b"derive derivation cache 1\n"
-TEXT_ONLY = ("question", "title", "topic", "source", "corrections")  # fields no derivation reads
 DEFAULT_MB = 512
 FOLDER_VARIABLE, SIZE_VARIABLE = "DERIVE_CACHE_DIR", "DERIVE_CACHE_MB"
 
@@ -89,21 +86,12 @@ def engine() -> str:
                        "python": list(sys.version_info[:2])})
 
 
-def _canonical(raw):
-    """The parsed YAML as JSON would write it with its keys sorted (keys as text)."""
-    if isinstance(raw, dict):
-        return {str(k): _canonical(v) for k, v in raw.items()}
-    if isinstance(raw, (list, tuple)):
-        return [_canonical(v) for v in raw]
-    return raw if isinstance(raw, (str, int, float, bool, type(None))) else repr(raw)
-
-
-def key(problem: Problem) -> str:
-    """The entry's key: what the derivation reads of the file (module docstring), and `engine()`."""
-    raw = yaml.load(problem.path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a hardened SafeLoader
-    read = {name: value for name, value in raw.items() if name not in TEXT_ONLY}
-    text = json.dumps([engine(), _canonical(read)], sort_keys=True, ensure_ascii=False)
-    return hashlib.sha256(text.encode()).hexdigest()
+def key(problem: Problem) -> str | None:
+    """The entry's key: what the derivation reads of the file (module docstring), and `engine()`;
+    None for a problem not read from a file's text (nothing to key it by: not cached)."""
+    if not problem.derivation_source:
+        return None
+    return hashlib.sha256(f"{engine()}\n{problem.derivation_source}".encode()).hexdigest()
 
 
 def derived(problem: Problem) -> Solution:
@@ -162,6 +150,8 @@ def _path(entry: str) -> Path:
 def fetch(problem: Problem, entry: str | None = None) -> Solution | None:
     """The cached solution of `problem`, None where there is none to trust (missing, damaged, foreign)."""
     entry = entry or key(problem)
+    if entry is None:
+        return None
     path = _path(entry)
     try:
         data = path.read_bytes()
@@ -190,6 +180,8 @@ def store(problem: Problem, solution: Solution, entry: str | None = None, payloa
     if payload is None:
         return False
     entry = entry or key(problem)
+    if entry is None:
+        return False
     where = folder()
     try:
         where.mkdir(parents=True, exist_ok=True)
