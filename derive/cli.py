@@ -416,8 +416,13 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
 @click.option("--quick", is_flag=True,
               help="A shorter run: fewer problems, samples and variants; 4 scenes and chains up to n = 3.")
 @click.option("--only", type=click.Choice(["startup", "derivations", "backends", "answer_key", "set_rate", "sheet",
-                                           "mechanics_alone", "work_precision", "engines"]),
-              default=None, help="Run one section (engines: derive against sympy.physics.mechanics).")
+                                           "mechanics_alone", "work_precision", "engines", "course"]),
+              default=None, help="Run one section (engines: derive against sympy.physics.mechanics; course: the "
+                                 "library as one set, cold, warm, one question changed, peak memory).")
+@click.option("--variants", type=click.IntRange(1, MAX_VARIANTS), default=30, show_default=True,
+              help="Course: variants per problem.")
+@click.option("--to", "outputs", default="", metavar="LIST", help="Course: the outputs, as derive sheet --to takes "
+                                                                "them. [default: LaTeX and the keys only]")
 @click.option("--json", "as_json", is_flag=True,
               help="Print the engines section's figures as one JSON document on stdout (the other "
                    "sections' lines and the progress go to stderr).")
@@ -432,7 +437,7 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
                    "'over limit' (default 300; 60 with --quick).")
 @reports_errors
 def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_n: int | None, repeats: int,
-          limit: float | None) -> None:
+          limit: float | None, variants: int, outputs: str) -> None:
     """Measure speed against accuracy and print the figures (never pass/fail).
 
     CLI start-up; derivation per problem, cold and cached; answers per second, worst
@@ -441,7 +446,8 @@ def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_
     reference, at typical and extreme parameters; a 30-problem x 300-variant answer key;
     the marginal answers per second of a whole set build (300 variants against 1);
     sympy.physics.mechanics alone on the same systems; a work-precision table of scipy's
-    integrators and a symplectic one.
+    integrators and a symplectic one. Only when asked (--only course): the whole library as
+    one set of --variants, cold, warm (a new seed), one question changed, and peak memory.
 
     \b
     Engines (derive against sympy.physics.mechanics, in the same run):
@@ -463,7 +469,7 @@ def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_
 
     from derive.bench import runs as benchmarks
 
-    options = {"repeats": repeats, "max_n": max_n, "limit": limit}
+    options = {"repeats": repeats, "max_n": max_n, "limit": limit, "variants": variants, "outputs": outputs}
     if scenes:
         from derive.bench.anchors import SCENES
 
@@ -557,9 +563,12 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
         click.echo(str(path))
 
 
-@main.group()
-def cache() -> None:
-    """The derivation cache: each problem's derivation, kept for the next build.
+@main.command()
+@click.argument("action", type=click.Choice(["info", "clear"]))
+@reports_errors
+def cache(action: str) -> None:
+    """The derivation cache: each problem's derivation, kept for the next build. info prints
+    its folder, entries, size and cap; clear removes every entry.
 
     An entry is keyed by what the derivation reads (the scene, the asks and the parameters
     with their ranges, not the question's text, title or source) and by derive's, sympy's
@@ -573,26 +582,14 @@ def cache() -> None:
       derive cache clear
       DERIVE_CACHE_DIR=/tmp/derive-cache derive sheet demo
     """
-
-
-@cache.command(name="info")
-@reports_errors
-def cache_info() -> None:
-    """Print the cache's folder, its entries, their size and the cap."""
     from derive.publishing import derivation_cache
 
+    if action == "clear":
+        click.echo(f"removed {derivation_cache.clear()} entries from {derivation_cache.folder()}")
+        return
     shown = derivation_cache.info()
-    click.echo(f"{shown['folder']}: {shown['entries']} entries, {shown['bytes'] / 2**20:.1f} MB "
-               f"of {shown['cap'] / 2**20:.0f} MB")
-
-
-@cache.command(name="clear")
-@reports_errors
-def cache_clear() -> None:
-    """Remove every entry of the cache."""
-    from derive.publishing import derivation_cache
-
-    click.echo(f"removed {derivation_cache.clear()} entries from {derivation_cache.folder()}")
+    click.echo(f"{shown['folder']}: {shown['entries']} entries, {shown['bytes'] / 2**20:.1f} MB of "
+               f"{shown['cap'] / 2**20:.0f} MB")
 
 
 if __name__ == "__main__":

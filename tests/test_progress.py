@@ -26,7 +26,7 @@ def test_the_bar_counts_the_steps_and_leaves_no_trace(capsys):
 
 def test_auto_is_lines_off_a_terminal_and_none_is_silent(tmp_path, capsys):
     assert Reporter("auto").mode == "lines"  # pytest captures stderr: not a terminal
-    done = run_derive("sheet", "demo", "--variants", "1", "--to", "md", "--out", str(tmp_path / "a"))
+    done = run_derive("sheet", "demo", "--variants", "1", "--to", "md", "--out", str(tmp_path / "a"), "--jobs", "1")
     assert done.returncode == 0 and "deriving rod_endpoint (1/3)" in done.stderr
     assert "writing 3 figures as SVG and PNG (pdftocairo) (3/4)" in done.stderr
     assert "writing the worksheet as md (pandoc) (4/4)" in done.stderr

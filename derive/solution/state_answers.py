@@ -14,11 +14,11 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
-import functools
 from functools import cached_property
 
 import sympy as sp
 
+from derive.core.memo import kept
 from derive.core import limits
 from derive.mechanics import (durations, friction, grips, impacts, lagrange, moves, newton_euler, reaching, states as state_motion)
 from derive.mechanics.derivation import Solved, Step
@@ -328,7 +328,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         state it starts from where the state is a grip (the part slipping on the way), else its own."""
         return self.derivations_in(self.scene.states[name].start if self.grips_in(name) else name)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
+    @kept
     def _derivations_with(self, joints: tuple) -> dict:
         if not joints:
             return self.derivations
@@ -375,7 +375,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             Sentence(("Along the way the equations of motion, with the rates energy gives, say how large it is at "
                       f"each point: {ends} where it first falls to zero.",))))
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes, a few states
+    @kept
     def in_state(self, route: str, name: str | None) -> Solved:
         """One route's accelerations and forces in a named state (None: the placement at rest)."""
         if name is None:
@@ -452,7 +452,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             return values[coords.of(q.target, q.detail).u]
         return root(values[coords.of(q.target, "x").u] ** 2 + values[coords.of(q.target, "y").u] ** 2)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few states
+    @kept
     def _duration(self, name: str) -> tuple[sp.Expr, Step]:
         reached = self.states[name]
         if reached.took is not None:
