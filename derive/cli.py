@@ -45,7 +45,9 @@ def progress_option(command):
     def wrapper(*args, progress_mode: str, **kwargs):
         from derive.publishing.progress import Reporter  # light: no sympy
 
-        return command(*args, progress=Reporter(progress_mode), **kwargs)
+        progress = Reporter(progress_mode)
+        with progress.steps_shown():
+            return command(*args, progress=progress, **kwargs)
 
     return wrapper
 

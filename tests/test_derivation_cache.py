@@ -156,3 +156,16 @@ def test_the_help_teaches_the_options():
     assert "--jobs N" in sheet and "--no-cache" in sheet and "derive cache --help" in sheet
     cache = run_derive("cache", "--help").stdout
     assert "DERIVE_CACHE_DIR" in cache and "derive cache clear" in cache and "ranges" in cache
+
+
+def test_the_api_takes_jobs_and_cache(tmp_path):
+    import derive
+    from derive.core.errors import InputError
+
+    with pytest.raises(InputError, match="jobs: expected a whole number from 1 to 256"):
+        derive.sheet(["rod_endpoint"], tmp_path / "a", to=[], jobs=0)
+    derive.sheet(["rod_endpoint"], tmp_path / "b", to=[], jobs=1, cache=False, progress="none")
+    assert derivation_cache.entries() == []
+    derive.sheet(["rod_endpoint"], tmp_path / "c", to=[], progress="none")
+    assert len(derivation_cache.entries()) == 1
+    assert (tmp_path / "b" / "key.json").read_bytes() == (tmp_path / "c" / "key.json").read_bytes()

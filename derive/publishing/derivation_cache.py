@@ -173,9 +173,11 @@ def fetch(problem: Problem, entry: str | None = None) -> Solution | None:
     return solution
 
 
-def store(problem: Problem, solution: Solution, entry: str | None = None, payload: bytes | None = None) -> bool:
+def store(problem: Problem, solution: Solution, entry: str | None = None, payload: bytes | None = None,
+          trimmed: bool = True) -> bool:
     """Write the entry (atomically: a reader sees the old file or the new one); False where the
-    solution cannot be written or the folder cannot be. Then trim the folder to its cap."""
+    solution cannot be written or the folder cannot be. Then trim the folder to its cap (unless
+    not `trimmed`: a caller storing many trims once, after the last)."""
     payload = dumps(solution) if payload is None else payload
     if payload is None:
         return False
@@ -190,7 +192,8 @@ def store(problem: Problem, solution: Solution, entry: str | None = None, payloa
         os.replace(file.name, _path(entry))
     except OSError:
         return False
-    trim(size_cap())
+    if trimmed:
+        trim(size_cap())
     return True
 
 

@@ -16,6 +16,7 @@ derived again here, so that its error is the one a single job raises.
 from __future__ import annotations
 
 import contextlib
+import logging
 import multiprocessing
 import os
 import signal
@@ -40,6 +41,7 @@ def derive(problems: Sequence[Problem], jobs: int = 1, cache: bool = True, progr
     """Each problem's Solution (derivation_cache.derived) and whether it came from the cache, in
     order. `where(i)` is a context manager that names problem i in its errors (a set's entry)."""
     results: list[tuple[Solution, bool] | None] = [None] * len(problems)
+    cap = derivation_cache.size_cap() if cache else 0  # a bad DERIVE_CACHE_MB refused before any derivation
     keys = [derivation_cache.key(p) if cache else None for p in problems]
     with progress.task("deriving", len(problems)) as begin:
         for i, problem in enumerate(problems):  # the cached ones first: a moment each
@@ -60,8 +62,10 @@ def derive(problems: Sequence[Problem], jobs: int = 1, cache: bool = True, progr
                 with where(i) if where else contextlib.nullcontext():
                     solution = derivation_cache.derived(problem)
             if cache:
-                derivation_cache.store(problem, solution, keys[i], payload)
+                derivation_cache.store(problem, solution, keys[i], payload, trimmed=False)
             results[i] = solution, False
+    if cache:
+        derivation_cache.trim(cap)
     return results
 
 
@@ -91,7 +95,9 @@ def _in_workers(problems: Sequence[Problem], workers: int, begin: Callable[[str]
 
 
 def _worker_signals() -> None:
-    """A worker leaves Ctrl-C to the parent (which stops the pool) and ends at once on SIGTERM."""
+    """A worker leaves Ctrl-C to the parent (which stops the pool) and ends at once on SIGTERM; it
+    shows no progress of its own (the parent's lines say what is running)."""
+    logging.getLogger("derive").disabled = True
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
 

@@ -13,6 +13,7 @@ sqrt(3)*sqrt(g)/sqrt(L)
 from __future__ import annotations
 
 import dataclasses
+import logging
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -33,6 +34,8 @@ from derive.text.prose import Sentence, capital
 from derive.model.scene import RATE_KINDS, Quantity
 from derive.solution.state_conditions import StateConditions
 from derive.solution.state_events import StateEvents, in_place
+
+PROGRESS = logging.getLogger(__name__)  # each state of a chain as it is found (derive.publishing.progress shows it)
 from derive.solution.start_regimes import Start, StartRegimes, with_start_step
 
 
@@ -76,7 +79,8 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
 
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
-        for name, state in self.scene.states.items():
+        for number, (name, state) in enumerate(self.scene.states.items(), start=1):
+            PROGRESS.info("%s: finding the state %s (%d of %d)", self.problem.id, name, number, len(self.scene.states))
             try:
                 joints[name] = joints[state.start] if state.start else self._root_joints(state, result)
                 if state.event is None and not state.rates and not self.grips_in(name):
