@@ -14,9 +14,11 @@ from conftest import ROOT, run_derive
 from derive.language.problem import load
 from derive.publishing import derivation_cache, deriving
 
-# Held unevaluated forms (a pendulum's root), friction regimes, states, impacts, a top, rolling bodies, an orbit.
+# Held unevaluated forms (a pendulum's root, sqrt(2 g H)), inertia integrals (an integrand 1*f once came back),
+# friction regimes, states, impacts, tops and wheels in 3D, rolling bodies, an orbit, polar kinematics.
 PROBLEMS = ("compound_pendulum", "string_wrapped_disk", "skid_to_roll", "loop_the_loop", "sticky_impact_pivoted",
-            "top_precession_exact", "incline_race", "kepler_orbit", "tugged_spool")
+            "top_precession_exact", "incline_race", "kepler_orbit", "tugged_spool", "rod_endpoint", "mass_concentration",
+            "tilting_wheel", "rigid_body_L", "polar_acceleration")
 
 
 def _build(out: Path, *options: str, problems=PROBLEMS, env=None) -> str:

@@ -49,7 +49,7 @@ from derive.core.library import version
 from derive.language.problem import Problem
 from derive.solution.answers import Solution
 
-MAGIC = b"derive derivation cache 1\n"
+MAGIC = b"derive derivation cache 2\n"
 DEFAULT_MB = 512
 FOLDER_VARIABLE, SIZE_VARIABLE = "DERIVE_CACHE_DIR", "DERIVE_CACHE_MB"
 
@@ -111,11 +111,52 @@ def _arb(ball: flint.arb):
     return flint.arb, (ball.mid().man_exp(), ball.rad().man_exp())
 
 
+_PLAIN = frozenset({"_mhash", "_args", "_assumptions", "__weakref__"})  # what sympy.Basic.__new__ sets
+
+
+@functools.lru_cache(maxsize=None)
+def _slots(cls: type) -> tuple[str, ...]:
+    """The slots of a sympy class beyond Basic's own."""
+    names = []
+    for klass in cls.__mro__:
+        slots = klass.__dict__.get("__slots__", ())
+        names += [slots] if isinstance(slots, str) else list(slots)
+    return tuple(n for n in names if n not in _PLAIN)
+
+
+def _expression(obj: sp.Basic):
+    """A compound expression written as its class, its arguments and its commutativity where it
+    keeps it (Add, Mul, Pow), rebuilt by `_rebuilt` without running its constructor; None for one
+    that holds more (a matrix, a polynomial, a finite set), which pickles as sympy pickles it.
+    sympy's own pickling calls the constructor on the arguments, which evaluates again what derive
+    held unevaluated (sqrt(M g R/I) became a product of roots, an integral's integrand 1*f)."""
+    extra = {n for n in _slots(type(obj)) if hasattr(obj, n)} | set(getattr(obj, "__dict__", ()))
+    if extra - {"is_commutative"}:
+        return None
+    return _rebuilt, (type(obj), obj.args, (obj.is_commutative,) if extra else ())
+
+
+def _rebuilt(cls: type, args: tuple, commutative: tuple) -> sp.Basic:
+    """The expression of class `cls` with exactly these arguments (sympy's Basic.__new__, no
+    evaluation) and the commutativity its constructor had set, if any."""
+    obj = sp.Basic.__new__(cls, *args)
+    if commutative:
+        obj.is_commutative = commutative[0]
+    return obj
+
+
 class _Pickler(cloudpickle.Pickler):
-    """cloudpickle's, writing python-flint's balls too (`_arb`)."""
+    """cloudpickle's, writing compound sympy expressions as they are (`_expression`) and
+    python-flint's balls exactly (`_arb`)."""
 
     def reducer_override(self, obj):
-        return _arb(obj) if type(obj) is flint.arb else super().reducer_override(obj)
+        if type(obj) is flint.arb:
+            return _arb(obj)
+        if isinstance(obj, sp.Basic) and obj.args and not obj.is_Atom:
+            written = _expression(obj)
+            if written is not None:
+                return written
+        return super().reducer_override(obj)
 
 
 def dumps(solution: Solution) -> bytes | None:
@@ -132,7 +173,7 @@ def loads(payload: bytes, problem: Problem) -> Solution | None:
     """The solution in `payload` for `problem` (which replaces the one it was derived with: the
     same content but for the text), None if the bytes hold anything else."""
     try:
-        with sp.evaluate(False):  # each expression rebuilt as it was: held unevaluated where derive held it
+        with sp.evaluate(False):  # what pickles as sympy pickles it (a matrix) rebuilt with its entries as they are
             solution = pickle.loads(payload)  # noqa: S301 - bytes this module wrote, their digest checked
     except Exception:  # noqa: BLE001 - whatever a damaged pickle raises: not an entry
         return None
