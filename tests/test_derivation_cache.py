@@ -140,11 +140,13 @@ def test_the_cache_keeps_to_its_cap(monkeypatch):
 
 def test_derive_cache_info_and_clear(tmp_path):
     _entry(load("rod_endpoint"))
+    other = derivation_cache.folder() / "notes.pickle"  # not derive's: kept
+    other.write_bytes(b"someone else's")
     info = run_derive("cache", "info")
     assert info.returncode == 0 and f"{os.environ['DERIVE_CACHE_DIR']}: 1 entries" in info.stdout, info.stderr
     cleared = run_derive("cache", "clear")
     assert cleared.returncode == 0 and "removed 1 entries" in cleared.stdout
-    assert derivation_cache.entries() == []
+    assert derivation_cache.entries() == [] and other.read_bytes() == b"someone else's"
     assert "0 entries" in run_derive("cache", "info").stdout
 
 

@@ -36,7 +36,7 @@ from derive.core.spelling import did_you_mean, no_such
 
 DEFAULT_SIG_FIGS = 3
 TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections", "conditions"}
-TEXT_ONLY = ("question", "title", "topic", "source", "corrections")  # fields no derivation reads
+TEXT_ONLY = ("question", "title", "topic", "source", "corrections", "difficulty", "tags")  # fields no derivation reads
 
 
 def _canonical(raw):

@@ -6,7 +6,7 @@ pickle refuses; python-flint's balls are written exactly, `_arb`). Its key is a 
 the derivation reads, never of a file's name or time:
 
 - the problem file's parsed content less the text the derivation never reads (the question,
-  title, topic, source and corrections: Problem.derivation_source): so the scene, the asks and the parameters, ranges
+  title, topic, source, corrections and labels: Problem.derivation_source): so the scene, the asks and the parameters, ranges
   included, since the signs of the answers are proven over the ranges (derive.numbers.intervals)
   and their branches chosen by them: a changed range derives again, never stale;
 - derive's version and a digest of its own source files (an engine changed in place derives
@@ -36,6 +36,7 @@ import io
 import json
 import os
 import pickle
+import re
 import sys
 import tempfile
 from pathlib import Path
@@ -51,6 +52,7 @@ from derive.solution.answers import Solution
 
 MAGIC = b"derive derivation cache 2\n"
 DEFAULT_MB = 512
+ENTRY_NAME = re.compile(r"[0-9a-f]{64}\.pickle")  # an entry's file: its key
 FOLDER_VARIABLE, SIZE_VARIABLE = "DERIVE_CACHE_DIR", "DERIVE_CACHE_MB"
 
 
@@ -240,8 +242,8 @@ def store(problem: Problem, solution: Solution, entry: str | None = None, payloa
 
 def entries() -> list[Path]:
     """The entry files, the least recently used first."""
-    try:
-        files = [p for p in folder().glob("*.pickle") if p.is_file()]
+    try:  # only derive's own names: a folder given by DERIVE_CACHE_DIR may hold other files
+        files = [p for p in folder().glob("*.pickle") if ENTRY_NAME.fullmatch(p.name) and p.is_file()]
     except OSError:
         return []
     return sorted(files, key=lambda p: p.stat().st_mtime)
@@ -261,7 +263,7 @@ def trim(cap: int) -> None:
 def clear() -> int:
     """Remove every entry (and any file left half written); return how many entries there were."""
     files = entries()
-    for path in files + list(folder().glob(".writing-*")):
+    for path in files + [p for p in folder().glob(".writing-*") if p.is_file()]:
         path.unlink(missing_ok=True)
     return len(files)
 
