@@ -171,7 +171,7 @@ def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, d
 
 def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = None, *, variants: int | None = None,
           seed: int | None = None, to: str | list[str] | None = None, questions: str | None = None,
-          title: str | None = None, progress: str | Reporter = "auto") -> list[Path]:
+          title: str | None = None, progress: str | Reporter = "auto", jobs: int = 1, cache: bool = True) -> list[Path]:
     """Build a problem set as `derive sheet` does, into `out` (default build/<set id>); return
     the files written.
 
@@ -179,7 +179,9 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
     (ids, files, {"topic": "rolling", "count": 2}), which builds with a set file's defaults into
     build/problems, under `title`. `variants`, `seed`, `to` (outputs besides the .tex files and
     the keys: "pdf,html" or a list; [] for none), `questions` ("numerical" or "choice") override
-    the set's. `progress`: "auto", "bar", "lines" or "none" (stderr).
+    the set's. `progress`: "auto", "bar", "lines" or "none" (stderr). `jobs` processes derive the
+    problems; `cache`: take each derivation from the derivation cache where it holds it, and keep
+    the others there (as `derive sheet --jobs`, `--no-cache`).
 
     >>> sheet(["rod_endpoint"], to="pfd")
     Traceback (most recent call last):
@@ -204,6 +206,7 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
         raise InputError(f"questions: expected one of {', '.join(problem_sets.QUESTIONS)}, got {questions!r}")
     return sheets.build(
         problem_set, out_dir=out, questions=questions, progress=progress, defaults=course,
+        jobs=_whole("jobs", jobs, 1, 256), cache=bool(cache),
         variants=None if variants is None else _whole("variants", variants, 1, MAX_VARIANTS),
         seed=None if seed is None else _whole("seed", seed),
         formats=None if to is None else defaults.outputs(to if isinstance(to, str) else ",".join(to), "--to"))

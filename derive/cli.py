@@ -45,7 +45,26 @@ def progress_option(command):
     def wrapper(*args, progress_mode: str, **kwargs):
         from derive.publishing.progress import Reporter  # light: no sympy
 
-        return command(*args, progress=Reporter(progress_mode), **kwargs)
+        progress = Reporter(progress_mode)
+        with progress.steps_shown():
+            return command(*args, progress=progress, **kwargs)
+
+    return wrapper
+
+
+def derives_options(command):
+    """`--jobs N` (default: the cores) and `--no-cache`, handed to the command as jobs and cache."""
+
+    @click.option("--jobs", type=click.IntRange(1, 256), default=None, metavar="N",
+                  help="Derive the problems in N processes at once (the output is the same). [default: the cores]")
+    @click.option("--no-cache", "no_cache", is_flag=True,
+                  help="Derive every problem again, neither reading nor writing the derivation cache "
+                       "(see `derive cache --help`).")
+    @functools.wraps(command)
+    def wrapper(*args, jobs: int | None, no_cache: bool, **kwargs):
+        from derive.publishing.deriving import cores  # light: no sympy
+
+        return command(*args, jobs=jobs or cores(), cache=not no_cache, **kwargs)
 
     return wrapper
 
@@ -420,10 +439,15 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
               help="A shorter run: fewer problems, samples and variants; 4 scenes and chains up to n = 3.")
 # The sections of derive.bench.runs.SECTIONS (not imported here: the command line starts without sympy)
 @click.option("--only", type=click.Choice(["startup", "derivations", "backends", "answer_key", "set_rate", "sheet",
-                                           "mechanics_alone", "work_precision", "engines", "solution_length"]),
-              default=None,
-              help="Run one section (engines: derive against sympy.physics.mechanics; solution_length: the "
-                   "displayed equations of every worked solution).")
+                                           "mechanics_alone", "work_precision", "engines", "solution_length",
+                                           "course"]),
+              default=None, help="Run one section (engines: derive against sympy.physics.mechanics; course: the "
+                                 "library as one set, cold, warm, one question changed, peak memory; "
+                                 "solution_length: the displayed equations of every worked solution).")
+@click.option("--variants", type=click.IntRange(1, MAX_VARIANTS), default=30, show_default=True,
+              help="Course: variants per problem.")
+@click.option("--to", "outputs", default="", metavar="LIST", help="Course: the outputs, as derive sheet --to takes "
+                                                                "them. [default: LaTeX and the keys only]")
 @click.option("--json", "as_json", is_flag=True,
               help="Print the engines section's figures as one JSON document on stdout (the other "
                    "sections' lines and the progress go to stderr).")
@@ -438,7 +462,7 @@ def check(problems: tuple[str, ...], seeds: int | None, progress) -> None:
                    "'over limit' (default 300; 60 with --quick).")
 @reports_errors
 def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_n: int | None, repeats: int,
-          limit: float | None) -> None:
+          limit: float | None, variants: int, outputs: str) -> None:
     """Measure speed against accuracy and print the figures (never pass/fail).
 
     CLI start-up; derivation per problem, cold and cached; answers per second, worst
@@ -447,7 +471,8 @@ def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_
     reference, at typical and extreme parameters; a 30-problem x 300-variant answer key;
     the marginal answers per second of a whole set build (300 variants against 1);
     sympy.physics.mechanics alone on the same systems; a work-precision table of scipy's
-    integrators and a symplectic one.
+    integrators and a symplectic one. Only when asked (--only course): the whole library as
+    one set of --variants, cold, warm (a new seed), one question changed, and peak memory.
 
     \b
     Engines (derive against sympy.physics.mechanics, in the same run):
@@ -469,7 +494,7 @@ def bench(quick: bool, only: str | None, as_json: bool, scenes: str | None, max_
 
     from derive.bench import runs as benchmarks
 
-    options = {"repeats": repeats, "max_n": max_n, "limit": limit}
+    options = {"repeats": repeats, "max_n": max_n, "limit": limit, "variants": variants, "outputs": outputs}
     if scenes:
         from derive.bench.anchors import SCENES
 
@@ -522,10 +547,11 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
 @click.option("--questions", type=click.Choice(["numerical", "choice"]), default=None,
               help="How the Moodle and Canvas exports ask: a number with a tolerance, or multiple choice "
                    "among wrong answers derived from common mistakes. [default: the set's, else numerical]")
+@derives_options
 @progress_option
 @reports_errors
 def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, out_dir: str | None,
-          formats: str | None, questions: str | None, progress) -> None:
+          formats: str | None, questions: str | None, progress, jobs: int, cache: bool) -> None:
     """Build a problem set: worksheet, worked solutions and answer key.
 
     SET is a set file or the id of one in problems/sets/; or give one or more PROBLEMs
@@ -535,12 +561,15 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
     files, PDFs (latexmk), HTML (pandoc) and the answer key as CSV and JSON; with --to also
     Markdown and DOCX (pandoc), Moodle XML (a cloze question per problem and variant) and a
     QTI 1.2 zip for Canvas. A derive.toml in the working folder gives course defaults
-    (see the documentation: Course defaults).
+    (see the documentation: Course defaults). Each problem's derivation is kept in the derivation
+    cache (`derive cache --help`): a rebuild after a new seed or a question's text derives nothing;
+    the others are derived --jobs at a time.
 
     \b
     Examples:
       derive sheet demo --variants 30 --seed 7 --to pdf,moodle
       derive sheet rod_endpoint tugged_spool --out build/two
+      derive sheet demo --jobs 1 --no-cache
 
     \b
     A set file needs a title and its problems; the rest has defaults:
@@ -554,9 +583,38 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
 
     wanted = None if formats is None else defaults.outputs(formats, "--to")
     built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
-                         questions=questions, defaults=defaults.load(), progress=progress)
+                         questions=questions, defaults=defaults.load(), progress=progress, jobs=jobs, cache=cache)
     for path in built:
         click.echo(str(path))
+
+
+@main.command()
+@click.argument("action", type=click.Choice(["info", "clear"]))
+@reports_errors
+def cache(action: str) -> None:
+    """The derivation cache: each problem's derivation, kept for the next build. info prints
+    its folder, entries, size and cap; clear removes every entry.
+
+    An entry is keyed by what the derivation reads (the scene, the asks and the parameters
+    with their ranges, not the question's text, title or source) and by derive's, sympy's
+    and python-flint's versions; an entry that does not match is never used. It lives in the
+    user's cache folder, or $DERIVE_CACHE_DIR, capped at $DERIVE_CACHE_MB megabytes (512):
+    the entries used longest ago go first. `derive sheet --no-cache` neither reads nor writes it.
+
+    \b
+    Examples:
+      derive cache info
+      derive cache clear
+      DERIVE_CACHE_DIR=/tmp/derive-cache derive sheet demo
+    """
+    from derive.publishing import derivation_cache
+
+    if action == "clear":
+        click.echo(f"removed {derivation_cache.clear()} entries from {derivation_cache.folder()}")
+        return
+    shown = derivation_cache.info()
+    click.echo(f"{shown['folder']}: {shown['entries']} entries, {shown['bytes'] / 2**20:.1f} MB of "
+               f"{shown['cap'] / 2**20:.0f} MB")
 
 
 if __name__ == "__main__":

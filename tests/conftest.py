@@ -16,6 +16,9 @@ import pytest
 from lxml import etree
 
 mpmath.mp.dps = 50  # references in the tests are computed at 50 digits
+# Never the user's derivation cache: a folder of the test run's own (fixtures of a module's scope
+# use it), and each test one of its own (derivation_cache_of_its_own).
+os.environ["DERIVE_CACHE_DIR"] = tempfile.mkdtemp(prefix="derive-test-cache-")
 
 ROOT = Path(__file__).resolve().parent.parent
 DERIVE = Path(sys.executable).parent / "derive"
@@ -50,6 +53,13 @@ def copy_library(folder: Path) -> Path:
     library = folder / "library"
     shutil.copytree(ROOT / "problems", library)
     return library
+
+
+@pytest.fixture(autouse=True)
+def derivation_cache_of_its_own(tmp_path_factory, monkeypatch):
+    """Each test its own empty derivation cache, never the user's (derive and the processes it starts
+    read DERIVE_CACHE_DIR): no test finds a derivation another test made."""
+    monkeypatch.setenv("DERIVE_CACHE_DIR", str(tmp_path_factory.mktemp("derivation-cache")))
 
 
 @pytest.fixture

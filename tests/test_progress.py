@@ -26,10 +26,25 @@ def test_the_bar_counts_the_steps_and_leaves_no_trace(capsys):
 
 def test_auto_is_lines_off_a_terminal_and_none_is_silent(tmp_path, capsys):
     assert Reporter("auto").mode == "lines"  # pytest captures stderr: not a terminal
-    done = run_derive("sheet", "demo", "--variants", "1", "--to", "md", "--out", str(tmp_path / "a"))
+    done = run_derive("sheet", "demo", "--variants", "1", "--to", "md", "--out", str(tmp_path / "a"), "--jobs", "1")
     assert done.returncode == 0 and "deriving rod_endpoint (1/3)" in done.stderr
     assert "writing 3 figures as SVG and PNG (pdftocairo) (3/4)" in done.stderr
     assert "writing the worksheet as md (pandoc) (4/4)" in done.stderr
     quiet = run_derive("sheet", "demo", "--variants", "1", "--to", "md", "--out", str(tmp_path / "b"),
                        "--progress", "none")
     assert quiet.returncode == 0 and quiet.stderr == ""
+
+
+def test_a_chain_of_states_says_which_state_it_is_finding(tmp_path):
+    """A long derivation shows its progress (issue 40, item 5): each state of a chain as it is
+    found, among the build's steps; `derive solve` and --progress none stay silent."""
+    done = run_derive("sheet", "skid_to_roll", "--to", "", "--out", str(tmp_path / "a"), "--jobs", "1", "--no-cache",
+                      "--progress", "lines")
+    assert done.returncode == 0, done.stderr
+    lines = done.stderr.splitlines()
+    found = [lines.index(f"  skid_to_roll: finding the state {s} ({n} of 2)") for n, s in ((1, "launched"), (2, "rolling"))]
+    assert lines.index("deriving skid_to_roll (1/1)") < found[0] < found[1] < lines.index("drawing 1 variant of each problem")
+    quiet = run_derive("sheet", "skid_to_roll", "--to", "", "--out", str(tmp_path / "b"), "--no-cache", "--progress", "none")
+    assert quiet.returncode == 0 and quiet.stderr == ""
+    solved = run_derive("solve", "skid_to_roll")
+    assert solved.returncode == 0 and solved.stderr == ""

@@ -37,6 +37,7 @@ from derive.publishing import export, variants, worksheets
 from derive.core import library
 from derive.numbers import numeric
 from derive.solution.answers import Solution
+from derive.bench.course import course
 from derive.bench.engines import engines
 from derive.bench.solution_length import solution_length
 from derive.publishing.progress import Reporter
@@ -479,12 +480,17 @@ def sheet_build(say, with_pdfs: bool) -> None:
 
 #: The sections of `derive bench`, in order (`--only` runs one).
 SECTIONS = ("startup", "derivations", "backends", "answer_key", "set_rate", "sheet", "mechanics_alone", "work_precision",
-            "engines", "solution_length")
+            "engines", "solution_length", "course")
 
 
-def run(say, quick: bool = False, only: str | None = None, note=None, **engine_options) -> dict:
+def run(say, quick: bool = False, only: str | None = None, note=None, variants: int = 30, outputs: str = "",
+        **engine_options) -> dict:
     """Every section (or `only` one) in order, printing through `say`; `note` gets progress
-    lines (default: `say`). Returns the engines section's figures ({} when it did not run)."""
+    lines (default: `say`). Returns the engines section's figures ({} when it did not run), or
+    the course's when only it ran (`variants` and `outputs` are the course's; it runs only when
+    asked: a library of 160 problems takes minutes)."""
+    if only == "course":
+        return course(say, variants=3 if quick else variants, outputs=outputs, limit=8 if quick else None)
     def wanted(section: str) -> bool:
         return only is None or only == section
 

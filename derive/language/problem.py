@@ -12,8 +12,9 @@ message names the file and the field.
 """
 from __future__ import annotations
 
+import json
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field as dataclass_field
 from decimal import ROUND_CEILING, ROUND_FLOOR, Context, Decimal, localcontext
 from functools import cached_property
 from pathlib import Path
@@ -59,6 +60,20 @@ PROBLEM = Keys(id=Key("text", "its id: letters, digits and _", required=True),
                corrections=Key("list", "errors of the notes this problem corrects", items=CORRECTION),
                conditions=Key("list", "what the answers need to make sense; a variant is redrawn until they hold",
                               items=CONDITION))
+TEXT_ONLY = ("question", "title", "topic", "source", "corrections", "difficulty", "tags")  # fields no derivation reads
+
+
+def _canonical(raw):
+    """Parsed YAML as JSON writes it (keys as text; anything else by its repr), for a stable digest.
+
+    >>> json.dumps(_canonical({1: [True, None, 0.5]}))
+    '{"1": [true, null, 0.5]}'
+    """
+    if isinstance(raw, dict):
+        return {str(k): _canonical(v) for k, v in raw.items()}
+    if isinstance(raw, (list, tuple)):
+        return [_canonical(v) for v in raw]
+    return raw if isinstance(raw, (str, int, float, bool, type(None))) else repr(raw)
 
 
 def exact_decimal(value: sp.Expr) -> Decimal:
@@ -221,6 +236,9 @@ class Problem:
     scene_units: dict[sp.Symbol, str]
     conditions: tuple[Condition, ...] = ()
     held_to_range: frozenset[sp.Symbol] = frozenset()  # parameters the file's signs were proven over the ranges of
+    # What a derivation reads of the file: its fields but the text (TEXT_ONLY), as JSON with sorted keys (the
+    # derivation cache's key: derive.publishing.derivation_cache).
+    derivation_source: str = dataclass_field(default="", repr=False, compare=False)
 
     def error(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -517,6 +535,8 @@ def parse(text: str, path: Path) -> Problem:
         scene_units=dict(reader.symbol_units),
         conditions=conditions,
         held_to_range=frozenset(reader.held_to_range),
+        derivation_source=json.dumps(_canonical({k: v for k, v in raw.items() if k not in TEXT_ONLY}), sort_keys=True,
+                                     ensure_ascii=False),
     )
 
 

@@ -10,6 +10,7 @@ A command reports single steps (`report("compiling the PDF")`) and counted tasks
 """
 from __future__ import annotations
 
+import logging
 import sys
 from contextlib import contextmanager
 from typing import Callable, Iterator
@@ -33,6 +34,24 @@ class Reporter:
             self._bar.update(self._task, description=message)
         elif self.mode != "none":
             print(message, file=sys.stderr, flush=True)
+
+    @contextmanager
+    def steps_shown(self) -> Iterator[None]:
+        """While the command runs, derive's INFO log lines are shown as steps (a long derivation's
+        progress: each state of a chain as it is found, derive.solution.state_answers); nothing
+        when silent. Without it (`derive solve`, the API) they go nowhere."""
+        if self.mode == "none":
+            yield
+            return
+        logger, handler = logging.getLogger("derive"), _Shown(self)
+        level = logger.level
+        logger.addHandler(handler)
+        logger.setLevel(logging.INFO)
+        try:
+            yield
+        finally:
+            logger.removeHandler(handler)
+            logger.setLevel(level)
 
     @contextmanager
     def task(self, description: str, total: int) -> Iterator[Callable[[str], None]]:
@@ -65,3 +84,14 @@ class Reporter:
                 bar.update(task, completed=total)
             finally:
                 self._bar = None
+
+
+class _Shown(logging.Handler):
+    """A log record as a step of the Reporter."""
+
+    def __init__(self, report: Reporter):
+        super().__init__(logging.INFO)
+        self.report = report
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.report(f"  {record.getMessage()}")

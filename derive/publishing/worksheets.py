@@ -22,8 +22,8 @@ from typing import Sequence
 import sympy as sp
 
 from derive.text.latex import latex_of, symbol_latex, tex_escape
-from derive.publishing import (answer_keys, canvas, distractors, export, figure, figure_files, limiting_cases, lms, notation,
-                               output_folder, render)
+from derive.publishing import (answer_keys, canvas, deriving, distractors, export, figure, figure_files, limiting_cases, lms,
+                               notation, output_folder, render)
 from derive.text import typesetting
 from derive.core import units
 from derive.solution.answers import Solution
@@ -83,28 +83,27 @@ def _entry(problem_set: ProblemSet, where: str):
         raise InputError(f"{problem_set.path}: {where}: {error}") from None
 
 
-def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Reporter) -> list[ProblemVariants]:
-    """Each problem derived (its answers and checks), then its variants drawn: the derivations
-    are the set's fixed cost, the draws the first step of its cost per variant. The objects alive
-    once the problems are derived are frozen (gc.freeze): the caller unfreezes them."""
-    derived, ids = [], {}
-    with progress.task("deriving", len(problem_set.problems)) as begin:
-        for reference, where in zip(problem_set.problems, problem_set.fields):
-            with _entry(problem_set, where):  # then the problem file and its field
-                problem = load(reference)
-                if problem.id in ids:
-                    raise InputError(f"{problem.path}: id: {problem.id} is also the id of {ids[problem.id]}; "
-                                     "ids in a set must differ")
-                ids[problem.id] = f"{where} ({problem.path})"
-                begin(problem.id)
-                solution = Solution(problem)
-                solution.expressions  # derive once, for every variant
-                solution.checks()
-            derived.append((problem, solution, where))
+def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Reporter, jobs: int = 1,
+             cache: bool = True) -> list[ProblemVariants]:
+    """Each problem derived (its answers, checks and steps: from the derivation cache, else by `jobs`
+    processes), then its variants drawn: the derivations are the set's fixed cost, the draws the
+    first step of its cost per variant. The objects alive once the problems are derived are frozen
+    (gc.freeze): the caller unfreezes them."""
+    problems, ids = [], {}
+    for reference, where in zip(problem_set.problems, problem_set.fields):
+        with _entry(problem_set, where):  # then the problem file and its field
+            problem = load(reference)
+            if problem.id in ids:
+                raise InputError(f"{problem.path}: id: {problem.id} is also the id of {ids[problem.id]}; "
+                                 "ids in a set must differ")
+            ids[problem.id] = f"{where} ({problem.path})"
+        problems.append(problem)
+    derived = deriving.derive(problems, jobs, cache, progress,
+                              where=lambda i: _entry(problem_set, problem_set.fields[i]))
     gc.freeze()  # every full pass of the collector rescanned them: a fifth of the time per variant
     progress(f"drawing {variants} variant{'s' * (variants > 1)} of each problem")
     prepared = []
-    for problem, solution, where in derived:
+    for problem, (solution, _), where in zip(problems, derived, problem_set.fields):
         with _entry(problem_set, where):
             draws = valid_draws(problem, solution, [random.Random(f"{seed}/{problem.id}/{n}")
                                                     for n in range(1, variants + 1)])
@@ -319,11 +318,13 @@ def _write(folder: Path, name: str, text: str) -> Path:
 
 def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None = None, seed: int | None = None,
           out_dir: str | None = None, formats: frozenset[str] | None = None, questions: str | None = None,
-          defaults: Defaults = Defaults(), progress: Reporter = Reporter()) -> list[Path]:
+          defaults: Defaults = Defaults(), progress: Reporter = Reporter(), jobs: int = 1,
+          cache: bool = True) -> list[Path]:
     """Build a set (a set file or its id, problems given by themselves: load_sheet, or a
     ProblemSet: set_of) into its output folder; return the files written. Arguments left None
     take the set file's values (`variants`, `seed`, `outputs`, `questions`), and where it has
-    none, the course defaults'."""
+    none, the course defaults'. The problems are derived by `jobs` processes, each taken from
+    the derivation cache where it holds it (`cache`; derive.publishing.deriving)."""
     problem_set = references if isinstance(references, ProblemSet) else \
         load_sheet([references] if isinstance(references, str) else references, defaults)
     variants = variants or problem_set.variants
@@ -336,7 +337,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         export.require("pdftocairo")  # the figures as images
     with output_folder.claim(Path("build") / problem_set.id if out_dir is None else out_dir) as out:
         try:  # _prepare froze the derivations (alive to the end of the build) out of the collector's passes
-            prepared = _prepare(problem_set, variants, seed, progress)
+            prepared = _prepare(problem_set, variants, seed, progress, jobs, cache)
             header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due,
                       "answer_space": problem_set.answer_space}
             drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants

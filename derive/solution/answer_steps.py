@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derive.core.memo import kept
 from derive.model import inertia
 from derive.core import limits
 from derive.solution.crosschecks import sample_points
@@ -31,6 +32,7 @@ from derive.model.scene import DYNAMIC_KINDS, STATIC_KINDS
 class AnswerSteps:
     """The worked solution's steps of a Solution (a mixin: it reads the Solution's derivations)."""
 
+    @kept
     def steps(self) -> dict[str, list[Step]]:
         """The derivation steps a worked solution shows, by route."""
         with limits.time_limit(f"{self.problem.path}: the worked solution"):

@@ -17,6 +17,7 @@ from functools import cached_property
 import sympy as sp
 from flint import ctx
 
+from derive.core.memo import kept
 from derive.numbers import balls
 from derive.model import composite, directions, inertia
 from derive.model.directions import Sense
@@ -72,7 +73,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
     def derivations(self) -> dict[str, Derivation]:
         return self._regime_derivations(0)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, three regimes at most
+    @kept
     def _regime_derivations(self, index: int) -> dict[str, Derivation]:
         scene = self.regimes[index].scene
         try:
@@ -116,7 +117,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         except Indeterminate as error:
             raise self.problem.error("scene", str(error)) from None
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
+    @kept
     def _exact_period(self, amplitude: sp.Expr, route: str):
         """(period, steps) at an amplitude: the elliptic integral of a pendulum, else twice the time
         between the turning points (derive.mechanics.durations.period; Newton–Euler's motion
@@ -127,7 +128,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             period, steps, _ = self._period_by_energy(amplitude)
             return period, steps
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem
+    @kept
     def _period_by_energy(self, amplitude: sp.Expr):
         coordinate = self.oscillations["lagrange"].coordinate
         if coordinate.kind != "theta":
@@ -221,7 +222,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             return self._contact_expression(q.target, q.detail, derivation, ask.state)
         raise AssertionError(q.kind)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes
+    @kept
     def at_reference(self, route: str):
         """One route's accelerations and forces in the reference configuration, at rest: where the
         bodies are placed and released (every coordinate and velocity zero). With a contact that
@@ -241,7 +242,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         where = self.regime_conditions(route)
         return Solved({u: sp.Piecewise(*((values[u], w) for values, w in zip(pieces, where))) for u in stuck.raw})
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes
+    @kept
     def regime_conditions(self, route: str = "lagrange") -> list:
         """Where each regime holds, in the order of `regimes` (each where those before do not):
         stuck while mu_s >= |f/N| (N > 0 is a sign condition of every problem), then slipping
@@ -301,7 +302,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             return root(2 * along * distance)
         return root(2 * distance / along)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few bodies
+    @kept
     def _release_height(self, body: str, route: str) -> tuple[sp.Expr, tuple[Step, ...]]:
         """Lowest release height (of the center, above its lowest point) that keeps the body on a
         loop: the normal force at the top (this route's dynamics) vanishes at the speed energy
@@ -461,6 +462,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             return float(ball.mid())
         return float(sp.N(value, 30))
 
+    @kept
     def expression(self, name: str) -> sp.Expr:
         """The exact answer, in the parameter symbols, for SI values of the parameters
         (within the time limit of derive.core.limits: a runaway integral is an input error)."""
@@ -471,6 +473,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
                 return answer_signs.magnitude(self.problem, result) if ask.magnitude else result
             return answer_signs.magnitude(self.problem, result, proven=True)
 
+    @kept
     def signed_expression(self, name: str) -> sp.Expr:
         """The answer as the routes give it: a component along its axis, a rotation counter-clockwise
         positive, before `expression` takes the magnitude of a quantity with a direction."""

@@ -14,12 +14,12 @@ sympy.physics.mechanics, and the dimensions of every answer. `CrossChecks` is a 
 """
 from __future__ import annotations
 
-import functools
 import random
 from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.memo import kept
 from derive.model import inertia
 from derive.core import limits, units
 from derive.numbers import numeric
@@ -58,7 +58,7 @@ class Check:
 class CrossChecks:
     """Checks of a Solution's answers by independent routes (mixed into Solution)."""
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem; the checks do not change
+    @kept
     def checks(self) -> list[Check]:
         """Every independent check that applies: routes, parallel axes, dimensions (within the
         time limit of derive.core.limits)."""
@@ -397,7 +397,7 @@ class CrossChecks:
                    "no work.")
         return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work", reading)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, three regimes at most
+    @kept
     def _check_states(self, index: int) -> list[dict[sp.Symbol, sp.Expr]]:
         """The states the routes and the work-energy checks compare in the index-th friction
         regime: motions on its constraints, at sample parameters (the checks are numeric, and each

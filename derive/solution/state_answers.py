@@ -13,12 +13,13 @@ sqrt(3)*sqrt(g)/sqrt(L)
 from __future__ import annotations
 
 import dataclasses
+import logging
 from dataclasses import dataclass
-import functools
 from functools import cached_property
 
 import sympy as sp
 
+from derive.core.memo import kept
 from derive.core import limits
 from derive.mechanics import (durations, friction, grips, impacts, lagrange, moves, newton_euler, reaching, states as state_motion)
 from derive.mechanics.derivation import Solved, Step
@@ -33,6 +34,8 @@ from derive.text.prose import Sentence, capital
 from derive.model.scene import RATE_KINDS, Quantity
 from derive.solution.state_conditions import StateConditions
 from derive.solution.state_events import StateEvents, in_place
+
+PROGRESS = logging.getLogger(__name__)  # each state of a chain as it is found (derive.publishing.progress shows it)
 from derive.solution.start_regimes import Start, StartRegimes, with_start_step
 
 
@@ -76,7 +79,8 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
 
         def resolve(expr: sp.Expr) -> sp.Expr:  # |L0 - d|, |sin(theta0)|: as the parameter ranges have them
             return self._within_ranges(expr, absolute=True) if expr.has(sp.Abs, sp.Piecewise) else expr
-        for name, state in self.scene.states.items():
+        for number, (name, state) in enumerate(self.scene.states.items(), start=1):
+            PROGRESS.info("%s: finding the state %s (%d of %d)", self.problem.id, name, number, len(self.scene.states))
             try:
                 joints[name] = joints[state.start] if state.start else self._root_joints(state, result)
                 if state.event is None and not state.rates and not self.grips_in(name):
@@ -328,7 +332,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         state it starts from where the state is a grip (the part slipping on the way), else its own."""
         return self.derivations_in(self.scene.states[name].start if self.grips_in(name) else name)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
+    @kept
     def _derivations_with(self, joints: tuple) -> dict:
         if not joints:
             return self.derivations
@@ -375,7 +379,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             Sentence(("Along the way the equations of motion, with the rates energy gives, say how large it is at "
                       f"each point: {ends} where it first falls to zero.",))))
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, two routes, a few states
+    @kept
     def in_state(self, route: str, name: str | None) -> Solved:
         """One route's accelerations and forces in a named state (None: the placement at rest)."""
         if name is None:
@@ -452,7 +456,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             return values[coords.of(q.target, q.detail).u]
         return root(values[coords.of(q.target, "x").u] ** 2 + values[coords.of(q.target, "y").u] ** 2)
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few states
+    @kept
     def _duration(self, name: str) -> tuple[sp.Expr, Step]:
         reached = self.states[name]
         if reached.took is not None:

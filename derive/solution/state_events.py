@@ -15,10 +15,10 @@ the chain's next motion starts (derive.solution.state_answers).
 """
 from __future__ import annotations
 
-import functools
 
 import sympy as sp
 
+from derive.core.memo import kept
 from derive.mechanics import impacts, impulses, moves, transfers, reaching, states as state_motion
 from derive.mechanics.derivation import Step
 from derive.core.tidying import tidy
@@ -50,7 +50,7 @@ class StateEvents:
                     from None
             raise state_motion.StateLimit(str(error)) from None
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one Solution per problem, a few impacts
+    @kept
     def _impact_by(self, name: str, route: str) -> impacts.Impact:
         """The impact of the state `name` by `route` (Lagrange's is the chain's own)."""
         if route == "lagrange":
