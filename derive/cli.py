@@ -9,9 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
-import math
 import os
-import re
 import signal
 import sys
 import threading
@@ -23,16 +21,9 @@ from derive.core.library import DISTRIBUTION, version
 from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
 from derive.core.errors import EngineLimit, InputError, MissingTool, Terminated
 
+from derive.cli_options import BadInput, FiniteRange, Seconds, check_environment, parse_assignments
+
 FORMATS = click.Choice(["text", "latex", "json"])
-
-
-class BadInput(click.ClickException):
-    """Bad input from a file or the command line: one line, exit status 2."""
-
-    exit_code = 2
-
-    def show(self, file=None) -> None:
-        click.echo(f"derive: error: {self.format_message()}", err=True)
 
 
 def progress_option(command):
@@ -139,51 +130,6 @@ def _internal(error: Exception):
     sys.exit(1)
 
 
-class Seconds(click.ParamType):
-    """A time limit in seconds: 0 or off for none, else a finite number up to limits.MAX_SECONDS."""
-
-    name = "seconds"
-
-    def convert(self, value, param, ctx) -> float:
-        from derive.core import limits  # light: no sympy
-
-        try:
-            return limits.parse(str(value), f"--time-limit {value}")
-        except InputError as error:
-            raise BadInput(str(error)) from None
-
-
-class FiniteRange(click.FloatRange):
-    """click's FloatRange, which lets nan and inf through its bounds' comparisons, without them."""
-
-    def convert(self, value, param, ctx) -> float:
-        number = super().convert(value, param, ctx)
-        if not math.isfinite(number):
-            self.fail(f"{value!r} is not a finite number", param, ctx)
-        return number
-
-
-def _check_environment() -> None:
-    """Refuse what the environment sets wrongly for a library derive imports: an empty or malformed
-    SOURCE_DATE_EPOCH stops numpy.f2py's import (scipy's integrators import it) with a ValueError.
-    derive's builds are reproducible without it (its LaTeX runs set their own)."""
-    epoch = os.environ.get("SOURCE_DATE_EPOCH")
-    if epoch is not None and not re.fullmatch(r"[0-9]+", epoch):
-        raise BadInput(f"SOURCE_DATE_EPOCH={epoch!r}: expected a whole number of seconds since 1970; derive's builds "
-                       "are the same without it: unset it (unset SOURCE_DATE_EPOCH)")
-
-
-def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:
-    """`--set m=2 --set "M=200 g"` as {"m": "2", "M": "200 g"}."""
-    result = {}
-    for text in assignments:
-        name, sep, value = text.partition("=")
-        if not sep or not name.strip() or not value.strip():
-            raise BadInput(f"--set {text}: expected NAME=VALUE, e.g. --set m=2 or --set \"m=200 g\"")
-        result[name.strip()] = value.strip()
-    return result
-
-
 def _show_version(ctx: click.Context, _param, shown: bool) -> None:
     """`derive --version`: the version importlib.metadata gives for the distribution."""
     if shown:
@@ -253,7 +199,7 @@ def main(time_limit: float | None) -> None:
       derive check
       derive bench --quick
     """
-    _check_environment()
+    check_environment()
     if time_limit is not None:
         from derive.core import limits  # light: no sympy
 

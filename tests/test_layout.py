@@ -24,7 +24,7 @@ LAYERS = (
     ("publishing",),              # sheets, keys, LMS exports, figures, reports
     ("bench",),                   # the benchmarks
 )
-TOP = ("derive", "derive.__main__", "derive.api", "derive.audit", "derive.cli")
+TOP = ("derive", "derive.__main__", "derive.api", "derive.audit", "derive.cli", "derive.cli_options")
 MAX_LINES = 600
 
 
