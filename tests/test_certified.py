@@ -20,8 +20,7 @@ from derive.language import problem
 from derive.publishing import variants
 from derive.solution.answers import Solution
 
-TEXTBOOK = Path(__file__).parent / "textbook"
-PROBLEMS = [path.stem for path in library.problem_files()] + [str(path) for path in sorted(TEXTBOOK.glob("*.yaml"))]
+PROBLEMS = [path.stem for path in library.problem_files()]
 
 
 @functools.lru_cache(maxsize=None)

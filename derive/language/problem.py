@@ -25,7 +25,7 @@ from derive.core import expr, library, units
 from derive.numbers import numeric
 from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT, TITLE_LIMIT, TOPIC_LIMIT)
 from derive.core.errors import EngineLimit, ProblemError
-from derive.language import ask_options
+from derive.language import ask_options, labels
 from derive.language.reader import Loader, Reader
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
@@ -34,7 +34,8 @@ from derive.language.scene_file import read_scene
 from derive.core.spelling import did_you_mean, no_such
 
 DEFAULT_SIG_FIGS = 3
-TOP_LEVEL = {"id", "title", "topic", "source", "parameters", "scene", "ask", "question", "corrections", "conditions"}
+TOP_LEVEL = {"id", "title", "topic", "source", "difficulty", "tags", "parameters", "scene", "ask", "question", "corrections",
+             "conditions"}
 
 
 def exact_decimal(value: sp.Expr) -> Decimal:
@@ -196,6 +197,8 @@ class Problem:
     scene_units: dict[sp.Symbol, str]
     conditions: tuple[Condition, ...] = ()
     held_to_range: frozenset[sp.Symbol] = frozenset()  # parameters the file's signs were proven over the ranges of
+    difficulty: str = ""  # derive.language.labels: "" where the file gives none
+    tags: tuple[str, ...] = ()
 
     def error(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -479,6 +482,11 @@ def parse(text: str, path: Path) -> Problem:
         {key: reader.text(text, f"corrections[{i}].{key}", CORRECTION_LIMIT) for key, text in
          reader.mapping(c, f"corrections[{i}]", required=("where", "notes", "derived"), optional=("proof",)).items()}
         for i, c in enumerate(corrections))
+    try:
+        difficulty = labels.read_difficulty(raw["difficulty"], "difficulty") if "difficulty" in raw else ""
+        tags = labels.read_tags(raw["tags"], "tags") if "tags" in raw else ()
+    except ValueError as error:
+        raise ProblemError(f"{path}: {error}") from None
     return Problem(
         id=problem_id,
         title=reader.text(raw["title"], "title", TITLE_LIMIT),
@@ -493,6 +501,8 @@ def parse(text: str, path: Path) -> Problem:
         scene_units=dict(reader.symbol_units),
         conditions=conditions,
         held_to_range=frozenset(reader.held_to_range),
+        difficulty=difficulty,
+        tags=tags,
     )
 
 
