@@ -16,6 +16,7 @@ import signal
 import sys
 import threading
 import traceback
+from pathlib import Path
 
 import click
 
@@ -369,6 +370,30 @@ def list_problems(topic: str | None, search: str | None, difficulty: str | None,
     widths = [max(len(r[k]) for r in rows) for k in (0, 1, 2)]  # aligned columns, the title last
     for row in rows:
         click.echo("  ".join(f"{cell:<{width}}" for cell, width in zip(row, widths)) + f"  {row[3]}")
+
+
+@main.command()
+@click.option("--out", type=click.Path(dir_okay=False, path_type=Path), default=Path("build/catalogue.html"),
+              show_default=True, help="The HTML file to write (replaced whole, or left as it was on an error).")
+@click.option("--figures/--no-figures", default=True, show_default=True,
+              help="Draw each problem's figure (TeX and pdftocairo, about a minute for the library).")
+@reports_errors
+def catalogue(out: Path, figures: bool) -> None:
+    """Write the library as one self-contained HTML page, for choosing a week's set: each
+    problem's title, topic, difficulty, tags, source, statement, figure, and what it gives and asks.
+
+    \b
+    Examples:
+      derive catalogue
+      derive catalogue --out ~/public_html/problems.html --no-figures
+    """
+    from derive.core import library
+    from derive.language import problem
+    from derive.publishing import catalogue as pages
+
+    entries = pages.entries([problem.load(str(path)) for path in library.problem_files()], figures)
+    pages.write(out, pages.page(entries, "The derive problem library", version()))
+    click.echo(f"{out}: {len(entries)} problems")
 
 
 @main.command()
