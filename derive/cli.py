@@ -14,12 +14,14 @@ import signal
 import sys
 import threading
 import traceback
+from pathlib import Path
 
 import click
 
 from derive.core.library import DISTRIBUTION, version
 from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
 from derive.core.errors import EngineLimit, InputError, MissingTool, Terminated
+from derive.language import labels
 
 from derive.cli_options import BadInput, FiniteRange, Seconds, check_environment, parse_assignments
 
@@ -299,17 +301,22 @@ def inertia(shape: str, axis: str | None, about: str | None, density: str | None
 @main.command(name="list")
 @click.option("--topic", default=None, help="Only problems of this topic.")
 @click.option("--search", default=None, metavar="WORDS",
-              help="Only problems whose id, title, question or source holds every one of these words "
+              help="Only problems whose id, title, question, source or tags hold every one of these words "
                    "(any case; a word of four letters or more also finds longer ones: pulley finds pulleys).")
+@click.option("--difficulty", type=click.Choice(labels.DIFFICULTIES), default=None,
+              help="Only problems of this difficulty.")
+@click.option("--tag", "tags", multiple=True, type=click.Choice(labels.TAGS), metavar="TAG",
+              help=f"Only problems with this tag (repeat for several: all of them). Tags: {', '.join(labels.TAGS)}.")
 @reports_errors
-def list_problems(topic: str | None, search: str | None) -> None:
-    """List the problems of the library: id, topic and title.
+def list_problems(topic: str | None, search: str | None, difficulty: str | None, tags: tuple[str, ...]) -> None:
+    """List the problems of the library: id, topic, difficulty and title.
 
     \b
     Examples:
       derive list --topic rolling
       derive list --search "wrapped disk"
-      derive list --topic rolling --search loop
+      derive list --topic rolling --search yo-yo
+      derive list --difficulty easy --tag pulley
     """
     from derive.core import library
     from derive.language import problem
@@ -317,14 +324,41 @@ def list_problems(topic: str | None, search: str | None) -> None:
     rows = []
     for path in library.problem_files():
         p = problem.load(str(path))
-        if (topic is None or p.topic == topic) and library.matches(search or "", p.id, p.title, p.question, p.source):
-            rows.append((p.id, p.topic, p.title))
+        if (topic is None or p.topic == topic) and (difficulty is None or p.difficulty == difficulty) \
+                and set(tags) <= set(p.tags) \
+                and library.matches(search or "", p.id, p.title, p.question, p.source, *p.tags):
+            rows.append((p.id, p.topic, p.difficulty or "-", p.title))
     if not rows:
-        asked = " and ".join(x for x in (topic and f"of topic {topic!r}", search and f"matching {search!r}") if x)
+        asked = " and ".join(x for x in (topic and f"of topic {topic!r}", difficulty and f"of difficulty {difficulty!r}",
+                                         tags and f"tagged {', '.join(tags)}", search and f"matching {search!r}") if x)
         raise BadInput(f"no problems {asked}")
-    widths = [max(len(r[k]) for r in rows) for k in (0, 1)]  # aligned columns, the title last
-    for problem_id, problem_topic, title in rows:
-        click.echo(f"{problem_id:<{widths[0]}}  {problem_topic:<{widths[1]}}  {title}")
+    widths = [max(len(r[k]) for r in rows) for k in (0, 1, 2)]  # aligned columns, the title last
+    for row in rows:
+        click.echo("  ".join(f"{cell:<{width}}" for cell, width in zip(row, widths)) + f"  {row[3]}")
+
+
+@main.command()
+@click.option("--out", type=click.Path(dir_okay=False, path_type=Path), default=Path("build/catalogue.html"),
+              show_default=True, help="The HTML file to write (replaced whole, or left as it was on an error).")
+@click.option("--figures/--no-figures", default=True, show_default=True,
+              help="Draw each problem's figure (TeX and pdftocairo, about a minute for the library).")
+@reports_errors
+def catalogue(out: Path, figures: bool) -> None:
+    """Write the library as one self-contained HTML page, for choosing a week's set: each
+    problem's title, topic, difficulty, tags, source, statement, figure, and what it gives and asks.
+
+    \b
+    Examples:
+      derive catalogue
+      derive catalogue --out ~/public_html/problems.html --no-figures
+    """
+    from derive.core import library
+    from derive.language import problem
+    from derive.publishing import catalogue as pages
+
+    entries = pages.entries([problem.load(str(path)) for path in library.problem_files()], figures)
+    pages.write(out, pages.page(entries, "The derive problem library", version()))
+    click.echo(f"{out}: {len(entries)} problems")
 
 
 @main.command()

@@ -32,6 +32,39 @@ def run_derive(*args: str, library: Path | None = None, cwd: Path = ROOT, env: d
     return subprocess.run([str(DERIVE), *args], capture_output=True, text=True, cwd=cwd, timeout=600, env=env)
 
 
+#: The sources of the lecture notes' problems; every other library problem is a textbook setup.
+NOTES = ("lecture notes", "beyond the notes")
+
+
+def _cites_a_book(path: Path) -> bool:
+    import yaml
+
+    return not str(yaml.safe_load(path.read_text()).get("source", "")).startswith(NOTES)
+
+
+def textbook_files() -> list[Path]:
+    """The textbook setups (tests/test_textbook.py): library problems whose source is a book, and
+    those kept in tests/textbook."""
+    from derive.core import library
+
+    return [p for p in library.problem_files() if _cites_a_book(p)] + sorted((ROOT / "tests" / "textbook").glob("*.yaml"))
+
+
+def notes_files() -> list[Path]:
+    """The library problems of the lecture notes (their `source` is the notes)."""
+    from derive.core import library
+
+    return [p for p in library.problem_files() if not _cites_a_book(p)]
+
+
+def textbook(stem: str) -> Path:
+    """The file of a textbook setup (tests/test_textbook.py checks each against its book's closed
+    form): a library problem, problems/TOPIC/STEM.yaml, or one kept in tests/textbook."""
+    found = sorted(ROOT.glob(f"problems/*/{stem}.yaml")) + sorted(ROOT.glob(f"tests/textbook/{stem}.yaml"))
+    assert len(found) == 1, f"no single textbook file {stem}.yaml: {found}"
+    return found[0]
+
+
 def write_problem(folder: Path, text: str) -> Path:
     """A problem file with `text`, in `folder`."""
     path = folder / "problem.yaml"

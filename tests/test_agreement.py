@@ -1,11 +1,11 @@
 """derive.numbers.agreement and the routes check built on it: cheap exact proofs, balls where those fail,
 and a route made wrong (by 1e-20, in a regime the ranges never reach) still caught."""
-from pathlib import Path
 
 import pytest
 import sympy as sp
 from flint import arb, ctx
 
+from conftest import textbook
 from derive.numbers import agreement
 from derive.publishing import report
 from derive.numbers.agreement import agree
@@ -14,7 +14,6 @@ from derive.solution.crosschecks import ROUTES, CheckFailure
 from derive.mechanics.derivation import Derivation
 from derive.language.problem import load
 
-TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 x, y, theta = sp.symbols("x y theta", positive=True)
 TINY = sp.Rational(1, 10**20)
 
@@ -71,7 +70,7 @@ def test_the_routes_check_catches_a_wrong_answer(monkeypatch):
 
 def test_the_routes_check_catches_a_wrong_regime_the_ranges_never_reach(monkeypatch):
     """The block slips in every variant of the file; its stuck case made wrong is still caught."""
-    path = TEXTBOOK / "block_incline_kinetic.yaml"
+    path = textbook("block_incline_kinetic")
     assert Solution(load(path)).checks()  # as derived, the routes agree
 
     def wrong_first_case(value):

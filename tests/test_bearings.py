@@ -2,13 +2,12 @@
 agree on every component for every shape; a shaft off the center of mass and the weight load the
 bearings as kinematics and statics say; a wrong route is caught; what is not modelled is refused;
 a planar problem never builds a 3D frame."""
-from pathlib import Path
 
 import pytest
 import sympy as sp
 from sympy.physics.vector import ReferenceFrame
 
-from conftest import refused, write_problem
+from conftest import refused, textbook, write_problem
 from derive.publishing import export, figure, render, report
 from derive.model import inertia
 from derive.solution.answers import Solution
@@ -18,7 +17,6 @@ from derive.language.problem import load
 from derive.model.solid_scene import own_axis
 
 m, w, a, psi, s, e, d, g = sp.symbols("m omega alpha psi s e d g", positive=True)
-TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 #: Sizes in proportion, so that no shape is accidentally symmetric (a box of three sides, a cone).
 SIZES = {"length": s, "radius": s, "height": 3 * s, "inner_radius": s, "outer_radius": 2 * s,
          "side_a": s, "side_b": 2 * s, "side_c": 3 * s}
@@ -117,7 +115,7 @@ def test_an_inclined_shaft_puts_the_weight_along_it_on_the_thrust_bearing(tmp_pa
 
 
 def test_a_wrong_bearing_force_is_caught(monkeypatch):
-    problem = load(TEXTBOOK / "rotor_static_imbalance.yaml")
+    problem = load(textbook("rotor_static_imbalance"))
     right = bearings.motion
 
     def wrong(*args):
@@ -216,7 +214,7 @@ def test_the_figure_shows_the_bearings_the_weight_and_the_center_off_the_shaft(t
     """Under gravity the shaft is drawn level with the weight, (M + m) g, below the center; the
     bearings A and B sit on the shaft; a center of mass off the shaft is joined to it by a dashed
     line; every figure compiles."""
-    rotor = figure.tikz(load(TEXTBOOK / "rotor_static_imbalance.yaml"))
+    rotor = figure.tikz(load(textbook("rotor_static_imbalance")))
     assert "\\draw[axis, ->] (-2,0) -- (2.2,0);" in rotor and "$\\left(M + m\\right)\\,g$" in rotor
     assert "{$A$}" in rotor and "{$B$}" in rotor
     offset = load(write_problem(tmp_path, ROD.replace("BEARINGS", "bearings: {rate: omega, tilt: alpha, apart: L, "
@@ -224,7 +222,7 @@ def test_the_figure_shows_the_bearings_the_weight_and_the_center_off_the_shaft(t
                                 .replace("ASK", "rod.bearings.A.force.x").replace("UNIT", "N")))
     drawn = figure.tikz(offset)
     assert "\\draw[thin, dashed] (0,0) -- " in drawn and "\\vec L" in drawn and "[force]" not in drawn
-    assert "{$0$}" not in figure.tikz(load(TEXTBOOK / "shaft_dynamic_imbalance.yaml"))  # no tilt, no angle
+    assert "{$0$}" not in figure.tikz(load(textbook("shaft_dynamic_imbalance")))  # no tilt, no angle
     tex = tmp_path / "figures.tex"
     tex.write_text(render.render("preamble.tex.j2") + "\\begin{document}\n" + "\n\n".join((rotor, drawn))
                    + "\n\\end{document}\n", encoding="utf-8")

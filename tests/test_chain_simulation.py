@@ -7,22 +7,18 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import notes_files, run_derive, textbook, textbook_files
 from derive.checks import chain_simulation
-from derive.core import library
 from derive.solution.answers import Solution
 from derive.mechanics import states
 from derive.language.problem import load
-
-TEXTBOOK = Path(__file__).parent / "textbook" / "states"
-
 
 def _chains(paths) -> list[str]:
     return [str(p) for p in paths if "states:" in p.read_text()]
 
 
-LIBRARY_CHAINS = _chains(library.problem_files())
-TEXTBOOK_CHAINS = _chains(sorted(TEXTBOOK.glob("*.yaml")))
+LIBRARY_CHAINS = _chains(notes_files())  # the lecture notes' problems
+TEXTBOOK_CHAINS = _chains(textbook_files())
 
 
 def test_the_library_has_chains():
@@ -76,7 +72,7 @@ def test_a_closed_form_state_one_percent_off_is_caught_and_the_next_segment_star
     """block_up_incline: sent, up to its highest point, back down. Its highest point 1 % off is
     caught there; the motion back starts from the simulated highest point, not from the wrong
     closed form, and agrees with the (right) closed form of the state back."""
-    solution = Solution(load(str(TEXTBOOK / "block_up_incline.yaml")))
+    solution = Solution(load(str(textbook("block_up_incline"))))
     reached = solution.states["highest"]
     x = solution.coordinates.of("block", "x").q
     solution._chain.reached["highest"] = dataclasses.replace(
@@ -212,7 +208,7 @@ def test_check_seeds_simulates_the_chain_at_every_draw(monkeypatch):
 
 
 def test_a_link_the_engine_cannot_simulate_is_named_with_every_state_and_answer_after_it(monkeypatch):
-    solution = Solution(load("tests/textbook/states/rod_ballistic_pendulum.yaml"))
+    solution = Solution(load(str(textbook("rod_ballistic_pendulum"))))
     solution.states  # the closed forms
 
     def cannot(*args):
@@ -233,7 +229,7 @@ def test_an_acceleration_asked_in_a_state_is_simulated_there_not_at_release(name
     and 0) and failed; now the chain simulation reads them in their states, and the check passes."""
     from derive import audit
 
-    (row,) = audit.audit([str(TEXTBOOK / f"{name}.yaml")])
+    (row,) = audit.audit([str(textbook(name))])
     assert row.passed, row.failure
     asked = "alpha" if name == "rod_swings_down" else "a"
     assert asked in row.simulation.removeprefix("ok: ").split(", ")

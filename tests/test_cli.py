@@ -102,10 +102,11 @@ def test_inertia_text_is_drawn_math_not_latex_source(derive):
 def test_list(derive):
     done = derive("list")
     assert done.returncode == 0
-    titles = {line.index(title) for line in done.stdout.splitlines() for title in [line.split(None, 2)[2]]}
+    titles = {line.index(title) for line in done.stdout.splitlines() for title in [line.split(None, 3)[3]]}
     assert len(titles) == 1  # the titles in one column
     ids = [line.split()[0] for line in done.stdout.splitlines()]
-    assert {"rod_midpoint", "rod_endpoint", "string_wrapped_disk", "compound_pendulum"} <= set(ids)
+    assert {"rod_midpoint", "rod_endpoint", "string_wrapped_disk", "compound_pendulum", "yoyo_falls"} <= set(ids)
+    assert len(ids) == len(set(ids)) >= 150  # the lecture notes' problems and the textbook setups, each id once
     torque = derive("list", "--topic", "torque").stdout
     assert "string_wrapped_disk" in torque and "rod_midpoint" not in torque
 
@@ -412,6 +413,23 @@ def test_list_searches_the_library_by_words_and_topic():
         == ["loop_the_loop", "loop_the_loop_ball"]
     pulled = [line.split()[0] for line in run_derive("list", "--search", "pulle").stdout.splitlines()]
     assert "tugged_spool" in pulled  # four letters or more: the start of a word ("pulled")
-    assert run_derive("list", "--search", "yo").returncode == 2  # under four: whole words only ("you" is no match)
+    yo = [line.split()[0] for line in run_derive("list", "--search", "yo").stdout.splitlines()]
+    assert yo and all(i.startswith("yoyo") for i in yo)  # under four: whole words only (yo-yo, not "you")
+    yoyos = [line.split()[0] for line in run_derive("list", "--topic", "rolling", "--search", "yo-yo").stdout.splitlines()]
+    assert "yoyo_pulled_horizontal" in yoyos and all(i.startswith("yoyo") for i in yoyos)
     none = run_derive("list", "--topic", "torque", "--search", "zzz")
     assert none.returncode == 2 and none.stderr.strip() == "derive: error: no problems of topic 'torque' and matching 'zzz'"
+
+
+def test_list_filters_by_difficulty_and_tags():
+    easy_pulleys = run_derive("list", "--difficulty", "easy", "--tag", "pulley")
+    rows = [line.split() for line in easy_pulleys.stdout.splitlines()]
+    assert easy_pulleys.returncode == 0 and rows and all(row[2] == "easy" for row in rows), easy_pulleys.stdout
+    assert "atwood_smooth" in [row[0] for row in rows] and "atwood_massive_pulley" not in [row[0] for row in rows]
+    both = [line.split()[0] for line in run_derive("list", "--tag", "rolling", "--tag", "yo-yo").stdout.splitlines()]
+    assert both and "yoyo_falls" not in both  # every tag given: a falling yo-yo does not roll on a floor
+    for args in (["--difficulty", "tricky"], ["--tag", "pully"]):
+        bad = run_derive("list", *args)
+        assert bad.returncode == 2 and "Invalid value" in bad.stderr, bad.stderr
+    none = run_derive("list", "--topic", "inertia", "--tag", "yo-yo")
+    assert none.returncode == 2 and none.stderr.strip() == "derive: error: no problems of topic 'inertia' and tagged yo-yo"

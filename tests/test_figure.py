@@ -10,7 +10,7 @@ import sys
 import pytest
 import sympy as sp
 
-from conftest import ROOT, copy_library, run_derive
+from conftest import ROOT, copy_library, run_derive, textbook
 from derive.text.latex import tex_escape
 from derive.publishing import export, figure, render, worksheets
 from derive.core import library
@@ -569,6 +569,6 @@ def test_the_handouts_checks_read_as_sentences_with_units_in_math(tmp_path):
 def test_a_puck_striking_a_rod_across_its_path_is_drawn_to_scale():
     """The struck rod lies at its angle (here along y, across the puck's path) and a round body
     that strikes is a circle of its radius, not a dot."""
-    tikz = figure.tikz(problem.load(ROOT / "tests/textbook/states/disk_strikes_free_rod.yaml"))
+    tikz = figure.tikz(problem.load(textbook("disk_strikes_free_rod")))
     assert "(0,-2.39) -- (0,2.39);" in tikz  # the rod, vertical
     assert "\\draw[body] (-1.59,2.39) circle (0.19);" in tikz  # the puck, its radius to the rod's scale

@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
+from conftest import textbook
 from derive.publishing import export, figure, render
 from derive.solution.answers import Solution
 from derive.publishing.figure.canvas import _Figure
@@ -18,9 +19,8 @@ from derive.publishing.figure.oblique import page
 from derive.language.problem import load
 
 ROOT = Path(__file__).resolve().parent.parent
-TEXTBOOK = ROOT / "tests" / "textbook"
 SOLIDS = ["rigid_body_L", "top_precession", "top_precession_exact"] + [
-    TEXTBOOK / f"{name}.yaml" for name in (
+    textbook(name) for name in (
         "rod_tilted_on_shaft", "disk_tilted_on_shaft", "dumbbell_tilted_shaft", "rotor_static_imbalance",
         "shaft_dynamic_imbalance", "gyroscope_wheel", "sleeping_cone", "top_two_precessions", "coin_rolls_in_circle",
         "disk_rolls_upright", "hoop_rolls_upright", "earth_free_precession", "football_free_precession",
@@ -51,7 +51,7 @@ def at_middle(problem, vector) -> tuple[float, ...]:
 def test_a_tilted_rod_on_bearings_draws_l_across_the_rod_at_the_derived_angle_from_omega():
     """Kleppner & Kolenkow, ch. 7, the rotating skew rod: L is normal to the rod, at pi/2 - alpha
     from omega; the drawn arrows make the derived angle (acos(sin(alpha))), omega up the shaft."""
-    for source in ("rigid_body_L", TEXTBOOK / "rod_tilted_on_shaft.yaml"):
+    for source in ("rigid_body_L", textbook("rod_tilted_on_shaft")):
         problem = load(source)
         drawn = arrows(figure.tikz(problem))
         omega, momentum = drawn[r"$\vec\omega$"], drawn[r"$\vec L$"]
@@ -72,7 +72,7 @@ def test_bearings_arrows_are_the_derived_l_and_omega_projected(name):
     """L by the Lagrange route (the figure draws Newton–Euler's), turned as the figure turns the instant
     (about the shaft to bring L into the page; under gravity the shaft to the right, N.y up, N.x into
     the page), projected, against the drawn arrow; omega along the shaft."""
-    problem = load(TEXTBOOK / f"{name}.yaml")
+    problem = load(textbook(name))
     body = next(iter(problem.scene.bearings))
     momentum = at_middle(problem, Solution(problem).bearing_motion(body, "lagrange")["angular_momentum"])
     if problem.scene.gravity is not None:  # a level shaft
@@ -126,7 +126,7 @@ def test_a_tops_omega_and_l_are_the_steady_precessions_own(name, tmp_path):
         (tmp_path / "slow_top.yaml").write_text(SLOW_TOP)
         problem = load(tmp_path / "slow_top.yaml")
     else:
-        problem = load(TEXTBOOK / f"{name}.yaml")
+        problem = load(textbook(name))
     solution = Solution(problem)
     rate = middle(problem, solution.expression("Omega" if name == "gyroscope_wheel" else "slow"))
     point = next(iter(problem.scene.pivot_points.values()))
@@ -193,7 +193,7 @@ question: A coin rolls on a circle of {{ R }}.
 
 
 def test_an_upright_coin_spins_about_its_axle_into_the_page():
-    problem = load(TEXTBOOK / "disk_rolls_upright.yaml")
+    problem = load(textbook("disk_rolls_upright"))
     drawn = arrows(figure.tikz(problem))
     omega, momentum = drawn[r"$\vec\omega$"], drawn[r"$\vec L$"]
     assert degrees(omega, page((0, 1, 0))) < 0.5 and degrees(momentum, page((0, 1, 0))) < 0.5  # rolling to +x
@@ -202,7 +202,7 @@ def test_an_upright_coin_spins_about_its_axle_into_the_page():
 
 def test_a_thrown_plates_arrows_make_the_derived_angles_with_its_axis():
     """Taylor §10.8: L up the page, omega and the axis at the derived angles from it, omega beyond L."""
-    problem = load(TEXTBOOK / "thrown_plate_wobble.yaml")
+    problem = load(textbook("thrown_plate_wobble"))
     picture = figure.tikz(problem)
     drawn = arrows(picture)
     axis = re.search(r"\\draw\[axis\] \(([-\d.]+),([-\d.]+)\) -- \(([-\d.]+),([-\d.]+)\)", picture).groups()
@@ -241,7 +241,7 @@ def test_omega_and_l_close_on_the_page_are_labelled_on_their_far_sides(name):
     own arrow on the side away from the other (omega's once sat on L's line, among the spin's and the
     body axes' labels). The side is read from the label's anchor: a node anchored at its north sits
     below the point."""
-    problem = load(TEXTBOOK / f"{name}.yaml") if name == "gyroscope_wheel" else load(name)
+    problem = load(textbook(name)) if name == "gyroscope_wheel" else load(name)
     drawn = figure.tikz(problem)
     runs = arrows(drawn)
     omega, momentum = runs[r"$\vec\omega$"], runs[r"$\vec L$"]

@@ -12,7 +12,7 @@ import sys
 
 import pytest
 
-from conftest import ROOT, run_derive, write_problem
+from conftest import ROOT, run_derive, textbook, write_problem
 from derive.text.latex import latex_of, tex_escape
 from derive.language import problem
 from derive.publishing import variants, worksheets
@@ -20,9 +20,8 @@ from derive.solution.answers import Solution
 from derive.publishing.figure.free_body import free_bodies
 from test_library_sheet import _overfull
 
-TEXTBOOK = ROOT / "tests" / "textbook"
-PROBLEMS = {"string_wrapped_disk": "string_wrapped_disk", "atwood": str(TEXTBOOK / "atwood_massive_pulley.yaml"),
-            "ladder": str(TEXTBOOK / "ladder_statics.yaml"), "rolling_incline": "rolling_incline"}
+PROBLEMS = {"string_wrapped_disk": "string_wrapped_disk", "atwood": str(textbook("atwood_massive_pulley")),
+            "ladder": str(textbook("ladder_statics")), "rolling_incline": "rolling_incline"}
 ARROW = re.compile(r"^\\draw\[force\] \((-?[\d.]+),(-?[\d.]+)\) -- \((-?[\d.]+),(-?[\d.]+)\);$", re.M)
 TOLERANCE = 0.006  # cm: coordinates are written to 0.01 cm
 

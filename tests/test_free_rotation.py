@@ -10,7 +10,7 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from conftest import refused
+from conftest import refused, textbook
 from derive.publishing import distractors, figure, report
 from derive.language import problem
 from derive.checks import simulate_solid
@@ -19,7 +19,6 @@ from derive.solution.crosschecks import CheckFailure
 from derive.mechanics import free_rotation
 
 I1, I2, I3, w3, wt, W = sp.symbols("I_1 I_2 I_3 omega_3 omega_t W", positive=True)
-TEXTBOOK = "tests/textbook/"
 
 
 @pytest.mark.parametrize("detail", free_rotation.SYMMETRIC)
@@ -45,14 +44,14 @@ def test_the_earth_wobbles_in_about_300_days():
     # Taylor §10.8: (lambda3 - lambda1)/lambda1 = 0.00327 for the Earth; the period 2 pi/Omega_b is
     # then 1/0.00327 days, about 306 (the observed Chandler wobble, 430 days, is slower: the Earth is not rigid)
     day = 2 * math.pi / 7.29e-5
-    result = report.solve(problem.load(TEXTBOOK + "earth_free_precession.yaml"),
+    result = report.solve(problem.load(textbook("earth_free_precession")),
                           {"I1": "8.0e37", "I3": "8.02616e37", "omega": "7.29e-5"}, 6)
     period = 2 * math.pi / float(result["answers"]["Omega"]["value"]) / day
     assert 300 < period < 310 and math.isclose(period, 1 / 0.00327, rel_tol=1e-4)
 
 
 def test_feynman_s_plate_wobbles_twice_as_fast_as_its_spin_precesses():
-    plate = Solution(problem.load(TEXTBOOK + "thrown_plate_wobble.yaml"))
+    plate = Solution(problem.load(textbook("thrown_plate_wobble")))
     symbols = {p.symbol.name: p.symbol for p in plate.problem.parameters.values()}
     ratio = plate.expression("space") / plate.expression("body")
     assert sp.limit(ratio, symbols["omega_t"], 0) == 2
@@ -172,13 +171,13 @@ def test_a_wrong_route_is_caught(monkeypatch):
 
     monkeypatch.setattr(free_rotation, "precession", wrong)
     with pytest.raises(CheckFailure, match="Lagrange"):
-        Solution(problem.load(TEXTBOOK + "thrown_plate_wobble.yaml")).checks()
+        Solution(problem.load(textbook("thrown_plate_wobble"))).checks()
 
 
 def test_a_variant_whose_moments_change_order_is_refused():
     # the axes are ranked at the middle of the ranges (c the longest edge); a c shorter than b breaks it
     with pytest.raises(Exception, match="change order"):
-        report.solve(problem.load(TEXTBOOK + "tennis_racket.yaml"), {"a": "0.03", "b": "0.2", "c": "0.1", "W": "10"}, 6)
+        report.solve(problem.load(textbook("tennis_racket")), {"a": "0.03", "b": "0.2", "c": "0.1", "W": "10"}, 6)
 
 
 @pytest.mark.parametrize("shape, ask, field, words", [
@@ -317,7 +316,7 @@ def test_a_custom_body_given_its_three_principal_moments(tmp_path):
 
 def test_multiple_choice_offers_the_moments_swapped():
     # a long cylinder: with I1 and I3 swapped omega would turn the other way about the axis
-    p = problem.load(TEXTBOOK + "football_free_precession.yaml")
+    p = problem.load(textbook("football_free_precession"))
     values = p.values({"M": "0.4", "R": "0.04", "h": "0.25", "omega3": "40", "omega_t": "3"})
     found = {d["mistake"]: d["value"] for d in distractors.distractors(p, "body", values, 3, limit=10)}
     right = float(report.solve(p, {"M": "0.4", "R": "0.04", "h": "0.25", "omega3": "40", "omega_t": "3"}, 6)
@@ -328,7 +327,7 @@ def test_multiple_choice_offers_the_moments_swapped():
 
 
 def test_the_worked_solution_shows_each_route_s_equations_and_results():
-    plate = Solution(problem.load(TEXTBOOK + "thrown_plate_wobble.yaml"))
+    plate = Solution(problem.load(textbook("thrown_plate_wobble")))
     steps = plate.steps()
     assert list(steps) == ["by Euler's equations", "by Lagrange's equations"]
     euler, lagrange = steps.values()

@@ -4,12 +4,11 @@ turntable, a brake pad that stops a flywheel); here each refusal, and the second
 catch a wrong grip."""
 import dataclasses
 import json
-from pathlib import Path
 
 import pytest
 import sympy as sp
 
-from conftest import refused, run_derive, write_problem
+from conftest import refused, run_derive, textbook, write_problem
 from derive.language import problem
 from derive.publishing import report
 from derive.solution.answers import Solution
@@ -108,12 +107,12 @@ def test_the_second_route_catches_a_wrong_grip(tmp_path, monkeypatch):
 
 
 def test_a_brake_stop_by_energy_is_refused_and_grips_is_the_way(tmp_path):
-    text = (Path(__file__).parent / "textbook/states/flywheel_brake_grips.yaml").read_text()
+    text = (textbook("flywheel_brake_grips")).read_text()
     text = text.replace("held: {from: spinning, when: {grips: pad}}", "held: {from: spinning, when: stops}")
     assert "work depends on the speed" in refused(tmp_path, text, "scene.states.held", exit_code=1)
 
 
-BALL = (Path(__file__).parent / "textbook/states/bowling_ball_skids.yaml").read_text()
+BALL = (textbook("bowling_ball_skids")).read_text()
 
 
 @pytest.mark.parametrize("change, field, words, code", [

@@ -5,12 +5,11 @@ and the second route shown to catch a wrong impact."""
 import dataclasses
 import json
 import math
-from pathlib import Path
 
 import pytest
 import sympy as sp
 
-from conftest import refused, run_derive, write_problem
+from conftest import refused, run_derive, textbook, write_problem
 from derive.language import problem
 from derive.publishing import report
 from derive.solution.answers import Solution
@@ -184,7 +183,7 @@ def test_kinetic_energy_is_read_in_a_state(tmp_path):
 
 def test_a_swing_over_the_top_after_an_impact_is_refused_per_variant():
     """The rod struck by a fast bullet goes over the top: the swing's highest point does not exist."""
-    result = run_derive("solve", "tests/textbook/states/rod_ballistic_pendulum.yaml", "--set", "m=0.02",
+    result = run_derive("solve", str(textbook("rod_ballistic_pendulum")), "--set", "m=0.02",
                         "--set", "v=300", "--set", "M=0.5", "--set", "L=0.5")
     assert result.returncode == 2 and "goes over the top and never stops" in result.stderr, result.stderr
 
@@ -194,9 +193,9 @@ def test_a_root_on_the_other_branch_of_the_circle_is_refused_per_variant():
     turning point below the hook, a root of the squared equation only (found silently wrong: h =
     0.30 m where the block would rise 1.70 m, past the cord's horizontal)."""
     fixed = ["--set", "m1=0.02", "--set", "m2=0.5", "--set", "L=1"]
-    result = run_derive("solve", "tests/textbook/states/ballistic_pendulum_block.yaml", *fixed, "--set", "v=150")
+    result = run_derive("solve", str(textbook("ballistic_pendulum_block")), *fixed, "--set", "v=150")
     assert result.returncode == 2 and "does not hold at these values" in result.stderr, result.stderr
-    below = run_derive("solve", "tests/textbook/states/ballistic_pendulum_block.yaml", *fixed, "--set", "v=100",
+    below = run_derive("solve", str(textbook("ballistic_pendulum_block")), *fixed, "--set", "v=100",
                        "--format", "json")
     assert below.returncode == 0, below.stderr
     rise = (0.02 * 100 / 0.52) ** 2 / (2 * 9.81)
@@ -206,7 +205,7 @@ def test_a_root_on_the_other_branch_of_the_circle_is_refused_per_variant():
 def test_a_motion_that_leaves_the_other_way_than_at_the_middle_is_refused():
     """The coupled disks turn backward where the upper one's spin wins: the brake then speeds them
     up, and the stop derive found at the middle of the ranges (t = -0.1 s) never comes."""
-    result = run_derive("solve", "tests/textbook/states/clutch_disks_brake.yaml", "--set", "M1=1", "--set", "R1=0.1",
+    result = run_derive("solve", str(textbook("clutch_disks_brake")), "--set", "M1=1", "--set", "R1=0.1",
                         "--set", "w1=10", "--set", "M2=2", "--set", "R2=0.1", "--set", "w2=-10", "--set", "tau=0.5")
     assert result.returncode == 2 and "the other way than at the middle" in result.stderr, result.stderr
 
@@ -299,7 +298,7 @@ def test_a_worked_impact_shows_the_angular_momentum_it_keeps():
     """About the hinge, where the only impulse from outside acts, the angular momentum is the
     same before and after: the worked solution shows it (m v L, twice), and the check compares it
     with Newton–Euler's velocities."""
-    solution = Solution(problem.load("tests/textbook/states/rod_ballistic_pendulum.yaml"))
+    solution = Solution(problem.load(str(textbook("rod_ballistic_pendulum"))))
     steps = solution.steps()[solution.state_heading("struck")]
     (kept,) = [s for s in steps if s.text.startswith("Check: the angular momentum about the pin")]
     m, v, L = (next(s for s in solution.signed("omega").free_symbols if s.name == n) for n in ("m", "v", "L"))
@@ -308,7 +307,7 @@ def test_a_worked_impact_shows_the_angular_momentum_it_keeps():
 
 def test_a_free_impact_keeps_momentum_and_angular_momentum(tmp_path):
     """With no joint to the ground (a free rod struck at its end in space), both are shown kept."""
-    text = Path("tests/textbook/states/rod_ballistic_pendulum.yaml").read_text()
+    text = textbook("rod_ballistic_pendulum").read_text()
     text = text.replace("  joints:\n    hinge: {pin: rod.start}\n", "").replace("  loads:\n    - gravity: g\n", "")
     text = text.replace("  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}\n", "")
     text = text.replace("rod.angular_velocity: 0}}", "rod.angular_velocity: 0, rod.velocity.x: 0, rod.velocity.y: 0}}")
@@ -333,7 +332,7 @@ question: |
 def test_a_stop_after_a_bounce_that_sets_a_ball_flying_is_an_engine_limit(tmp_path):
     """After the bounce the ball flies free while the rod swings: no straight line of the
     coordinates, which the start already shows (it crashed on K = 0 having no root before)."""
-    text = (Path(__file__).parent / "textbook/states/ball_bounces_off_rod.yaml").read_text()
+    text = (textbook("ball_bounces_off_rod")).read_text()
     text = text.replace("    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n",
                         "    bounced: {from: coming, event: {bounce: ball, to: rod, restitution: e}}\n"
                         "    highest: {when: stops, from: bounced}\n")
@@ -342,7 +341,7 @@ def test_a_stop_after_a_bounce_that_sets_a_ball_flying_is_an_engine_limit(tmp_pa
     assert "whose motion is not a straight line in its coordinates" in stderr
 
 
-GRIPPING = Path(__file__).parent / "textbook/states/sphere_bounces_gripping.yaml"
+GRIPPING = textbook("sphere_bounces_gripping")
 
 
 def _symbols(solution, *names):
@@ -526,7 +525,7 @@ def test_the_pin_of_a_struck_rod_takes_the_change_of_momentum_of_the_rod_and_the
     3 m))): the hinge's impulse is the change of momentum of both, (M L/2 + m L) omega - m v, which
     m M v/(2 (M + 3 m)), the way the bullet went (the end is below the center of percussion, where
     the pin would take none); the bullet takes m (L omega - v)."""
-    text = Path("tests/textbook/states/rod_ballistic_pendulum.yaml").read_text().replace("ask:\n", (
+    text = textbook("rod_ballistic_pendulum").read_text().replace("ask:\n", (
         "ask:\n  P: {meaning: the hinge's impulse, of: hinge.impulse.x, in: struck, unit: N*s}\n"
         "  Jb: {meaning: the bullet's impulse, of: bullet.impulse.x, in: struck, unit: N*s}\n"))
     solution = Solution(problem.load(write_problem(tmp_path, text)))
@@ -546,7 +545,7 @@ def test_the_second_route_catches_a_wrong_impulse(tmp_path, monkeypatch):
     monkeypatch.setattr(impulses, "on_body", lambda parts, coords, at, values, body:
                         (2 if len(parts) == 1 else 1) * original(parts, coords, at, values, body))
     with pytest.raises(CheckFailure, match="disagree on P"):
-        report.solve(problem.load("tests/textbook/states/rod_center_of_percussion.yaml"), {}, 4)
+        report.solve(problem.load(str(textbook("rod_center_of_percussion"))), {}, 4)
 
 
 @pytest.mark.parametrize("ask, field, words", [
@@ -567,7 +566,7 @@ def test_a_clutch_gives_no_impulse_of_a_force(tmp_path):
     assert "gives no force at a point" in refused(tmp_path, text, "ask.K1.of")
 
 
-GLANCING = Path(__file__).parent / "textbook/states/disks_glancing_collision.yaml"
+GLANCING = textbook("disks_glancing_collision")
 
 
 def test_two_rough_pucks_that_grip_share_the_tangential_impulse_of_their_effective_mass(tmp_path):
@@ -607,7 +606,7 @@ def test_two_rough_pucks_that_grip_share_the_tangential_impulse_of_their_effecti
 def test_a_puck_off_a_rod_on_a_pin_keeps_the_angular_momentum_about_the_pin(tmp_path):
     """A puck strikes a hanging rod's side: the only impulse from outside is at the pin, so the
     angular momentum about it is kept (m v d before, shared after), shown and checked."""
-    text = (Path(__file__).parent / "textbook/states/rod_center_of_percussion.yaml").read_text().replace(
+    text = (textbook("rod_center_of_percussion")).read_text().replace(
         "    ball: {shape: point, mass: m, at: [0, -d]}",
         "    ball: {shape: disk, mass: m, radius: r, at: [-r, -d]}").replace(
         "rod.angular_velocity: 0}}", "rod.angular_velocity: 0, ball.angular_velocity: 0}}").replace(
@@ -635,7 +634,7 @@ def test_a_bounce_of_bodies_that_do_not_touch_or_of_unknown_shapes_is_refused(tm
 
 
 def test_a_puck_beside_a_rod_but_not_touching_it_is_refused(tmp_path):
-    text = (Path(__file__).parent / "textbook/states/disk_strikes_free_rod.yaml").read_text().replace(
+    text = (textbook("disk_strikes_free_rod")).read_text().replace(
         "at: [-r, L/2]", "at: [-2*r, L/2]")
     assert "from the rod's axis, not its radius" in refused(tmp_path, text, "scene.states.struck")
 
@@ -672,7 +671,7 @@ def test_a_rough_bounces_impulses_are_given_in_each_regime(tmp_path):
 def test_a_puck_that_would_strike_beyond_the_rods_end_is_refused(tmp_path):
     """Its center a radius from the rod's axis but past the end: it would meet the end's corner,
     which is not modelled (the smooth side's normal would be wrong there)."""
-    text = (Path(__file__).parent / "textbook/states/disk_strikes_free_rod.yaml").read_text().replace(
+    text = (textbook("disk_strikes_free_rod")).read_text().replace(
         "at: [-r, L/2]", "at: [-r, L/2 + r/2]")
     assert "beyond its end: a bounce off a rod's end or corner is not modelled" in refused(
         tmp_path, text, "scene.states.struck")

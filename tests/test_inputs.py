@@ -10,7 +10,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import refused, run_derive, write_problem
+from conftest import refused, run_derive, textbook, write_problem
 from derive.core import names
 from derive.numbers import numeric
 from derive.language import problem
@@ -204,7 +204,7 @@ def test_a_fixed_value_is_printed_as_the_answers_use_it(tmp_path):
     18.3 (the default 3 figures) while the answers used 18.29, so a key value disagreed with the
     printed data. A fixed decimal now keeps its own figures; with fewer sig_figs given it is refused."""
     from derive.language.problem import load
-    text = (Path(__file__).parent / "textbook/states/puck_slides_to_stop.yaml").read_text()
+    text = (textbook("puck_slides_to_stop")).read_text()
     text = text.replace("g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.8}",
                         "g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.8066}")
     assert load(str(write_problem(tmp_path, text))).parameters["g"].sig_figs == 5

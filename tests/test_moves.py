@@ -3,12 +3,11 @@ textbook closed forms are in tests/textbook/states (a child walking to a turntab
 student on a stool pulling in two weights); here a free body, each refusal, and the second
 route shown to catch a wrong move; and turns (`event: {turn: BODY, relative_to: OTHER, angle:
 psi}`), with Elroy's beanie's closed forms in tests/test_events.py."""
-from pathlib import Path
 
 import pytest
 import sympy as sp
 
-from conftest import refused, run_derive, write_problem
+from conftest import refused, run_derive, textbook, write_problem
 from derive.language import problem
 from derive.publishing import report
 from derive.solution.answers import Solution
@@ -146,7 +145,7 @@ def test_the_second_route_catches_a_wrong_move(tmp_path, monkeypatch):
 def test_a_speed_after_a_move_is_asked_only_where_nothing_shifts(tmp_path):
     """On a turntable the child's speed after walking in to R/2 is omega R/2 however the walk was
     made; on a free rod the bead's is not (the rod's drift adds to it at an angle the walk decides)."""
-    text = (Path(__file__).parent / "textbook/states/child_walks_to_center.yaml").read_text()
+    text = (textbook("child_walks_to_center")).read_text()
     text = text.replace("to: platform.center}", "to: {platform: [R/2, 0]}}").replace(
         "ask:\n", "ask:\n  v: {meaning: the child's speed, of: child.speed, in: centered, unit: m/s}\n")
     solution = Solution(problem.load(write_problem(tmp_path, text)))

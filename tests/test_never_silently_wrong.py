@@ -3,12 +3,11 @@ parameters, every key used or refused, engine limits reported as such, and small
 oscillations about equilibria on curved surfaces. Closed forms are from the texts cited."""
 import json
 import math
-from pathlib import Path
 
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import run_derive, textbook
 from derive.checks import simulate
 from derive.solution.answers import Solution
 from derive.language.problem import load
@@ -415,7 +414,7 @@ def test_an_overdamped_variant_is_refused(tmp_path):
 
 def test_a_pull_that_lifts_a_body_off_its_surface_is_refused():
     """Pulled straight up with more than its weight, the yo-yo leaves the floor: N = M g - F < 0."""
-    path = "tests/textbook/yoyo_pulled_up_rolls_left.yaml"
+    path = str(textbook("yoyo_pulled_up_rolls_left"))
     result = run_derive("solve", path, "--set", "F=10", "--set", "M=0.3")
     assert result.returncode == 2 and "normal" in result.stderr, result.stdout + result.stderr
     assert run_derive("solve", path, "--set", "F=1", "--set", "M=0.3").returncode == 0
@@ -434,7 +433,7 @@ def test_a_run_derived_as_placed_is_refused_where_a_variant_turns_it_over():
     derivation takes the sign the file's placement gives it (so the answer reads the book's
     a = m g/(M + m), Halliday ch. 5), and values that turn the run over are refused, not answered
     by the same formula."""
-    path = str(Path(__file__).parent / "textbook" / "table_block_smooth_pulley.yaml")
+    path = str(textbook("table_block_smooth_pulley"))
     placed = run_derive("solve", path, "--set", "M=3", "--set", "m=1", "--set", "r=0.03", "--set", "d=0.5",
                         "--format", "json")
     assert placed.returncode == 0, placed.stderr

@@ -9,18 +9,17 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import run_derive, textbook
 from derive.checks import simulate
 from derive.solution.answers import Solution
 from derive.core.errors import EngineLimit, ProblemError
 from derive.language.problem import load
 
-TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 
 
 def variant(tmp_path, stem: str, old: str, new: str) -> Path:
     """A textbook file with one line changed, written to tmp_path."""
-    text = (TEXTBOOK / f"{stem}.yaml").read_text()
+    text = (textbook(stem)).read_text()
     assert old in text
     path = tmp_path / f"{stem}.yaml"
     path.write_text(text.replace(old, new))
@@ -30,7 +29,7 @@ def variant(tmp_path, stem: str, old: str, new: str) -> Path:
 def test_the_new_users_cart_pendulum_is_answered():
     """The trial file that was refused ("small oscillations need one degree of freedom; the scene
     has 2"): omega^2 = g (M + m)/(M l) (Morin ch. 6; Taylor Problem 7.29) at M = 2, m = 1, l = 0.5."""
-    result = run_derive("solve", str(TEXTBOOK / "cart_pendulum.yaml"), "--set", "M=2", "--set", "m=1",
+    result = run_derive("solve", str(textbook("cart_pendulum")), "--set", "M=2", "--set", "m=1",
                         "--set", "l=0.5", "--format", "json", "--digits", "12")
     assert result.returncode == 0, result.stderr
     report = json.loads(result.stdout)
@@ -41,7 +40,7 @@ def test_the_new_users_cart_pendulum_is_answered():
 def test_matrices_and_the_zero_mode_of_the_cart_pendulum():
     """In the free coordinates (x_cart, x_bob): M = diag(M, m), K = (m g/l) [[1, -1], [-1, 1]] by
     both routes; the cart and bob moving together is the zero mode (momentum conserved)."""
-    problem = load(TEXTBOOK / "cart_pendulum.yaml")
+    problem = load(textbook("cart_pendulum"))
     M, m, l, g = (problem.parameters[n].symbol for n in ("M", "m", "l", "g"))
     solution = Solution(problem)
     for route, modes in solution.normal_modes.items():
@@ -59,13 +58,13 @@ def test_every_mode_against_a_simulation():
     """Started along each mode's shape (found numerically from K and M by scipy), the integrated
     motion repeats at the derived period, to 1e-6."""
     for stem in ("double_pendulum", "coupled_pendulums", "cart_pendulum"):
-        report = simulate.check(Solution(load(TEXTBOOK / f"{stem}.yaml")))
+        report = simulate.check(Solution(load(textbook(stem))))
         assert report.passed, (stem, report.notes)
         assert report.compared, stem
 
 
 def test_the_modes_are_numbered_from_the_lowest():
-    problem = load(TEXTBOOK / "two_blocks_three_springs.yaml")
+    problem = load(textbook("two_blocks_three_springs"))
     solution = Solution(problem)
     low, high = (solution.expression(n) for n in ("w1", "w2"))
     assert sp.simplify(high**2 / low**2) == 3

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import refused, run_derive, write_problem
+from conftest import notes_files, refused, run_derive, textbook, textbook_files, write_problem
 from derive.core import library
 from derive.publishing import notation, variants, worksheets
 from derive.solution.answers import Solution
@@ -23,10 +23,10 @@ def printed(problem) -> tuple[Solution, dict]:
     return solution, notation.named(problem, solution, solution.steps())
 
 
-TEXTBOOK = sorted((Path(__file__).parent / "textbook").glob("*.yaml"))
+TEXTBOOK = textbook_files()
 
 
-@pytest.mark.parametrize("path", library.problem_files() + TEXTBOOK, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", notes_files() + TEXTBOOK, ids=lambda p: p.stem)
 def test_worked_solutions_use_each_symbol_for_one_thing(path):
     """The library's problems and the textbook problems of the tests."""
     problem = load(str(path))
@@ -56,7 +56,7 @@ def test_two_periods_in_one_document_are_two_symbols():
 def test_a_tension_asked_as_T_renames_the_period():
     """The spring-pulley problem asks T for the tension at equilibrium and the steps solve for the
     period of small oscillations, which no ask names: the worked solution calls it P."""
-    problem = load(str(Path(__file__).parent / "textbook" / "spring_pulley_block.yaml"))
+    problem = load(str(textbook("spring_pulley_block")))
     solution, steps = printed(problem)
     assert PERIOD in notation.step_symbols(solution.steps()["lagrange"])
     assert "T" not in symbols_of(steps) and "P" in symbols_of(steps)

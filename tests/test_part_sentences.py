@@ -4,13 +4,13 @@ open each route's steps with those sentences."""
 import importlib
 import pkgutil
 from decimal import Decimal
-from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
 import sympy as sp
 
 import derive.parts
+from conftest import textbook
 from derive.publishing import render, report, variants, worksheets
 from derive.solution.answers import Solution
 from derive.mechanics.impacts import Touch
@@ -35,7 +35,6 @@ from derive.language.problem import load
 from derive.model.scene import Body, Scene
 from test_check import PSEUDO_MATH
 
-TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 M, m, R, r, F, C, k, b, c, kappa, mu, tau, g = sp.symbols("M m R r F C k b c kappa mu_k tau g", positive=True)
 
 
@@ -113,8 +112,8 @@ def _torques_said(solution: Solution) -> dict[str, sp.Expr]:
 
 
 @pytest.mark.parametrize("reference, body", [("string_wrapped_disk", "disk"),
-                                             (TEXTBOOK / "atwood_massive_pulley.yaml", "pulley"),
-                                             (TEXTBOOK / "ladder_statics.yaml", "ladder"),
+                                             (textbook("atwood_massive_pulley"), "pulley"),
+                                             (textbook("ladder_statics"), "ladder"),
                                              ("rolling_incline", "ball")])
 def test_the_torques_the_sentences_state_are_the_torque_balance(reference, body):
     """Radius times force, said part by part, adds up to the right side of the body's torque balance."""
@@ -147,7 +146,7 @@ def test_string_wrapped_disk_says_each_part():
 
 
 def test_atwood_machine_says_each_run_of_the_rope():
-    text = _latex(TEXTBOOK / "atwood_massive_pulley.yaml")
+    text = _latex(textbook("atwood_massive_pulley"))
     for said in (r"The part of the cord rope that runs from the left, around the pulley; it does not stretch",
                  r"its tension $T_{\mathrm{rope},1}$.", r"its tension $T_{\mathrm{rope},2}$.",
                  r"its torque about it is $R T_{\mathrm{rope},1}$, positive: it turns the body counter-clockwise.",
@@ -158,7 +157,7 @@ def test_atwood_machine_says_each_run_of_the_rope():
 
 
 def test_ladder_says_where_the_floor_and_the_wall_push():
-    text = _latex(TEXTBOOK / "ladder_statics.yaml")
+    text = _latex(textbook("ladder_statics"))
     for said in (r"The ladder's foot rests on the floor and does not slip: it keeps touching it, a gap held by the "
                  r"normal force $N^{\mathrm{foot}}$, and it does not slide along it, held by the friction "
                  r"$f^{\mathrm{foot}}$.",
@@ -183,7 +182,7 @@ def test_rolling_incline_says_the_friction_turns_the_ball():
 
 
 def test_spring_says_its_energy_and_its_pull():
-    solution = Solution(load(TEXTBOOK / "spring_horizontal.yaml"))
+    solution = Solution(load(textbook("spring_horizontal")))
     (spring,) = [p for p in solution.scene.loads if type(p).__name__ == "Spring"]
     energy = solution.derivations["lagrange"].steps[0]
     said = [s for s in energy.sentences if s.words.startswith("The spring spring1 stores")]

@@ -37,9 +37,11 @@ def write(tmp_path, text):
 
 def test_every_library_problem_loads():
     files = problem_files()
-    assert len(files) >= 4
+    assert len(files) >= 150 and len({f.stem for f in files}) == len(files)  # ids are unique
     for path in files:
-        assert problem.load(str(path)).id == path.stem
+        loaded = problem.load(str(path))
+        assert loaded.id == path.stem and path.parent.name == loaded.topic  # problems/TOPIC/ID.yaml
+        assert loaded.source and loaded.difficulty and loaded.tags, path  # what the catalogue shows
 
 
 def test_good_file_loads_with_exact_values(tmp_path):
@@ -64,6 +66,10 @@ def test_good_file_loads_with_exact_values(tmp_path):
     (lambda t: t.replace("shape: disk", "shape: cube"), "scene.bodies.disk.shape", "unknown shape"),
     (lambda t: t.replace("  R: {meaning", "  M: {meaning"), "line", "duplicate key"),
     (lambda t: t.replace("mass: M, radius", "mass: 10**10**10**10, radius"), "scene.bodies.disk.mass", ""),
+    (lambda t: t + "difficulty: tricky\n", "difficulty", "expected one of easy, medium, hard, got 'tricky'"),
+    (lambda t: t + "tags: [pulley, rollin]\n", "tags[1]", "unknown tag 'rollin'"),
+    (lambda t: t + "tags: [pulley, pulley]\n", "tags[1]", "listed twice"),
+    (lambda t: t + "tags: pulley\n", "tags", "expected a list of tags"),
 ])
 def test_bad_files_fail_with_one_line_naming_file_and_field(tmp_path, derive, change, field, reason):
     path = write(tmp_path, change(GOOD))

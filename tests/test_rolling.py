@@ -1,11 +1,11 @@
 """Rolling without slipping at a given speed (notes §2, §2.1): the rotation rate, the distance
 per turn and the kinetic-energy split, by the center of mass and by the contact point."""
 import dataclasses
-from pathlib import Path
 
 import pytest
 import sympy as sp
 
+from conftest import textbook
 from derive.solution.answers import Solution
 from derive.solution.crosschecks import CheckFailure
 from derive.core.errors import ProblemError
@@ -95,7 +95,7 @@ def test_a_ball_sliding_without_friction_in_a_loop_needs_five_halves_of_its_path
 def test_an_incline_that_descends_to_the_left_is_the_mirror_image(tmp_path):
     """The same sphere rolling down a plane that descends to the left: the same acceleration down
     the slope and friction, its center moving left and turning counter-clockwise (the mirror image)."""
-    source = (Path(__file__).parent / "textbook" / "sphere_rolls_incline.yaml").read_text()
+    source = (textbook("sphere_rolls_incline")).read_text()
     mirrored = source.replace("{incline: {angle: theta}}", "{incline: {angle: theta, descends: left}}")
     mirrored = mirrored.replace("ask:\n", "ask:\n  ax: {meaning: horizontal acceleration, of: hoop.acceleration.x, "
                                 "unit: m/s^2}\n  alpha: {meaning: angular acceleration, of: hoop.angular_acceleration, "

@@ -4,19 +4,17 @@ textbook file of a top, a rolling coin, a free body and a body in bearings agree
 steady motion, is caught. The numerical model itself keeps what it must: energy, L_z about the
 fixed point, the rolling condition."""
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 import sympy as sp
 
-from conftest import run_derive, write_problem
+from conftest import run_derive, textbook, write_problem
 from derive.mechanics import rigid_motion
 from derive.checks import simulate_solid
 from derive.solution.answers import Solution
 from derive.language.problem import load
 
-TEXTBOOK = Path(__file__).resolve().parent / "textbook"
 #: Each textbook file's asks the simulation compares (the fast-top limits are not simulated).
 SIMULATED = {
     "top_two_precessions": ["slow", "fast"],
@@ -36,7 +34,7 @@ SIMULATED = {
     "dumbbell_tilted_shaft": None,
 }
 #: The top of top_two_precessions asked its nutation frequency (not only the fast-top limit).
-NUTATING = (TEXTBOOK / "top_two_precessions.yaml").read_text().replace(
+NUTATING = (textbook("top_two_precessions")).read_text().replace(
     "of: top.nutation.fast_top", "of: top.nutation.frequency")
 
 
@@ -48,7 +46,7 @@ def _relative_differences(report, limits: bool = False) -> list[float]:
 
 @pytest.mark.parametrize("problem_id", sorted(SIMULATED))
 def test_every_textbook_3d_answer_agrees_with_its_simulation(problem_id):
-    solution = Solution(load(TEXTBOOK / f"{problem_id}.yaml"))
+    solution = Solution(load(textbook(problem_id)))
     report = simulate_solid.check(solution)
     assert report.passed, report.notes
     expected = SIMULATED[problem_id] or [n for n, a in solution.problem.asks.items()
@@ -80,12 +78,12 @@ def _one_percent_off(solution: Solution, name: str) -> Solution:
     ("rod_tilted_on_shaft", "K"), ("disk_tilted_on_shaft", "F"),
 ])
 def test_an_answer_one_percent_off_is_caught(problem_id, name):
-    report = simulate_solid.check(_one_percent_off(Solution(load(TEXTBOOK / f"{problem_id}.yaml")), name))
+    report = simulate_solid.check(_one_percent_off(Solution(load(textbook(problem_id))), name))
     assert not report.passed and any(n.startswith(f"{name}:") for n in report.notes), report.notes
 
 
 def test_a_least_spin_one_percent_low_is_caught_too():
-    solution = Solution(load(TEXTBOOK / "sleeping_cone.yaml"))
+    solution = Solution(load(textbook("sleeping_cone")))
     solution.expressions["omega_min"] = solution.expressions["omega_min"] * sp.Rational(99, 100)
     report = simulate_solid.check(solution)
     assert not report.passed and "the tilt does not turn back" in report.notes[0]
@@ -100,7 +98,7 @@ def test_a_nutation_frequency_one_percent_off_is_caught(tmp_path):
 def test_a_start_off_the_steady_motion_is_caught(monkeypatch):
     """Were the derived steady rate 1 % off, the start would not be steady: the tilt wanders, though
     the answer and the start agree."""
-    solution = Solution(load(TEXTBOOK / "top_two_precessions.yaml"))
+    solution = Solution(load(textbook("top_two_precessions")))
     right = Solution._pivot_point
     monkeypatch.setattr(Solution, "_pivot_point", lambda self, q, route="lagrange": right(self, q, route) * 1.01)
     report = simulate_solid.check(solution)
@@ -108,7 +106,7 @@ def test_a_start_off_the_steady_motion_is_caught(monkeypatch):
 
 
 def test_a_coin_started_off_its_steady_circle_is_caught(monkeypatch):
-    solution = Solution(load(TEXTBOOK / "coin_rolls_in_circle.yaml"))
+    solution = Solution(load(textbook("coin_rolls_in_circle")))
     right = Solution._rolls_on_edge
     monkeypatch.setattr(Solution, "_rolls_on_edge", lambda self, q, route="lagrange": right(self, q, route) * 1.01)
     report = simulate_solid.check(solution)
@@ -188,7 +186,7 @@ question:""")
 
 
 #: The coin of coin_rolls_in_circle with its radius given and every steady quantity asked, exactly.
-COIN = (TEXTBOOK / "coin_rolls_in_circle.yaml").read_text().replace(
+COIN = (textbook("coin_rolls_in_circle")).read_text().replace(
     "  g: {meaning", "  a: {meaning: radius of the coin, unit: m, range: [0.01, 0.03], sig_figs: 2}\n  g: {meaning").replace(
     "shape: disk, mass: M,", "shape: disk, mass: M, radius: a,").replace(", small: coin.radius", "").replace(
     "question:", """  W: {meaning: heading rate, of: coin.steady.precession, unit: rad/s}

@@ -11,17 +11,17 @@ from types import SimpleNamespace
 import pytest
 import sympy as sp
 
+from conftest import textbook
 from derive.core import library
 from derive.publishing import render, variants, worksheets
 from derive.solution.answers import Solution
 from derive.language.problem import load
 from test_check import PSEUDO_MATH
 
-TEXTBOOK = Path(__file__).resolve().parent / "textbook" / "states"
 #: Every library and textbook problem with states, and those whose steps follow a motion along its
 #: path (a swing's period at its amplitude: a turning point, its time by quadrature).
 STEPPED = sorted([str(p) for p in library.problem_files() if "states:" in p.read_text()]
-                 + [str(p) for p in TEXTBOOK.glob("*.yaml")])
+                 + [str(textbook("torsion_pendulum_wide_swing"))])
 CHAINS = [p for p in STEPPED if "states:" in Path(p).read_text()]
 
 
@@ -97,7 +97,7 @@ def _kept_sentence(solution: Solution, steps: dict, name: str):
 
 def _rod_struck(tmp_path: Path, hinge: str) -> Solution:
     """The rod ballistic pendulum up to the impact, its hinge at `hinge`."""
-    text = (TEXTBOOK / "rod_ballistic_pendulum.yaml").read_text()
+    text = (textbook("rod_ballistic_pendulum")).read_text()
     text = text.replace("    hinge: {pin: rod.start}\n", f"    hinge: {{pin: {hinge}}}\n")
     text = text.replace("    highest: {when: stops, from: struck}\n", "")
     text = text.replace("  angle: {meaning: angle of the rod at its highest, of: rod.angle, in: highest, unit: rad}\n",
@@ -120,7 +120,7 @@ def test_the_kept_angular_momentum_is_said_about_the_pin_where_the_derivation_ha
     moved = _kept_sentence(middle, middle.steps(), "struck")
     assert sp.Tuple(0, -L / 2) in moved.pieces and sp.Tuple(0, 0) not in moved.pieces
     assert r"\left( 0, \  - \frac{L}{2}\right)" in moved.latex()
-    held, steps = _solved(str(TEXTBOOK / "ballistic_pendulum_block.yaml"))  # a block hung by a cord
+    held, steps = _solved(str(textbook("ballistic_pendulum_block")))  # a block hung by a cord
     intro = steps[held.state_heading("struck")][0]
     said = " ".join(s.words for s in intro.sentences)
     assert "of the cord cord, does not act at one pin: no momentum is named" in said
@@ -131,13 +131,13 @@ def test_the_kept_angular_momentum_is_said_about_the_pin_where_the_derivation_ha
 def test_the_energy_sentences_name_the_parts_that_do_work():
     """Energy is conserved where only gravity works (a rod swinging down); with a torque, the
     work-energy theorem, the torque's power the one the Lagrangian's generalized force has."""
-    rod, rod_steps = _solved(str(TEXTBOOK / "rod_swings_down.yaml"))
+    rod, rod_steps = _solved(str(textbook("rod_swings_down")))
     (name,) = rod._on_the_way()
     said = [s.words for step in rod_steps[rod.state_heading(name)] for s in step.sentences]
     assert "Gravity stores potential energy: its work is the drop in ." in said
     assert any(w.startswith("So energy is conserved") for w in said)
     assert any(w.startswith("The pin hinge does no work") for w in said)
-    wheel, wheel_steps = _solved(str(TEXTBOOK / "flywheel_torque_work.yaml"))
+    wheel, wheel_steps = _solved(str(textbook("flywheel_torque_work")))
     (name,) = wheel._on_the_way()
     (torque,) = [p for p in wheel.scene.loads if type(p).__name__ == "Torque"]
     (working,) = [s for step in wheel_steps[wheel.state_heading(name)] for s in step.sentences
@@ -148,7 +148,7 @@ def test_the_energy_sentences_name_the_parts_that_do_work():
 
 
 def test_a_move_says_noethers_theorem_about_the_axle():
-    solution, steps = _solved(str(TEXTBOOK / "child_walks_to_center.yaml"))
+    solution, steps = _solved(str(textbook("child_walks_to_center")))
     (kept,) = [s for step in steps[solution.state_heading("centered")] for s in step.sentences
                if "Noether's theorem" in s.words]
     assert kept.words.startswith("Turning the whole scene rigidly about  changes none of the gaps of the axle and the "
@@ -158,16 +158,16 @@ def test_a_move_says_noethers_theorem_about_the_axle():
 
 def test_a_grip_is_timed_once():
     """A grip's time is one of its own steps: the worked solution shows it once."""
-    solution, steps = _solved(str(TEXTBOOK / "flywheel_brake_grips.yaml"))
+    solution, steps = _solved(str(textbook("flywheel_brake_grips")))
     (name,) = [n for n in solution._on_the_way() if solution.scene.states[n].until]
     texts = [s.text for s in steps[solution.state_heading(name)]]
     assert texts.count("The slip rate falls steadily from where it starts, and reaches zero at") == 1
 
 
 def test_solutions_print_the_state_sentences_and_headings():
-    problem = load(str(TEXTBOOK / "clutch_disks_brake.yaml"))
+    problem = load(str(textbook("clutch_disks_brake")))
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
-    solution, _ = _solved(str(TEXTBOOK / "clutch_disks_brake.yaml"))
+    solution, _ = _solved(str(textbook("clutch_disks_brake")))
     context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, [middle]), siunitx=True)
     sheet = render.render("solutions.tex.j2", problems=[context],
                           set=SimpleNamespace(title="Week 9", course="Mechanics", due="Friday"))

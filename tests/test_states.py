@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import run_derive
+from conftest import run_derive, textbook
 from derive.language import problem
 from derive.publishing import report
 from derive.solution.crosschecks import CheckFailure
@@ -174,7 +174,7 @@ def test_the_time_of_the_placement_is_refused(tmp_path):
 
 
 #: A ball on a cord given v0 at the bottom, asked where the cord goes slack (from the textbook suite).
-BALL = (Path(__file__).parent / "textbook" / "states" / "ball_circle_slack.yaml").read_text()
+BALL = (textbook("ball_circle_slack")).read_text()
 
 
 def test_a_cord_goes_slack_above_where_the_first_coordinate_turns(tmp_path):
@@ -327,14 +327,14 @@ def test_where_the_foot_of_a_rod_on_a_smooth_floor_leaves_it_is_refused(tmp_path
     """N = M g (4 + 3 (cos(phi) - cos(phi0))^2 - 3 cos^2(phi0))/(1 + 3 sin^2(phi))^2 > 0 all the way
     down (tests/test_textbook.py): the foot never leaves. derive cannot prove the equation N = 0 has
     no root, and says so (an engine limit), rather than answer or call it the file's fault."""
-    text = (Path(__file__).parent / "textbook/states/rod_falls_on_smooth_floor.yaml").read_text().replace(
+    text = (textbook("rod_falls_on_smooth_floor")).read_text().replace(
         "    tilted: {when: {rod.angle: pi/2 - theta}}\n", "    tilted: {when: {leaves: foot}}\n")
     result = solve(tmp_path, text)
     assert result.returncode == 1 and "derive cannot yet solve" in result.stderr, result.stderr
     assert "scene.states.tilted" in result.stderr and len(result.stderr.strip().splitlines()) == 1
 
 
-WEDGE = (Path(__file__).parent / "textbook/states/ball_bounces_off_wedge.yaml").read_text()
+WEDGE = (textbook("ball_bounces_off_wedge")).read_text()
 
 
 def test_a_flight_that_never_gets_to_its_state_is_refused(tmp_path):
@@ -349,7 +349,7 @@ def test_the_flight_off_the_wedge_matches_a_simulation_and_the_routes_check():
     the solve's own check, Newton–Euler's equations integrated to each state, passed."""
     from scipy.integrate import solve_ivp
 
-    wedge = problem.load(Path(__file__).parent / "textbook/states/ball_bounces_off_wedge.yaml")
+    wedge = problem.load(textbook("ball_bounces_off_wedge"))
     result = report.solve(wedge, {"h": "1", "H": "0.35", "e": "0.85", "m": "0.2"}, 12)
     value = {name: float(a.get("component") or a["value"]) for name, a in result["answers"].items()}
     fall = solve_ivp(lambda t, y: [y[2], y[3], 0, -9.81], (0, 5), [0, 0, value["vx"], value["vy"]],
@@ -366,7 +366,7 @@ def test_a_flight_through_a_surface_is_refused(tmp_path):
     variant and at the middle of the ranges."""
     result = solve(tmp_path, WEDGE, "--set", "H=2", "--set", "h=0.5", "--set", "e=0.7")
     assert result.returncode == 2 and "would pass through face" in result.stderr, result.stderr
-    flies = (Path(__file__).parent / "textbook/states/ball_bounces_then_flies.yaml").read_text()
+    flies = (textbook("ball_bounces_then_flies")).read_text()
     text = flies.replace("landed: {from: bounced, when: {ball.y: R}}", "landed: {from: bounced, when: {ball.y: 0}}")
     assert "would pass through floor" in refused(tmp_path, text, "scene.states.landed")
 
@@ -380,7 +380,7 @@ def test_a_state_of_a_rate_names_a_rate(tmp_path):
 def test_a_state_where_its_coordinate_is_extremal_is_reached_along_another(tmp_path):
     """A bead from the bowl's rim asked at the bottom by its height (y = -R, its minimum): y has
     no rate there, so the motion is followed along x; speed sqrt(2 g R), normal force 3 m g."""
-    text = (Path(__file__).parent / "textbook" / "states" / "block_in_bowl.yaml").read_text()
+    text = (textbook("block_in_bowl")).read_text()
     result = solve(tmp_path, text.replace("bottom: {when: {bead.x: 0}}", "bottom: {when: {bead.y: -R}}"),
                    "--set", "R=0.5", "--set", "m=0.2")
     assert result.returncode == 0, result.stderr
@@ -397,7 +397,7 @@ def test_ranges_whose_middle_never_gets_to_the_state_are_refused(tmp_path):
     assert "middle of the parameter ranges" in refused(tmp_path, text, "scene.states.slack")
 
 
-ATWOOD = (Path(__file__).parent / "textbook" / "states" / "atwood_pulley_speed.yaml").read_text()
+ATWOOD = (textbook("atwood_pulley_speed")).read_text()
 
 
 def test_blocks_on_a_cord_move_along_a_line_and_a_given_push_turns_back_where_energy_says(tmp_path):
@@ -464,7 +464,7 @@ question: A puck is held between two stretched springs and released.
 # Grips: a contact held by static friction keeps it on the way to every state, or the state is
 # where it slips.
 
-DOME = Path("tests/textbook/states/ball_slips_on_dome.yaml").read_text()
+DOME = textbook("ball_slips_on_dome").read_text()
 
 
 def test_a_ball_that_slips_on_its_way_is_not_followed_to_where_it_leaves(tmp_path):
@@ -538,7 +538,7 @@ def test_the_period_by_energy_meets_the_elliptic_integral(monkeypatch):
 ])
 def test_a_state_named_by_a_list_is_refused_naming_the_field(change, field):
     """Found by the fuzz test: a list where a state's name goes was a TypeError (an internal error)."""
-    text = (Path(__file__).parent / "textbook/states/rod_swings_down.yaml").read_text().replace(*change)
+    text = (textbook("rod_swings_down")).read_text().replace(*change)
     with pytest.raises(problem.ProblemError, match=field.replace(".", r"\.")):
         problem.parse(text, Path("mutated.yaml"))
 
@@ -550,7 +550,7 @@ def test_the_time_up_a_bowl_has_the_units_of_a_time_and_the_quadratures_value(tm
     t = integral of d phi / phi' from 0 to the highest angle, here by mpmath's quadrature."""
     import mpmath
 
-    text = (Path(__file__).parent / "textbook" / "states" / "ball_rolls_up_bowl.yaml").read_text()
+    text = (textbook("ball_rolls_up_bowl")).read_text()
     text = text.replace("  N: {meaning: normal force", "  t: {meaning: time to the highest point, of: time, in: highest, "
                         "unit: s}\n  N: {meaning: normal force")
     (tmp_path / "bowl.yaml").write_text(text)
@@ -736,7 +736,7 @@ def test_forces_where_a_slide_stops_are_refused_and_the_next_segment_decides_afr
     """Where a crate shoved up a rough ramp stops, its friction jumps: forces there are refused.
     From there it slides back where tan(theta) > mu_s, the regime decided at the stop (a variant
     where static friction holds it is refused per variant)."""
-    text = (Path(__file__).parent / "textbook/states/crate_up_rough_ramp.yaml").read_text()
+    text = (textbook("crate_up_rough_ramp")).read_text()
     asked = text.replace("ask:\n", "ask:\n  N: {meaning: normal force at the top, of: crate.normal_force, in: highest, "
                                    "unit: N}\n")
     assert "where the crate stops sliding, its friction jumps" in refused(tmp_path, asked, "ask.N.in")
@@ -760,7 +760,7 @@ def test_a_regime_condition_that_is_not_real_past_an_earlier_one_is_no_internal_
     """With only the hanging mass given, derive looks for a condition every other value breaks; the
     speed's radicand is negative where static friction holds the block, which stopped `derive solve`
     with "is not a real number" (an internal error)."""
-    path = Path(__file__).parent / "textbook/states/rough_table_hanging_ball.yaml"
+    path = textbook("rough_table_hanging_ball")
     result = run_derive("solve", str(path), "--set", "m2=1")
     assert result.returncode == 0 and "internal error" not in result.stderr, result.stderr
 
@@ -845,7 +845,7 @@ def test_kinetic_friction_asked_in_a_state_opposes_the_slip_there():
     sliding contact has no friction unknown. It is mu_k N along the surface's tangent, against the
     slip in that state."""
     from derive.solution.answers import Solution
-    solution = Solution(problem.load(str(Path(__file__).parent / "textbook/states/block_down_rough_incline.yaml")))
+    solution = Solution(problem.load(str(textbook("block_down_rough_incline"))))
     contact = solution.scene_in("lower").constraint("block_contact")
     normal = solution.in_state("lagrange", "lower")[contact.unknowns()["normal"]]
     along = solution._contact_expression("block", "friction", solution.derivations_in("lower")["lagrange"], "lower")
@@ -878,7 +878,7 @@ def test_solve_says_how_each_segment_starts_where_friction_decides_it(tmp_path):
     """A trial found `derive solve`'s text showed only the equations held at rest ("Static
     friction ... it grips") for a block that slides in every state: it now says how each segment
     starts, as the worked solution does."""
-    path = Path(__file__).parent / "textbook/states/crate_up_rough_ramp.yaml"
+    path = textbook("crate_up_rough_ramp")
     done = run_derive("solve", str(path))
     assert done.returncode == 0, done.stderr
     assert "to back: the crate slips from the state highest, against kinetic friction" in done.stdout

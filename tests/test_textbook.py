@@ -1,24 +1,23 @@
-"""Textbook setups the engine was not designed around (tests/textbook/*.yaml), each answered
-against the closed form the book prints.
+"""Textbook setups the engine was not designed around, each answered against the closed form the
+book prints: the library problems whose `source` is a book (problems/TOPIC/*.yaml; the lecture
+notes' problems cite the notes), and any kept in tests/textbook/*.yaml.
 
-Each problem file describes the setup only and cites its source in `source:`; the closed forms
-live here, one dict per file, written with the problem's own parameter symbols. Every file's
+Each problem file cites its source in `source:`; the closed forms live here, one dict per file,
+written with the problem's own parameter symbols. Every file's
 checks (what `derive solve` reports) must pass, Lagrange and Newton-Euler in agreement.
 Setups the engine cannot state, refuses or answers wrongly are listed in
 tests/textbook/PENDING.md (with their files quoted there), not here.
 """
-from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
 import sympy as sp
 
+from conftest import textbook_files
 from derive.numbers import numeric
 from derive.publishing import report
 from derive.solution.answers import Solution
 from derive.language.problem import load
-
-FOLDER = Path(__file__).resolve().parent / "textbook"
 
 
 
@@ -1017,7 +1016,7 @@ EXPECTED.update({
     },
 })
 
-FILES = sorted(FOLDER.glob("*.yaml")) + sorted((FOLDER / "states").glob("*.yaml"))
+FILES = textbook_files()
 
 
 def _points_in_ranges(problem, fractions=(sp.Rational(1, 10), sp.Rational(1, 2), sp.Rational(9, 10))):
@@ -1033,9 +1032,10 @@ def _points_in_ranges(problem, fractions=(sp.Rational(1, 10), sp.Rational(1, 2),
 
 
 def test_every_file_has_its_closed_forms():
+    """Every library problem that cites a book is checked against the book here (and nothing else)."""
     assert {f.stem for f in FILES} == set(EXPECTED)
-    assert len(FILES) >= 30
-    assert len(list((FOLDER / "states").glob("*.yaml"))) >= 20
+    assert len(FILES) == len(set(EXPECTED)) >= 120
+    assert sum("states:" in f.read_text() for f in FILES) >= 50
 
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])

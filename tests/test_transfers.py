@@ -2,21 +2,19 @@
 12's chains from one surface to another): kept speed and spin where the paths are tangent, proved
 by both impact routes (every impulse zero), and refused where the body is not at the junction, where
 the paths meet at a kink, and where the file names what cannot pass."""
-from pathlib import Path
 
 import sympy as sp
 
-from conftest import refused
+from conftest import refused, textbook
 from derive.checks import chain_simulation
 from derive.solution.answers import Solution
 from derive.language.problem import load
 
-TEXTBOOK = Path(__file__).parent / "textbook" / "states"
-LOOP = (TEXTBOOK / "block_ramp_into_loop.yaml").read_text()
+LOOP = (textbook("block_ramp_into_loop")).read_text()
 
 
 def test_a_tangent_transfer_needs_no_impulse_by_either_route_and_keeps_the_velocities():
-    solution = Solution(load(str(TEXTBOOK / "block_ramp_into_loop.yaml")))
+    solution = Solution(load(str(textbook("block_ramp_into_loop"))))
     before, after = solution.states["entering"].values, solution.states["looping"].values
     assert after == before
     for route in ("lagrange", "newton_euler"):
@@ -30,7 +28,7 @@ def test_a_tangent_transfer_needs_no_impulse_by_either_route_and_keeps_the_veloc
 
 
 def test_a_rolling_ball_keeps_its_spin_through_the_transfer():
-    solution = Solution(load(str(TEXTBOOK / "ball_floor_into_loop.yaml")))
+    solution = Solution(load(str(textbook("ball_floor_into_loop"))))
     spin = solution.coordinates.of("ball", "theta").u
     assert solution.states["looping"].values[spin] == solution.states["rolling"].values[spin]
     assert all(sp.simplify(j) == 0 for j in solution._chain.impacts["looping"].impulses.values())
@@ -41,7 +39,7 @@ def test_a_ball_rolls_down_a_ramp_and_round_a_loop_as_the_books_and_the_simulati
     ball's center, N + m g = m v^2/(R - r) at the top, and it stays on when its center starts at
     least 2.7 (R - r) above its center at the loop's bottom. Its linear solve at the top took past
     250 s (sympy's domain built by expanding sums that are (R - r)^2 in disguise)."""
-    solution = Solution(load(str(TEXTBOOK / "ball_ramp_into_loop.yaml")))
+    solution = Solution(load(str(textbook("ball_ramp_into_loop"))))
     m, R, r, d, g = (solution.problem.parameters[n].symbol for n in ("m", "R", "r", "d", "g"))
     gap = sp.Symbol("gap", positive=True)  # R - r: the ball fits inside the loop
     inside = {R: r + gap}
@@ -71,10 +69,10 @@ def test_the_top_of_the_loop_is_reached_by_its_height_as_by_its_x(tmp_path):
     """The ball's height is extremal at the top, so the state is followed along x; the rolled angle,
     which the rolling gap holds linearly, is not tried before it (sympy's solve of that gap for the
     ball's position, inside the arc's atan2, ran past the limit)."""
-    text = (TEXTBOOK / "ball_ramp_into_loop.yaml").read_text()
+    text = (textbook("ball_ramp_into_loop")).read_text()
     path = tmp_path / "ball_ramp_into_loop.yaml"
     path.write_text(text.replace("top: {from: above, when: {ball.x: 0}}", "top: {from: above, when: {ball.y: 2*R - r}}"))
-    by_height, by_x = Solution(load(str(path))), Solution(load(str(TEXTBOOK / "ball_ramp_into_loop.yaml")))
+    by_height, by_x = Solution(load(str(path))), Solution(load(str(textbook("ball_ramp_into_loop"))))
     assert by_height.scene.states["top"].when[1] == "y" and by_x.scene.states["top"].when[1] == "x"
     assert by_height.states["top"].values == by_x.states["top"].values
     assert by_height.states["top"].path.s == by_x.coordinates.of("ball", "x").q

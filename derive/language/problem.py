@@ -27,7 +27,7 @@ from derive.numbers import numeric
 from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT, TITLE_LIMIT, TOPIC_LIMIT)
 from derive.core.errors import EngineLimit, ProblemError
 from derive.core.keys import Key, Keys
-from derive.language import ask_options
+from derive.language import ask_options, labels
 from derive.language.reader import Loader, Reader
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
@@ -53,6 +53,8 @@ PROBLEM = Keys(id=Key("text", "its id: letters, digits and _", required=True),
                title=Key("text", "its title", required=True),
                topic=Key("text", "its topic (derive list --topic)"),
                source=Key("text", "where the setup comes from"),
+               difficulty=Key("name", "easy, medium or hard (derive list --difficulty)", choices=labels.DIFFICULTIES),
+               tags=Key("list", "words an instructor filters on (derive list --tag), each one of derive.language.labels.TAGS"),
                parameters=Key("mapping", "the parameters, by name", required=True, values=PARAMETER),
                scene=Key("mapping", "the physical setup", required=True, keys=SCENE),
                ask=Key("mapping", "the quantities asked, by name", required=True, values=ask_options.ASK),
@@ -239,6 +241,8 @@ class Problem:
     # What a derivation reads of the file: its fields but the text (TEXT_ONLY), as JSON with sorted keys (the
     # derivation cache's key: derive.publishing.derivation_cache).
     derivation_source: str = dataclass_field(default="", repr=False, compare=False)
+    difficulty: str = ""  # derive.language.labels: "" where the file gives none
+    tags: tuple[str, ...] = ()
 
     def error(self, field: str, message: str) -> ProblemError:
         return ProblemError(f"{self.path}: {field}: {message}")
@@ -521,6 +525,11 @@ def parse(text: str, path: Path) -> Problem:
         {key: reader.text(text, f"corrections[{i}].{key}", CORRECTION_LIMIT) for key, text in
          reader.mapping(c, f"corrections[{i}]", keys=CORRECTION).items()}
         for i, c in enumerate(corrections))
+    try:
+        difficulty = labels.read_difficulty(raw["difficulty"], "difficulty") if "difficulty" in raw else ""
+        tags = labels.read_tags(raw["tags"], "tags") if "tags" in raw else ()
+    except ValueError as error:
+        raise ProblemError(f"{path}: {error}") from None
     return Problem(
         id=problem_id,
         title=reader.text(raw["title"], "title", TITLE_LIMIT),
@@ -537,6 +546,8 @@ def parse(text: str, path: Path) -> Problem:
         held_to_range=frozenset(reader.held_to_range),
         derivation_source=json.dumps(_canonical({k: v for k, v in raw.items() if k not in TEXT_ONLY}), sort_keys=True,
                                      ensure_ascii=False),
+        difficulty=difficulty,
+        tags=tags,
     )
 
 

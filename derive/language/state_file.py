@@ -3,7 +3,7 @@ rates or where the motion from another state gets to (a position, a stop, a forc
 zero). derive.mechanics.states finds them; derive.solution.state_answers answers in them.
 
 >>> from derive.language.problem import load
->>> load("tests/textbook/states/rod_swings_down.yaml").scene.states["lowest"].when[:2]
+>>> load("rod_swings_down").scene.states["lowest"].when[:2]
 ('rod', 'theta')
 """
 from __future__ import annotations

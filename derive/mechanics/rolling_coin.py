@@ -294,8 +294,9 @@ def steps(I1, I3, mass, g, radius, tilt, circle, route: str, upright_asked: bool
     if not upright_asked:
         return result
     characteristic, least = upright(I1, I3, mass, g, radius, route)
-    result.append(Step("Upright, rolling straight at the spin omega, small leans and heading rates go as e^(s t): "
-                       "the lean oscillates, and upright rolling is stable, where both coefficients of "
-                       "A s^2 + C have one sign, that is above the least speed",
+    result.append(Step("Upright, rolling straight at the spin omega, small leans and heading rates grow or "
+                       "oscillate exponentially in time: the lean oscillates, and upright rolling is stable, where "
+                       "the two coefficients of the characteristic equation below have one sign, that is above "
+                       "the least speed",
                        (sp.Eq(characteristic.as_expr(), 0), sp.Eq(sp.Symbol("v_min"), least)), "solve"))
     return result

@@ -14,7 +14,7 @@ state at each solve (derive.solution.crosschecks).
 
 >>> from derive.solution.answers import Solution
 >>> from derive.language.problem import load
->>> stopped = Solution(load("tests/textbook/states/puck_slides_to_stop.yaml")).states["stopped"]
+>>> stopped = Solution(load("puck_slides_to_stop")).states["stopped"]
 >>> stopped.path.kept, stopped.path.kinetic
 (((N^puck, g*m),), m*(-2*g*mu*x_puck + v0**2)/2)
 """

@@ -286,15 +286,17 @@ def convert(tex: str, out: Path, target: str, title: str) -> Path:
 LMS_HTML = ["--mathjax", "--section-divs", "--shift-heading-level-by=2"]
 
 
-def html_sections(tex: str) -> list[str]:
+def html_sections(tex: str, mathml: bool = False) -> list[str]:
     """The body of each \\section of a LaTeX document as an HTML fragment, in order, without the
     section's own heading (pandoc, as `convert`, with LMS_HTML): what an LMS shows as a question's
-    feedback, each from one section of the same document (one pandoc run for them all)."""
+    feedback, each from one section of the same document (one pandoc run for them all). `mathml`:
+    the math as MathML, for a page that must show it without MathJax (derive catalogue)."""
     import lxml.html
     import pypandoc
 
+    options = [("--mathml" if mathml and option == "--mathjax" else option) for option in LMS_HTML]
     try:
-        html = pypandoc.convert_text(tex, "html5", format="latex-auto_identifiers", extra_args=[*LMS_HTML, *PANDOC_SAFETY])
+        html = pypandoc.convert_text(tex, "html5", format="latex-auto_identifiers", extra_args=[*options, *PANDOC_SAFETY])
     except (RuntimeError, OSError) as error:
         raise BuildError(f"pandoc could not convert the worked solutions: {str(error).strip().splitlines()[-1]}") from None
     fragments = []

@@ -1,4 +1,5 @@
-"""LaTeX templates from templates/ (jinja), and problem question text (no template engine).
+"""LaTeX templates from templates/ (jinja), the HTML ones (jinja, autoescaped), and problem
+question text (no template engine).
 
 Templates use LaTeX-friendly delimiters (\\VAR{...}, \\BLOCK{...}, \\#{...}) so braces stay
 LaTeX's; the environment is sandboxed and strict (an undefined name is an error, not blank
@@ -44,3 +45,15 @@ def question(text: str, values: dict[str, str]) -> str:
 
 def render(template: str, **context) -> str:
     return templates().get_template(template).render(**context)
+
+
+@lru_cache(maxsize=1)
+def html_templates() -> SandboxedEnvironment:
+    """jinja's own delimiters for the HTML templates (*.html.j2), every value HTML-escaped unless
+    marked safe (pandoc's HTML): the LaTeX environment above escapes nothing."""
+    return SandboxedEnvironment(loader=jinja2.FileSystemLoader(str(library.templates_dir())), autoescape=True,
+                                undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
+
+
+def html(template: str, **context) -> str:
+    return html_templates().get_template(template).render(**context)

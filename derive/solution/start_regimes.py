@@ -11,7 +11,7 @@ refused, as its motion is another one.
 
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
->>> solution = Solution(load("tests/textbook/states/rough_table_hanging_ball.yaml"))
+>>> solution = Solution(load("rough_table_hanging_ball"))
 >>> solution.starts["fallen"].taken.name
 'slips'
 """

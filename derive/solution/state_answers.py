@@ -6,7 +6,7 @@ coordinates, the routes' derivations and the parameter ranges.
 
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
->>> solution = Solution(load("tests/textbook/states/rod_swings_down.yaml"))
+>>> solution = Solution(load("rod_swings_down"))
 >>> solution.expression("omega")
 sqrt(3)*sqrt(g)/sqrt(L)
 """
@@ -472,7 +472,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
 
         >>> from derive.language.problem import load
         >>> from derive.solution.answers import Solution
-        >>> solution = Solution(load("tests/textbook/states/clutch_disks_brake.yaml"))
+        >>> solution = Solution(load("clutch_disks_brake"))
         >>> [solution.state_heading(n) for n in ("spinning", "coupled", "stopped")]  # doctest: +NORMALIZE_WHITESPACE
         ['The start, spinning: the placement moving at the given rates', 'The impact coupled, just after spinning:
         the upper and the lower lock together', 'From coupled to stopped: the motion until it stops']

@@ -9,7 +9,7 @@ the answers' conditions (derive.solution.answer_conditions), which a set's draws
 
 >>> from derive.solution.answers import Solution
 >>> from derive.language.problem import load
->>> solution = Solution(load("tests/textbook/states/rod_swings_down.yaml"))
+>>> solution = Solution(load("rod_swings_down"))
 >>> solution._state_conditions()[0][2]
 "the motion never gets to the state lowest at these values (it lies off the scene's geometry there)"
 """

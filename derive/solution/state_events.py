@@ -9,7 +9,7 @@ the chain's next motion starts (derive.solution.state_answers).
 
 >>> from derive.solution.answers import Solution
 >>> from derive.language.problem import load
->>> solution = Solution(load("tests/textbook/states/rod_ballistic_pendulum.yaml"))
+>>> solution = Solution(load("rod_ballistic_pendulum"))
 >>> sorted(solution._chain.impacts)
 ['struck']
 """
