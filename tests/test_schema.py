@@ -65,8 +65,8 @@ MISSPELLINGS = [
     ("problems/rolling/rolling_incline.yaml", ("scene", "bodies", "ball"), "mass", "mas"),
     ("problems/rolling/rolling_incline.yaml", ("scene", "surfaces", "ramp", "incline"), "angle", "angel"),
     ("problems/rolling/rolling_incline.yaml", ("ask",), None, None),
-    ("tests/textbook/ladder_statics.yaml", ("scene", "joints", "head"), "touches", "touch"),
-    ("tests/textbook/spring_horizontal.yaml", ("scene", "loads", 1, "spring"), "stiffness", "stifness"),
+    ("problems/statics/ladder_statics.yaml", ("scene", "joints", "head"), "touches", "touch"),
+    ("problems/oscillations/spring_horizontal.yaml", ("scene", "loads", 1, "spring"), "stiffness", "stifness"),
 ]
 
 

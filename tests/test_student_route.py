@@ -5,25 +5,18 @@ energy for a speed between two states, and the two engine routes only as the pro
 Each case names the textbook route it follows and checks the principle of each step, the number of
 equations, and the result against the closed form the text prints (written here, not read back).
 """
-from pathlib import Path
-
 import pytest
 import sympy as sp
 
 from conftest import run_derive
-from derive.core import library
 from derive.language.problem import load
 from derive.solution.answers import Solution
 
-ROOT = Path(__file__).resolve().parent.parent
 
 
 def _load(problem_id: str):
-    """A library problem, or a textbook setup of the test suite not (yet) in the library."""
-    if problem_id in {p.stem for p in library.problem_files()}:
-        return load(problem_id)
-    (path,) = (ROOT / "tests" / "textbook").rglob(f"{problem_id}.yaml")
-    return load(path)
+    """A library problem (the textbook setups among them)."""
+    return load(problem_id)
 
 
 def _symbols(*names):

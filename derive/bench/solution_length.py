@@ -1,6 +1,6 @@
 """`derive bench --only solution_length`: how long the students' worked solutions are.
 
-For every library problem and every textbook setup of the test suite (tests/textbook), the number
+For every library problem (the lecture notes' and the textbook setups), the number
 of displayed equations in the worked solution a student reads: the student's route where it is
 written (derive.solution.textbook), else the engine's (the two routes, an integral, an orbit's
 equation), which is what the students read there. Printed per problem, then the median and the worst of each kind;
@@ -22,15 +22,9 @@ from derive.core.errors import InputError
 from derive.language.problem import load
 from derive.solution.answers import Solution
 
-TEXTBOOK = Path(__file__).resolve().parents[2] / "tests" / "textbook"
-
-
 def references() -> list[str]:
-    """The library's problems and the test suite's textbook setups (where the repository has them)."""
-    found = [p.stem for p in library.problem_files()]
-    if TEXTBOOK.is_dir():
-        found += [str(p) for p in sorted(TEXTBOOK.rglob("*.yaml"))]
-    return found
+    """The library's problems."""
+    return [p.stem for p in library.problem_files()]
 
 
 def count(refs: list[str], say) -> dict[str, tuple[str, int]]:
@@ -42,7 +36,7 @@ def count(refs: list[str], say) -> dict[str, tuple[str, int]]:
             solution = Solution(load(ref))
             student = solution.student_steps
             steps = student if student is not None else solution.steps()
-        except (InputError, ValueError) as error:  # a setup the engine refuses (tests/textbook/PENDING.md)
+        except (InputError, ValueError) as error:  # a problem the engine refuses: said, not counted
             say(f"  {name:<40} refused: {str(error)[:60]}")
             continue
         kind = "textbook" if student is not None else "engine"

@@ -9,8 +9,7 @@ The values it gives are checked against both routes' (derive.solution.crosscheck
 
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
->>> from pathlib import Path
->>> solution = Solution(load(Path("tests/textbook/ladder_statics.yaml")))
+>>> solution = Solution(load("ladder_statics"))
 >>> route = statics(solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
 ...                 solution._sample)
 >>> print(route.steps[0].text)
