@@ -12,7 +12,6 @@ message names the file and the field.
 """
 from __future__ import annotations
 
-import json
 import re
 from dataclasses import dataclass, field as dataclass_field
 from decimal import ROUND_CEILING, ROUND_FLOOR, Context, Decimal, localcontext
@@ -27,7 +26,7 @@ from derive.numbers import numeric
 from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT, TITLE_LIMIT, TOPIC_LIMIT)
 from derive.core.errors import EngineLimit, ProblemError
 from derive.core.keys import Key, Keys
-from derive.language import ask_options, labels
+from derive.language import ask_options, derivation_source, labels
 from derive.language.reader import Loader, Reader
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
@@ -62,22 +61,6 @@ PROBLEM = Keys(id=Key("text", "its id: letters, digits and _", required=True),
                corrections=Key("list", "errors of the notes this problem corrects", items=CORRECTION),
                conditions=Key("list", "what the answers need to make sense; a variant is redrawn until they hold",
                               items=CONDITION))
-TEXT_ONLY = ("question", "title", "topic", "source", "corrections", "difficulty", "tags")  # fields no derivation reads
-
-
-def _canonical(raw):
-    """Parsed YAML as JSON writes it (keys as text; anything else by its repr), for a stable digest.
-
-    >>> json.dumps(_canonical({1: [True, None, 0.5]}))
-    '{"1": [true, null, 0.5]}'
-    """
-    if isinstance(raw, dict):
-        return {str(k): _canonical(v) for k, v in raw.items()}
-    if isinstance(raw, (list, tuple)):
-        return [_canonical(v) for v in raw]
-    return raw if isinstance(raw, (str, int, float, bool, type(None))) else repr(raw)
-
-
 def exact_decimal(value: sp.Expr) -> Decimal:
     """A number of a problem file as a decimal: exact for a decimal literal, 60 digits otherwise.
 
@@ -238,7 +221,7 @@ class Problem:
     scene_units: dict[sp.Symbol, str]
     conditions: tuple[Condition, ...] = ()
     held_to_range: frozenset[sp.Symbol] = frozenset()  # parameters the file's signs were proven over the ranges of
-    # What a derivation reads of the file: its fields but the text (TEXT_ONLY), as JSON with sorted keys (the
+    # What a derivation reads of the file: its fields but the text (derive.language.derivation_source; the
     # derivation cache's key: derive.publishing.derivation_cache).
     derivation_source: str = dataclass_field(default="", repr=False, compare=False)
     difficulty: str = ""  # derive.language.labels: "" where the file gives none
@@ -544,8 +527,7 @@ def parse(text: str, path: Path) -> Problem:
         scene_units=dict(reader.symbol_units),
         conditions=conditions,
         held_to_range=frozenset(reader.held_to_range),
-        derivation_source=json.dumps(_canonical({k: v for k, v in raw.items() if k not in TEXT_ONLY}), sort_keys=True,
-                                     ensure_ascii=False),
+        derivation_source=derivation_source.of(raw),
         difficulty=difficulty,
         tags=tags,
     )
