@@ -101,7 +101,7 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
     moving = [_moving(body, coords, direction, index, sample) for body in scene.bodies.values()]
     leading = next(m for m in moving if m.name == leading.name)
     flipped = {u: -1 if sample(reference[u]) < 0 else 1 for c in scene.constraints for u in c.unknowns().values()}
-    loads = [load for load in all_forces(scene, coords)]
+    loads = all_forces(scene, coords)
     names = _names(moving, leading, scene)
     base = names[leading.name, "a" if leading.heading is not None else "alpha"]
     equations, steps = [], []
@@ -164,7 +164,7 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
 def _dynamic(direction: sp.Matrix, scene: Scene) -> bool:
     """Whether the start's direction depends on the bodies' masses or moments of inertia (two blocks
     on a movable wedge), so that the ratios of their accelerations are no constraint's to state."""
-    sizes = {s for b in scene.bodies.values() for size in b.sizes.values() for s in sp.sympify(size).free_symbols}
+    sizes = {s for b in scene.bodies.values() for size in b.sizes.values() for s in getattr(size, 'free_symbols', ())}
     inertial = {s for b in scene.bodies.values() for e in (b.mass, b.inertia) if e is not None
                 for s in e.free_symbols} - sizes
     return any(x.free_symbols & inertial for x in direction)

@@ -27,6 +27,7 @@ from derive.core.errors import EngineLimit
 from derive.numbers.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
 from derive.mechanics import impacts, integrated_motion, lagrange, many_bodies, orbits, paths, reaching
 from derive.mechanics.oscillation import NotAPendulum, exact_period
+from derive.mechanics.small_swings import SmallSwing
 from derive.mechanics.derivation import row_reduced
 from derive.language.problem import Ask, Problem
 from derive.model.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
@@ -167,7 +168,7 @@ class CrossChecks:
         the center or a pivot) gives every acceleration and force it finds as Lagrange's method does;
         it is built from Newton–Euler's balances, projected, so an error of the projection shows here."""
         route = self.textbook_route
-        if not hasattr(route, "values"):  # a small swing about a pivot: omega^2 is the stiffness the routes give
+        if isinstance(route, SmallSwing):  # omega^2 is the stiffness the routes give
             engine = self.oscillations["lagrange"].stiffness
             method = agree(route.omega**2, engine, points=sample_points(self.problem, sp.Tuple(route.omega, engine), count=5))
             if method is None:
