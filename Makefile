@@ -11,7 +11,7 @@ setup: $(VENV)/.installed tools
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[test,docs]'
+	$(BIN)/pip install --quiet -e '.[test,docs,cluster]'
 	touch $@
 
 tools:
@@ -25,9 +25,10 @@ docs: setup
 
 test: setup
 	$(BIN)/python -m pyflakes derive tests benchmarks docs/hooks.py
-	# one worker per core (pytest-xdist): the suite takes 7 to 14 min on 2 cores. A fixed hash seed, so
-	# that a run can be repeated: sympy orders terms by string hashes
-	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto
+	# one worker per core (pytest-xdist), an idle one taking tests queued for a busy one (worksteal):
+	# the suite takes about 20 min on 2 cores, and prints its slowest tests, so that a test grown slow
+	# shows. A fixed hash seed, so that a run can be repeated: sympy orders terms by string hashes
+	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto --dist worksteal --durations=25
 
 clean:
 	rm -rf build .pytest_cache

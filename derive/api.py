@@ -13,7 +13,18 @@ Answer(a = -2*g*m/(M + 2*m) = -4.905 m/s^2)
 >>> result["a"]._repr_latex_()
 '$$a = - g \\frac{2 m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}$$'
 >>> result.at({"m": 1})["T"].value  # the same derivation, m changed
-'6.540'
+Decimal('6.540')
+
+An answer's `expression` is in the problem's own symbols, which carry sympy's assumptions
+(positive=True for a mass or a length): compare with `result.symbols`, not with a plain
+`sp.symbols("m M g")`, which sympy holds to be other symbols.
+
+>>> s = result.symbols
+>>> sp.simplify(result["a"].expression + 2 * s.g * s.m / (s.M + 2 * s.m))
+0
+>>> newton_euler = result.equations["newton_euler"]  # sympy equations, at rest in the reference state
+>>> newton_euler[2]  # the disk's torque balance
+Eq(M*R**2*thetaddot_disk/2, -R*T_string)
 """
 from __future__ import annotations
 
@@ -21,38 +32,50 @@ import html
 import os
 from collections.abc import Mapping
 from dataclasses import dataclass
+from decimal import Decimal
+from functools import cached_property
 from pathlib import Path
+from types import SimpleNamespace
 
 import sympy as sp
 
 from derive.text.latex import latex_of
 from derive.language import defaults, problem_sets
-from derive.publishing import report, worksheets as sheets
+from derive.publishing import cluster, report, worksheets as sheets
 from derive.core import units
 from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
 from derive.solution.answers import Solution
 from derive.core.errors import InputError
-from derive.language.problem import Problem, load
+from derive.language.problem import Problem
+from derive.language import problem as problem_files
 from derive.publishing.progress import MODES, Reporter
 
-__all__ = ["load", "solve", "sheet", "Result", "Answer"]
+__all__ = ["load", "solve", "sheet", "Result", "Answer", "Figure"]
 
 
 @dataclass(frozen=True)
 class Answer:
     """One asked quantity at the values solved for: its exact `expression` (sympy, in the
-    parameters' symbols, SI) and its `value` in its declared `unit`, to the digits asked
-    (None when a parameter it uses has no value)."""
+    parameters' symbols, SI) and its `value` in its declared `unit`, a Decimal of the digits asked,
+    each of them certified by interval arithmetic (None when a parameter it uses has no value);
+    `text` is the value as `derive solve` prints it, `direction` its direction in words where the
+    quantity has one (the value is then its magnitude)."""
 
     name: str
     meaning: str
     expression: sp.Expr
     unit: str
-    value: str | None
+    text: str | None
+    direction: str | None
     equation: str  # LaTeX: "a = expression = value unit", as `derive solve --format latex` prints it
 
+    @property
+    def value(self) -> Decimal | None:
+        return None if self.text is None else Decimal(self.text)
+
     def __repr__(self) -> str:
-        shown = f" = {self.value}{_unit_text(self.unit)}" if self.value is not None else ""
+        toward = f" {self.direction}" if self.direction else ""
+        shown = f" = {self.text}{_unit_text(self.unit)}{toward}" if self.text is not None else ""
         return f"Answer({self.name} = {sp.sstr(self.expression)}{shown})"
 
     def _repr_latex_(self) -> str:
@@ -72,10 +95,38 @@ class Result:
         self.values = _overrides(values)  # as `--set` takes them
         self.report = report.solve(problem, self.values, digits, solution)
         self.answers = {
-            name: Answer(name, a["meaning"], solution.expressions[name], a["unit"], a["value"],
+            name: Answer(name, a["meaning"], solution.expressions[name], a["unit"], a["value"], a["direction"],
                          report.answer_latex(name, a))
             for name, a in self.report["answers"].items()
         }
+
+    @property
+    def symbols(self) -> SimpleNamespace:
+        """The problem's symbols by name (`result.symbols.M`), as its expressions hold them."""
+        return self.problem.symbols
+
+    @cached_property
+    def equations(self) -> dict[str, list[sp.Eq]]:
+        """Each route's equations of motion ("lagrange", "newton_euler") at rest in the reference
+        configuration, as sympy equations; empty where nothing asked moves."""
+        return report.equations_of_motion(self.solution)
+
+    @cached_property
+    def _figures(self) -> dict[str, Figure]:
+        from derive.publishing import figures_shown  # TeX and poppler: only where a figure is asked for
+        return {name: Figure(name, image.svg.decode("utf-8"), alt)
+                for name, (image, alt) in figures_shown.images(self.problem, self.solution).items()}
+
+    @property
+    def figure(self) -> Figure | None:
+        """The scene's figure, as the worksheet draws it (SVG; compiled by TeX on first use), or
+        None where the problem has none."""
+        return self._figures.get(self.problem.id)
+
+    @property
+    def free_bodies(self) -> dict[str, Figure]:
+        """The free-body diagrams the worked solution shows, by body."""
+        return {name.rsplit("-free-body-", 1)[1]: f for name, f in self._figures.items() if "-free-body-" in name}
 
     def __getitem__(self, name: str) -> Answer:
         if name not in self.answers:
@@ -97,7 +148,7 @@ class Result:
         return report.as_json(self.report)
 
     def __repr__(self) -> str:
-        shown = ", ".join(f"{a.name} = {a.value}{_unit_text(a.unit)}" if a.value is not None
+        shown = ", ".join(f"{a.name} = {a.text}{_unit_text(a.unit)}" if a.text is not None
                           else f"{a.name} = {sp.sstr(a.expression)}" for a in self.answers.values())
         return f"Result({self.problem.id}: {shown})"
 
@@ -117,6 +168,63 @@ class Result:
         given = f"<p>at {', '.join(map(_math, self._given()))}</p>" if self._given() else ""
         return (f"<div><p><strong>{html.escape(self.problem.title)}</strong> "
                 f"(<code>{html.escape(self.problem.id)}</code>)</p><table>{rows}</table>{given}</div>")
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A figure as SVG, which Jupyter shows: `svg` its text, `alt` what it shows in words."""
+
+    name: str
+    svg: str
+    alt: str
+
+    def _repr_svg_(self) -> str:
+        return self.svg
+
+    def save(self, path: str | os.PathLike) -> Path:
+        """Write the SVG file; return its path."""
+        path = Path(path)
+        path.write_text(self.svg, encoding="utf-8")
+        return path
+
+
+def load(problem: str | os.PathLike | Mapping) -> Problem:
+    """A problem from its file, its library id, or a mapping built in Python with the keys and
+    values a problem file holds (checked as a file is; errors name `<python>` for the file).
+
+    >>> rod = {"id": "my_rod", "title": "A rod", "question": "Find the rod's moment of inertia about an end.",
+    ...        "parameters": {"m": {"meaning": "mass", "unit": "kg", "value": 2},
+    ...                       "L": {"meaning": "length", "unit": "m", "value": 1}},
+    ...        "scene": {"bodies": {"rod": {"shape": "rod", "mass": "m", "length": "L"}}},
+    ...        "ask": {"I": {"meaning": "moment of inertia about an end", "of": "rod.inertia", "axis": "end",
+    ...                      "unit": "kg*m^2"}}}
+    >>> solve(rod, digits=4)["I"]
+    Answer(I = L**2*m/3 = 0.6667 kg*m^2)
+    >>> load({**rod, "colour": "red"})
+    Traceback (most recent call last):
+    ...
+    derive.core.errors.ProblemError: <python>: colour: unknown key (allowed: ask, conditions, corrections, difficulty, id, ...)
+    """
+    if isinstance(problem, Mapping):
+        return problem_files.parse(_as_yaml(problem, ""), Path("<python>"))
+    return problem_files.load(problem)
+
+
+def _as_yaml(value, field: str) -> str:
+    """A mapping of plain values (text, numbers, lists, mappings) as the YAML of a problem file."""
+    import yaml
+
+    def plain(v, where):
+        if isinstance(v, Mapping):
+            return {str(k): plain(item, f"{where}.{k}" if where else str(k)) for k, item in v.items()}
+        if isinstance(v, (list, tuple)):
+            return [plain(item, f"{where}[{i}]") for i, item in enumerate(v)]
+        if v is None or isinstance(v, (str, int, float, bool)):
+            return v
+        raise InputError(f"<python>: {where}: expected text, a number, a list or a mapping, as a problem file "
+                         f"holds, got {type(v).__name__} (write an expression as text: \"M*R**2/2\")")
+
+    return yaml.safe_dump(plain(value, field), sort_keys=False, allow_unicode=True)
 
 
 def _math(latex: str) -> str:
@@ -151,7 +259,7 @@ def _digits(digits) -> int | None:
     return None if digits is None else _whole("digits", digits, 1, MAX_DIGITS)
 
 
-def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, digits: int | None = 15) -> Result:
+def solve(problem: Problem | str | os.PathLike | Mapping, values: Mapping | None = None, digits: int | None = 15) -> Result:
     """Derive a problem (a Problem, a problem file or a library id) and answer it at `values`:
     {name: value}, a number in the parameter's declared unit or a text with a unit ("200 g"), as
     `derive solve --set` takes them. Parameters not given keep the file's value; an answer that
@@ -171,7 +279,8 @@ def solve(problem: Problem | str | os.PathLike, values: Mapping | None = None, d
 
 def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = None, *, variants: int | None = None,
           seed: int | None = None, to: str | list[str] | None = None, questions: str | None = None,
-          title: str | None = None, progress: str | Reporter = "auto", jobs: int = 1, cache: bool = True) -> list[Path]:
+          title: str | None = None, progress: str | Reporter = "auto", jobs: int = 1, cache: bool = True,
+          scheduler: str | None = None) -> list[Path]:
     """Build a problem set as `derive sheet` does, into `out` (default build/<set id>); return
     the files written.
 
@@ -181,7 +290,8 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
     the keys: "pdf,html" or a list; [] for none), `questions` ("numerical" or "choice") override
     the set's. `progress`: "auto", "bar", "lines" or "none" (stderr). `jobs` processes derive the
     problems; `cache`: take each derivation from the derivation cache where it holds it, and keep
-    the others there (as `derive sheet --jobs`, `--no-cache`).
+    the others there; `scheduler`: a Dask scheduler's address, whose workers derive them (as
+    `derive sheet --jobs`, `--no-cache`, `--scheduler`).
 
     >>> sheet(["rod_endpoint"], to="pfd")
     Traceback (most recent call last):
@@ -207,6 +317,7 @@ def sheet(ids_or_set: str | os.PathLike | list, out: str | os.PathLike | None = 
     return sheets.build(
         problem_set, out_dir=out, questions=questions, progress=progress, defaults=course,
         jobs=_whole("jobs", jobs, 1, 256), cache=bool(cache),
+        scheduler=None if scheduler is None else cluster.check_address(str(scheduler)),
         variants=None if variants is None else _whole("variants", variants, 1, MAX_VARIANTS),
         seed=None if seed is None else _whole("seed", seed),
         formats=None if to is None else defaults.outputs(to if isinstance(to, str) else ",".join(to), "--to"))

@@ -23,7 +23,7 @@ from derive.core.limits import MAX_DIGITS, MAX_VARIANTS
 from derive.core.errors import EngineLimit, InputError, MissingTool, Terminated
 from derive.language import labels
 
-from derive.cli_options import BadInput, FiniteRange, Seconds, check_environment, parse_assignments
+from derive.cli_options import BadInput, FiniteRange, Seconds, check_environment, derives_options, parse_assignments
 
 FORMATS = click.Choice(["text", "latex", "json"])
 
@@ -41,23 +41,6 @@ def progress_option(command):
         progress = Reporter(progress_mode)
         with progress.steps_shown():
             return command(*args, progress=progress, **kwargs)
-
-    return wrapper
-
-
-def derives_options(command):
-    """`--jobs N` (default: the cores) and `--no-cache`, handed to the command as jobs and cache."""
-
-    @click.option("--jobs", type=click.IntRange(1, 256), default=None, metavar="N",
-                  help="Derive the problems in N processes at once (the output is the same). [default: the cores]")
-    @click.option("--no-cache", "no_cache", is_flag=True,
-                  help="Derive every problem again, neither reading nor writing the derivation cache "
-                       "(see `derive cache --help`).")
-    @functools.wraps(command)
-    def wrapper(*args, jobs: int | None, no_cache: bool, **kwargs):
-        from derive.publishing.deriving import cores  # light: no sympy
-
-        return command(*args, jobs=jobs or cores(), cache=not no_cache, **kwargs)
 
     return wrapper
 
@@ -530,7 +513,8 @@ def handout(problem: str, out_dir: str | None, progress) -> None:
 @progress_option
 @reports_errors
 def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, out_dir: str | None,
-          formats: str | None, questions: str | None, progress, jobs: int, cache: bool) -> None:
+          formats: str | None, questions: str | None, progress, jobs: int, cache: bool,
+          scheduler: str | None) -> None:
     """Build a problem set: worksheet, worked solutions and answer key.
 
     SET is a set file or the id of one in problems/sets/; or give one or more PROBLEMs
@@ -542,13 +526,14 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
     QTI 1.2 zip for Canvas. A derive.toml in the working folder gives course defaults
     (see the documentation: Course defaults). Each problem's derivation is kept in the derivation
     cache (`derive cache --help`): a rebuild after a new seed or a question's text derives nothing;
-    the others are derived --jobs at a time.
+    the others are derived --jobs at a time, or by a Dask cluster's workers (--scheduler).
 
     \b
     Examples:
       derive sheet demo --variants 30 --seed 7 --to pdf,moodle
       derive sheet rod_endpoint tugged_spool --out build/two
       derive sheet demo --jobs 1 --no-cache
+      derive sheet bank.yaml --scheduler tcp://10.0.0.5:8786
 
     \b
     A set file needs a title and its problems; the rest has defaults:
@@ -562,7 +547,8 @@ def sheet(references: tuple[str, ...], variants: int | None, seed: int | None, o
 
     wanted = None if formats is None else defaults.outputs(formats, "--to")
     built = sheets.build(references, variants=variants, seed=seed, out_dir=out_dir, formats=wanted,
-                         questions=questions, defaults=defaults.load(), progress=progress, jobs=jobs, cache=cache)
+                         questions=questions, defaults=defaults.load(), progress=progress, jobs=jobs, cache=cache,
+                         scheduler=scheduler)
     for path in built:
         click.echo(str(path))
 

@@ -6,6 +6,7 @@ one-line errors with exit status 2 (BadInput), a time limit, a finite number, `-
 """
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -67,3 +68,34 @@ def parse_assignments(assignments: tuple[str, ...]) -> dict[str, str]:
             raise BadInput(f"--set {text}: expected NAME=VALUE, e.g. --set m=2 or --set \"m=200 g\"")
         result[name.strip()] = value.strip()
     return result
+
+
+def derives_options(command):
+    """`--jobs N` (default: the cores), `--no-cache` and `--scheduler ADDRESS`, handed to the command
+    as jobs, cache and scheduler."""
+
+    @click.option("--jobs", type=click.IntRange(1, 256), default=None, metavar="N",
+                  help="Derive the problems in N processes at once (the output is the same). [default: the cores]")
+    @click.option("--no-cache", "no_cache", is_flag=True,
+                  help="Derive every problem again, neither reading nor writing the derivation cache "
+                       "(see `derive cache --help`).")
+    @click.option("--scheduler", default=None, metavar="ADDRESS",
+                  help="Derive the problems on the workers of this Dask scheduler (tcp://host:8786) in place of "
+                       "--jobs processes; needs derive's cluster extra (pip install 'derive[cluster]') here and the "
+                       "same derive on the workers.")
+    @functools.wraps(command)
+    def wrapper(*args, jobs: int | None, no_cache: bool, scheduler: str | None, **kwargs):
+        from derive.publishing.deriving import cores  # light: no sympy
+
+        if scheduler is not None and jobs is not None:
+            raise BadInput("--jobs and --scheduler: give one (the scheduler's workers derive in place of the processes)")
+        if scheduler is not None:
+            from derive.publishing.cluster import check_address  # light
+
+            try:
+                check_address(scheduler)
+            except InputError as error:
+                raise BadInput(str(error)) from None
+        return command(*args, jobs=jobs or cores(), cache=not no_cache, scheduler=scheduler, **kwargs)
+
+    return wrapper

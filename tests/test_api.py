@@ -6,10 +6,14 @@ import re
 import subprocess
 import sys
 
+import lxml.etree
 import lxml.html
 import nbformat
 import pytest
 from nbclient import NotebookClient
+
+import sympy as sp
+from decimal import Decimal
 
 import derive
 from conftest import ROOT, run_derive, write_problem
@@ -36,9 +40,58 @@ def test_solve_gives_what_derive_solve_prints():
     assert result.report == json.loads(cli.stdout)
     assert result.as_json() == cli.stdout.rstrip("\n")
     a = result["a"]
-    assert (a.value, a.unit, str(a.expression)) == ("-4.90500", "m/s^2", "-2*g*m/(M + 2*m)")
+    assert (a.text, a.unit, str(a.expression)) == ("-4.90500", "m/s^2", "-2*g*m/(M + 2*m)")
+    assert a.value == Decimal("-4.90500") and str(a.value) == "-4.90500"  # the digits asked, kept
     assert result.at({"m": "500 g"})["a"].value == derive.solve("string_wrapped_disk", {"m": 0.5, "M": 4, "R": 0.3},
                                                                  digits=6)["a"].value
+
+
+def test_answers_are_sympy_in_the_problems_own_symbols():
+    result = derive.solve("string_wrapped_disk", {"m": 2, "M": 4, "R": 0.3})
+    s = result.symbols
+    assert sp.simplify(result["a"].expression + 2 * s.g * s.m / (s.M + 2 * s.m)) == 0
+    plain = sp.symbols("g m M")  # no assumptions: sympy holds them to be other symbols
+    assert sp.simplify(result["a"].expression + 2 * plain[0] * plain[1] / (plain[2] + 2 * plain[1])) != 0
+    assert {n for n in vars(s)} == {"m", "M", "R", "g"} and s.M.is_positive
+    assert result.symbols == result.problem.symbols
+    for route in ("lagrange", "newton_euler"):
+        assert result.equations[route] and all(isinstance(e, sp.Eq) for e in result.equations[route])
+    assert [sp.sstr(e) for e in result.equations["newton_euler"]] == result.report["equations_of_motion"]["newton_euler"]
+    assert derive.solve("rod_endpoint").equations == {}  # nothing moves
+
+
+def test_an_answer_with_a_direction_is_a_magnitude_and_words():
+    result = derive.solve("rolling_incline", {"M": 2, "R": 0.1, "H": 1, "theta": 0.5, "mu_s": 0.5}, digits=4)
+    friction = next(a for a in result.answers.values() if a.direction)
+    assert friction.value > 0 and friction.direction in repr(friction)
+    assert friction.direction == result.report["answers"][friction.name]["direction"]
+
+
+def test_a_problem_built_in_python_is_a_files_problem(tmp_path):
+    text = (ROOT / "problems").rglob("rod_endpoint.yaml").__next__().read_text()
+    import yaml
+    mapping = yaml.safe_load(text)
+    from_python, from_file = derive.solve(mapping, digits=6), derive.solve("rod_endpoint", digits=6)
+    assert from_python.report["answers"] == from_file.report["answers"]
+    assert from_python.problem.path.name == "<python>"
+    with pytest.raises(derive.core.errors.ProblemError, match=r"^<python>: parameters\.m\.sig_figs: "):
+        derive.load({**mapping, "parameters": {**mapping["parameters"], "m": {**mapping["parameters"]["m"], "sig_figs": 0}}})
+    with pytest.raises(InputError, match=r"^<python>: parameters\.m\.value: expected text, a number, .* got Symbol"):
+        derive.load({**mapping, "parameters": {**mapping["parameters"], "m": {**mapping["parameters"]["m"],
+                                                                           "value": sp.Symbol("x")}}})
+
+
+def test_figures_show_as_svg_in_jupyter(tmp_path):
+    result = derive.solve("string_wrapped_disk")
+    figure = result.figure
+    tree = lxml.etree.fromstring(figure._repr_svg_().encode())
+    assert tree.tag == "{http://www.w3.org/2000/svg}svg" and len(tree.findall(".//{*}path")) > 5
+    assert set(result.free_bodies) == {"disk", "block"}
+    assert result.free_bodies["block"].alt.startswith("Free-body diagram of the block: ")
+    assert result.free_bodies["disk"].svg != figure.svg
+    saved = figure.save(tmp_path / "disk.svg")
+    assert saved.read_text() == figure.svg
+    assert derive.solve("rod_endpoint").free_bodies == {}  # no dynamics: no balance of forces drawn
 
 
 def test_solutions_and_answers_show_as_math():
@@ -139,6 +192,12 @@ def test_example_notebook_runs_and_shows_math(tmp_path):
     answer = outputs['result["a"]'][0]["data"]
     assert answer["text/latex"] == "$$a = - g \\frac{2 m}{M + 2 m} = -4.905\\,\\mathrm{m}/\\mathrm{s}^{2}$$"
     assert answer["text/html"].startswith("<p>acceleration of the block (y up): \\(a = ")
+    assert outputs["T.value, T.text"][0]["data"]["text/plain"] == "(Decimal('6.540'), '6.540')"
+    assert outputs['sp.simplify(result["a"].expression - (-2 * s.g * s.m / (s.M + 2 * s.m)))'][0]["data"]["text/plain"] == "0"
+    assert outputs['result.equations["newton_euler"][:3]'][0]["data"]["text/plain"].startswith("[Eq(")
+    for shown in ("result.figure", 'result.free_bodies["disk"]'):
+        assert outputs[shown][0]["data"]["image/svg+xml"].lstrip().startswith("<?xml"), shown
+    assert outputs['derive.solve(rod, digits=3)["I"]'][0]["data"]["text/plain"] == "Answer(I = L**2*m/3 = 0.667 kg*m^2)"
     lighter = outputs['result.at({"m": 1})["T"]'][0]["data"]
     assert lighter["text/latex"] == "$$T = g m \\frac{M}{M + 2 m} = 6.540\\,\\mathrm{N}$$"
     built = outputs["sorted(path.name for path in files)"][0]["data"]["text/plain"]

@@ -13,6 +13,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 import sympy as sp
+from sympy.core import random
 
 from derive.core import limits
 
@@ -46,6 +47,12 @@ def simplest(expr: sp.Expr) -> sp.Expr:
 #: trigsimp as they are, which keeps the textbook's forms
 #: (M g (3 sin^2 + 1)/4, not -M g (3 cos^2 - 4)/4) and the equations sympy's solve finds roots of.
 LONG = 200
+#: sympy's multivariate factoring (Wang's algorithm, which trigsimp and factor run) draws random
+#: evaluation points from sympy's own generator, seeded afresh in each process: the same tidy took
+#: 0.3 s or 32 s by the draw (a bearing's force, in a box tilted and rolled; a test ran 20 minutes).
+#: tidy seeds it before each expression, so that its time, like its result, is the expression's
+#: alone: a slow one is slow every time, and shows in the tests.
+SEED = 0
 
 
 def tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...] = ()) -> sp.Expr:
@@ -69,6 +76,7 @@ def _tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...]) -> sp.Expr:
         folded = sp.piecewise_fold(expr)
         if isinstance(folded, sp.Piecewise):
             return sp.Piecewise(*((tidy(value, placed), where) for value, where in folded.args))
+    random.seed(SEED)  # its time a function of `expr` alone (module docstring of SEED)
     with limits.time_limit("simplifying"):
         expr = sp.cancel(sp.together(radicals(expr, placed)))
         if expr.has(sp.sin, sp.cos) and _plain_angles(expr) and not _rational_trigonometric(expr) \

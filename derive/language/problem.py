@@ -17,6 +17,7 @@ from dataclasses import dataclass, field as dataclass_field
 from decimal import ROUND_CEILING, ROUND_FLOOR, Context, Decimal, localcontext
 from functools import cached_property
 from pathlib import Path
+from types import SimpleNamespace
 
 import sympy as sp
 import yaml
@@ -233,6 +234,18 @@ class Problem:
     def limit(self, what: str) -> EngineLimit:
         """An engine limit met by this problem: "FILE: derive cannot yet WHAT" (exit 1)."""
         return EngineLimit(str(self.path), what)
+
+    @property
+    def symbols(self) -> SimpleNamespace:
+        """The symbols the answers are written in, by name (`problem.symbols.M`): the parameters and
+        the sizes the scene leaves open, with their assumptions (a mass is positive=True), so that
+        an expression built from them compares with the answers as sympy compares.
+
+        >>> load("rod_endpoint").symbols
+        namespace(m=m, L=L)
+        """
+        named = {p.symbol.name: p.symbol for p in self.parameters.values()}
+        return SimpleNamespace(**named, **{s.name: s for s in self.scene_units if s.name not in named})
 
     @property
     def symbol_units(self) -> dict[sp.Symbol, str]:

@@ -20,10 +20,10 @@ import logging
 import multiprocessing
 import os
 import signal
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from derive.language.problem import Problem, load
-from derive.publishing import derivation_cache
+from derive.publishing import cluster, derivation_cache
 from derive.publishing.progress import Reporter
 from derive.solution.answers import Solution
 
@@ -37,9 +37,11 @@ def cores() -> int:
 
 
 def derive(problems: Sequence[Problem], jobs: int = 1, cache: bool = True, progress: Reporter = Reporter(),
-           where: Callable[[int], object] | None = None) -> list[tuple[Solution, bool]]:
+           where: Callable[[int], object] | None = None, scheduler: str | None = None) -> list[tuple[Solution, bool]]:
     """Each problem's Solution (derivation_cache.derived) and whether it came from the cache, in
-    order. `where(i)` is a context manager that names problem i in its errors (a set's entry)."""
+    order. `where(i)` is a context manager that names problem i in its errors (a set's entry).
+    `scheduler`: a Dask scheduler's address, whose workers derive them in place of `jobs` processes
+    (derive.publishing.cluster)."""
     results: list[tuple[Solution, bool] | None] = [None] * len(problems)
     cap = derivation_cache.size_cap() if cache else 0  # a bad DERIVE_CACHE_MB refused before any derivation
     keys = [derivation_cache.key(p) if cache else None for p in problems]
@@ -51,13 +53,19 @@ def derive(problems: Sequence[Problem], jobs: int = 1, cache: bool = True, progr
                 begin(f"{problem.id} (from the cache)")
         missing = [i for i, r in enumerate(results) if r is None]
         workers = min(jobs, len(missing))
-        payloads = _in_workers([problems[i] for i in missing], workers, begin) if workers > 1 else {}
+        waiting = [problems[i] for i in missing]
+        if scheduler is not None and missing:
+            payloads = _collected(waiting, cluster.derived(waiting, scheduler), begin, " on the cluster")
+        elif workers > 1:
+            payloads = _collected(waiting, _in_workers(waiting, workers), begin)
+        else:
+            payloads = {}
         for n, i in enumerate(missing):
             problem = problems[i]
             payload = payloads.get(n)
             solution = derivation_cache.loads(payload, problem) if payload is not None else None
             if solution is None:  # one job, or a failure in a worker: here, with its error named
-                if workers <= 1:
+                if workers <= 1 and scheduler is None:
                     begin(problem.id)
                 with where(i) if where else contextlib.nullcontext():
                     solution = derivation_cache.derived(problem)
@@ -69,11 +77,10 @@ def derive(problems: Sequence[Problem], jobs: int = 1, cache: bool = True, progr
     return results
 
 
-def _in_workers(problems: Sequence[Problem], workers: int, begin: Callable[[str], None]) -> dict[int, bytes]:
-    """The problems' solutions as bytes, derived by `workers` processes, by index (missing where
-    a worker failed); `begin` reports each as it ends, with those still running."""
+def _in_workers(problems: Sequence[Problem], workers: int) -> Iterator[tuple[int, bytes | None, list[str]]]:
+    """The problems' solutions as bytes (None where a worker failed), derived by `workers`
+    processes, by index as each ends, with the ids of those still running."""
     context = multiprocessing.get_context("fork")  # the parent's modules and settings (the time limit), no re-import
-    done: dict[int, bytes | None] = {}
     pool = context.Pool(workers, initializer=_worker_signals)
     try:
         waiting = [pool.apply_async(_derived_bytes, (str(p.path),)) for p in problems]
@@ -84,13 +91,25 @@ def _in_workers(problems: Sequence[Problem], workers: int, begin: Callable[[str]
                 waiting[pending[0]].wait(0.05)
                 continue
             pending.remove(finished)
-            done[finished] = waiting[finished].get()
-            running = [problems[n].id for n in pending[:workers]]  # the pool takes them in order
-            begin(f"{problems[finished].id} done" + (f"; running {', '.join(running)}" if running else ""))
+            yield finished, waiting[finished].get(), [problems[n].id for n in pending[:workers]]  # taken in order
         pool.close()
     finally:
         pool.terminate()  # at once, on Ctrl-C or SIGTERM too: no derivation outlives the command
         pool.join()
+
+
+def _collected(problems: Sequence[Problem], results: Iterable[tuple[int, bytes | None, list[str] | None]],
+               begin: Callable[[str], None], where: str = "") -> dict[int, bytes]:
+    """The payloads of `results` ((index, bytes or None, the ids still running where known) as each
+    ends), each reported as it ends."""
+    done = {}
+    with contextlib.closing(iter(results)) as ending:  # an error here stops the workers at once
+        for count, (n, payload, running) in enumerate(ending, start=1):
+            done[n] = payload
+            left = len(problems) - count
+            after = (f"; running {', '.join(running)}" if running else "") if running is not None else \
+                (f"; {left} left" if left else "")
+            begin(f"{problems[n].id} done{where}{after}")
     return {n: payload for n, payload in done.items() if payload is not None}
 
 

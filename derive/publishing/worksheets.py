@@ -84,6 +84,7 @@ def _entry(problem_set: ProblemSet, where: str):
 
 
 def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Reporter, jobs: int = 1,
+             scheduler: str | None = None,
              cache: bool = True) -> list[ProblemVariants]:
     """Each problem derived (its answers, checks and steps: from the derivation cache, else by `jobs`
     processes), then its variants drawn: the derivations are the set's fixed cost, the draws the
@@ -99,7 +100,7 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
             ids[problem.id] = f"{where} ({problem.path})"
         problems.append(problem)
     derived = deriving.derive(problems, jobs, cache, progress,
-                              where=lambda i: _entry(problem_set, problem_set.fields[i]))
+                              where=lambda i: _entry(problem_set, problem_set.fields[i]), scheduler=scheduler)
     gc.freeze()  # every full pass of the collector rescanned them: a fifth of the time per variant
     progress(f"drawing {variants} variant{'s' * (variants > 1)} of each problem")
     prepared = []
@@ -319,12 +320,13 @@ def _write(folder: Path, name: str, text: str) -> Path:
 def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None = None, seed: int | None = None,
           out_dir: str | None = None, formats: frozenset[str] | None = None, questions: str | None = None,
           defaults: Defaults = Defaults(), progress: Reporter = Reporter(), jobs: int = 1,
-          cache: bool = True) -> list[Path]:
+          cache: bool = True, scheduler: str | None = None) -> list[Path]:
     """Build a set (a set file or its id, problems given by themselves: load_sheet, or a
     ProblemSet: set_of) into its output folder; return the files written. Arguments left None
     take the set file's values (`variants`, `seed`, `outputs`, `questions`), and where it has
     none, the course defaults'. The problems are derived by `jobs` processes, each taken from
-    the derivation cache where it holds it (`cache`; derive.publishing.deriving)."""
+    the derivation cache where it holds it (`cache`; derive.publishing.deriving), or by the workers
+    of the Dask scheduler at `scheduler` (derive.publishing.cluster)."""
     problem_set = references if isinstance(references, ProblemSet) else \
         load_sheet([references] if isinstance(references, str) else references, defaults)
     variants = variants or problem_set.variants
@@ -337,7 +339,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
         export.require("pdftocairo")  # the figures as images
     with output_folder.claim(Path("build") / problem_set.id if out_dir is None else out_dir) as out:
         try:  # _prepare froze the derivations (alive to the end of the build) out of the collector's passes
-            prepared = _prepare(problem_set, variants, seed, progress, jobs, cache)
+            prepared = _prepare(problem_set, variants, seed, progress, jobs, scheduler, cache)
             header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due,
                       "answer_space": problem_set.answer_space}
             drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
