@@ -2,7 +2,8 @@
 
 For each problem: the independent routes (Lagrange and Newton–Euler, energy, conservation
 and impulses, integration and the parallel-axis theorem, ...), the dimensions of every
-answer, and a numerical simulation where the scene moves (of a chain of states, each of its
+answer, that no answer is negative where the question states no sign (derive.checks.signs),
+and a numerical simulation where the scene moves (of a chain of states, each of its
 motion segments from the state the link before produced: derive.checks.chain_simulation).
 
 >>> rows = audit(["rod_endpoint"])
@@ -14,7 +15,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 
-from derive.checks import chain_simulation, simulate, simulate_solid
+from derive.checks import chain_simulation, signs, simulate, simulate_solid
 from derive.core import library
 from derive.language import problem
 from derive.solution.answers import Solution
@@ -75,6 +76,9 @@ def _audit_one(reference: str, begin) -> Row:
             row.figures = tuple(f for r in reports for f in r.figures)
             if not passed:
                 row.passed, row.failure = False, "; ".join(n for r in reports for n in r.notes)
+        unstated = signs.unstated(solution)
+        if unstated:
+            row.passed, row.failure = False, "; ".join(filter(None, [row.failure, *unstated]))
     except (CheckFailure, InputError) as error:
         row.passed, row.failure = False, str(error)
     row.seconds = time.perf_counter() - start

@@ -95,18 +95,38 @@ def test_a_stencil_keeps_braces_and_names_each_holes_indent():
         stencil.fill({"a": "1"})
 
 
-def test_a_key_with_answers_in_other_units_than_si_says_so(tmp_path):
-    """With an answer in cm/s^2 the key said "SI units; angles in radians" (issue 37, degrees)."""
+def test_a_key_says_only_what_holds_for_its_answers(tmp_path):
+    """With an answer in cm/s^2 the key said "SI units; angles in radians"; with directions in words,
+    "y up; counter-clockwise positive" (issue 37, degrees). A key says each row's unit where one is not
+    SI, an angle's unit only where an angle is asked (in the unit asked), directions in words where an
+    answer has one, and a sign convention only where a value is negative."""
     from conftest import run_derive
 
-    text = load("string_wrapped_disk").path.read_text()
+    def said(problem: str, *replaced: tuple[str, str]) -> str:
+        text = load(problem).path.read_text()
+        for old, new in replaced:
+            assert old in text, old
+            text = text.replace(old, new)
+        path = tmp_path / f"{problem}.yaml"
+        path.write_text(text)
+        out = tmp_path / problem
+        done = run_derive("sheet", str(path), "--to", "", "--out", str(out), "--variants", "2", "--jobs", "1")
+        assert done.returncode == 0, done.stderr
+        key = json.loads((out / "key.json").read_text())["conventions"]
+        assert f"{key}." in (out / "key.tex").read_text()
+        return key
+
     asked = "of: block.acceleration.y, unit: m/s^2"
-    assert asked in text
-    problem = tmp_path / "p.yaml"
-    problem.write_text(text.replace(asked, asked.replace("m/s^2", "cm/s^2")))
-    done = run_derive("sheet", str(problem), "--to", "", "--out", str(tmp_path / "out"))
-    assert done.returncode == 0, done.stderr
-    assert json.loads((tmp_path / "out/key.json").read_text())["conventions"] == answer_keys.OWN_UNITS
-    assert "Each value in the unit its row gives" in (tmp_path / "out/key.tex").read_text()
-    done = run_derive("sheet", "string_wrapped_disk", "--to", "", "--out", str(tmp_path / "si"))
-    assert json.loads((tmp_path / "si/key.json").read_text())["conventions"] == answer_keys.CONVENTIONS
+    assert said("string_wrapped_disk", (asked, asked.replace("m/s^2", "cm/s^2"))) == (
+        "Each value in the unit its row gives; a negative value's sign as its question states it; "
+        "values to the significant figures shown")
+    degrees = ("unit: rad, range: [0.1, 1.2]", "unit: deg, range: [6, 68]")  # an incline stated in degrees
+    assert said("rolling_incline", degrees) == (
+        "SI units; a quantity with a direction as its magnitude, its direction beside its unit; "
+        "values to the significant figures shown")
+    angle, direction = "of: rod.angle, in: highest, unit: rad", "a quantity with a direction as its magnitude, " \
+                                                                "its direction beside its unit"  # the pin's force
+    assert said("rod_swing_stops", (angle, angle.replace("rad", "deg"))) == (
+        f"Each value in the unit its row gives; angles in degrees; {direction}; values to the significant figures shown")
+    assert said("rod_swing_stops") == f"SI units; angles in radians; {direction}; values to the significant figures shown"
+    assert said("rod_endpoint") == answer_keys.CONVENTIONS

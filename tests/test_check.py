@@ -131,3 +131,26 @@ def test_a_simulation_stops_where_a_cords_run_shrinks_to_nothing(tmp_path):
     assert report.passed, report.notes
     assert report.compared == ["a"]
     assert any("shrink to nothing" in why for _, why in report.unchecked), report.unchecked
+
+
+@pytest.mark.parametrize("old, new, ask", [
+    # the rod's angle "from the horizontal" came out -1.22 rad (below it), its center's "height" -0.30 m
+    ("angle of the rod below the horizontal at its highest, of: rod.angle, in: highest, unit: rad, magnitude: true",
+     "angle of the rod from the horizontal at its highest, of: rod.angle, in: highest, unit: rad", "angle"),
+    ("depth of its center below the pin then, of: rod.position.y, in: highest, unit: m, magnitude: true",
+     "height of its center then, of: rod.position.y, in: highest, unit: m", "h"),
+])
+def test_check_refuses_a_negative_answer_whose_sign_the_question_does_not_state(tmp_path, old, new, ask):
+    text = load("rod_swing_stops").path.read_text()
+    assert old in text
+    path = tmp_path / "rod.yaml"
+    path.write_text(text.replace(old, new))
+    done = run_derive("check", str(path))
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert f"FAILED rod_swing_stops: ask.{ask}: -" in done.stdout
+    assert "where the question states no sign convention: ask its magnitude (magnitude: true)" in done.stdout
+    stated = text.replace(old, new.replace("unit: rad", "unit: rad, sign: \"negative: below\"").replace(
+        "unit: m", "unit: m, sign: \"negative: below\"")).replace("find its angle", "find (negative: below) its angle")
+    path.write_text(stated)
+    done = run_derive("check", str(path))
+    assert done.returncode == 0, done.stdout + done.stderr

@@ -137,8 +137,8 @@ def test_a_sign_convention_must_be_stated_by_the_question(tmp_path):
     unstated = text.replace("Taking $y$ up and counter-clockwise rotation as positive, find",
                             "Find")
     assert "does not say 'y up'" in refused(tmp_path, unstated, "ask.a.sign")
-    on_a_tension = text.replace("of: string.tension, unit: N}", "of: string.tension, unit: N, sign: y up}")
-    assert "only a quantity with a direction" in refused(tmp_path, on_a_tension, "ask.T.sign")
+    on_a_tension = text.replace("of: string.tension, unit: N}", "of: string.tension, unit: N, sign: x right}")
+    assert "does not say 'x right'" in refused(tmp_path, on_a_tension, "ask.T.sign")
 
 
 def test_without_a_stated_convention_the_block_falls_at_a_magnitude_downward(tmp_path):

@@ -49,7 +49,8 @@ def test_tilted_rod_angular_momentum_by_quadrature():
     Lz = mpmath.quad(lambda s: element(s, 2), [-length / 2, length / 2])
     Lx = mpmath.quad(lambda s: element(s, 0), [-length / 2, length / 2])
     assert abs(answers["L_z"] - Lz) < mpmath.mpf("1e-14") * abs(Lz)
-    assert abs(answers["L_x"] - Lx) < mpmath.mpf("1e-14") * abs(Lx)  # the rod leans toward +x: L_x < 0
+    # the rod's upper end leans toward +x and L_x < 0: asked as its magnitude toward the lower end's side
+    assert Lx < 0 and abs(answers["L_x"] + Lx) < mpmath.mpf("1e-14") * abs(Lx)
     assert abs(answers["angle"] - (mpmath.pi / 2 - a)) < mpmath.mpf("1e-14")
     assert result["checks"]["angular_momentum_by_integral"]["passed"]
     assert result["checks"]["lagrange_vs_newton_euler"]["passed"]

@@ -555,8 +555,9 @@ EXPECTED.update({
     # at rest, so the hinge's vertical pull is M g (1 - 3 sin^2(theta_max)/4) (alpha = -3 g sin/(2L));
     # the time there is a quarter period of the physical pendulum, sqrt(2L/(3g)) K(sin^2(theta_max/2)).
     "rod_swing_stops": {
-        "angle": lambda s: -sp.pi / 2 + sp.acos(1 - s.L * s.w0**2 / (3 * s.g)),
-        "h": lambda s: -s.L / 2 * (1 - s.L * s.w0**2 / (3 * s.g)),
+        # asked as magnitudes: the angle below the horizontal, the depth of the center below the pin
+        "angle": lambda s: sp.pi / 2 - sp.acos(1 - s.L * s.w0**2 / (3 * s.g)),
+        "h": lambda s: s.L / 2 * (1 - s.L * s.w0**2 / (3 * s.g)),
         "F": lambda s: s.M * s.g * (1 - 3 * (1 - (1 - s.L * s.w0**2 / (3 * s.g)) ** 2) / 4),
         "t": lambda s: sp.sqrt(2 * s.L / (3 * s.g))
         * sp.elliptic_k(sp.sin(sp.acos(1 - s.L * s.w0**2 / (3 * s.g)) / 2) ** 2),
@@ -917,7 +918,7 @@ EXPECTED.update({
     # principal axis through its center, so the torque about the center of mass is zero.
     "rotor_static_imbalance": {
         "F": lambda s: sp.sqrt((s.m * s.e * s.omega**2) ** 2 + ((s.M + s.m) * s.g) ** 2),
-        "FAx": lambda s: -s.m * s.e * s.omega**2 / 2,
+        "FAx": lambda s: s.m * s.e * s.omega**2 / 2,  # a magnitude, away from the mass (centripetal)
         "FAy": lambda s: (s.M + s.m) * s.g / 2,
         "tau": lambda s: 0,
         "Q": lambda s: s.m * s.g * s.e,

@@ -8,7 +8,10 @@ cache of its own (never the user's):
 - warm: a new seed, every derivation from the cache;
 - one question's text changed: that problem's file edited, the set rebuilt (its derivation
   still from the cache: the question is no part of the key);
-- peak memory: the largest resident set of any of the build's processes.
+- peak memory: the largest resident set of any of the build's processes;
+- cold on a Dask cluster (with derive's cluster extra): the same build with `--scheduler`, on a
+  LocalCluster of one single-threaded worker process per core, and the cache's size per problem
+  (what a worker sends back): the figures docs/design.md scales to a 10,000-problem bank.
 
 A library problem that the set cannot build (an engine limit met, say) is named and left out,
 so that the figures stay about the rest; the run says so.
@@ -39,10 +42,11 @@ _MEASURED = ("import resource, subprocess, sys; done = subprocess.run(sys.argv[1
              "print(done.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
 
 
-def _sheet(ids: list[str], variants: int, seed: int, outputs: str, out: Path, env: dict) -> tuple[float, float, str, int]:
+def _sheet(ids: list[str], variants: int, seed: int, outputs: str, out: Path, env: dict,
+           *options: str) -> tuple[float, float, str, int]:
     """One build in a fresh process: (wall seconds, peak MiB, its progress lines, exit status)."""
     command = [sys.executable, "-m", "derive", "sheet", *ids, "--variants", str(variants), "--seed", str(seed),
-               "--to", outputs, "--out", str(out), "--progress", "lines"]
+               "--to", outputs, "--out", str(out), "--progress", "lines", *options]
     began = time.perf_counter()
     done = subprocess.run([sys.executable, "-c", _MEASURED, *command], capture_output=True, text=True, env=env)
     wall = time.perf_counter() - began
@@ -80,8 +84,10 @@ def course(say, variants: int = 30, outputs: str = "", limit: int | None = None)
             say(f"  left out {culprit}: {stderr.strip().splitlines()[-1]}")
             left_out.append(culprit)
             ids.remove(culprit)
-        figures.update(cold=wall, cold_peak_mib=peak, left_out=left_out)
-        say(f"  cold (every problem derived):        {wall:7.1f} s   peak {peak:6.0f} MiB")
+        entries = sum(f.stat().st_size for f in (root / "cache").rglob("*.pickle"))
+        figures.update(cold=wall, cold_peak_mib=peak, left_out=left_out, entry_kib=entries / 1024 / len(ids))
+        say(f"  cold (every problem derived):        {wall:7.1f} s   peak {peak:6.0f} MiB   "
+            f"cache {entries / 2**20:.1f} MiB, {entries / 1024 / len(ids):.0f} KiB a problem")
         wall, peak, stderr, _ = _sheet(ids, variants, 2, outputs, root / "warm", env)
         hits = stderr.count("(from the cache)")
         figures.update(warm=wall, warm_peak_mib=peak, warm_hits=hits)
@@ -98,6 +104,27 @@ def course(say, variants: int = 30, outputs: str = "", limit: int | None = None)
             f"{hits}/{len(ids)} from the cache" + ("" if shown else " (the new text is NOT in the worksheet)"))
         peak = max(figures["cold_peak_mib"], figures["warm_peak_mib"], figures["changed_peak_mib"])
         say(f"  peak memory (the largest process):   {peak:7.0f} MiB")
+        clustered = _on_a_cluster(ids, variants, outputs, root, env)
+        if clustered is not None:
+            figures["cluster_cold"] = clustered
+            say(f"  cold on a Dask LocalCluster:         {clustered:7.1f} s   ({_cores()} single-threaded workers)")
         say("  " + json.dumps({k: round(v, 1) if isinstance(v, float) else v for k, v in figures.items()}))
     return figures
 
+
+def _cores() -> int:
+    from derive.publishing.deriving import cores
+
+    return cores()
+
+
+def _on_a_cluster(ids: list[str], variants: int, outputs: str, root: Path, env: dict) -> float | None:
+    """The cold build's wall time with the derivations on a LocalCluster (None without Dask)."""
+    try:
+        from distributed import LocalCluster
+    except ImportError:
+        return None
+    with LocalCluster(n_workers=_cores(), threads_per_worker=1, processes=True, dashboard_address=None) as local:
+        wall, _, _, status = _sheet(ids, variants, 1, outputs, root / "cluster", {**env, "DERIVE_CACHE_DIR": str(
+            root / "cluster-cache")}, "--scheduler", local.scheduler_address)
+    return wall if status == 0 else None

@@ -12,7 +12,6 @@ import sympy as sp
 
 from derive.core.keys import Key, Keys
 from derive.language.reader import Reader
-from derive.model.directions import directional
 from derive.model.scene import Quantity, Scene
 
 #: An ask's entry under `ask:`.
@@ -69,16 +68,15 @@ def tolerance_policy(raw) -> str | None:
 
 
 def sign(reader: Reader, raw, field: str, quantity: Quantity, question) -> str | None:
-    """`sign: y up`: the sign convention the question states for a quantity with a direction, in the
-    question's own words (which the question must contain): the answer is then the signed component.
-    Without it such a quantity is answered as its magnitude, with its direction in words
-    (derive.model.directions), so that no student is graded wrong for a sign nothing told them."""
+    """`sign: y up`: the sign convention the question states, in its own words (which the question
+    must contain): for a quantity with a direction the answer is then the signed component (without
+    it, its magnitude with its direction in words: derive.model.directions); for another quantity
+    that may come out negative (a precession that may be retrograde, "negative: retrograde"), it says
+    that the question states what its sign means, which `derive check` asks of every negative value
+    (derive.checks.signs), so that no student is graded wrong for a sign nothing told them."""
     if raw is None:
         return None
     text = reader.text(raw, field, 80)
-    if not directional(quantity):
-        raise reader.fail(field, "only a quantity with a direction (a component, a rotation, a friction, a change "
-                                 "of energy) takes a sign convention")
     if _plain(text) not in _plain(str(question)):
         raise reader.fail(field, f"the question must state the sign convention: it does not say {text!r}")
     return text

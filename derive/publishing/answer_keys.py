@@ -40,18 +40,35 @@ from derive.publishing.spreadsheet import safe_cell
 from derive.text.stencil import Stencil, hole
 from derive.publishing.variants import ProblemVariants, number_latex
 
-CONVENTIONS = ("SI units; angles in radians (rad is dimensionless); y up; counter-clockwise positive; values to "
-               "the significant figures shown")
-#: The conventions of a key some of whose answers are in other units (deg, cm, rpm): each row's own.
-OWN_UNITS = ("Each value in the unit its row gives (angles in deg where it says deg, else in radians); y up; "
-             "counter-clockwise positive; values to the significant figures shown")
+#: What a key of SI answers with no angle, no direction and no sign to state says of its values.
+CONVENTIONS = "SI units; values to the significant figures shown"
 
 
 def conventions(prepared: list[ProblemVariants]) -> str:
-    """What a key says of its values: CONVENTIONS where every answer is in an SI unit, else OWN_UNITS
-    (a key of answers in degrees said "angles in radians")."""
-    asks = (ask for item in prepared for ask in item.problem.asks.values())
-    return CONVENTIONS if all(units.si_factor(units.parse_unit(ask.unit)) == 1 for ask in asks) else OWN_UNITS
+    """What a key says of its values, only what holds for its answers (a key of answers in degrees
+    said "angles in radians", and "y up" where every direction was in words): their units, the
+    angles' unit where an angle is asked, directions in words where an answer has one, and signs as
+    the questions state them where a value is negative.
+
+    A key of answers in radians and in degrees, one with a direction, one negative:
+    'Each value in the unit its row gives; angles in radians or degrees; a quantity with a direction
+    as its magnitude, its direction beside its unit; a negative value's sign as its question states
+    it; values to the significant figures shown'
+    """
+    asks = [(item, name, ask) for item in prepared for name, ask in item.problem.asks.items()]
+    said = ["SI units" if all(units.si_factor(units.parse_unit(ask.unit)) == 1 for _, _, ask in asks)
+            else "Each value in the unit its row gives"]
+    angles = [word for unit, word in (("rad", "radians"), ("deg", "degrees")) if any(a.unit == unit for _, _, a in asks)]
+    if angles:
+        said.append("angles in " + " or ".join(angles))
+    if any(item.solution.senses[name] is not None for item, name, _ in asks):
+        said.append("a quantity with a direction as its magnitude, its direction beside its unit")
+    if any(value is not None and value.startswith("-") for item in prepared for draw in item.draws
+           for value in item.answers(draw).values()):
+        said.append("a negative value's sign as its question states it")
+    return "; ".join([*said, "values to the significant figures shown"])
+
+
 #: `direction`: which way a quantity with a direction points, its value the magnitude (derive.model.directions).
 CSV_FIELDS = ("variant", "problem", "answer", "value", "tolerance", "unit", "meaning", "direction")
 
