@@ -86,7 +86,7 @@ def test_notes_6_5_elroy_numerator_is_I2():
     theta1, theta2 = run.y[0, -1], run.y[1, -1]
     assert math.isclose(theta2 - theta1, 2 * math.pi, rel_tol=1e-6)
     assert math.isclose(theta1, -2 * math.pi * I2 / (I1 + I2), rel_tol=1e-6)
-    assert math.isclose(float(answers["dtheta"]), theta1, rel_tol=1e-6)
+    assert math.isclose(float(answers["dtheta"]), -theta1, rel_tol=1e-6)  # asked as the angle, turned the other way
     assert not math.isclose(theta1, -2 * math.pi * I1 / (I1 + I2), rel_tol=1e-2)
 
 
@@ -97,7 +97,8 @@ def test_notes_6_5_elroy_from_the_notes_equation():
     I1, I2 = (solution.problem.parameters[n].symbol for n in ("I1", "I2"))
     dtheta, dpsi, psi = sp.symbols("dtheta dpsi psi")
     rate = sp.solve(I1 * dtheta + I2 * (dpsi + dtheta), dtheta)[0] / dpsi
-    assert sp.simplify(solution.signed("dtheta") - sp.integrate(rate, (psi, 0, 2 * sp.pi))) == 0
+    turned = sp.integrate(rate, (psi, 0, 2 * sp.pi))  # negative: the other way to the inner oval's turn
+    assert sp.simplify(solution.signed("dtheta") + turned) == 0  # asked as the angle
     assert solution.problem.corrections[0]["where"].startswith("§6.5")
 
 
