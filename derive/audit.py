@@ -52,9 +52,16 @@ def _audit_one(reference: str, begin) -> Row:
     start = time.perf_counter()
     p = problem.load(reference)
     begin(p.id)
+    return row_of(Solution(p), start)
+
+
+def row_of(solution: Solution, start: float | None = None) -> Row:
+    """The row of a problem's solution (derived here, or already: its checks are kept in it), timed
+    from `start` (default now)."""
+    start = time.perf_counter() if start is None else start
+    p = solution.problem
     row = Row(p.id, "-", "-", "-", 0.0, True)
     try:
-        solution = Solution(p)
         solution.expressions
         checks = solution.checks()
         row.dimensions = "ok"

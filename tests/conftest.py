@@ -88,6 +88,38 @@ def copy_library(folder: Path) -> Path:
     return library
 
 
+#: Where the read-only tests over the library keep each problem's derivation for the whole run, shared by
+#: the workers (pytest-xdist names the run): `derived`.
+SHARED = Path(tempfile.gettempdir()) / f"derive-test-derivations-{os.environ.get('PYTEST_XDIST_TESTRUNUID', os.getpid())}"
+_DERIVED: dict = {}
+
+
+def derived(reference):
+    """A problem (a library id or a file) derived once for the whole test run, with its answers, checks
+    and worked steps, for the tests that read every library and textbook problem (their prose, notation,
+    printed forms, closed forms, simulations): about seven derivations of each problem had made CI
+    twice its 30 minutes. Kept in this worker's memory, and in the run's derivation cache, which every
+    worker reads (derive.publishing.derivation_cache: an entry loads byte-identical to a fresh
+    derivation, as tests/test_derivation_cache.py proves); the first test to need it derives it afresh.
+    A test that changes a solution (or proves a check catches an error) derives its own."""
+    from derive.language.problem import load
+    from derive.publishing import derivation_cache
+
+    problem = load(str(reference))
+    if problem.path not in _DERIVED:
+        saved = os.environ.get("DERIVE_CACHE_DIR")
+        os.environ["DERIVE_CACHE_DIR"] = str(SHARED)
+        try:
+            solution = derivation_cache.fetch(problem)
+            if solution is None:
+                solution = derivation_cache.derived(problem)
+                derivation_cache.store(problem, solution, trimmed=False)
+        finally:
+            os.environ["DERIVE_CACHE_DIR"] = saved
+        _DERIVED[problem.path] = solution
+    return _DERIVED[problem.path]
+
+
 @pytest.fixture(autouse=True)
 def derivation_cache_of_its_own(tmp_path_factory, monkeypatch):
     """Each test its own empty derivation cache, never the user's (derive and the processes it starts
@@ -221,3 +253,8 @@ def image_kind(data: bytes) -> str:
     assert float(root.get("width").removesuffix("pt")) > 0 and float(root.get("height").removesuffix("pt")) > 0
     assert len(root.findall(".//{http://www.w3.org/2000/svg}path")) > 0  # it draws something
     return "svg"
+
+
+def pytest_sessionfinish(session):
+    """The run's shared derivations go with it (a worker that ends first only costs the other a derivation)."""
+    shutil.rmtree(SHARED, ignore_errors=True)

@@ -14,12 +14,10 @@ from hypothesis import strategies as st
 
 from flint import arb, ctx
 
-from conftest import textbook_files
+from conftest import derived, textbook_files
 from derive.numbers import balls, numeric
 from derive.core import library
-from derive.language import problem
 from derive.publishing import variants
-from derive.solution.answers import Solution
 
 #: The library but the textbook chains of states: those are checked against their books to 15 digits
 #: (tests/test_textbook.py) and simulated (tests/test_chain_simulation.py), and evaluating a chain's
@@ -30,8 +28,8 @@ PROBLEMS = [path.stem for path in library.problem_files() if path not in CHAINS]
 
 @functools.lru_cache(maxsize=None)
 def _item(problem_id: str) -> variants.ProblemVariants:
-    p = problem.load(problem_id)
-    return variants.ProblemVariants(p, Solution(p), [])
+    solution = derived(problem_id)
+    return variants.ProblemVariants(solution.problem, solution, [])
 
 
 def _reference(expression: sp.Expr, values: dict, digits: int) -> str:

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import notes_files, run_derive, textbook, textbook_files
+from conftest import derived, notes_files, run_derive, textbook, textbook_files
 from derive.checks import chain_simulation
 from derive.solution.answers import Solution
 from derive.mechanics import states
@@ -27,7 +27,7 @@ def test_the_library_has_chains():
 
 
 def _simulated(reference: str):
-    solution = Solution(load(reference))
+    solution = derived(reference)
     return solution, chain_simulation.simulate(solution)
 
 

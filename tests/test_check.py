@@ -2,7 +2,7 @@
 import pytest
 import sympy as sp
 
-from conftest import copy_library, run_derive
+from conftest import copy_library, derived, run_derive
 from derive.core import library
 from derive.checks import simulate
 from derive.solution.answers import Solution
@@ -81,7 +81,7 @@ def test_every_check_and_step_of_the_library_reads_as_prose(problem_id):
     the constraint forces do no work.", never "work_energy: T + V conserved (numeric)"; and each
     step's sentence says in words what its equations say in math (no d/dt(dL/dq'), no mu_s N >= |f|),
     and so does each part's sentence, its math kept apart from its words (derive.text.prose)."""
-    solution = Solution(load(problem_id))
+    solution = derived(problem_id)
     checks = solution.checks()
     assert checks and all(_reads_as_a_sentence(c.reading) for c in checks), [c.reading for c in checks]
     meanings = {a.meaning for a in solution.problem.asks.values()}  # the file's words, which a step may quote

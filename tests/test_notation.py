@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import notes_files, refused, run_derive, textbook, textbook_files, write_problem
+from conftest import derived, notes_files, refused, run_derive, textbook, textbook_files, write_problem
 from derive.core import library
 from derive.publishing import notation, variants, worksheets
 from derive.solution.answers import Solution
@@ -29,8 +29,9 @@ TEXTBOOK = textbook_files()
 @pytest.mark.parametrize("path", notes_files() + TEXTBOOK, ids=lambda p: p.stem)
 def test_worked_solutions_use_each_symbol_for_one_thing(path):
     """The library's problems and the textbook problems of the tests."""
-    problem = load(str(path))
-    solution, steps = printed(problem)  # a clash nothing renames is refused
+    solution = derived(path)
+    problem = solution.problem
+    steps = notation.named(problem, solution, solution.steps())  # a clash nothing renames is refused
     assert notation.document_clashes(problem, solution, steps) == []
     if path not in TEXTBOOK:  # the library renames nothing but to its asks' own names
         assert symbols_of(steps) <= symbols_of(solution.steps()) | set(problem.asks)

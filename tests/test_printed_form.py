@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 from sympy.polys.polyerrors import PolynomialError
 
-from conftest import textbook, textbook_files
+from conftest import derived, textbook, textbook_files
 from derive.text.latex import latex_of
 from derive.core import library
 from derive.text import printed_form, terminal
@@ -36,8 +36,8 @@ CHAINS = {path for path in textbook_files() if "states:" in path.read_text()}
 
 @pytest.mark.parametrize("path", [p for p in library.problem_files() if p not in CHAINS], ids=lambda p: p.stem)
 def test_the_printed_form_is_the_answer(path):
-    problem = load(str(path))
-    solution = Solution(problem)
+    solution = derived(path)
+    problem = solution.problem
     rng = random.Random(path.stem)
     compared = 0
     for name in problem.asks:

@@ -11,7 +11,7 @@ from types import SimpleNamespace
 import pytest
 import sympy as sp
 
-from conftest import textbook
+from conftest import derived, textbook
 from derive.core import library
 from derive.publishing import render, variants, worksheets
 from derive.solution.answers import Solution
@@ -27,7 +27,7 @@ CHAINS = [p for p in STEPPED if "states:" in Path(p).read_text()]
 
 @functools.lru_cache(maxsize=None)
 def _solved(reference: str) -> tuple[Solution, dict]:
-    solution = Solution(load(reference))
+    solution = derived(reference)
     return solution, solution.steps()
 
 

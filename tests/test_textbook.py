@@ -13,11 +13,9 @@ from types import SimpleNamespace
 import pytest
 import sympy as sp
 
-from conftest import textbook_files
+from conftest import derived, textbook_files
 from derive.numbers import numeric
 from derive.publishing import report
-from derive.solution.answers import Solution
-from derive.language.problem import load
 
 
 
@@ -1041,27 +1039,27 @@ def test_every_file_has_its_closed_forms():
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
 def test_textbook_closed_form(path):
-    problem = load(path)
+    solution = derived(path)
+    problem = solution.problem
     assert problem.source, "every textbook file cites its source"
-    solution = Solution(problem)
     symbols = SimpleNamespace(**{name: p.symbol for name, p in problem.parameters.items()})
     expected = EXPECTED[path.stem]
     assert set(expected) == set(problem.asks), "every ask is compared with the book"
     for name, closed_form in expected.items():
         # the book's closed form is the component along the file's axes (y up, counter-clockwise positive),
         # or the magnitude where the ask says magnitude: true: what the routes give, before a direction in words
-        derived = solution.signed(name)
-        if derived.has(sp.Piecewise):  # friction regimes: the book's is the one the ranges reach
+        answer = solution.signed(name)
+        if answer.has(sp.Piecewise):  # friction regimes: the book's is the one the ranges reach
             for point in _points_in_ranges(problem):
-                value = sp.N(derived.xreplace(point), 30)
+                value = sp.N(answer.xreplace(point), 30)
                 book = sp.N(closed_form(symbols).xreplace(point), 30)
                 assert abs(value - book) <= 1e-20 * max(1, abs(book)), f"{name} at {point}: {value} vs {book}"
             continue
-        if derived.has(sp.Integral) or sp.simplify(derived - closed_form(symbols)) != 0:
+        if answer.has(sp.Integral) or sp.simplify(answer - closed_form(symbols)) != 0:
             # an integral (evaluated by quadrature), or a form sympy cannot prove equal (sqrt(tan^2 + 1)
             # is 1/cos only where cos > 0): the book's value at three points, to 14 digits
             for point in _points_in_ranges(problem):
-                value = sp.Float(numeric.evaluate(derived, point, 15), 30)
+                value = sp.Float(numeric.evaluate(answer, point, 15), 30)
                 book = sp.N(closed_form(symbols).xreplace(point), 30)
                 assert abs(value - book) <= 1e-14 * max(1, abs(book)), f"{name} at {point}: {value} vs {book}"
     # What `derive solve` reports, from the same derivation: the two routes agree, every check passes.
