@@ -55,3 +55,20 @@ def test_a_range_written_with_units(tmp_path):
 def test_a_value_of_another_dimension_is_refused_naming_the_field(tmp_path):
     stderr = refused(tmp_path, RAMP.replace("MASS", "2 m").replace("ANGLE", "value: 25"), "parameters.M.value")
     assert "cannot convert m to kg" in stderr
+
+
+@pytest.mark.parametrize("angle", ["value: 25°", "value: 25 deg", "range: [20°, 30°], sig_figs: 2"])
+def test_a_value_written_with_its_unit_needs_no_unit_key(tmp_path, angle):
+    """`theta: {meaning: slope angle, value: 25°}`: the unit is the one the value is written in."""
+    text = RAMP.replace("MASS", "2").replace("theta: {meaning: slope angle, unit: deg, ANGLE}",
+                                             f"theta: {{meaning: slope angle, {angle}}}")
+    answers, report = solve(str(write_problem(tmp_path, text)), theta="25")
+    assert report["parameters"]["theta"]["unit"] == "deg"
+    assert answers == _answers(tmp_path, "2", "value: 25")
+
+
+def test_a_bare_number_still_needs_its_unit(tmp_path):
+    text = RAMP.replace("MASS", "2").replace("theta: {meaning: slope angle, unit: deg, ANGLE}",
+                                             "theta: {meaning: slope angle, value: 25}")
+    stderr = refused(tmp_path, text, "parameters.theta.unit")
+    assert "missing: give the unit (unit: kg), or write the value with one (value: 25°)" in stderr

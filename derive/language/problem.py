@@ -38,7 +38,8 @@ from derive.core.spelling import did_you_mean, no_such
 DEFAULT_SIG_FIGS = 3
 #: A parameter's entry under `parameters:`.
 PARAMETER = Keys(meaning=Key("text", "what it is, in words", required=True),
-                 unit=Key("text", "its unit (kg, m, rad, deg, m/s^2, ...)", required=True),
+                 unit=Key("text", "its unit (kg, m, rad, deg, m/s^2, ...); may be left out where the value or the "
+                                  "range's ends are written with one (value: 25°)"),
                  value=Key("quantity", "a fixed value (or give a range)"),
                  range=Key("list", "[low, high]: each variant draws a value in it"),
                  sig_figs=Key("integer", "significant figures of a drawn value, 1 to 15 (default 3)"))
@@ -314,6 +315,26 @@ def _amount(reader: Reader, raw, field: str, unit: str) -> sp.Expr:
     return reader.expression(raw, field, {})
 
 
+def _written_unit(reader: Reader, spec: dict, field: str) -> str:
+    """The unit a parameter's value (or its range's low end) is written with, where the file gives no
+    `unit:` (value: 25° is in deg); refused where it is a bare number.
+
+    >>> from pathlib import Path
+    >>> _written_unit(Reader(Path("p.yaml")), {"value": "25°"}, "parameters.theta")
+    'deg'
+    """
+    written = spec["value"] if "value" in spec else (spec["range"][0] if isinstance(spec["range"], list)
+                                                      and spec["range"] else None)
+    try:
+        _, unit = units.parse_quantity(written, "") if isinstance(written, str) else (None, "")
+        unit = "deg" if unit == "°" else unit
+    except units.UnitError:
+        unit = ""
+    if not unit:
+        raise reader.fail(f"{field}.unit", "missing: give the unit (unit: kg), or write the value with one (value: 25°)")
+    return unit
+
+
 def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
     raw = reader.mapping(raw, "parameters", free=True)
     result = {}
@@ -325,7 +346,7 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         spec = reader.mapping(spec, field, keys=PARAMETER)
         if "value" not in spec and "range" not in spec:
             raise reader.fail(field, "needs a value or a range")
-        unit = reader.unit(spec["unit"], f"{field}.unit")
+        unit = reader.unit(spec["unit"] if "unit" in spec else _written_unit(reader, spec, field), f"{field}.unit")
         value = _amount(reader, spec["value"], f"{field}.value", unit) if "value" in spec else None
         bounds = None
         if "range" in spec:
