@@ -18,8 +18,9 @@ def test_solid_cylinder_by_quadrature():
 def test_diatomic_molecule():
     answers, result = solve("diatomic_molecule", m1="1.674e-27", m2="2.657e-26", d="1.128e-10")
     m1, m2, d = mpmath.mpf("1.674e-27"), mpmath.mpf("2.657e-26"), mpmath.mpf("1.128e-10")
-    assert close(answers["x1"], -d * m2 / (m1 + m2)) and close(answers["x2"], d * m1 / (m1 + m2))
-    assert close(answers["x2"] - answers["x1"], d)
+    # asked as distances from the center of mass, on either side of it
+    assert close(answers["x1"], d * m2 / (m1 + m2)) and close(answers["x2"], d * m1 / (m1 + m2))
+    assert close(answers["x1"] + answers["x2"], d)
     assert close(answers["mu"], m1 * m2 / (m1 + m2))
     assert result["checks"]["system_inertia"]["passed"]
 
