@@ -148,7 +148,8 @@ class Result:
         return report.as_json(self.report)
 
     def __repr__(self) -> str:
-        shown = ", ".join(f"{a.name} = {a.text}{_unit_text(a.unit)}" if a.text is not None
+        shown = ", ".join(f"{a.name} = {a.text}{_unit_text(a.unit)}{' ' + a.direction if a.direction else ''}"
+                          if a.text is not None
                           else f"{a.name} = {sp.sstr(a.expression)}" for a in self.answers.values())
         return f"Result({self.problem.id}: {shown})"
 

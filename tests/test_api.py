@@ -62,9 +62,10 @@ def test_answers_are_sympy_in_the_problems_own_symbols():
 
 def test_an_answer_with_a_direction_is_a_magnitude_and_words():
     result = derive.solve("rolling_incline", {"M": 2, "R": 0.1, "H": 1, "theta": 0.5, "mu_s": 0.5}, digits=4)
-    friction = next(a for a in result.answers.values() if a.direction)
-    assert friction.value > 0 and friction.direction in repr(friction)
-    assert friction.direction == result.report["answers"][friction.name]["direction"]
+    along = next(a for a in result.answers.values() if a.direction)
+    assert along.value > 0 and along.direction in repr(along)
+    assert f"{along.name} = {along.text} {along.unit} {along.direction}" in repr(result)  # "a = 3.36 m/s^2 down the slope"
+    assert along.direction == result.report["answers"][along.name]["direction"]
 
 
 def test_a_problem_built_in_python_is_a_files_problem(tmp_path):
