@@ -27,7 +27,7 @@ from derive.numbers import numeric
 from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT, TITLE_LIMIT, TOPIC_LIMIT)
 from derive.core.errors import EngineLimit, ProblemError
 from derive.core.keys import Key, Keys
-from derive.language import ask_options, derivation_source, labels
+from derive.language import amounts, ask_options, derivation_source, labels
 from derive.language.reader import Loader, Reader
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
@@ -293,48 +293,6 @@ class Problem:
 
 
 
-def _amount(reader: Reader, raw, field: str, unit: str) -> sp.Expr:
-    """A parameter's value or a range's end in the parameter's `unit`: an expression (2.5, pi/6), or
-    a number with a unit of the same dimension, converted exactly (25°, 25 deg, 250 g for kg).
-
-    >>> from pathlib import Path
-    >>> reader = Reader(Path("p.yaml"))
-    >>> _amount(reader, "25°", "value", "deg"), _amount(reader, "250 g", "value", "kg"), _amount(reader, 3, "value", "m")
-    (25, 1/4, 3)
-    """
-    if isinstance(raw, str):
-        try:
-            number, given = units.parse_quantity(raw, "")
-        except units.UnitError:
-            given = ""  # not a number with a unit: an expression, read below
-        if given:
-            try:
-                return units.to_unit(number, given, unit)
-            except units.UnitError as error:
-                raise reader.fail(field, f"{raw}: {error}") from None
-    return reader.expression(raw, field, {})
-
-
-def _written_unit(reader: Reader, spec: dict, field: str) -> str:
-    """The unit a parameter's value (or its range's low end) is written with, where the file gives no
-    `unit:` (value: 25° is in deg); refused where it is a bare number.
-
-    >>> from pathlib import Path
-    >>> _written_unit(Reader(Path("p.yaml")), {"value": "25°"}, "parameters.theta")
-    'deg'
-    """
-    written = spec["value"] if "value" in spec else (spec["range"][0] if isinstance(spec["range"], list)
-                                                      and spec["range"] else None)
-    try:
-        _, unit = units.parse_quantity(written, "") if isinstance(written, str) else (None, "")
-        unit = "deg" if unit == "°" else unit
-    except units.UnitError:
-        unit = ""
-    if not unit:
-        raise reader.fail(f"{field}.unit", "missing: give the unit (unit: kg), or write the value with one (value: 25°)")
-    return unit
-
-
 def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
     raw = reader.mapping(raw, "parameters", free=True)
     result = {}
@@ -346,13 +304,13 @@ def _parameters(reader: Reader, raw) -> dict[str, Parameter]:
         spec = reader.mapping(spec, field, keys=PARAMETER)
         if "value" not in spec and "range" not in spec:
             raise reader.fail(field, "needs a value or a range")
-        unit = reader.unit(spec["unit"] if "unit" in spec else _written_unit(reader, spec, field), f"{field}.unit")
-        value = _amount(reader, spec["value"], f"{field}.value", unit) if "value" in spec else None
+        unit = reader.unit(spec["unit"] if "unit" in spec else amounts.written_unit(reader, spec, field), f"{field}.unit")
+        value = amounts.amount(reader, spec["value"], f"{field}.value", unit) if "value" in spec else None
         bounds = None
         if "range" in spec:
             if not isinstance(spec["range"], list) or len(spec["range"]) != 2:
                 raise reader.fail(f"{field}.range", "expected [low, high]")
-            bounds = tuple(_amount(reader, v, f"{field}.range", unit) for v in spec["range"])
+            bounds = tuple(amounts.amount(reader, v, f"{field}.range", unit) for v in spec["range"])
             if (bounds[1] - bounds[0]).is_positive is not True:  # sympy decides it, or the range is refused
                 raise reader.fail(f"{field}.range", f"low ({bounds[0]}) must be below high ({bounds[1]}), by a "
                                                     "difference that can be told from zero")

@@ -185,14 +185,16 @@ def _sweep_scratch() -> None:
 
 def _ended_scratch(folder: Path) -> bool:
     """Whether `folder` is the scratch folder of a derive run that has ended: named for a pid whose
-    process is gone, this user's, and carrying derive's mark (or empty: killed before marking it)."""
+    process is gone, this user's, and carrying derive's mark (or empty, or holding only a mark cut
+    short: killed before marking it, or while)."""
     match = re.fullmatch(rf"{SCRATCH}(?P<pid>[1-9]\d*)-\w+", folder.name)
     process = leftovers.pid(match["pid"]) if match else None
     try:
         info = folder.lstat()
         if process is None or not stat.S_ISDIR(info.st_mode) or info.st_uid != os.getuid():
             return False
-        return not leftovers.alive(process) and (leftovers.marked(folder) or not any(folder.iterdir()))
+        return not leftovers.alive(process) and (leftovers.marked(folder) or leftovers.being_marked(folder)
+                                                 or not any(folder.iterdir()))
     except OSError:  # gone meanwhile, or not ours to read
         return False
 

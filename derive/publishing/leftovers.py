@@ -31,6 +31,19 @@ def mark(folder: Path) -> None:
     (folder / MARK).write_text(text(folder.name), encoding="utf-8")
 
 
+def being_marked(folder: Path) -> bool:
+    """Whether `folder` holds nothing but a mark cut short: killed while the mark was written (two TeX
+    compiles run at once, and a kill of one can fall in the other's `mark`), so empty or the start of
+    derive's text for its name, a file no user's folder holds."""
+    try:
+        entries = list(folder.iterdir())
+        if [e.name for e in entries] != [MARK] or entries[0].is_symlink() or not entries[0].is_file():
+            return False
+        return text(folder.name).startswith(entries[0].read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError):
+        return False
+
+
 def marked(folder: Path) -> bool:
     """Whether `folder` carries derive's mark for its name (a regular file, not a symlink)."""
     path = folder / MARK
