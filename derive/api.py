@@ -112,21 +112,22 @@ class Result:
         return report.equations_of_motion(self.solution)
 
     @cached_property
-    def _figures(self) -> dict[str, Figure]:
+    def _figures(self) -> tuple[Figure | None, dict[str, Figure]]:
         from derive.publishing import figures_shown  # TeX and poppler: only where a figure is asked for
-        return {name: Figure(name, image.svg.decode("utf-8"), alt)
-                for name, (image, alt) in figures_shown.images(self.problem, self.solution).items()}
+
+        scene, bodies = figures_shown.shown(self.problem, self.solution)
+        return (Figure.of(scene) if scene else None), {body: Figure.of(image) for body, image in bodies.items()}
 
     @property
     def figure(self) -> Figure | None:
         """The scene's figure, as the worksheet draws it (SVG; compiled by TeX on first use), or
         None where the problem has none."""
-        return self._figures.get(self.problem.id)
+        return self._figures[0]
 
     @property
     def free_bodies(self) -> dict[str, Figure]:
         """The free-body diagrams the worked solution shows, by body."""
-        return {name.rsplit("-free-body-", 1)[1]: f for name, f in self._figures.items() if "-free-body-" in name}
+        return self._figures[1]
 
     def __getitem__(self, name: str) -> Answer:
         if name not in self.answers:
@@ -179,6 +180,11 @@ class Figure:
     svg: str
     alt: str
 
+    @classmethod
+    def of(cls, image) -> Figure:
+        """The figure of a figure_files.Image."""
+        return cls(image.name, image.svg.decode("utf-8"), image.alt)
+
     def _repr_svg_(self) -> str:
         return self.svg
 
@@ -207,11 +213,11 @@ def load(problem: str | os.PathLike | Mapping) -> Problem:
     derive.core.errors.ProblemError: <python>: colour: unknown key (allowed: ask, conditions, corrections, difficulty, id, ...)
     """
     if isinstance(problem, Mapping):
-        return problem_files.parse(_as_yaml(problem, ""), Path("<python>"))
+        return problem_files.parse(_as_yaml(problem), Path("<python>"))
     return problem_files.load(problem)
 
 
-def _as_yaml(value, field: str) -> str:
+def _as_yaml(value: Mapping) -> str:
     """A mapping of plain values (text, numbers, lists, mappings) as the YAML of a problem file."""
     import yaml
 
@@ -225,7 +231,7 @@ def _as_yaml(value, field: str) -> str:
         raise InputError(f"<python>: {where}: expected text, a number, a list or a mapping, as a problem file "
                          f"holds, got {type(v).__name__} (write an expression as text: \"M*R**2/2\")")
 
-    return yaml.safe_dump(plain(value, field), sort_keys=False, allow_unicode=True)
+    return yaml.safe_dump(plain(value, ""), sort_keys=False, allow_unicode=True)
 
 
 def _math(latex: str) -> str:

@@ -23,6 +23,7 @@ def unstated(solution) -> list[str]:
     """Each ask whose value is negative somewhere in the ranges with no `sign:` for it, as what to
     change (empty where every answer's sign is known to the student)."""
     problem = solution.problem
+    given = problem.values()
     found = []
     for name, ask in problem.asks.items():
         if ask.sign is not None:
@@ -31,7 +32,7 @@ def unstated(solution) -> list[str]:
         if expression.atoms(AppliedUndef):  # a general result, r(t)^2 theta'(t)/2: no number in the key
             continue
         for point in sample_points(problem, expression, POINTS):
-            values = {**problem.values(), **point}
+            values = {**given, **point}
             if solution.violated(values):
                 continue
             try:

@@ -88,14 +88,7 @@ def _section(problem: Problem) -> str:
 
 def _figures(problems: list[Problem]) -> dict[str, str]:
     """Each drawable problem's figure as a data URI: one LaTeX document for them all."""
-    drawn = {p.id: tikz for p in problems if (tikz := figure.tikz(p))}
-    if not drawn:
-        return {}
-    export.require("pdftocairo")
-    with tempfile.TemporaryDirectory(prefix="derive-catalogue-") as scratch:
-        tex = Path(scratch) / "figures.tex"
-        tex.write_text(figure_files.document(list(drawn.values())), encoding="utf-8")
-        images = figure_files.images(list(drawn), export.pdf(tex))
+    images = figure_files.drawn({p.id: tikz for p in problems if (tikz := figure.tikz(p))})
     return {name: _data_uri(image) for name, image in images.items()}
 
 

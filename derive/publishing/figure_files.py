@@ -24,8 +24,9 @@ from __future__ import annotations
 
 import base64
 import subprocess
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Sequence
 
@@ -100,6 +101,19 @@ def images(names: Sequence[str], pdf: Path) -> dict[str, Image]:
         drawn = dict(zip(jobs, pool.map(lambda job: _draw(pdf, *job), jobs)))
     return {name: Image(name, drawn[page, "svg"], drawn[page, "png"], round(width, 3))
             for page, (name, width) in enumerate(zip(names, widths), start=1)}
+
+
+def drawn(pictures: dict[str, str], alts: dict[str, str] | None = None) -> dict[str, Image]:
+    """Each named tikzpicture as an Image, compiled on their own (one document in a scratch folder),
+    outside a build: the catalogue's figures, a figure in a notebook; `alts` says what each shows."""
+    if not pictures:
+        return {}
+    export.require("pdftocairo")
+    with tempfile.TemporaryDirectory(prefix="derive-figures-") as scratch:
+        tex = Path(scratch) / "figures.tex"
+        tex.write_text(document(list(pictures.values())), encoding="utf-8")
+        found = images(list(pictures), export.pdf(tex))
+    return {name: replace(image, alt=(alts or {}).get(name, "")) for name, image in found.items()}
 
 
 def _draw(pdf: Path, page: int, kind: str) -> bytes:

@@ -1,38 +1,31 @@
 """A problem's figures as images, for the Python API: the scene's figure and the free-body diagrams
-its worked solution shows, compiled by TeX in one document and drawn by poppler, as a worksheet's
-figures are (derive.publishing.figure_files).
+its worked solution shows, drawn as a worksheet's figures are (derive.publishing.figure_files).
 
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
 >>> problem = load("string_wrapped_disk")
->>> sorted(images(problem, Solution(problem)))
-['string_wrapped_disk', 'string_wrapped_disk-free-body-block', 'string_wrapped_disk-free-body-disk']
+>>> scene, bodies = shown(problem, Solution(problem))
+>>> scene.alt, sorted(bodies)
+('Figure of A string wrapped around a disk', ['block', 'disk'])
 """
 from __future__ import annotations
 
-import tempfile
-from pathlib import Path
-
 from derive.language.problem import Problem
-from derive.publishing import export, figure, figure_files
+from derive.publishing import figure, figure_files
 from derive.publishing.variants import ProblemVariants
 from derive.solution.answers import Solution
 
 
-def images(problem: Problem, solution: Solution) -> dict[str, tuple[figure_files.Image, str]]:
-    """Each figure by its image's name (the problem's id, figure_files.free_body_name), with what it
-    shows in words; none where the problem has nothing to draw."""
-    drawn = {}
+def shown(problem: Problem, solution: Solution) -> tuple[figure_files.Image | None, dict[str, figure_files.Image]]:
+    """The scene's figure (None where the problem has nothing to draw) and each body's free-body
+    diagram, compiled in one document, each with what it shows in words (`alt`)."""
+    pictures, alts = {}, {}
     scene = figure.tikz(problem)
     if scene:
-        drawn[problem.id] = (scene, f"Figure of {problem.title}")
+        pictures[problem.id], alts[problem.id] = scene, f"Figure of {problem.title}"
+    bodies = {}
     for diagram in ProblemVariants(problem, solution, []).shown_free_bodies.values():
-        drawn[figure_files.free_body_name(problem.id, diagram.body)] = (diagram.tikz, diagram.alt)
-    if not drawn:
-        return {}
-    export.require("pdftocairo")
-    with tempfile.TemporaryDirectory(prefix="derive-figures-") as scratch:
-        tex = Path(scratch) / "figures.tex"
-        tex.write_text(figure_files.document([tikz for tikz, _ in drawn.values()]), encoding="utf-8")
-        pictures = figure_files.images(list(drawn), export.pdf(tex))
-    return {name: (pictures[name], alt) for name, (_, alt) in drawn.items()}
+        name = bodies[diagram.body] = figure_files.free_body_name(problem.id, diagram.body)
+        pictures[name], alts[name] = diagram.tikz, diagram.alt
+    images = figure_files.drawn(pictures, alts)
+    return images.get(problem.id), {body: images[name] for body, name in bodies.items()}
