@@ -34,7 +34,8 @@ def test_the_set_rate_is_printed():
     parts = [float(line.split(" us")[0].rsplit(None, 1)[1]) for line in lines[floor + 1:]]
     assert len(parts) == 4 and all(part > 0 for part in parts)
     total = float(lines[floor].split(" us in all")[0].rsplit(None, 1)[1])
-    assert abs(total - sum(parts)) <= 0.2  # the parts are printed rounded
+    # each of the 4 parts and the total printed rounded to 0.1 s: off by at most 5 x 0.05 s (a run was 0.2000000000000028)
+    assert abs(total - sum(parts)) <= 0.25
 
 
 def test_the_sheet_section_says_where_the_time_goes():
