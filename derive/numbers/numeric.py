@@ -9,7 +9,8 @@ Parameter values are exact rationals. Five backends evaluate an answer:
   else the precision is doubled up to MAX_BITS, and past that the ``exact`` backend decides. An
   answer with a function derive.numbers.balls does not map (an integral, a derivative) is evaluated by
   the ``agreement`` backend. Both fallbacks are counted in FALLBACKS;
-- ``agreement`` (the policy before balls): float64 and mpmath at ``digits + 20``; when they agree
+- ``agreement`` (the policy before balls): float64 (an integral by SciPy's QUADPACK) and mpmath
+  at ``digits + 20`` (an integral by tanh-sinh); when they agree
   to two digits beyond the ones shown (possible for up to 12 digits) the mpmath value is
   rounded; else mpmath again at twice the precision, and when that disagrees too the exact
   backend decides. Disagreement between precisions is what cancellation looks like;
@@ -36,12 +37,14 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 from collections import Counter
 from decimal import ROUND_HALF_EVEN, Context, Decimal
 from functools import cached_property, lru_cache
 from typing import NamedTuple
 
 import mpmath
+import numpy
 import sympy as sp
 from flint import arb
 from sympy.core.evalf import PrecisionExhausted
@@ -176,8 +179,25 @@ class _Lambdified:
         self.symbols = sorted(expression.free_symbols, key=str)
 
     @cached_property
-    def _float(self):  # mpmath too: elliptic_k and the like
+    def _float(self):
+        """float64 throughout. An integral goes to SciPy's QUADPACK (Gauss-Kronrod), in float64, a
+        method independent of the mpmath tanh-sinh it is checked against: where mpmath's functions
+        stood in for math's, math.sin of an mpf ran in float64 anyway, so a cancellation next to
+        the ends (a start from rest) failed it, and each such value paid for quadratures at two
+        higher precisions. Otherwise math, and mpmath for what math lacks (elliptic_k)."""
+        if self.expression.has(sp.Integral):
+            return sp.lambdify(self.symbols, self.expression, "scipy")
         return sp.lambdify(self.symbols, self.expression, [QUADRATURE, "math", "mpmath"])
+
+    def _fast(self, values) -> float:
+        """The float64 value (nan where float64 cannot evaluate it: the root of a negative number,
+        a quadrature that does not converge)."""
+        with warnings.catch_warnings(), numpy.errstate(all="ignore"):
+            warnings.simplefilter("ignore")  # SciPy's IntegrationWarning: the agreement decides
+            try:
+                return float(self._float(*(float(values[s]) for s in self.symbols)))
+            except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+                return math.nan
 
     @cached_property
     def _mpmath(self):
@@ -207,11 +227,8 @@ class _Lambdified:
         """The policy before balls (the module's docstring), the fallback for what balls do not map."""
         high, high_decimal = self._at(values, digits + 2 * GUARD_DIGITS)
         if digits + 2 <= 14:  # float64 can vouch for this many digits when it agrees
-            try:
-                fast = mpmath.mpf(float(self._float(*(float(values[s]) for s in self.symbols))))
-            except (ValueError, ZeroDivisionError, OverflowError):
-                fast = None
-            if fast is not None and _agree(fast, high, digits + 2):
+            fast = self._fast(values)
+            if math.isfinite(fast) and _agree(mpmath.mpf(fast), high, digits + 2):
                 return round_decimal(high_decimal, digits)
         higher, higher_decimal = self._at(values, 2 * (digits + 2 * GUARD_DIGITS))
         if _agree(high, higher, digits + 2):
