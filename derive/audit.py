@@ -83,7 +83,7 @@ def row_of(solution: Solution, start: float | None = None) -> Row:
             row.figures = tuple(f for r in reports for f in r.figures)
             if not passed:
                 row.passed, row.failure = False, "; ".join(n for r in reports for n in r.notes)
-        unstated = signs.unstated(solution)
+        unstated = signs.unstated(solution) + signs.ungiven(solution.problem)
         if unstated:
             row.passed, row.failure = False, "; ".join(filter(None, [row.failure, *unstated]))
     except (CheckFailure, InputError) as error:

@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 from lxml import etree
 
-from conftest import refused, run_derive
+from conftest import refused, run_derive, write_problem
 from derive.language.problem import load
 from derive.solution.answers import Solution
 
@@ -150,3 +150,49 @@ def test_without_a_stated_convention_the_block_falls_at_a_magnitude_downward(tmp
     a = json.loads(done.stdout)["answers"]["a"]
     # Kleppner & Kolenkow (a mass on a cord wound on a disk): a = 2 m g/(M + 2 m), downward
     assert a["direction"] == "down" and abs(float(a["value"]) - 2 * 9.81 / 4) < 1e-12
+
+
+def _incline_counted_up_the_slope(convention: str) -> str:
+    """The rolling sphere, its question stating a sign convention for its acceleration and friction."""
+    text = (ROOT / "problems" / "rolling" / "rolling_incline.yaml").read_text()
+    text = text.replace("Find its acceleration,", f"Taking {convention} as positive, find its acceleration,")
+    text = text.replace("of: ball.acceleration.down_incline, unit: m/s^2}",
+                        f"of: ball.acceleration.down_incline, unit: m/s^2, sign: {convention}}}")
+    return text.replace("unit: N, magnitude: true}", f"unit: N, sign: {convention}}}")
+
+
+def test_a_stated_convention_that_counts_the_other_way_turns_the_answers_round(tmp_path):
+    """The question says up the slope is positive; the routes count down it. Halliday, Resnick &
+    Walker, Sample Problem 11.02: a = (5/7) g sin(theta) down the ramp, f = (2/7) M g sin(theta) up it,
+    so up-the-slope components are -(5/7) g sin(theta) and +(2/7) M g sin(theta)."""
+    solution = Solution(load(write_problem(tmp_path, _incline_counted_up_the_slope("up the incline"))))
+    M, g, theta = (sp.Symbol(n, positive=True) for n in ("M", "g", "theta"))
+    assert sp.simplify(solution.expression("a") + sp.Rational(5, 7) * g * sp.sin(theta)) == 0
+    assert sp.simplify(solution.expression("f") - sp.Rational(2, 7) * M * g * sp.sin(theta)) == 0
+    assert solution.senses["a"] is None and solution.senses["f"] is None  # no direction in words: the sign says it
+    down = Solution(load(write_problem(tmp_path, _incline_counted_up_the_slope("down the ramp"))))
+    assert sp.simplify(down.expression("a") - sp.Rational(5, 7) * g * sp.sin(theta)) == 0
+    assert sp.simplify(down.expression("f") + sp.Rational(2, 7) * M * g * sp.sin(theta)) == 0
+
+
+def test_a_convention_that_names_no_way_the_quantity_points_is_refused(tmp_path):
+    message = refused(tmp_path, _incline_counted_up_the_slope("toward the wall"), "ask.a.sign")
+    assert "'down the slope' or 'up the slope'" in message
+
+
+def test_derive_check_refuses_a_question_whose_convention_no_ask_gives(tmp_path):
+    """The Atwood machine's question says "taking up as positive" of the heavier block, which goes
+    down (Serway & Jewett ch. 10: a = (m1 - m2) g/(m1 + m2 + M/2) downward): without `sign:` its key
+    would grade +2.91 m/s^2 "down", and a student who counts as told (-2.91) would be marked wrong."""
+    from derive.checks import signs
+    text = (ROOT / "problems" / "torque" / "atwood_massive_pulley.yaml").read_text()
+    assert ", sign: taking up as positive}" in text
+    assert signs.ungiven(load(write_problem(tmp_path, text))) == []
+    ungiven = signs.ungiven(load(write_problem(tmp_path, text.replace(", sign: taking up as positive}", "}"))))
+    assert len(ungiven) == 1 and "question: it states a sign convention ('taking up as positive')" in ungiven[0]
+    meaning = text.replace("angular acceleration of the pulley,", "angular acceleration of the pulley (clockwise positive),")
+    assert any(u.startswith("ask.alpha: its meaning states a sign convention") for u in signs.ungiven(
+        load(write_problem(tmp_path, meaning))))
+    solution = Solution(load(write_problem(tmp_path, text)))
+    m1, m2, M, g = (sp.Symbol(n, positive=True) for n in ("m1", "m2", "M", "g"))
+    assert sp.simplify(solution.expression("a") + 2 * g * (m1 - m2) / (2 * m1 + 2 * m2 + M)) == 0

@@ -27,7 +27,8 @@ def _principles(steps) -> list[str]:
     """Each step's principle, by the words it opens with."""
     kinds = {"Newton's second law": "newton", "Torque about": "torque", "Across its motion": "across",
              "Solving": "solve", "Energy is conserved": "energy", "Energy conservation": "energy",
-             "From rest at the constant acceleration": "kinematics", "It rolls without slipping while": "friction"}
+             "From rest at the constant acceleration": "kinematics", "It rolls without slipping while": "friction",
+             "With the question's sign convention": "convention"}
     result = []
     for step in steps:
         kind = next((k for opening, k in kinds.items() if step.text.startswith(opening)), None)
@@ -39,8 +40,8 @@ def _principles(steps) -> list[str]:
 
 
 def _solved(steps, name: str) -> sp.Expr:
-    (value,) = [e.rhs for s in steps if s.role == "solve" for e in s.equations if str(e.lhs) == name]
-    return value
+    """The value a solving step gives `name` (the last, where the question's sign convention turns it round)."""
+    return [e.rhs for s in steps if s.role == "solve" for e in s.equations if str(e.lhs) == name][-1]
 
 
 def _same(a, b) -> bool:
@@ -75,9 +76,10 @@ def test_the_atwood_machine_with_a_massive_pulley():
     a massive pulley): Newton for each block, the torque about the axle, a = R alpha;
     a = (m1 - m2) g/(m1 + m2 + M/2)."""
     steps = Solution(_load("atwood_massive_pulley")).student_steps["Forces and torques along the motion"]
-    assert _principles(steps) == ["torque", "newton", "newton", "ties", "solve"]
+    assert _principles(steps) == ["torque", "newton", "newton", "ties", "solve", "convention"]
     m1, m2, M, g = _symbols("m1", "m2", "M", "g")
-    assert _same(_solved(steps, "a"), (m1 - m2) * g / (m1 + m2 + M / 2))
+    assert _same(_solved(steps, "a_left"), (m1 - m2) * g / (m1 + m2 + M / 2))  # down, along its motion
+    assert _same(_solved(steps, "a"), -(m1 - m2) * g / (m1 + m2 + M / 2))  # "taking up as positive"
     assert {"T_1", "T_2"} <= {str(e.lhs) for s in steps for e in s.equations}  # a tension on each side
 
 
@@ -85,9 +87,10 @@ def test_the_yo_yo_falls_by_newton_and_the_torque_about_its_center():
     """Halliday, Resnick & Walker 10th ed., ch. 11, Module 11-3 (the yo-yo, eq. 11-13:
     a = g/(1 + I/(M R0^2)), R0 the axle's radius)."""
     steps = Solution(_load("yoyo_axle")).student_steps["Forces and torques along the motion"]
-    assert _principles(steps) == ["newton", "ties", "solve"]
+    assert _principles(steps) == ["newton", "ties", "solve", "convention"]
     M, g, R, r = _symbols("M", "g", "R", "r")
-    assert _same(_solved(steps, "a"), g / (1 + (M * R**2 / 2) / (M * r**2)))
+    assert _same(_solved(steps, "a_yoyo"), g / (1 + (M * R**2 / 2) / (M * r**2)))  # down, along its motion
+    assert _same(_solved(steps, "a"), -g / (1 + (M * R**2 / 2) / (M * r**2)))  # "up positive"
 
 
 def test_the_rod_released_from_horizontal_turns_about_its_pivot():
@@ -107,10 +110,12 @@ def test_a_disk_on_its_axle_with_a_hanging_block():
     """The lecture notes' §4.1 and Halliday ch. 10 (a block hanging from a cord wound on a disk):
     m g - T = m a, T R = (M R^2/2) alpha, a = R alpha; a = 2 m g/(M + 2 m)."""
     steps = Solution(load("string_wrapped_disk")).student_steps["Forces and torques along the motion"]
-    assert _principles(steps) == ["torque", "newton", "ties", "solve"]
+    assert _principles(steps)[:4] == ["torque", "newton", "ties", "solve"]
+    assert set(_principles(steps)[4:]) <= {"convention"}
     m, M, g = _symbols("m", "M", "g")
     # the ask `a` is the block's y component (y up), negative: the route's acceleration is renamed
     assert _same(_solved(steps, "a_block"), 2 * m * g / (M + 2 * m))
+    assert _same(_solved(steps, "a"), -2 * m * g / (M + 2 * m))
 
 
 def test_the_route_agrees_with_both_routes_in_derive_check():

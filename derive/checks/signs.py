@@ -7,10 +7,16 @@ over each problem at points of its ranges (the middle, then draws), where its co
 >>> from derive.solution.answers import Solution
 >>> unstated(Solution(load("rod_endpoint")))
 []
+>>> ungiven(load("rod_endpoint"))
+[]
 """
 from __future__ import annotations
 
+import re
+
 from sympy.core.function import AppliedUndef
+
+from derive.model.directions import directional
 
 from derive.numbers import numeric
 from derive.solution.crosschecks import sample_points
@@ -45,3 +51,32 @@ def unstated(solution) -> list[str]:
                              "or state the convention in the question and give it (sign:)")
                 break
     return found
+
+
+#: Words that state a sign convention ("taking up as positive", "counter-clockwise positive").
+_CONVENTION = re.compile(r"\b(positive|negative)\b", re.IGNORECASE)
+
+
+def ungiven(problem) -> list[str]:
+    """Each sign convention a question or an ask's meaning states that no ask gives as `sign:`. The
+    key then grades a quantity with a direction as its magnitude, with its direction in words, so
+    a student who counts as the question says ("taking up as positive": -2.91 m/s^2 for a block
+    going down) is marked wrong."""
+    found = [f"ask.{name}: its meaning states a sign convention ({ask.meaning!r}) that the ask does not "
+             "give: give it as sign: in the question's words, or drop it and ask the magnitude"
+             for name, ask in problem.asks.items()
+             if ask.sign is None and directional(ask.quantity) and _CONVENTION.search(ask.meaning)]
+    stated = _CONVENTION.search(problem.question)
+    if stated and not any(ask.sign for ask in problem.asks.values()):
+        found.append(f"question: it states a sign convention ({_phrase(problem.question, stated)!r}) that no "
+                     "ask gives: give it as sign: on the ask it is for (the key grades that ask's signed value), "
+                     "or drop it from the question")
+    return found
+
+
+def _phrase(text: str, word: re.Match) -> str:
+    """The words around a convention's "positive": back to an opening bracket or a comma, on to a
+    closing one (the parenthesis a question states it in)."""
+    start = max(text.rfind(c, 0, word.start()) for c in "(,.") + 1
+    ends = [i for i in (text.find(c, word.end()) for c in "),.") if i >= 0]
+    return " ".join(text[start:min(ends, default=len(text))].split())

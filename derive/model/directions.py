@@ -19,6 +19,7 @@ Sense(positive='up', negative='down')
 """
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -92,3 +93,33 @@ def along(x: float, y: float) -> Sense:
     if abs(x) <= 1e-9 * size:
         return Sense(*AXES["y"]) if y > 0 else Sense(*reversed(AXES["y"]))
     return Sense(*SLOPE) if y < 0 else Sense(*reversed(SLOPE))
+
+
+#: Other words a question uses for the same way: a ramp's or an incline's slope, an anticlockwise turn.
+_SAME_WAY = (("incline", "slope"), ("ramp", "slope"), ("anticlockwise", "counter-clockwise"),
+             ("anti-clockwise", "counter-clockwise"), ("counterclockwise", "counter-clockwise"))
+
+
+def stated(sense: Sense, convention: str) -> int | None:
+    """The sign that makes a question's stated convention hold: +1 where it names the sense's positive
+    words as the positive way ("up positive", "taking up as positive", "y up", "down negative"), -1
+    where it names the negative words ("down the incline positive" for an acceleration whose routes
+    count up the slope), None where it names neither or both (then the engine cannot tell which way
+    the student is told is positive, and refuses).
+
+    >>> stated(Sense("up", "down"), "taking up as positive"), stated(Sense("up", "down"), "down negative")
+    (1, 1)
+    >>> stated(Sense(*SLOPE), "positive up the incline"), stated(Sense(*TURNS), "clockwise positive")
+    (-1, -1)
+    >>> stated(Sense(*AXES["x"]), "x toward the pulley") is None
+    True
+    """
+    text = " ".join(convention.lower().replace("$", " ").split())
+    for word, same in _SAME_WAY:
+        text = text.replace(word, same)
+    named = [sign for sign, words in ((1, sense.positive), (-1, sense.negative))
+             if re.search(rf"(?<![\w-]){re.escape(words)}(?![\w-])", text)]  # not "clockwise" in "counter-clockwise"
+    if len(named) != 1:
+        return None
+    told_negative = re.search(r"\bnegative\b", text) and not re.search(r"\bpositive\b", text)
+    return -named[0] if told_negative else named[0]

@@ -17,7 +17,9 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derive.core.errors import ProblemError
 from derive.core.tidying import leading_plus, tidy
+from derive.model import directions
 from derive.numbers import intervals
 from derive.solution.crosschecks import sample_points
 
@@ -52,6 +54,29 @@ def negated(expr: sp.Expr) -> sp.Expr:
     ((a - b)/c, a*b)
     """
     return leading_plus(tidy(-expr))
+
+
+def stated(solution, name: str) -> int:
+    """The sign that turns the routes' component of a quantity with a direction into the one the
+    question's `sign:` states (+1: the same; -1: "down the slope positive" where the routes count
+    up it); 1 for a quantity without a direction. A convention that names no way the quantity can
+    point is refused, naming the field: the engine never guesses which way a student is told to count.
+
+    >>> from derive.language.problem import load
+    >>> from derive.solution.answers import Solution
+    >>> stated(Solution(load("string_wrapped_disk")), "alpha")
+    1
+    """
+    ask = solution.problem.asks[name]
+    sense = directions.sense(solution.scene, ask.quantity, solution.coordinates, solution._sample)
+    if sense is None:
+        return 1
+    sign = directions.stated(sense, ask.sign)
+    if sign is None:
+        raise ProblemError(f"{solution.problem.path}: ask.{name}.sign: say which way is positive in the words "
+                           f"of its direction, {sense.positive!r} or {sense.negative!r} "
+                           f"(as in '{sense.positive} positive'), not {ask.sign!r}")
+    return sign
 
 
 def direction(solution, name: str, values: dict[sp.Symbol, sp.Expr]) -> str | None:

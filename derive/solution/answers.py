@@ -469,6 +469,8 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         with limits.time_limit(f"{self.problem.path}: ask.{name}"):
             result = self._expression(name)
             ask = self.problem.asks[name]
+            if ask.sign is not None:
+                return result if answer_signs.stated(self, name) == 1 else answer_signs.negated(result)
             if ask.magnitude or self.senses[name] is None:
                 return answer_signs.magnitude(self.problem, result) if ask.magnitude else result
             return answer_signs.magnitude(self.problem, result, proven=True)
@@ -494,8 +496,11 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         """The answer in the file's own axes, before a direction in words: a component, a rotation
         counter-clockwise positive (`signed_expression`), the magnitude where the file asks
         `magnitude: true`; what a simulation measures."""
-        if self.problem.asks[name].magnitude:
+        ask = self.problem.asks[name]
+        if ask.magnitude:
             return self.expressions[name]
+        if ask.sign is not None:  # the key's answer, in the file's axes again
+            return answer_signs.stated(self, name) * self.expressions[name]
         return self.signed_expressions.get(name, self.expressions[name])
 
     @cached_property

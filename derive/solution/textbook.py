@@ -118,6 +118,8 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     for ask in solution.problem.asks.values():
         if ask.quantity.detail == "min_friction_coefficient":
             result[title].append(_least_coefficient(solution, ask))
+        if ask.sign is not None and isinstance(along, AlongMotion):
+            result[title].extend(_counted(solution, along, ask))
     for body, balance in solution.energy_balances.items():
         result["The speed at the bottom, by energy" if len(solution.energy_balances) == 1
                else f"The speed of the {body} at the bottom, by energy"] = _energy(solution, body, balance, along)
@@ -220,6 +222,19 @@ def _energy(solution, body: str, balance, along: AlongMotion) -> list[Step]:
                  (*given, sp.Eq(omega, ratio * v), sp.Eq(KINETIC, translation + moment * omega**2 / 2),
                   sp.Eq(KINETIC, balance.steps[1].equations[0].rhs))),
             balance.steps[-1]]
+
+
+def _counted(solution, along: AlongMotion, ask) -> list[Step]:
+    """The answer counted the way the question says, where the route found it along the motion the
+    other way ("taking up as positive" of a block going down: a = -2 g (m1 - m2)/(M + 2 m1 + 2 m2));
+    none where they agree."""
+    for value in along.own.values():
+        if value is not None and not _same(solution, ask.name, value) and _same(solution, ask.name, -value):
+            asked = sp.Symbol(ask.name)  # not the route's own symbol, which `names` may rename
+            return [Step(f"With the question's sign convention ({ask.sign}), the answer is the opposite of "
+                         "the value found along the motion", (sp.Eq(asked, solution.expression(ask.name)),),
+                         role="solve")]
+    return []
 
 
 def _least_coefficient(solution, ask) -> Step:
