@@ -34,6 +34,7 @@ from derive.mechanics.along_motion import AlongMotion
 from derive.solution import answer_signs, textbook
 from derive.solution.answers import Solution
 from derive.core.errors import InputError
+from derive.publishing import figure
 from derive.publishing.figure import free_body
 from derive.language.problem import DEFAULT_SIG_FIGS, Problem
 from derive.text.stencil import Stencil
@@ -177,6 +178,11 @@ class ProblemVariants:
         return self.student_free_bodies if self.solution.student_steps is not None else self.free_bodies
 
     @cached_property
+    def figure(self) -> str | None:
+        """The problem's figure (derive.publishing.figure), drawn once for its worksheet, solutions and exports."""
+        return figure.tikz(self.problem)
+
+    @cached_property
     def _evaluator(self) -> numeric.Evaluator:
         return numeric.evaluator(tuple(self.in_declared_units.values()))
 
@@ -202,7 +208,19 @@ class ProblemVariants:
 
     def directions(self, draw: dict[str, sp.Expr]) -> dict[str, str | None]:
         """Which way each asked quantity with a direction points in this variant, in words ("up the
-        slope"; derive.solution.answer_signs), its value being the magnitude; None for the others."""
+        slope"; derive.solution.answer_signs), its value being the magnitude; None for the others. The
+        first time one of this object's own draws is asked, the signs of all of them are found together,
+        certified in balls by one compiled program (numeric.Evaluator.signs); a sign the balls leave
+        open (a zero, a general result) is answer_signs.direction's."""
+        if id(draw) not in self._directions and id(draw) in self._own_draws:
+            named = [n for n, sense in self.solution.senses.items() if sense is not None]
+            signs = numeric.evaluator(tuple(self.solution.signed_expressions[n] for n in named)).signs(
+                [self.si_values(d) for d in self.draws]) if named else [[] for _ in self.draws]
+            for d, row in zip(self.draws, signs):
+                known = {n: self.solution.senses[n].of(sign) for n, sign in zip(named, row) if sign}
+                self._directions[id(d)] = {name: known[name] if name in known else
+                                           answer_signs.direction(self.solution, name, self.si_values(d))
+                                           for name in self.problem.asks}
         return self._once(self._directions, draw, lambda: {
             name: answer_signs.direction(self.solution, name, self.si_values(draw)) for name in self.problem.asks})
 

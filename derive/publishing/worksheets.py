@@ -22,7 +22,7 @@ from typing import Sequence
 import sympy as sp
 
 from derive.text.latex import latex_of, symbol_latex, tex_escape
-from derive.publishing import (answer_keys, canvas, deriving, distractors, export, figure, figure_files, limiting_cases, lms,
+from derive.publishing import (answer_keys, canvas, deriving, distractors, export, figure_files, limiting_cases, lms,
                                notation, output_folder, render)
 from derive.text import typesetting
 from derive.core import units
@@ -142,7 +142,7 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
     return {"title": problem.title, "source": problem.source, "routes": routes, "verification": verification,
             "answers": answers,
             "variants": variants, "checks": checks, "corrections": list(problem.corrections),
-            "figure": figure.tikz(problem)}
+            "figure": item.figure}
 
 
 def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, diagrams: dict) -> list[dict]:
@@ -342,7 +342,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
             prepared = _prepare(problem_set, variants, seed, progress, jobs, scheduler, cache)
             header = {"title": problem_set.title, "course": problem_set.course, "due": problem_set.due,
                       "answer_space": problem_set.answer_space}
-            drawn = [figure.tikz(item.problem) for item in prepared]  # one per problem, shared by its variants
+            drawn = [item.figure for item in prepared]  # one per problem, shared by its variants
             # The figures the outputs beyond the PDFs show as images, by problem id: each compiled once.
             figures = {item.problem.id: tikz for item, tikz in zip(prepared, drawn) if tikz} \
                 if formats & figure_files.OUTPUTS else {}
