@@ -6,7 +6,7 @@ prints in a script size). Scanned: the results of every problem, and the whole s
 student's route is written (derive.solution.textbook; elsewhere the steps shown are the engine's two
 routes, the instructor's proof, issue 37 item 3). Quadratures (a period at an amplitude as an integral
 over w) and derivatives (d/dt, which print as fractions) are not scanned for fractions. The rewrites:
-derive.core.range_forms (over the parameter ranges) and derive.text.printed_form (for every value)."""
+derive.numbers.range_forms (over the parameter ranges) and derive.text.printed_form (for every value)."""
 import re
 from pathlib import Path
 
@@ -113,7 +113,7 @@ def test_the_scans_find_what_sympy_prints_untidied():
     for name, example in examples.items():
         raw = f"\\begin{{align*}}\nx &= {sp.latex(example)}\n\\end{{align*}}"
         assert list(unteacherly(raw)) == [name], (name, raw)
-    from derive.core import range_forms
+    from derive.numbers import range_forms
     ranges = {alpha: (0, sp.pi / 3), beta: (0, sp.pi / 4)}
     for name, example in examples.items():
         printed = f"\\begin{{align*}}\nx &= {latex_of(range_forms.within(example, ranges))}\n\\end{{align*}}"

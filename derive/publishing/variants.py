@@ -29,7 +29,8 @@ from derive.text.latex import latex_of
 from derive.publishing import distractors, lms
 from derive.text import latex_safety
 from derive.numbers import numeric
-from derive.core import range_forms, units
+from derive.core import units
+from derive.numbers import range_forms
 from derive.mechanics.along_motion import AlongMotion
 from derive.solution import answer_signs, textbook
 from derive.solution.answers import Solution
@@ -128,7 +129,7 @@ class ProblemVariants:
     @cached_property
     def shown_expressions(self) -> dict[str, sp.Expr]:
         """Each answer's expression as the documents print it: as it reads over the parameter ranges
-        (derive.core.range_forms: 1/cos(beta), not sqrt(tan(beta)**2 + 1)); the keys keep the derived one."""
+        (derive.numbers.range_forms: 1/cos(beta), not sqrt(tan(beta)**2 + 1)); the keys keep the derived one."""
         ranges = range_forms.box(self.problem)
         return {name: range_forms.within(expression, ranges) for name, expression in self.solution.expressions.items()}
 

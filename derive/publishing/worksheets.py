@@ -25,7 +25,8 @@ from derive.text.latex import latex_of, symbol_latex, tex_escape
 from derive.publishing import (answer_keys, canvas, deriving, distractors, export, figure, figure_files, limiting_cases, lms,
                                notation, output_folder, render)
 from derive.text import prose, typesetting
-from derive.core import range_forms, units
+from derive.core import units
+from derive.numbers import range_forms
 from derive.solution.answers import Solution
 from derive.language.defaults import Defaults
 from derive.core.errors import InputError
