@@ -114,7 +114,7 @@ def _prose(tex: str) -> list[str]:
 def _lone_symbols(paragraph: str, names: set[str]) -> list[str]:
     """The problem's symbols (and Greek letters' names) in a paragraph's running text, not set as math."""
     text = re.sub(r"\\[a-zA-Z]+\*?", " ", re.sub(r"\$[^$]*\$", " ", paragraph)).replace("\\_", "_")
-    return [w for w in re.findall(r"(?<![\w\\])([A-Za-z]\w*)(?!\w)", text) if w in names or w in GREEK_WORDS]
+    return [w for w in re.findall(r"(?<![\w\\'’])([A-Za-z]\w*)(?!\w)", text) if w in names or w in GREEK_WORDS]
 
 
 def _unreadable(tex: str, names: set[str]) -> tuple[list, list, list]:
@@ -142,7 +142,7 @@ def test_the_prose_checks_find_what_the_issue_found():
         r"\subsection*{and, their rates, on the accelerations}",
         "The constraints leave one coordinate of the scene: the kinetic energy is a function of it times the square "
         "of its rate.", "The constraints leave one coordinate; the kinetic energy in its rate:",
-        "Energy conservation from rest as the center drops h, at $v$.", "With omega found."])
+        "Energy conservation from rest as the center drops h, at $v$.", "With omega found in Lagrange's equations."])
     fragments, repeated, lone = _unreadable(tex, {"h", "v"})
     assert fragments == ["and, their rates, on the accelerations"]
     assert [after for _, after in repeated] == ["The constraints leave one coordinate; the kinetic energy in its rate:"]
