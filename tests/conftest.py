@@ -120,6 +120,33 @@ def derived(reference):
     return _DERIVED[problem.path]
 
 
+_STUDENT: dict = {}
+
+
+def student_solution(reference) -> tuple[str, bool]:
+    """(the worked solution a student is given of a problem, as LaTeX, whether it takes the student's
+    route): the solutions sheet of that problem alone at the middle of its ranges, without the
+    instructor's verification by two routes, its figures and free-body diagrams left out (TikZ,
+    no text); derived once for the run (`derived`)."""
+    from decimal import Decimal
+
+    from derive.publishing import render, variants, worksheets
+
+    solution = derived(reference)
+    if solution.problem.path not in _STUDENT:
+        problem = solution.problem
+        middle = {n: p.value if p.range is None else p.at(Decimal("0.5")) for n, p in problem.parameters.items()}
+        context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, [middle]), siunitx=True)
+        context["figure"] = ""
+        for route in context["routes"]:
+            for step in route["steps"]:
+                step["diagram"] = ""
+        tex = render.render("solutions.tex.j2", problems=[context], verification=False,
+                            set=SimpleNamespace(title="Week 1", course="Mechanics", due="Friday"))
+        _STUDENT[problem.path] = (tex, solution.student_steps is not None)
+    return _STUDENT[solution.problem.path]
+
+
 @pytest.fixture(autouse=True)
 def derivation_cache_of_its_own(tmp_path_factory, monkeypatch):
     """Each test its own empty derivation cache, never the user's (derive and the processes it starts

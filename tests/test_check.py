@@ -1,13 +1,19 @@
 """`derive check` and the simulation check: they pass on the library and catch what is wrong."""
+import difflib
+import re
+
 import pytest
 import sympy as sp
 
-from conftest import copy_library, derived, run_derive
+from conftest import copy_library, derived, run_derive, student_solution
 from derive.core import library
 from derive.checks import simulate
 from derive.solution.answers import Solution
 from derive.solution.crosschecks import CheckFailure
 from derive.language.problem import load
+from derive.publishing import worksheets
+from derive.text import prose
+from derive.text.latex import symbol_latex
 
 
 def test_simulation_agrees_with_the_closed_forms():
@@ -89,6 +95,77 @@ def test_every_check_and_step_of_the_library_reads_as_prose(problem_id):
     assert not [t for t in texts if any(p in t for p in PSEUDO_MATH)], texts  # some systems have no steps yet
     said = [s.words for steps in solution.steps().values() for step in steps for s in step.sentences]  # the parts'
     assert not [t for t in said if any(p in t for p in PSEUDO_MATH) or not _reads_as_a_sentence(t)], said
+
+
+#: Words a fragment opens with: a heading or a step's lead that continues the one before.
+FRAGMENT = re.compile(r"(and|or|but|of|their|its)\b", re.I)
+GREEK_WORDS = {"alpha", "beta", "gamma", "delta", "theta", "phi", "psi", "omega", "mu", "tau", "lambda", "rho", "sigma"}
+
+
+def _prose(tex: str) -> list[str]:
+    """The prose of a worked solution, paragraph by paragraph (a heading, a step's lead before its
+    equations, the sentences of a step): its equations, figures and numbers left out."""
+    body = tex[tex.index("\\maketitle") + len("\\maketitle"):]
+    body = re.sub(r"\\begin\{(align\*|center)\}.*?\\end\{\1\}", "\n\n", body, flags=re.S)
+    body = body.split("\\subsection*{Numbers for")[0]
+    return [p.strip() for p in re.split(r"\n", body) if p.strip() and not p.startswith("\\section{")]
+
+
+def _lone_symbols(paragraph: str, names: set[str]) -> list[str]:
+    """The problem's symbols (and Greek letters' names) in a paragraph's running text, not set as math."""
+    text = re.sub(r"\\[a-zA-Z]+\*?", " ", re.sub(r"\$[^$]*\$", " ", paragraph)).replace("\\_", "_")
+    return [w for w in re.findall(r"(?<![\w\\'’])([A-Za-z]\w*)(?!\w)", text) if w in names or w in GREEK_WORDS]
+
+
+def _unreadable(tex: str, names: set[str]) -> tuple[list, list, list]:
+    """(the fragments, the repeated paragraphs, the lone symbols) of a worked solution's prose."""
+    paragraphs = _prose(tex)
+    fragments, repeated, lone = [], [], []
+    for paragraph, after in zip(paragraphs, paragraphs[1:] + [""]):
+        heading = re.fullmatch(r"\\subsection\*\{(.*)\}", paragraph)
+        lead = heading.group(1) if heading else paragraph
+        if not paragraph.startswith(r"\textbf") and (not lead[:1].isupper() and not lead.startswith("$")
+                                                     or FRAGMENT.match(lead)):
+            fragments.append(lead)
+        if paragraph.endswith(".") and after.endswith(":") and prose.repeats(re.split(r"(?<=\.) ", paragraph)[-1], after):
+            repeated.append((paragraph, after))
+        if paragraph.endswith(".") and after.endswith(".") and \
+                difflib.SequenceMatcher(None, paragraph.split(), after.split()).ratio() > 0.8:
+            repeated.append((paragraph, after))
+        lone += _lone_symbols(paragraph, names)
+    return fragments, repeated, lone
+
+
+def test_the_prose_checks_find_what_the_issue_found():
+    """Issue 37's own examples, each found."""
+    tex = "\\maketitle\n" + "\n".join([
+        r"\subsection*{and, their rates, on the accelerations}",
+        "The constraints leave one coordinate of the scene: the kinetic energy is a function of it times the square "
+        "of its rate.", "The constraints leave one coordinate; the kinetic energy in its rate:",
+        "Energy conservation from rest as the center drops h, at $v$.", "With omega found in Lagrange's equations."])
+    fragments, repeated, lone = _unreadable(tex, {"h", "v"})
+    assert fragments == ["and, their rates, on the accelerations"]
+    assert [after for _, after in repeated] == ["The constraints leave one coordinate; the kinetic energy in its rate:"]
+    assert lone == ["h", "omega"]
+
+
+@pytest.mark.parametrize("problem_id", READINGS)
+def test_every_worked_solution_reads_as_prose(problem_id):
+    """Issue 37, item 7, over the LaTeX a student is given of each library problem: every heading and
+    every step's lead opens with a capital and is no fragment ("Step 3: and, their rates, on the
+    accelerations"); no lead before a step's equations says again what the sentence before it just
+    said (derive.text.prose.repeats), and no paragraph is followed by a near-copy of itself; a symbol
+    of the problem in running text is set as math ("as the center drops $H$"), and so is a Greek
+    letter (no "omega" in words)."""
+    tex, _ = student_solution(problem_id)
+    solution = derived(problem_id)
+    steps = {**solution.steps(), **(solution.student_steps or {})}
+    names = {n for n in worksheets.symbol_names(solution.problem, steps)
+             if n not in ("a", "A") and not symbol_latex(n).startswith(r"\mathit")}  # a word stays a word
+    fragments, repeated, lone = _unreadable(tex, names)
+    assert not fragments, fragments
+    assert not repeated, repeated
+    assert not lone, lone
 
 
 INCLINE_AND_PULLEY = """

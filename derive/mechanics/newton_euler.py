@@ -65,7 +65,7 @@ def derive(scene: Scene, coords: Coordinates | None = None) -> Derivation:
         if velocities:
             steps += [Step("Kinematic constraints on the velocities (in the reference configuration" + FIXED_LEFT_OUT
                            + ")", velocities, sentences=kinematic),
-                      Step("and, their rates, on the accelerations",
+                      Step("The same constraints on the accelerations (their rates of change)",
                            worth_showing([at_state(e, rest) for e in derivation.at_rest_equations[len(equations):]]),
                            role="equations")]
         elif kinematic and steps:  # every constraint only holds a coordinate fixed: said with the last balance

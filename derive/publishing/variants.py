@@ -30,6 +30,7 @@ from derive.publishing import distractors, lms
 from derive.text import latex_safety
 from derive.numbers import numeric
 from derive.core import units
+from derive.numbers import range_forms
 from derive.mechanics.along_motion import AlongMotion
 from derive.solution import answer_signs, textbook
 from derive.solution.answers import Solution
@@ -127,9 +128,16 @@ class ProblemVariants:
         return number_latex(value) if value is not None else self.expression_latexes[name]
 
     @cached_property
+    def shown_expressions(self) -> dict[str, sp.Expr]:
+        """Each answer's expression as the documents print it: as it reads over the parameter ranges
+        (derive.numbers.range_forms: 1/cos(beta), not sqrt(tan(beta)**2 + 1)); the keys keep the derived one."""
+        ranges = range_forms.box(self.problem)
+        return {name: range_forms.within(expression, ranges) for name, expression in self.solution.expressions.items()}
+
+    @cached_property
     def expression_latexes(self) -> dict[str, str]:
         """Each answer's expression as LaTeX, for a general (symbolic) result in every variant."""
-        return {name: latex_of(expression) for name, expression in self.solution.expressions.items()}
+        return {name: latex_of(expression) for name, expression in self.shown_expressions.items()}
 
     @cached_property
     def expression_texts(self) -> dict[str, str]:

@@ -24,8 +24,9 @@ import sympy as sp
 from derive.text.latex import latex_of, symbol_latex, tex_escape
 from derive.publishing import (answer_keys, canvas, deriving, distractors, export, figure_files, limiting_cases, lms,
                                notation, output_folder, render)
-from derive.text import typesetting
+from derive.text import prose, typesetting
 from derive.core import units
+from derive.numbers import range_forms
 from derive.solution.answers import Solution
 from derive.language.defaults import Defaults
 from derive.core.errors import InputError
@@ -118,7 +119,7 @@ def _check_latex(check, problem: Problem, siunitx: bool) -> str:
         units_of = ", ".join(f"${symbol_latex(n)}$ in ${unit_latex(a.unit, siunitx)}$" if unit_latex(a.unit, siunitx)
                              else f"${symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
         return f"Every answer has the units it should: {units_of}."
-    return tex_escape(check.reading)
+    return prose.set_as_math(check.reading, [*problem.parameters, *problem.asks])
 
 
 def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
@@ -133,8 +134,8 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
     verification = _routes(item, proof, numbered, siunitx, item.free_bodies) if student is not None else []
     answers = [
         {"symbol": symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
-         "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
-                         typesetting.note(tex_escape(a.meaning), tex=siunitx))}
+         "rows": typeset(sp.Eq(sp.Symbol(n), item.shown_expressions[n], evaluate=False),
+                         typesetting.note(prose.set_as_math(a.meaning, [*problem.parameters, *problem.asks]), tex=siunitx))}
         for n, a in problem.asks.items()
     ]
     variants = _numbers(item, siunitx)
@@ -150,6 +151,8 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
     from `numbered`, the free-body diagram beside a balance (`diagrams`, by the id of its step), the
     parts' sentences."""
     printed = notation.named(item.problem, item.solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
+    printed = range_forms.steps_within(printed, range_forms.box(item.problem))  # 1/cos(beta) over the ranges
+    names = symbol_names(item.problem, printed)
     routes = []
     for route, steps in all_steps.items():
         shown, solved = [], []  # the numbers of the equations this route solves
@@ -157,12 +160,21 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
             numbers = [next(numbered) for _ in s.equations]
             solved += numbers if s.role == "equations" else []
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
-            shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
+            if s.sentences and prose.repeats(s.sentences[-1].words, s.text):
+                text = ""  # the sentence just said it: no near-copy of it before the equations
+            shown.append({"text": prose.set_as_math(prose.capital(text), names), "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
                           "diagram": diagrams[id(original)].tikz if id(original) in diagrams else "",
                           "body": diagrams[id(original)].body if id(original) in diagrams else "",
                           "sentences": [sentence.latex() for sentence in s.sentences]})
-        routes.append({"title": route_title(route), "steps": shown})
+        routes.append({"title": prose.set_as_math(prose.capital(route_title(route)), names), "steps": shown})
     return routes
+
+
+def symbol_names(problem: Problem, steps: dict) -> set[str]:
+    """The names of a worked solution's symbols, which its prose sets as math (prose.set_as_math):
+    the parameters, the asks, and every symbol its steps typeset."""
+    return {*problem.parameters, *problem.asks, *(s.name for s in notation.step_symbols(
+        step for route in steps.values() for step in route))}
 
 
 def numbers_context(item: ProblemVariants, siunitx: bool, given: dict[str, str], results: dict[str, str],

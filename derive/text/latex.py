@@ -13,7 +13,7 @@ from functools import lru_cache
 
 import sympy as sp
 from sympy.printing.conventions import split_super_sub
-from sympy.printing.latex import translate
+from sympy.printing.latex import LatexPrinter, translate
 from sympy.printing.pretty.pretty_symbology import greek_unicode
 from sympy.printing.str import StrPrinter
 
@@ -72,7 +72,26 @@ def latex_of(expression) -> str:
     """
     named = {s: symbol_latex(s.name) for s in (expression.atoms(sp.Symbol) if isinstance(expression, sp.Basic) else ())
              if not isinstance(s, sp.Dummy)}  # bound ones too (an integral's dx); a Dummy keeps sympy's own mark
-    return sp.latex(printed_form.textbook(expression), symbol_names=named)
+    return _Printer({"symbol_names": named}).doprint(printed_form.textbook(expression))
+
+
+class _Printer(LatexPrinter):
+    r"""sympy's LaTeX printer, a sum that it would open with a minus sign opened with its first
+    positive term, as a teacher writes pi/2 - alpha, 1 - x/(3 g) and sin(theta) - mu cos(theta)
+    (sympy orders the terms by their symbols, a number last: - alpha + pi/2).
+
+    >>> a, g, x = sp.symbols("alpha g x", positive=True)
+    >>> latex_of(sp.pi / 2 - a), latex_of(1 - x / (3 * g)), latex_of(x - 1), latex_of(-a - x)
+    ('\\frac{\\pi}{2} - \\alpha', '1 - \\frac{x}{3 g}', 'x - 1', '- \\alpha - x')
+    """
+
+    def _as_ordered_terms(self, expr, order=None):
+        terms = super()._as_ordered_terms(expr, order=order)
+        if isinstance(expr, sp.Add) and terms[0].could_extract_minus_sign():
+            first = next((t for t in terms if not t.could_extract_minus_sign()), None)
+            if first is not None:
+                return [first, *(t for t in terms if t is not first)]
+        return terms
 
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")

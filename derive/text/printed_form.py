@@ -27,7 +27,8 @@ def textbook(expression):
     """`expression` in the textbook's grouping (a number or a non-sympy object as it is)."""
     if not isinstance(expression, sp.Basic):
         return expression
-    return collected_roots(shares(_absolute(_trigonometric(expression))))
+    expression = unnested(plus_first(complements(expression)))
+    return roots_beside(collected_roots(shares(_absolute(_trigonometric(expression)))))
 
 
 def _trigonometric(expression: sp.Basic) -> sp.Basic:
@@ -218,3 +219,126 @@ def _radicand(factor: sp.Pow) -> sp.Expr:
 def _flat(product: sp.Mul) -> list:
     """The factors of a product, a product among them opened (2*pi*(a*b) as 2, pi, a, b)."""
     return [g for f in product.args for g in (_flat(f) if isinstance(f, sp.Mul) else [f])]
+
+
+def complements(expression: sp.Basic) -> sp.Basic:
+    """pi/2 - acos(y) as asin(y) and pi/2 - asin(y) as acos(y) (the two add up to pi/2 for every y):
+    the angle a teacher writes.
+
+    >>> y = sp.Symbol("y")
+    >>> complements(sp.pi / 2 - sp.acos(1 - y)), complements(sp.pi / 2 + sp.asin(y))
+    (asin(1 - y), asin(y) + pi/2)
+    """
+    other = {sp.acos: sp.asin, sp.asin: sp.acos}
+
+    def complement(e) -> bool:
+        return isinstance(e, sp.Add) and sp.pi / 2 in e.args and any(_negated_inverse(t) for t in e.args)
+
+    def rewritten(e: sp.Add) -> sp.Expr:
+        term = next(t for t in e.args if _negated_inverse(t))
+        inverse = -term
+        return e - sp.pi / 2 - term + other[type(inverse)](inverse.args[0], evaluate=False)  # asin(1 - y), not -asin(y - 1)
+
+    return expression.replace(complement, rewritten)
+
+
+def _negated_inverse(term) -> bool:
+    return isinstance(-term, (sp.acos, sp.asin))
+
+
+def plus_first(expression: sp.Basic) -> sp.Basic:
+    """No double negative: a product with a minus sign and a factor (a sum, or a sum's odd power)
+    with at least as many minus signs as it has turned, the two minus signs taken out:
+    -F R (-R cos(theta) + r) as F R (R cos(theta) - r). Of several such factors, the one that turns
+    with the fewest minus signs left in it (a denominator's -R + r before a numerator's
+    -27 R g + 27 g r + 7 v^2). The printer opens a sum with a positive term (derive.text.latex).
+
+    >>> F, R, r, x = sp.symbols("F R r x", positive=True)
+    >>> plus_first(-F * R * (-R * sp.cos(x) + r)), plus_first(-F / (x * (-R + r)))
+    (F*R*(R*cos(x) - r), F/(x*(R - r)))
+    """
+    def double(e) -> bool:
+        return isinstance(e, sp.Mul) and e.as_coeff_Mul()[0].is_negative and bool(_turnable(e))
+
+    def rewritten(product: sp.Mul) -> sp.Expr:
+        factor = min(_turnable(product), key=lambda f: _minus_signs(-f.as_base_exp()[0]))
+        base, exponent = factor.as_base_exp()
+        rest = sp.Mul.make_args(-(product / factor))  # unevaluated: sympy would spread the 7 of F/(7 (R - r)) over R - r
+        return sp.Mul(*rest, sp.Pow(-base, exponent), evaluate=False)
+
+    return expression.replace(double, rewritten)
+
+
+def _turnable(product: sp.Mul) -> list:
+    """The factors of a product that are a sum, or a sum to an odd power, with at least as many
+    minus signs as the sum turned: -2 d g (mu cos(theta) - sin(theta)) is 2 d g (sin(theta) - mu cos(theta))."""
+    found = []
+    for factor in product.args:
+        base, exponent = factor.as_base_exp()
+        if isinstance(base, sp.Add) and exponent.is_Integer and exponent % 2 == 1 \
+                and _minus_signs(-base) <= _minus_signs(base):
+            found.append(factor)
+    return found
+
+
+def _minus_signs(total: sp.Expr) -> int:
+    return sum(1 for t in sp.Add.make_args(total) if t.could_extract_minus_sign())
+
+
+
+
+def unnested(expression: sp.Basic) -> sp.Basic:
+    """No fraction inside a fraction's numerator or denominator, where it would print in a script
+    size: a sum holding fractions, inside a product that prints as one, over one denominator
+    (sympy's together): omega_t (3 + h^2/R^2)/(6 omega_3) as omega_t (3 R^2 + h^2)/(6 R^2 omega_3).
+
+    >>> h, R, w, W = sp.symbols("h R omega_t omega_3", positive=True)
+    >>> unnested(w * (3 + h**2 / R**2) / (6 * W))
+    omega_t*(3*R**2 + h**2)/(6*R**2*omega_3)
+    """
+    def nested(e) -> bool:
+        return isinstance(e, sp.Mul) and any(f.as_base_exp()[1].is_negative for f in e.args) \
+            and any(_fractional_sum(a) for a in e.atoms(sp.Add))
+
+    def rewritten(product: sp.Mul) -> sp.Expr:
+        return product.replace(_fractional_sum, sp.together)
+
+    return expression.replace(nested, rewritten)
+
+
+def _fractional_sum(e) -> bool:
+    """A sum one of whose terms has a symbol in a denominator, or a rational coefficient."""
+    return isinstance(e, sp.Add) and not e.has(sp.Derivative, sp.Integral) and any(
+        sp.fraction(t)[1] != 1 for t in e.args)
+
+
+def roots_beside(expression):
+    r"""A root whose radicand is a fraction, in a product that is a fraction itself, printed beside
+    that fraction, not in its numerator (where the radicand's fraction would print in a script size):
+    sqrt(10 g h/7)/R as (1/R) sqrt(10 g h/7). For printing only: the product is left unevaluated.
+
+    >>> g, h, R = sp.symbols("g h R", positive=True)
+    >>> sp.latex(roots_beside(sp.Mul(sp.Pow(10 * g * h / 7, HALF, evaluate=False), 1 / R, evaluate=False)))
+    '\\frac{1}{R} \\sqrt{\\frac{10 g h}{7}}'
+    """
+    if not isinstance(expression, sp.Basic):
+        return expression
+
+    def fraction_root(f) -> bool:
+        return isinstance(f, sp.Pow) and f.exp == HALF and sp.fraction(sp.together(f.base))[1] != 1
+
+    def beside(e) -> bool:
+        if not isinstance(e, sp.Mul):
+            return False
+        factors = _flat(e)
+        return any(fraction_root(f) for f in factors) and any(
+            f.as_base_exp()[1].is_negative or f.is_Rational and f.q != 1 for f in factors if not fraction_root(f))
+
+    def rewritten(product: sp.Mul) -> sp.Expr:
+        factors = _flat(product)
+        roots = [f for f in factors if fraction_root(f)]
+        rest = sp.Mul(*(f for f in factors if not fraction_root(f)))
+        sign = -1 if rest.could_extract_minus_sign() else 1
+        return sp.Mul(*([-1] if sign < 0 else []), sp.UnevaluatedExpr(sign * rest), *roots, evaluate=False)
+
+    return expression.replace(beside, rewritten)

@@ -18,12 +18,13 @@ way: LaTeX with the math in `$...$` and the symbols named as the equations name 
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
-from typing import Callable
+from typing import Callable, Iterable
 
 import sympy as sp
 
-from derive.text.latex import latex_of, tex_escape
+from derive.text.latex import latex_of, symbol_latex, tex_escape
 from derive.text.terminal import pretty
 
 
@@ -64,3 +65,49 @@ def capital(words: str) -> str:
     "The ball's contact with the Dome"
     """
     return words[:1].upper() + words[1:]
+
+
+def repeats(said: str, lead: str) -> bool:
+    """Whether `lead` (the words that introduce a step's equations) says again what the sentence
+    `said` just said: every word of three letters or more of it (at least five such words) but one
+    in four is a word of `said`. Math (`$...$`) is left out. A worked solution that printed both read
+    "The constraints leave one coordinate of the scene: ... the kinetic energy is a function of it
+    times the square of its rate." then "The constraints leave one coordinate; the kinetic energy in
+    its rate:"; the documents print the sentence alone.
+
+    >>> repeats("The constraints leave one coordinate of the scene, and the kinetic energy is a function "
+    ...         "of it times the square of its rate.", "The constraints leave one coordinate; the kinetic energy in its rate")
+    True
+    >>> repeats("So energy is conserved: the kinetic energy at each x is the one at the start.", "Work and energy from the start")
+    False
+    """
+    heard = set(_words(said))
+    told = _words(lead)
+    return len(told) >= 5 and sum(w in heard for w in told) >= 0.75 * len(told)
+
+
+def _words(text: str) -> list[str]:
+    return [w for w in re.findall(r"[a-z]+", re.sub(r"\$[^$]*\$", " ", text).lower()) if len(w) > 2]
+
+
+#: Greek letters' names, which are never words of the prose: phi, psi and theta of Euler's angles.
+GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "theta", "lambda", "mu", "nu", "rho", "sigma", "tau", "phi",
+         "chi", "psi", "omega", "Omega", "Phi", "Psi", "Theta")
+
+
+def set_as_math(text: str, names: Iterable[str]) -> str:
+    r"""`text` as LaTeX, escaped, each word of it that is one of `names` (the symbols of a problem: its
+    parameters, its asks, the symbols its steps typeset) or a Greek letter's name set as math: "as the
+    center drops H" as "as the center drops $H$", "psi about the axis" as "$\\psi$ about the axis". A name that typesets as a word (\mathit: an ask named angle) stays a
+    word, and so does the article a.
+
+    >>> set_as_math("Energy conservation as the center drops H, at a speed v_0 (x_ball's rate)", ["H", "v_0", "a", "x_ball"])
+    "Energy conservation as the center drops $H$, at a speed $v_{0}$ ($x_{\\mathrm{ball}}$'s rate)"
+    """
+    shown = sorted({n for n in (*names, *GREEK) if n not in ("a", "A") and not symbol_latex(n).startswith(r"\mathit")},
+                   key=lambda n: (-len(n), n))
+    if not shown:
+        return tex_escape(text)
+    word = re.compile(r"(?<![\w\\])(" + "|".join(map(re.escape, shown)) + r")(?![\w])")
+    pieces = word.split(text)
+    return "".join(f"${symbol_latex(p)}$" if i % 2 else tex_escape(p) for i, p in enumerate(pieces))
