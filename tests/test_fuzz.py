@@ -180,7 +180,8 @@ BILLION_LAUGHS = "\n".join(
 
 @pytest.mark.parametrize("text, reason", [
     (BILLION_LAUGHS, "aliases"),
-    ("a: " + "[" * 5000 + "]" * 5000, "nested deeper"),
+    ("a: " + "[" * 5000 + "]" * 5000, "nest"),  # libyaml refuses past 1,000 levels itself
+    ("a: " + "[" * 50 + "]" * 50, "nested deeper than 40"),
     ("x: " + "y" * 10**6, "characters"),
     ("x: .inf", "finite"),
     ("x: !!python/object/apply:os.system [ls]", "constructor"),
@@ -200,8 +201,8 @@ def test_library_files_still_load():
 
 
 def test_decimal_keys_and_values_stay_exact():
-    from derive.language.reader import Loader
-    assert yaml.load("m: 0.1", Loader=Loader) == {"m": Decimal("0.1")}
+    from derive.language.reader import safe_load
+    assert safe_load("m: 0.1") == {"m": Decimal("0.1")}
 
 
 # --- question text: every text the check accepts compiles -----------------------------------

@@ -16,7 +16,7 @@ from derive.core import library
 from derive.core.errors import InputError
 from derive.language.problem import parse
 from derive.language.problem_sets import load_set
-from derive.language.reader import Loader
+from derive.language.reader import safe_load
 from derive.language.schema import problem_schema, set_schema
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -26,7 +26,7 @@ SET_FILES = sorted((ROOT / "problems" / "sets").glob("*.yaml"))
 
 
 def _read(path: Path):
-    return yaml.load(path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a SafeLoader, as derive reads
+    return safe_load(path.read_text(encoding="utf-8"))  # as derive reads
 
 
 @pytest.fixture(scope="module")

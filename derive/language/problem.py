@@ -28,7 +28,7 @@ from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMI
 from derive.core.errors import EngineLimit, ProblemError
 from derive.core.keys import Key, Keys
 from derive.language import amounts, ask_options, derivation_source, labels
-from derive.language.reader import Loader, Reader
+from derive.language.reader import Reader, safe_load
 from derive.parts.contact import Contact
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.model.scene import DYNAMIC_KINDS, RATE_KINDS, STATE_KINDS, Quantity, Scene, parse_quantity
@@ -477,7 +477,7 @@ def parse(text: str, path: Path) -> Problem:
     """Validate the text of a problem file; `path` names it in errors."""
     reader = Reader(path)
     try:
-        raw = yaml.load(text, Loader=Loader)  # noqa: S506 - Loader is a SafeLoader
+        raw = safe_load(text)
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None) or getattr(error, "context_mark", None)
         where = f"line {mark.line + 1}" if mark else "yaml"

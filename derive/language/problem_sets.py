@@ -26,7 +26,7 @@ from derive.language.defaults import DEFAULT_OUTPUTS, OUTPUTS, Defaults, outputs
 from derive.core.errors import InputError
 from derive.core.keys import Key, Keys
 from derive.language.problem import load
-from derive.language.reader import Loader
+from derive.language.reader import safe_load
 from derive.core.spelling import did_you_mean
 
 #: A problem of a set by topic: `{topic: rolling}` (all of them) or `{topic: rolling, count: 2}`.
@@ -63,6 +63,7 @@ class ProblemSet:
     questions: str = "numerical"
     tolerance: str | None = None  # the LMS tolerance of asks that give none (derive.language.defaults)
     answer_space: str = ""  # a TeX length left under each problem of the worksheet ("6cm"), or none
+    loaded: tuple = ()  # the problems already read to name the set (given by themselves), in order; else none
 
 
 def _topic(path: Path, index: int, entry: dict, seed: int) -> list[str]:
@@ -114,7 +115,7 @@ def _whole(path: Path, raw: dict, key: str, default: int, low: int, high: int) -
 
 def _read_set(path: Path):
     try:
-        return yaml.load(path.read_text(encoding="utf-8"), Loader=Loader)  # noqa: S506 - a hardened SafeLoader
+        return safe_load(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
         raise InputError(f"{path}: invalid set file: {str(error).splitlines()[0]}") from None
 
@@ -163,6 +164,7 @@ def load_sheet(references: Sequence[str], defaults: Defaults = Defaults()) -> Pr
         id=ids if len(ids) <= LONGEST_ID else f"{loaded[0].id}-and-{len(loaded) - 1}-more", title=titles,
         course=defaults.course, due="", problems=tuple(problems), fields=tuple(fields), variants=1, seed=0,
         path=COMMAND_LINE, outputs=DEFAULT_OUTPUTS if defaults.outputs is None else defaults.outputs, tolerance=defaults.tolerance,
+        loaded=tuple(loaded),
     )
 
 

@@ -92,9 +92,9 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
     first step of its cost per variant. The objects alive once the problems are derived are frozen
     (gc.freeze): the caller unfreezes them."""
     problems, ids = [], {}
-    for reference, where in zip(problem_set.problems, problem_set.fields):
+    for number, (reference, where) in enumerate(zip(problem_set.problems, problem_set.fields)):
         with _entry(problem_set, where):  # then the problem file and its field
-            problem = load(reference)
+            problem = problem_set.loaded[number] if problem_set.loaded else load(reference)
             if problem.id in ids:
                 raise InputError(f"{problem.path}: id: {problem.id} is also the id of {ids[problem.id]}; "
                                  "ids in a set must differ")
