@@ -52,7 +52,7 @@ from derive.solution.answers import Solution
 
 MAGIC = b"derive derivation cache 2\n"
 DEFAULT_MB = 512
-ENTRY_NAME = re.compile(r"[0-9a-f]{64}\.pickle")  # an entry's file: its key
+ENTRY_NAME = re.compile(r"[0-9a-f]{64}\.(pickle|pdf)")  # an entry's file: its key (a compiled document's: tex_cache)
 FOLDER_VARIABLE, SIZE_VARIABLE = "DERIVE_CACHE_DIR", "DERIVE_CACHE_MB"
 
 
@@ -186,16 +186,14 @@ def loads(payload: bytes, problem: Problem) -> Solution | None:
     return solution
 
 
-def _path(entry: str) -> Path:
-    return folder() / f"{entry}.pickle"
+def _path(entry: str, suffix: str = ".pickle") -> Path:
+    return folder() / f"{entry}{suffix}"
 
 
-def fetch(problem: Problem, entry: str | None = None) -> Solution | None:
-    """The cached solution of `problem`, None where there is none to trust (missing, damaged, foreign)."""
-    entry = entry or key(problem)
-    if entry is None:
-        return None
-    path = _path(entry)
+def read_entry(entry: str, suffix: str = ".pickle") -> bytes | None:
+    """The payload of an entry file that can be trusted (MAGIC, this key, its SHA-256), else None;
+    a trusted one is marked used now (the last to go when the cap is reached)."""
+    path = _path(entry, suffix)
     try:
         data = path.read_bytes()
     except OSError:
@@ -207,32 +205,22 @@ def fetch(problem: Problem, entry: str | None = None) -> Solution | None:
     digest, payload = data[len(header):digest_end - 1].decode("ascii", "replace"), data[digest_end:]
     if hashlib.sha256(payload).hexdigest() != digest:
         return None
-    solution = loads(payload, problem)
-    if solution is not None:
-        try:
-            os.utime(path)  # used now: the last to go when the cap is reached
-        except OSError:
-            pass
-    return solution
+    try:
+        os.utime(path)
+    except OSError:
+        pass
+    return payload
 
 
-def store(problem: Problem, solution: Solution, entry: str | None = None, payload: bytes | None = None,
-          trimmed: bool = True) -> bool:
-    """Write the entry (atomically: a reader sees the old file or the new one); False where the
-    solution cannot be written or the folder cannot be. Then trim the folder to its cap (unless
-    not `trimmed`: a caller storing many trims once, after the last)."""
-    payload = dumps(solution) if payload is None else payload
-    if payload is None:
-        return False
-    entry = entry or key(problem)
-    if entry is None:
-        return False
+def write_entry(entry: str, payload: bytes, suffix: str = ".pickle", trimmed: bool = True) -> bool:
+    """Write an entry file (atomically: a reader sees the old file or the new one); False where the
+    folder cannot be written. Then trim the folder to its cap (unless not `trimmed`)."""
     where = folder()
     try:
         where.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=where, prefix=".writing-", delete=False) as file:
             file.write(MAGIC + entry.encode() + b"\n" + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload)
-        os.replace(file.name, _path(entry))
+        os.replace(file.name, _path(entry, suffix))
     except OSError:
         return False
     if trimmed:
@@ -240,10 +228,28 @@ def store(problem: Problem, solution: Solution, entry: str | None = None, payloa
     return True
 
 
+def fetch(problem: Problem, entry: str | None = None) -> Solution | None:
+    """The cached solution of `problem`, None where there is none to trust (missing, damaged, foreign)."""
+    entry = entry or key(problem)
+    payload = None if entry is None else read_entry(entry)
+    return None if payload is None else loads(payload, problem)
+
+
+def store(problem: Problem, solution: Solution, entry: str | None = None, payload: bytes | None = None,
+          trimmed: bool = True) -> bool:
+    """Write the entry; False where the solution cannot be written or the folder cannot be. Then trim
+    the folder to its cap (unless not `trimmed`: a caller storing many trims once, after the last)."""
+    payload = dumps(solution) if payload is None else payload
+    entry = entry or key(problem)
+    if payload is None or entry is None:
+        return False
+    return write_entry(entry, payload, trimmed=trimmed)
+
+
 def entries() -> list[Path]:
     """The entry files, the least recently used first."""
     try:  # only derive's own names: a folder given by DERIVE_CACHE_DIR may hold other files
-        files = [p for p in folder().glob("*.pickle") if ENTRY_NAME.fullmatch(p.name) and p.is_file()]
+        files = [p for p in folder().glob("*.p*") if ENTRY_NAME.fullmatch(p.name) and p.is_file()]
     except OSError:
         return []
     return sorted(files, key=lambda p: p.stat().st_mtime)

@@ -23,7 +23,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from derive.core.errors import InputError, MissingTool
-from derive.publishing import leftovers, output_folder
+from derive.publishing import leftovers, output_folder, tex_cache
 
 LATEXMK = ["latexmk", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "-no-shell-escape",
            "-quiet"]
@@ -137,8 +137,10 @@ def kill_compiles() -> None:
         _kill_group(group)
 
 
-def pdf(tex: Path) -> Path:
-    """Compile one .tex file; return its PDF, beside it (with its .aux, for variant_pages).
+def pdf(tex: Path, cache: bool = False) -> Path:
+    """Compile one .tex file; return its PDF, beside it (with its .aux, for variant_pages). With
+    `cache`, a document compiled before from the same text is taken from derive.publishing.tex_cache,
+    and a new compile is kept there.
 
     The compile runs in a scratch folder of its own that holds only a copy of the .tex (every
     figure is inline TikZ), with TeX's paranoid file access (openin_any/openout_any = p: no
@@ -150,10 +152,15 @@ def pdf(tex: Path) -> Path:
     text = tex.read_text(encoding="utf-8")
     for tool in ("latexmk", engine(text)):
         require(tool)
+    _sweep_scratch()
+    kept = tex_cache.fetch(text, engine(text)) if cache else None
+    if kept is not None:
+        tex.with_suffix(".pdf").write_bytes(kept[0])
+        tex.with_suffix(".aux").write_bytes(kept[1])
+        return tex.with_suffix(".pdf")
     env = {**os.environ, "openin_any": "p", "openout_any": "p", "SOURCE_DATE_EPOCH": "0",
            "FORCE_SOURCE_DATE": "1"}
     seconds = tex_time_limit()
-    _sweep_scratch()
     with tempfile.TemporaryDirectory(prefix=f"{SCRATCH}{os.getpid()}-") as scratch:
         folder = Path(scratch)
         leftovers.mark(folder)
@@ -171,6 +178,8 @@ def pdf(tex: Path) -> Path:
             raise BuildError(f"{tex.name} did not compile: " + " | ".join(first_errors(text)))
         for suffix in (".aux", ".pdf"):
             shutil.move(folder / tex.with_suffix(suffix).name, tex.with_suffix(suffix))
+    if cache:
+        tex_cache.store(text, engine(text), tex.with_suffix(".pdf").read_bytes(), tex.with_suffix(".aux").read_bytes())
     return tex.with_suffix(".pdf")
 
 
@@ -236,12 +245,13 @@ def workers() -> int:
     return max(1, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1)
 
 
-def pdfs(texs: list[Path]) -> list[Path]:
-    """Compile several documents in parallel, one per available core; an error or Ctrl-C in
-    this thread stops every compile (none keeps running in the pool)."""
+def pdfs(texs: list[Path], cache: bool = False) -> list[Path]:
+    """Compile several documents in parallel, one per available core (each from the cache where it
+    holds it: `pdf`); an error or Ctrl-C in this thread stops every compile (none keeps running in
+    the pool)."""
     with ThreadPoolExecutor(max_workers=workers()) as pool:
         try:
-            return list(pool.map(pdf, texs))
+            return list(pool.map(functools.partial(pdf, cache=cache), texs))
         except BaseException:
             pool.shutdown(wait=False, cancel_futures=True)
             kill_compiles()

@@ -338,7 +338,8 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
     take the set file's values (`variants`, `seed`, `outputs`, `questions`), and where it has
     none, the course defaults'. The problems are derived by `jobs` processes, each taken from
     the derivation cache where it holds it (`cache`; derive.publishing.deriving), or by the workers
-    of the Dask scheduler at `scheduler` (derive.publishing.cluster)."""
+    of the Dask scheduler at `scheduler` (derive.publishing.cluster); a PDF whose TeX was compiled
+    before comes from the cache too (`cache`; derive.publishing.tex_cache)."""
     problem_set = references if isinstance(references, ProblemSet) else \
         load_sheet([references] if isinstance(references, str) else references, defaults)
     variants = variants or problem_set.variants
@@ -393,7 +394,7 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                         compiled = compiled + [_write(staging, "figures.tex", figure_files.document(list(figures.values())))]
                     if compiling:  # each in a scratch folder of its own (export.pdf)
                         begin(f"{len(compiled)} PDF{'s' * (len(compiled) > 1)} (latexmk, {export.workers()} in parallel)")
-                        pdfs = export.pdfs(compiled)
+                        pdfs = export.pdfs(compiled, cache)
                     if "pdf" in formats:
                         products += pdfs[:len(texs)]
                         if variants > 1:  # each student's own worksheet: the whole set's pages, split
