@@ -209,8 +209,11 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | No
     --set); otherwise only its exact expression is printed.
     """
     from derive import api
+    from derive.publishing.progress import Reporter
 
-    result = api.solve(problem, parse_assignments(assignments), course_digits(digits, 15 if fmt == "json" else None))
+    shown = Reporter("bar" if sys.stderr.isatty() else "none")  # a spinner at a terminal; nothing in a pipe
+    with shown.waiting(f"deriving {problem}"), shown.steps_shown():
+        result = api.solve(problem, parse_assignments(assignments), course_digits(digits, 15 if fmt == "json" else None))
     click.echo({"text": result.as_text, "latex": result.as_latex, "json": result.as_json}[fmt]())
 
 

@@ -48,3 +48,15 @@ def test_a_chain_of_states_says_which_state_it_is_finding(tmp_path):
     assert quiet.returncode == 0 and quiet.stderr == ""
     solved = run_derive("solve", "skid_to_roll")
     assert solved.returncode == 0 and solved.stderr == ""
+
+
+def test_derive_solve_spins_at_a_terminal_and_is_silent_in_a_pipe(capsys):
+    """A derivation of a few seconds is not silent where someone watches (a newcomer waited 4 s for
+    `derive solve` with nothing on the screen), and prints nothing where a program reads the output."""
+    report = Reporter("bar")
+    with report.waiting("deriving rolling_incline"):
+        report("  rolling_incline: finding the state vertical (1 of 2)")  # a step, shown in the spinner
+        assert report._status is not None and "finding the state" in str(report._status.renderable)
+    assert report._status is None and "finding the state" not in capsys.readouterr().err
+    done = run_derive("solve", "rod_endpoint")
+    assert done.returncode == 0 and done.stderr == ""  # not a terminal: no spinner

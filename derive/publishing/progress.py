@@ -27,10 +27,13 @@ class Reporter:
             mode = "bar" if sys.stderr.isatty() else "lines"
         self.mode = mode
         self._bar = None
+        self._status = None
 
     def __call__(self, message: str) -> None:
-        """One step: a line, or the bar's current description."""
-        if self.mode == "bar" and self._bar is not None:
+        """One step: a line, or the bar's (or the spinner's) current description."""
+        if self.mode == "bar" and self._status is not None:
+            self._status.update(message.strip())
+        elif self.mode == "bar" and self._bar is not None:
             self._bar.update(self._task, description=message)
         elif self.mode != "none":
             print(message, file=sys.stderr, flush=True)
@@ -52,6 +55,22 @@ class Reporter:
         finally:
             logger.removeHandler(handler)
             logger.setLevel(level)
+
+    @contextmanager
+    def waiting(self, description: str) -> Iterator[None]:
+        """One long step of unknown length (a derivation for `derive solve`): a spinner with its
+        description and the steps it reports, gone when it ends; nothing unless the mode is bar."""
+        if self.mode != "bar":
+            yield
+            return
+        from rich.console import Console
+
+        with Console(stderr=True).status(description) as status:
+            self._status = status
+            try:
+                yield
+            finally:
+                self._status = None
 
     @contextmanager
     def task(self, description: str, total: int) -> Iterator[Callable[[str], None]]:
