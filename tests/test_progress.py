@@ -56,7 +56,7 @@ def test_derive_solve_spins_at_a_terminal_and_is_silent_in_a_pipe(capsys):
     report = Reporter("bar")
     with report.waiting("deriving rolling_incline"):
         report("  rolling_incline: finding the state vertical (1 of 2)")  # a step, shown in the spinner
-        assert report._status is not None and "finding the state" in str(report._status.renderable)
+        assert report._status is not None and "finding the state" in str(report._status.status)
     assert report._status is None and "finding the state" not in capsys.readouterr().err
     done = run_derive("solve", "rod_endpoint")
     assert done.returncode == 0 and done.stderr == ""  # not a terminal: no spinner
