@@ -532,6 +532,22 @@ def body_center(shape_name: str, sizes: dict[str, sp.Expr], density: sp.Expr | N
     return tuple(sp.simplify(c.xreplace(mapping).xreplace(restore)) for c in center)
 
 
+def central_body_moment(shape_name: str, axis: str, mass: sp.Expr | None, sizes: dict[str, sp.Expr],
+                        density: sp.Expr | None = None) -> tuple[sp.Expr, sp.Expr]:
+    """(mass, moment) about the axis parallel to the named one through the body's center of mass,
+    integrated there: the I_cm of the parallel-axis theorem (the named axis itself where the center
+    of mass lies on it; a rod denser at one end has its center of mass off its middle).
+
+    >>> central_body_moment("rod", "center", M, {"length": L}, (x + L / 2) / L)[1]
+    L**2*M/18
+    """
+    center = body_center(shape_name, sizes, density)
+    if all(c == 0 for c in center):
+        return body_moment(shape_name, axis, mass, sizes, density)
+    direction = _shape(shape_name).axes[axis][1]
+    return body_moment(shape_name, (ORIGIN, direction), mass, sizes, density, offset=center)
+
+
 def off_axis(shape_name: str, axis: str, sizes: dict[str, sp.Expr], density: sp.Expr | None,
              offset: Vector = (0, 0, 0)) -> sp.Expr:
     """The squared distance from a body's center of mass to its named axis moved by `offset` (a
