@@ -110,10 +110,13 @@ def shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | tupl
 ENDS = {"start": 0, "far": 1}
 
 
-def end_axis(reader: Reader, spec: dict, field: str) -> str | None:
+def end_axis(reader: Reader, spec: dict, field: str, scene: Scene) -> str | None:
     """The axis an ask names: `axis:` as written, or `end` (the axis through the rod's start) for `end:`."""
     if spec.get("end") is None:
         return spec.get("axis")
+    body = scene.bodies.get(str(spec.get("of")).partition(".")[0])
+    if body is None or body.shape != "rod" or not str(spec.get("of")).endswith(".inertia"):
+        raise reader.fail(f"{field}.end", "end: names an end of a rod for its moment of inertia (BODY.inertia)")
     if spec.get("axis") is not None:
         raise reader.fail(f"{field}.end", "end: names the axis itself (normal to the rod through that end): "
                                           "leave axis: out")
@@ -131,9 +134,7 @@ def end_shift(reader: Reader, spec: dict, field: str, scene: Scene, quantity: Qu
     """
     if spec.get("end") is None:
         return shift
-    body = scene.bodies.get(quantity.target)
-    if quantity.kind != "inertia" or body is None or body.shape != "rod":
-        raise reader.fail(f"{field}.end", "end: names an end of a rod for its moment of inertia (BODY.inertia)")
+    body = scene.bodies[quantity.target]  # a rod (end_axis)
     if shift is not None and not isinstance(shift, tuple):
         raise reader.fail(f"{field}.shift", "a shift from a rod's end needs its direction: give [dx, dy]")
     along = (ENDS[spec["end"]] * body.sizes["length"], sp.S.Zero, sp.S.Zero)

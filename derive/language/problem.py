@@ -362,7 +362,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], r
             raise reader.fail(f"{field}.magnitude", "expected true or false")
         path = reader.text(spec["of"], f"{field}.of", NAME_LIMIT)
         try:
-            quantity = parse_quantity(scene, path, ask_options.end_axis(reader, spec, field))
+            quantity = parse_quantity(scene, path, ask_options.end_axis(reader, spec, field, scene))
         except ValueError as error:
             raise reader.fail(f"{field}.of", str(error)) from None
         sig_figs = spec.get("sig_figs")
