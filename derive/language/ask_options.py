@@ -24,6 +24,8 @@ ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
            zero_for=Key("name", "ask instead the parameter's value at which the quantity vanishes"),
            small=Key("any", "a size (BODY.SIZE), or a list of them, taken to zero in the answer"),
            shift=Key("any", "the axis moved parallel to itself: [dx, dy] in the body's frame, or a distance"),
+           end=Key("name", "a rod's end the axis passes through, normal to the rod: start (its point start, x = -L/2, "
+                           "where axis: end passes) or far (its point end, x = L/2)"),
            amplitude=Key("expression", "a pendulum's amplitude: the period at it"),
            exact=Key("name", "the ask this one approximates (its relative error is reported)"),
            tolerance=Key("any", "what an LMS accepts around the answer: 2% or an amount in its unit"),
@@ -102,6 +104,42 @@ def shift(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | tupl
             raise reader.fail(field, "a shift of [0, 0] moves nothing: leave it out")
         return (dx, dy, sp.S.Zero)
     return reader.positive(raw, field, "m", "a shift")
+
+
+#: A rod's ends by `end:`, and the named axis each is measured from (its `end` axis passes through `start`).
+ENDS = {"start": 0, "far": 1}
+
+
+def end_axis(reader: Reader, spec: dict, field: str, scene: Scene) -> str | None:
+    """The axis an ask names: `axis:` as written, or `end` (the axis through the rod's start) for `end:`."""
+    if spec.get("end") is None:
+        return spec.get("axis")
+    body = scene.bodies.get(str(spec.get("of")).partition(".")[0])
+    if body is None or body.shape != "rod" or not str(spec.get("of")).endswith(".inertia"):
+        raise reader.fail(f"{field}.end", "end: names an end of a rod for its moment of inertia (BODY.inertia)")
+    if spec.get("axis") is not None:
+        raise reader.fail(f"{field}.end", "end: names the axis itself (normal to the rod through that end): "
+                                          "leave axis: out")
+    if spec["end"] not in ENDS:
+        raise reader.fail(f"{field}.end", f"expected start or far, got {spec['end']!r}")
+    return "end"
+
+
+def end_shift(reader: Reader, spec: dict, field: str, scene: Scene, quantity: Quantity, shift):
+    """The shift of an ask that says `end: far`: the rod's length along it from the start, where the named
+    `end` axis passes (plus a `shift: [dx, dy]` given with it); an ask without `end:` keeps its shift.
+
+    A density that grows from one end makes the two ends different: a rod with density growing from
+    its start has I = M L^2/2 about `end: start` and M L^2/6 about `end: far`.
+    """
+    if spec.get("end") is None:
+        return shift
+    body = scene.bodies[quantity.target]  # a rod (end_axis)
+    if shift is not None and not isinstance(shift, tuple):
+        raise reader.fail(f"{field}.shift", "a shift from a rod's end needs its direction: give [dx, dy]")
+    along = (ENDS[spec["end"]] * body.sizes["length"], sp.S.Zero, sp.S.Zero)
+    moved = along if shift is None else tuple(a + b for a, b in zip(along, shift))
+    return None if all(c == 0 for c in moved) else moved
 
 
 def amplitude(reader: Reader, raw, field: str, quantity: Quantity) -> sp.Expr | None:

@@ -10,6 +10,8 @@ Every field goes through the `derive.language.reader.Reader`, so errors name the
 """
 from __future__ import annotations
 
+import itertools
+
 import sympy as sp
 
 from derive.model import composite, inertia
@@ -22,6 +24,7 @@ from derive.parts.pin import Pin
 from derive.parts.places import turned
 from derive.language.reader import Reader, describe
 from derive.core.expr import TIME
+from derive.numbers import intervals
 from derive.model.scene import Path as MotionPath  # a prescribed motion, not a file path
 from derive.model.scene import SHAPE_SIZES, Body, Motion
 from derive.core.spelling import did_you_mean
@@ -175,6 +178,7 @@ def _density(reader: Reader, raw, field: str, shape: str, sizes: dict, mass: sp.
         found = units.expression_dimension(density, units_here)
     except units.UnitError as error:
         raise reader.fail(field, str(error)) from None
+    _not_negative(reader, field, shape, sizes, density)
     if mass is not None:
         if found:
             raise reader.fail(field, f"with a mass given, the density is a profile without dimension; it has "
@@ -188,6 +192,47 @@ def _density(reader: Reader, raw, field: str, shape: str, sizes: dict, mass: sp.
     if not units.same_dimension(found, units.dimension(units.parse_unit("kg"))):
         raise reader.fail(field, f"the density integrates to {describe(found)}, not to a mass")
     return density, derived
+
+
+def _not_negative(reader: Reader, field: str, shape: str, sizes: dict, density: sp.Expr) -> None:
+    """Refuse a density negative somewhere on the body for a parameter value the file allows: it is
+    proven not negative by sympy (every value), or in balls over the declared ranges with the body's
+    coordinates over the body (derive.numbers.intervals; those parameters then held to their ranges);
+    else a point of the body and of the ranges where it is negative is named, or it is refused as
+    unproven. The body's sizes are its own (the file's L in (x + L/2)/L is the rod's length).
+
+    Each coordinate is written lo + t (hi - lo), t in (0, 1): the interior, where a density counts
+    ((r/R)**k with k < 0 is infinite at r = 0 only)."""
+    table = inertia.SHAPES[shape]
+    generic = {table.sizes[name]: value for name, value in sizes.items()}
+    where, fractions = {}, []
+    for coordinate, low, high in table.coordinates:  # outermost first: inner ends may use outer coordinates
+        low, high = (sp.sympify(e).xreplace(generic).xreplace(where) for e in (low, high))  # the table's, no text
+        fraction = sp.Dummy(f"t_{coordinate}", positive=True)
+        where[coordinate], fractions = low + fraction * (high - low), fractions + [fraction]
+    position = [sp.sympify(c).xreplace(generic).xreplace(where) for c in table.position]  # the table's, no text
+    rho = density.xreplace({**where, **dict(zip((inertia.x, inertia.y, inertia.z), position))})
+    rho = sp.cancel(rho) if rho.is_rational_function() else sp.powsimp(rho)
+    if rho.is_nonnegative:
+        return
+    ends = {p.symbol: p.si_ends for p in reader.parameters.values()}
+    box = {**{s: ends[s] for s in rho.free_symbols if s in ends}, **{t: (0, 1) for t in fractions}}
+    if any(all(f.is_nonnegative or f.free_symbols <= set(box) and intervals.positive_over(f, box, strict=False)
+               for f in factors) for factors in ([rho], sp.Mul.make_args(rho))):  # whole, or factor by factor
+        reader.held_to_range |= rho.free_symbols - set(fractions)
+        return
+    grid = itertools.product(*([(s, low + (high - low) * sp.Rational(k, 4)) for k in range(5)]
+                               for s, (low, high) in box.items()))
+    for point in itertools.islice(grid, 20000):
+        if rho.xreplace(dict(point)).evalf().is_extended_negative:
+            at = dict(point)
+            shown = {**{c: v.xreplace(at) for c, v in where.items()}, **{s: at[s] for s in box if s in ends}}
+            text = ", ".join(f"{s}={sp.nsimplify(v) if v.is_number else v}" for s, v in shown.items())
+            raise reader.fail(field, f"the density {density} is negative on the {shape} where {text} (SI units), "
+                                     "inside the declared ranges")
+    raise reader.fail(field, f"the density {density} could not be proven not negative on the {shape} over the "
+                             "declared ranges (no point where it is negative was found either): narrow the ranges, "
+                             "or write it so that its sign is plain")
 
 
 def motion(reader: Reader, name: str, spec: dict, bodies: dict[str, Body]) -> Motion | None:

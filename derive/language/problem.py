@@ -362,7 +362,7 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], r
             raise reader.fail(f"{field}.magnitude", "expected true or false")
         path = reader.text(spec["of"], f"{field}.of", NAME_LIMIT)
         try:
-            quantity = parse_quantity(scene, path, spec.get("axis"))
+            quantity = parse_quantity(scene, path, ask_options.end_axis(reader, spec, field, scene))
         except ValueError as error:
             raise reader.fail(f"{field}.of", str(error)) from None
         sig_figs = spec.get("sig_figs")
@@ -372,7 +372,8 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], r
             name, reader.text(spec["meaning"], f"{field}.meaning", MEANING_LIMIT), path, quantity,
             reader.unit(spec["unit"], f"{field}.unit"), sig_figs, spec.get("magnitude", False), zero_for,
             ask_options.small(reader, spec.get("small"), f"{field}.small", scene),
-            ask_options.shift(reader, spec.get("shift"), f"{field}.shift", quantity),
+            ask_options.end_shift(reader, spec, field, scene, quantity,
+                                  ask_options.shift(reader, spec.get("shift"), f"{field}.shift", quantity)),
             ask_options.amplitude(reader, spec.get("amplitude"), f"{field}.amplitude", quantity),
             spec.get("exact"),
             ask_options.tolerance(reader, spec.get("tolerance"), f"{field}.tolerance"),

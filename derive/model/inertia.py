@@ -245,8 +245,9 @@ def _check_density(shape: Shape, rho: sp.Expr) -> None:
 
 
 @lru_cache(maxsize=None)
-def _distribution(shape_name: str, density: sp.Expr | None) -> tuple[sp.Expr, sp.Expr]:
-    """(rho in the shape's own coordinates, total mass): uniform of mass M, or from `density`."""
+def _distribution(shape_name: str, density: sp.Expr | None, check: bool = True) -> tuple[sp.Expr, sp.Expr]:
+    """(rho in the shape's own coordinates, total mass): uniform of mass M, or from `density`; its sign
+    checked here (`check`) for `derive inertia`, or over a problem's ranges by its reader (body_file)."""
     shape = SHAPES[shape_name]
     if density is None:
         return M / _integrate(shape.element, shape), M
@@ -256,7 +257,8 @@ def _distribution(shape_name: str, density: sp.Expr | None) -> tuple[sp.Expr, sp
         raise InputError(f"density: {', '.join(stray)} is not one of the {shape_name}'s coordinates "
                          f"{', '.join(allowed)} (derive.model.inertia.COORDINATE_SYMBOLS)")
     rho = density.xreplace(dict(zip((x, y, z), shape.position)))
-    _check_density(shape, rho)
+    if check:
+        _check_density(shape, rho)
     mass = _integrate(rho * shape.element, shape)
     if mass.is_zero:
         raise InputError(f"density {density} gives the {shape_name} no mass")
@@ -285,10 +287,10 @@ def moment_of_inertia(shape_name: str, axis, density=None) -> InertiaResult:
 
 
 @lru_cache(maxsize=None)
-def _moment(shape_name: str, axis, density: sp.Expr | None) -> InertiaResult:
+def _moment(shape_name: str, axis, density: sp.Expr | None, check: bool = True) -> InertiaResult:
     shape = SHAPES[shape_name]
     line = shape.axes[axis] if isinstance(axis, str) else axis
-    rho, mass = _distribution(shape_name, density)
+    rho, mass = _distribution(shape_name, density, check)
     integrand = rho * _squared_distance(shape.position, line) * shape.element
     inertia = _integrate(integrand, shape)
     return InertiaResult(
@@ -299,7 +301,7 @@ def _moment(shape_name: str, axis, density: sp.Expr | None) -> InertiaResult:
         mass=mass,
         I=inertia,
         ratio=sp.simplify(inertia / (mass * shape.scale**2)),
-        distance_from_center=sp.sqrt(_squared_distance(center_of_mass(shape_name, density), line)),
+        distance_from_center=sp.sqrt(_squared_distance(_center_of_mass(shape_name, density, check), line)),
     )
 
 
@@ -314,9 +316,9 @@ def center_of_mass(shape_name: str, density=None) -> Vector:
 
 
 @lru_cache(maxsize=None)
-def _center_of_mass(shape_name: str, density: sp.Expr | None) -> Vector:
+def _center_of_mass(shape_name: str, density: sp.Expr | None, check: bool = True) -> Vector:
     shape = SHAPES[shape_name]
-    rho, mass = _distribution(shape_name, density)
+    rho, mass = _distribution(shape_name, density, check)
     return tuple(_integrate(rho * u * shape.element, shape) / mass for u in shape.position)
 
 
@@ -336,9 +338,9 @@ def tensor(shape_name: str, about=ORIGIN, density=None) -> sp.ImmutableMatrix:
 
 
 @lru_cache(maxsize=None)
-def _tensor(shape_name: str, about: Vector, density: sp.Expr | None) -> sp.ImmutableMatrix:
+def _tensor(shape_name: str, about: Vector, density: sp.Expr | None, check: bool = True) -> sp.ImmutableMatrix:
     shape = SHAPES[shape_name]
-    rho, _ = _distribution(shape_name, density)
+    rho, _ = _distribution(shape_name, density, check)
     s = sp.Matrix(shape.position) - sp.Matrix(about)
     integrand = rho * shape.element * (s.dot(s) * sp.eye(3) - s * s.T)
     upper = {(i, j): _integrate(sp.expand(integrand[i, j]), shape) for i in range(3) for j in range(i, 3)}
@@ -487,7 +489,8 @@ def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp
     scaled to the given mass, or, with mass None, an absolute density whose integral is the
     mass (`_shielded` says which of its symbols are the body's sizes). `route="tensor"` takes
     n^T I n from the inertia tensor about a point of the axis instead of integrating d^2: a
-    second route.
+    second route. The density's sign is not checked here: a problem's reader proves it over the
+    ranges the file declares (derive.language.body_file), which `_check_density` cannot know.
 
     >>> body_moment("disk", "symmetry", None, {"radius": 2}, sp.Symbol("sigma", positive=True))
     (4*pi*sigma, 8*pi*sigma)
@@ -501,12 +504,12 @@ def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp
         point, direction = shape.axes[axis] if isinstance(axis, str) else axis
         axis = (tuple(sp.sympify(p, strict=True) + sp.sympify(o, strict=True).xreplace(shield)  # safe: no text
                       for p, o in zip(point, offset)), direction)  # the shape table's coordinates, a parsed offset
-    result = moment_of_inertia(shape_name, axis, shielded)
+    result = _moment(shape_name, _axis(shape, axis), shielded, False)  # its sign proven by the reader, over the ranges
     moment = result.I
     if route == "tensor":
         point, direction = shape.axes[axis] if isinstance(axis, str) else axis
         n = sp.Matrix(direction) / sp.Matrix(direction).norm()
-        moment = sp.simplify((n.T * tensor(shape_name, about=tuple(point), density=shielded) * n)[0, 0])
+        moment = sp.simplify((n.T * _tensor(shape_name, _vector(point, "about"), shielded, False) * n)[0, 0])
     mapping = {shape.sizes[name]: value for name, value in sizes.items()}
     restore = {d: s for s, d in shield.items()}
     integrated_mass = result.mass.xreplace(mapping).xreplace(restore)
@@ -528,8 +531,24 @@ def body_center(shape_name: str, sizes: dict[str, sp.Expr], density: sp.Expr | N
     shield = _shielded(shape, sizes, density)
     mapping = {shape.sizes[name]: value for name, value in sizes.items()}
     restore = {d: s for s, d in shield.items()}
-    center = center_of_mass(shape_name, None if density is None else density.xreplace(shield))
+    center = _center_of_mass(shape_name, None if density is None else density.xreplace(shield), False)
     return tuple(sp.simplify(c.xreplace(mapping).xreplace(restore)) for c in center)
+
+
+def central_body_moment(shape_name: str, axis: str, mass: sp.Expr | None, sizes: dict[str, sp.Expr],
+                        density: sp.Expr | None = None) -> tuple[sp.Expr, sp.Expr]:
+    """(mass, moment) about the axis parallel to the named one through the body's center of mass,
+    integrated there: the I_cm of the parallel-axis theorem (the named axis itself where the center
+    of mass lies on it; a rod denser at one end has its center of mass off its middle).
+
+    >>> central_body_moment("rod", "center", M, {"length": L}, (x + L / 2) / L)[1]
+    L**2*M/18
+    """
+    center = body_center(shape_name, sizes, density)
+    if all(c == 0 for c in center):
+        return body_moment(shape_name, axis, mass, sizes, density)
+    direction = _shape(shape_name).axes[axis][1]
+    return body_moment(shape_name, (ORIGIN, direction), mass, sizes, density, offset=center)
 
 
 def off_axis(shape_name: str, axis: str, sizes: dict[str, sp.Expr], density: sp.Expr | None,

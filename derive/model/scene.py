@@ -92,12 +92,22 @@ class Body:
         return self.angle if kind == "theta" else self.at[0 if kind == "x" else 1]
 
     @property
+    def shape_center(self) -> tuple[sp.Expr, sp.Expr]:
+        """Where the shape's middle lies from the center of mass, in the body's frame: (0, 0) but for
+        a density that moves the center of mass (a rod denser at one end: its named points, `start`
+        and `end`, are then measured from the center of mass like every point of the body)."""
+        if self.density is None or self.shape not in inertia.SHAPES:
+            return (sp.Integer(0), sp.Integer(0))
+        center = inertia.body_center(self.shape, self.sizes, self.density)
+        return (-center[0], -center[1])
+
+    @property
     def inertia(self) -> sp.Expr:
         if self.given_inertia is not None:
             return self.given_inertia
-        if self.density is not None:
-            return inertia.body_moment(self.shape, inertia.PLANAR_AXIS[self.shape], self.mass, self.sizes,
-                                       self.density)[1]
+        if self.density is not None:  # about its center of mass, which a density may move off the middle
+            return inertia.central_body_moment(self.shape, inertia.PLANAR_AXIS[self.shape], self.mass, self.sizes,
+                                               self.density)[1]
         return inertia.central_moment(self.shape, self.mass, self.sizes)
 
 

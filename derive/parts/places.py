@@ -71,8 +71,12 @@ def turned(angle: sp.Expr, offset) -> sp.Matrix:
 
 
 def points_of(body) -> dict[str, tuple[sp.Expr, sp.Expr]]:
-    """A body's named points (a composite's include its parts' points)."""
-    return body.composite.points() if body.composite is not None else body_points(body.shape, body.sizes)
+    """A body's named points from its center of mass (a composite's include its parts' points)."""
+    if body.composite is not None:
+        return body.composite.points()
+    middle = getattr(body, "shape_center", (ZERO, ZERO))  # a density may move the center of mass off the middle
+    return {name: (px, py) if name == "center" else (px + middle[0], py + middle[1])  # center: the center of mass
+            for name, (px, py) in body_points(body.shape, body.sizes).items()}
 
 
 class Places:
@@ -157,6 +161,9 @@ class Places:
         """Refuse a point that lies outside its body (a pin's point, a winding's radius)."""
         rigid = self.bodies[body]
         reach = rigid.composite.extent() if rigid.composite is not None else extent(rigid.shape, rigid.sizes)
+        middle = getattr(rigid, "shape_center", (ZERO, ZERO))
+        if reach is not None and middle != (ZERO, ZERO):  # from the center of mass, off the middle
+            reach = reach + sp.sqrt(middle[0] ** 2 + middle[1] ** 2)
         if rigid.shape == "point":
             reach = ZERO
         if reach is None:

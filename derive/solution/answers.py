@@ -382,7 +382,8 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             if body.shape not in inertia.SHAPES:
                 return None  # a custom body's inertia is given, not derived
             ask = Ask(ask.name, ask.meaning, ask.path, Quantity("inertia", body.name, inertia.PLANAR_AXIS[body.shape]),
-                      ask.unit, ask.sig_figs, shift=ask.shift)
+                      ask.unit, ask.sig_figs, shift=None if body.density is None else  # through its center of mass
+                      inertia.body_center(body.shape, body.sizes, body.density))
         return self._inertia_about(body, ask.quantity.detail, route, self.shift_vector(ask))
 
     def _inertia_about(self, body, axis, route: str = "integral", offset=None) -> sp.Expr:

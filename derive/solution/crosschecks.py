@@ -503,13 +503,16 @@ class CrossChecks:
     def _parallel_axis_check(self, ask: Ask) -> Check | None:
         body = self.scene.bodies[ask.quantity.target]
         derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
-        if ask.shift is not None:  # the shifted axis, integrated directly, against I_cm + M d^2 through the center of mass
+        if ask.shift is not None or body.density is not None:  # the body's own axis, against I_cm + M d^2 through
+            if ask.shift is None and inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density) == 0:
+                return None  # its center of mass: the theorem adds nothing
             theorem = self._through_center_of_mass(body, ask)
             if agree(theorem, self.expressions[ask.name]) is None:
-                raise CheckFailure(f"{self.problem.id}: the shifted axis gives {self.expressions[ask.name]}, "
-                                   f"the parallel-axis theorem {theorem}")
+                raise CheckFailure(f"{self.problem.id}: the {'shifted ' * (ask.shift is not None)}axis gives "
+                                   f"{self.expressions[ask.name]}, the parallel-axis theorem {theorem}")
             return Check("parallel_axis", True, "symbolic",
-                         f"{ask.name}: integration about the shifted axis equals I_cm + M h^2", PARALLEL_AXIS)
+                         f"{ask.name}: integration about the {'shifted ' * (ask.shift is not None)}axis equals I_cm + "
+                         f"M h^2, I_cm about the parallel axis through the {body.name}'s center of mass", PARALLEL_AXIS)
         if derived.distance_from_center == 0:
             return None
         center_axis = inertia.PLANAR_AXIS[body.shape]
@@ -527,11 +530,9 @@ class CrossChecks:
         """The parallel-axis theorem for a shifted axis: the moment about the parallel axis through the
         center of mass, integrated, plus M d^2, d the distance between the two axes. Through the
         center of mass always: from any other axis the theorem does not hold (a rod denser at one end)."""
-        direction = inertia.SHAPES[body.shape].axes[ask.quantity.detail][1]
-        center = inertia.body_center(body.shape, body.sizes, body.density)
-        mass, central = inertia.body_moment(body.shape, ((0, 0, 0), direction), body.mass, body.sizes, body.density,
-                                            offset=center)
-        apart = inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density, self.shift_vector(ask))
+        mass, central = inertia.central_body_moment(body.shape, ask.quantity.detail, body.mass, body.sizes, body.density)
+        apart = inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density,
+                                 self.shift_vector(ask) or (0, 0, 0))
         return self._within_ranges(central + mass * apart)
 
 def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:
