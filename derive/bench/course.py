@@ -9,6 +9,9 @@ cache of its own (never the user's):
 - one question's text changed: that problem's file edited, the set rebuilt (its derivation
   still from the cache: the question is no part of the key);
 - peak memory: the largest resident set of any of the build's processes;
+- a week's set with PDFs (WEEK problems of the library, the same variants), one question's text
+  changed: what an instructor waits for after mending a typo (the documents whose TeX did not
+  change come from derive.publishing.tex_cache);
 - cold on a Dask cluster (with derive's cluster extra): the same build with `--scheduler`, on a
   LocalCluster of one single-threaded worker process per core, and the cache's size per problem
   (what a worker sends back): the figures docs/design.md scales to a 10,000-problem bank.
@@ -35,6 +38,7 @@ from pathlib import Path
 from derive.core import library
 
 MAX_LEFT_OUT = 10  # problems a run may leave out before it gives up
+WEEK = 10  # the problems of a week's set: the rebuild with PDFs after one question's text changes
 
 #: Runs `derive sheet` and prints its exit status and the peak resident set (KiB) of its processes.
 _MEASURED = ("import resource, subprocess, sys; done = subprocess.run(sys.argv[1:], stderr=subprocess.PIPE, text=True); "
@@ -93,9 +97,7 @@ def course(say, variants: int = 30, outputs: str = "", limit: int | None = None)
         figures.update(warm=wall, warm_peak_mib=peak, warm_hits=hits)
         say(f"  warm (a new seed):                   {wall:7.1f} s   peak {peak:6.0f} MiB   "
             f"{hits}/{len(ids)} from the cache")
-        edited = next((root / "library").rglob(f"{ids[0]}.yaml"))
-        edited.write_text(re.sub(r"^question: (\|-?|>-?)?", lambda m: m.group(0) + ("\n  " if m.group(1) else "")
-                                 + "(Revised.) ", edited.read_text(), count=1, flags=re.M))
+        _revise(root, ids[0])
         wall, peak, stderr, status = _sheet(ids, variants, 2, outputs, root / "changed", env)
         hits = stderr.count("(from the cache)")
         shown = status == 0 and "(Revised.)" in (root / "changed" / "worksheet.tex").read_text(encoding="utf-8")
@@ -104,12 +106,26 @@ def course(say, variants: int = 30, outputs: str = "", limit: int | None = None)
             f"{hits}/{len(ids)} from the cache" + ("" if shown else " (the new text is NOT in the worksheet)"))
         peak = max(figures["cold_peak_mib"], figures["warm_peak_mib"], figures["changed_peak_mib"])
         say(f"  peak memory (the largest process):   {peak:7.0f} MiB")
+        week = ids[1:1 + WEEK]
+        _sheet(week, variants, 2, "pdf", root / "week", env)  # its PDFs compiled, and kept
+        _revise(root, week[0])
+        wall, _, _, status = _sheet(week, variants, 2, "pdf", root / "week-changed", env)
+        figures.update(week_changed_pdf=wall)
+        say(f"  a week's set ({len(week)} problems, PDFs), one question changed: {wall:5.1f} s"
+            + ("" if status == 0 else " (the build FAILED)"))
         clustered = _on_a_cluster(ids, variants, outputs, root, env)
         if clustered is not None:
             figures["cluster_cold"] = clustered
             say(f"  cold on a Dask LocalCluster:         {clustered:7.1f} s   ({_cores()} single-threaded workers)")
         say("  " + json.dumps({k: round(v, 1) if isinstance(v, float) else v for k, v in figures.items()}))
     return figures
+
+
+def _revise(root: Path, problem_id: str) -> None:
+    """Edit the text of a problem's question in the library's copy (its derivation stays valid)."""
+    edited = next((root / "library").rglob(f"{problem_id}.yaml"))
+    edited.write_text(re.sub(r"^question: (\|-?|>-?)?", lambda m: m.group(0) + ("\n  " if m.group(1) else "")
+                             + "(Revised.) ", edited.read_text(), count=1, flags=re.M))
 
 
 def _cores() -> int:
