@@ -29,8 +29,9 @@ ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
            amplitude=Key("expression", "a pendulum's amplitude: the period at it"),
            exact=Key("name", "the ask this one approximates (its relative error is reported)"),
            tolerance=Key("any", "what an LMS accepts around the answer: 2% or an amount in its unit"),
-           sign=Key("text", "the sign convention the question states (y up): the answer is then the signed "
-                            "component; without it a quantity with a direction is asked as its magnitude"),
+           sign=Key("text", "the sign convention the question states, in its words (up positive, down the "
+                            "incline positive): the answer is then the component along the way it names positive; "
+                            "without it a quantity with a direction is asked as its magnitude"),
            **{"in": Key("name", "the state the quantity is asked in")})
 
 
