@@ -35,8 +35,6 @@ def figures(problems):
 #: worksheets print no figure; a problem added to this list, or one drawn at last, fails the test.
 UNDRAWN = {"cart_track_bead", "cart_track_bead_oscillation", "flywheel_brake_grips", "plank_block_tilted",
            "plank_cylinder", "turntable_record_slips", "wedge_block"}
-#: Drawn, but as a lone ball: a bounce's surface is in no figure yet (the figures 0.28 cm wide).
-LONE_BALLS = {"ball_bounces_off_wedge", "ball_bounces_then_flies", "sphere_bounces_gripping", "sphere_bounces_sliding"}
 
 
 def test_every_library_problem_has_a_figure(problems, figures):
@@ -51,12 +49,63 @@ def test_every_library_problem_has_a_figure(problems, figures):
 
 def test_figures_keep_to_a_fixed_size(figures):
     for name, drawn in figures.items():
-        if drawn is None or name in LONE_BALLS:
+        if drawn is None:
             continue
         points = [(float(x), float(y)) for x, y in COORDINATE.findall(drawn)]
         width = max(x for x, _ in points) - min(x for x, _ in points)
         height = max(y for _, y in points) - min(y for _, y in points)
         assert 0.5 < width <= 6.5 and height <= 6.5, (name, width, height)
+
+
+def parameter_middle(p, name):
+    """A parameter at the middle of its range (or its value), as the figures draw it."""
+    given = p.parameters[name]
+    return float(given.value if given.range is None else (given.range[0] + given.range[1]) / 2)
+
+
+POINT = r"\((-?[\d.]+),(-?[\d.]+)\)"
+
+
+def test_a_ball_bounces_off_the_floor_drawn_under_it_on_its_path(problems, figures):
+    """The ball touches the floor where it strikes it (the red dot under its center), its
+    velocity an arrow onto it along the path the file gives (theta from the vertical), marked."""
+    for name in ("ball_bounces_then_flies", "sphere_bounces_gripping", "sphere_bounces_sliding"):
+        p = next(q for q in problems if q.id == name)
+        drawn = figures[name]
+        floor = re.search(rf"\\fill\[pattern=north east lines\] {POINT} rectangle {POINT};", drawn)
+        x0, x1, level = float(floor[1]), float(floor[3]), float(floor[4])
+        ball = re.search(rf"\\shade\[ball color=gray!35\] {POINT} circle \(([\d.]+)\);", drawn)
+        center, radius = (float(ball[1]), float(ball[2])), float(ball[3])
+        assert x0 + 1 < center[0] < x1 - 1 and abs(center[1] - radius - level) <= TOLERANCE, name  # on the floor
+        assert f"\\fill[red!70!black] {_pt((center[0], level))} circle" in drawn, name  # where it strikes
+        arrow = re.search(rf"\\draw\[velocity\] {POINT} -- {POINT};", drawn)
+        start, tip = (float(arrow[1]), float(arrow[2])), (float(arrow[3]), float(arrow[4]))
+        theta = parameter_middle(p, "theta")
+        along = math.atan2(tip[1] - start[1], tip[0] - start[0])
+        assert abs(along - math.atan2(-math.cos(theta), math.sin(theta))) < 0.02, name
+        assert radius < math.dist(tip, center) < radius + 0.1, name  # it ends at the ball
+        assert "{$\\theta$}" in drawn and "{$v$}" in drawn and "$e$" in drawn, name
+    assert "no slip" in figures["ball_bounces_then_flies"] and "rough, $\\mu$" in figures["sphere_bounces_sliding"]
+
+
+def test_a_ball_dropped_onto_a_wedge_falls_onto_its_face_from_its_height(problems, figures):
+    """The face at its angle through the point struck, straight under the ball; the ball's drop and
+    the point's height above the floor (the wedge's foot) in the ratio of h to H."""
+    p = next(q for q in problems if q.id == "ball_bounces_off_wedge")
+    drawn = figures["ball_bounces_off_wedge"]
+    wedge = re.search(rf"\\draw\[fill=gray!10\] {POINT} -- {POINT} -- {POINT} -- cycle;", drawn)
+    top, foot, corner = ((float(wedge[k]), float(wedge[k + 1])) for k in (1, 3, 5))
+    assert abs(math.atan2(top[1] - foot[1], foot[0] - top[0]) - math.pi / 4) < 0.01  # 45 degrees, down to the right
+    assert corner == (top[0], foot[1])
+    struck = re.search(rf"\\fill\[red!70!black\] {POINT} circle", drawn)
+    struck = (float(struck[1]), float(struck[2]))
+    assert on_segment(struck, top, foot)
+    ball = re.search(rf"\\shade\[ball color=gray!60\] {POINT} circle", drawn)
+    ball = (float(ball[1]), float(ball[2]))
+    assert abs(ball[0] - struck[0]) <= TOLERANCE and ball[1] > struck[1]
+    drop, height = ball[1] - struck[1], struck[1] - foot[1]
+    assert abs(drop / height - parameter_middle(p, "h") / parameter_middle(p, "H")) < 0.05
+    assert "{$h$}" in drawn and "{$H$}" in drawn and "smooth, $e$" in drawn and "\\frac{\\pi}{4}" in drawn
 
 
 def test_an_incline_has_its_triangle_and_the_angle_labelled(figures):

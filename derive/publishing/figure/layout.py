@@ -9,6 +9,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.publishing.figure.bodies import _placed
+from derive.publishing.figure.bounces import _bounce, bounces
 from derive.publishing.figure.collisions import _impact, struck
 from derive.publishing.figure.inertia import _specimens
 from derive.publishing.figure.joints import _pinned
@@ -115,6 +116,7 @@ _LAYOUTS = (
     (_collision, _impact),
     (_on_pivots, _pinned),
     (_has_parts, _parts),
+    (bounces, _bounce),
     (lambda p: bool(p.scene.motions) and all(n in p.scene.motions for n in p.scene.bodies), _placed),
     (lambda p: bool(p.scene.bodies), _specimens),
 )
