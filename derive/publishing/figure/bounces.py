@@ -21,7 +21,7 @@ import math
 
 import sympy as sp
 
-from derive.publishing.figure.canvas import _add, _clamp, _f, _Figure, _label_mass, _pt, _unit, given_motion
+from derive.publishing.figure.canvas import _add, _clamp, _f, _Figure, _label_mass, _pt, given_motion
 from derive.publishing.figure.drawn_view import BALL, Undrawable
 from derive.publishing.figure.vectors import _degrees, _norm, _scale_vec
 from derive.model.scene import Event

@@ -1,7 +1,7 @@
 """Which layout a scene gets: the first in the table that applies draws the figure.
 
 The schematic layouts (an incline, a level floor, a loop, a pendulum, bodies on one axle, a
-collision) apply only to the scenes whose every part they draw; any other scene of parts gets the
+collision, a bounce off a fixed surface) apply only to the scenes whose every part they draw; any other scene of parts gets the
 general layout (`derive.publishing.figure.parts`), which draws each part where the scene puts it.
 """
 from __future__ import annotations
