@@ -45,12 +45,13 @@ LONGEST_EQUATION = 700  # characters of LaTeX; longer would overflow the page
 TOO_LONG = r"\text{(too long to typeset here: see derive solve --format latex)}"
 
 
-def typeset(equation: sp.Eq, beside: str = "", tag: str = "", tex: bool = False) -> str:
+def typeset(equation: sp.Eq, beside: str = "", tag: str = "", tex: bool = False, left: float | None = None) -> str:
     """An equation for an align environment, a long sum broken across lines (typesetting.rows; a
     row still too wide set smaller where LaTeX compiles it, `tex`), `beside` a note at its first
     row, `tag` its number at its last (`tag`); one too long to typeset at all becomes a short
     note in place of its long side, on the right (`0 = (too long ...)`: on the left, the note
-    would widen the column of left sides of every row it aligns with).
+    would widen the column of left sides of every row it aligns with). `left`: how wide the left
+    sides of the equations aligned with it are (typesetting.left_column).
 
     >>> x = sp.Symbol("x")
     >>> print(typeset(sp.Eq(sum(x**k / (k + 1) for k in range(200)), 0)))
@@ -60,7 +61,7 @@ def typeset(equation: sp.Eq, beside: str = "", tag: str = "", tex: bool = False)
         short = [side for side in (equation.lhs, equation.rhs) if len(latex_of(side)) <= LONGEST_EQUATION / 10]
         return (latex_of(short[0]) if short else "") + " &= " + TOO_LONG + beside + tag
     room = typesetting.LINE - (typesetting.TAG if tag else 0)
-    return typesetting.rows(equation.lhs, equation.rhs, room=room, beside=beside, tex=tex) + tag
+    return typesetting.rows(equation.lhs, equation.rhs, room=room, beside=beside, tex=tex, left=left) + tag
 
 
 def tag(number: int, tex: bool) -> str:
@@ -142,10 +143,11 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
         _routes(item, proof, numbered, siunitx, item.free_bodies)
     # Lagrange's method and Newton–Euler in full: the instructor's verification where the student's route is written
     verification = _routes(item, proof, numbered, siunitx, item.free_bodies) if student is not None else []
+    results = {n: sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False) for n in problem.asks}
+    left = typesetting.left_column(results.values())  # the results align
     answers = [
         {"symbol": symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
-         "rows": typeset(sp.Eq(sp.Symbol(n), solution.expression(n), evaluate=False),
-                         typesetting.note(tex_escape(a.meaning), tex=siunitx), tex=siunitx)}
+         "rows": typeset(results[n], typesetting.note(tex_escape(a.meaning), tex=siunitx), tex=siunitx, left=left)}
         for n, a in problem.asks.items()
     ]
     variants = _numbers(item, siunitx)
@@ -168,7 +170,9 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
             numbers = [next(numbered) for _ in s.equations]
             solved += numbers if s.role == "equations" else []
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
-            shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx), tex=siunitx) for e, n in zip(s.equations, numbers)],
+            left = typesetting.left_column(s.equations, typesetting.LINE - typesetting.TAG)  # the rows align
+            shown.append({"text": text, "equations": [typeset(e, tag=tag(n, siunitx), tex=siunitx, left=left)
+                                                      for e, n in zip(s.equations, numbers)],
                           "diagram": diagrams[id(original)].tikz if id(original) in diagrams else "",
                           "body": diagrams[id(original)].body if id(original) in diagrams else "",
                           "sentences": [sentence.latex(tex=siunitx) for sentence in s.sentences]})

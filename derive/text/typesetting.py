@@ -27,7 +27,8 @@ from derive.text.latex import latex_of, symbol_latex
 #: alignment's indent; `room` below it where a note shares the line (the results' meanings).
 LINE = 72
 SCRIPT = 0.7  # a subscript or an exponent, set smaller
-NEAR = 0.75  # of its room, past which a row may be wider than estimated: LaTeX measures it (`fit`)
+NEAR = 0.5  # of its room, past which a row may be wider than estimated (by a third, seen): LaTeX measures it (`fit`)
+LEFT = 0.45  # of a line, the most the left sides of an align take (a wider one is set smaller)
 TAG = 6  # characters an equation's number takes at the end of its line
 
 
@@ -110,12 +111,34 @@ def fit(text: str, size: float, room: float) -> str:
     return rf"\fitwidth{{{room / LINE:.2f}\linewidth}}{{{text}}}"
 
 
-def rows(lhs: sp.Expr, rhs: sp.Expr, room: float = LINE, beside: str = "", tex: bool = False) -> str:
+def _sides(lhs: sp.Expr, rhs: sp.Expr, room: float) -> tuple[sp.Expr, sp.Expr]:
+    """The sides as written: a long sum on the left over a short right side, second (`0 = a + b`)."""
+    if isinstance(lhs, sp.Add) and not isinstance(rhs, sp.Add) and width(lhs) > room / 2 > width(rhs):
+        return rhs, lhs
+    return lhs, rhs
+
+
+def left_column(equations, room: float = LINE) -> float:
+    """How wide (characters) the left sides of equations aligned together are written: the widest,
+    at most `LEFT` of the line. Each row's right side keeps to the rest of the line (`rows`' `left`):
+    the rows of an align share its columns, so that a long left side in one row and a long right
+    side in another would together run off the page.
+
+    >>> x, y = sp.symbols("x y")
+    >>> left_column([sp.Eq(x, y), sp.Eq(x + y, 2 * y)])
+    5.0
+    """
+    return max((min(width(_sides(e.lhs, e.rhs, room)[0]), LEFT * room) for e in equations), default=0.0)
+
+
+def rows(lhs: sp.Expr, rhs: sp.Expr, room: float = LINE, beside: str = "", tex: bool = False,
+         left: float | None = None) -> str:
     r"""`lhs = rhs` as rows of an align environment (`lhs &= ...`), the sum on the right cut between
     its terms where the line would be wider than `room` characters (`width`); `beside`, a `note`,
     ends the first row (the room left for the equation shrinks by its width). A long left side
     over a short right one is written second (`0 = a + b`); where LaTeX compiles it (`tex`), a row
-    still too wide is set smaller (`fit`).
+    still too wide is set smaller (`fit`). `left`: how wide the left sides of the rows aligned
+    with it are (`left_column`; by default its own).
 
     >>> a, b = sp.symbols("alpha_disk beta_disk")
     >>> print(rows(sum(a**k * b for k in range(1, 9)), sp.Integer(0), room=30))
@@ -125,11 +148,10 @@ def rows(lhs: sp.Expr, rhs: sp.Expr, room: float = LINE, beside: str = "", tex: 
     &\quad + \alpha_{\mathrm{disk}}^{2} \beta_{\mathrm{disk}} + \alpha_{\mathrm{disk}} \beta_{\mathrm{disk}}
     """
     line_room = room * (1 - NOTE_WIDTH - 0.05) if beside else room
-    if isinstance(lhs, sp.Add) and not isinstance(rhs, sp.Add) and width(lhs) > line_room / 2 > width(rhs):
-        lhs, rhs = rhs, lhs  # the long side second, where it breaks
-    left = min(width(lhs), 0.45 * line_room)  # a left side wider than that is set smaller
+    lhs, rhs = _sides(lhs, rhs, room)
+    left = min(width(lhs), LEFT * room) if left is None else left  # a left side wider than that is set smaller
     available = line_room - left - 3
-    head = (fit(latex_of(lhs), width(lhs), 0.45 * line_room) if tex else latex_of(lhs)) + " &= "
+    head = (fit(latex_of(lhs), width(lhs), left) if tex else latex_of(lhs)) + " &= "
     if width(rhs) <= available or not isinstance(rhs, sp.Add):
         return head + (fit(latex_of(rhs), width(rhs), available) if tex else latex_of(rhs)) + beside
     lines, line, used = [], [], 0.0
