@@ -27,8 +27,9 @@ from derive.text.latex import latex_of, symbol_latex
 #: alignment's indent; `room` below it where a note shares the line (the results' meanings).
 LINE = 72
 SCRIPT = 0.7  # a subscript or an exponent, set smaller
-NEAR = 0.5  # of its room, past which a row may be wider than estimated (by a third, seen): LaTeX measures it (`fit`)
+NEAR = 0.5  # of its room, past which a row may be wider than estimated (ERRS): LaTeX measures it (`fit`)
 LEFT = 0.45  # of a line, the most the left sides of an align take (a wider one is set smaller)
+ERRS = 1.35  # how much wider than estimated a side may typeset (cos(angle_ramp): a third)
 TAG = 6  # characters an equation's number takes at the end of its line
 
 
@@ -149,9 +150,9 @@ def rows(lhs: sp.Expr, rhs: sp.Expr, room: float = LINE, beside: str = "", tex: 
     """
     line_room = room * (1 - NOTE_WIDTH - 0.05) if beside else room
     lhs, rhs = _sides(lhs, rhs, room)
-    left = min(width(lhs), LEFT * room) if left is None else left  # a left side wider than that is set smaller
-    available = line_room - left - 3
-    head = (fit(latex_of(lhs), width(lhs), left) if tex else latex_of(lhs)) + " &= "
+    left = min(width(lhs), LEFT * room) if left is None else left
+    available = line_room - min(ERRS * left, LEFT * room) - 3  # beside the widest left side as it may typeset
+    head = (fit(latex_of(lhs), width(lhs), LEFT * room) if tex else latex_of(lhs)) + " &= "  # wider: set smaller
     if width(rhs) <= available or not isinstance(rhs, sp.Add):
         return head + (fit(latex_of(rhs), width(rhs), available) if tex else latex_of(rhs)) + beside
     lines, line, used = [], [], 0.0
