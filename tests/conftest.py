@@ -24,12 +24,12 @@ ROOT = Path(__file__).resolve().parent.parent
 DERIVE = Path(sys.executable).parent / "derive"
 
 
-def run_derive(*args: str, library: Path | None = None, cwd: Path = ROOT, env: dict | None = None
-               ) -> subprocess.CompletedProcess:
+def run_derive(*args: str, library: Path | None = None, cwd: Path = ROOT, env: dict | None = None,
+               timeout: float = 600) -> subprocess.CompletedProcess:
     """Run `derive` in `cwd`; `library` replaces the problem library (DERIVE_LIBRARY), `env` sets
     other environment variables."""
     env = {**os.environ, **({"DERIVE_LIBRARY": str(library)} if library else {}), **(env or {})}
-    return subprocess.run([str(DERIVE), *args], capture_output=True, text=True, cwd=cwd, timeout=600, env=env)
+    return subprocess.run([str(DERIVE), *args], capture_output=True, text=True, cwd=cwd, timeout=timeout, env=env)
 
 
 #: The sources of the lecture notes' problems; every other library problem is a textbook setup.

@@ -7,6 +7,8 @@ cart_track_bead). Here: a carrier that turns (a ball rolling inside a drum free 
 whose two routes are compared in moving states by the checks, against its limits: a drum too
 heavy to turn is a fixed bowl (a ball rolling in a bowl: (R - r) phi'' = -(5/7) g sin(phi)), a
 massless drum exerts no friction. And the refusals the part adds."""
+import re
+
 import pytest
 import sympy as sp
 
@@ -108,13 +110,21 @@ def test_a_carried_surface_that_does_not_fit_is_refused_naming_the_field(tmp_pat
     assert line.count("\n") == 0 and f"wedge.yaml: {field}: " in line and reason in line, line
 
 
-def test_a_carried_surface_is_left_out_of_the_figure_rather_than_drawn_fixed(tmp_path):
-    """The figure would hatch the wedge's face as ground: it leaves the figure out (until it draws
-    carriers)."""
+def test_a_carried_surface_is_drawn_with_its_carrier_never_as_ground(tmp_path):
+    """The wedge's face is the top of the wedge, a solid that moves: no fixed incline (shaded, its
+    base hatched) but the rail's floor. The same scene with the face fixed draws a fixed incline;
+    a carrier the figure cannot draw as its surface's solid (a disk) leaves the figure out."""
     path = tmp_path / "wedge.yaml"
     path.write_text(WEDGE)
-    assert figure.tikz(load(str(path))) is None
+    carried = figure.tikz(load(str(path)))
+    assert "\\draw[fill=gray!10]" not in carried and carried.count("pattern=north east lines") == 1  # the rail's
+    assert re.search(r"\\draw\[body\] \(\S+\) -- \(\S+\) -- \(\S+\) -- cycle;", carried)  # the wedge
     fixed = tmp_path / "fixed.yaml"
     fixed.write_text(WEDGE.replace(", carried_by: wedge", "").replace("rail: {slider: wedge, angle: 0}",
                                                                          "rail: {slider: wedge, angle: 0, turns: true}"))
-    assert figure.tikz(load(str(fixed))) is not None
+    assert "\\draw[fill=gray!10]" in figure.tikz(load(str(fixed)))
+    disk = tmp_path / "disk.yaml"
+    disk.write_text(WEDGE.replace("wedge: {shape: point, mass: M, at: [0, 0]}",
+                                  "wedge: {shape: disk, mass: M, radius: R, at: [0, 0]}")
+                    .replace("  g: {", "  R: {meaning: radius of the disk, unit: m, range: [1, 2], sig_figs: 2}\n  g: {"))
+    assert figure.tikz(load(str(disk))) is None

@@ -30,33 +30,73 @@ def figures(problems):
     return {p.id: figure.tikz(p) for p in problems}
 
 
-#: Textbook setups promoted to the library (issue 39) that the figure code does not draw yet: a carried
-#: surface (a cart's track, a turntable, a plank on a cylinder, a wedge that slides), a brake. Their
-#: worksheets print no figure; a problem added to this list, or one drawn at last, fails the test.
-UNDRAWN = {"cart_track_bead", "cart_track_bead_oscillation", "flywheel_brake_grips", "plank_block_tilted",
-           "plank_cylinder", "turntable_record_slips", "wedge_block"}
-#: Drawn, but as a lone ball: a bounce's surface is in no figure yet (the figures 0.28 cm wide).
-LONE_BALLS = {"ball_bounces_off_wedge", "ball_bounces_then_flies", "sphere_bounces_gripping", "sphere_bounces_sliding"}
-
-
 def test_every_library_problem_has_a_figure(problems, figures):
     assert len(problems) >= 33
-    assert {name for name, drawn in figures.items() if drawn is None} == UNDRAWN
+    assert [name for name, drawn in figures.items() if drawn is None] == []
     for name, drawn in figures.items():
-        if drawn is None:
-            continue
         assert drawn.startswith("\\begin{tikzpicture}[") and drawn.endswith("\\end{tikzpicture}"), name
         assert "if problem" not in drawn and "nan" not in drawn and "inf" not in drawn, name
 
 
 def test_figures_keep_to_a_fixed_size(figures):
     for name, drawn in figures.items():
-        if drawn is None or name in LONE_BALLS:
+        if drawn is None:
             continue
         points = [(float(x), float(y)) for x, y in COORDINATE.findall(drawn)]
         width = max(x for x, _ in points) - min(x for x, _ in points)
         height = max(y for _, y in points) - min(y for _, y in points)
         assert 0.5 < width <= 6.5 and height <= 6.5, (name, width, height)
+
+
+def parameter_middle(p, name):
+    """A parameter at the middle of its range (or its value), as the figures draw it."""
+    given = p.parameters[name]
+    return float(given.value if given.range is None else (given.range[0] + given.range[1]) / 2)
+
+
+POINT = r"\((-?[\d.]+),(-?[\d.]+)\)"
+
+
+def test_a_ball_bounces_off_the_floor_drawn_under_it_on_its_path(problems, figures):
+    """The ball touches the floor where it strikes it (the red dot under its center), its
+    velocity an arrow onto it along the path the file gives (theta from the vertical), marked."""
+    for name in ("ball_bounces_then_flies", "sphere_bounces_gripping", "sphere_bounces_sliding"):
+        p = next(q for q in problems if q.id == name)
+        drawn = figures[name]
+        floor = re.search(rf"\\fill\[pattern=north east lines\] {POINT} rectangle {POINT};", drawn)
+        x0, x1, level = float(floor[1]), float(floor[3]), float(floor[4])
+        ball = re.search(rf"\\shade\[ball color=gray!35\] {POINT} circle \(([\d.]+)\);", drawn)
+        center, radius = (float(ball[1]), float(ball[2])), float(ball[3])
+        assert x0 + 1 < center[0] < x1 - 1 and abs(center[1] - radius - level) <= TOLERANCE, name  # on the floor
+        assert f"\\fill[red!70!black] {_pt((center[0], level))} circle" in drawn, name  # where it strikes
+        arrow = re.search(rf"\\draw\[velocity\] {POINT} -- {POINT};", drawn)
+        start, tip = (float(arrow[1]), float(arrow[2])), (float(arrow[3]), float(arrow[4]))
+        theta = parameter_middle(p, "theta")
+        along = math.atan2(tip[1] - start[1], tip[0] - start[0])
+        assert abs(along - math.atan2(-math.cos(theta), math.sin(theta))) < 0.02, name
+        assert radius < math.dist(tip, center) < radius + 0.1, name  # it ends at the ball
+        assert "{$\\theta$}" in drawn and "{$v$}" in drawn and "$e$" in drawn, name
+    assert "no slip" in figures["ball_bounces_then_flies"] and "rough, $\\mu$" in figures["sphere_bounces_sliding"]
+
+
+def test_a_ball_dropped_onto_a_wedge_falls_onto_its_face_from_its_height(problems, figures):
+    """The face at its angle through the point struck, straight under the ball; the ball's drop and
+    the point's height above the floor (the wedge's foot) in the ratio of h to H."""
+    p = next(q for q in problems if q.id == "ball_bounces_off_wedge")
+    drawn = figures["ball_bounces_off_wedge"]
+    wedge = re.search(rf"\\draw\[fill=gray!10\] {POINT} -- {POINT} -- {POINT} -- cycle;", drawn)
+    top, foot, corner = ((float(wedge[k]), float(wedge[k + 1])) for k in (1, 3, 5))
+    assert abs(math.atan2(top[1] - foot[1], foot[0] - top[0]) - math.pi / 4) < 0.01  # 45 degrees, down to the right
+    assert corner == (top[0], foot[1])
+    struck = re.search(rf"\\fill\[red!70!black\] {POINT} circle", drawn)
+    struck = (float(struck[1]), float(struck[2]))
+    assert on_segment(struck, top, foot)
+    ball = re.search(rf"\\shade\[ball color=gray!60\] {POINT} circle", drawn)
+    ball = (float(ball[1]), float(ball[2]))
+    assert abs(ball[0] - struck[0]) <= TOLERANCE and ball[1] > struck[1]
+    drop, height = ball[1] - struck[1], struck[1] - foot[1]
+    assert abs(drop / height - parameter_middle(p, "h") / parameter_middle(p, "H")) < 0.05
+    assert "{$h$}" in drawn and "{$H$}" in drawn and "smooth, $e$" in drawn and "\\frac{\\pi}{4}" in drawn
 
 
 def test_an_incline_has_its_triangle_and_the_angle_labelled(figures):
@@ -586,3 +626,139 @@ def test_a_puck_striking_a_rod_across_its_path_is_drawn_to_scale():
     tikz = figure.tikz(problem.load(textbook("disk_strikes_free_rod")))
     assert "(0,-2.39) -- (0,2.39);" in tikz  # the rod, vertical
     assert "\\draw[body] (-1.59,2.39) circle (0.19);" in tikz  # the puck, its radius to the rod's scale
+
+
+# Surfaces carried by a body and clutches (issue 39), in the general layout: each carrier drawn as what holds its
+# surface, where the scene puts it (derive.publishing.figure.drawn_carriers, drawn_clutches).
+POLYGON = re.compile(r"\\draw\[body\] ((?:\(-?[\d.]+,-?[\d.]+\) -- )+)cycle;")
+RAIL = re.compile(rf"\\draw\[thick, gray!70!black\] {POINT} -- {POINT};")
+
+
+@pytest.fixture(scope="module")
+def carried(problems):
+    """name: (problem, figure, the map from the scene (m) to the figure (cm), the scale in cm per m)."""
+    from derive.publishing.figure.canvas import _Figure
+    from derive.publishing.figure.parts import _Layout
+
+    result = {}
+    for p in problems:
+        if p.id in ("wedge_block", "plank_cylinder", "plank_block_tilted", "cart_track_bead", "flywheel_brake_grips",
+                    "turntable_record_slips"):
+            at = _Layout(_Figure(p)).view.at
+            result[p.id] = (p, figure.tikz(p), at, at((1, 0))[0] - at((0, 0))[0])
+    return result
+
+
+def polygons(drawn):
+    return [[(float(x), float(y)) for x, y in COORDINATE.findall(m[1])] for m in POLYGON.finditer(drawn)]
+
+
+def rail(drawn):
+    m = RAIL.search(drawn)
+    return (float(m[1]), float(m[2])), (float(m[3]), float(m[4]))
+
+
+def block_center(drawn):
+    """A block's center and its tilt (degrees), from its rotated square."""
+    m = re.search(rf"\\draw\[body, rotate around=\{{(-?[\d.]+):{POINT}\}}\] {POINT} rectangle {POINT};", drawn)
+    return (float(m[2]), float(m[3])), float(m[1])
+
+
+def test_a_wedge_that_slides_carries_its_face_and_rides_its_rail(carried):
+    """The wedge: a solid triangle (no hatching: it moves), its face at theta through the block's
+    point less half a block, upright behind, level below; its rail under its base; the block on the face."""
+    p, drawn, at, _ = carried["wedge_block"]
+    theta = parameter_middle(p, "theta")
+    (wedge,) = polygons(drawn)
+    upper, foot, back = wedge
+    assert abs(math.atan2(upper[1] - foot[1], foot[0] - upper[0]) - theta) < 0.01
+    assert close_to(back, (upper[0], foot[1]))
+    block, tilt = block_center(drawn)
+    assert close_to(block, at((0, 0))) and abs(tilt + math.degrees(theta)) < 0.01  # at its point, turned onto the face
+    normal = (math.sin(theta), math.cos(theta))
+    base = (block[0] - 0.21 * normal[0], block[1] - 0.21 * normal[1])
+    assert on_segment(base, upper, foot)  # it sits on the face
+    a, b = rail(drawn)
+    assert abs(a[1] - foot[1]) <= TOLERANCE and abs(b[1] - foot[1]) <= TOLERANCE and a[0] < back[0] and b[0] > foot[0]
+    assert "\\draw[fill=gray!10]" not in drawn  # not a fixed incline
+    assert "{$\\theta$}" in drawn and "{$M$}" in drawn and "smooth" in drawn
+
+
+def test_a_plank_carries_the_rolling_cylinder_on_its_top_as_thick_as_it_is(carried):
+    p, drawn, at, scale = carried["plank_cylinder"]
+    b, R = parameter_middle(p, "b"), parameter_middle(p, "R")
+    (slab,) = polygons(drawn)
+    top, bottom = max(y for _, y in slab), min(y for _, y in slab)
+    assert abs(top - at((0, b))[1]) <= TOLERANCE and abs((top - bottom) - b * scale) <= 2 * TOLERANCE
+    cylinder = re.search(rf"\\draw\[body\] {POINT} circle \(([\d.]+)\);", drawn)
+    center, radius = (float(cylinder[1]), float(cylinder[2])), float(cylinder[3])
+    assert abs(radius - R * scale) <= TOLERANCE and abs(center[1] - radius - top) <= TOLERANCE  # it rests on the top
+    assert min(x for x, _ in slab) < center[0] < max(x for x, _ in slab)
+    a, b_ = rail(drawn)
+    assert abs(a[1] - bottom) <= TOLERANCE and a[0] < min(x for x, _ in slab) and b_[0] > max(x for x, _ in slab)
+    pull = re.search(rf"\\draw\[force\] {POINT} -- {POINT};", drawn)
+    assert abs(float(pull[1]) - max(x for x, _ in slab)) <= TOLERANCE and float(pull[3]) > float(pull[1])  # from its end
+    assert "no slip" in drawn and "{$F$}" in drawn and "{$M$}" in drawn
+
+
+def test_a_block_on_a_tilted_plank_sits_on_the_plank_itself(carried):
+    """The plank's top is the plank: no surface of its own; the block's base on the bar, d down
+    the slope from the pivot; phi marked from a level line at the pivot."""
+    p, drawn, at, scale = carried["plank_block_tilted"]
+    phi, d, L = (parameter_middle(p, name) for name in ("phi", "d", "L"))
+    bar = BAR.search(drawn)
+    ends = (float(bar[1]), float(bar[2])), (float(bar[3]), float(bar[4]))
+    pivot = at((0, 0))
+    assert abs(math.dist(*ends) - L * scale) <= 2 * TOLERANCE and close_to(((ends[0][0] + ends[1][0]) / 2, (ends[0][1] + ends[1][1]) / 2), pivot)
+    block, tilt = block_center(drawn)
+    normal = (math.sin(phi), math.cos(phi))
+    base = (block[0] - 0.21 * normal[0], block[1] - 0.21 * normal[1])
+    assert close_to(base, at((d * math.cos(phi), -d * math.sin(phi)))) and abs(tilt + math.degrees(phi)) < 0.01
+    assert f"\\draw[fill=white] {_pt(pivot)} circle (0.06);" in drawn  # the pivot
+    assert "pattern=north east lines" in drawn and drawn.count("pattern=north east lines") == 1  # its support only
+    assert f"\\draw[dashed, gray] {_pt(pivot)} -- " in drawn and "{$\\phi$}" in drawn
+
+
+def test_a_cart_carries_its_circular_track_with_the_bead_on_it(carried):
+    p, drawn, at, scale = carried["cart_track_bead"]
+    R, phi = parameter_middle(p, "R"), parameter_middle(p, "phi")
+    middle = at((0, R))
+    track = re.search(rf"\\draw\[thick\] {POINT} circle \(([\d.]+)\);", drawn)
+    assert close_to((float(track[1]), float(track[2])), middle)
+    radius = float(track[3])
+    bead = re.search(rf"\\shade\[ball color=gray!60\] {POINT} circle \(([\d.]+)\);", drawn)
+    center, size = (float(bead[1]), float(bead[2])), float(bead[3])
+    assert close_to(center, at((R * math.sin(phi), R - R * math.cos(phi))))  # where the scene puts it
+    assert abs(math.dist(center, middle) + size - radius) <= TOLERANCE  # touching the track from inside
+    (cart,) = polygons(drawn)
+    xs, ys = [x for x, _ in cart], [y for _, y in cart]
+    assert min(xs) < middle[0] - radius and max(xs) > middle[0] + radius and min(ys) < middle[1] - radius
+    assert abs(max(ys) - middle[1]) <= TOLERANCE  # up to the track's middle
+    a, b = rail(drawn)
+    assert abs(a[1] - min(ys)) <= TOLERANCE and a[0] < min(xs) and b[0] > max(xs)
+    assert drawn.count("pattern=north east lines") == 1 and "{$R$}" in drawn and "{$M$}" in drawn
+
+
+def test_a_brake_pad_presses_on_the_flywheels_rim_from_the_ground(carried):
+    p, drawn, at, scale = carried["flywheel_brake_grips"]
+    R = parameter_middle(p, "R")
+    center = at((0, 0))
+    pad = re.search(rf"\\draw\[fill=gray!55\] {POINT} -- {POINT} -- {POINT} -- {POINT} -- cycle;", drawn)
+    corners = [(float(pad[k]), float(pad[k + 1])) for k in (1, 3, 5, 7)]
+    inner = ((corners[0][0] + corners[1][0]) / 2, (corners[0][1] + corners[1][1]) / 2)
+    assert abs(math.dist(inner, center) - R * scale) < 0.03  # on the rim
+    outer = ((corners[2][0] + corners[3][0]) / 2, (corners[2][1] + corners[3][1]) / 2)
+    assert math.dist(outer, center) > math.dist(inner, center)
+    assert drawn.count("pattern=north east lines") == 2  # the axle's bracket and the pad's anchor
+    assert "pad, rough, $C$" in drawn
+
+
+def test_a_record_on_a_turntable_meets_it_at_a_felt_inside_its_rim(carried):
+    p, drawn, at, scale = carried["turntable_record_slips"]
+    R1, R2 = parameter_middle(p, "R1"), parameter_middle(p, "R2")
+    center = at((0, 0))
+    disks = sorted(float(m[1]) for m in re.finditer(rf"\\draw\[body\] {re.escape(_pt(center))} circle \(([\d.]+)\);", drawn))
+    assert abs(disks[0] - R2 * scale) <= TOLERANCE and abs(disks[1] - R1 * scale) <= TOLERANCE
+    felt = re.search(rf"densely dotted\] {re.escape(_pt(center))} circle \(([\d.]+)\);", drawn)
+    assert felt and R2 * scale - 0.15 < float(felt[1]) < R2 * scale
+    assert "felt, rough, $C$" in drawn

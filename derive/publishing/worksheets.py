@@ -43,14 +43,26 @@ from derive.publishing.variants import ProblemVariants, unit_latex, valid_draws
 LONGEST_EQUATION = 700  # characters of LaTeX; longer would overflow the page
 
 
-def typeset(equation: sp.Eq, beside: str = "", tag: str = "") -> str:
-    """An equation for an align environment, a long sum broken across lines (typesetting.rows),
-    `beside` a note at its first row, `tag` its number at its last (`tag`); one too long to
-    typeset at all becomes a short note."""
+TOO_LONG = r"\text{(too long to typeset here: see derive solve --format latex)}"
+
+
+def typeset(equation: sp.Eq, beside: str = "", tag: str = "", tex: bool = False, left: float | None = None) -> str:
+    """An equation for an align environment, a long sum broken across lines (typesetting.rows; a
+    row still too wide set smaller where LaTeX compiles it, `tex`), `beside` a note at its first
+    row, `tag` its number at its last (`tag`); one too long to typeset at all becomes a short
+    note in place of its long side, on the right (`0 = (too long ...)`: on the left, the note
+    would widen the column of left sides of every row it aligns with). `left`: how wide the left
+    sides of the equations aligned with it are (typesetting.left_column).
+
+    >>> x = sp.Symbol("x")
+    >>> print(typeset(sp.Eq(sum(x**k / (k + 1) for k in range(200)), 0)))
+    0 &= \\text{(too long to typeset here: see derive solve --format latex)}
+    """
     if len(latex_of(equation)) > LONGEST_EQUATION:
-        return (latex_of(equation.lhs) + r" &= \text{(too long to typeset here: see derive solve "
-                r"--format latex)}" + beside + tag)
-    return typesetting.rows(equation.lhs, equation.rhs, beside=beside) + tag
+        short = [side for side in (equation.lhs, equation.rhs) if len(latex_of(side)) <= LONGEST_EQUATION / 10]
+        return (latex_of(short[0]) if short else "") + " &= " + TOO_LONG + beside + tag
+    room = typesetting.LINE - (typesetting.TAG if tag else 0)
+    return typesetting.rows(equation.lhs, equation.rhs, room=room, beside=beside, tex=tex, left=left) + tag
 
 
 def tag(number: int, tex: bool) -> str:
@@ -132,10 +144,12 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
         _routes(item, proof, numbered, siunitx, item.free_bodies)
     # Lagrange's method and Newton–Euler in full: the instructor's verification where the student's route is written
     verification = _routes(item, proof, numbered, siunitx, item.free_bodies) if student is not None else []
+    results = {n: sp.Eq(sp.Symbol(n), item.shown_expressions[n], evaluate=False) for n in problem.asks}
+    left = typesetting.left_column(results.values())  # the results align
     answers = [
         {"symbol": symbol_latex(n), "latex": item.expression_latexes[n], "meaning": a.meaning,
-         "rows": typeset(sp.Eq(sp.Symbol(n), item.shown_expressions[n], evaluate=False),
-                         typesetting.note(prose.set_as_math(a.meaning, [*problem.parameters, *problem.asks]), tex=siunitx))}
+         "rows": typeset(results[n], typesetting.note(prose.set_as_math(a.meaning, [*problem.parameters, *problem.asks]),
+                                                      tex=siunitx), tex=siunitx, left=left)}
         for n, a in problem.asks.items()
     ]
     variants = _numbers(item, siunitx)
@@ -162,10 +176,13 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
             if s.sentences and prose.repeats(s.sentences[-1].words, s.text):
                 text = ""  # the sentence just said it: no near-copy of it before the equations
-            shown.append({"text": prose.set_as_math(prose.capital(text), names), "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
+            left = typesetting.left_column(s.equations, typesetting.LINE - typesetting.TAG)  # the rows align
+            shown.append({"text": prose.set_as_math(prose.capital(text), names),
+                          "equations": [typeset(e, tag=tag(n, siunitx), tex=siunitx, left=left)
+                                        for e, n in zip(s.equations, numbers)],
                           "diagram": diagrams[id(original)].tikz if id(original) in diagrams else "",
                           "body": diagrams[id(original)].body if id(original) in diagrams else "",
-                          "sentences": [sentence.latex() for sentence in s.sentences]})
+                          "sentences": [sentence.latex(tex=siunitx) for sentence in s.sentences]})
         routes.append({"title": prose.set_as_math(prose.capital(route_title(route)), names), "steps": shown})
     return routes
 

@@ -24,6 +24,7 @@ from typing import Callable, Iterable
 
 import sympy as sp
 
+from derive.text import typesetting
 from derive.text.latex import latex_of, symbol_latex, tex_escape
 from derive.text.terminal import pretty
 
@@ -41,9 +42,23 @@ class Sentence:
         """The words alone (what the prose checks read)."""
         return "".join(p for p in self.pieces if isinstance(p, str))
 
-    def latex(self) -> str:
-        """The sentence as LaTeX: words escaped, each piece of math in `$...$`."""
-        return "".join(tex_escape(p) if isinstance(p, str) else f"${latex_of(p)}$" for p in self.pieces)
+    def latex(self, tex: bool = False) -> str:
+        r"""The sentence as LaTeX: words escaped, each piece of math in `$...$`; where LaTeX
+        compiles it (`tex`), a piece too wide to share a line with words (a long fraction, a
+        product in parentheses: inline math breaks only between its terms) on a line of its own,
+        set smaller if it is wider than the line (derive.text.typesetting.fit).
+
+        >>> x = sp.Symbol("x")
+        >>> wide = Sentence(("its torque is ", sum(x**k / (k + 2) for k in range(12)), "."))
+        >>> r"its torque is \[\fitwidth{1.00\linewidth}{" in wide.latex(tex=True), "\\[" in wide.latex()
+        (True, False)
+        """
+        def math(piece) -> str:
+            if tex and typesetting.width(piece) > typesetting.LINE / 2:
+                return rf"\[{typesetting.fit(latex_of(piece), typesetting.width(piece), typesetting.LINE)}\]"
+            return f"${latex_of(piece)}$"
+
+        return "".join(tex_escape(p) if isinstance(p, str) else math(p) for p in self.pieces)
 
     def text(self) -> str:
         """The sentence for a terminal (a fraction takes three lines, on one baseline)."""

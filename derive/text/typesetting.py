@@ -6,7 +6,10 @@ cut here between its terms, each line after the first indented under the `=`. Ho
 comes from `width`, an estimate in characters of typeset math from the expression itself: a
 symbol is its letter and a smaller subscript, a fraction the wider of its numerator and its
 denominator, a power its base and a smaller exponent. The estimate errs wide, so a line it passes
-fits. A term too wide by itself stays whole.
+fits. An equation whose long side is its left (a constraint, `sum = 0`) is written the other way
+round (`0 = sum`), so that it breaks the same way. A line still too wide (a term too wide by
+itself: a long fraction) is set smaller where LaTeX compiles it (`fit`: the preamble's
+``\fitwidth``, which shrinks it to the line only if it is wider).
 
 >>> speeds = sp.symbols("v_ball v_block v_can v_hoop")
 >>> print(rows(sp.Symbol("K"), sum(sp.Symbol("m") * v**2 / 2 for v in speeds), room=30))
@@ -24,6 +27,10 @@ from derive.text.latex import latex_of, symbol_latex
 #: alignment's indent; `room` below it where a note shares the line (the results' meanings).
 LINE = 72
 SCRIPT = 0.7  # a subscript or an exponent, set smaller
+NEAR = 0.5  # of its room, past which a row may be wider than estimated (ERRS): LaTeX measures it (`fit`)
+LEFT = 0.45  # of a line, the most the left sides of an align take (a wider one is set smaller)
+ERRS = 1.35  # how much wider than estimated a side may typeset (cos(angle_ramp): a third)
+TAG = 6  # characters an equation's number takes at the end of its line
 
 
 def width(expression) -> float:
@@ -90,22 +97,73 @@ def note(text: str, tex: bool = True) -> str:
     return rf" && \parbox[t]{{{NOTE_WIDTH}\linewidth}}{{\raggedright\small {text}}}"
 
 
-def rows(lhs: sp.Expr, rhs: sp.Expr, room: float = LINE, beside: str = "") -> str:
-    """`lhs = rhs` as rows of an align environment (`lhs &= ...`), the sum on the right cut between
+def fit(text: str, size: float, room: float) -> str:
+    r"""A row's math (`text`, about `size` characters wide) where it has `room` characters: as it is
+    when it fits, else in ``\fitwidth``, which sets it smaller where it is wider than that share of
+    the line (the estimate errs wide: LaTeX measures it).
+
+    >>> fit("x", 1, 10)
+    'x'
+    >>> fit("x", 80, 60)
+    '\\fitwidth{0.83\\linewidth}{x}'
+    """
+    if size <= NEAR * room:  # clearly narrower: as it is
+        return text
+    return rf"\fitwidth{{{room / LINE:.2f}\linewidth}}{{{text}}}"
+
+
+def _sides(lhs: sp.Expr, rhs: sp.Expr, room: float) -> tuple[sp.Expr, sp.Expr]:
+    """The sides as written: a long sum on the left over a short right side, second (`0 = a + b`)."""
+    if isinstance(lhs, sp.Add) and not isinstance(rhs, sp.Add) and width(lhs) > room / 2 > width(rhs):
+        return rhs, lhs
+    return lhs, rhs
+
+
+def left_column(equations, room: float = LINE) -> float:
+    """How wide (characters) the left sides of equations aligned together are written: the widest,
+    at most `LEFT` of the line. Each row's right side keeps to the rest of the line (`rows`' `left`):
+    the rows of an align share its columns, so that a long left side in one row and a long right
+    side in another would together run off the page.
+
+    >>> x, y = sp.symbols("x y")
+    >>> left_column([sp.Eq(x, y), sp.Eq(x + y, 2 * y)])
+    5.0
+    """
+    return max((min(width(_sides(e.lhs, e.rhs, room)[0]), LEFT * room) for e in equations), default=0.0)
+
+
+def rows(lhs: sp.Expr, rhs: sp.Expr, room: float = LINE, beside: str = "", tex: bool = False,
+         left: float | None = None) -> str:
+    r"""`lhs = rhs` as rows of an align environment (`lhs &= ...`), the sum on the right cut between
     its terms where the line would be wider than `room` characters (`width`); `beside`, a `note`,
-    ends the first row (the room left for the equation shrinks by its width)."""
-    head = latex_of(lhs) + " &= "
-    available = (room * (1 - NOTE_WIDTH - 0.05) if beside else room) - width(lhs) - 3
+    ends the first row (the room left for the equation shrinks by its width). A long left side
+    over a short right one is written second (`0 = a + b`); where LaTeX compiles it (`tex`), a row
+    still too wide is set smaller (`fit`). `left`: how wide the left sides of the rows aligned
+    with it are (`left_column`; by default its own).
+
+    >>> a, b = sp.symbols("alpha_disk beta_disk")
+    >>> print(rows(sum(a**k * b for k in range(1, 9)), sp.Integer(0), room=30))
+    0 &= \alpha_{\mathrm{disk}}^{8} \beta_{\mathrm{disk}} + \alpha_{\mathrm{disk}}^{7} \beta_{\mathrm{disk}} \\
+    &\quad + \alpha_{\mathrm{disk}}^{6} \beta_{\mathrm{disk}} + \alpha_{\mathrm{disk}}^{5} \beta_{\mathrm{disk}} \\
+    &\quad + \alpha_{\mathrm{disk}}^{4} \beta_{\mathrm{disk}} + \alpha_{\mathrm{disk}}^{3} \beta_{\mathrm{disk}} \\
+    &\quad + \alpha_{\mathrm{disk}}^{2} \beta_{\mathrm{disk}} + \alpha_{\mathrm{disk}} \beta_{\mathrm{disk}}
+    """
+    line_room = room * (1 - NOTE_WIDTH - 0.05) if beside else room
+    lhs, rhs = _sides(lhs, rhs, room)
+    left = min(width(lhs), LEFT * room) if left is None else left
+    available = line_room - min(ERRS * left, LEFT * room) - 3  # beside the widest left side as it may typeset
+    head = (fit(latex_of(lhs), width(lhs), LEFT * room) if tex else latex_of(lhs)) + " &= "  # wider: set smaller
     if width(rhs) <= available or not isinstance(rhs, sp.Add):
-        return head + latex_of(rhs) + beside
+        return head + (fit(latex_of(rhs), width(rhs), available) if tex else latex_of(rhs)) + beside
     lines, line, used = [], [], 0.0
     for term in rhs.as_ordered_terms():
         size = width(term) + 3
         if line and used + size > available:
-            lines.append(" ".join(line))
+            lines.append((" ".join(line), used))
             line, used = [], 0.0
         line.append(_signed(term, not lines and not line))
         used += size
-    lines.append(" ".join(line))
-    lines[0] += beside
-    return head + " \\\\\n&\\quad ".join(lines)
+    lines.append((" ".join(line), used))
+    texts = [fit(text, used, available) if tex else text for text, used in lines]
+    texts[0] += beside
+    return head + " \\\\\n&\\quad ".join(texts)

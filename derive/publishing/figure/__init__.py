@@ -12,7 +12,7 @@ prescribed paths) have schematics of their own; bodies in 3D (in bearings, on a 
 on an edge, turning freely) are drawn in an oblique projection with their axes and omega and L
 from their derivations (`derive.publishing.figure.solids`); so do the classic scenes whose
 every part a schematic draws (an incline, a floor, a loop, a pendulum, bodies on one axle, a
-collision). Any other scene of parts is drawn in its reference configuration to scale, every part
+collision, a ball bouncing off a floor or a wedge). Any other scene of parts is drawn in its reference configuration to scale, every part
 from its own geometry (`derive.publishing.figure.parts`); a part it cannot draw leaves the figure out (None)
 rather than draw it wrong. Each contact is marked with its regime: no slip, smooth or rough.
 Same problem, same bytes.

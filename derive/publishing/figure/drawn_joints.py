@@ -64,13 +64,15 @@ class JointDrawings:
         along = _norm((view.value(sp.cos(slider.angle)), view.value(sp.sin(slider.angle))))
         back, ahead = drawn.reach(point, (-along[0], -along[1])), drawn.reach(point, along)
         a, b = _add(point, along, -back - 0.7), _add(point, along, ahead + 0.7)
+        if drawn.kind == "solid":  # it does not turn: its rail under its base (derive.publishing.figure.drawn_carriers)
+            a, b = self._rail_under(drawn, point, along)
         below = _perp(along)
         below = (-below[0], -below[1])
         view.put("supports", f"\\fill[pattern=north east lines] {_pt(_add(a, below, 0.04))} -- {_pt(_add(b, below, 0.04))}"
                              f" -- {_pt(_add(b, below, 0.16))} -- {_pt(_add(a, below, 0.16))} -- cycle; "
                              f"\\draw[thick, gray!70!black] {_pt(a)} -- {_pt(b)};")
         view.ink_line(a, b)
-        if drawn.kind == "point":
+        if drawn.kind in ("point", "solid"):
             return
         degrees = _degrees(along)
         if slider.turns:  # a pin in a slot

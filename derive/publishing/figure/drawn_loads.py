@@ -25,6 +25,8 @@ class LoadDrawings:
         if magnitude.could_extract_minus_sign():
             magnitude, angle = -magnitude, angle + sp.pi
         direction = _norm((view.value(sp.cos(angle)), view.value(sp.sin(angle))))
+        if drawn.kind == "solid":  # from its outline, on its line of action (derive.publishing.figure.drawn_carriers)
+            point = _add(point, direction, drawn.reach(point, direction))
         offset = _sub(point, drawn.center)
         pushes = math.hypot(*offset) > 0.5 * drawn.extent > 0 and _dot(offset, direction) < 0
         start = _add(point, direction, -ARROW) if pushes else point

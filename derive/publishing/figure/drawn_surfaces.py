@@ -52,6 +52,8 @@ class SurfaceDrawings:
                 continue
             done.add(contact.surface)
             surface = self.scene.surfaces[contact.surface]
+            if surface.carrier is not None:  # its carrier draws it (derive.publishing.figure.drawn_carriers)
+                continue
             if isinstance(surface, Plane):
                 self._plane(surface)
             else:
@@ -158,7 +160,7 @@ class SurfaceDrawings:
         result = {}
         for name in dict.fromkeys(c.surface for c in self.contacts):
             other = self.scene.surfaces[name]
-            if name == plane.name or not isinstance(other, Plane):
+            if name == plane.name or not isinstance(other, Plane) or other.carrier is not None:
                 continue
             other_base, other_down, other_normal = self._drawn_line(other)
             corner = _crossing(base, down, other_base, other_down)

@@ -195,6 +195,8 @@ class _Body:
         self.ends = None  # a bar: the two points of its body (body frame) it runs between (set by the layout)
         self.tilt = 0.0  # degrees: a block on an incline is turned to lie on it
         self.seat = None  # a block on a plane that round bodies share: the plane's unit normal (it sits on it)
+        self.polygon = None  # a solid (a point mass that carries a surface): its outline on the figure (cm)
+        self.holds = None  # a solid: the surface it carries
 
     def corners_m(self) -> list[tuple[float, float]]:
         """World points of its outline that bound it (for the figure's extent)."""
@@ -209,6 +211,8 @@ class _Body:
             return [_add(c, along, self.rod / 2), _add(c, along, -self.rod / 2)]
         if self.kind == "bar":
             return [self.view.world(self.name, end) for end in self.ends]
+        if self.kind == "solid":
+            return [_add(self.view.origin, p, 1 / self.view.scale) for p in self.polygon]
         if self.kind == "rectangle":
             a_, b_ = self.sides[0] / 2, self.sides[1] / 2
             return [_add(_add(c, along, sx * a_), across, sy * b_) for sx in (-1, 1) for sy in (-1, 1)]
@@ -260,9 +264,12 @@ class _Body:
             p, q = self.segment()
             steps = max(2, int(math.hypot(*_sub(q, p)) / 0.1))
             return [_add(p, _sub(q, p), k / steps) for k in range(steps + 1)]
-        if self.kind == "rectangle":
-            a_, b_ = self.sides[0] / 2 * s, self.sides[1] / 2 * s
-            corners = [_add(_add(c, along, sx * a_), across, sy * b_) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+        if self.kind in ("rectangle", "solid"):
+            if self.kind == "solid":
+                corners = list(self.polygon)
+            else:
+                a_, b_ = self.sides[0] / 2 * s, self.sides[1] / 2 * s
+                corners = [_add(_add(c, along, sx * a_), across, sy * b_) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
             points = []
             for p, q in zip(corners, corners[1:] + corners[:1]):
                 steps = max(1, int(math.hypot(*_sub(q, p)) / 0.1))
@@ -294,6 +301,8 @@ class _Body:
         if self.pieces:
             for piece in self.pieces:
                 piece.shape()
+        elif self.kind == "solid":  # drawn with the surface it carries (derive.publishing.figure.drawn_carriers)
+            pass
         elif self.kind == "point":
             if self.block:
                 tilt = self.tilt

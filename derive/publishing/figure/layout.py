@@ -1,7 +1,7 @@
 """Which layout a scene gets: the first in the table that applies draws the figure.
 
 The schematic layouts (an incline, a level floor, a loop, a pendulum, bodies on one axle, a
-collision) apply only to the scenes whose every part they draw; any other scene of parts gets the
+collision, a bounce off a fixed surface) apply only to the scenes whose every part they draw; any other scene of parts gets the
 general layout (`derive.publishing.figure.parts`), which draws each part where the scene puts it.
 """
 from __future__ import annotations
@@ -9,6 +9,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.publishing.figure.bodies import _placed
+from derive.publishing.figure.bounces import _bounce, bounces
 from derive.publishing.figure.collisions import _impact, struck
 from derive.publishing.figure.inertia import _specimens
 from derive.publishing.figure.joints import _pinned
@@ -115,6 +116,7 @@ _LAYOUTS = (
     (_collision, _impact),
     (_on_pivots, _pinned),
     (_has_parts, _parts),
+    (bounces, _bounce),
     (lambda p: bool(p.scene.motions) and all(n in p.scene.motions for n in p.scene.bodies), _placed),
     (lambda p: bool(p.scene.bodies), _specimens),
 )

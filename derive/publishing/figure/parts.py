@@ -8,6 +8,11 @@ scaled uniformly so that the scene is about 4 cm wide.
 
 What each part looks like:
 
+- surfaces carried by a body (`drawn_carriers`): a point mass that carries a plane is the wedge or
+  the slab under it, one that carries a circular track the block (a cart) it is cut into, its rail
+  drawn under its base; a rod that carries a plane along its own line is that plane (a tilted plank);
+- clutches (`drawn_clutches`): a brake a pad on the rim from a hatched anchor, a clutch between two
+  disks on one axis a dotted felt inside the smaller one's rim, each with its name and couple;
 - surfaces: a plane a hatched floor or wall (an incline a shaded wedge with its angle), stopping
   short of things below its level (a pulley at a table's edge) and meeting another such plane at
   their corner (a floor and a wall); a circle a thick track hatched on the solid side (outside a
@@ -52,16 +57,20 @@ import math
 from derive.publishing.figure.canvas import _add, _Figure, _pt
 from derive.publishing.figure.drawn_view import BALL, BLOCK, DIRECTIONS, LAYERS, Undrawable, _Body, _Scene
 from derive.publishing.figure.vectors import _norm, _on_segment, _perp, _scale_vec, _sub
+from derive.publishing.figure.drawn_carriers import CarrierDrawings
+from derive.publishing.figure.drawn_clutches import ClutchDrawings
 from derive.publishing.figure.drawn_cords import CordDrawings
 from derive.publishing.figure.drawn_joints import JointDrawings
 from derive.publishing.figure.drawn_surfaces import SurfaceDrawings
 from derive.publishing.figure.drawn_loads import LoadDrawings
+from derive.parts.clutch import Clutch
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord, run
 from derive.parts.damper import Damper
 from derive.parts.force import Force
 from derive.parts.pin import Pin
 from derive.parts.slider import Slider
+from derive.parts.slipping_clutch import SlippingClutch
 from derive.parts.spring import Spring
 from derive.parts.surfaces import Circle, Plane
 from derive.parts.torque import Torque
@@ -72,10 +81,10 @@ from derive.text.latex import tex_escape
 CORE_WIDTH, CORE_HEIGHT = 4.2, 3.6  # cm: the scene's geometry, before anchors, arrows and labels
 
 #: The parts this layout draws (gravity is the scene's own field).
-KNOWN = (Contact, Cord, Damper, Force, Pin, Slider, Spring, Torque, TorsionalSpring, Weld)
+KNOWN = (Clutch, Contact, Cord, Damper, Force, Pin, Slider, SlippingClutch, Spring, Torque, TorsionalSpring, Weld)
 
 
-class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings):
+class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings, CarrierDrawings, ClutchDrawings):
     """The general layout: gathers the geometry, scales it, draws each part."""
 
     def __init__(self, fig: _Figure):
@@ -86,8 +95,6 @@ class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings):
         for part in parts:
             if not isinstance(part, KNOWN):
                 raise Undrawable(f"the figure does not draw a {type(part).__name__}")
-            if isinstance(part, Contact) and part.carrier is not None:  # it would look fixed to the ground
-                raise Undrawable(f"the figure does not draw a surface carried by a body ({part.surface})")
         self.parts = parts
         self.bodies = {name: _Body(view, name) for name in scene.bodies}
         self.cords = [p for p in parts if isinstance(p, Cord)]
@@ -98,9 +105,11 @@ class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings):
         self.pulls: dict = {}  # cord name: (the pull arrow's tip, its label)
         self.pending: list = []  # labels, placed once everything is drawn
         self.lift: dict[str, float] = {}  # surface: how far below the points resting on it it is drawn (cm)
-        self._mark_blocks()
         self._mark_bars()
+        self._mark_faces()
+        self._mark_blocks()
         self._scale()
+        self._mark_solids()
 
     def of(self, kind):
         return [p for p in self.parts if isinstance(p, kind)]
@@ -114,7 +123,7 @@ class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings):
         shares, a block sits on the surface with its point at its base."""
         for name, surface in self.scene.surfaces.items():
             resting = [self.bodies[c.body] for c in self.contacts if c.surface == name]
-            if resting and all(d.kind == "point" for d in resting):
+            if resting and all(d.kind == "point" for d in resting) and name not in self.faces:  # a rod's face: on it
                 self.lift[name] = BLOCK / 2 if isinstance(surface, Plane) else BALL
         ends = set()
         for cord in self.cords:
@@ -195,6 +204,7 @@ class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings):
             if drawn.kind == "oval" and not drawn.pieces:
                 drawn.fit_oval([view.at(p) for p in self._attached(drawn.name)])
             drawn.shape()
+        self._carriers()
         self._off_the_surfaces()
         for cord in self.cords:
             self._cord(cord)
@@ -212,6 +222,8 @@ class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings):
             self._slider(slider)
         for weld in self.of(Weld):
             self._weld(weld)
+        for clutch in self.of(Clutch) + self.of(SlippingClutch):
+            self._clutch(clutch)
         for coil in self.of(TorsionalSpring):
             self._coil(coil)
         for damper in (d for d in self.of(Damper) if d.rotational):
@@ -278,6 +290,13 @@ class _Layout(CordDrawings, JointDrawings, SurfaceDrawings, LoadDrawings):
                        [across, _scale_vec(across, -1)]
                        + [(_add(side, along, k), extra) for extra, k in ((0.2, 1.0), (0.5, 1.5))
                           for side in (across, _scale_vec(across, -1)) for k in (k, -k)])
+        elif drawn.kind == "solid":  # inside a wedge or a slab, beside a cart's block
+            corners = drawn.polygon
+            if isinstance(self.scene.surfaces[drawn.holds], Plane):
+                middle = tuple(sum(p[k] for p in corners) / len(corners) for k in (0, 1))
+                self.later(label, middle, 0.0, [(0.0, 0.0)] + DIRECTIONS)
+            else:
+                self.later(label, _add(corners[1], _sub(corners[2], corners[1]), 0.5), 0.06, [(1, 0), (1, 1), (1, -1)])
         elif drawn.kind in ("round", "oval"):  # inside when it is large enough to hold it (clear of a hub), else beside
             reach = drawn.extent
             if reach > 0.6:
