@@ -35,6 +35,7 @@ from derive.language.problem import Problem, load
 from derive.language.problem_sets import ProblemSet, load_sheet
 from derive.publishing.progress import Reporter
 from derive.publishing.report import route_title
+from derive.publishing.wording import Wording
 from derive.text.stencil import Stencil, hole
 from derive.publishing.variants import ProblemVariants, unit_latex, valid_draws
 
@@ -119,7 +120,7 @@ def _check_latex(check, problem: Problem, siunitx: bool) -> str:
         units_of = ", ".join(f"${symbol_latex(n)}$ in ${unit_latex(a.unit, siunitx)}$" if unit_latex(a.unit, siunitx)
                              else f"${symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
         return f"Every answer has the units it should: {units_of}."
-    return prose.set_as_math(check.reading, [*problem.parameters, *problem.asks])
+    return prose.set_as_math(Wording(problem)(check.reading), [*problem.parameters, *problem.asks])
 
 
 def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
@@ -153,6 +154,7 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
     printed = notation.named(item.problem, item.solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
     printed = range_forms.steps_within(printed, range_forms.box(item.problem))  # 1/cos(beta) over the ranges
     names = symbol_names(item.problem, printed)
+    words = Wording(item.problem)  # the file's keys in the engine's words, described
     routes = []
     for route, steps in all_steps.items():
         shown, solved = [], []  # the numbers of the equations this route solves
@@ -162,11 +164,11 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
             text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
             if s.sentences and prose.repeats(s.sentences[-1].words, s.text):
                 text = ""  # the sentence just said it: no near-copy of it before the equations
-            shown.append({"text": prose.set_as_math(prose.capital(text), names), "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
+            shown.append({"text": prose.set_as_math(prose.capital(words(text)), names), "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
                           "diagram": diagrams[id(original)].tikz if id(original) in diagrams else "",
                           "body": diagrams[id(original)].body if id(original) in diagrams else "",
-                          "sentences": [sentence.latex() for sentence in s.sentences]})
-        routes.append({"title": prose.set_as_math(prose.capital(route_title(route)), names), "steps": shown})
+                          "sentences": [words.sentence(sentence).latex() for sentence in s.sentences]})
+        routes.append({"title": prose.set_as_math(prose.capital(words(route_title(route))), names), "steps": shown})
     return routes
 
 
