@@ -153,6 +153,7 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
     parts' sentences."""
     printed = notation.named(item.problem, item.solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
     printed = range_forms.steps_within(printed, range_forms.box(item.problem))  # 1/cos(beta) over the ranges
+    printed = notation.renamed(printed, item.letters)  # one letter, one kind of thing: ell beside L_z
     names = symbol_names(item.problem, printed)
     words = Wording(item.problem)  # the file's keys in the engine's words, described
     routes = []
@@ -185,7 +186,7 @@ def numbers_context(item: ProblemVariants, siunitx: bool, given: dict[str, str],
     parameter's value and unit as math), its results (`results`: each answer's LaTeX) and which way
     each points (`directions`: LaTeX after the unit, "" for none)."""
     problem = item.problem
-    return {"given": [f"${latex_of(p.symbol)} = {given[n]}$" for n, p in problem.parameters.items()],
+    return {"given": [f"${latex_of(item.letters.get(p.symbol, p.symbol))} = {given[n]}$" for n, p in problem.parameters.items()],
             "results": [{"symbol": symbol_latex(n), "value": results[n], "direction": directions[n],
                          "unit": units.after_number(a.unit, unit_latex(a.unit, siunitx))} for n, a in problem.asks.items()]}
 
