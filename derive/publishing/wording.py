@@ -39,7 +39,7 @@ PLACES = ("left", "right", "upper", "lower", "inner", "outer", "top", "bottom", 
 DIRECTIONS = ("left", "right", "top", "bottom")
 ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth")
 #: What a body of a shape is called where nothing else names it.
-SHAPES = {"point": "block", "disk": "disk", "ring": "hoop", "rod": "rod", "sphere": "ball", "spherical_shell": "shell",
+SHAPES = {"point": "block", "disk": "disk", "ring": "ring", "rod": "rod", "sphere": "ball", "spherical_shell": "shell",
           "cylinder": "cylinder", "cone": "cone", "box": "box"}
 #: What a part is called, by its kind (its class).
 PARTS = {"Cord": "cord", "Slider": "guide", "Weld": "weld", "Clutch": "clutch", "SlippingClutch": "clutch",
@@ -100,7 +100,7 @@ def bodies(problem) -> dict[str, str]:
     rest = {}
     for key, body in problem.scene.bodies.items():
         if key not in result:
-            noun = shared[key] or SHAPES.get(body.shape, "body")
+            noun = shared[key] if shared[key] not in (None, "object", "body") else SHAPES.get(body.shape, "body")
             word = re.fullmatch(r"[a-z]+", key) and not shared[key] and body.shape in ("custom", "composite", "box")
             rest[key] = f"{_place(key)} {noun}" if _place(key) else key if word else noun
     return {key: result.get(key) or _numbered(rest)[key] for key in problem.scene.bodies}
