@@ -145,7 +145,7 @@ class Wording:
         keys = sorted({*self.problems_bodies, *self.surfaces, *self.states, *self.parts}, key=lambda k: (-len(k), k))
         kinds = "|".join(KINDS)
         self._pattern = re.compile(
-            r"(?<![\w\\$])(?:(?P<lead>[Tt]he|[Aa]fter|[Ff]rom) (?:(?P<kind>" + kinds + r") )?|(?P<of>(?:"
+            r"(?<![\w\\$])(?:(?P<lead>[Tt]he|[Ii]ts|[Aa]fter|[Ff]rom) (?:(?P<kind>" + kinds + r") )?|(?P<of>(?:"
             + "|".join(OF) + r") of )|(?P<bare>" + kinds + r") )?(?P<key>" + "|".join(map(re.escape, keys))
             + r")(?![\w])") if keys else None
 
@@ -211,6 +211,8 @@ class Wording:
         whole = match[0]
         if kind is None and match["bare"] is None and match["of"] is None and lead is None:
             return whole if re.fullmatch(r"[a-z]+", key) else self._phrase(key, None, "the")
+        if lead and lead.lower() == "its":
+            return f"{lead} {self._phrase(key, kind, '')}"
         if lead and lead.lower() != "the":
             return f"{lead} {self._phrase(key, kind, 'the')}"
         if key in DIRECTIONS and lead and kind is None and match.string[max(0, match.start() - 3):match.start()] == "to " \

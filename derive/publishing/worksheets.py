@@ -275,6 +275,7 @@ def _lms_items(prepared: list[ProblemVariants], variants: int, choice: bool,
             answers, tolerances, directions = item.answers(values), item.tolerances(values), item.directions(values)
             wrong = item.wrong(values) if choice else {}
             question = item.questions(siunitx=False)[number - 1]  # MathJax reads no siunitx
+            words = Wording(item.problem)  # a mistake's feedback names the file's parts as the solutions do
             for name, ask in item.problem.asks.items():
                 if answers[name] is None:
                     continue
@@ -283,7 +284,7 @@ def _lms_items(prepared: list[ProblemVariants], variants: int, choice: bool,
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
                                       answers[name], units.unicode_unit(ask.unit), tolerances[name],
                                       choices if asked else (), solutions[item.problem.id, number],
-                                      tuple(d["mistake"] for d in wrong.get(name, ())) if asked else (),
+                                      tuple(words(d["mistake"]) for d in wrong.get(name, ())) if asked else (),
                                       directions[name] or "", _senses(item, name)))
     return items
 
