@@ -78,11 +78,12 @@ def test_no_key_of_the_file_in_a_students_solution(problem_id):
     words = Wording(derived(problem_id).problem)
     described = {**words.problems_bodies, **words.surfaces, **words.parts, **words.states}
     keys = {*scene.bodies, *scene.surfaces, *scene.states, *(getattr(p, "name", "") for p in (*scene.constraints, *scene.loads))}
+    said = {w for d in described.values() for w in d.split()}  # "the stool" of "the student and the stool"
     found = []
     for key in sorted(k for k in keys if k):
         if not re.fullmatch(r"[a-z]+", key):
             found += re.findall(r"(?<![\w\\])" + re.escape(key) + r"(?!\w)", prose)
-        elif described.get(key, key) != key and key not in described[key].split():
+        elif described.get(key, key) != key and key not in said:
             found += [m[0] for m in re.finditer(r"(?<!to )\b[Tt]he " + key + r"\b", prose)
                       if not (key in DIRECTIONS and prose[m.start() - 3:m.start()] == "to ")]
         found += re.findall(r"The start, " + re.escape(key) + r"\b|just after " + re.escape(key) + r"\b", prose)
@@ -98,6 +99,7 @@ def test_one_letter_for_one_kind_of_thing(problem_id):
     tex, _ = student_solution(problem_id)
     problem = derived(problem_id).problem
     math = " ".join(a or b for a, b in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}|\$([^$]*)\$", tex, flags=re.S))
+    math = math.replace(r"\mathcal{L}", " ")  # the Lagrangian's script L is a letter of its own
     if "L" in problem.parameters:
         assert not (re.search(r"(?<![\\\w])L(?![_\w])", math) and re.search(r"(?<![\\\w])L_\{", math)), "L and L_..."
     if any(re.match(r"theta(_|\d|$)", n) for n in (*problem.parameters, *problem.asks)):

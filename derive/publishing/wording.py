@@ -142,6 +142,8 @@ class Wording:
         self.states = _state_nouns(problem)
         self.state_kinds = {k: s for k, s in problem.scene.states.items()}
         self.parts = self._parts(problem)
+        self.contacts = {c.name: f"the {self.surfaces.get(c.surface, c.surface)}" for c in problem.scene.constraints
+                         if type(c).__name__ == "Contact"}
         keys = sorted({*self.problems_bodies, *self.surfaces, *self.states, *self.parts}, key=lambda k: (-len(k), k))
         kinds = "|".join(KINDS)
         self._pattern = re.compile(
@@ -210,6 +212,8 @@ class Wording:
         key, lead, kind = match["key"], match["lead"], match["kind"]
         whole = match[0]
         if kind is None and match["bare"] is None and match["of"] is None and lead is None:
+            if key in self.contacts and match.string[max(0, match.start() - 3):match.start()] == "at ":
+                return f"its contact with {self.contacts[key]}"  # the normal force on the ball at ball_contact
             return whole if re.fullmatch(r"[a-z]+", key) else self._phrase(key, None, "the")
         if lead and lead.lower() == "its":
             return f"{lead} {self._phrase(key, kind, '')}"

@@ -158,14 +158,16 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
     words = Wording(item.problem)  # the file's keys in the engine's words, described
     routes = []
     for route, steps in all_steps.items():
-        shown, solved = [], []  # the numbers of the equations this route solves
+        shown, solved, before = [], [], ""  # the numbers of the equations this route solves; what was just said
         for original, s in zip(steps, printed[route]):
             numbers = [next(numbered) for _ in s.equations]
             solved += numbers if s.role == "equations" else []
-            text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
-            if s.sentences and prose.repeats(s.sentences[-1].words, s.text):
-                text = ""  # the sentence just said it: no near-copy of it before the equations
-            shown.append({"text": prose.set_as_math(prose.capital(words(text)), names), "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
+            text = words(f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text)
+            before = words(s.sentences[-1].words) if s.sentences else before
+            if before and prose.repeats(before, words(s.text)):
+                text = ""  # the sentence just said it (in this step or the one before): no near-copy of it
+            before = "" if s.equations else text or before
+            shown.append({"text": prose.set_as_math(prose.capital(text), names), "equations": [typeset(e, tag=tag(n, siunitx)) for e, n in zip(s.equations, numbers)],
                           "diagram": diagrams[id(original)].tikz if id(original) in diagrams else "",
                           "body": diagrams[id(original)].body if id(original) in diagrams else "",
                           "sentences": [words.sentence(sentence).latex() for sentence in s.sentences]})
