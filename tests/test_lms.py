@@ -14,6 +14,7 @@ from pathlib import Path
 from conftest import copy_library, image_kind, moodle_cloze, qti_package, run_derive
 from derive.text.latex import symbol_latex
 from derive.publishing import canvas, lms
+from derive.publishing.wording import Wording
 from derive.language import problem_sets
 from derive.core import units
 from derive.core.errors import InputError, ProblemError
@@ -174,9 +175,10 @@ def test_multiple_choice_exports_hold_the_right_answer_once_among_derived_mistak
     assert any(options[0][0] != "=" for _, options in fields)  # the right answer is not always first
     said = [f for q in quiz.iter("question") if q.get("type") == "cloze"
             for f in moodle_cloze(q.find("questiontext/text").text, feedback=True)[1]]
+    words = Wording(load("rolling_incline"))  # the key's mistake names the body by its key; a student's, as the solutions do
     for (_, options), (_, unit, wrong) in zip(said, answers):  # each wrong choice says which mistake gives it
         assert sorted((a, f) for mark, a, f in options if mark == "%0%") == sorted(
-            (_choice(w["value"], unit), f"Not this one: it is what {w['mistake']} gives.") for w in wrong)
+            (_choice(w["value"], unit), f"Not this one: it is what {words(w['mistake'])} gives.") for w in wrong)
         assert [f for mark, _, f in options if mark == "="] == [""]
     with zipfile.ZipFile(out / "canvas-qti.zip") as archive:
         _, assessment, _ = qti_package(archive)

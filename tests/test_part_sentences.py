@@ -207,7 +207,7 @@ def test_solutions_and_handout_print_the_sentences():
     # the student's route comes first; the routes, with the parts' sentences, are the proof after it
     assert context["verification"] and "Forces and torques along the motion" in sheet.split("\\appendix")[0]
     for tex in (handout, sheet):
-        assert r"The cord string pulls the disk along its run with the tension $T_{\mathrm{string}}$" in tex
+        assert r"The string pulls the disk along its run with the tension $T_{\mathrm{string}}$" in tex  # its key, described
         assert tex.index("The axle holds the disk's center in place") < tex.index(r"K &=")  # before the energies
 
 

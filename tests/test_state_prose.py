@@ -172,11 +172,12 @@ def test_solutions_print_the_state_sentences_and_headings():
     context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, [middle]), siunitx=True)
     sheet = render.render("solutions.tex.j2", problems=[context],
                           set=SimpleNamespace(title="Week 9", course="Mechanics", due="Friday"))
-    order = [r"\subsection*{The start, spinning: the placement moving at the given rates}",
-             r"\subsection*{The impact coupled, just after spinning: the upper and the lower lock together}",
+    # the states and parts by what they are, not by the file's keys (derive.publishing.wording)
+    order = [r"\subsection*{The start: the placement moving at the given rates}",
+             r"\subsection*{The impact: the upper disk and the lower disk lock together}",
              r"The only impulse from outside the bodies is that of the axle, at $\left( 0, \  0\right)$",
-             r"\subsection*{From coupled to stopped: the motion until it stops}",
-             r"The torque torque1 does work at the rate $- \tau \dot{\theta}_{\mathrm{lower}}$",
+             r"\subsection*{From the impact: the motion until it stops}",
+             r"The applied torque does work at the rate $- \tau \dot{\theta}_{\mathrm{lower}}$",
              r"So, by the work-energy theorem, the kinetic energy at each $\theta_{\mathrm{lower}}$",
              r"A turning point: the motion, with $\theta_{\mathrm{lower}}$ increasing"]
     places = [sheet.index(said) for said in order]

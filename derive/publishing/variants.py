@@ -26,7 +26,7 @@ from typing import Sequence
 import sympy as sp
 
 from derive.text.latex import latex_of
-from derive.publishing import distractors, lms
+from derive.publishing import distractors, letters, lms
 from derive.text import latex_safety
 from derive.numbers import numeric
 from derive.core import units
@@ -132,7 +132,14 @@ class ProblemVariants:
         """Each answer's expression as the documents print it: as it reads over the parameter ranges
         (derive.numbers.range_forms: 1/cos(beta), not sqrt(tan(beta)**2 + 1)); the keys keep the derived one."""
         ranges = range_forms.box(self.problem)
-        return {name: range_forms.within(expression, ranges) for name, expression in self.solution.expressions.items()}
+        return {name: range_forms.within(expression, ranges).xreplace(self.letters)
+                for name, expression in self.solution.expressions.items()}
+
+    @cached_property
+    def letters(self) -> dict[sp.Symbol, sp.Symbol]:
+        """The symbols the documents print otherwise, one letter for one kind of thing (a length L as
+        ell beside an angular momentum L_z: derive.publishing.letters)."""
+        return letters.of_document(self.problem, self.solution)
 
     @cached_property
     def expression_latexes(self) -> dict[str, str]:

@@ -35,6 +35,7 @@ from derive.language.problem import Problem, load
 from derive.language.problem_sets import ProblemSet, load_sheet
 from derive.publishing.progress import Reporter
 from derive.publishing.report import route_title
+from derive.publishing.wording import Wording
 from derive.text.stencil import Stencil, hole
 from derive.publishing.variants import ProblemVariants, unit_latex, valid_draws
 
@@ -131,7 +132,7 @@ def _check_latex(check, problem: Problem, siunitx: bool) -> str:
         units_of = ", ".join(f"${symbol_latex(n)}$ in ${unit_latex(a.unit, siunitx)}$" if unit_latex(a.unit, siunitx)
                              else f"${symbol_latex(n)}$ a pure number" for n, a in problem.asks.items())
         return f"Every answer has the units it should: {units_of}."
-    return prose.set_as_math(check.reading, [*problem.parameters, *problem.asks])
+    return prose.set_as_math(Wording(problem)(check.reading), [*problem.parameters, *problem.asks])
 
 
 def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
@@ -166,24 +167,28 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
     parts' sentences."""
     printed = notation.named(item.problem, item.solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
     printed = range_forms.steps_within(printed, range_forms.box(item.problem))  # 1/cos(beta) over the ranges
+    printed = notation.renamed(printed, item.letters)  # one letter, one kind of thing: ell beside L_z
     names = symbol_names(item.problem, printed)
+    words = Wording(item.problem)  # the file's keys in the engine's words, described
     routes = []
     for route, steps in all_steps.items():
-        shown, solved = [], []  # the numbers of the equations this route solves
+        shown, solved, before = [], [], ""  # the numbers of the equations this route solves; what was just said
         for original, s in zip(steps, printed[route]):
             numbers = [next(numbered) for _ in s.equations]
             solved += numbers if s.role == "equations" else []
-            text = f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text
-            if s.sentences and prose.repeats(s.sentences[-1].words, s.text):
-                text = ""  # the sentence just said it: no near-copy of it before the equations
+            text = words(f"{s.text}, from {equation_numbers(solved)}" if s.role == "solve" and solved else s.text)
+            before = words(s.sentences[-1].words) if s.sentences else before
+            if before and prose.repeats(before, words(s.text)):
+                text = ""  # the sentence just said it (in this step or the one before): no near-copy of it
+            before = "" if s.equations else text or before
             left = typesetting.left_column(s.equations, typesetting.LINE - typesetting.TAG)  # the rows align
             shown.append({"text": prose.set_as_math(prose.capital(text), names),
                           "equations": [typeset(e, tag=tag(n, siunitx), tex=siunitx, left=left)
                                         for e, n in zip(s.equations, numbers)],
                           "diagram": diagrams[id(original)].tikz if id(original) in diagrams else "",
                           "body": diagrams[id(original)].body if id(original) in diagrams else "",
-                          "sentences": [sentence.latex(tex=siunitx) for sentence in s.sentences]})
-        routes.append({"title": prose.set_as_math(prose.capital(route_title(route)), names), "steps": shown})
+                          "sentences": [words.sentence(sentence).latex(tex=siunitx) for sentence in s.sentences]})
+        routes.append({"title": prose.set_as_math(prose.capital(words(route_title(route))), names), "steps": shown})
     return routes
 
 
@@ -200,7 +205,7 @@ def numbers_context(item: ProblemVariants, siunitx: bool, given: dict[str, str],
     parameter's value and unit as math), its results (`results`: each answer's LaTeX) and which way
     each points (`directions`: LaTeX after the unit, "" for none)."""
     problem = item.problem
-    return {"given": [f"${latex_of(p.symbol)} = {given[n]}$" for n, p in problem.parameters.items()],
+    return {"given": [f"${latex_of(item.letters.get(p.symbol, p.symbol))} = {given[n]}$" for n, p in problem.parameters.items()],
             "results": [{"symbol": symbol_latex(n), "value": results[n], "direction": directions[n],
                          "unit": units.after_number(a.unit, unit_latex(a.unit, siunitx))} for n, a in problem.asks.items()]}
 
@@ -289,6 +294,7 @@ def _lms_items(prepared: list[ProblemVariants], variants: int, choice: bool,
             answers, tolerances, directions = item.answers(values), item.tolerances(values), item.directions(values)
             wrong = item.wrong(values) if choice else {}
             question = item.questions(siunitx=False)[number - 1]  # MathJax reads no siunitx
+            words = Wording(item.problem)  # a mistake's feedback names the file's parts as the solutions do
             for name, ask in item.problem.asks.items():
                 if answers[name] is None:
                     continue
@@ -297,7 +303,7 @@ def _lms_items(prepared: list[ProblemVariants], variants: int, choice: bool,
                 items.append(lms.Item(item.problem.id, item.problem.title, number, question, name, ask.meaning,
                                       answers[name], units.unicode_unit(ask.unit), tolerances[name],
                                       choices if asked else (), solutions[item.problem.id, number],
-                                      tuple(d["mistake"] for d in wrong.get(name, ())) if asked else (),
+                                      tuple(words(d["mistake"]) for d in wrong.get(name, ())) if asked else (),
                                       directions[name] or "", _senses(item, name)))
     return items
 
