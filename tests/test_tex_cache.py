@@ -66,3 +66,22 @@ def test_a_damaged_entry_is_compiled_again_and_no_cache_keeps_none(tmp_path):
         entry.unlink()
     _build(tmp_path / "uncached", "--no-cache")
     assert _entries() == []
+
+
+def test_worked_solutions_and_figures_typeset_once_for_their_derivation(tmp_path):
+    """A new seed typesets no worked solution or figure again (derive.publishing.typeset_cache): the
+    same LaTeX as a build without the cache; a damaged entry is typeset again."""
+    def sheet(out: str, *options: str) -> str:
+        done = run_derive("sheet", *PROBLEMS, "--variants", "2", "--seed", "5", "--to", "", "--out",
+                          str(tmp_path / out), *options)
+        assert done.returncode == 0, done.stderr
+        return (tmp_path / out / "solutions.tex").read_text()
+
+    uncached = sheet("uncached", "--no-cache")
+    first = sheet("first")
+    kept = sorted(Path(os.environ["DERIVE_CACHE_DIR"]).glob("*.json"))
+    assert len(kept) == 2 * len(PROBLEMS)  # each problem's worked solution (LaTeX) and figure
+    assert sheet("again") == first == uncached
+    for entry in kept:
+        entry.write_bytes(entry.read_bytes()[:-5])
+    assert sheet("damaged") == uncached

@@ -52,7 +52,9 @@ from derive.solution.answers import Solution
 
 MAGIC = b"derive derivation cache 2\n"
 DEFAULT_MB = 512
-ENTRY_NAME = re.compile(r"[0-9a-f]{64}\.(pickle|pdf)")  # an entry's file: its key (a compiled document's: tex_cache)
+#: An entry's file: its key, and what it holds (a derivation; a compiled document: tex_cache; a typeset
+#: worked solution or figure: typeset_cache).
+ENTRY_NAME = re.compile(r"[0-9a-f]{64}\.(pickle|pdf|json)")
 FOLDER_VARIABLE, SIZE_VARIABLE = "DERIVE_CACHE_DIR", "DERIVE_CACHE_MB"
 
 
@@ -249,7 +251,7 @@ def store(problem: Problem, solution: Solution, entry: str | None = None, payloa
 def entries() -> list[Path]:
     """The entry files, the least recently used first."""
     try:  # only derive's own names: a folder given by DERIVE_CACHE_DIR may hold other files
-        files = [p for p in folder().glob("*.p*") if ENTRY_NAME.fullmatch(p.name) and p.is_file()]
+        files = [p for p in folder().iterdir() if ENTRY_NAME.fullmatch(p.name) and p.is_file()]
     except OSError:
         return []
     return sorted(files, key=lambda p: p.stat().st_mtime)

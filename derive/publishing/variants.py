@@ -26,7 +26,7 @@ from typing import Sequence
 import sympy as sp
 
 from derive.text.latex import latex_of
-from derive.publishing import distractors, letters, lms
+from derive.publishing import distractors, letters, lms, typeset_cache
 from derive.text import latex_safety
 from derive.numbers import numeric
 from derive.core import units
@@ -111,6 +111,7 @@ class ProblemVariants:
     solution: Solution
     draws: list[dict[str, sp.Expr]]
     tolerance: str | None = None  # the policy of asks that give none (the course defaults)
+    cache: bool = False  # whether its figure may come from the cache (derive.publishing.typeset_cache)
     # A build reads each variant's answers for the solutions, the key and the LMS exports:
     # evaluated once per draw (keyed by the draw, which self.draws keeps alive).
     _answers: dict[int, dict[str, numeric.Certified | None]] = field(default_factory=dict, repr=False)
@@ -195,7 +196,7 @@ class ProblemVariants:
     @cached_property
     def figure(self) -> str | None:
         """The problem's figure (derive.publishing.figure), drawn once for its worksheet, solutions and exports."""
-        return figure.tikz(self.problem)
+        return typeset_cache.kept(self.problem, "figure", lambda: figure.tikz(self.problem), self.cache)
 
     @cached_property
     def _evaluator(self) -> numeric.Evaluator:

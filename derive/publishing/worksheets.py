@@ -22,7 +22,7 @@ from typing import Sequence
 import sympy as sp
 
 from derive.text.latex import latex_of, symbol_latex, tex_escape
-from derive.publishing import (answer_keys, canvas, deriving, distractors, export, figure_files, limiting_cases, lms,
+from derive.publishing import (answer_keys, canvas, deriving, distractors, export, figure_files, limiting_cases, lms, typeset_cache,
                                notation, output_folder, render)
 from derive.text import prose, typesetting
 from derive.core import units
@@ -122,7 +122,7 @@ def _prepare(problem_set: ProblemSet, variants: int, seed: int, progress: Report
         with _entry(problem_set, where):
             draws = valid_draws(problem, solution, [random.Random(f"{seed}/{problem.id}/{n}")
                                                     for n in range(1, variants + 1)])
-        prepared.append(ProblemVariants(problem, solution, draws, problem_set.tolerance))
+        prepared.append(ProblemVariants(problem, solution, draws, problem_set.tolerance, cache))
     return prepared
 
 
@@ -135,9 +135,19 @@ def _check_latex(check, problem: Problem, siunitx: bool) -> str:
     return prose.set_as_math(Wording(problem)(check.reading), [*problem.parameters, *problem.asks])
 
 
-def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
-    """A problem's worked solution for the templates: its routes' steps, its answers, each variant's
-    numbers (units in siunitx where LaTeX compiles it: `unit_latex`), its checks."""
+def _solutions_context(item: ProblemVariants, siunitx: bool, cache: bool = False) -> dict:
+    """A problem's worked solution for the templates: its routes' steps, its answers, its checks (typeset
+    once for its derivation: derive.publishing.typeset_cache, with `cache`), each variant's numbers
+    (units in siunitx where LaTeX compiles it: `unit_latex`)."""
+    problem = item.problem
+    worked = typeset_cache.kept(problem, f"worked, {'siunitx' if siunitx else 'plain'}",
+                                lambda: _worked(item, siunitx), cache)
+    return {"title": problem.title, "source": problem.source, **worked, "variants": _numbers(item, siunitx),
+            "corrections": list(problem.corrections), "figure": item.figure}
+
+
+def _worked(item: ProblemVariants, siunitx: bool) -> dict:
+    """The worked solution's routes, the instructor's verification, the results and the checks."""
     problem, solution = item.problem, item.solution
     numbered = iter(range(1, 10**6))  # the problem's equations, numbered through its routes
     student, proof = solution.student_steps, solution.steps()
@@ -153,12 +163,8 @@ def _solutions_context(item: ProblemVariants, siunitx: bool) -> dict:
                                                       tex=siunitx), tex=siunitx, left=left)}
         for n, a in problem.asks.items()
     ]
-    variants = _numbers(item, siunitx)
     checks = [_check_latex(c, problem, siunitx) for c in solution.checks()]  # the detail stays in `derive check`, the JSON
-    return {"title": problem.title, "source": problem.source, "routes": routes, "verification": verification,
-            "answers": answers,
-            "variants": variants, "checks": checks, "corrections": list(problem.corrections),
-            "figure": item.figure}
+    return {"routes": routes, "verification": verification, "answers": answers, "checks": checks}
 
 
 def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, diagrams: dict) -> list[dict]:
@@ -390,11 +396,11 @@ def build(references: str | Sequence[str] | ProblemSet, *, variants: int | None 
                                      lms=bool(formats & {"moodle", "qti"}))
             for note in keys.notes:  # the set is built; these answers are asked as numbers, or left out of the LMS
                 print(f"derive: warning: {note}", file=sys.stderr, flush=True)
-            contexts = [_solutions_context(i, siunitx=True) for i in prepared]
+            contexts = [_solutions_context(i, siunitx=True, cache=cache) for i in prepared]
             items = []
             if formats & {"moodle", "qti"}:
                 progress("the worked solutions as the LMS questions' feedback (pandoc)")
-                shown = [_solutions_context(i, siunitx=False) for i in prepared]  # MathJax reads no siunitx
+                shown = [_solutions_context(i, siunitx=False, cache=cache) for i in prepared]  # MathJax reads no siunitx
                 items = _lms_items(prepared, variants, choice, _worked_solutions(prepared, shown, header))
             for target in sorted(formats & {"moodle", "qti"}):
                 lms.check(items, target)  # before anything is written
