@@ -99,11 +99,15 @@ def key(problem: Problem) -> str | None:
 
 
 def derived(problem: Problem) -> Solution:
-    """A problem derived as a set needs it: its answers, their checks and the worked steps."""
+    """A problem derived as a set needs it: its answers, their checks and the worked steps, and what
+    each variant is checked and answered against (the conditions of its answers, the signed answers
+    whose directions it gives): kept in the entry, none of it is derived again by a warm build."""
     solution = Solution(problem)
     solution.expressions
     solution.checks()
     solution.steps()
+    solution.conditions
+    solution.signed_expressions
     return solution
 
 
