@@ -80,6 +80,8 @@ def test_exotic_density_gives_up_within_the_limit(tmp_path, monkeypatch):
     message = str(caught.value)
     assert message.startswith(f"{path}: ask.I: integrating over the disk: gave up after 2 s")
     assert "DERIVE_TIME_LIMIT" in message and "--time-limit" in message
+    assert message.endswith("; faster: a density that is a polynomial in the shape's coordinates "
+                            "(sympy integrates one at once)")  # the restatement known to be faster
     assert isinstance(caught.value, InputError)
 
 
@@ -100,6 +102,12 @@ def test_time_limit_nests_and_cleans_up(monkeypatch):
                 while True:
                     pass
     assert limits.signal.getitimer(limits.signal.ITIMER_REAL) == (0.0, 0.0)
+    with pytest.raises(limits.TimeLimitError, match=r"^outer: inner: gave up after 0\.3 s .*; faster: a later start$"):
+        with limits.time_limit("outer", faster="an earlier start"):
+            with limits.time_limit("inner", faster="a later start"):  # the innermost step's restatement
+                while True:
+                    pass
+    assert limits._faster == [] and limits._steps == []
     assert limits.signal.getsignal(limits.signal.SIGALRM) in (limits.signal.SIG_DFL, None)
     with limits.time_limit("quick"):  # after a timeout, the next step runs normally
         assert sum(range(100)) == 4950

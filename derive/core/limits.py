@@ -45,6 +45,7 @@ _REPEAT = 0.5  # seconds between alarms once the limit has passed
 
 _configured: float | None = None  # set by --time-limit; None: read the environment
 _steps: list[str] = []  # the names of the steps running now, outermost first
+_faster: list[str] = []  # the restatements known to be faster of the steps running now that have one
 _armed: dict = {}  # while a timer runs: "seconds", "handler" (the previous one), "names" when fired
 
 
@@ -99,23 +100,34 @@ def parse(text: str, where: str) -> float:
 
 def _on_alarm(signum, frame):
     if "names" not in _armed:
-        _armed["names"] = list(_steps)
+        _armed["names"], _armed["faster"] = list(_steps), list(_faster)
     raise _Alarm()
 
 
-def _message(names: list[str], limit: float) -> str:
+def _message(names: list[str], limit: float, faster: list[str] = ()) -> str:
     shown = f"{limit:g}"
     return (f"{': '.join(names) or 'a symbolic step'}: gave up after {shown} s "
-            f"(limit: {ENVIRONMENT} / --time-limit)")
+            f"(limit: {ENVIRONMENT} / --time-limit)" + (f"; faster: {faster[-1]}" if faster else ""))
 
 
 @contextmanager
-def time_limit(what: str, seconds: float | None = None):
+def time_limit(what: str, seconds: float | None = None, faster: str | None = None):
     """Run the enclosed step within the time limit (`seconds`, default the configured one).
 
     `what` names the step in the error. Inside another `time_limit`, only the name is added.
+    `faster`: a restatement of the problem known to be faster where this step is slow, which the
+    error suggests (the innermost step's that has one).
+
+    >>> with time_limit("finding the state top", seconds=0.2, faster="start the chain at a later state"):
+    ...     while True:
+    ...         pass
+    Traceback (most recent call last):
+    ...
+    derive.core.limits.TimeLimitError: finding the state top: gave up after 0.2 s (limit: ...); faster: start the chain at a later state
     """
     _steps.append(what)
+    if faster:
+        _faster.append(faster)
     outermost = not _armed
     limit = globals()["seconds"]() if seconds is None else (seconds if seconds > 0 else None)
     arm = outermost and limit is not None and threading.current_thread() is threading.main_thread()
@@ -129,7 +141,7 @@ def time_limit(what: str, seconds: float | None = None):
             if not arm:
                 raise
             names = _armed.get("names") or list(_steps)
-            raise TimeLimitError(_message(names, limit)) from None
+            raise TimeLimitError(_message(names, limit, _armed.get("faster", _faster))) from None
     finally:
         if arm:
             try:
@@ -137,6 +149,8 @@ def time_limit(what: str, seconds: float | None = None):
             except _Alarm:  # fired while disarming: the work is done, drop it
                 _disarm()
         _steps.pop()
+        if faster:
+            _faster.pop()
 
 
 def _disarm() -> None:

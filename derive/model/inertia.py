@@ -212,7 +212,8 @@ def _integral(integrand: sp.Expr, shape: Shape) -> sp.Expr:
 def _integrate(integrand: sp.Expr, shape: Shape) -> sp.Expr:
     """The integral over the shape, simplified; refused when sympy finds no closed form."""
     # (r/R)**k as R**-k * r**k where valid: sympy integrates a power of one symbol much faster
-    with limits.time_limit(f"integrating over the {shape.name}"):
+    with limits.time_limit(f"integrating over the {shape.name}",
+                           faster="a density that is a polynomial in the shape's coordinates (sympy integrates one at once)"):
         value = _integral(sp.powsimp(sp.expand_power_base(integrand)), shape).doit()
     if value.has(sp.Integral):
         raise InputError(f"sympy finds no closed form for the integral of {integrand} over the {shape.name}")
