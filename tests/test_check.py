@@ -107,6 +107,7 @@ def _prose(tex: str) -> list[str]:
     equations, the sentences of a step): its equations, figures and numbers left out."""
     body = tex[tex.index("\\maketitle") + len("\\maketitle"):]
     body = re.sub(r"\\begin\{(align\*|center)\}.*?\\end\{\1\}", "\n\n", body, flags=re.S)
+    body = re.sub(r"\\\[.*?\\\]", " ", body, flags=re.S)  # a long piece of a sentence's math, displayed
     body = body.split("\\subsection*{Numbers for")[0]
     return [p.strip() for p in re.split(r"\n", body) if p.strip() and not p.startswith("\\section{")]
 
