@@ -10,8 +10,8 @@ keys are those derived.
 
 >>> import sympy as sp
 >>> L, theta, turn = sp.Symbol("L", positive=True), sp.Symbol("theta", positive=True), sp.Symbol("theta_ball")
->>> printed({"L": L, "theta": theta}, {"L_z"}, {turn, sp.Symbol("thetadot_ball")})
-{L: ell, theta_ball: phi_ball, thetadot_ball: phidot_ball}
+>>> sorted(printed({"L": L, "theta": theta}, {"L_z"}, {turn, sp.Symbol("thetadot_ball")}).items(), key=str)
+[(L, ell), (theta_ball, phi_ball), (thetadot_ball, phidot_ball)]
 """
 from __future__ import annotations
 
