@@ -161,6 +161,20 @@ def _values(method: str, groups) -> list[list[list[str | None]]]:
     return texts
 
 
+def _number(text: str | None) -> Decimal | None:
+    """A backend's value as a number; None where it gave none ("nan", or text that is no number,
+    which a bench counts as a wrong value rather than stopping on).
+
+    >>> _number("1.5e-3"), _number("nan"), _number("zoo")
+    (Decimal('0.0015'), None, None)
+    """
+    try:
+        value = Decimal(text) if text is not None else None
+    except ArithmeticError:  # decimal.InvalidOperation
+        return None
+    return value if value is not None and value.is_finite() else None
+
+
 def _errors(groups, texts) -> tuple[Decimal, int]:
     """The worst relative error against the references, and how many values print a digit
     other than the reference's rounded to 15 digits (a value not given counts as both)."""
@@ -170,8 +184,9 @@ def _errors(groups, texts) -> tuple[Decimal, int]:
         for (_, _, references), group in zip(groups, texts):
             for reference_row, row in zip(references, group):
                 for reference, text in zip(reference_row, row):
-                    given = text not in (None, "nan")
-                    value = Decimal(text) if given else Decimal("Infinity")
+                    value = _number(text)
+                    given = value is not None
+                    value = Decimal("Infinity") if value is None else value
                     if reference != 0:
                         worst = max(worst, abs(value - reference) / abs(reference))
                     wrong += not given or numeric.round_decimal(value, 15) != numeric.round_decimal(reference, 15)
