@@ -249,3 +249,13 @@ def test_pendulums_swing_by_the_torque_about_their_pivot(problem_id, period):
     omega = next(e.rhs for e in steps[-1].equations if str(e.lhs) == "omega" and not e.rhs.has(sp.Symbol("I_P")))
     assert _same(2 * sp.pi / omega, period())
     assert len(steps) == 3
+
+
+def test_the_answer_counted_as_the_question_says_keeps_its_name_in_the_document():
+    """The Atwood machine's "taking up as positive" step printed its answer as lambda: the ask's name
+    was taken for the engine's growth rate a and renamed (derive.publishing.notation)."""
+    from conftest import student_solution
+    tex, _ = student_solution("atwood_massive_pulley")
+    step = tex[tex.index("With the question's sign convention"):]
+    assert step[step.index("\\begin{align*}") + len("\\begin{align*}"):].lstrip().startswith("a &=")
+    assert "\\lambda" not in tex

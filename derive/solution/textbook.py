@@ -118,8 +118,8 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     for ask in solution.problem.asks.values():
         if ask.quantity.detail == "min_friction_coefficient":
             result[title].append(_least_coefficient(solution, ask))
-        if ask.sign is not None and isinstance(along, AlongMotion):
-            result[title].extend(_counted(solution, along, ask))
+    counted = [step for ask in solution.problem.asks.values() if ask.sign is not None
+               for step in _counted(solution, along, ask)]
     for body, balance in solution.energy_balances.items():
         result["The speed at the bottom, by energy" if len(solution.energy_balances) == 1
                else f"The speed of the {body} at the bottom, by energy"] = _energy(solution, body, balance, along)
@@ -130,7 +130,9 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
                 return None
             result["The time to the bottom"] = [step]
     change = names(solution)
-    return {title: [_renamed(step, change) for step in steps] for title, steps in result.items()}
+    shown = {title: [_renamed(step, change) for step in steps] for title, steps in result.items()}
+    shown[title] += counted  # in the ask's own name, which no renaming of the route's symbols touches
+    return shown
 
 
 def names(solution) -> dict[sp.Symbol, sp.Symbol]:
@@ -230,7 +232,9 @@ def _counted(solution, along: AlongMotion, ask) -> list[Step]:
     none where they agree."""
     for value in along.own.values():
         if value is not None and not _same(solution, ask.name, value) and _same(solution, ask.name, -value):
-            asked = sp.Symbol(ask.name)  # not the route's own symbol, which `names` may rename
+            # the ask's name as the documents print it; real, as the route's own symbols are, so that it
+            # is not the engine's growth rate a (derive.publishing.notation would rename it)
+            asked = sp.Symbol(ask.name, real=True)
             return [Step(f"With the question's sign convention ({ask.sign}), the answer is the opposite of "
                          "the value found along the motion", (sp.Eq(asked, solution.expression(ask.name)),),
                          role="solve")]
