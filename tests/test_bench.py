@@ -153,3 +153,14 @@ def test_bench_only_names_every_section():
 
     option = next(o for o in cli.bench.params if o.name == "only")
     assert tuple(option.type.choices) == bench.SECTIONS
+
+
+def test_each_solution_of_the_extreme_cases_keeps_its_own_group():
+    """Solutions made one after another in a generator and freed each keep their own group (keyed
+    by id(), a freed solution's id went to the next and merged two problems' groups)."""
+    cases = [("string_wrapped_disk", {"m": "1", "M": "2", "R": "0.2"}),
+             ("rod_endpoint", {"m": "1", "L": "2"})] * 3
+    groups = bench._groups((Solution(problem.load(p)), problem.load(p).values(o)) for p, o in cases)
+    assert len(groups) == len(cases)
+    for expressions, rows, _ in groups:
+        assert all(e.free_symbols <= set(row) for e in expressions for row in rows)

@@ -108,13 +108,15 @@ def _typical(solution: Solution, rng: random.Random) -> dict:
 def _groups(pairs) -> list[tuple[tuple, list, list]]:
     """For each (solution, values) pair: its numeric answers, the values, and each answer's
     50-digit reference; pairs of the same solution (its variants) make one group, (answers,
-    rows, references per row)."""
-    groups: dict[int, tuple[tuple, list, list]] = {}
+    rows, references per row). Keyed by the solution itself, not its id(): a solution made in
+    the pairs' generator and freed can leave its id to the next one, which would merge two
+    problems' groups (a clean-clone CI run met it as a row without a symbol's value)."""
+    groups: dict[Solution, tuple[tuple, list, list]] = {}
     for solution, values in pairs:
         expressions = tuple(e for e in solution.expressions.values() if e.free_symbols and e.free_symbols <= set(values))
         if not expressions:
             continue
-        group = groups.setdefault(id(solution), (expressions, [], []))
+        group = groups.setdefault(solution, (expressions, [], []))
         references = []
         for expression in expressions:
             exact = expression.xreplace(values)
