@@ -22,6 +22,7 @@ from pathlib import Path
 from mkdocs.structure.files import File
 
 from derive.core.keys import KINDS, Key, Keys
+from derive.quantities import KINDS as QUANTITIES
 from derive.core.library import find_problem
 
 #: The generated pages: (file name, title, where it is written in a problem file, the keys as
@@ -79,6 +80,9 @@ PAGES = [
     ("set-file", "The set file", "a set file (problems/sets/)", "derive.language.problem_sets:SET",
      ["derive.language.problem_sets:load_set"]),
 ]
+#: One page per quantity of derive.quantities, from its module: a quantity added there has its page.
+PAGES += [(f"quantity-{kind.replace('_', '-')}", f"Asking: {kind.replace('_', ' ')}", "ask: {NAME: {of: ...}}", None,
+           [type(quantity).__module__]) for kind, quantity in QUANTITIES.items()]
 #: Where a page's part shows in a file's scene: (the scene's section, the key within an entry), to list
 #: the library problems that use it.
 USES = {"bodies": ("bodies", None), "surfaces": ("surfaces", None), "pin": ("joints", "pin"),

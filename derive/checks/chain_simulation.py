@@ -37,6 +37,7 @@ from derive.numbers import numeric
 from derive.solution.crosschecks import sample_points
 from derive.core.errors import EngineLimit
 from derive.mechanics import integrated_motion, moves, states as state_motion
+from derive import quantities
 from derive.model.scene import RATE_KINDS
 from derive.checks.simulate import SimulationReport, hold
 
@@ -178,6 +179,9 @@ def _answer(solution, report: SimulationReport, name: str, carried: dict, took: 
     elif q.kind in RATE_KINDS:
         start = solution.scene.states[state].start
         simulated = _float(solution.rate_at(q, carried[state], carried.get(start)), values)
+    elif isinstance(quantities.KINDS.get(q.kind), quantities.StateChange):
+        start = solution.scene.states[state].start
+        simulated = _float(quantities.KINDS[q.kind].at(solution, ask, carried[state], carried[start]), values)
     else:
         read = _unknown(solution, q, state)
         if read is None:

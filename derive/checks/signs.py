@@ -16,7 +16,7 @@ import re
 
 from sympy.core.function import AppliedUndef
 
-from derive.model.directions import directional
+from derive import quantities
 
 from derive.numbers import numeric
 from derive.solution.crosschecks import sample_points
@@ -65,7 +65,7 @@ def ungiven(problem) -> list[str]:
     found = [f"ask.{name}: its meaning states a sign convention ({ask.meaning!r}) that the ask does not "
              "give: give it as sign: in the question's words, or drop it and ask the magnitude"
              for name, ask in problem.asks.items()
-             if ask.sign is None and directional(ask.quantity) and _CONVENTION.search(ask.meaning)]
+             if ask.sign is None and quantities.directional(ask.quantity) and _CONVENTION.search(ask.meaning)]
     stated = _CONVENTION.search(problem.question)
     if stated and not any(ask.sign for ask in problem.asks.values()):
         found.append(f"question: it states a sign convention ({_phrase(problem.question, stated)!r}) that no "

@@ -32,7 +32,7 @@ from derive.core.errors import InputError
 from derive.core.expr import ExprError, _build, _rational, _syntax_tree
 from derive.core.spelling import did_you_mean
 
-__all__ = ["UnitError", "UNITS", "parse_unit", "dimension", "si_factor", "parse_quantity",
+__all__ = ["UnitError", "UNITS", "parse_unit", "dimension", "si_factor", "in_unit", "parse_quantity",
            "to_unit", "expression_dimension", "same_dimension", "latex_unit", "siunitx_unit", "unicode_unit", "superscript",
            "sympy_units"]
 
@@ -156,6 +156,17 @@ def si_factor(unit: sympy.Expr | str) -> sympy.Expr:
     """Exact factor to the coherent SI unit: g -> 1/1000, deg -> pi/180, rpm -> pi/30."""
     unit = parse_unit(unit) if isinstance(unit, str) else unit
     return unit.xreplace({q: _quantity_factor(q) for q in unit.atoms(Quantity)})
+
+
+def in_unit(value_si: sympy.Expr, unit: str) -> sympy.Expr:
+    """An answer derived in SI, as a number of `unit`: what a key gives, and what its formula is
+    printed as (an angle asked in deg is 180/pi times the radians; turns in rev, 1/(2 pi) of them).
+
+    >>> in_unit(sympy.Symbol("x"), "deg"), in_unit(sympy.Integer(3), "N")
+    (180*x/pi, 3)
+    """
+    factor = si_factor(unit)
+    return value_si if factor == 1 else value_si / factor
 
 
 def _exact(value) -> sympy.Expr:

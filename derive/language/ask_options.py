@@ -6,13 +6,18 @@ LMS grades it with, an inertia axis shifted, a pendulum's amplitude, sizes taken
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from decimal import Decimal, InvalidOperation
 
 import sympy as sp
 
 from derive.core.keys import Key, Keys
+from derive.core import units
 from derive.language.reader import Reader
 from derive.model.scene import Quantity, Scene
+from derive.parts.pin import Pin
+from derive.parts.places import Places
+from derive import quantities
 
 #: An ask's entry under `ask:`.
 ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
@@ -21,7 +26,12 @@ ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
            axis=Key("text", "the axis a moment of inertia is about (see derive inertia --help)"),
            sig_figs=Key("integer", "significant figures of the answer (default 3 in a set)"),
            magnitude=Key("boolean", "ask its magnitude (default false)"),
-           zero_for=Key("name", "ask instead the parameter's value at which the quantity vanishes"),
+           zero_for=Key("name", "ask instead the parameter's value at which the quantity vanishes (find: with "
+                                "equals: 0)"),
+           find=Key("name", "ask instead the parameter's value at which the quantity equals `equals:` (an inverse "
+                            "question: the turns that turn a satellite by 30 deg); its unit is the ask's"),
+           equals=Key("quantity", "the value the quantity takes, for find: (an expression of the other parameters, "
+                                  "or a number with its unit: 30 deg, 2.5 m/s)"),
            small=Key("any", "a size (BODY.SIZE), or a list of them, taken to zero in the answer"),
            shift=Key("any", "the axis moved parallel to itself: [dx, dy] in the body's frame, or a distance"),
            end=Key("name", "a rod's end the axis passes through, normal to the rod: start (its point start, x = -L/2, "
@@ -32,8 +42,94 @@ ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
            sign=Key("text", "the sign convention the question states, in its words (up positive, down the "
                             "incline positive): the answer is then the component along the way it names positive; "
                             "without it a quantity with a direction is asked as its magnitude"),
+           about=Key("any", "the point a torque is taken about: a joint's name (the point it holds), BODY (its "
+                            "center of mass), BODY.POINT, {BODY: [x, y]} or [x, y] (a fixed point)"),
            **{"in": Key("name", "the state the quantity is asked in")})
 
+
+@dataclass(frozen=True)
+class Point:
+    """A point an ask names (`about:`): a body's (`offset` in its frame, from its center of mass) or,
+    with `body` None, the ground's; `words` name it for a student ("the hinge")."""
+
+    body: str | None
+    offset: tuple[sp.Expr, sp.Expr]
+    words: str
+
+
+def about(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity) -> Point | None:
+    """`about: hinge`: the point the quantity is taken about, where its kind takes one (a torque);
+    refused where it does not (a key nothing uses), and required where it does.
+
+    >>> from derive.language.problem import load
+    >>> scene = load("rod_endpoint").scene
+    >>> about(Reader("x.yaml"), "rod.end", "ask.t.about", scene, Quantity("torque", "rod", None))
+    Point(body='rod', offset=(L/2, 0), words="the rod's end")
+    """
+    kind = quantities.KINDS.get(quantity.kind)
+    takes = kind is not None and "about" in kind.options
+    if raw is None:
+        if takes:
+            raise reader.fail(field, f"a {quantity.kind} is taken about a point: give about: a joint's name, BODY, "
+                                     "BODY.POINT, {BODY: [x, y]} or [x, y]")
+        return None
+    if not takes:
+        raise reader.fail(field, "only a torque is taken about a point: leave about: out")
+    pins = {c.name: c for c in scene.constraints if isinstance(c, Pin)}
+    if isinstance(raw, str) and raw in pins:
+        return Point(pins[raw].body, pins[raw].offset, f"the {raw.replace('_', ' ')}")
+    body, offset = Places(reader, scene.bodies, {}, scene.surfaces).point(raw, field)
+    if body is None:
+        return Point(None, offset, f"the point ({sp.sstr(offset[0])}, {sp.sstr(offset[1])})")
+    if isinstance(raw, str):
+        named = raw.partition(".")[2]
+        return Point(body, offset, f"the {body}'s {named}" if named and named != "center" else
+                     f"the {body}'s center of mass")
+    return Point(body, offset, f"a point of the {body}")
+
+
+
+def sought(reader: Reader, spec: dict, field: str, parameters: dict, quantity: Quantity) -> tuple[str | None, str, sp.Expr]:
+    """(the parameter an inverse ask finds, the key that names it, the value the quantity takes
+    there, in SI): `find: N` with `equals: VALUE`, or `zero_for: N` (equals 0); (None, "", 0) for
+    an ask of the quantity itself."""
+    if spec.get("find") is not None and spec.get("zero_for") is not None:
+        raise reader.fail(f"{field}.find", "give find: with equals:, or zero_for:, not both")
+    key = "find" if spec.get("find") is not None else "zero_for"
+    name = spec.get(key)
+    if spec.get("equals") is not None and key != "find":
+        raise reader.fail(f"{field}.equals", "equals: is the value the quantity takes for find: PARAMETER: give find:")
+    if name is None:
+        return None, "", sp.S.Zero
+    if name not in parameters:
+        raise reader.fail(f"{field}.{key}", f"expected a parameter (parameters: {', '.join(parameters)})")
+    if key == "zero_for":
+        return name, key, sp.S.Zero
+    if spec.get("equals") is None:
+        raise reader.fail(f"{field}.equals", f"find: {name} needs the value the quantity takes: equals: VALUE")
+    if quantities.directional(quantity) and spec.get("sign") is None and not spec.get("magnitude"):
+        raise reader.fail(f"{field}.equals", f"{spec['of']} points one way or the other: say which way its value "
+                                             "counts as positive, in the question's words, with sign:, or that "
+                                             "equals: is its magnitude, with magnitude: true")
+    return name, key, in_si(reader, spec["equals"], f"{field}.equals")
+
+
+def in_si(reader: Reader, raw, field: str) -> sp.Expr:
+    """A value as the engine computes in SI: a number with its unit (30 deg, 2 rev, 2.5 km/h), converted
+    exactly, or an expression of the parameters (whose symbols stand for SI values).
+
+    >>> from pathlib import Path
+    >>> in_si(Reader(Path("p.yaml")), "30 deg", "equals"), in_si(Reader(Path("p.yaml")), "2 rev", "equals")
+    (pi/6, 4*pi)
+    """
+    if isinstance(raw, str):
+        try:
+            number, given = units.parse_quantity(raw, "")
+        except units.UnitError:
+            given = ""
+        if given:
+            return number * units.si_factor(given)
+    return reader.expression(raw, field)
 
 
 def tolerance(reader: Reader, raw, field: str) -> str | None:

@@ -27,6 +27,7 @@ from derive.numbers import numeric
 from derive.text.latex_safety import (CORRECTION_LIMIT, MEANING_LIMIT, NAME_LIMIT, QUESTION_LIMIT, SOURCE_LIMIT, TITLE_LIMIT, TOPIC_LIMIT)
 from derive.core.errors import EngineLimit, ProblemError
 from derive.core.keys import Key, Keys
+from derive import quantities
 from derive.language import amounts, ask_options, derivation_source, labels
 from derive.language.reader import Reader, safe_load
 from derive.parts.contact import Contact
@@ -194,6 +195,9 @@ class Ask:
     tolerance: str | None = None  # "2%" or an absolute amount in `unit`; None: the last digit shown
     state: str | None = None  # read in this state of the scene (`in:`); None: the placement at rest
     sign: str | None = None  # the sign convention the question states (`sign:`); None: a magnitude and a direction
+    about: "ask_options.Point | None" = None  # the point a torque is taken about (`about:`)
+    equals: sp.Expr = sp.S.Zero  # the value the quantity takes where `zero_for` (`find:`) is sought, in SI
+    finds: str = ""  # the key that names the parameter sought: "find" or "zero_for" ("" for none)
 
 
 @dataclass(frozen=True)
@@ -355,16 +359,17 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], r
         if name in parameters:
             raise reader.fail(field, f"{name!r} is already a parameter")
         spec = reader.mapping(spec, field, keys=ask_options.ASK)
-        zero_for = spec.get("zero_for")
-        if zero_for is not None and zero_for not in parameters:
-            raise reader.fail(f"{field}.zero_for", f"expected a parameter (parameters: {', '.join(parameters)})")
         if not isinstance(spec.get("magnitude", False), bool):
             raise reader.fail(f"{field}.magnitude", "expected true or false")
         path = reader.text(spec["of"], f"{field}.of", NAME_LIMIT)
         try:
-            quantity = parse_quantity(scene, path, ask_options.end_axis(reader, spec, field, scene))
+            quantity = quantities.parse(scene, path) or parse_quantity(scene, path, ask_options.end_axis(reader, spec, field, scene))
         except ValueError as error:
             raise reader.fail(f"{field}.of", str(error)) from None
+        zero_for, finds, equals = ask_options.sought(reader, spec, field, parameters, quantity)
+        kind = quantities.KINDS.get(quantity.kind)
+        if kind is not None and kind.exact_unit and not zero_for and str(spec["unit"]).strip() != kind.unit:
+            raise reader.fail(f"{field}.unit", f"{path} is asked in {kind.unit}, not {spec['unit']!r}")
         sig_figs = spec.get("sig_figs")
         if sig_figs is not None and (not isinstance(sig_figs, int) or not 1 <= sig_figs <= 15):
             raise reader.fail(f"{field}.sig_figs", "expected a whole number from 1 to 15")
@@ -379,6 +384,8 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], r
             ask_options.tolerance(reader, spec.get("tolerance"), f"{field}.tolerance"),
             _state(reader, spec.get("in"), f"{field}.in", scene, quantity, path),
             ask_options.sign(reader, spec.get("sign"), f"{field}.sign", quantity, raw_question),
+            ask_options.about(reader, spec.get("about"), f"{field}.about", scene, quantity),
+            equals, finds,
         )
     for name, ask in result.items():
         if ask.exact is not None and (ask.exact not in result or ask.exact == name):
@@ -408,12 +415,38 @@ def _bearings_used(reader: Reader, scene: Scene, asks: dict[str, Ask]) -> None:
                 raise reader.fail(f"scene.bodies.{body}.bearings.{key}", f"no ask uses it: it changes only {what}")
 
 
+def _state_of_kind(reader: Reader, raw, field: str, scene: Scene, kind, path: str) -> str | None:
+    """The state an ask of a quantity of derive.quantities is read in, as its kind's `state` says:
+    "never", "optional" (the placement at rest without `in:`) or "change" (from the state that
+    state comes from, which a move, made however one likes, leaves undetermined)."""
+    if raw is None:
+        if kind.state == "change":
+            raise reader.fail(field, f"{path} is a change from one state to the next: give in: STATE (states: "
+                                     f"{', '.join(scene.states) or 'none; add scene.states'})")
+        return None
+    if kind.state == "never":
+        raise reader.fail(field, f"{path} is not read in a state: leave in: out")
+    if not isinstance(raw, str) or raw not in scene.states:
+        raise reader.fail(field, no_such("state", raw, scene.states, "states") + ("; add scene.states" if not scene.states else ""))
+    state = scene.states[raw]
+    if kind.state == "change" and state.start is None:
+        raise reader.fail(field, f"{path} is the change from the state {raw} comes from, and it comes from none: ask it "
+                                 "in a state with from:")
+    if state.event and state.event.kind in ("move", "turn"):
+        raise reader.fail(field, f"after a {state.event.kind}, where the bodies are depends on how it is made: ask "
+                                 f"{path} in a state the motion gets to")
+    return raw
+
+
 def _state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, path: str) -> str | None:
     """The state an ask is read in (`in: vertical`): rates need one; accelerations and forces take one."""
     slipping = next((p.name for p in scene.loads if isinstance(p, SlippingClutch)), None)
     if raw is None and slipping and quantity.kind in DYNAMIC_KINDS:
         raise reader.fail(field, f"the clutch {slipping} slips only while its plates turn at different rates: ask "
                                  "in a state where they do (in: STATE)")
+    kind = quantities.KINDS.get(quantity.kind)
+    if kind is not None:
+        return _state_of_kind(reader, raw, field, scene, kind, path)
     if raw is None:
         if quantity.kind in RATE_KINDS:
             raise reader.fail(field, f"{path} is read in a state: give in: STATE (states: "

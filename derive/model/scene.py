@@ -396,8 +396,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if rest == "reduced_mass" and len(scene.bodies) != 2:
             raise ValueError("a reduced mass is for a system of two bodies")
         return Quantity("system", None, rest)
-    if head in scene.bodies and rest in ("mass", "position_cm.x", "position_cm.y"):
-        return Quantity(rest.partition(".")[0], head, rest.partition(".")[2] or None)
+    if head in scene.bodies and rest == "mass":
+        return Quantity("mass", head, None)
     if head == "orbit":
         if scene.orbit is None:
             raise ValueError("the scene has no orbit")
@@ -424,7 +424,8 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         return Quantity("kinetic_energy_change", None, None)
     if head == "center_of_mass":
         if rest not in ("velocity.x", "velocity.y") or not scene.states:
-            raise ValueError("the center of mass of every body has velocity.x and velocity.y, asked in: STATE"
+            raise ValueError("the center of mass of every body has position.x and position.y, and velocity.x and "
+                             "velocity.y, asked in: STATE"
                              if scene.states else "center_of_mass.velocity needs a state: add scene.states")
         return Quantity("center_of_mass_velocity", None, rest[-1])
     if head == "oscillation":

@@ -36,10 +36,6 @@ def route_title(route: str) -> str:
     return _ROUTE_TITLES.get(route, route[0].upper() + route[1:])
 
 
-def _in_unit(value_si: sp.Expr, unit: str) -> sp.Expr:
-    return value_si / units.si_factor(units.parse_unit(unit))
-
-
 def figures_supported(solution: Solution, name: str) -> int:
     """The significant figures an answer's inputs support: its ask's `sig_figs`, else the fewest
     of the parameters its expression uses (each declares its own), else DEFAULT_SIG_FIGS."""
@@ -70,7 +66,7 @@ def answer_values(solution: Solution, values: dict[sp.Symbol, sp.Expr], digits: 
         expression = solution.expression(name)  # its errors (a time limit) say what they are
         try:
             shown = figures_supported(solution, name) if digits is None else digits
-            result[name] = numeric.evaluate(_in_unit(expression, ask.unit), values, shown)
+            result[name] = numeric.evaluate(units.in_unit(expression, ask.unit), values, shown)
         except (ValueError, ZeroDivisionError) as error:  # outside where the answer exists
             raise problem.error(f"ask.{name}", f"no real value at these parameters ({error})") from None
     return result
@@ -81,7 +77,7 @@ def _component(solution: Solution, name: str, values: dict, digits: int | None) 
     positive), for programs that read `derive solve`'s JSON; the value itself is its magnitude."""
     ask = solution.problem.asks[name]
     try:
-        return numeric.evaluate(_in_unit(solution.signed(name), ask.unit), values,
+        return numeric.evaluate(units.in_unit(solution.signed(name), ask.unit), values,
                                 figures_supported(solution, name) if digits is None else digits)
     except (ValueError, ZeroDivisionError):
         return None
@@ -99,7 +95,7 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
         name: {
             "meaning": p.meaning,
             "unit": p.unit,
-            "value": numeric.significant(_in_unit(values[p.symbol], p.unit), p.sig_figs if digits is None else digits)
+            "value": numeric.significant(units.in_unit(values[p.symbol], p.unit), p.sig_figs if digits is None else digits)
             if p.symbol in values else None,
         }
         for name, p in problem.parameters.items()
@@ -198,7 +194,7 @@ def as_text(result: dict, solution: Solution) -> str:
         unit = units.unicode_unit(a["unit"])
         value = f" = {a['value']}{' ' + unit if unit else ''}" if a["value"] is not None else \
             (f"  [{unit}]" if unit else "")
-        lines += indented(pretty(sp.Symbol(name), " = ", solution.expression(name), value))
+        lines += indented(pretty(sp.Symbol(name), " = ", units.in_unit(solution.expression(name), a["unit"]), value))
         lines.append(f"    ({a['meaning']}{', ' + a['direction'] if a.get('direction') else ''})")
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:
             lines.append(f"    approximates {a['approximation']['exact']}: relative error "

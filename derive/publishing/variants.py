@@ -130,10 +130,10 @@ class ProblemVariants:
 
     @cached_property
     def shown_expressions(self) -> dict[str, sp.Expr]:
-        """Each answer's expression as the documents print it: as it reads over the parameter ranges
+        """Each answer's expression as the documents print it: in its ask's unit (`in_unit`), as it reads over the parameter ranges
         (derive.numbers.range_forms: 1/cos(beta), not sqrt(tan(beta)**2 + 1)); the keys keep the derived one."""
         ranges = range_forms.box(self.problem)
-        return {name: range_forms.within(expression, ranges).xreplace(self.letters)
+        return {name: range_forms.within(units.in_unit(expression, self.problem.asks[name].unit), ranges).xreplace(self.letters)
                 for name, expression in self.solution.expressions.items()}
 
     @cached_property
@@ -155,8 +155,7 @@ class ProblemVariants:
     @cached_property
     def in_declared_units(self) -> dict[str, sp.Expr]:
         """Each answer divided by its unit's SI factor, built once for every variant."""
-        return {name: self.solution.expressions[name] / units.si_factor(units.parse_unit(ask.unit))
-                for name, ask in self.problem.asks.items()}
+        return {name: units.in_unit(self.solution.expressions[name], ask.unit) for name, ask in self.problem.asks.items()}
 
     @cached_property
     def free_bodies(self) -> dict[int, free_body.FreeBody]:

@@ -19,6 +19,7 @@ import sympy as sp
 
 from derive.core.errors import ProblemError
 from derive.core.tidying import leading_plus, tidy
+from derive import quantities
 from derive.model import directions
 from derive.numbers import intervals
 from derive.solution.crosschecks import sample_points
@@ -68,7 +69,7 @@ def stated(solution, name: str) -> int:
     1
     """
     ask = solution.problem.asks[name]
-    sense = directions.sense(solution.scene, ask.quantity, solution.coordinates, solution._sample)
+    sense = quantities.sense(solution.scene, ask.quantity, solution.coordinates, solution._sample)
     if sense is None:
         return 1
     sign = directions.stated(sense, ask.sign)
@@ -101,20 +102,3 @@ def general_direction(solution, name: str) -> str | None:
     if sense is None or solution.expression(name).has(sp.Abs):
         return None
     return sense.of(1 if solution.expression(name) == solution.signed_expressions[name] else -1)
-
-
-def zero_for(problem, expr: sp.Expr, ask) -> sp.Expr:
-    """The value of a parameter at which the quantity vanishes (a critical angle, say)."""
-    parameter = problem.parameters[ask.zero_for]
-    roots = [r for r in sp.solve(sp.numer(sp.together(expr)), parameter.symbol)
-             if not r.has(sp.I) and r.is_nonnegative is not False]
-    if parameter.range is not None:
-        low, high = parameter.si_ends  # the roots are in SI, as the symbol is
-        # Keep the roots that land in the parameter's range for some parameter values.
-        inside = [r for r in roots if any(low <= sp.N(r.xreplace(p), 30) <= high
-                                          for p in sample_points(problem, r))]
-        roots = inside or roots
-    if len(roots) != 1:
-        raise problem.error(f"ask.{ask.name}.zero_for", f"{ask.path} vanishes at {len(roots)} values of "
-                            f"{ask.zero_for}, not one: {', '.join(map(sp.sstr, roots)) or 'none'}")
-    return tidy(roots[0])

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derive import quantities
 from derive.core.memo import kept
 from derive.model import inertia
 from derive.core import limits
@@ -92,6 +93,10 @@ class AnswerSteps:
                     result[route] += self._exact_period(ask.amplitude, route)[1]
         for body, balance in self.energy_balances.items():
             result[f"energy of the {body}"] = list(balance.steps)
+        for ask in self.problem.asks.values():
+            kind = quantities.KINDS.get(ask.quantity.kind)
+            if kind is not None:
+                result[quantities.describe_capitalized(kind.describe(ask))] = kind.steps(self, ask)
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "contact" and ask.quantity.detail == "min_release_height":
                 result[f"staying on the loop: the {ask.quantity.target}"] = list(

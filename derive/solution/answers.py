@@ -19,7 +19,7 @@ from flint import ctx
 
 from derive.core.memo import kept
 from derive.numbers import balls
-from derive.model import composite, directions, inertia
+from derive.model import composite, inertia
 from derive.model.directions import Sense
 from derive.core import limits
 from derive.core.errors import EngineLimit
@@ -32,7 +32,8 @@ from derive.model.kinematics import Coordinates
 from derive.mechanics.normal_modes import NormalModes, normal_modes
 from derive.mechanics.oscillation import (NotAPendulum, Oscillation, OscillationError, OscillationLimit,
                                          exact_period, free_directions, small_oscillation)
-from derive.solution import answer_signs, system, textbook
+from derive import quantities
+from derive.solution import answer_signs, inverse, system, textbook
 from derive.solution.answer_conditions import AnswerConditions
 from derive.solution.answer_steps import AnswerSteps
 from derive.solution.crosschecks import CrossChecks, sample_points
@@ -470,7 +471,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         with limits.time_limit(f"{self.problem.path}: ask.{name}"):
             result = self._expression(name)
             ask = self.problem.asks[name]
-            if ask.sign is not None:
+            if ask.sign is not None and not ask.zero_for:  # a parameter found has no direction
                 return result if answer_signs.stated(self, name) == 1 else answer_signs.negated(result)
             if ask.magnitude or self.senses[name] is None:
                 return answer_signs.magnitude(self.problem, result) if ask.magnitude else result
@@ -514,12 +515,15 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         """The words for the two ways each asked quantity can point (derive.model.directions), None where
         it has none, the question states its sign convention (`sign:`) or the answer is the parameter
         where it vanishes (`zero_for:`); the others are answered as magnitudes."""
-        return {name: None if ask.sign or ask.zero_for else directions.sense(self.scene, ask.quantity, self.coordinates, self._sample)
+        return {name: None if ask.sign or ask.zero_for else quantities.sense(self.scene, ask.quantity, self.coordinates, self._sample)
                 for name, ask in self.problem.asks.items()}
 
     def _expression(self, name: str) -> sp.Expr:
         ask = self.problem.asks[name]
-        if ask.quantity.kind == "inertia":
+        kind = quantities.KINDS.get(ask.quantity.kind)
+        if kind is not None:
+            result = kind.value(self, ask, 0)
+        elif ask.quantity.kind == "inertia":
             result = self._inertia(ask)
         elif ask.quantity.kind == "path":
             result = self._path(ask)
@@ -527,9 +531,6 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             result = self._orbit(ask.quantity.detail, "lagrange")
         elif ask.quantity.kind == "mass":
             result = self.scene.bodies[ask.quantity.target].mass
-        elif ask.quantity.kind == "position_cm":
-            offset = system.position(self.scene, ask.quantity.target) - system.center_of_mass(self.scene)
-            result = tidy(offset[0 if ask.quantity.detail == "x" else 1])
         elif ask.quantity.kind == "system":
             result = system.quantity(self.scene, ask.quantity.detail, "sum")
         elif ask.quantity.kind == "pivot_point":
@@ -555,8 +556,10 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             result = tidy(result.xreplace(placed))
         for size in ask.small:
             result = tidy(sp.limit(result, size, 0, "+"))
-        if ask.zero_for:
-            result = answer_signs.zero_for(self.problem, result, ask)
+        if ask.zero_for:  # the quantity counted as the question says (`sign:`) takes the value `equals`
+            counted = (result if ask.equals == 0 else answer_signs.magnitude(self.problem, result, proven=True)
+                       if ask.magnitude else result if ask.sign is None else answer_signs.stated(self, name) * result)
+            result = inverse.solved(self.problem, counted, ask)
         leftover = result.free_symbols - {p.symbol for p in self.problem.parameters.values()} - {TIME}
         if leftover:
             names = ", ".join(sorted(map(str, leftover)))
@@ -596,4 +599,6 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
                 needed |= {c.a for c in self.normal_modes["lagrange"].coordinates}
             elif q.kind in ("small_oscillation", "oscillation"):
                 needed.add(self.oscillations["lagrange"].coordinate.a)
+            elif q.kind in quantities.KINDS:
+                needed |= quantities.KINDS[q.kind].unknowns(self, ask)
         return needed

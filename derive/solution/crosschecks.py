@@ -31,6 +31,7 @@ from derive.mechanics.small_swings import SmallSwing
 from derive.mechanics.derivation import row_reduced
 from derive.language.problem import Ask, Problem
 from derive.model.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
+from derive import quantities
 from derive.solution import system
 
 ROUTES = ("lagrange", "newton_euler")
@@ -98,6 +99,7 @@ class CrossChecks:
             result += self._bearings_checks()
         if "free_rotation" in kinds:
             result.append(self._free_rotation_check())
+        result += self._quantity_checks()
         agreed: dict[str, list[str]] = {}
         for ask in self.problem.asks.values():
             if ask.quantity.kind in SECOND_ROUTE_KINDS:
@@ -115,6 +117,27 @@ class CrossChecks:
                     result.append(check)
         return result
 
+    def _quantity_checks(self) -> list[Check]:
+        """Each quantity of derive.quantities by its two routes (a route 1 that is the motion simulated
+        is the states check's)."""
+        agreed: dict[str, tuple[list[str], set[str]]] = {}
+        for name, ask in self.problem.asks.items():
+            kind = quantities.KINDS.get(ask.quantity.kind)
+            second = kind.value(self, ask, 1) if kind is not None else None
+            if second is None:
+                continue
+            first = kind.value(self, ask, 0)
+            method = agree(first, second, points=sample_points(self.problem, sp.Tuple(first, second), count=MIN_POINTS))
+            if method is None:
+                raise CheckFailure(f"{self.problem.id}: {name} is {first} by {kind.routes[0]}, {second} by "
+                                   f"{kind.routes[1]}")
+            asks, methods = agreed.setdefault(kind.kind, ([], set()))
+            asks.append(name)
+            methods.add(method)
+        return [Check(kind, True, ", ".join(sorted(methods)), f"{', '.join(asks)} agree by two routes",
+                      f"Two routes give the same {', '.join(asks)}: {quantities.KINDS[kind].routes[0]}, and "
+                      f"{quantities.KINDS[kind].routes[1]}.") for kind, (asks, methods) in agreed.items()]
+
     def _dimension_check(self) -> Check:
         found = {}
         for name, ask in self.problem.asks.items():
@@ -127,6 +150,9 @@ class CrossChecks:
                 raise EngineLimit(f"{self.problem.path}: ask.{name}", f"find the dimension of its derived "
                                   f"answer ({error})") from None
             wanted = units.dimension(units.parse_unit(ask.unit))
+            kind = quantities.KINDS.get(ask.quantity.kind)
+            if kind is not None and not units.same_dimension(units.dimension(units.parse_unit(kind.unit)), wanted):
+                raise self.problem.error(f"ask.{name}.unit", f"declared {ask.unit}, but a {kind.kind} is in {kind.unit}")
             if not units.same_dimension(dimension, wanted):
                 raise self.problem.error(
                     f"ask.{name}.unit", f"declared {ask.unit}, but the derived answer has dimension {dimension or 'none'}"

@@ -1,0 +1,176 @@
+"""The torque of loads on a body about a point: of one load, or of every load (the net torque).
+
+Asked as `BODY.torque` (every load on the body), `BODY.weight.torque`, `BODY.friction.torque` and
+`BODY.normal_force.torque` (of its contact with a surface), or `BODY.PART.torque` (what a joint,
+cord, force, spring, damper or couple named PART exerts on the body), with `about: POINT`: a
+joint's name (the point it holds), `BODY` (its center of mass), `BODY.POINT`, `{BODY: [x, y]}`
+or `[x, y]` (a fixed point); at the placement at rest, or `in: STATE`. Counter-clockwise positive,
+the component along the normal to the page:
+
+            F
+            ^            tau = (r_A - r_P) x F      (counter-clockwise positive)
+            |
+    P o-----+ A          a force up at A, to the right of P: counter-clockwise
+
+Route 0 (the key's), Newton–Euler: the sum of (r_A - r_P) x F over the loads, with the
+constraint forces of the Newton–Euler solve. Route 1, its check: the net torque by Euler's law,
+I_cm alpha + (r_cm - r_P) x M a_cm, from Lagrange's accelerations; one load's by the work it does
+in a small turn of its point about P, F . d(R(e)(r_A - r_P))/de at e = 0, with the forces of
+Lagrange's multipliers.
+
+>>> from derive.language.problem import load
+>>> from derive.solution.answers import Solution
+>>> problem = load("rod_endpoint")
+>>> scene = problem.scene
+>>> TORQUE.claims(scene, "rod", "weight.torque")
+Quantity(kind='torque', target='rod', detail='weight')
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.core.spelling import did_you_mean
+from derive.core.tidying import tidy
+from derive.mechanics.derivation import Step
+from derive.model.scene import Quantity
+from derive.parts import AppliedForce, AppliedTorque
+from derive.quantities import QuantityKind
+from derive.text.prose import Sentence
+
+#: The subscripts of a load's torque in the worked solution, by its label.
+_SHORT = {"weight": "W", "normal force": "N", "static friction": "f", "kinetic friction": "f"}
+#: Loads named by what they are rather than by a part's name.
+NAMED = {"weight": ("weight",), "friction": ("static friction", "kinetic friction"), "normal_force": ("normal force",)}
+
+
+def _cross(arm: sp.Matrix, force: sp.Matrix) -> sp.Expr:
+    return arm[0] * force[1] - arm[1] * force[0]
+
+
+class Torque(QuantityKind):
+    """A torque about a point (see the module)."""
+
+    kind = "torque"
+    unit = "N*m"
+    state = "optional"
+    sense = ("counter-clockwise", "clockwise")
+    routes = ("r x F of each load, with the Newton–Euler forces",
+              "Euler's law (I alpha + r x M a) or the load's work in a small turn, by Lagrange")
+    options = ("about",)
+
+    def claims(self, scene, head: str, rest: str) -> Quantity | None:
+        if not (rest == "torque" or rest.endswith(".torque")) or head not in scene.bodies:
+            return None
+        load = rest[: -len(".torque")] if rest != "torque" else None
+        if load is None:
+            return Quantity(self.kind, head, None)
+        names = [*NAMED, *(p.name for p in scene.parts if head in p.bodies())]
+        if load not in names:
+            raise ValueError(f"the {head} bears no load {load!r}: ask {head}.torque (every load), or one of "
+                             + ", ".join(f"{head}.{n}.torque" for n in names) + did_you_mean(load, names))
+        return Quantity(self.kind, head, load)
+
+    def _loads(self, solution, ask) -> list[AppliedForce | AppliedTorque]:
+        body, wanted = ask.quantity.target, ask.quantity.detail
+        scene = solution.scene_in(ask.state) if ask.state else solution.dynamics_scene
+        coords = solution.coordinates
+        result = []
+        for part in scene.parts:
+            for load in part.loads(coords):
+                if load.body != body:
+                    continue
+                if wanted is None or wanted == part.name or load.label in NAMED.get(wanted, ()):
+                    result.append(load)
+        if not result:
+            raise solution.problem.error(f"ask.{ask.name}.of", f"no {wanted} acts on the {body}")
+        return result
+
+    def _where(self, solution, ask) -> dict:
+        """The coordinates and velocities where the torque is read: the state's, or the placement at rest."""
+        if ask.state:
+            return solution.states[ask.state].values
+        return solution.coordinates.at_rest_in_reference()
+
+    def _point(self, solution, ask) -> sp.Matrix:
+        return solution.coordinates.position(ask.about.body, ask.about.offset)
+
+    def value(self, solution, ask, route: int) -> sp.Expr:
+        coords = solution.coordinates
+        where = self._where(solution, ask)
+        point = self._point(solution, ask)
+        solved = solution.in_state("newton_euler" if route == 0 else "lagrange", ask.state)
+        known = {u: solved[u] for u in self.unknowns(solution, ask) | self._accelerations(solution, ask)}
+        if route == 0:
+            total = sum((load.torque if isinstance(load, AppliedTorque) else
+                         _cross(coords.position(load.body) + load.offset - point, load.force)
+                         for load in self._loads(solution, ask)), sp.Integer(0))
+        elif ask.quantity.detail is None:  # Euler's law for the body: I alpha + (r_cm - r_P) x M a_cm
+            body = solution.scene.bodies[ask.quantity.target]
+            name = body.name
+            spin = body.inertia * coords.of(name, "theta").a if body.rotates else sp.Integer(0)
+            acceleration = sp.Matrix([coords.of(name, "x").a, coords.of(name, "y").a])
+            total = spin + _cross(coords.position(name) - point, body.mass * acceleration)
+        else:  # the work of each load in a small turn e of its point about P
+            e = sp.Dummy("e")
+            turn = sp.Matrix([[sp.cos(e), -sp.sin(e)], [sp.sin(e), sp.cos(e)]])
+            total = sum((load.torque if isinstance(load, AppliedTorque) else
+                         sp.diff(load.force.dot(turn * (coords.position(load.body) + load.offset - point)), e).subs(e, 0)
+                         for load in self._loads(solution, ask)), sp.Integer(0))
+        return tidy(total.xreplace(known).xreplace(where))
+
+    def _accelerations(self, solution, ask) -> set[sp.Symbol]:
+        if ask.quantity.detail is not None:
+            return set()
+        body = solution.scene.bodies[ask.quantity.target]
+        coords = solution.coordinates
+        return {coords.of(body.name, k).a for k in (("x", "y", "theta") if body.rotates else ("x", "y"))}
+
+    def unknowns(self, solution, ask) -> set[sp.Symbol]:
+        """The constraint forces among the loads (a weight or a given force needs none)."""
+        found = set()
+        for load in self._loads(solution, ask):
+            parts = (load.force, load.offset) if isinstance(load, AppliedForce) else (load.torque,)
+            found |= {s for p in parts for s in sp.sympify(p).free_symbols}  # safe: the engine's own expressions
+        return found & set(solution.derivations["newton_euler"].unknowns)
+
+    def steps(self, solution, ask) -> list[Step]:
+        """Each load's torque, r x F with its point's position r from the point the torque is taken
+        about (the forces as the Newton–Euler solve above finds them), and their sum."""
+        coords, about = solution.coordinates, ask.about.words
+        where, point = self._where(solution, ask), self._point(solution, ask)
+        solved = solution.in_state("newton_euler", ask.state)
+        known = {u: solved[u] for u in self.unknowns(solution, ask)}
+        result, total = [], sp.Integer(0)
+        loads = self._loads(solution, ask)
+        for load in loads:
+            name = sp.Symbol(f"tau_{_SHORT.get(load.label, load.label.rpartition(' ')[2] or 'cord')}")
+            if isinstance(load, AppliedTorque):
+                torque = tidy(load.torque.xreplace(known).xreplace(where))
+                result.append(Step(f"The {load.label} is a couple: its torque is the same about every point", (
+                    sp.Eq(name, torque),)))
+            else:
+                arm = (coords.position(load.body) + load.offset - point).xreplace(where).applyfunc(tidy)
+                force = load.force.xreplace(known).xreplace(where).applyfunc(tidy)
+                torque = tidy(_cross(arm, force))
+                x, y, fx, fy = sp.symbols("x y F_x F_y")
+                said = Sentence((f"The {load.label or 'pull of the cord'} on the {load.body} acts at ",
+                                 sp.Eq(x, arm[0]), ", ", sp.Eq(y, arm[1]), f" from {about}, with ", sp.Eq(fx, force[0]),
+                                 ", ", sp.Eq(fy, force[1]), "; its torque about it, counter-clockwise positive, is ",
+                                 sp.Eq(name, x * fy - y * fx, evaluate=False), ":"))
+                result.append(Step("", (sp.Eq(name, torque),), sentences=(said,)))
+            total += torque
+        if len(loads) > 1:
+            result.append(Step(f"The net torque about {about} is their sum", (sp.Eq(sp.Symbol(ask.name), tidy(total)),)))
+        return result
+
+    def describe(self, ask) -> str:
+        body, load = ask.quantity.target, ask.quantity.detail
+        about = ask.about.words
+        if load is None:
+            return f"the net torque on the {body} about {about}"
+        what = {"weight": f"the {body}'s weight", "friction": f"the friction on the {body}",
+                "normal_force": f"the normal force on the {body}"}.get(load, f"the {load} on the {body}")
+        return f"the torque of {what} about {about}"
+
+
+TORQUE = Torque()
