@@ -18,6 +18,7 @@ LAYERS = (
     ("numbers", "text"),          # values to certified digits | words and math as LaTeX and text
     ("parts",),                   # the parts of a scene, each known to both routes
     ("model",),                   # bodies, inertia, the Scene, its coordinates
+    ("quantities",),              # what a problem asks, one module per quantity, and how each computes it
     ("language", "mechanics"),    # problem and set files read | the derivations
     ("solution",),                # a problem solved: its answers, their conditions, steps and checks
     ("checks",),                  # simulations against the closed forms

@@ -33,7 +33,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.core.tidying import leading_plus, tidy
-from derive.mechanics.derivation import Derivation, Indeterminate, Step, solve_linear
+from derive.mechanics.derivation import Derivation, Indeterminate, solve_linear
+from derive.text.steps import Step
 from derive.mechanics.newton_euler import all_forces
 from derive.mechanics.oscillation import free_directions
 from derive.model.directions import TURNS, along

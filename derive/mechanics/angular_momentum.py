@@ -25,7 +25,7 @@ import sympy as sp
 
 from derive.core.tidying import leading_plus, tidy
 from derive.mechanics.along_motion import NotAlongALine
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.mechanics.impacts import outside
 from derive.mechanics.lagrange import energies
 from derive.model.directions import TURNS

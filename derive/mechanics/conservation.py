@@ -24,7 +24,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import KINETIC, POTENTIAL, Step
+from derive.mechanics.derivation import KINETIC, POTENTIAL
+from derive.text.steps import Step
 from derive.core.tidying import root, tidy
 from derive.model.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, nonconservative_power

@@ -19,6 +19,7 @@ from derive.numbers import balls
 from derive.core import limits
 from derive.mechanics import jets
 from derive.core.tidying import radicals, simplest, tidy
+from derive.text.steps import Step
 
 
 #: The symbols the steps name energies by: K for the kinetic energy (T is a tension in most
@@ -33,23 +34,6 @@ POTENTIAL = sp.Symbol("V")
 PERIOD = sp.Symbol("T")
 EXACT_PERIOD = sp.Symbol("T_exact")
 GROWTH_RATE = sp.Symbol("a")
-
-
-@dataclass(frozen=True)
-class Step:
-    """One step of a derivation as the lecture notes would write it: a sentence and equations.
-    `role`: "equations" for the equations a route solves (its equations of motion and its
-    constraints), "solve" for the solving of them, which a worked solution refers back to by
-    their numbers ("from (4) to (11)"); "" for any other step. `body`: the body whose balance a
-    Newton–Euler step states (its free-body diagram goes beside it), "" for any other step.
-    `sentences`: what the scene's parts contribute to it, in words with their symbols
-    (derive.text.prose), said before it."""
-
-    text: str
-    equations: tuple[sp.Eq, ...] = ()
-    role: str = ""
-    body: str = ""
-    sentences: tuple = ()
 
 
 class Solved(Mapping):

@@ -20,7 +20,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import EXACT_PERIOD, Derivation, Step
+from derive.mechanics.derivation import EXACT_PERIOD, Derivation
+from derive.text.steps import Step
 from derive.core.tidying import root, tidy
 from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.mechanics.reaching import Path, Reached, Stops

@@ -28,7 +28,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.derivation import Derivation
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.model.scene import Scene

@@ -29,7 +29,7 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics import moves
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene

@@ -24,7 +24,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.derivation import Derivation
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.kinematics import Coordinate, Coordinates
 from derive.core.expr import TIME

@@ -42,7 +42,8 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive.mechanics.derivation import KINETIC, Step
+from derive.mechanics.derivation import KINETIC
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.solid_scene import FREE_ROTATION_QUANTITIES
 

@@ -35,7 +35,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.derivation import Derivation
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.kinematics import Coordinates
 from derive.mechanics.reaching import Reached

@@ -48,7 +48,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import Step, solve_linear
+from derive.mechanics.derivation import solve_linear
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.kinematics import Coordinates
 from derive.mechanics.lagrange import energies

@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import (FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, POTENTIAL, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing)
+from derive.mechanics.derivation import (FIXED_LEFT_OUT, KINETIC, LAGRANGIAN, POTENTIAL, Derivation, at_state, part_sentences, rest_positions, worth_showing)
+from derive.text.steps import Step
 from derive.core.tidying import simplest
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene

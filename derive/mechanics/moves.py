@@ -54,7 +54,8 @@ import random
 import numpy as np
 import sympy as sp
 
-from derive.mechanics.derivation import Step, solve_linear
+from derive.mechanics.derivation import solve_linear
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.kinematics import Coordinates, solve_gaps
 from derive.mechanics.lagrange import energies, generalized_forces

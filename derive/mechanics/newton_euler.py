@@ -19,7 +19,8 @@ import dataclasses
 import sympy as sp
 
 from derive.parts import AppliedForce, AppliedTorque
-from derive.mechanics.derivation import (FIXED_LEFT_OUT, Derivation, Step, at_state, part_sentences, rest_positions, worth_showing)
+from derive.mechanics.derivation import (FIXED_LEFT_OUT, Derivation, at_state, part_sentences, rest_positions, worth_showing)
+from derive.text.steps import Step
 from derive.core.tidying import simplest
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene

@@ -33,7 +33,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.mechanics.derivation import Derivation, Step
+from derive.mechanics.derivation import Derivation
+from derive.text.steps import Step
 from derive.core.tidying import root, tidy
 from derive.model.kinematics import Coordinate, Coordinates
 from derive.mechanics.lagrange import energies

@@ -20,7 +20,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, Step, solve_linear
+from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, solve_linear
+from derive.text.steps import Step
 from derive.core.tidying import root, tidy
 from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
 from derive.model.scene import Scene

@@ -10,7 +10,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.model.kinematics import Coordinate
 from derive.core.tidying import root, tidy
 from derive.text.prose import Sentence

@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics.derivation import KINETIC, Step
+from derive.mechanics.derivation import KINETIC
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene

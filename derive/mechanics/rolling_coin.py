@@ -37,7 +37,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 
 ROUTES = ("lagrange", "kane", "newton_euler")

@@ -23,7 +23,7 @@ import sympy as sp
 
 from derive.core.tidying import tidy
 from derive.mechanics.along_motion import NotAlongALine
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene
 from derive.parts.pin import Pin

@@ -37,7 +37,8 @@ import numpy as np
 import sympy as sp
 
 from derive.mechanics import first_integrals, first_root, free_flight, work
-from derive.mechanics.derivation import KINETIC, Derivation, Step
+from derive.mechanics.derivation import KINETIC, Derivation
+from derive.text.steps import Step
 from derive.mechanics.reaching import Gets, GetsRate, Path, Reached, Stops, Vanishes, settled
 from derive.core.tidying import radicals, tidy
 from derive.model.kinematics import Coordinate, Coordinates, solve_gaps

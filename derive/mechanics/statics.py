@@ -23,7 +23,8 @@ import sympy as sp
 
 from derive.core.tidying import leading_plus, tidy
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, component, moment, oriented
-from derive.mechanics.derivation import Derivation, Indeterminate, Step, solve_linear
+from derive.mechanics.derivation import Derivation, Indeterminate, solve_linear
+from derive.text.steps import Step
 from derive.mechanics.newton_euler import all_forces
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene

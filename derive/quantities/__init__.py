@@ -23,97 +23,18 @@ Quantity(kind='torque', target='rod', detail='weight')
 """
 from __future__ import annotations
 
-from abc import ABC, abstractmethod
-from typing import ClassVar
-
-import sympy as sp
-
-from derive.mechanics.derivation import Step
 from derive.model import directions
 from derive.model.directions import Sense
 from derive.model.scene import Quantity
+from derive.quantities import center_of_mass, distance, position_cm, torque, turns
+from derive.quantities.base import QuantityKind, StateChange, describe_capitalized
 
-
-class QuantityKind(ABC):
-    """What every quantity gives (one subclass per module of this package).
-
-    kind: the `Quantity.kind` it answers; unit: the SI unit of its dimension; state: "change"
-    (read in a state, `in: STATE`, as a change from the state it comes from), "optional" (at the
-    placement at rest, or in a state) or "never"; sense: the words for a positive and a negative value (None: it points no way);
-    routes: the two routes' names, in words, the key's first; options: the ask keys it needs
-    (`about:`), each required; exact_unit: asked in `unit` itself (turns in rev, where rad and
-    deg would be the same dimension).
-    """
-
-    kind: ClassVar[str]
-    unit: ClassVar[str]
-    state: ClassVar[str] = "never"
-    sense: ClassVar[tuple[str, str] | None] = None
-    routes: ClassVar[tuple[str, str]]
-    options: ClassVar[tuple[str, ...]] = ()
-    exact_unit: ClassVar[bool] = False  # asked in `unit` itself (turns in rev), not any unit of its dimension
-
-    @abstractmethod
-    def claims(self, scene, head: str, rest: str) -> Quantity | None:
-        """The quantity an ask path `head.rest` names, None if it is not this kind's; ValueError
-        (one line) where it is this kind's but names nothing in the scene."""
-
-    @abstractmethod
-    def value(self, solution, ask, route: int) -> sp.Expr | None:
-        """The exact answer by route 0 (the key's) or 1 (its check), in the parameters (SI); None for
-        a route 1 that is not a closed form (a simulation: `StateChange`)."""
-
-    @abstractmethod
-    def describe(self, ask) -> str:
-        """The quantity in words, for a student: "the torque of the rod's weight about the hinge"."""
-
-    def steps(self, solution, ask) -> list[Step]:
-        """The worked solution's steps for the ask: by default the answer, stated."""
-        return [Step(f"{describe_capitalized(self.describe(ask))}:",
-                     (sp.Eq(sp.Symbol(ask.name), solution.signed_expression(ask.name)),))]
-
-    def unknowns(self, solution, ask) -> set[sp.Symbol]:
-        """The accelerations and forces of the derivation the answer is made of (shown in the steps)."""
-        return set()
-
-
-def describe_capitalized(text: str) -> str:
-    """A description opening a sentence.
-
-    >>> describe_capitalized("the torque of the rod's weight")
-    "The torque of the rod's weight"
-    """
-    return text[:1].upper() + text[1:]
-
-
-class StateChange:
-    """A quantity read from where the bodies are and how they move in a state, against the state it
-    comes from (`at`, mixed in before QuantityKind): route 0 reads the states' closed forms; route 1
-    is the motion integrated numerically (derive.checks.chain_simulation reads `at` on its states),
-    so `value` gives None for it."""
-
-    state = "change"
-    routes = ("the two states' closed forms", "the motion integrated numerically")
-
-    def at(self, solution, ask, values: dict, before: dict) -> sp.Expr:
-        """The quantity in the state of coordinates and velocities `values`, from those `before`."""
-        raise NotImplementedError
-
-    def value(self, solution, ask, route: int) -> sp.Expr | None:
-        if route == 1:
-            return None
-        start = solution.scene.states[ask.state].start
-        return self.at(solution, ask, solution.states[ask.state].values, solution.states[start].values)
-
-
-def _kinds() -> dict[str, QuantityKind]:
-    from derive.quantities import center_of_mass, distance, position_cm, torque, turns
-    return {k.kind: k for k in (torque.TORQUE, turns.TURNS, distance.DISTANCE, center_of_mass.CENTER_OF_MASS,
-                                position_cm.POSITION_CM)}
+__all__ = ["KINDS", "QuantityKind", "StateChange", "describe_capitalized", "directional", "parse", "sense"]
 
 
 #: Every quantity of this package, by kind.
-KINDS: dict[str, QuantityKind] = _kinds()
+KINDS: dict[str, QuantityKind] = {k.kind: k for k in (torque.TORQUE, turns.TURNS, distance.DISTANCE,
+                                                      center_of_mass.CENTER_OF_MASS, position_cm.POSITION_CM)}
 
 
 def sense(scene, quantity: Quantity, coords, sample) -> Sense | None:

@@ -19,7 +19,7 @@ import sympy as sp
 
 from derive.core.tidying import tidy
 from derive.model.scene import Quantity
-from derive.quantities import QuantityKind
+from derive.quantities.base import QuantityKind
 
 
 class CenterOfMass(QuantityKind):

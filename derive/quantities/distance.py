@@ -19,8 +19,9 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.core.tidying import root, tidy
+from derive.numbers import intervals
 from derive.model.scene import Quantity
-from derive.quantities import QuantityKind, StateChange
+from derive.quantities.base import QuantityKind, StateChange
 
 
 class Distance(StateChange, QuantityKind):
@@ -35,14 +36,15 @@ class Distance(StateChange, QuantityKind):
         return Quantity(self.kind, head, None)
 
     def at(self, solution, ask, values: dict, before: dict) -> sp.Expr:
-        from derive.solution import answer_signs  # the problem reader imports this package: not at its top
         coords, body = solution.coordinates, ask.quantity.target
         moved = [values[coords.of(body, k).q] - before[coords.of(body, k).q] for k in ("x", "y")]
         length = sp.sqrt(sp.trigsimp(moved[0] ** 2 + moved[1] ** 2))  # 1/|sin(theta)|, not sqrt(tan^2 + 1)/|tan|
-        if all(a.args[0].free_symbols for a in length.atoms(sp.Abs)):  # each |a| whose sign is proven over the ranges
-            length = length.xreplace({a: answer_signs.magnitude(solution.problem, a.args[0], proven=True)
-                                      for a in length.atoms(sp.Abs)})
-        return tidy(length) if not length.has(sp.Abs) else root(moved[0] ** 2 + moved[1] ** 2)
+        box = {p.symbol: p.si_ends for p in solution.problem.parameters.values() if p.range or p.value is not None}
+        signs = {a: next((s for s in (1, -1) if a.args[0].free_symbols <= set(box)
+                          and intervals.positive_over(s * a.args[0], box, strict=True)), None) for a in length.atoms(sp.Abs)}
+        if None in signs.values():  # a sign not proven over the ranges: the root as it is
+            return root(moved[0] ** 2 + moved[1] ** 2)
+        return tidy(length.xreplace({a: s * a.args[0] for a, s in signs.items()}))
 
     def describe(self, ask) -> str:
         return f"the distance the {ask.quantity.target} moves"

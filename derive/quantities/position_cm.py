@@ -16,8 +16,8 @@ import sympy as sp
 
 from derive.core.tidying import tidy
 from derive.model.scene import Quantity
-from derive.quantities import QuantityKind
-from derive.solution import system
+from derive.quantities.base import QuantityKind
+from derive.model import placement
 
 
 class PositionFromCenterOfMass(QuantityKind):
@@ -38,9 +38,9 @@ class PositionFromCenterOfMass(QuantityKind):
         scene, body = solution.scene, ask.quantity.target
         index = 0 if ask.quantity.detail == "x" else 1
         if route == 0:
-            return tidy((system.position(scene, body) - system.center_of_mass(scene))[index])
+            return tidy((placement.position(scene, body) - placement.center_of_mass(scene))[index])
         total = sum((b.mass for b in scene.bodies.values()), sp.Integer(0))
-        return tidy(sum(((system.position(scene, body) - system.position(scene, n))[index] * b.mass
+        return tidy(sum(((placement.position(scene, body) - placement.position(scene, n))[index] * b.mass
                          for n, b in scene.bodies.items()), sp.Integer(0)) / total)
 
     def describe(self, ask) -> str:

@@ -31,10 +31,10 @@ import sympy as sp
 
 from derive.core.spelling import did_you_mean
 from derive.core.tidying import tidy
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.model.scene import Quantity
 from derive.parts import AppliedForce, AppliedTorque
-from derive.quantities import QuantityKind
+from derive.quantities.base import QuantityKind
 from derive.text.prose import Sentence
 
 #: The subscripts of a load's torque in the worked solution, by its label.

@@ -24,7 +24,7 @@ import sympy as sp
 
 from derive.core.tidying import tidy
 from derive.model.scene import Quantity
-from derive.quantities import QuantityKind, StateChange
+from derive.quantities.base import QuantityKind, StateChange
 
 
 class Turns(StateChange, QuantityKind):

@@ -23,7 +23,7 @@ from derive.model import inertia
 from derive.core import limits
 from derive.solution.crosschecks import sample_points
 from derive.mechanics import friction, orbits, rolling, rolling_coin
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.parts.cord import Cord
 from derive.language.problem import Ask
 from derive.core.expr import TIME
@@ -45,6 +45,36 @@ class AnswerSteps:
             return {"integration": [self._static_step(a) for a in self.problem.asks.values()]}
         windings = self.winding_steps() if kinds & DYNAMIC_KINDS else []
         return {"how the cords run": windings, **self._route_steps(kinds)} if windings else self._route_steps(kinds)
+
+    def _needed_unknowns(self, state: str | None = None) -> set[sp.Symbol]:
+        """The accelerations and forces the quantities asked in a state (None: the placement at
+        rest) are made of."""
+        needed = set()
+        for ask in self.problem.asks.values():
+            q = ask.quantity
+            if ask.state != state:
+                continue
+            if q.kind == "acceleration":
+                needed.add(self.coordinates.of(q.target, q.detail).a)
+            elif q.kind == "angular_acceleration":
+                needed.add(self.coordinates.of(q.target, "theta").a)
+            elif q.kind == "force":
+                needed.add(self.dynamics_scene.constraint(q.target).unknowns()[q.detail])
+            elif q.kind == "contact":
+                forces = self.dynamics_scene.contact_of(q.target).unknowns()
+                if q.detail in ("normal_force", "min_friction_coefficient"):
+                    needed.add(forces["normal"])
+                if q.detail in ("friction", "min_friction_coefficient"):
+                    needed.add(forces["friction"])
+                if q.detail in ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom"):
+                    needed |= {self.coordinates.of(q.target, k).a for k in ("x", "y")}
+            elif q.kind == "small_oscillation" and self.freedoms > 1:
+                needed |= {c.a for c in self.normal_modes["lagrange"].coordinates}
+            elif q.kind in ("small_oscillation", "oscillation"):
+                needed.add(self.oscillations["lagrange"].coordinate.a)
+            elif q.kind in quantities.KINDS:
+                needed |= quantities.KINDS[q.kind].unknowns(self, ask)
+        return needed
 
     def winding_steps(self) -> list[Step]:
         """The sense each cord goes round each circle its file names a `side:` of, where it touches

@@ -25,7 +25,8 @@ from derive.core import limits
 from derive.core.errors import EngineLimit
 from derive.mechanics import (lagrange, many_bodies, newton_euler, orbits, paths, quantum, rolling, durations, friction, states as state_motion)
 from derive.mechanics.conservation import ConservationError, EnergyBalance, speed_after_drop
-from derive.mechanics.derivation import Derivation, Indeterminate, Solved, Step
+from derive.mechanics.derivation import Derivation, Indeterminate, Solved
+from derive.text.steps import Step
 from derive.core.tidying import root, tidy
 from derive.mechanics.equilibrium import Equilibrium, EquilibriumError, EquilibriumLimit, equilibrium
 from derive.model.kinematics import Coordinates
@@ -572,33 +573,3 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
     @cached_property
     def expressions(self) -> dict[str, sp.Expr]:
         return {name: self.expression(name) for name in self.problem.asks}
-
-    def _needed_unknowns(self, state: str | None = None) -> set[sp.Symbol]:
-        """The accelerations and forces the quantities asked in a state (None: the placement at
-        rest) are made of."""
-        needed = set()
-        for ask in self.problem.asks.values():
-            q = ask.quantity
-            if ask.state != state:
-                continue
-            if q.kind == "acceleration":
-                needed.add(self.coordinates.of(q.target, q.detail).a)
-            elif q.kind == "angular_acceleration":
-                needed.add(self.coordinates.of(q.target, "theta").a)
-            elif q.kind == "force":
-                needed.add(self.dynamics_scene.constraint(q.target).unknowns()[q.detail])
-            elif q.kind == "contact":
-                forces = self.dynamics_scene.contact_of(q.target).unknowns()
-                if q.detail in ("normal_force", "min_friction_coefficient"):
-                    needed.add(forces["normal"])
-                if q.detail in ("friction", "min_friction_coefficient"):
-                    needed.add(forces["friction"])
-                if q.detail in ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom"):
-                    needed |= {self.coordinates.of(q.target, k).a for k in ("x", "y")}
-            elif q.kind == "small_oscillation" and self.freedoms > 1:
-                needed |= {c.a for c in self.normal_modes["lagrange"].coordinates}
-            elif q.kind in ("small_oscillation", "oscillation"):
-                needed.add(self.oscillations["lagrange"].coordinate.a)
-            elif q.kind in quantities.KINDS:
-                needed |= quantities.KINDS[q.kind].unknowns(self, ask)
-        return needed

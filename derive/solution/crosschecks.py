@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.core.memo import kept
-from derive.model import inertia
+from derive.model import inertia, placement
 from derive.core import limits, units
 from derive.numbers import numeric
 from derive.core.errors import EngineLimit
@@ -506,7 +506,7 @@ class CrossChecks:
         detail = "parallel-axis sum equals the composed tensor"
         bodies = list(self.scene.bodies.values())
         if len(bodies) == 2 and all(b.shape == "point" for b in bodies):
-            gap = system.position(self.scene, bodies[1].name) - system.position(self.scene, bodies[0].name)
+            gap = placement.position(self.scene, bodies[1].name) - placement.position(self.scene, bodies[0].name)
             if agree(total, many_bodies.reduced_mass(bodies[0].mass, bodies[1].mass) * gap.dot(gap)) is None:
                 raise CheckFailure(f"{self.problem.id}: I differs from mu d^2")
             detail += "; I = mu d^2"

@@ -14,7 +14,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.mechanics import angular_impulse, bearings, fixed_point, free_rotation, rolling_coin
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.parts.torque import Torque
 from derive.model.scene import Quantity

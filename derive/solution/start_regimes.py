@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.mechanics import friction, reaching, states as state_motion
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.parts.contact import Contact
 from derive.text.prose import Sentence

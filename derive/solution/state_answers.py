@@ -22,7 +22,8 @@ import sympy as sp
 from derive.core.memo import kept
 from derive.core import limits
 from derive.mechanics import (durations, friction, grips, impacts, lagrange, moves, newton_euler, reaching, states as state_motion)
-from derive.mechanics.derivation import Solved, Step
+from derive.mechanics.derivation import Solved
+from derive.text.steps import Step
 from derive.core.tidying import root, tidy
 from derive.parts.clutch import Clutch
 from derive.parts.contact import Contact

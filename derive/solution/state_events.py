@@ -20,7 +20,7 @@ import sympy as sp
 
 from derive.core.memo import kept
 from derive.mechanics import impacts, impulses, moves, transfers, reaching, states as state_motion
-from derive.mechanics.derivation import Step
+from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.parts.contact import Contact
 from derive.parts.pin import Pin

@@ -1,5 +1,5 @@
-"""What a system of bodies placed in the plane is asked: a body's position, the center of mass, the
-moment of inertia about it and the reduced mass of two bodies.
+"""What a system of bodies placed in the plane is asked: the moment of inertia about its center of
+mass and the reduced mass of two bodies.
 
 >>> from derive.language.problem import load
 >>> scene = load("diatomic_molecule").scene
@@ -13,17 +13,7 @@ import sympy as sp
 from derive.core.tidying import tidy
 from derive.mechanics import many_bodies
 from derive.model import inertia
-
-
-def position(scene, body: str) -> sp.Matrix:
-    """Where a body is placed (its motion's position; the origin for a body with none)."""
-    motion = scene.motions.get(body)
-    return sp.Matrix(motion.position) if motion else sp.zeros(2, 1)
-
-
-def center_of_mass(scene) -> sp.Matrix:
-    total = sum((b.mass for b in scene.bodies.values()), sp.Integer(0))
-    return sum((b.mass * position(scene, n) for n, b in scene.bodies.items()), sp.zeros(2, 1)) / total
+from derive.model.placement import center_of_mass, position
 
 
 def quantity(scene, detail: str, route: str) -> sp.Expr:

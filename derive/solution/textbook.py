@@ -29,7 +29,8 @@ import sympy as sp
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
 from derive.mechanics.angular_momentum import AboutAxle, about_axle
 from derive.core.tidying import tidy
-from derive.mechanics.derivation import KINETIC, Step
+from derive.mechanics.derivation import KINETIC
+from derive.text.steps import Step
 from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
