@@ -1,5 +1,6 @@
 """Kepler orbits: derived closed forms against a numerical integration of the orbit."""
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -68,3 +69,15 @@ def test_an_open_orbit_is_refused(tmp_path):
     path.write_text(path.read_text().replace("range: [0, 0.9]", "range: [0, 1.2]"))
     done = run_derive("solve", "kepler_orbit", library=library)
     assert done.returncode == 2 and "scene.orbit.eccentricity: an ellipse has 0 <= e < 1" in done.stderr
+
+
+@pytest.mark.parametrize("speeds, message", [("[4.5e4, 5.2e4]", "must be bound"), ("[3.0e4, 3.5e4]", "the apoapsis")])
+def test_an_orbit_from_a_periapsis_that_is_not_one_is_refused(tmp_path, speeds, message):
+    """Above the escape speed at the closest point the orbit is open; below the circular speed the
+    point given is the farthest, not the closest."""
+    text = (Path(__file__).parent / "textbook" / "comet_from_periapsis.yaml").read_text()
+    path = tmp_path / "comet.yaml"
+    path.write_text(text.replace("[4.3e4, 5.0e4]", speeds))
+    result = run_derive("solve", str(path))
+    assert result.returncode == 2 and "scene.orbit.speed_at_periapsis" in result.stderr, result.stderr
+    assert message in result.stderr

@@ -42,6 +42,14 @@ def _wedge_vy(s):
 
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
+    # Serway & Jewett ch. 13: an ellipse from its periapsis r_p and the speed v_p there. The energy gives
+    # a = GM r_p/(2 GM - r_p v_p^2); the farthest distance is 2a - r_p; Kepler's second law v_a r_a = v_p r_p;
+    # the third, P = 2 pi sqrt(a^3/GM).
+    "comet_from_periapsis": {
+        "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
+        "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),
+        "P": lambda s: 2 * sp.pi * sp.sqrt((s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2)) ** 3 / s.GM),
+    },
     # Where a scene rests (derive.mechanics.equilibrium). Serway & Jewett ch. 5: a ball on a
     # string of length L pushed by a horizontal F rests at tan(theta) = F/(m g) from the vertical.
     "bob_pushed_aside": {

@@ -68,7 +68,10 @@ INTERNAL_FORCES = Keys(bodies=Key("integer", "how many bodies, 2 to 5", required
 ORBIT = Keys(GM=Key("expression", "the central body's G M, in m^3/s^2", required=True),
              angular_momentum=Key("expression", "the angular momentum per unit mass, in m^2/s"),
              semi_major_axis=Key("expression", "the ellipse's semi-major axis, in m"),
-             eccentricity=Key("expression", "the ellipse's eccentricity, 0 to 1"))
+             eccentricity=Key("expression", "the ellipse's eccentricity, 0 to 1"),
+             periapsis=Key("expression", "the closest distance to the central body, in m (with speed_at_periapsis, "
+                                         "in place of semi_major_axis and eccentricity)"),
+             speed_at_periapsis=Key("expression", "the speed there, in m/s"))
 
 
 def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str) -> Contact | None:
@@ -512,6 +515,28 @@ def _couples_in_3d(reader: Reader, raw: list, loads: list, pivoted: dict) -> Non
                                                "and duration: dt")
 
 
+def _orbit_from_periapsis(reader: Reader, raw: dict, field: str, GM: sp.Expr, l) -> Orbit:
+    """An ellipse given by its periapsis r_p and the speed v_p there: the energy v_p^2/2 - GM/r_p is
+    -GM/(2a), so a = GM r_p/(2 GM - r_p v_p^2); and r_p = a(1 - e), so e = r_p v_p^2/GM - 1. Bound
+    (2 GM > r_p v_p^2) and a periapsis (v_p^2 >= GM/r_p, at least the circular speed) over the
+    declared ranges, or refused."""
+    missing = [k for k in ("periapsis", "speed_at_periapsis") if k not in raw]
+    if missing or "semi_major_axis" in raw or "eccentricity" in raw or l is not None:
+        raise reader.fail(field, "an ellipse from its periapsis needs periapsis and speed_at_periapsis, and "
+                                 "nothing else of its shape (semi_major_axis, eccentricity, angular_momentum)")
+    rp = reader.positive(raw["periapsis"], f"{field}.periapsis", "m", "a periapsis")
+    vp = reader.positive(raw["speed_at_periapsis"], f"{field}.speed_at_periapsis", "m/s", "a speed")
+    if not reader.proven_over_ranges(2 * GM - rp * vp**2):
+        raise reader.fail(f"{field}.speed_at_periapsis", "the orbit must be bound for every allowed parameter "
+                                                         "value: v_p^2 < 2 GM/r_p (at the escape speed or above it "
+                                                         "is a parabola or hyperbola)")
+    if not reader.proven_over_ranges(rp * vp**2 - GM, strict=False):
+        raise reader.fail(f"{field}.speed_at_periapsis", "at the closest point the speed is at least the circular "
+                                                         "speed, v_p^2 >= GM/r_p, for every allowed parameter value "
+                                                         "(slower, the point is the farthest: the apoapsis)")
+    return Orbit(GM, None, sp.simplify(GM * rp / (2 * GM - rp * vp**2)), sp.simplify(rp * vp**2 / GM - 1), (rp, vp))
+
+
 def _orbit(reader: Reader, raw) -> Orbit:
     field = "scene.orbit"
     raw = reader.mapping(raw, field, keys=ORBIT)
@@ -520,6 +545,8 @@ def _orbit(reader: Reader, raw) -> Orbit:
     if "angular_momentum" in raw:
         l = reader.positive(raw["angular_momentum"], f"{field}.angular_momentum", "m^2/s", "an angular momentum per unit mass")
     a = e = None
+    if "periapsis" in raw or "speed_at_periapsis" in raw:
+        return _orbit_from_periapsis(reader, raw, field, GM, l)
     if ("semi_major_axis" in raw) != ("eccentricity" in raw):
         raise reader.fail(field, "an ellipse needs both semi_major_axis and eccentricity")
     if "semi_major_axis" in raw:

@@ -76,7 +76,8 @@ def conic(GM: sp.Expr, l: sp.Expr) -> tuple[sp.Expr, sp.Symbol]:
 
 
 def kepler(GM: sp.Expr, a: sp.Expr, e: sp.Expr) -> dict[str, sp.Expr]:
-    """E (per unit mass), l (per unit mass), period, periapsis and apoapsis of the ellipse (a, e)."""
+    """E (per unit mass), l (per unit mass), period, periapsis and apoapsis of the ellipse (a, e), and the
+    speeds there (l / r: the velocity is perpendicular to r at both)."""
     l = sp.Symbol("l", positive=True)
     orbit, e_symbol = conic(GM, l)
     orbit = orbit.subs(e_symbol, e)
@@ -88,4 +89,5 @@ def kepler(GM: sp.Expr, a: sp.Expr, e: sp.Expr) -> dict[str, sp.Expr]:
     semi_minor = sp.sqrt(periapsis * apoapsis)
     period = sp.simplify(sp.pi * a * semi_minor / (l_value / 2))  # area / areal velocity (Kepler's 2nd law)
     return {"energy": energy, "angular_momentum": l_value, "period": period,
-            "periapsis": periapsis, "apoapsis": apoapsis}
+            "periapsis": periapsis, "apoapsis": apoapsis,
+            "speed_at_periapsis": speed, "speed_at_apoapsis": sp.simplify(l_value / apoapsis)}

@@ -114,12 +114,14 @@ class Body:
 @dataclass(frozen=True)
 class Orbit:
     """A small mass in the inverse-square field of a mass M at the origin (per unit mass):
-    given its angular momentum l, or the ellipse's semi-major axis a and eccentricity e."""
+    given its angular momentum l, or the ellipse's semi-major axis a and eccentricity e (derived
+    from its distance and speed at periapsis where the file gives those: `periapsis_speed`)."""
 
     GM: sp.Expr
     angular_momentum: sp.Expr | None = None
     semi_major_axis: sp.Expr | None = None
     eccentricity: sp.Expr | None = None
+    periapsis_speed: tuple[sp.Expr, sp.Expr] | None = None  # (r_p, v_p) where the file gives the ellipse so
 
 
 #: What an orbit can be asked, and what each needs of the orbit's description.
@@ -127,6 +129,7 @@ ORBIT_QUANTITIES = {
     "circular_radius": "angular_momentum", "effective_potential_minimum": "angular_momentum",
     "energy": "semi_major_axis", "angular_momentum": "semi_major_axis", "period": "semi_major_axis",
     "periapsis": "semi_major_axis", "apoapsis": "semi_major_axis",
+    "speed_at_periapsis": "semi_major_axis", "speed_at_apoapsis": "semi_major_axis",
 }
 
 

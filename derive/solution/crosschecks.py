@@ -481,6 +481,11 @@ class CrossChecks:
             if agree(*at) is None or agree(at[0], k["energy"]) is None:
                 raise CheckFailure(f"{self.problem.id}: the energy differs at periapsis and apoapsis")
             detail += "; energy equal at periapsis and apoapsis"
+            if orbit.periapsis_speed is not None:  # the ellipse gives back the file's periapsis and speed there
+                given = orbit.periapsis_speed
+                if agree(k["periapsis"], given[0]) is None or agree(k["speed_at_periapsis"], given[1]) is None:
+                    raise CheckFailure(f"{self.problem.id}: the ellipse does not give back its periapsis and speed")
+                detail += "; the ellipse gives back the periapsis and its speed"
         return Check("lagrange_vs_newton_euler", True, "symbolic", detail,
                      "Lagrange's method and Newton's second law give the same orbit.")
 
