@@ -97,8 +97,8 @@ def test_an_incline_that_descends_to_the_left_is_the_mirror_image(tmp_path):
     the slope and friction, its center moving left and turning counter-clockwise (the mirror image)."""
     source = (textbook("sphere_rolls_incline")).read_text()
     mirrored = source.replace("{incline: {angle: theta}}", "{incline: {angle: theta, descends: left}}")
-    mirrored = mirrored.replace("ask:\n", "ask:\n  ax: {meaning: horizontal acceleration, of: hoop.acceleration.x, "
-                                "unit: m/s^2}\n  alpha: {meaning: angular acceleration, of: hoop.angular_acceleration, "
+    mirrored = mirrored.replace("ask:\n", "ask:\n  ax: {meaning: horizontal acceleration, of: ball.acceleration.x, "
+                                "unit: m/s^2}\n  alpha: {meaning: angular acceleration, of: ball.angular_acceleration, "
                                 "unit: rad/s^2}\n", 1)
     assert mirrored.count("descends: left") == 1
     right = Solution(parse(source, tmp_path / "right.yaml"))
