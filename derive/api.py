@@ -139,8 +139,9 @@ class Result:
         return Result(self.problem, self.solution, {**self.values, **_overrides(values)},
                       _digits(self.digits if digits is None else digits))
 
-    def as_text(self) -> str:
-        return report.as_text(self.report, self.solution)
+    def as_text(self, proof: bool = False) -> str:
+        """The terminal's report (`proof`: with both routes' equations of motion)."""
+        return report.as_text(self.report, self.solution, proof)
 
     def as_latex(self) -> str:
         return report.as_latex(self.report)

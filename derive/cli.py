@@ -200,13 +200,24 @@ def main(time_limit: float | None) -> None:
               help="Significant digits of every value (each one correct to the digits shown). "
                    "[default: derive.toml's digits, else the significant figures the inputs support "
                    "(15 in JSON)]")
+@click.option("--proof", is_flag=True,
+              help="Also print the equations of motion by Lagrange's method and by Newton–Euler, which the "
+                   "checks compare (printed anyway where no textbook route is written).")
 @reports_errors
-def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | None) -> None:
-    """Derive a problem and print its equations of motion, answers and checks.
+def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | None, proof: bool) -> None:
+    """Derive a problem and print its solution, answers and checks.
 
     PROBLEM is a problem file or a library id (see `derive list`). An answer gets a
     value when every parameter it uses has one (declared in the file or given with
-    --set); otherwise only its exact expression is printed.
+    --set); otherwise only its exact expression is printed. The solution is the route
+    a textbook takes (Newton's second law along the motion, energy, torques about a
+    pivot), where derive writes one; both routes' equations of motion with --proof.
+
+    \b
+    Examples:
+      derive solve sphere_rolls_incline
+      derive solve string_wrapped_disk --set m=1 --set M=2 --set R=0.5 --proof
+      derive solve problems/torque/seesaw.yaml --format json
     """
     from derive import api
     from derive.publishing.progress import Reporter
@@ -214,7 +225,7 @@ def solve(problem: str, assignments: tuple[str, ...], fmt: str, digits: int | No
     shown = Reporter("bar" if sys.stderr.isatty() else "none")  # a spinner at a terminal; nothing in a pipe
     with shown.waiting(f"deriving {problem}"), shown.steps_shown():
         result = api.solve(problem, parse_assignments(assignments), course_digits(digits, 15 if fmt == "json" else None))
-    click.echo({"text": result.as_text, "latex": result.as_latex, "json": result.as_json}[fmt]())
+    click.echo(result.as_text(proof) if fmt == "text" else {"latex": result.as_latex, "json": result.as_json}[fmt]())
 
 
 @main.command()

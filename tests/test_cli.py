@@ -71,7 +71,9 @@ def test_rod_inertia_values(derive):
 def test_text_and_latex_formats(derive):
     text = derive("solve", "string_wrapped_disk", "--set", "m=1", "--set", "M=2", "--set", "R=0.5")
     assert text.returncode == 0
-    assert "Equations of motion, Newton–Euler" in text.stdout
+    assert "The solution, as a textbook writes it" in text.stdout and "Equations of motion" not in text.stdout
+    proof = derive("solve", "string_wrapped_disk", "--set", "m=1", "--set", "M=2", "--set", "R=0.5", "--proof")
+    assert "Equations of motion, Newton–Euler" in proof.stdout
     lines = text.stdout.splitlines()
     at = lines.index("           2⋅m")  # sympy's unicode pretty-printer: the fraction over three lines
     assert lines[at + 1:at + 3] == ["  a = -g⋅─────── = -4.90 m/s²", "         M + 2⋅m"]  # the inputs' 3 figures
@@ -433,3 +435,14 @@ def test_list_filters_by_difficulty_and_tags():
         assert bad.returncode == 2 and "Invalid value" in bad.stderr, bad.stderr
     none = run_derive("list", "--topic", "inertia", "--tag", "yo-yo")
     assert none.returncode == 2 and none.stderr.strip() == "derive: error: no problems of topic 'inertia' and tagged yo-yo"
+
+
+def test_solve_prints_the_textbook_route_and_the_two_routes_with_proof(derive):
+    """A rolling sphere: the student's route (Newton's second law along the slope, the torque about the
+    center, rolling without slipping) in a few lines; the two routes' equations of motion only with --proof."""
+    text = derive("solve", "sphere_rolls_incline").stdout
+    assert "The solution, as a textbook writes it" in text and "Newton's second law for the ball" in text
+    assert "Equations of motion" not in text and "ẋ_ball" not in text
+    proof = derive("solve", "sphere_rolls_incline", "--proof").stdout
+    assert "Equations of motion, Lagrange's method" in proof and "Equations of motion, Newton–Euler" in proof
+    assert "The solution, as a textbook writes it:" in proof

@@ -174,15 +174,29 @@ def _where(condition) -> tuple:
     return ("otherwise",) if condition == sp.true else ("where ", condition)
 
 
-def as_text(result: dict, solution: Solution) -> str:
+def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
     """The report for a terminal: `result` (the JSON contract) with the expressions of `solution`
-    drawn by sympy's unicode pretty-printer and units as text reads them."""
+    drawn by sympy's unicode pretty-printer and units as text reads them. Where the problem has a
+    student's route (derive.solution.textbook), it is printed in place of the two routes' equations
+    of motion, which `proof` adds (the checks compare them either way)."""
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
     windings = result["steps"].get("how the cords run", [])
     if windings:
         lines += ["How the cords run (in the placement, at the middle of the ranges):",
                   *(f"  {step['text']}" for step in windings), ""]
-    for route, equations in equations_of_motion(solution).items():
+    student = solution.student_steps
+    if student:
+        lines += ["The solution, as a textbook writes it" + ("" if proof else " (the equations of motion by "
+                                                            "Lagrange's method and Newton–Euler: --proof)") + ":"]
+        for title, steps in student.items():
+            lines.append(f"  {title}")
+            for step in steps:
+                said = [line for s in step.sentences for line in s.text().splitlines()]
+                lines += indented(said + ([step.text.rstrip(":") + ":"] if step.text else []), "    ")
+                for equation in step.equations:
+                    lines += indented(pretty(equation), "      ")
+        lines.append("")
+    for route, equations in equations_of_motion(solution).items() if proof or not student else ():
         lines.append(f"Equations of motion, {route_title(route)} (in the reference configuration, at rest):")
         said = [line for step in solution.derivations[route].steps for s in step.sentences for line in s.text().splitlines()]
         lines += indented(said) + ([""] if said else [])
@@ -220,7 +234,7 @@ def as_text(result: dict, solution: Solution) -> str:
             lines += indented(pretty(f"{regime.name}: ", *_where(regime.where)))
         if result["regimes"][state]["applies"]:
             lines.append(f"  at these parameters it {result['regimes'][state]['applies']}")
-    if result["energy"]:
+    if result["energy"] and (proof or not student):  # the ledger in the engine's coordinates: the proof's
         lines += ["", "Energy:"]
         for kind, expression in solution.energy_ledger().items():
             lines += indented(pretty(f"{kind.replace('_', ' ')}: ", expression))
