@@ -94,7 +94,7 @@ EXPECTED = {
     "wheel_torque_turns_to_speed": {
         "n": lambda s: s.M * s.R**2 * s.w1**2 / (2 * s.tau), "t": lambda s: s.M * s.R**2 * s.w1 / s.tau,
     },
-    # Serway & Jewett 9th ed., ch. 10 problems / Kleppner & Kolenkow: a ball launched without spin skids
+    # Serway & Jewett 9th ed., ch. 10 problems: a ball launched without spin skids
     # t = 2 v0/(7 mu g), d = 12 v0^2/(49 mu g), turning 5 v0^2/(49 mu g R) rad.
     "bowling_ball_skid": {
         "t": lambda s: 2 * s.v0 / (7 * s.mu * s.g), "d": lambda s: 12 * s.v0**2 / (49 * s.mu * s.g),
