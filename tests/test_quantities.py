@@ -41,10 +41,142 @@ EXPECTED = {
     "three_masses_center": {
         "x": lambda s: s.m2 * s.a / (s.m1 + s.m2 + s.m3), "y": lambda s: s.m3 * s.b / (s.m1 + s.m2 + s.m3),
     },
+    # Serway & Jewett 9th ed., Example 12.1: the torque of each child's weight about the pivot is m g times its arm.
+    "seesaw_torques": {
+        "t1": lambda s: s.m1 * s.g * s.L / 2, "t2": lambda s: s.m2 * s.g * s.L / 2, "tw": lambda s: 0,
+        "net": lambda s: (s.m1 - s.m2) * s.g * s.L / 2,
+    },
+    # Serway & Jewett 9th ed., Example 12.3 (beam and cable): about the hinge the cable's torque balances the weight's M g L/2.
+    "beam_cable_torques": {"tw": lambda s: s.M * s.g * s.L / 2, "tc": lambda s: s.M * s.g * s.L / 2, "net": lambda s: 0},
+    # Halliday, Resnick & Walker 10th ed., ch. 12: torque = force times lever arm, about the hinge and about the far end.
+    "beam_hinge_push": {
+        "tp": lambda s: s.F * s.d, "twe": lambda s: s.M * s.g * s.L / 2, "tpe": lambda s: s.F * (s.L - s.d),
+        "twc": lambda s: 0,
+    },
+    # Serway & Jewett 9th ed., Example 12.3 (ladder): about the foot, M g (L/2) cos(theta) = P L sin(theta).
+    "ladder_torques": {
+        "tw": lambda s: s.M * s.g * s.L * sp.cos(s.theta) / 2, "tp": lambda s: s.M * s.g * s.L * sp.cos(s.theta) / 2,
+        "net": lambda s: 0, "tf": lambda s: s.M * s.g * s.L * sp.cos(s.theta) / 2,
+    },
+    # Halliday, Resnick & Walker 10th ed., sec. 11-3: a yo-yo's string pulls T = M g/3, torque T R about its center;
+    # about the point where the string leaves, the net torque I_P alpha = M g R is the weight's.
+    "yoyo_string_torque": {
+        "ts": lambda s: s.M * s.g * s.R / 3, "tw": lambda s: s.M * s.g * s.R, "net": lambda s: s.M * s.g * s.R,
+    },
+    # Young & Freedman 14th ed., ch. 10: a hinged rod released at beta below the horizontal, alpha = 3 g cos(beta)/(2 L):
+    # the weight's torque about the hinge, I_cm alpha about the center, and (I_cm - M L^2/4) alpha about the free end.
+    "rod_released_at_angle_torques": {
+        "tw": lambda s: s.M * s.g * s.L * sp.cos(s.beta) / 2, "th": lambda s: s.M * s.g * s.L * sp.cos(s.beta) / 8,
+        "te": lambda s: s.M * s.g * s.L * sp.cos(s.beta) / 4,
+    },
+    # Young & Freedman 14th ed., ch. 10: kinetic friction mu M g at the contact of a skidding ball, alpha = 5 mu g/(2 R).
+    "bowling_ball_friction_torque": {
+        "tf": lambda s: s.mu * s.M * s.g * s.R, "alpha": lambda s: 5 * s.mu * s.g / (2 * s.R),
+    },
+    # Serway & Jewett 9th ed., sec. 10.9: a rolling cylinder's friction (1/3) M g sin(theta), its torque f R about the
+    # center; about the contact point the net torque, the weight's, M g R sin(theta).
+    "cylinder_friction_torque": {
+        "tf": lambda s: s.M * s.g * s.R * sp.sin(s.theta) / 3, "tw": lambda s: s.M * s.g * s.R * sp.sin(s.theta),
+        "net": lambda s: s.M * s.g * s.R * sp.sin(s.theta), "netc": lambda s: s.M * s.g * s.R * sp.sin(s.theta) / 3,
+    },
+    # Serway & Jewett 9th ed., sec. 10.6 (and Halliday, Resnick & Walker ch. 10): tau = r F sin(phi).
+    "door_pushed_at_angle": {"tau": lambda s: s.F * s.L * sp.sin(s.phi), "net": lambda s: s.F * s.L * sp.sin(s.phi)},
+    # Halliday, Resnick & Walker 10th ed., sec. 11-3: a yo-yo turns one radian per R its center falls (rad here, SI).
+    "yoyo_turns_falling": {"n": lambda s: s.h / s.R, "d": lambda s: s.h},
+    # Serway & Jewett 9th ed., sec. 10.9: s = R theta over the incline's length H/sin(beta); v = sqrt(4 g H/3).
+    "cylinder_turns_to_bottom": {
+        "n": lambda s: s.H / (s.R * sp.sin(s.beta)), "d": lambda s: s.H / sp.sin(s.beta),
+        "v": lambda s: sp.sqrt(4 * s.g * s.H / 3),
+    },
+    # Halliday, Resnick & Walker 10th ed., ch. 10: a frictional torque C stops a wheel after I w0^2/(2 C), I = M R^2/2.
+    "brake_turns_to_stop": {"n": lambda s: s.M * s.R**2 * s.w0**2 / (4 * s.C)},
+    # Serway & Jewett 9th ed., ch. 10: omega^2 = 2 (tau/I) theta, omega = (tau/I) t, a hoop I = M R^2.
+    "wheel_torque_turns_to_speed": {
+        "n": lambda s: s.M * s.R**2 * s.w1**2 / (2 * s.tau), "t": lambda s: s.M * s.R**2 * s.w1 / s.tau,
+    },
+    # Serway & Jewett 9th ed., ch. 10 problems: a ball launched without spin skids
+    # t = 2 v0/(7 mu g), d = 12 v0^2/(49 mu g), turning 5 v0^2/(49 mu g R) rad.
+    "bowling_ball_skid": {
+        "t": lambda s: 2 * s.v0 / (7 * s.mu * s.g), "d": lambda s: 12 * s.v0**2 / (49 * s.mu * s.g),
+        "n": lambda s: 5 * s.v0**2 / (49 * s.mu * s.g * s.R),
+    },
+    # Halliday, Resnick & Walker 10th ed., ch. 8: (1/2) m v0^2 = mu_k m g d; t = v0/(mu_k g).
+    "block_slides_to_stop_floor": {
+        "d": lambda s: s.v0**2 / (2 * s.mu * s.g), "t": lambda s: s.v0 / (s.mu * s.g),
+    },
+    # Young & Freedman 14th ed., ch. 10: a hoop rolling up a slope at v0 goes v0^2/(g sin(beta)), turning d/R rad.
+    "hoop_rolls_up_incline": {
+        "d": lambda s: s.v0**2 / (s.g * sp.sin(s.beta)), "n": lambda s: s.v0**2 / (s.g * s.R * sp.sin(s.beta)),
+    },
+    # Halliday, Resnick & Walker 10th ed., ch. 11: a solid cylinder rolling up a ramp at v0 goes 3 v0^2/(4 g sin(theta)).
+    "disk_rolls_up_incline": {"d": lambda s: 3 * s.v0**2 / (4 * s.g * sp.sin(s.theta))},
+    # Serway & Jewett 9th ed., ch. 9: the Earth-Moon center of mass, and the Moon's distance from it.
+    "earth_moon_center": {
+        "x": lambda s: s.mM * s.d / (s.ME + s.mM), "xm": lambda s: s.ME * s.d / (s.ME + s.mM),
+    },
+    # Halliday, Resnick & Walker 10th ed., ch. 9: two rods in an L, each a particle at its own center.
+    "l_shaped_rods_center": {
+        "x": lambda s: s.m1 * s.L1 / (2 * (s.m1 + s.m2)), "y": lambda s: s.m2 * s.L2 / (2 * (s.m1 + s.m2)),
+    },
+    # Halliday, Resnick & Walker 10th ed., ch. 9 problems: the water molecule.
+    "water_molecule_center": {
+        "x": lambda s: 2 * s.mH * s.d * sp.cos(s.phi) / (s.mO + 2 * s.mH), "y": lambda s: 0,
+    },
+    # Halliday, Resnick & Walker 10th ed., ch. 9 problems: an Atwood machine's center of mass drops (m1 - m2) h/(m1 + m2).
+    "atwood_center_moves": {
+        "y0": lambda s: -s.D, "y": lambda s: -s.D - (s.m1 - s.m2) * s.h / (s.m1 + s.m2),
+    },
+    # Young & Freedman 14th ed., ch. 8: a rod from the origin and a disk beyond its end, each at its own center.
+    "rod_and_disk_center": {
+        "x": lambda s: (s.m * s.L / 2 + s.M * (s.L + s.R)) / (s.m + s.M),
+        "xd": lambda s: s.L + s.R - (s.m * s.L / 2 + s.M * (s.L + s.R)) / (s.m + s.M),
+    },
+    # Kleppner & Kolenkow 2nd ed., ch. 4: no horizontal force, so a rod on a smooth floor falls with its center's x kept.
+    "rod_falls_flat_center": {
+        "x0": lambda s: s.L * sp.sin(s.theta0) / 2, "x": lambda s: s.L * sp.sin(s.theta0) / 2, "y": lambda s: 0,
+    },
+    # Serway & Jewett 9th ed., ch. 10: a = m g/(m + M/2) for a block on a cord wound on a disk, solved for m.
+    "hanging_mass_for_acceleration": {"mb": lambda s: s.M * s.a1 / (2 * (s.g - s.a1))},
+    # Kleppner & Kolenkow 2nd ed., ch. 7: a = (m1 - m2) g/(m1 + m2 + M/2), solved for m1.
+    "atwood_mass_for_acceleration": {"mh": lambda s: (s.m2 * (s.g + s.a1) + s.M * s.a1 / 2) / (s.g - s.a1)},
+    # Serway & Jewett 9th ed., ch. 10: a rolling solid sphere reaches v = sqrt(10 g h/7), so h = 7 v^2/(10 g).
+    "sphere_release_height": {"h": lambda s: 7 * s.v1**2 / (10 * s.g)},
+    # Serway & Jewett 9th ed., ch. 10: omega^2 = 2 alpha phi with alpha = m g/(R (m + M/2)) and v = R omega (rad, SI).
+    "wheel_turns_for_block_speed": {"n": lambda s: s.v1**2 * (s.m + s.M / 2) / (2 * s.m * s.g * s.R)},
 }
 #: The direction in words each directed answer is given with, in every variant.
 DIRECTIONS = {("rod_hinge_torques", "tau"): "clockwise", ("rod_hinge_torques", "netc"): "clockwise",
-              ("ball_rolls_up_incline", "n"): "counter-clockwise"}
+              ("ball_rolls_up_incline", "n"): "counter-clockwise",
+              ("seesaw_torques", "t1"): "counter-clockwise",
+              ("seesaw_torques", "t2"): "clockwise",
+              ("seesaw_torques", "net"): "counter-clockwise",
+              ("beam_cable_torques", "tw"): "clockwise",
+              ("beam_cable_torques", "tc"): "counter-clockwise",
+              ("beam_hinge_push", "tp"): "counter-clockwise",
+              ("beam_hinge_push", "twe"): "counter-clockwise",
+              ("beam_hinge_push", "tpe"): "clockwise",
+              ("ladder_torques", "tw"): "counter-clockwise",
+              ("ladder_torques", "tp"): "clockwise",
+              ("ladder_torques", "tf"): "counter-clockwise",
+              ("yoyo_string_torque", "ts"): "clockwise",
+              ("yoyo_string_torque", "tw"): "clockwise",
+              ("yoyo_string_torque", "net"): "clockwise",
+              ("rod_released_at_angle_torques", "tw"): "clockwise",
+              ("rod_released_at_angle_torques", "th"): "clockwise",
+              ("rod_released_at_angle_torques", "te"): "counter-clockwise",
+              ("bowling_ball_friction_torque", "tf"): "clockwise",
+              ("cylinder_friction_torque", "tf"): "clockwise",
+              ("cylinder_friction_torque", "tw"): "clockwise",
+              ("cylinder_friction_torque", "net"): "clockwise",
+              ("cylinder_friction_torque", "netc"): "clockwise",
+              ("door_pushed_at_angle", "tau"): "counter-clockwise",
+              ("door_pushed_at_angle", "net"): "counter-clockwise",
+              ("yoyo_turns_falling", "n"): "clockwise",
+              ("cylinder_turns_to_bottom", "n"): "clockwise",
+              ("brake_turns_to_stop", "n"): "counter-clockwise",
+              ("wheel_torque_turns_to_speed", "n"): "counter-clockwise",
+              ("bowling_ball_skid", "n"): "clockwise",
+              ("hoop_rolls_up_incline", "n"): "counter-clockwise",}
 
 
 def test_every_file_has_its_closed_forms():
