@@ -143,6 +143,40 @@ EXPECTED = {
     "sphere_release_height": {"h": lambda s: 7 * s.v1**2 / (10 * s.g)},
     # Serway & Jewett 9th ed., ch. 10: omega^2 = 2 alpha phi with alpha = m g/(R (m + M/2)) and v = R omega (rad, SI).
     "wheel_turns_for_block_speed": {"n": lambda s: s.v1**2 * (s.m + s.M / 2) / (2 * s.m * s.g * s.R)},
+    # Kleppner & Kolenkow ch. 7: Atwood's machine with a disk pulley, a = (m1 - m2) g/(m1 + m2 + M/2); the cord's
+    # net torque on the pulley (T1 - T2) R = (M R^2/2) a/R.
+    "atwood_pulley_torques": {
+        "tr": lambda s: s.M * s.R * s.g * (s.m1 - s.m2) / (s.M + 2 * s.m1 + 2 * s.m2),
+        "net": lambda s: s.M * s.R * s.g * (s.m1 - s.m2) / (s.M + 2 * s.m1 + 2 * s.m2),
+    },
+    # Serway & Jewett ch. 8: up a rough incline at v0, d = v0^2/(2 g (sin(theta) + mu_k cos(theta))).
+    "block_slides_up_rough_incline": {"d": lambda s: s.v0**2 / (2 * s.g * (sp.sin(s.theta) + s.mu * sp.cos(s.theta)))},
+    # Serway & Jewett ch. 10 problems: a ball launched without spin skids 12 v0^2/(49 mu g), turning 5 v0^2/(49 mu g R) rad.
+    "bowling_ball_skid_distance": {
+        "d": lambda s: 12 * s.v0**2 / (49 * s.mu * s.g), "n": lambda s: 5 * s.v0**2 / (49 * s.mu * s.g * s.R),
+    },
+    # Serway & Jewett sec. 10.6: tau = r F sin(phi), so the torque tau0 needs sin(phi) = tau0/(r F).
+    "door_angle_for_torque": {"ang": lambda s: sp.asin(s.tau0 / (s.F * s.L))},
+    # Serway & Jewett Example 12.3: about the foot the weight's torque M g (L/2) cos(theta) balances the wall's push;
+    # about the top, the floor's force has the same moment.
+    "ladder_torques_rough": {
+        "tw": lambda s: s.M * s.g * s.L * sp.cos(s.theta) / 2, "tp": lambda s: s.M * s.g * s.L * sp.cos(s.theta) / 2,
+        "net": lambda s: sp.Integer(0), "tf": lambda s: s.M * s.g * s.L * sp.cos(s.theta) / 2,
+    },
+    # Halliday, Resnick & Walker sec. 11-6: tau_z = x F_y - y F_x.
+    "particle_force_torque": {
+        "tau": lambda s: s.F * (s.a * sp.sin(s.phi) - s.b * sp.cos(s.phi)), "tq": lambda s: s.F * s.b * sp.cos(s.phi),
+    },
+    # Serway & Jewett ch. 10: a solid ball rolling up an incline at v0 goes 7 v0^2/(10 g sin(theta)): D needs
+    # v0 = sqrt(10 g D sin(theta)/7).
+    "ramp_speed_for_distance": {"v": lambda s: sp.sqrt(10 * s.g * s.D * sp.sin(s.theta) / 7)},
+    # Serway & Jewett Example 12.1: the daughter balances the father at l = m_f d/m_d.
+    "seesaw_balance_point": {"x": lambda s: s.mf * s.d / s.md},
+    # Serway & Jewett ch. 10: omega^2 = 2 (tau/I) theta from rest, I = M R^2/2: tau = M R^2 w1^2/(4 theta), theta in
+    # rad (SI; the file's N turns).
+    "torque_for_turns_to_speed": {"T": lambda s: s.M * s.R**2 * s.w1**2 / (4 * s.N)},
+    # Halliday, Resnick & Walker sec. 11-3: a yo-yo turns one radian per R its center falls (rad here, SI).
+    "yoyo_turns_from_rest": {"n": lambda s: s.h / s.R, "d": lambda s: s.h},
 }
 #: The direction in words each directed answer is given with, in every variant.
 DIRECTIONS = {("rod_hinge_torques", "tau"): "clockwise", ("rod_hinge_torques", "netc"): "clockwise",
@@ -176,7 +210,10 @@ DIRECTIONS = {("rod_hinge_torques", "tau"): "clockwise", ("rod_hinge_torques", "
               ("brake_turns_to_stop", "n"): "counter-clockwise",
               ("wheel_torque_turns_to_speed", "n"): "counter-clockwise",
               ("bowling_ball_skid", "n"): "clockwise",
-              ("hoop_rolls_up_incline", "n"): "counter-clockwise",}
+              ("hoop_rolls_up_incline", "n"): "counter-clockwise",
+              ("ladder_torques_rough", "tw"): "counter-clockwise", ("ladder_torques_rough", "tp"): "clockwise",
+              ("particle_force_torque", "tau"): "counter-clockwise", ("particle_force_torque", "tq"): "clockwise",
+              ("atwood_pulley_torques", "tr"): "counter-clockwise"}
 
 
 def test_every_file_has_its_closed_forms():

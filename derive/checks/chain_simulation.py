@@ -181,7 +181,8 @@ def _answer(solution, report: SimulationReport, name: str, carried: dict, took: 
         simulated = _float(solution.rate_at(q, carried[state], carried.get(start)), values)
     elif isinstance(quantities.KINDS.get(q.kind), quantities.StateChange):
         start = solution.scene.states[state].start
-        simulated = _float(quantities.KINDS[q.kind].at(solution, ask, carried[state], carried[start]), values)
+        before = carried[start] if start else {s: sp.Integer(0) for c in coords.all for s in (c.q, c.u)}  # at rest
+        simulated = _float(quantities.KINDS[q.kind].at(solution, ask, carried[state], before), values)
     else:
         read = _unknown(solution, q, state)
         if read is None:

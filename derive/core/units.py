@@ -32,7 +32,7 @@ from derive.core.errors import InputError
 from derive.core.expr import ExprError, _build, _rational, _syntax_tree
 from derive.core.spelling import did_you_mean
 
-__all__ = ["UnitError", "UNITS", "parse_unit", "dimension", "si_factor", "in_unit", "parse_quantity",
+__all__ = ["UnitError", "UNITS", "parse_unit", "dimension", "si_factor", "in_unit", "declared_symbols", "parse_quantity",
            "to_unit", "expression_dimension", "same_dimension", "latex_unit", "siunitx_unit", "unicode_unit", "superscript",
            "sympy_units"]
 
@@ -167,6 +167,31 @@ def in_unit(value_si: sympy.Expr, unit: str) -> sympy.Expr:
     """
     factor = si_factor(unit)
     return value_si if factor == 1 else value_si / factor
+
+
+#: Units a parameter's symbol stands for in a printed formula, not for its SI value: a number of turns (N
+#: rev is 2 pi N rad) and a rate of them; an angle in degrees outside a sine or cosine (inside one,
+#: sin(theta) with theta in degrees is how a textbook writes it).
+COUNTED = ("rev", "rpm")
+
+
+def declared_symbols(expression: sympy.Expr, units_of: dict) -> sympy.Expr:
+    """A formula derived in SI, written in the parameters' declared units where a reader counts in them:
+    each parameter in rev or rpm (and in deg, outside a trigonometric function) is its SI value, so the
+    formula holds the symbol times its unit's factor.
+
+    >>> N, theta = sympy.symbols("N theta", positive=True)
+    >>> declared_symbols(N * sympy.sin(theta) + theta, {N: "rev", theta: "deg"})
+    2*pi*N*sin(theta) + pi*theta/180
+    """
+    factors = {s: si_factor(u) for s, u in units_of.items()
+               if s in expression.free_symbols and (u in COUNTED or u == "deg")}
+    if not factors:
+        return expression
+    trig = {t: sympy.Dummy() for t in expression.atoms(sympy.sin, sympy.cos, sympy.tan)
+            if any(units_of.get(s) == "deg" for s in t.free_symbols)}
+    scaled = expression.xreplace(trig).xreplace({s: s * f for s, f in factors.items()})
+    return scaled.xreplace({d: t for t, d in trig.items()})
 
 
 def _exact(value) -> sympy.Expr:

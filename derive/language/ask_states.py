@@ -17,7 +17,8 @@ from derive.parts.slipping_clutch import SlippingClutch
 def _of_kind(reader: Reader, raw, field: str, scene: Scene, kind, path: str) -> str | None:
     """The state an ask of a quantity of derive.quantities is read in, as its kind's `state` says:
     "never", "optional" (the placement at rest without `in:`) or "change" (from the state that
-    state comes from, which a move, made however one likes, leaves undetermined)."""
+    state comes from, or the placement at rest; a move, made however one likes, leaves it
+    undetermined)."""
     if raw is None:
         if kind.state == "change":
             raise reader.fail(field, f"{path} is a change from one state to the next: give in: STATE (states: "
@@ -28,9 +29,9 @@ def _of_kind(reader: Reader, raw, field: str, scene: Scene, kind, path: str) -> 
     if not isinstance(raw, str) or raw not in scene.states:
         raise reader.fail(field, no_such("state", raw, scene.states, "states") + ("; add scene.states" if not scene.states else ""))
     state = scene.states[raw]
-    if kind.state == "change" and state.start is None:
-        raise reader.fail(field, f"{path} is the change from the state {raw} comes from, and it comes from none: ask it "
-                                 "in a state with from:")
+    if kind.state == "change" and state.start is None and state.rates:
+        raise reader.fail(field, f"{path} is a change from one state to the next, and the state {raw} is the "
+                                 "placement moving at its rates: ask it in a state the motion gets to")
     if state.event and state.event.kind in ("move", "turn"):
         raise reader.fail(field, f"after a {state.event.kind}, where the bodies are depends on how it is made: ask "
                                  f"{path} in a state the motion gets to")

@@ -529,11 +529,13 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
                             and a.quantity.target == name for a in asks.values()):
             raise reader.fail(f"scene.bodies.{name}.inertia.transverse", "no ask reads it (the axle's turn, "
                                                                          "turn.axle, does; L's turn does not)")
-    if not kinds & DYNAMIC_KINDS:
+    if not kinds & DYNAMIC_KINDS and not any(k.reads_motion(a) for a in asks.values()
+                                             if (k := quantities.KINDS.get(a.quantity.kind)) is not None):
         for c in scene.constraints:
             if isinstance(c, Contact) and c.has_friction:
-                raise reader.fail(f"scene.bodies.{c.body}.friction", "nothing asked depends on the motion, so no "
-                                                                     "friction coefficient is used")
+                where = f"scene.bodies.{c.body}" if c.point is None else f"scene.joints.{c.name}"
+                raise reader.fail(f"{where}.friction", "nothing asked depends on the motion or the forces, so no "
+                                                       "friction coefficient is used")
 
 
 def load(reference: str | Path) -> Problem:

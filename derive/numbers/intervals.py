@@ -12,6 +12,8 @@ assumptions prove d*sin(theta) positive only for every positive theta, not for t
 True
 >>> positive_over(d * sp.sin(theta), {d: (1, 2), theta: (sp.Rational(1, 20), 4)})
 False
+>>> positive_over(d * sp.sin(theta) + d, {d: (10, 100), theta: (sp.Rational(1, 5), sp.Rational(7, 5))})
+True
 """
 from __future__ import annotations
 
@@ -22,6 +24,20 @@ from derive.numbers import balls
 
 PIECES = 256  # boxes tried at most: a sign that needs more is not proven
 BITS = 64
+
+
+def _strict_sign(factor: sp.Expr, box: dict[sp.Symbol, tuple]) -> int | None:
+    """+1 or -1 where the factor is proven to keep that sign (never zero) over the box, else None."""
+    if factor.is_number:
+        return 1 if factor > 0 else -1 if factor < 0 else None
+    return 1 if _by_balls(factor, box, True) else -1 if _by_balls(-factor, box, True) else None
+
+
+def _relative_width(low: sp.Expr, high: sp.Expr) -> float:
+    """A side's width against its size: midpoint-radius balls lose a product's sign by the relative
+    width of its factors ([10, 100] times [0.7, 1.2] straddles zero), so that side is split first."""
+    low, high = float(low), float(high)
+    return (high - low) / max(abs(low), abs(high), 1e-300)
 
 
 def _ball(low: sp.Expr, high: sp.Expr) -> arb:
@@ -38,6 +54,18 @@ def positive_over(expression: sp.Expr, box: dict[sp.Symbol, tuple], strict: bool
     (each symbol's closed interval of exact values), proven in balls; False where it is not, or
     where it could not be proven."""
     if not expression.free_symbols <= set(box) or not balls.mapped(expression):
+        return False
+    factors = sp.Mul.make_args(sp.factor_terms(expression))
+    if len(factors) > 1:  # a product: each factor's sign on its own (F L sin(phi) with F in [10, 100])
+        signs = [_strict_sign(f, box) for f in factors]
+        if None not in signs:
+            return sp.prod(signs) > 0
+    return _by_balls(expression, box, strict)
+
+
+def _by_balls(expression: sp.Expr, box: dict[sp.Symbol, tuple], strict: bool) -> bool:
+    """`positive_over` of the expression as a whole: its ball over the box, bisected."""
+    if not balls.mapped(expression):
         return False
     program = balls.Program([expression])
     pending = [{s: (sp.sympify(low, strict=True), sp.sympify(high, strict=True))  # safe: parsed ends, never text
@@ -56,7 +84,7 @@ def positive_over(expression: sp.Expr, box: dict[sp.Symbol, tuple], strict: bool
             continue
         if value.upper() < 0 or strict and value.upper() <= 0:
             return False
-        widest = max(program.symbols, key=lambda s: float(piece[s][1] - piece[s][0]), default=None)
+        widest = max(program.symbols, key=lambda s: _relative_width(*piece[s]), default=None)
         low, high = piece[widest] if widest is not None else (0, 0)
         if widest is None or high == low:
             return False

@@ -208,7 +208,9 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
         unit = units.unicode_unit(a["unit"])
         value = f" = {a['value']}{' ' + unit if unit else ''}" if a["value"] is not None else \
             (f"  [{unit}]" if unit else "")
-        lines += indented(pretty(sp.Symbol(name), " = ", units.in_unit(solution.expression(name), a["unit"]), value))
+        declared = {p.symbol: p.unit for p in solution.problem.parameters.values()}
+        shown = units.declared_symbols(units.in_unit(solution.expression(name), a["unit"]), declared)
+        lines += indented(pretty(sp.Symbol(name), " = ", shown, value))
         lines.append(f"    ({a['meaning']}{', ' + a['direction'] if a.get('direction') else ''})")
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:
             lines.append(f"    approximates {a['approximation']['exact']}: relative error "

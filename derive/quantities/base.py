@@ -53,6 +53,11 @@ class QuantityKind(ABC):
         return [Step(f"{describe_capitalized(self.describe(ask))}:",
                      (sp.Eq(sp.Symbol(ask.name), solution.signed_expression(ask.name)),))]
 
+    def reads_motion(self, ask) -> bool:
+        """Whether the answer depends on how the scene moves or on its forces (a friction
+        coefficient the file gives is then used): by default, where it is read in a state."""
+        return ask.state is not None
+
     def unknowns(self, solution, ask) -> set[sp.Symbol]:
         """The accelerations and forces of the derivation the answer is made of (shown in the steps)."""
         return set()
@@ -67,14 +72,22 @@ def describe_capitalized(text: str) -> str:
     return text[:1].upper() + text[1:]
 
 
+def _at_rest(coords) -> dict[sp.Symbol, sp.Expr]:
+    """The placement at rest, as a state's values: every coordinate and velocity zero."""
+    return {s: sp.Integer(0) for s in coords.at_rest_in_reference()}
+
+
 class StateChange:
     """A quantity read from where the bodies are and how they move in a state, against the state it
-    comes from (`at`, mixed in before QuantityKind): route 0 reads the states' closed forms; route 1
+    comes from (the placement at rest for a state without `from:`; `at`, mixed in before QuantityKind): route 0 reads the states' closed forms; route 1
     is the motion integrated numerically (derive.checks.chain_simulation reads `at` on its states),
     so `value` gives None for it."""
 
     state = "change"
     routes = ("the two states' closed forms", "the motion integrated numerically")
+
+    def reads_motion(self, ask) -> bool:
+        return True
 
     def at(self, solution, ask, values: dict, before: dict) -> sp.Expr:
         """The quantity in the state of coordinates and velocities `values`, from those `before`."""
@@ -84,4 +97,5 @@ class StateChange:
         if route == 1:
             return None
         start = solution.scene.states[ask.state].start
-        return self.at(solution, ask, solution.states[ask.state].values, solution.states[start].values)
+        before = solution.states[start].values if start else _at_rest(solution.coordinates)
+        return self.at(solution, ask, solution.states[ask.state].values, before)

@@ -38,13 +38,19 @@ class Distance(StateChange, QuantityKind):
     def at(self, solution, ask, values: dict, before: dict) -> sp.Expr:
         coords, body = solution.coordinates, ask.quantity.target
         moved = [values[coords.of(body, k).q] - before[coords.of(body, k).q] for k in ("x", "y")]
-        length = sp.sqrt(sp.trigsimp(moved[0] ** 2 + moved[1] ** 2))  # 1/|sin(theta)|, not sqrt(tan^2 + 1)/|tan|
+        squared = sp.trigsimp(moved[0] ** 2 + moved[1] ** 2)
         box = {p.symbol: p.si_ends for p in solution.problem.parameters.values() if p.range or p.value is not None}
-        signs = {a: next((s for s in (1, -1) if a.args[0].free_symbols <= set(box)
-                          and intervals.positive_over(s * a.args[0], box, strict=True)), None) for a in length.atoms(sp.Abs)}
-        if None in signs.values():  # a sign not proven over the ranges: the root as it is
-            return root(moved[0] ** 2 + moved[1] ** 2)
-        return tidy(length.xreplace({a: s * a.args[0] for a, s in signs.items()}))
+        # 1/|sin(theta)|, not sqrt(tan^2 + 1)/|tan|; 1/(sin + mu cos), not 1/sqrt(mu^2 cos^2 + mu sin(2 theta) + sin^2)
+        found = []
+        in_sines = sp.factor(sp.cancel(sp.expand_trig(squared).replace(sp.tan, lambda a: sp.sin(a) / sp.cos(a))))
+        for radicand in (squared, in_sines):
+            length = sp.sqrt(radicand)
+            signs = {a: next((s for s in (1, -1) if a.args[0].free_symbols <= set(box)
+                              and intervals.positive_over(s * a.args[0], box, strict=True)), None)
+                     for a in length.atoms(sp.Abs)}
+            if None not in signs.values():  # each |a| with its sign proven over the ranges
+                found.append(tidy(length.xreplace({a: s * a.args[0] for a, s in signs.items()})))
+        return min(found, key=sp.count_ops) if found else root(squared)
 
     def describe(self, ask) -> str:
         return f"the distance the {ask.quantity.target} moves"

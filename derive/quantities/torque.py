@@ -70,6 +70,9 @@ class Torque(QuantityKind):
                              + ", ".join(f"{head}.{n}.torque" for n in names) + did_you_mean(load, names))
         return Quantity(self.kind, head, load)
 
+    def reads_motion(self, ask) -> bool:
+        return True  # the forces of the derivation, a friction's regime among them
+
     def _loads(self, solution, ask) -> list[AppliedForce | AppliedTorque]:
         body, wanted = ask.quantity.target, ask.quantity.detail
         scene = solution.scene_in(ask.state) if ask.state else solution.dynamics_scene

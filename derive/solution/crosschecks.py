@@ -150,7 +150,7 @@ class CrossChecks:
                 raise EngineLimit(f"{self.problem.path}: ask.{name}", f"find the dimension of its derived "
                                   f"answer ({error})") from None
             wanted = units.dimension(units.parse_unit(ask.unit))
-            kind = quantities.KINDS.get(ask.quantity.kind)
+            kind = quantities.KINDS.get(ask.quantity.kind) if not ask.zero_for else None  # a parameter found: its unit
             if kind is not None and not units.same_dimension(units.dimension(units.parse_unit(kind.unit)), wanted):
                 raise self.problem.error(f"ask.{name}.unit", f"declared {ask.unit}, but a {kind.kind} is in {kind.unit}")
             if not units.same_dimension(dimension, wanted):
