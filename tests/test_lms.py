@@ -294,8 +294,8 @@ def _shown_unit(unit: str) -> bool:
     ("Omega_fast", r"\Omega_{\mathrm{fast}}"), ("Rcm", r"R_{\mathrm{cm}}"), ("I_cm", r"I_{\mathrm{cm}}"),
     ("K_rot", r"K_{\mathrm{rot}}"), ("U_min", r"U_{\mathrm{min}}"), ("theta_c", r"\theta_{c}"), ("L_x", "L_{x}"),
     ("omega0", r"\omega_{0}"), ("m1", "m_{1}"), ("a_theta", r"a_{\theta}"), ("mu_s", r"\mu_{s}"), ("alpha", r"\alpha"),
-    ("dphi", r"d\phi"), ("dtheta", r"d\theta"), ("GM", r"\mathit{GM}"), ("share", r"\mathit{share}"),
-    ("angle", r"\mathit{angle}"), ("hbar", r"\hbar"), ("v_cm_x", r"v_{\mathrm{cm},x}"), ("x", "x"),
+    ("dphi", r"d\phi"), ("dtheta", r"d\theta"), ("GM", r"\mathit{GM}"), ("share", r"\mathrm{share}"), ("vx", "v_{x}"), ("dE", r"\Delta E"),
+    ("angle", r"\mathrm{angle}"), ("hbar", r"\hbar"), ("v_cm_x", r"v_{\mathrm{cm},x}"), ("x", "x"),
 ])
 def test_symbols_read_as_math(name, latex):
     assert symbol_latex(name) == latex and _reads_as_math(latex)

@@ -27,6 +27,11 @@ def tex_escape(text: str) -> str:
     return "".join(SPECIALS.get(c, c) for c in str(text))
 
 
+#: A name that is a letter and its index: one small letter (vb, tb: v at b), digits and capitals (v1x, vB,
+#: FAx), or a word a subscript is (xtop, Jrod); a word that is no index (rise, turn) is set as a word.
+_INDEXED = re.compile(r"([A-Za-z])([a-z]|[0-9A-Z][0-9A-Za-z]{0,2}|top|bottom|rod|max|min|cm)")
+
+
 @lru_cache(maxsize=1024)  # a symbol is typeset in every variant
 def symbol_latex(name: str) -> str:
     r"""LaTeX of a symbol's name as a reader expects it: a Greek name as its letter, a word
@@ -37,22 +42,33 @@ def symbol_latex(name: str) -> str:
     rules are written here: a subscript of two letters or more is upright (a one-letter subscript
     may be an index, x_i, and stays italic); a capital followed by one or two small letters is the
     capital with them as its subscript (Rcm as R_cm; Mass stays a word); a letter then a Greek
-    name is a product (dphi as d phi); any other word is one italic symbol.
+    name is a product (dphi as d phi); d and one letter is a change (dE as Delta E); a letter and an
+    index is the letter with it as its subscript (vx as v_x, vB as v_B, tb as t_b, xtop as x_top); a
+    word of small letters is set upright, as a label is (angle); any other name is one italic symbol.
 
     >>> symbol_latex("Omega_fast"), symbol_latex("Rcm"), symbol_latex("theta_c"), symbol_latex("omega0")
     ('\\Omega_{\\mathrm{fast}}', 'R_{\\mathrm{cm}}', '\\theta_{c}', '\\omega_{0}')
     >>> symbol_latex("dphi_exact"), symbol_latex("GM"), symbol_latex("a_theta"), symbol_latex("Mass")
     ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
+    >>> symbol_latex("dE"), symbol_latex("vx"), symbol_latex("FAx"), symbol_latex("tb"), symbol_latex("angle")
+    ('\\Delta E', 'v_{x}', 'F_{\\mathrm{Ax}}', 't_{b}', '\\mathrm{angle}')
     """
     if name.startswith("\\"):  # a name the engine gives in LaTeX (derivation.LAGRANGIAN)
         return name
     base, supers, subs = split_super_sub(name)
     letter = translate(base)
     if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent
+        index = _INDEXED.fullmatch(base)
         if base[0].isupper() and base[1:].islower() and len(base) <= 3:  # Rcm, Mp; not a word (Mass)
             letter, subs = base[0], [base[1:], *subs]
         elif translate(base[1:]) != base[1:]:
             letter = base[0] + translate(base[1:])
+        elif base[0] == "d" and len(base) == 2 and not subs:  # dE, dp: the change of E, of p
+            letter = rf"\Delta {translate(base[1])}"
+        elif index and not subs and not base.isupper():  # vx, v1x, FAx, tb: a letter and its index (GM is G M)
+            letter, subs = index[1], [index[2]]
+        elif base.isalpha() and base.islower():  # a word (angle, spin): upright, as a label is set
+            letter = rf"\mathrm{{{base}}}"
         else:
             letter = rf"\mathit{{{base}}}"
 

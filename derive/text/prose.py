@@ -113,13 +113,14 @@ GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "theta", "lambda", "mu", 
 def set_as_math(text: str, names: Iterable[str]) -> str:
     r"""`text` as LaTeX, escaped, each word of it that is one of `names` (the symbols of a problem: its
     parameters, its asks, the symbols its steps typeset) or a Greek letter's name set as math: "as the
-    center drops H" as "as the center drops $H$", "psi about the axis" as "$\\psi$ about the axis". A name that typesets as a word (\mathit: an ask named angle) stays a
-    word, and so does the article a.
+    center drops H" as "as the center drops $H$", "psi about the axis" as "$\\psi$ about the axis". A name that is a word of small letters (an ask named angle, at or tb)
+    or typesets as one (\mathit) stays a word, and so does the article a.
 
     >>> set_as_math("Energy conservation as the center drops H, at a speed v_0 (x_ball's rate)", ["H", "v_0", "a", "x_ball"])
     "Energy conservation as the center drops $H$, at a speed $v_{0}$ ($x_{\\mathrm{ball}}$'s rate)"
     """
-    shown = sorted({n for n in (*names, *GREEK) if n not in ("a", "A") and not symbol_latex(n).startswith(r"\mathit")},
+    shown = sorted({n for n in (*names, *GREEK) if n not in ("a", "A") and not symbol_latex(n).startswith(r"\mathit")
+                    and not (re.fullmatch("[a-z]{2,}", n) and n not in GREEK)},  # a word: at, spin, tb
                    key=lambda n: (-len(n), n))
     if not shown:
         return tex_escape(text)
