@@ -175,6 +175,8 @@ EXPECTED = {
     # Serway & Jewett ch. 10: omega^2 = 2 (tau/I) theta from rest, I = M R^2/2: tau = M R^2 w1^2/(4 theta), theta in
     # rad (SI; the file's N turns).
     "torque_for_turns_to_speed": {"T": lambda s: s.M * s.R**2 * s.w1**2 / (4 * s.N)},
+    # Kleppner & Kolenkow ch. 7: a rectangular plate w x h about its diagonal, I = M w^2 h^2/(6 (w^2 + h^2)).
+    "plate_about_its_diagonal": {"I": lambda s: s.M * s.w**2 * s.h**2 / (6 * (s.w**2 + s.h**2))},
     # Halliday, Resnick & Walker sec. 11-3: a yo-yo turns one radian per R its center falls (rad here, SI).
     "yoyo_turns_from_rest": {"n": lambda s: s.h / s.R, "d": lambda s: s.h},
 }
@@ -337,3 +339,13 @@ def test_an_inverse_ask_checks_its_root_against_a_scan_of_the_range():
     inverse._check(problem, "ask.x.find", sp.sin(theta) - sp.cos(theta), theta, sp.pi / 4, {},
                    SimpleNamespace(name="theta", symbol=theta, range=(0.1, 3), si_ends=(sp.Rational(1, 10), 3)))
     assert numeric.evaluate(sp.pi / 4, {}, 5) == "0.78540"
+
+
+def test_an_axis_is_a_direction_through_the_center_of_mass_or_is_refused(tmp_path):
+    """A plate's diagonal as [w, h, 0]; no direction is [0, 0, 0]; a direction is three components."""
+    text = (ASKS / "plate_about_its_diagonal.yaml").read_text()
+    for axis, message in (("[0, 0, 0]", "no direction"), ("[w, h]", "expected a direction")):
+        path = tmp_path / "p.yaml"
+        path.write_text(text.replace("[w, h, 0]", axis))
+        result = run_derive("solve", str(path))
+        assert result.returncode == 2 and "ask.I.axis" in result.stderr and message in result.stderr, result.stderr

@@ -23,7 +23,8 @@ from derive import quantities
 ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
            of=Key("text", "the quantity asked: BODY.acceleration.y, ROPE.tension, BODY.inertia, ...", required=True),
            unit=Key("text", "its unit (m/s^2, N, kg m^2, deg, ...)", required=True),
-           axis=Key("text", "the axis a moment of inertia is about (see derive inertia --help)"),
+           axis=Key("any", "the axis a moment of inertia is about: a name (see derive inertia --help), or a direction "
+                           "[x, y, z] in the body's frame through its center of mass (a plate's diagonal: [a, b, 0])"),
            sig_figs=Key("integer", "significant figures of the answer (default 3 in a set)"),
            magnitude=Key("boolean", "ask its magnitude (default false)"),
            zero_for=Key("name", "ask instead the parameter's value at which the quantity vanishes (find: with "
@@ -210,7 +211,7 @@ ENDS = {"start": 0, "far": 1}
 def end_axis(reader: Reader, spec: dict, field: str, scene: Scene) -> str | None:
     """The axis an ask names: `axis:` as written, or `end` (the axis through the rod's start) for `end:`."""
     if spec.get("end") is None:
-        return spec.get("axis")
+        return direction(reader, spec["axis"], f"{field}.axis") if isinstance(spec.get("axis"), list) else spec.get("axis")
     body = scene.bodies.get(str(spec.get("of")).partition(".")[0])
     if body is None or body.shape != "rod" or not str(spec.get("of")).endswith(".inertia"):
         raise reader.fail(f"{field}.end", "end: names an end of a rod for its moment of inertia (BODY.inertia)")
@@ -220,6 +221,16 @@ def end_axis(reader: Reader, spec: dict, field: str, scene: Scene) -> str | None
     if spec["end"] not in ENDS:
         raise reader.fail(f"{field}.end", f"expected start or far, got {spec['end']!r}")
     return "end"
+
+
+def direction(reader: Reader, raw: list, field: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """`axis: [x, y, z]`: a direction in the body's frame (lengths, or numbers), not zero."""
+    if len(raw) != 3:
+        raise reader.fail(field, "expected a direction [x, y, z] in the body's frame")
+    vector = tuple(reader.expression(v, field) for v in raw)
+    if all(v == 0 for v in vector):
+        raise reader.fail(field, "[0, 0, 0] is no direction")
+    return vector
 
 
 def end_shift(reader: Reader, spec: dict, field: str, scene: Scene, quantity: Quantity, shift):

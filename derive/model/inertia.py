@@ -481,10 +481,11 @@ def _shielded(shape: Shape, sizes: dict[str, sp.Expr], *exprs) -> dict[sp.Symbol
 
 
 def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp.Expr],
-                density: sp.Expr | None = None, route: str = "integral", offset: Vector | None = None
-                ) -> tuple[sp.Expr, sp.Expr]:
+                density: sp.Expr | None = None, route: str = "integral", offset: Vector | None = None,
+                direction: Vector | None = None) -> tuple[sp.Expr, sp.Expr]:
     """(mass, moment of inertia) of a body of this shape and sizes about a named axis, or about
-    (point, direction) in the shape's frame, moved by `offset` (a vector in the body's own symbols).
+    (point, direction) in the shape's frame, or along `direction` through its center of mass (in the
+    body's own symbols: a plate's diagonal [a, b, 0]), moved by `offset` (a vector in the body's own symbols).
 
     Uniform with the given mass; or with a `density` in the shape's coordinates: a profile
     scaled to the given mass, or, with mass None, an absolute density whose integral is the
@@ -497,9 +498,17 @@ def body_moment(shape_name: str, axis, mass: sp.Expr | None, sizes: dict[str, sp
     (4*pi*sigma, 8*pi*sigma)
     >>> body_moment("rod", "center", M, {"length": L}, (x + L / 2) / L, offset=(L / 2, 0, 0))[1]
     L**2*M/6
+    >>> w, h = sp.symbols("w h", positive=True)
+    >>> body_moment("plate", None, M, {"side_a": w, "side_b": h}, direction=(w, h, 0))[1]
+    M*h**2*w**2/(6*(h**2 + w**2))
     """
     shape = _shape(shape_name)
-    shield = _shielded(shape, sizes, density, *(offset or ()))
+    if direction is not None:  # along `direction` (the body's own symbols) through its center of mass
+        center = body_center(shape_name, sizes, density)
+        axis, offset = (ORIGIN, direction), tuple(c + o for c, o in zip(center, offset or ORIGIN))
+    shield = _shielded(shape, sizes, density, *(offset or ()), *(direction or ()))
+    if direction is not None:
+        axis = (ORIGIN, tuple(sp.sympify(d, strict=True).xreplace(shield) for d in direction))  # safe: parsed sympy
     shielded = None if density is None else density.xreplace(shield)
     if offset is not None:
         point, direction = shape.axes[axis] if isinstance(axis, str) else axis

@@ -457,6 +457,11 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if rest == "inertia":
             shape = inertia.SHAPES.get(body.shape)
             axes = tuple(shape.axes) if shape else ()
+            if isinstance(axis, tuple):  # a direction through the center of mass
+                if shape is None:
+                    raise ValueError(f"a {body.shape}'s moment about a direction needs a shape derive integrates "
+                                     f"({', '.join(inertia.SHAPES)})")
+                return Quantity("inertia", head, axis)
             if axis is None and body.shape != "point":
                 return Quantity("inertia", head, None)
             if axis not in axes:

@@ -190,7 +190,7 @@ class AnswerSteps:
         return steps
 
     def _static_step(self, ask: Ask) -> Step:
-        if ask.quantity.kind != "inertia" or ask.shift is not None or ask.quantity.detail is None:
+        if ask.quantity.kind != "inertia" or ask.shift is not None or not isinstance(ask.quantity.detail, str):
             return Step(ask.meaning, (sp.Eq(sp.Symbol(ask.name), self.expressions[ask.name]),))
         body = self.scene.bodies[ask.quantity.target]
         if body.density is not None:

@@ -389,7 +389,9 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         return self._inertia_about(body, ask.quantity.detail, route, self.shift_vector(ask))
 
     def _inertia_about(self, body, axis, route: str = "integral", offset=None) -> sp.Expr:
-        moment = inertia.body_moment(body.shape, axis, body.mass, body.sizes, body.density, route, offset)[1]
+        along = None if isinstance(axis, str) else axis  # a direction through the center of mass
+        moment = inertia.body_moment(body.shape, None if along else axis, body.mass, body.sizes, body.density, route,
+                                     offset, along)[1]
         return self._within_ranges(moment)
 
     def shift_vector(self, ask: Ask) -> tuple[sp.Expr, sp.Expr, sp.Expr] | None:

@@ -111,7 +111,7 @@ class CrossChecks:
                          f"A second, independent derivation gives the same {', '.join(asks)}.")
                    for name, asks in agreed.items()]
         for ask in self.problem.asks.values():
-            if ask.quantity.kind == "inertia" and ask.quantity.detail is not None:
+            if ask.quantity.kind == "inertia" and isinstance(ask.quantity.detail, str):  # a named axis
                 check = self._parallel_axis_check(ask)
                 if check:
                     result.append(check)

@@ -69,6 +69,10 @@ def _clamp(x: float, low: float, high: float) -> float:
     return min(max(x, low), high)
 
 
+#: A plate's or box's height against its width as drawn (not to scale: its sides are labelled).
+ASPECT = 0.6
+
+
 class _Figure:
     """The lines of one picture, and the problem's numbers and symbols to draw it with."""
 
@@ -212,7 +216,7 @@ class _Figure:
         return self.num(body.sizes.get(name), default)
 
     def body(self, body: Body, center, radius: float, angle: float = 0.0, block: bool = False,
-             aspect: float = 0.6) -> None:
+             aspect: float = ASPECT) -> None:
         """A body by its shape, centered at `center`; `radius` is its half-size on the figure (cm)."""
         c, r = _pt(center), _f(radius)
         shape = body.shape

@@ -6,7 +6,7 @@ import math
 import sympy as sp
 
 from derive.model import inertia
-from derive.publishing.figure.canvas import WIDTH, _add, _clamp, _f, _Figure, _label_mass, _pt, _unit
+from derive.publishing.figure.canvas import ASPECT, WIDTH, _add, _clamp, _f, _Figure, _label_mass, _pt, _unit
 from derive.text.latex import tex_escape
 from derive.model.scene import Body
 
@@ -31,6 +31,13 @@ def _asked_axes(fig: _Figure, body: Body):
         q = ask.quantity
         if q.kind == "inertia" and q.target == body.name and body.shape in inertia.SHAPES:
             shape = inertia.SHAPES[body.shape]
+            if isinstance(q.detail, tuple):  # a direction through the center of mass, drawn in the page's plane
+                dx, dy = (fig.num(c, 0) for c in q.detail[:2])
+                if body.shape in ("plate", "box"):  # as drawn: a diagonal through the drawn corners
+                    dx, dy = dx / fig.size(body, "side_a", 1), dy * ASPECT / fig.size(body, "side_b", 1)
+                size = math.hypot(dx, dy)
+                yield (0.0, 0.0), ((dx / size, dy / size, 0) if size else (0, 0, 1)), ask.shift
+                continue
             axis = q.detail or inertia.PLANAR_AXIS[body.shape]
             point, direction = shape.axes[axis]
             generic = {shape.sizes[n]: body.sizes[n] for n in shape.sizes if n in body.sizes}
