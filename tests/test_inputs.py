@@ -10,7 +10,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import refused, run_derive, textbook, write_problem
+from conftest import ROOT, refused, run_derive, textbook, write_problem
 from derive.core import names
 from derive.numbers import numeric
 from derive.language import problem
@@ -210,3 +210,24 @@ def test_a_fixed_value_is_printed_as_the_answers_use_it(tmp_path):
     assert load(str(write_problem(tmp_path, text))).parameters["g"].sig_figs == 5
     message = refused(tmp_path, text.replace("value: 9.8066}", "value: 9.8066, sig_figs: 3}"), "parameters.g.sig_figs")
     assert "has 5 significant figures" in message and "sig_figs: 5" in message
+
+
+def test_a_3d_inertia_in_a_planar_scene_and_a_state_of_another_body_are_refused_clearly(tmp_path):
+    """Two messages a new user met (issue 38): `inertia: {axial, transverse}` on a planar custom body
+    said "expected an expression, got dict"; a state at a position relative to another body said
+    "attribute access is not allowed"."""
+    rotor = tmp_path / "rotor.yaml"
+    rotor.write_text("id: rotor\ntitle: A rotor\nparameters:\n  M: {meaning: mass, unit: kg, value: 2}\n"
+                     "  I: {meaning: moment, unit: kg*m^2, value: 1}\nscene:\n  bodies:\n"
+                     "    rotor: {shape: custom, mass: M, inertia: {axial: I, transverse: I}}\n"
+                     "ask:\n  m: {meaning: mass, of: rotor.mass, unit: kg}\nquestion: |\n  Find it.\n")
+    result = run_derive("solve", str(rotor))
+    assert result.returncode == 2 and "scene.bodies.rotor.inertia: {axial, transverse} are a body's moments in 3D" \
+        in result.stderr, result.stderr
+    text = (ROOT / "problems" / "energy" / "block_up_incline.yaml").read_text()
+    relative = tmp_path / "relative.yaml"
+    relative.write_text(text.replace("highest: {when: stops, from: sent}", "highest: {when: {block.x: block.y + 1}, "
+                                                                         "from: sent}"))
+    result = run_derive("solve", str(relative))
+    assert result.returncode == 2 and "scene.states.highest.when.block.x: a state's value is an expression of the " \
+        "parameters, not of where the block is" in result.stderr, result.stderr

@@ -113,6 +113,11 @@ def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     elif shape == "custom":
         if "inertia" not in spec:
             raise reader.fail(f"{field}.inertia", "a custom body needs its moment of inertia about its center of mass")
+        if isinstance(spec["inertia"], dict):
+            raise reader.fail(f"{field}.inertia", "{axial, transverse} are a body's moments in 3D, read with what holds "
+                                                  "it there (bearings:, pivot_point:, rolls_on_edge:, free_rotation:); "
+                                                  "in a planar scene a body turns about the normal to the plane: give "
+                                                  "that one moment")
         given = reader.dimensioned(spec["inertia"], f"{field}.inertia", "kg*m^2", "a moment of inertia")
         if given.is_nonnegative is not True:
             raise reader.fail(f"{field}.inertia", "a moment of inertia cannot be negative")

@@ -8,6 +8,8 @@ zero). derive.mechanics.states finds them; derive.solution.state_answers answers
 """
 from __future__ import annotations
 
+import re
+
 from derive.core.keys import Key, Keys
 from derive.parts import contact
 from derive.parts.contact import Contact
@@ -305,4 +307,9 @@ def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body]
         allowed = [k for k, (kind, _) in kinds.items() if kind != "theta" or bodies[head].rotates]
         raise reader.fail(f"{field}.{key}", f"a state gives {head}'s {', '.join(allowed)}")
     kind, unit = kinds[rest]
+    named = re.search(r"\b(" + "|".join(map(re.escape, bodies)) + r")\.[A-Za-z_]", str(value)) if bodies else None
+    if named:  # where another body is: a state of the scene, not a value the file gives
+        raise reader.fail(f"{field}.{key}", f"a state's value is an expression of the parameters, not of where the "
+                                            f"{named[1]} is ({value}): give the {head}'s {rest} as a number of them "
+                                            "(where the other body is placed, or where it is in the state before)")
     return head, kind, reader.dimensioned(value, f"{field}.{key}", unit, "a position" if unit in ("m", "rad") else "a rate")
