@@ -882,3 +882,23 @@ def test_solve_says_how_each_segment_starts_where_friction_decides_it(tmp_path):
     done = run_derive("solve", str(path))
     assert done.returncode == 0, done.stderr
     assert "to back: the crate slips from the state highest, against kinetic friction" in done.stdout
+
+
+@pytest.mark.parametrize("change, field, message", [
+    (("off: {when: {leaves: bead}, nudged: {bead.x: 1}}", "off: {when: {leaves: bead}}"), "scene.states.off",
+     "stays at rest at the start"),
+    (("nudged: {bead.x: 1}", "nudged: true"), "scene.states.off.nudged", "needs its position"),
+    (("nudged: {bead.x: 1}", "nudged: {bead.x: 2}"), "scene.states.off.nudged.bead.x", "expected 1 or -1"),
+    (("  v: {meaning: its speed there, of: bead.speed, in: off, unit: m/s}",
+      "  v: {meaning: its speed there, of: bead.speed, in: off, unit: m/s}\n  t: {meaning: time, of: time, in: off, unit: s}"),
+     "ask.t.in", "grows without bound"),
+])
+def test_a_vanishing_push_is_stated_and_read_rightly(tmp_path, change, field, message):
+    """From a balance the engine answers the limit of a vanishing push where the file says so (nudged:),
+    and refuses otherwise (it would stay at rest), a push without a way, and a time, which is unbounded."""
+    text = textbook("particle_off_dome_nudged").read_text()
+    assert change[0] in text
+    path = tmp_path / "dome.yaml"
+    path.write_text(text.replace(*change))
+    result = run_derive("solve", str(path))
+    assert result.returncode == 2 and field in result.stderr and message in result.stderr, result.stderr

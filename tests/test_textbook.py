@@ -42,6 +42,11 @@ def _wedge_vy(s):
 
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
+    # From a balance, with a vanishing push (nudged:). Serway & Jewett ch. 10: a rod standing on a smooth floor
+    # lands flat at v_cm = sqrt(3 g L)/2, omega = sqrt(3 g/L) (clockwise here: it falls to the right).
+    "rod_upright_nudged": {"v": lambda s: sp.sqrt(3 * s.g * s.L) / 2, "w": lambda s: -sp.sqrt(3 * s.g / s.L)},
+    # Serway & Jewett ch. 8: a particle pushed off a smooth dome's top leaves it 2R/3 above the center at sqrt(2gR/3).
+    "particle_off_dome_nudged": {"h": lambda s: 2 * s.R / 3, "v": lambda s: sp.sqrt(2 * s.g * s.R / 3)},
     # Serway & Jewett ch. 13: an ellipse from its periapsis r_p and the speed v_p there. The energy gives
     # a = GM r_p/(2 GM - r_p v_p^2); the farthest distance is 2a - r_p; Kepler's second law v_a r_a = v_p r_p;
     # the third, P = 2 pi sqrt(a^3/GM).

@@ -89,7 +89,25 @@ def _tidy(expr: sp.Expr, placed: tuple[sp.Expr, ...]) -> sp.Expr:
             expr = sp.cancel(simplest(numerator) / simplest(denominator))
         if expr.has(sp.sin, sp.cos):
             expr = sp.trigsimp(expr) if _plain_angles(expr) else sp.cancel(simplest(expr))
-        return sp.factor_terms(sp.factor(expr))
+        return _numeric_roots(sp.factor_terms(sp.factor(expr)))
+
+
+def _numeric_roots(expr: sp.Expr) -> sp.Expr:
+    """Square roots of numbers in one product multiplied out: sqrt(3 - sqrt(5)) sqrt(3 + sqrt(5)) is 2
+    (a particle leaving a dome at 2R/3), which sympy keeps as two roots.
+
+    >>> _numeric_roots(sp.Symbol("R") * sp.sqrt(3 - sp.sqrt(5)) * sp.sqrt(3 + sp.sqrt(5)) / 3)
+    2*R/3
+    """
+    def roots(term):
+        return [f for f in term.args if f.is_Pow and f.exp == sp.S.Half and f.base.is_number and not f.base.is_Rational]
+
+    def combined(term):
+        found = roots(term)
+        rest = sp.Mul(*(f for f in term.args if f not in found))
+        return rest * sp.sqrt(sp.expand(sp.Mul(*(f.base for f in found))))
+
+    return expr.replace(lambda e: e.is_Mul and len(roots(e)) >= 2, combined)
 
 
 def _plain_angles(expr: sp.Expr) -> bool:

@@ -57,6 +57,9 @@ def state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pat
     if quantity.kind not in STATE_KINDS or quantity.kind == "contact" and quantity.detail not in ("normal_force",
                                                                                                   "friction"):
         raise reader.fail(field, f"{path} is not read in a state: only accelerations, forces, positions and rates are")
+    if quantity.kind == "time" and scene.states[raw].nudge:
+        raise reader.fail(field, f"the motion to {raw} starts with a vanishing push (nudged:), and the time it takes "
+                                 "grows without bound as the push vanishes: ask where it gets and how fast")
     if quantity.kind == "time" and scene.states[raw].rates:
         raise reader.fail(field, f"the state {raw} is the placement, at time zero: ask the time in a state the "
                                  "motion gets to (when:)")

@@ -53,6 +53,8 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
         if sum(key in spec for key in ("rates", "when", "event")) != 1:
             raise reader.fail(field, "a state gives rates: (at the placement), when: (a position reached) or event: "
                                      "(an impact, a move or a turn in the state from:)")
+        if "nudged" in spec and "when" not in spec:
+            raise reader.fail(f"{field}.nudged", "a vanishing push starts a motion: it goes with when:")
         if "event" in spec:
             result[name] = _event(reader, name, spec, field, places, constraints, result)
             continue
@@ -65,12 +67,17 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             result[name] = State(name, rates=tuple(_state_entry(reader, key, value, f"{field}.rates", bodies, STATE_RATES)
                                                    for key, value in rates.items()))
             continue
+        nudge = _nudge(reader, spec.get("nudged"), f"{field}.nudged", bodies)
+        if nudge and (not isinstance(spec["when"], dict) or any(k in THRESHOLDS for k in spec["when"])) \
+                and nudge is True:
+            raise reader.fail(f"{field}.nudged", "a push toward the state needs its position (when: {BODY.x|y|angle: "
+                                                 "value}); otherwise say which way it moves: {BODY.x|y|angle: 1 or -1}")
         start = spec.get("from")
         if start is not None and start not in result:
             raise reader.fail(f"{field}.from", f"expected a state named above this one (states: "
                                                f"{', '.join(result) or 'none'})")
         if spec["when"] == "stops":
-            result[name] = State(name, start=start, until=("stops", None))
+            result[name] = State(name, start=start, until=("stops", None), nudge=nudge)
             continue
         if not isinstance(spec["when"], dict):
             raise reader.fail(f"{field}.when", "expected stops, or one of {BODY.x|y|angle: value}, {BODY.velocity.x|y: value}, "
@@ -84,13 +91,29 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
         (key, value), = when.items()
         if key in THRESHOLDS:
             result[name] = State(name, start=start, until=(key, _threshold_part(reader, key, value, f"{field}.when.{key}",
-                                                                                constraints)))
+                                                                                constraints)), nudge=nudge)
             continue
         rate = str(key).partition(".")[2] in STATE_RATES
         result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies,
                                                      STATE_RATES if rate else {**STATE_POSITIONS, **STATE_RATES}),
-                             start=start, rate=rate)
+                             start=start, rate=rate, nudge=nudge)
     return result
+
+
+def _nudge(reader: Reader, raw, field: str, bodies: dict[str, Body]) -> bool | tuple[str, str, int]:
+    """`nudged: true` or `nudged: {BODY.x|y|angle: 1 or -1}` (see State.nudge); False where not given."""
+    if raw is None or raw is False:
+        return False
+    if raw is True:
+        return True
+    spec = reader.mapping(raw, field, free=True) if isinstance(raw, dict) else None
+    if not spec or len(spec) != 1:
+        raise reader.fail(field, "expected true, or one coordinate and the way it first moves: {BODY.x|y|angle: 1 or -1}")
+    (key, way), = spec.items()
+    body, kind, _ = _state_entry(reader, key, 0, field, bodies, STATE_POSITIONS)
+    if way not in (1, -1):
+        raise reader.fail(f"{field}.{key}", "expected 1 or -1: the way the coordinate first moves")
+    return (body, kind, way)
 
 
 #: The events a state may follow: what each makes of the two bodies.
@@ -118,6 +141,9 @@ STATE = Keys(rates=Key("mapping", "rates at the placement: {BODY.angular_velocit
              when=Key("any", "where the motion from from: gets to: stops, {BODY.x|y|angle: value}, "
                              "{BODY.velocity.x|y: value}, {leaves: BODY}, {slack: CORD}, {slips: BODY}, {grips: NAME}"),
              event=Key("mapping", "an impact, a move, a turn or a transfer in the state from:", keys=EVENT),
+             nudged=Key("any", "the motion from a balance it would never leave (a rod on its end, a ball on a dome's "
+                               "top) starts with a vanishing push: true (toward where this state is) or "
+                               "{BODY.x|y|angle: 1 or -1} (the way it first moves); the answers are the limit"),
              **{"from": Key("name", "the state this one follows (default: the placement, at rest)")})
 
 

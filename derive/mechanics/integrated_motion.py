@@ -30,6 +30,25 @@ from derive.model.kinematics import Coordinates
 from derive.mechanics.reaching import Gets, GetsRate, Reached, Stops
 
 
+#: A vanishing push as simulated: the path's rate at the start, against its rate in the state reached.
+NUDGE = 1e-9
+
+
+def nudged_start(reached: Reached, start: dict, values: dict) -> tuple[dict, float]:
+    """The start of a motion from a balance (`nudged:`, derive.model.scene.State.nudge) as simulated:
+    moving along the closed form's path, the way it goes, at NUDGE of the rate it reaches (its
+    kinetic energy 1e-18 of the state's), and a horizon of 200 times the path's length over that
+    rate (the time grows as the log of the push: 21 such times at NUDGE)."""
+    path = reached.path
+    s, rate = path.coordinate.q, path.coordinate.u
+    end_rate = abs(float(sp.N(reached.values[rate].xreplace(values), 20))) or 1.0
+    pushed = {s: start[s], rate: sp.Float(path.direction * NUDGE * end_rate)}
+    moved = {**start, **{u: sp.Float(float(sp.N(v.xreplace(pushed).xreplace(values), 20)), 20)
+                         for u, v in path.velocities.items()}}
+    length = abs(float(sp.N(reached.values[s].xreplace(values), 20)) - float(sp.N(start[s].xreplace(values), 20)))
+    return moved, 200 * (length or 1.0) / end_rate
+
+
 def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reached: Reached, condition,
                  horizon: float, start: dict | None = None):
     """The state `reached` (its path from its start, or from `start` where it has none) found

@@ -100,7 +100,7 @@ def moving(scene: Scene, coords: Coordinates, rates: dict[Coordinate, sp.Expr]) 
 
 def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
           condition: Gets | GetsRate | Stops | Vanishes,
-          derivation: Derivation, sample=None) -> Reached:
+          derivation: Derivation, sample=None, nudge: bool | tuple = False) -> Reached:
     """The state the motion from the state `start` (every coordinate and velocity) gets to first
     where `condition` holds, by the work-energy theorem along the one free coordinate (with
     several, along the line the motion keeps, `_line`; where it curves, a free flight's coordinate
@@ -108,20 +108,21 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
     the kept momenta leave, derive.mechanics.first_integrals).
     `derivation` gives the direction a start at rest moves in and the forces along the way;
     `sample` (an expression's float value at sample parameters) decides signs the symbols'
-    assumptions leave open."""
+    assumptions leave open. `nudge` (derive.model.scene.State.nudge): from a balance, the motion
+    starts with a vanishing push that way."""
     free = len(coords.all) - sum(len(c.gaps(coords)) for c in scene.constraints)
     decide = (lambda expr: sample(sp.sympify(expr))) if sample else _assumed  # safe: engine expressions
     integrals = ()
     if free > 1:  # before solving any gap: energy fixes one rate of several, unless the motion is a line
         try:
-            return _line(scene, coords, start, condition, derivation, decide, free)
+            return _line(scene, coords, start, condition, derivation, decide, free, nudge)
         except Curved:
             if sample is None:
                 raise
             flying = free_flight.flight(scene, coords, start, derivation)
             if flying is not None:  # a projectile: along its coordinate that moves at a constant rate
                 coordinate, positions, step = flying
-                path = _path(scene, coords, start, coordinate, positions, derivation, decide, condition)
+                path = _path(scene, coords, start, coordinate, positions, derivation, decide, condition, nudge)
                 reached = _arrive(path, condition, derivation, decide, "The flight is followed along one coordinate")
                 clear = _clear_of_surfaces(free_flight.clearances(scene, coords), path, reached.end, decide)
                 return dataclasses.replace(reached, steps=(step, *reached.steps), positive=reached.positive + clear)
@@ -164,7 +165,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
             continue
         try:
             positions = {c.q: dependent.get(c.q, c.q) for c in coords.all}
-            path = _path(scene, coords, start, left[0], positions, derivation, decide, condition)
+            path = _path(scene, coords, start, left[0], positions, derivation, decide, condition, nudge)
             reached = _arrive(path, condition, derivation, decide, carried)
         except StateError as error:
             problem = problem or error
@@ -190,7 +191,7 @@ def _rolled(coordinate: Coordinate, gaps: list[sp.Expr]) -> bool:
 
 
 def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate, positions: dict,
-          derivation: Derivation, decide, condition) -> Path:
+          derivation: Derivation, decide, condition, nudge: bool | tuple = False) -> Path:
     """The motion from the start along one coordinate, every coordinate's position (`positions`)
     a function of it: the one the solved constraints leave free, or a line's."""
     s, speed = coordinate.q, coordinate.u
@@ -200,6 +201,8 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
     direction, leaves = _direction(start[speed], start, coordinate, derivation, decide)
     if not direction and isinstance(condition, Gets) and not _balanced(coords, start, derivation):
         direction = first_root.toward(positions, condition, s, start[s], decide)
+    if not direction and nudge:
+        direction = _nudged(nudge, coords, positions, condition, s, start[s], decide)
     if not direction:
         raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state; "
                          "a body at rest in balance (a stick on its end, a particle on a dome's top, a pendulum "
@@ -219,7 +222,7 @@ def _path(scene: Scene, coords: Coordinates, start: dict, coordinate: Coordinate
 
 
 def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation: Derivation, decide,
-          free: int) -> Reached:
+          free: int, nudge: bool | tuple = False) -> Reached:
     """The state a scene of several degrees of freedom gets to where its motion is a straight line
     in its coordinates: q = q0 + (s - s0) d / d_s, d the start's velocities (from rest its
     accelerations), s a coordinate that moves (the state's own where it does). Blocks on cords
@@ -234,6 +237,8 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
         solved = derivation.at(start).raw
         d = {c: tidy(solved[c.a]) for c in coords.all}
     moves = [c for c in coords.all if d[c] != 0]
+    if not moves and nudge:  # from a balance: the way a vanishing push takes it is not along a line of rest
+        raise Curved("follow a vanishing push from a balance along a straight line")
     if not moves:
         raise StateError("the scene stays at rest at the start (nothing pushes it): it never gets to the state")
     target = condition.coordinate if isinstance(condition, Gets) else None
@@ -241,7 +246,7 @@ def _line(scene: Scene, coords: Coordinates, start: dict, condition, derivation:
     ratios = {c: tidy(d[c] / d[along]) for c in coords.all}
     s, s0 = along.q, start[along.q]
     positions = {c.q: s if c == along else start[c.q] + ratios[c] * (s - s0) for c in coords.all}
-    path = _path(scene, coords, start, along, positions, derivation, decide, condition)
+    path = _path(scene, coords, start, along, positions, derivation, decide, condition, nudge)
     curved = Curved(f"find a state reached by a scene of {free} degrees of freedom whose motion is not a "
                     "straight line in its coordinates (energy fixes one rate of several)")
     if not _on_line(scene, coords, path, s0, ratios, derivation, decide):  # at the start already (a ball flying off)
@@ -438,6 +443,17 @@ def _heading(start: dict, coords: Coordinates, derivation: Derivation, decide) -
         number = 0.0 if value == 0 else decide(value)
         signs[q] = 1 if number > 1e-12 else -1 if number < -1e-12 else 0
     return signs
+
+
+def _nudged(nudge: bool | tuple, coords: Coordinates, positions: dict, condition, s: sp.Symbol, s0: sp.Expr,
+            decide) -> int:
+    """The way s moves from a balance under a vanishing push: toward the state's position (`nudge`
+    True), or the way the named coordinate first moves ((body, kind, +1 or -1)); 0 where it cannot say."""
+    if nudge is True:
+        return first_root.toward(positions, condition, s, s0, decide) if isinstance(condition, Gets) else 0
+    body, kind, way = nudge
+    rate = decide(sp.diff(positions[coords.of(body, kind).q], s).xreplace({s: s0}))
+    return 0 if abs(rate) < 1e-12 else way * (1 if rate > 0 else -1)
 
 
 def _balanced(coords: Coordinates, start: dict, derivation: Derivation) -> bool:

@@ -213,6 +213,10 @@ class State:
     until: tuple[str, str | None] | None = None
     event: Event | None = None
     rate: bool = False  # `when` gives a rate (velocity.x|y, angular_velocity), not a position
+    # From a balance it would never leave (a rod on its end, a ball on a dome's top), the motion begins with a
+    # push too small to count (`nudged:`): True, toward where the state is; or (body, kind, +1 or -1), the way
+    # that coordinate first moves. The state's speeds and places are the limit of a vanishing push; its time is not.
+    nudge: bool | tuple[str, str, int] = False
 
 
 @dataclass(frozen=True)

@@ -222,7 +222,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         start = found[state.start].values if state.start else state_motion.rest(coords)
         scene = self._scene_with(joints)
         return state_motion.reach(scene, coords, start, self._condition(state, scene),
-                                  self._derivations_with(joints)["lagrange"], self._sample)
+                                  self._derivations_with(joints)["lagrange"], self._sample, state.nudge)
 
     @cached_property
     def _sliding(self) -> Contact | None:
