@@ -11,6 +11,7 @@ from typing import ClassVar
 
 import sympy as sp
 
+from derive.core import units
 from derive.model.scene import Quantity
 from derive.text.steps import Step
 
@@ -27,6 +28,7 @@ class QuantityKind(ABC):
     """
 
     kind: ClassVar[str]
+    symbol: ClassVar[str]  # its letter in the steps where the ask's name is a parameter's (tau, N, d)
     unit: ClassVar[str]
     state: ClassVar[str] = "never"
     sense: ClassVar[tuple[str, str] | None] = None
@@ -49,9 +51,18 @@ class QuantityKind(ABC):
         """The quantity in words, for a student: "the torque of the rod's weight about the hinge"."""
 
     def steps(self, solution, ask) -> list[Step]:
-        """The worked solution's steps for the ask: by default the answer, stated."""
-        return [Step(f"{describe_capitalized(self.describe(ask))}:",
-                     (sp.Eq(sp.Symbol(ask.name), solution.signed_expression(ask.name)),))]
+        """The worked solution's steps for the quantity: by default its value stated, in its ask's unit
+        (`shown`) and under its name (`named`)."""
+        return [Step("", (sp.Eq(named(self, ask), shown(self, solution, ask)),))]
+
+    def symbol_for(self, ask) -> str:
+        """Its letter in the steps where the ask's name is a parameter's (`named`)."""
+        return self.symbol
+
+    def conditions(self, solution, ask) -> list[tuple[sp.Expr, bool, str]]:
+        """(expression, strict, meaning): what must be positive (strict) or not negative in a variant for
+        the answer to hold (derive.solution.answer_conditions); none by default."""
+        return []
 
     def reads_motion(self, ask) -> bool:
         """Whether the answer depends on how the scene moves or on its forces (a friction
@@ -61,6 +72,23 @@ class QuantityKind(ABC):
     def unknowns(self, solution, ask) -> set[sp.Symbol]:
         """The accelerations and forces of the derivation the answer is made of (shown in the steps)."""
         return set()
+
+
+def named(kind: QuantityKind, ask) -> sp.Symbol:
+    """The quantity's symbol in its steps: the ask's name, or the kind's where the ask finds a parameter
+    (the name is the parameter's answer then)."""
+    return sp.Symbol(kind.symbol_for(ask) if ask.zero_for else ask.name)
+
+
+def shown(kind: QuantityKind, solution, ask) -> sp.Expr:
+    """The quantity as its steps print it: the answer in its ask's unit (turns in rev, a parameter in rev in
+    them too); where the ask finds a parameter, the quantity itself, counted as the question says."""
+    declared = {p.symbol: p.unit for p in solution.problem.parameters.values()}
+    if ask.zero_for:
+        value, unit = solution.counted(ask.name, kind.value(solution, ask, 0)), kind.unit
+    else:
+        value, unit = solution.expression(ask.name), ask.unit
+    return units.declared_symbols(units.in_unit(value, unit), declared)
 
 
 def describe_capitalized(text: str) -> str:

@@ -26,6 +26,7 @@ class CenterOfMass(QuantityKind):
     """The position of the center of mass of every body (see the module)."""
 
     kind = "center_of_mass"
+    symbol = "x_cm"
     unit = "m"
     state = "optional"
     routes = ("the mass-weighted mean of the bodies' centers", "the bodies added one at a time")
@@ -48,6 +49,9 @@ class CenterOfMass(QuantityKind):
         for m, x in bodies[1:]:
             mass, center = mass + m, (mass * center + m * x) / (mass + m)
         return tidy(center)
+
+    def symbol_for(self, ask) -> str:
+        return "{}_cm".format(ask.quantity.detail)
 
     def describe(self, ask) -> str:
         return f"the {ask.quantity.detail} of the center of mass"

@@ -28,6 +28,7 @@ class Distance(StateChange, QuantityKind):
     """The distance between a body's positions in two states (see the module)."""
 
     kind = "distance"
+    symbol = "d"
     unit = "m"
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:

@@ -24,6 +24,7 @@ class PositionFromCenterOfMass(QuantityKind):
     """A body's position from the center of mass (see the module)."""
 
     kind = "position_cm"
+    symbol = "x"
     unit = "m"
     routes = ("the position less the center of mass's", "the mean of its position from each body")
 
@@ -42,6 +43,9 @@ class PositionFromCenterOfMass(QuantityKind):
         total = sum((b.mass for b in scene.bodies.values()), sp.Integer(0))
         return tidy(sum(((placement.position(scene, body) - placement.position(scene, n))[index] * b.mass
                          for n, b in scene.bodies.items()), sp.Integer(0)) / total)
+
+    def symbol_for(self, ask) -> str:
+        return "{}".format(ask.quantity.detail)
 
     def describe(self, ask) -> str:
         return f"the {ask.quantity.detail} of the {ask.quantity.target} from the center of mass"

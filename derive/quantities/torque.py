@@ -34,7 +34,7 @@ from derive.core.tidying import tidy
 from derive.text.steps import Step
 from derive.model.scene import Quantity
 from derive.parts import AppliedForce, AppliedTorque
-from derive.quantities.base import QuantityKind
+from derive.quantities.base import QuantityKind, named
 from derive.text.prose import Sentence
 
 #: The subscripts of a load's torque in the worked solution, by its label.
@@ -51,6 +51,7 @@ class Torque(QuantityKind):
     """A torque about a point (see the module)."""
 
     kind = "torque"
+    symbol = "tau"
     unit = "N*m"
     state = "optional"
     sense = ("counter-clockwise", "clockwise")
@@ -163,7 +164,8 @@ class Torque(QuantityKind):
                 result.append(Step("", (sp.Eq(name, torque),), sentences=(said,)))
             total += torque
         if len(loads) > 1:
-            result.append(Step(f"The net torque about {about} is their sum", (sp.Eq(sp.Symbol(ask.name), tidy(total)),)))
+            result.append(Step(f"The net torque about {about} is their sum, counter-clockwise positive",
+                               (sp.Eq(named(self, ask), tidy(total)),)))
         return result
 
     def describe(self, ask) -> str:

@@ -4,7 +4,7 @@ The angle it turns through from the state `STATE` comes from (`from:`) to `STATE
 turns (`unit: rev`, one turn 2 pi rad); answered with the way it turns in words (counter-clockwise
 or clockwise), as every quantity with a direction is. A body whose angular velocity has opposite
 signs in the two states turned back on the way, and the angle between them is not the turns it
-made: that is refused.
+made: such a variant is refused (`conditions`).
 
         theta - theta_0
    N = -----------------  rev        (counter-clockwise positive)
@@ -24,13 +24,16 @@ import sympy as sp
 
 from derive.core.tidying import tidy
 from derive.model.scene import Quantity
-from derive.quantities.base import QuantityKind, StateChange
+from derive.quantities.base import QuantityKind, StateChange, named, shown
+from derive.text.prose import Sentence
+from derive.text.steps import Step
 
 
 class Turns(StateChange, QuantityKind):
     """The turns a body makes between two states (see the module)."""
 
     kind = "turns"
+    symbol = "N"
     unit = "rev"
     exact_unit = True
     sense = ("counter-clockwise", "clockwise")
@@ -42,14 +45,29 @@ class Turns(StateChange, QuantityKind):
             raise ValueError(f"the {head} is a point mass: it has no turns (ask its distance)")
         return Quantity(self.kind, head, None)
 
+    def conditions(self, solution, ask) -> list[tuple[sp.Expr, bool, str]]:
+        """Its angular velocity has the same sign in the two states (or is zero in one), in every variant:
+        one that turned back on the way turned more than the angle between them."""
+        start = solution.scene.states[ask.state].start
+        if start is None:
+            return []
+        spin = solution.coordinates.of(ask.quantity.target, "theta").u
+        product = tidy(solution.states[start].values[spin] * solution.states[ask.state].values[spin])
+        return [] if product == 0 else [(product, False, f"the {ask.quantity.target} turns one way in the state {start} "
+                                                         f"and the other in {ask.state}: it turned back on the way, so "
+                                                         "its turns are not the angle between them")]
+
     def at(self, solution, ask, values: dict, before: dict) -> sp.Expr:
         angle = solution.coordinates.of(ask.quantity.target, "theta")
-        spins = [v[angle.u] for v in (before, values)]
-        if all(s.is_number for s in spins) and spins[0] * spins[1] < 0 or tidy(spins[0] * spins[1]).is_negative:
-            raise solution.problem.error(f"ask.{ask.name}.in", f"the {ask.quantity.target} turns one way in the state "
-                                         f"{solution.scene.states[ask.state].start} and the other in {ask.state}: it "
-                                         "turned back on the way, so its turns are not the angle between them")
         return tidy(values[angle.q] - before[angle.q])  # in rad, SI: the key gives it in rev
+
+    def steps(self, solution, ask) -> list[Step]:
+        """The angle turned between the two states, then the turns it makes: one turn is 2 pi."""
+        angle = StateChange.value(self, solution, ask, 0)
+        said = Sentence((f"The {ask.quantity.target} turns through ", sp.Eq(sp.Symbol(r"\Delta\theta"), angle),
+                         " rad between the two states, counter-clockwise positive; one turn is ", 2 * sp.pi,
+                         " rad, so it makes"))
+        return [Step("", (sp.Eq(named(self, ask), shown(self, solution, ask)),), sentences=(said,))]
 
     def describe(self, ask) -> str:
         return f"the number of turns the {ask.quantity.target} makes"

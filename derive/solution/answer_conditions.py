@@ -19,6 +19,7 @@ from functools import cached_property
 
 import sympy as sp
 
+from derive import quantities
 from derive.core import limits
 from derive.numbers import numeric
 from derive.solution.crosschecks import sample_points
@@ -73,7 +74,24 @@ class AnswerConditions:
                 result.append((tidy(oscillation.stiffness - oscillation.damping**2 / 4), True,
                                "the damping is too strong at these parameters: it does not oscillate "
                                "(overdamped, c^2/4 >= k)"))
-        return result + self._magnitudes() + self._declared(answers=True)
+        for ask in self.problem.asks.values():
+            kind = quantities.KINDS.get(ask.quantity.kind)
+            result += kind.conditions(self, ask) if kind is not None else []
+        return result + self._magnitudes() + self._found_in_range() + self._declared(answers=True)
+
+    def _found_in_range(self) -> list[tuple[sp.Expr, bool, str]]:
+        """A parameter an inverse ask finds (`find:`) lies in the range the file declares for it, in
+        every variant: a ramp's angle found negative, or past its range, is no answer to give."""
+        result = []
+        for name, ask in self.problem.asks.items():
+            parameter = self.problem.parameters.get(ask.zero_for) if ask.finds == "find" else None
+            if parameter is None or parameter.range is None:
+                continue
+            found, (low, high) = self.expression(name), parameter.si_ends
+            words = f"the {parameter.name} that {ask.path} needs lies outside its range [{parameter.range[0]}, " \
+                    f"{parameter.range[1]}] {parameter.unit} at these parameters"
+            result += [(found - low, False, words), (high - found, False, words)]
+        return result
 
     def _magnitudes(self) -> list[tuple[sp.Expr, bool, str]]:
         """A magnitude whose sign `_magnitude` read off samples of the ranges (its formula without

@@ -20,9 +20,10 @@ import sympy as sp
 from derive import quantities
 from derive.core.memo import kept
 from derive.model import inertia
-from derive.core import limits
+from derive.core import limits, units
 from derive.solution.crosschecks import sample_points
 from derive.mechanics import friction, orbits, rolling, rolling_coin
+from derive.text.prose import Sentence
 from derive.text.steps import Step
 from derive.parts.cord import Cord
 from derive.language.problem import Ask
@@ -123,15 +124,38 @@ class AnswerSteps:
                     result[route] += self._exact_period(ask.amplitude, route)[1]
         for body, balance in self.energy_balances.items():
             result[f"energy of the {body}"] = list(balance.steps)
-        for ask in self.problem.asks.values():
-            kind = quantities.KINDS.get(ask.quantity.kind)
-            if kind is not None:
-                result[quantities.describe_capitalized(kind.describe(ask))] = kind.steps(self, ask)
+        result.update(self._quantity_sections())
         for ask in self.problem.asks.values():
             if ask.quantity.kind == "contact" and ask.quantity.detail == "min_release_height":
                 result[f"staying on the loop: the {ask.quantity.target}"] = list(
                     self._release_height(ask.quantity.target, "lagrange")[1])
         return {route: steps for route, steps in result.items() if steps}
+
+    def _quantity_sections(self) -> dict[str, list[Step]]:
+        """Each ask of a quantity of derive.quantities, its own section (headed by what it is, or by the
+        ask's meaning where two describe the same quantity); an inverse ask's ends solving for its parameter."""
+        result = {}
+        for ask in self.problem.asks.values():
+            kind = quantities.KINDS.get(ask.quantity.kind)
+            if kind is None:
+                continue
+            title = quantities.describe_capitalized(kind.describe(ask))
+            steps = kind.steps(self, ask)
+            if ask.zero_for:
+                title = quantities.describe_capitalized(ask.meaning)
+                steps.append(self._solved_for(ask))
+            result[title if title not in result else quantities.describe_capitalized(ask.meaning)] = steps
+        return result
+
+    def _solved_for(self, ask: Ask) -> Step:
+        """An inverse ask's last step: the parameter at which the quantity takes the value asked."""
+        parameter = self.problem.parameters[ask.zero_for]
+        value = units.in_unit(self.expressions[ask.name], ask.unit)
+        kind = quantities.KINDS.get(ask.quantity.kind)
+        target = units.declared_symbols(units.in_unit(ask.equals, kind.unit) if kind else ask.equals,
+                                        {p.symbol: p.unit for p in self.problem.parameters.values()})
+        said = ("It vanishes where, solved for ",) if ask.equals == 0 else ("It equals ", target, " where, solved for ")
+        return Step("", (sp.Eq(parameter.symbol, value),), sentences=(Sentence((*said, parameter.symbol, ":")),))
 
     def _regime_steps(self, needed: set, rest: dict) -> dict[str, list[Step]]:
         """The grip that decides the regime, and each slipping regime that some parameters of the

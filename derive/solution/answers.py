@@ -560,9 +560,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         for size in ask.small:
             result = tidy(sp.limit(result, size, 0, "+"))
         if ask.zero_for:  # the quantity counted as the question says (`sign:`) takes the value `equals`
-            counted = (result if ask.equals == 0 else answer_signs.magnitude(self.problem, result, proven=True)
-                       if ask.magnitude else result if ask.sign is None else answer_signs.stated(self, name) * result)
-            result = inverse.solved(self.problem, counted, ask)
+            result = inverse.solved(self.problem, self.counted(name, result), ask)
         leftover = result.free_symbols - {p.symbol for p in self.problem.parameters.values()} - {TIME}
         if leftover:
             names = ", ".join(sorted(map(str, leftover)))
@@ -571,6 +569,16 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             raise self.problem.error(f"ask.{name}.of", f"the answer depends on {names}, which the problem leaves "
                                      "unspecified: declare them as parameters")
         return result
+
+    def counted(self, name: str, value: sp.Expr) -> sp.Expr:
+        """An inverse ask's quantity `value` counted as its question says: its magnitude (`magnitude:`),
+        along the way `sign:` names positive, or as the routes give it (a value of zero any way)."""
+        ask = self.problem.asks[name]
+        if ask.equals == 0 or not (ask.magnitude or ask.sign):
+            return value
+        if ask.magnitude:
+            return answer_signs.magnitude(self.problem, value, proven=True)
+        return answer_signs.stated(self, name) * value
 
     @cached_property
     def expressions(self) -> dict[str, sp.Expr]:

@@ -54,16 +54,38 @@ def solved(problem, expr: sp.Expr, ask) -> sp.Expr:
     points = sample_points(problem, sp.Tuple(equation, *roots), count=8)
     if parameter.range is not None:
         low, high = parameter.si_ends  # the roots are in SI, as the symbol is
-        inside = [r for r in roots if any(low <= sp.N(r.xreplace(p), 30) <= high for p in points)]
+        inside = [r for r in roots if any(_within(r, p, low, high) for p in points)]
         roots = inside or roots
     if len(roots) != 1:
         said = "vanishes" if ask.equals == 0 else f"is {sp.sstr(ask.equals)}"
+        hint = (f" (a range for {ask.zero_for} that holds one of them, at the middle of the others', chooses it)"
+                if len(roots) > 1 else "")
         raise problem.error(field, f"{ask.path} {said} at {len(roots)} values of {ask.zero_for}, not one: "
-                            f"{', '.join(map(sp.sstr, roots)) or 'none'}")
+                            f"{', '.join(_said(r) for r in roots) or 'none'}{hint}")
     root = tidy(roots[0])
-    for point in points:
+    real = [p for p in points if sp.N(root.xreplace({s: v for s, v in p.items() if s != symbol}), 30).is_real]
+    if not real:
+        raise problem.error(field, f"{ask.path} takes the value asked at no real {ask.zero_for} over the ranges "
+                            f"({sp.sstr(root)}): narrow the ranges of the others to where it does")
+    for point in real:  # where the root is not real, the variant is redrawn (answer_conditions: in its range)
         _check(problem, field, equation, symbol, root, point, parameter)
+    if ask.finds == "find" and parameter.range is not None and \
+            not any(_within(root, p, *parameter.si_ends) for p in sample_points(problem, root, count=20)):
+        raise problem.error(field, f"{ask.zero_for} = {sp.sstr(root)} lies outside its range [{parameter.range[0]}, "
+                            f"{parameter.range[1]}] {parameter.unit} at every point of the others' ranges: a variant's "
+                            f"answer is a value of {ask.zero_for} in its range (widen it)")
     return root
+
+
+def _within(root: sp.Expr, point: dict, low: sp.Expr, high: sp.Expr) -> bool:
+    """Whether a root is real and in [low, high] at a point of the ranges."""
+    value = sp.N(root.xreplace(point), 30)
+    return bool(value.is_real and low <= value <= high)
+
+
+def _said(root: sp.Expr) -> str:
+    """A root as a message names it: a root by cases is long and says little."""
+    return "a root by cases" if root.has(sp.Piecewise) else sp.sstr(root)
 
 
 def _check(problem, field: str, equation: sp.Expr, symbol: sp.Symbol, root: sp.Expr, point: dict, parameter) -> None:
