@@ -13,7 +13,6 @@ from derive.solution.crosschecks import CheckFailure
 from derive.language.problem import load
 from derive.publishing import worksheets
 from derive.text import prose
-from derive.text.latex import symbol_latex
 
 
 def test_simulation_agrees_with_the_closed_forms():
@@ -161,8 +160,7 @@ def test_every_worked_solution_reads_as_prose(problem_id):
     tex, _ = student_solution(problem_id)
     solution = derived(problem_id)
     steps = {**solution.steps(), **(solution.student_steps or {})}
-    names = {n for n in worksheets.symbol_names(solution.problem, steps)
-             if n not in ("a", "A") and not symbol_latex(n).startswith(r"\mathit")}  # a word stays a word
+    names = {n for n in worksheets.symbol_names(solution.problem, steps) if not prose.stays_a_word(n)}
     fragments, repeated, lone = _unreadable(tex, names)
     assert not fragments, fragments
     assert not repeated, repeated

@@ -159,8 +159,8 @@ def solve(problem: Problem, overrides: dict[str, str] | None = None, digits: int
 def equations_of_motion(solution: Solution) -> dict[str, list[sp.Eq]]:
     """Each route's equations of motion in the reference configuration at rest (none where no
     ask is dynamic)."""
-    if not {a.quantity.kind for a in solution.problem.asks.values()} & DYNAMIC_KINDS:
-        return {}
+    if not {a.quantity.kind for a in solution.problem.asks.values()} & DYNAMIC_KINDS and not solution._needed_unknowns():
+        return {}  # nothing asked reads the motion or its forces (a torque of a hinge's force does)
     rest = solution.coordinates.at_rest_in_reference()
     return {route: [at_state(e, rest) for e in d.at_rest_equations] for route, d in solution.derivations.items()}
 

@@ -26,6 +26,7 @@ import dataclasses
 
 import sympy as sp
 
+from derive import quantities
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
 from derive.mechanics.angular_momentum import AboutAxle, about_axle
 from derive.core.tidying import tidy
@@ -47,8 +48,9 @@ ON_SLOPE = {"speed_at_bottom", "time_to_bottom"}
 
 
 def covered(quantity: Quantity) -> bool:
-    """Whether the student's route answers the quantity."""
-    if quantity.kind in ("acceleration", "angular_acceleration", "force"):
+    """Whether the student's route answers the quantity: a quantity of derive.quantities read at the
+    placement adds its own section to it (a torque: r x F with the forces the route finds)."""
+    if quantity.kind in ("acceleration", "angular_acceleration", "force") or quantity.kind in quantities.KINDS:
         return True
     return quantity.kind == "contact" and quantity.detail in ALONG | ON_SLOPE
 
@@ -91,10 +93,13 @@ def route(solution) -> AlongMotion | SmallSwing | AboutAxle | None:
             return small_swing(solution.dynamics_scene, solution.coordinates)
         except NotAlongALine:
             return None
-    if not asks or any(a.state is not None or a.zero_for or not covered(a.quantity) for a in asks):
+    if not asks or any(a.state is not None or a.zero_for and a.quantity.kind not in quantities.KINDS
+                       or not covered(a.quantity) for a in asks):
         return None
     if len(solution.regimes) != 1:
         return None
+    if all(a.quantity.kind in quantities.KINDS for a in asks) and not solution._needed_unknowns():
+        return None  # no force is asked or read: the quantities' own sections are the solution
     arguments = (solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
                  solution._sample, solution._needed_unknowns())
     for principle in (along_motion, statics):
@@ -133,7 +138,7 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     change = names(solution)
     shown = {title: [_renamed(step, change) for step in steps] for title, steps in result.items()}
     shown[title] += counted  # in the ask's own name, which no renaming of the route's symbols touches
-    return shown
+    return {**shown, **solution._quantity_sections()}  # each its own section, after the forces it reads
 
 
 def names(solution) -> dict[sp.Symbol, sp.Symbol]:

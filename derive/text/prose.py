@@ -110,6 +110,17 @@ GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "theta", "lambda", "mu", 
          "chi", "psi", "omega", "Omega", "Phi", "Psi", "Theta")
 
 
+def stays_a_word(name: str) -> bool:
+    """Whether a name in running text is left a word, not set as math: the article a, a word of small
+    letters (an ask named angle, at or tb), a name that typesets as one (\\mathit{GM}).
+
+    >>> [stays_a_word(n) for n in ("a", "angle", "tb", "theta", "v_0", "GM")]
+    [True, True, True, False, False, True]
+    """
+    return name in ("a", "A") or symbol_latex(name).startswith(r"\mathit") or \
+        bool(re.fullmatch("[a-z]{2,}", name)) and name not in GREEK
+
+
 def set_as_math(text: str, names: Iterable[str]) -> str:
     r"""`text` as LaTeX, escaped, each word of it that is one of `names` (the symbols of a problem: its
     parameters, its asks, the symbols its steps typeset) or a Greek letter's name set as math: "as the
@@ -119,9 +130,7 @@ def set_as_math(text: str, names: Iterable[str]) -> str:
     >>> set_as_math("Energy conservation as the center drops H, at a speed v_0 (x_ball's rate)", ["H", "v_0", "a", "x_ball"])
     "Energy conservation as the center drops $H$, at a speed $v_{0}$ ($x_{\\mathrm{ball}}$'s rate)"
     """
-    shown = sorted({n for n in (*names, *GREEK) if n not in ("a", "A") and not symbol_latex(n).startswith(r"\mathit")
-                    and not (re.fullmatch("[a-z]{2,}", n) and n not in GREEK)},  # a word: at, spin, tb
-                   key=lambda n: (-len(n), n))
+    shown = sorted({n for n in (*names, *GREEK) if not stays_a_word(n)}, key=lambda n: (-len(n), n))
     if not shown:
         return tex_escape(text)
     word = re.compile(r"(?<![\w\\])(" + "|".join(map(re.escape, shown)) + r")(?![\w])")
