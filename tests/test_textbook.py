@@ -392,6 +392,21 @@ EXPECTED = {
     # block): up the incline a = g (m2 - m1 (sin(theta) + mu_k cos(theta)))/(m1 + m2 + M/2), so down
     # it -a; the incline's run holds T1 = m1 (a + g sin(theta) + mu_k g cos(theta)). The file's
     # ranges always slip up the incline.
+    # Serway & Jewett ch. 10 (blocks over a massive disk pulley) on a double wedge: the faces at alpha
+    # and beta, the pulley's center R below both, each block d from its tangent point (issue 38).
+    "double_wedge_pulley": {
+        "a": lambda s: s.g * (s.m1 * _sin(s.alpha) - s.m2 * _sin(s.beta)) / (s.m1 + s.m2 + s.M / 2),
+        "T1": lambda s: s.m1 * (s.g * _sin(s.alpha) - s.g * (s.m1 * _sin(s.alpha) - s.m2 * _sin(s.beta)) / (s.m1 + s.m2 + s.M / 2)),
+        "T2": lambda s: s.m2 * (s.g * _sin(s.beta) + s.g * (s.m1 * _sin(s.alpha) - s.m2 * _sin(s.beta)) / (s.m1 + s.m2 + s.M / 2)),
+    },
+    # Serway & Jewett ch. 10 and ch. 6: a solid ball from rest with its center at (2H + 3r)/5 rolls
+    # down a circular chute into a loop it meets at the bottom: v^2 = (10/7) g (drop) = (4/7) g (H - r)
+    # there; it leaves the loop where v^2 = g y', y' = 10 (h - R)/17 above the loop's center (issue 38).
+    "ball_chute_into_loop": {
+        "v": lambda s: sp.sqrt(4 * s.g * (s.H - s.r) / 7),
+        "y": lambda s: s.R + 10 * ((2 * s.H + 3 * s.r) / 5 - s.R) / 17,
+        "v_off": lambda s: sp.sqrt(s.g * 10 * ((2 * s.H + 3 * s.r) / 5 - s.R) / 17),
+    },
     "incline_friction_pulley": {
         "a": lambda s: -s.g * (s.m2 - s.m1 * (_sin(s.theta) + s.mu_k * _cos(s.theta))) / (s.m1 + s.m2 + s.M / 2),
         "T1": lambda s: s.m1 * s.g * ((s.m2 - s.m1 * (_sin(s.theta) + s.mu_k * _cos(s.theta))) / (s.m1 + s.m2 + s.M / 2)

@@ -284,10 +284,32 @@ def radicals(expr, placed: tuple[sp.Expr, ...] = ()):
     >>> radicals(sp.sqrt(R**2*sp.sin(th)**2 + R**2*sp.cos(th)**2 + 3*R**2) + sp.Abs(sp.cos(th) - 2))
     2*R - cos(theta) + 2
     """
+    expr = expr.xreplace(_unnested(expr))
     roots = {a: _root_factors(a.base, a.exp, placed) for a in expr.atoms(sp.Pow)
              if a.exp.is_Rational and not a.exp.is_Integer and _rational_trigonometric(a.base)}
     expr = expr.xreplace(roots)
     return expr.xreplace({a: _unsigned(a.args[0], placed) for a in expr.atoms(sp.Abs)})
+
+
+def _unnested(expr) -> dict[sp.Expr, sp.Expr]:
+    """Each root whose base holds roots that square away once the base is expanded, with its base
+    expanded: a ball's distance from a loop's center, on the loop as a chain of states reaches it
+    from a chute (its coordinates from the placement on the chute, its height a root), came as
+    sqrt((x - a)**2 + (b - sqrt((R - r)**2 - (x - a)**2) - b)**2), which is sqrt((R - r)**2); as an
+    opaque root it made the states' linear solves run past 300 s.
+
+    >>> x, R, b, c = sp.symbols("x R b c", positive=True)
+    >>> list(_unnested(sp.sqrt(x**2 + (b*(c + 1) - sp.sqrt(R**2 - x**2) - b*c - b)**2)).values())
+    [R]
+    """
+    result = {}
+    for a in expr.atoms(sp.Pow):
+        if a.exp.is_Rational and not a.exp.is_Integer \
+                and any(p.exp.is_Rational and not p.exp.is_Integer for p in a.base.atoms(sp.Pow)):
+            base = sp.expand(a.base)
+            if _rational_trigonometric(base):
+                result[a] = base ** a.exp
+    return result
 
 
 def leading_plus(expr: sp.Expr) -> sp.Expr:

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, solve_linear
+from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, PERIOD, Derivation, nullspace, solve_linear
 from derive.text.steps import Step
 from derive.core.tidying import root, tidy
 from derive.model.kinematics import Coordinate, Coordinates, solve_gaps
@@ -138,7 +138,7 @@ def free_directions(scene: Scene, coords: Coordinates) -> list[sp.Matrix]:
     if not gaps:
         return [sp.Matrix([1 if i == j else 0 for j in range(len(positions))]) for i in range(len(positions))]
     jacobian = sp.Matrix(gaps).jacobian(positions).xreplace({q: 0 for q in positions})
-    return [tidy(x) for x in jacobian.nullspace(simplify=True)]
+    return [tidy(x) for x in nullspace(jacobian)]
 
 
 def at_equilibrium(derivation: Derivation, coords: Coordinates) -> dict:
