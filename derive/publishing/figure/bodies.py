@@ -9,7 +9,8 @@ from derive.publishing.figure.canvas import _add, _clamp, _f, _Figure, _label_ma
 
 
 def _placed(fig: _Figure) -> None:
-    """Bodies at given positions (a molecule): to scale, with the distances and the center of mass."""
+    """Bodies at given positions (a molecule): to scale, with the distances and the center of mass
+    (unless the question asks where it is)."""
     scene = fig.scene
     names = list(scene.motions)
     positions = [tuple(fig.num(p, 0) for p in scene.motions[n].position) for n in names]
@@ -29,6 +30,8 @@ def _placed(fig: _Figure) -> None:
         a, b = (scene.motions[n].position for n in names)
         fig.dimension(drawn[0], drawn[1], fig.tex(sp.sqrt((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2)), side=-1,
                       gap=0.55)
+    if any(a.quantity.kind in ("center_of_mass", "position_cm") for a in fig.problem.asks.values()):
+        return  # where it is, is what the question asks: the figure does not give it away
     total = sum(masses) or 1.0
     cm = (sum(m * p[0] for m, p in zip(masses, drawn)) / total, sum(m * p[1] for m, p in zip(masses, drawn)) / total)
     fig.add(f"\\draw {_pt(cm)} circle (0.1); \\draw {_pt(_add(cm, (-0.14, 0)))} -- {_pt(_add(cm, (0.14, 0)))} "
