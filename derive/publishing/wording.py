@@ -178,9 +178,9 @@ class Wording:
                     f"the {named[e]}" if e in named else "the support" for e in ends)
                 continue
             others = {b for p in parts if p is not part and made[p.name] == made[part.name] for b in p.bodies()}
-            owners = [b for b in part.bodies() if b in named and b not in others] or [b for b in part.bodies() if b in named]
+            owners = [b for b in part.bodies() if b in named and b not in others]
             free = [f"{noun} of the {named[b]}" for b in owners if f"{noun} of the {named[b]}" not in made.values()]
-            made[part.name] = free[0] if free else made[part.name]
+            made[part.name] = free[0] if free else made[part.name]  # three forces on one wheel: numbered, all of them
         for key, state in problem.scene.states.items():  # the joint an impact or a move makes is named after its state
             made.setdefault(key, "bounce" if state.event and state.event.kind == "bounce" else f"joint of the {self.states[key]}")
         return _numbered(made)
