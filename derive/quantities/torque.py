@@ -159,9 +159,10 @@ class Torque(QuantityKind):
                 x, y, fx, fy = sp.symbols("x y F_x F_y")
                 said = Sentence((f"The {load.label or 'pull of the cord'} on the {load.body} acts at ",
                                  sp.Eq(x, arm[0]), ", ", sp.Eq(y, arm[1]), f" from {about}, with ", sp.Eq(fx, force[0]),
-                                 ", ", sp.Eq(fy, force[1]), "; its torque about it, counter-clockwise positive, is ",
-                                 sp.Eq(name, x * fy - y * fx, evaluate=False), ":"))
-                result.append(Step("", (sp.Eq(name, torque),), sentences=(said,)))
+                                 ", ", sp.Eq(fy, force[1]), "."))
+                result.append(Step("The torque about that point, counter-clockwise positive, is the cross product of "
+                                   "the position and the force",
+                                   (sp.Eq(name, x * fy - y * fx, evaluate=False), sp.Eq(name, torque)), sentences=(said,)))
             total += torque
         if len(loads) > 1:
             result.append(Step(f"The net torque about {about} is their sum, counter-clockwise positive",

@@ -64,10 +64,12 @@ class Turns(StateChange, QuantityKind):
     def steps(self, solution, ask) -> list[Step]:
         """The angle turned between the two states, then the turns it makes: one turn is 2 pi."""
         angle = StateChange.value(self, solution, ask, 0)
-        said = Sentence((f"The {ask.quantity.target} turns through ", sp.Eq(sp.Symbol(r"\Delta\theta"), angle),
-                         " rad between the two states, counter-clockwise positive; one turn is ", 2 * sp.pi,
-                         " rad, so it makes"))
-        return [Step("", (sp.Eq(named(self, ask), shown(self, solution, ask)),), sentences=(said,))]
+        turned = sp.Symbol(r"\Delta\theta")
+        said = Sentence((f"The {ask.quantity.target} turns through ", sp.Eq(turned, angle),
+                         " rad between the two states, counter-clockwise positive."))
+        return [Step("The number of turns is the angle over one full turn",
+                     (sp.Eq(named(self, ask), sp.Abs(turned) / (2 * sp.pi), evaluate=False),
+                      sp.Eq(named(self, ask), shown(self, solution, ask))), sentences=(said,))]
 
     def describe(self, ask) -> str:
         return f"the number of turns the {ask.quantity.target} makes"

@@ -23,7 +23,6 @@ from derive.model import inertia
 from derive.core import limits, units
 from derive.solution.crosschecks import sample_points
 from derive.mechanics import friction, orbits, rolling, rolling_coin
-from derive.text.prose import Sentence
 from derive.text.steps import Step
 from derive.parts.cord import Cord
 from derive.language.problem import Ask
@@ -154,8 +153,9 @@ class AnswerSteps:
         kind = quantities.KINDS.get(ask.quantity.kind)
         target = units.declared_symbols(units.in_unit(ask.equals, kind.unit) if kind else ask.equals,
                                         {p.symbol: p.unit for p in self.problem.parameters.values()})
-        said = ("It vanishes where, solved for ",) if ask.equals == 0 else ("It equals ", target, " where, solved for ")
-        return Step("", (sp.Eq(parameter.symbol, value),), sentences=(Sentence((*said, parameter.symbol, ":")),))
+        quantity = sp.Symbol(kind.symbol_for(ask)) if kind else sp.Symbol(ask.name)
+        return Step(f"Where it takes the value asked, solved for {parameter.name}",
+                    (sp.Eq(quantity, target), sp.Eq(parameter.symbol, value)))
 
     def _regime_steps(self, needed: set, rest: dict) -> dict[str, list[Step]]:
         """The grip that decides the regime, and each slipping regime that some parameters of the
