@@ -212,13 +212,12 @@ def _not_negative(reader: Reader, field: str, shape: str, sizes: dict, density: 
     generic = {table.sizes[name]: value for name, value in sizes.items()}
     where, fractions = {}, []
     for coordinate, low, high in table.coordinates:  # outermost first: inner ends may use outer coordinates
-        # safe: the shape table's own numbers and expressions (derive.model.inertia.SHAPES), never text;
-        # strict=True refuses a string outright
-        low, high = (sp.sympify(e, strict=True).xreplace(generic).xreplace(where) for e in (low, high))
+        low, high = (sp.sympify(e, strict=True).xreplace(generic).xreplace(where)  # safe: inertia.SHAPES' own, never text
+                     for e in (low, high))
         fraction = sp.Dummy(f"t_{coordinate}", positive=True)
         where[coordinate], fractions = low + fraction * (high - low), fractions + [fraction]
-    # safe: the shape table's own coordinates, never text (strict=True refuses a string)
-    position = [sp.sympify(c, strict=True).xreplace(generic).xreplace(where) for c in table.position]
+    position = [sp.sympify(c, strict=True).xreplace(generic).xreplace(where)  # safe: the shape table's, never text
+                for c in table.position]
     rho = density.xreplace({**where, **dict(zip((inertia.x, inertia.y, inertia.z), position))})
     rho = sp.cancel(rho) if rho.is_rational_function() else sp.powsimp(rho)
     if rho.is_nonnegative:
