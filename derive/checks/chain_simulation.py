@@ -187,7 +187,7 @@ def _answer(solution, report: SimulationReport, name: str, carried: dict, took: 
         simulated = _float(solution.rate_at(q, carried[state], carried.get(start)), values)
     elif isinstance(quantities.KINDS.get(q.kind), quantities.StateChange):
         start = solution.scene.states[state].start
-        before = carried[start] if start else {s: sp.Integer(0) for c in coords.all for s in (c.q, c.u)}  # at rest
+        before = carried[start] if start else state_motion.rest(coords)
         simulated = _float(quantities.KINDS[q.kind].at(solution, ask, carried[state], before), values)
     else:
         read = _unknown(solution, q, state)

@@ -208,8 +208,7 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
         unit = units.unicode_unit(a["unit"])
         value = f" = {a['value']}{' ' + unit if unit else ''}" if a["value"] is not None else \
             (f"  [{unit}]" if unit else "")
-        declared = {p.symbol: p.unit for p in solution.problem.parameters.values()}
-        shown = units.declared_symbols(units.in_unit(solution.expression(name), a["unit"]), declared)
+        shown = units.declared_symbols(units.in_unit(solution.expression(name), a["unit"]), solution.problem.symbol_units)
         lines += indented(pretty(sp.Symbol(name), " = ", shown, value))
         lines.append(f"    ({a['meaning']}{', ' + a['direction'] if a.get('direction') else ''})")
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:

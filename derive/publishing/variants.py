@@ -133,9 +133,8 @@ class ProblemVariants:
         """Each answer's expression as the documents print it: in its ask's unit (`in_unit`), as it reads over the parameter ranges
         (derive.numbers.range_forms: 1/cos(beta), not sqrt(tan(beta)**2 + 1)); the keys keep the derived one."""
         ranges = range_forms.box(self.problem)
-        declared = {p.symbol: p.unit for p in self.problem.parameters.values()}
         return {name: range_forms.within(units.declared_symbols(units.in_unit(expression, self.problem.asks[name].unit),
-                                                                declared), ranges).xreplace(self.letters)
+                                                                self.problem.symbol_units), ranges).xreplace(self.letters)
                 for name, expression in self.solution.expressions.items()}
 
     @cached_property

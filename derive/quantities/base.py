@@ -83,12 +83,11 @@ def named(kind: QuantityKind, ask) -> sp.Symbol:
 def shown(kind: QuantityKind, solution, ask) -> sp.Expr:
     """The quantity as its steps print it: the answer in its ask's unit (turns in rev, a parameter in rev in
     them too); where the ask finds a parameter, the quantity itself, counted as the question says."""
-    declared = {p.symbol: p.unit for p in solution.problem.parameters.values()}
     if ask.zero_for:
         value, unit = solution.counted(ask.name, kind.value(solution, ask, 0)), kind.unit
     else:
         value, unit = solution.expression(ask.name), ask.unit
-    return units.declared_symbols(units.in_unit(value, unit), declared)
+    return units.declared_symbols(units.in_unit(value, unit), solution.problem.symbol_units)
 
 
 def describe_capitalized(text: str) -> str:
@@ -98,11 +97,6 @@ def describe_capitalized(text: str) -> str:
     "The torque of the rod's weight"
     """
     return text[:1].upper() + text[1:]
-
-
-def _at_rest(coords) -> dict[sp.Symbol, sp.Expr]:
-    """The placement at rest, as a state's values: every coordinate and velocity zero."""
-    return {s: sp.Integer(0) for s in coords.at_rest_in_reference()}
 
 
 class StateChange:
@@ -125,5 +119,5 @@ class StateChange:
         if route == 1:
             return None
         start = solution.scene.states[ask.state].start
-        before = solution.states[start].values if start else _at_rest(solution.coordinates)
+        before = solution.states[start].values if start else solution.coordinates.at_rest_in_reference()
         return self.at(solution, ask, solution.states[ask.state].values, before)

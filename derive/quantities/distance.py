@@ -19,7 +19,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.core.tidying import root, tidy
-from derive.numbers import intervals
+from derive.numbers import intervals, range_forms
 from derive.model.scene import Quantity
 from derive.quantities.base import QuantityKind, StateChange
 
@@ -40,7 +40,7 @@ class Distance(StateChange, QuantityKind):
         coords, body = solution.coordinates, ask.quantity.target
         moved = [values[coords.of(body, k).q] - before[coords.of(body, k).q] for k in ("x", "y")]
         squared = sp.trigsimp(moved[0] ** 2 + moved[1] ** 2)
-        box = {p.symbol: p.si_ends for p in solution.problem.parameters.values() if p.range or p.value is not None}
+        box = range_forms.box(solution.problem)
         # 1/|sin(theta)|, not sqrt(tan^2 + 1)/|tan|; 1/(sin + mu cos), not 1/sqrt(mu^2 cos^2 + mu sin(2 theta) + sin^2)
         found = []
         in_sines = sp.factor(sp.cancel(sp.expand_trig(squared).replace(sp.tan, lambda a: sp.sin(a) / sp.cos(a))))

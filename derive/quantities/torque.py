@@ -98,17 +98,31 @@ class Torque(QuantityKind):
     def _point(self, solution, ask) -> sp.Matrix:
         return solution.coordinates.position(ask.about.body, ask.about.offset)
 
+    def _moments(self, solution, ask) -> list[tuple]:
+        """Each load's (load, position from the point, force, torque), read where the ask is, with the forces
+        of the Newton–Euler solve (a couple: no position or force): route 0 and its steps."""
+        coords, where, point = solution.coordinates, self._where(solution, ask), self._point(solution, ask)
+        solved = solution.in_state("newton_euler", ask.state)
+        known = {u: solved[u] for u in self.unknowns(solution, ask)}
+        result = []
+        for load in self._loads(solution, ask):
+            if isinstance(load, AppliedTorque):
+                result.append((load, None, None, tidy(load.torque.xreplace(known).xreplace(where))))
+                continue
+            arm = (coords.position(load.body) + load.offset - point).xreplace(where).applyfunc(tidy)
+            force = load.force.xreplace(known).xreplace(where).applyfunc(tidy)
+            result.append((load, arm, force, tidy(_cross(arm, force))))
+        return result
+
     def value(self, solution, ask, route: int) -> sp.Expr:
+        if route == 0:
+            return tidy(sum((torque for *_, torque in self._moments(solution, ask)), sp.Integer(0)))
         coords = solution.coordinates
         where = self._where(solution, ask)
         point = self._point(solution, ask)
-        solved = solution.in_state("newton_euler" if route == 0 else "lagrange", ask.state)
+        solved = solution.in_state("lagrange", ask.state)
         known = {u: solved[u] for u in self.unknowns(solution, ask) | self._accelerations(solution, ask)}
-        if route == 0:
-            total = sum((load.torque if isinstance(load, AppliedTorque) else
-                         _cross(coords.position(load.body) + load.offset - point, load.force)
-                         for load in self._loads(solution, ask)), sp.Integer(0))
-        elif ask.quantity.detail is None:  # Euler's law for the body: I alpha + (r_cm - r_P) x M a_cm
+        if ask.quantity.detail is None:  # Euler's law for the body: I alpha + (r_cm - r_P) x M a_cm
             body = solution.scene.bodies[ask.quantity.target]
             name = body.name
             spin = body.inertia * coords.of(name, "theta").a if body.rotates else sp.Integer(0)
@@ -140,33 +154,24 @@ class Torque(QuantityKind):
     def steps(self, solution, ask) -> list[Step]:
         """Each load's torque, r x F with its point's position r from the point the torque is taken
         about (the forces as the Newton–Euler solve above finds them), and their sum."""
-        coords, about = solution.coordinates, ask.about.words
-        where, point = self._where(solution, ask), self._point(solution, ask)
-        solved = solution.in_state("newton_euler", ask.state)
-        known = {u: solved[u] for u in self.unknowns(solution, ask)}
-        result, total = [], sp.Integer(0)
-        loads = self._loads(solution, ask)
-        for load in loads:
+        about, result = ask.about.words, []
+        moments = self._moments(solution, ask)
+        for load, arm, force, torque in moments:
             name = sp.Symbol(f"tau_{_SHORT.get(load.label, load.label.rpartition(' ')[2] or 'cord')}")
-            if isinstance(load, AppliedTorque):
-                torque = tidy(load.torque.xreplace(known).xreplace(where))
+            if arm is None:
                 result.append(Step(f"The {load.label} is a couple: its torque is the same about every point", (
                     sp.Eq(name, torque),)))
-            else:
-                arm = (coords.position(load.body) + load.offset - point).xreplace(where).applyfunc(tidy)
-                force = load.force.xreplace(known).xreplace(where).applyfunc(tidy)
-                torque = tidy(_cross(arm, force))
-                x, y, fx, fy = sp.symbols("x y F_x F_y")
-                said = Sentence((f"The {load.label or 'pull of the cord'} on the {load.body} acts at ",
-                                 sp.Eq(x, arm[0]), ", ", sp.Eq(y, arm[1]), f" from {about}, with ", sp.Eq(fx, force[0]),
-                                 ", ", sp.Eq(fy, force[1]), "."))
-                result.append(Step("The torque about that point, counter-clockwise positive, is the cross product of "
-                                   "the position and the force",
-                                   (sp.Eq(name, x * fy - y * fx, evaluate=False), sp.Eq(name, torque)), sentences=(said,)))
-            total += torque
-        if len(loads) > 1:
+                continue
+            x, y, fx, fy = sp.symbols("x y F_x F_y")
+            said = Sentence((f"The {load.label or 'pull of the cord'} on the {load.body} acts at ",
+                             sp.Eq(x, arm[0]), ", ", sp.Eq(y, arm[1]), f" from {about}, with ", sp.Eq(fx, force[0]),
+                             ", ", sp.Eq(fy, force[1]), "."))
+            result.append(Step("The torque about that point, counter-clockwise positive, is the cross product of "
+                               "the position and the force",
+                               (sp.Eq(name, x * fy - y * fx, evaluate=False), sp.Eq(name, torque)), sentences=(said,)))
+        if len(moments) > 1:
             result.append(Step(f"The net torque about {about} is their sum, counter-clockwise positive",
-                               (sp.Eq(named(self, ask), tidy(total)),)))
+                               (sp.Eq(named(self, ask), self.value(solution, ask, 0)),)))
         return result
 
     def describe(self, ask) -> str:

@@ -21,7 +21,7 @@ from derive.core.errors import ProblemError
 from derive.core.tidying import leading_plus, tidy
 from derive import quantities
 from derive.model import directions
-from derive.numbers import intervals
+from derive.numbers import intervals, range_forms
 from derive.solution.crosschecks import sample_points
 
 
@@ -31,7 +31,7 @@ def magnitude(problem, expr: sp.Expr, proven: bool = False) -> sp.Expr:
     the whole box of the ranges in balls (derive.numbers.intervals), else the answer is |expr| and
     each variant's direction its own; without it (an ask's `magnitude: true`, as before) the sign is
     read off samples of the ranges and checked per variant (derive.solution.answer_conditions)."""
-    box = {p.symbol: p.si_ends for p in problem.parameters.values() if p.range is not None or p.value is not None}
+    box = range_forms.box(problem)
     if proven and expr.free_symbols <= set(box):
         if intervals.positive_over(expr, box, strict=False):
             return expr

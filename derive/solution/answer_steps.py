@@ -152,7 +152,7 @@ class AnswerSteps:
         value = units.in_unit(self.expressions[ask.name], ask.unit)
         kind = quantities.KINDS.get(ask.quantity.kind)
         target = units.declared_symbols(units.in_unit(ask.equals, kind.unit) if kind else ask.equals,
-                                        {p.symbol: p.unit for p in self.problem.parameters.values()})
+                                        self.problem.symbol_units)
         quantity = sp.Symbol(kind.symbol_for(ask)) if kind else sp.Symbol(ask.name)
         return Step(f"Where it takes the value asked, solved for {parameter.name}",
                     (sp.Eq(quantity, target), sp.Eq(parameter.symbol, value)))
