@@ -14,6 +14,7 @@ import sympy as sp
 from conftest import textbook
 from derive.publishing import export, figure, render
 from derive.solution.answers import Solution
+from derive.publishing.figure import label_places
 from derive.publishing.figure.canvas import _Figure
 from derive.publishing.figure.oblique import page
 from derive.language.problem import load
@@ -25,15 +26,32 @@ SOLIDS = ["rigid_body_L", "top_precession", "top_precession_exact"] + [
         "shaft_dynamic_imbalance", "gyroscope_wheel", "sleeping_cone", "top_two_precessions", "coin_rolls_in_circle",
         "disk_rolls_upright", "hoop_rolls_upright", "earth_free_precession", "football_free_precession",
         "tennis_racket", "thrown_plate_wobble")]
-ARROW = re.compile(r"^\\draw\[([^\]]*)\] \(([-\d.]+),([-\d.]+)\) -- \(([-\d.]+),([-\d.]+)\) node\[[^\]]*\] \{(.*)\};$", re.M)
+ARROW = re.compile(r"^\\draw\[([^\]]*)\] \(([-\d.]+),([-\d.]+)\) -- \(([-\d.]+),([-\d.]+)\)"
+                   r"(?: node\[anchor=([a-z ]+), inner sep=1.5pt\] \{(.*)\})?;$", re.M)
+NODE = re.compile(r"^\\node\[anchor=([a-z ]+), inner sep=1.5pt[^\]]*\] at \(([-\d.]+),([-\d.]+)\) \{(.*)\};$", re.M)
+
+
+def labelled(drawn: str) -> dict[str, tuple[tuple[float, float], str]]:
+    """Each labelled straight arrow's run on the page and its label's anchor, by its label: written on
+    the arrow, or moved off it to one of the places derive.publishing.figure.label_places offers
+    beside the arrow's tip."""
+    found, tips = {}, []
+    for style, x0, y0, x1, y1, anchor, label in ARROW.findall(drawn):
+        run = (float(x1) - float(x0), float(y1) - float(y0))
+        if label:
+            found[label] = (run, anchor)
+        tips.append(((float(x1), float(y1)), run))
+    for anchor, x, y, label in NODE.findall(drawn):
+        for tip, run in tips:
+            offered = label_places.candidates(label_places.Label(tip, "west", label))
+            if any(a == anchor and abs(p[0] - float(x)) <= 0.011 and abs(p[1] - float(y)) <= 0.011 for _, p, a in offered):
+                found.setdefault(label, (run, anchor))
+    return found
 
 
 def arrows(drawn: str) -> dict[str, tuple[float, float]]:
     """Each labelled straight arrow's run on the page, by its label."""
-    found = {}
-    for style, x0, y0, x1, y1, label in ARROW.findall(drawn):
-        found[label] = (float(x1) - float(x0), float(y1) - float(y0))
-    return found
+    return {label: run for label, (run, _) in labelled(drawn).items()}
 
 
 def degrees(u, v) -> float:
@@ -247,8 +265,7 @@ def test_omega_and_l_close_on_the_page_are_labelled_on_their_far_sides(name):
     omega, momentum = runs[r"$\vec\omega$"], runs[r"$\vec L$"]
     assert degrees(omega, momentum) < 15
     ccw = omega[0] * momentum[1] - omega[1] * momentum[0] > 0  # L counter-clockwise of omega
-    anchors = dict(re.findall(r"node\[anchor=([a-z ]+), inner sep=1.5pt\] \{(\$\\vec(?:\\omega| L)\$)\}", drawn))
-    anchors = {label: anchor for anchor, label in anchors.items()}
+    anchors = {label: anchor for label, (_, anchor) in labelled(drawn).items()}
     directions = {"north": (0, -1), "south": (0, 1), "east": (-1, 0), "west": (1, 0), "north east": (-1, -1),
                   "north west": (1, -1), "south east": (-1, 1), "south west": (1, 1)}  # where the label lies
     for label, run, sign in ((r"$\vec\omega$", omega, -1 if ccw else 1), (r"$\vec L$", momentum, 1 if ccw else -1)):

@@ -10,6 +10,7 @@ from derive.model import inertia
 from derive.core import units
 from derive.core.expr import TIME
 from derive.model.scene import Body, Motion
+from derive.publishing.figure import label_places
 
 #: Styles every figure declares (TikZ libraries: arrows.meta, patterns).
 STYLES = (r"font=\small, >={Stealth[length=2mm]}, "
@@ -80,6 +81,7 @@ class _Figure:
         self.problem = problem
         self.scene = problem.scene
         self.lines: list[str] = []
+        self.labels: list[label_places.Label] = []  # set when the picture is drawn (`text`)
         self.parameters = {p.symbol for p in problem.parameters.values()} | {TIME}
         self.values = {}
         for p in problem.parameters.values():
@@ -141,15 +143,26 @@ class _Figure:
         self.add(f"\\fill{f'[{style}]' if style else ''} {_pt(point)} circle ({_f(radius)});")
 
     def label(self, point, direction, text: str | None, options: str = "") -> None:
+        """A label beside `point`, away from it along `direction`, unless a stroke or another label is
+        there when the picture is drawn (derive.publishing.figure.label_places); turned (`rotate=`), it stays."""
         if text:
-            extra = f", {options}" if options else ""
-            self.add(f"\\node[anchor={_anchor(*direction)}, inner sep=1.5pt{extra}] at {_pt(point)} {{{text}}};")
+            self.labels.append(label_places.Label(point, _anchor(*direction), text, options, "rotate" in options))
 
     def arrow(self, start, vector, style: str, text: str | None = None, toward=None) -> None:
         """An arrow from `start` along `vector`, labelled at its tip (on the side `toward`, if given)."""
         end = _add(start, vector)
-        node = f" node[anchor={_anchor(*(toward or vector))}, inner sep=1.5pt] {{{text}}}" if text else ""
-        self.add(f"\\draw[{style}] {_pt(start)} -- {_pt(end)}{node};")
+        self._labelled(f"\\draw[{style}] {_pt(start)} -- {_pt(end)}", end, toward or vector, text)
+
+    def _labelled(self, path: str, point, direction, text: str | None, place: str = "") -> None:
+        """A path with its label written on it (`place`: TikZ's position on the path, `midway`), which
+        `text` moves off the path if a stroke or a label is there."""
+        if not text:
+            self.add(path + ";")
+            return
+        anchor = _anchor(*direction)
+        node = f" node[{place}{', ' if place else ''}anchor={anchor}, inner sep=1.5pt] {{{text}}}"
+        self.add(path + node + ";")
+        self.labels.append(label_places.Label(point, anchor, text, inline=node))
 
     def line(self, a, b, style: str = "") -> None:
         self.add(f"\\draw[{style}] {_pt(a)} -- {_pt(b)};" if style else f"\\draw {_pt(a)} -- {_pt(b)};")
@@ -162,8 +175,8 @@ class _Figure:
         a2, b2 = _add(a, normal, gap), _add(b, normal, gap)
         self.add(f"\\draw[gray, very thin] {_pt(a)} -- {_pt(_add(a, normal, gap + 0.08))} "
                  f"{_pt(b)} -- {_pt(_add(b, normal, gap + 0.08))};")
-        node = f" node[midway, anchor={_anchor(*normal)}, inner sep=1.5pt] {{${text}$}}" if text else ""
-        self.add(f"\\draw[dim] {_pt(a2)} -- {_pt(b2)}{node};")
+        self._labelled(f"\\draw[dim] {_pt(a2)} -- {_pt(b2)}", _add(a2, (b2[0] - a2[0], b2[1] - a2[1]), 0.5), normal,
+                       f"${text}$" if text else None, "midway")
 
     def arc(self, center, radius: float, start: float, end: float, text: str | None = None, style: str = "",
             label_radius: float | None = None) -> None:
@@ -209,7 +222,21 @@ class _Figure:
         self.arrow(center, (0, -length), "force", f"${weight}$" if weight else "$\\vec g$", toward)
 
     def text(self) -> str:
-        return "\\begin{tikzpicture}[" + STYLES + "]\n" + "\n".join(self.lines) + "\n\\end{tikzpicture}"
+        """The picture: its strokes, then its labels over them, each at its clearest place
+        (derive.publishing.figure.label_places); a label written on its path stays there if clear."""
+        lines, nodes = list(self.lines), []
+        for label, point, anchor, clear in label_places.placed(self.labels, label_places.strokes(self.lines)):
+            if label.inline:
+                if clear and (point, anchor) == (label.point, label.anchor):
+                    continue
+                at = next(i for i, line in enumerate(lines) if label.inline + ";" in line)
+                lines[at] = lines[at].replace(label.inline + ";", ";", 1)
+            options = [label.options] if label.options else []
+            if not clear:  # no place beside its point is clear: the label on a white patch, legible over what it covers
+                options.append("fill=white, fill opacity=0.8, text opacity=1")
+            nodes.append(f"\\node[anchor={anchor}, inner sep=1.5pt{''.join(', ' + o for o in options)}] "
+                         f"at {_pt(point)} {{{label.text}}};")
+        return "\\begin{tikzpicture}[" + STYLES + "]\n" + "\n".join(lines + nodes) + "\n\\end{tikzpicture}"
 
     # bodies
     def size(self, body: Body, name: str, default: float) -> float:

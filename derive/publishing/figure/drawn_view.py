@@ -4,10 +4,10 @@ figure's scale, its layers and labels (_Scene), and each body's outline (_Body).
 from __future__ import annotations
 
 import math
-import re
 
 import sympy as sp
 
+from derive.publishing.figure import label_places
 from derive.publishing.figure.canvas import _add, _anchor, _f, _Figure, _pt, _unit
 from derive.publishing.figure.vectors import _degrees, _dot, _norm, _perp, _sub
 from derive.model.kinematics import Coordinates
@@ -23,16 +23,6 @@ DIRECTIONS = [_unit(a) for a in (90, 0, 180, 270, 45, 135, 315, 225)]  # candida
 
 class Undrawable(Exception):
     """A part or a geometry the figure cannot draw truthfully."""
-
-
-def _text_width(text: str) -> float:
-    """A rough width (cm) of a label at \\small: letters and symbols, subscripts narrower."""
-    small = "\\scriptsize" in text
-    text = re.sub(r"\\(scriptsize|vec|mathrm|,|!|;)", "", text)
-    text = re.sub(r"\\[A-Za-z]+", "x", text)  # a Greek letter or a symbol: one character
-    sub = sum(len(m) for m in re.findall(r"_\{([^}]*)\}|_(.)", text) for m in m)
-    body = len(re.sub(r"[${}_^\\ ]", "", text)) - sub
-    return (0.19 * body + 0.13 * sub) * (0.75 if small else 1.0) + 0.12
 
 
 class _Scene:
@@ -102,15 +92,15 @@ class _Scene:
         label; `prefer`: the sides to try, in order (a direction, or a direction and an extra gap)."""
         if not text:
             return
-        width, height = _text_width(text), 0.34
+        width, height = label_places.text_width(text), label_places.HEIGHT
         best = None
         for rank, side in enumerate(prefer or DIRECTIONS):
             direction, extra = (side if isinstance(side[0], tuple) else (side, 0.0))
             direction = _norm(direction)
             where = _add(point, direction, gap + extra)
-            box = _box(where, _anchor(*direction), width, height)
-            covered = sum(1 for p in self.ink if box[0] <= p[0] <= box[2] and box[1] <= p[1] <= box[3])
-            overlap = sum(_overlap(box, _grown(other, 0.2)) for other in self.boxes)  # nor close enough to read as one
+            box = label_places.box(where, _anchor(*direction), width, height)
+            covered = label_places.covered(box, self.ink)
+            overlap = sum(label_places.overlap(box, label_places.grown(other, 0.2)) for other in self.boxes)  # nor close enough to read as one
             cost = covered + 400 * overlap + 0.3 * rank
             if best is None or cost < best[0]:
                 best = (cost, where, direction, box)
@@ -150,25 +140,6 @@ class _Scene:
         start = len(self.ink)
         self.ink_polyline(points)
         self.ground.update(self.ink[start:])
-
-
-def _box(point, anchor: str, width: float, height: float):
-    """The box (x0, y0, x1, y1) of a node of that size anchored at `point`."""
-    x, y = point
-    dx = {"west": 0, "east": -width, "north": -width / 2, "south": -width / 2, "center": -width / 2}
-    dy = {"south": 0, "north": -height, "west": -height / 2, "east": -height / 2, "center": -height / 2}
-    horizontal = next((k for k in ("west", "east") if k in anchor), anchor if anchor in ("north", "south") else "center")
-    vertical = next((k for k in ("south", "north") if k in anchor), anchor if anchor in ("west", "east") else "center")
-    x0, y0 = x + dx[horizontal], y + dy[vertical]
-    return (x0, y0, x0 + width, y0 + height)
-
-
-def _grown(box, margin: float):
-    return (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
-
-
-def _overlap(a, b) -> float:
-    return max(0.0, min(a[2], b[2]) - max(a[0], b[0])) * max(0.0, min(a[3], b[3]) - max(a[1], b[1]))
 
 
 class _Body:

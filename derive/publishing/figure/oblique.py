@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 
-from derive.publishing.figure.canvas import _anchor, _f, _pt
+from derive.publishing.figure.canvas import _f, _pt
 
 DEPTH = 0.5 * math.sqrt(0.5)  # y's run on the page along each of x and z, per unit
 
@@ -71,8 +71,7 @@ class Oblique:
         run on the page."""
         start, end = page(at), page(along(at, _unit(direction), length))
         run = (end[0] - start[0], end[1] - start[1])
-        node = f" node[anchor={_anchor(*(toward or run))}, inner sep=1.5pt] {{{text}}}" if text else ""
-        self.fig.add(f"\\draw[{style}] {_pt(start)} -- {_pt(end)}{node};")
+        self.fig.arrow(start, run, style, text, toward)
         return run
 
     def circle(self, center, normal, radius: float, style: str = "body", start=None, sweep: float = 360.0) -> None:

@@ -38,8 +38,10 @@ def _orbit(fig: _Figure) -> None:
         return
     # U_eff(r) = -GM/r + l^2/(2 r^2) in units of the circular radius and the well's depth
     x0, y0, width, height = 1.7, -0.9, 2.6, 2.2
-    fig.add(f"\\draw[->] {_pt((x0, y0 + height / 2))} -- {_pt((x0 + width, y0 + height / 2))} node[below] {{$r$}};")
-    fig.add(f"\\draw[->] {_pt((x0, y0))} -- {_pt((x0, y0 + height))} node[left] {{$U_{{\\mathrm{{eff}}}}$}};")
+    fig.line((x0, y0 + height / 2), (x0 + width, y0 + height / 2), "->")
+    fig.label((x0 + width, y0 + height / 2), (0, -1), "$r$")
+    fig.line((x0, y0), (x0, y0 + height), "->")
+    fig.label((x0, y0 + height), (-1, 0), "$U_{\\mathrm{eff}}$")
     points = []
     for k in range(40):
         x = 0.42 + k * (4.0 - 0.42) / 39
@@ -47,5 +49,6 @@ def _orbit(fig: _Figure) -> None:
         points.append(_pt((x0 + x * width / 4.0, y0 + height / 2 + u * height / 2.4)))
     fig.add(f"\\draw[thick, blue!70!black] plot[smooth] coordinates {{{' '.join(points)}}};")
     bottom = (x0 + width / 4.0, y0 + height / 2 - height / 2.4)
-    fig.add(f"\\draw[dotted] {_pt(bottom)} -- {_pt((bottom[0], y0 + height / 2))} node[above] {{$r_c$}};")
+    fig.line(bottom, (bottom[0], y0 + height / 2), "dotted")
+    fig.label((bottom[0], y0 + height / 2), (0, 1), "$r_c$")
     fig.out_of_page((-0.5, -0.45), fig.tex(orbit.angular_momentum))

@@ -14,7 +14,8 @@ def _paths(fig: _Figure) -> None:
     distance from O), or a general curve with r, theta and the polar unit vectors."""
     name, body = next((n, b) for n, b in fig.scene.bodies.items() if b.path is not None)
     path = body.path
-    fig.add("\\fill (0,0) circle (0.05) node[below left] {$O$};")
+    fig.dot((0, 0))
+    fig.label((0, 0), (-1, -1), "$O$")
     t = sp.Symbol("t")
     if path.kind == "polar" and not path.functions[0].has(t) and path.functions[1].has(t):
         _circle_path(fig, path, body)

@@ -87,7 +87,7 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
         body = scene.bodies[contact.body]
         pull = next((p for p in scene.loads if isinstance(p, Cord) and p.path[0].body == body.name
                      and p.path[-1].kind == "pulled"), None)
-        r = 1.0 if pull else 0.7
+        r = 1.0 if pull else 0.8
         center = (x, r)
         fig.body(body, center, r, block=body.shape == "point")
         fig.label((x + r + 0.12, 0.02), (1, 1), regime_text(fig, contact))

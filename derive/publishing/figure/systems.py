@@ -66,7 +66,8 @@ def _internal(fig: _Figure) -> None:
     centre, radius = (1.2, 0.9), 1.2
     points = [_add(centre, _unit(90 + 360 * k / n + 15), radius) for k in range(n)]
     origin = (-1.6, -0.6)
-    fig.add(f"\\fill {_pt(origin)} circle (0.05) node[below left] {{$O$}};")
+    fig.dot(origin)
+    fig.label(origin, (-1, -1), "$O$")
     for k, p in enumerate(points, start=1):
         fig.add(f"\\draw[dashed, gray, ->] {_pt(origin)} -- {_pt(p)};")
         fig.dot(p, 0.09)
