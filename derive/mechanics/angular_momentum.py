@@ -159,13 +159,13 @@ def slowed_to_rest(found: dict, torque: sp.Expr, words: str) -> tuple[Step, ...]
     """After an impact about an axle (`found`: its omega, the inertia I_axle about the axle), a
     constant `torque` against the turning stops the bodies: Newton's second law for the rotation
     about the axle, then the time and the angle at the constant deceleration (found: t, turn)."""
-    inertia, alpha, t, turn = sp.Symbol("I_axle"), sp.Symbol("alpha", positive=True), sp.Symbol("t"), sp.Symbol("Delta_theta")
+    inertia, alpha, t, turn = sp.Symbol("I_axle"), sp.Symbol("alpha", positive=True), sp.Symbol("t"), sp.Symbol("theta")
     deceleration = tidy(torque / found["I_axle"])
     found.update(t=tidy(found["omega"] / deceleration), turn=tidy(found["omega"]**2 / (2 * deceleration)))
     return (Step(f"Newton's second law for the rotation about the axle: the only torque about it is the one against "
                  f"the turning (the axle's force has no moment about it), so the bodies slow at a constant angular "
                  f"deceleration, turning {words}", (sp.Eq(inertia * alpha, torque), sp.Eq(alpha, deceleration))),
-            Step("From the rate omega to rest at that constant deceleration: the time, and the angle turned",
+            Step("From the rate omega to rest at that constant deceleration: the time, and the angle theta it turns through",
                  (sp.Eq(t, found["t"]), sp.Eq(turn, found["turn"])), role="solve"))
 
 
