@@ -378,3 +378,17 @@ def test_the_handout_follows_the_students_route_then_the_proof(tmp_path):
     route = tex.index(r"\section*{The skid, by Newton along the motion and the torque about the center}")
     assert route < tex.index(r"\section*{The proof by two routes}")
     assert "lost" in tex[route:tex.index(r"\section*{Result}")]
+
+
+def test_the_tops_proof_is_its_condition_by_lagrange_and_by_eulers_equations():
+    """Taylor ch. 10 (Lagrange's equation for the tilt in the Euler angles at a steady precession):
+    the proof the handout ends with, the top's condition by both of the engine's routes, in the
+    letters the student's route uses (theta, I_1 for what a fast top's question leaves out)."""
+    proof = Solution(load("top_precession")).steps()
+    assert set(proof) == {"lagrange", "newton_euler"}
+    m, g, R, inertia, w, I1, theta = _symbols("m", "g", "Rcm", "I", "omega", "I_1", "theta")
+    Omega = sp.Symbol("Omega", real=True)
+    for steps in proof.values():
+        (step,) = steps
+        (condition,) = step.equations
+        assert _same(condition.lhs, I1 * Omega**2 * sp.cos(theta) - inertia * w * Omega + m * g * R)

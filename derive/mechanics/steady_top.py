@@ -86,3 +86,21 @@ def steady_precession(I1, I3, mass, g, distance, spin, tilt, asked: set[str]) ->
                           (sp.Eq(-I3 * spin * Omega + mass * g * distance, 0),
                            sp.Eq(Omega, rates["precession.fast_top"])), role="solve"))
     return SteadyTop(tuple(steps), {d: rates[d] for d in PRECESSIONS if d in asked and d in rates})
+
+
+def as_a_textbook_writes(I1: sp.Expr, tilt: sp.Expr, given: set[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
+    """What a tilt or a transverse moment the problem leaves out (a fast top's: the engine's own
+    symbols for them) is written as: theta, and I_1 about the tip.
+
+    >>> m, d, t = sp.symbols("m d I_t", positive=True)
+    >>> as_a_textbook_writes(t + m * d**2, sp.Symbol("tilt_top"), {m, d})
+    {tilt_top: theta, I_t: I_1 - d**2*m}
+    """
+    change = {}
+    if not tilt.free_symbols <= given:
+        change[tilt] = sp.Symbol("theta", positive=True)
+    loose = I1.free_symbols - given
+    if len(loose) == 1:
+        (symbol,) = loose
+        change[symbol] = sp.solve(sp.Eq(I1, sp.Symbol("I_1", positive=True)), symbol)[0]
+    return change

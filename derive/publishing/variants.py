@@ -166,7 +166,7 @@ class ProblemVariants:
         solution = self.solution
         if "newton_euler" not in solution.steps():
             return {}
-        drawn = free_body.free_bodies(self.problem, solution.dynamics_scene, solution.coordinates, names=self.letters)
+        drawn = free_body.free_bodies(self.problem, solution.dynamics_scene, solution.coordinates, None, self.letters)
         return {id(s): drawn[s.body] for s in solution.derivations["newton_euler"].steps
                 if s.body and drawn.get(s.body) is not None}
 

@@ -27,7 +27,7 @@ from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
 from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, slowed_to_rest
 from derive.mechanics.skidding import skidding
-from derive.mechanics.steady_top import PRECESSIONS, steady_precession
+from derive.mechanics.steady_top import PRECESSIONS, as_a_textbook_writes, steady_precession
 from derive.model.directions import TURNS
 from derive.parts.contact import Contact
 from derive.parts.surfaces import Plane
@@ -71,12 +71,7 @@ def top_route(solution) -> TextbookRoute | None:
     except fixed_point.NotSymmetric:
         return None
     top = steady_precession(I1, I3, mass, g, distance, point.spin, point.tilt, {a.quantity.detail for a in asks})
-    given = {p.symbol for p in solution.problem.parameters.values()}
-    shown = {}  # a tilt or a transverse moment the question leaves out (a fast top's) as a textbook writes it
-    if not point.tilt.free_symbols <= given:
-        shown[point.tilt] = sp.Symbol("theta", positive=True)
-    if not I1.free_symbols <= given:
-        shown[I1] = sp.Symbol("I_1", positive=True)
+    shown = as_a_textbook_writes(I1, point.tilt, {p.symbol for p in solution.problem.parameters.values()})
     steps = tuple(dataclasses.replace(s, equations=tuple(e.xreplace(shown) for e in s.equations)) for s in top.steps)
     compared = tuple((f"{a.name} by {route}", top.rates[a.quantity.detail],
                       (lambda a=a, route=route: solution._pivot_point(a.quantity, route)))
