@@ -133,9 +133,9 @@ def about_center_of_mass(scene: Scene, coords: Coordinates, before: dict, after:
              "impact, and their center of mass moves on at", tuple(
                  e for i in axes for e in (sp.Eq(sp.Symbol(f"p_{'xy'[i]}"), momentum[i]),
                                            sp.Eq(sp.Symbol(f"V_{'xy'[i]}"), shift["xy"[i]])))),
-        Step("Nor has any outside impulse a moment about the point where their center of mass is as they meet, in the "
-             f"figure's axes; the angular momentum about it is the same just before and just after. Taking {words} "
-             "as positive, just before it is", (*places_said, sp.Eq(L, initial))),
+        Step("Nor has any outside impulse a moment about the point where their center of mass is as they meet (placed "
+             "below in the figure's axes), so the angular momentum about that point is the same just before and just "
+             f"after. Taking {words} as positive, just before it is", (*places_said, sp.Eq(L, initial))),
         Step(f"Just after, the bodies turn together at the rate omega, {words}, about their center of mass, with their "
              "moment of inertia about it (each body's own, and its mass times the square of its distance, by the "
              "parallel-axis theorem)", (sp.Eq(I_cm, tidy(inertia)), sp.Eq(L, I_cm * omega))),
