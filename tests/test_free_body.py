@@ -191,8 +191,11 @@ def test_the_solutions_show_each_diagram_after_its_step_and_compile_with_nothing
         assert route.count("\\begin{tikzpicture}") >= len(student), name
         students += len(student)
         proof = text.index(tex_escape(solution.problem.title), appendix)  # the proof by two routes, in the appendix
-        for body, diagram in diagrams.items():  # (the steps' words are the documents' own: derive.publishing.wording)
-            assert text.index(diagram.tikz, proof) > appendix, (name, body)
+        # (the steps' words are the documents' own: derive.publishing.wording; the labels its letters: F_x^axle beside R)
+        proofs = variants.ProblemVariants(solution.problem, solution, []).free_bodies
+        assert len(proofs) == len(diagrams), name
+        for diagram in proofs.values():
+            assert text.index(diagram.tikz, proof) > appendix, (name, diagram.body)
     assert text.count("\\begin{tikzpicture}") == len(PROBLEMS) + students + sum(len(d) for _, d in drawn.values())
     assert (tmp_path / "set" / "solutions.pdf").read_bytes().startswith(b"%PDF")
     assert _overfull(tex, tmp_path) == []

@@ -139,10 +139,10 @@ def test_the_compound_pendulum_swings_by_the_torque_about_its_pivot():
     assert sum(len(s.equations) for s in steps) <= 8
 
 
-@pytest.mark.parametrize("problem_id", ["sticky_impact_free", "kepler_orbit", "top_precession"])
+@pytest.mark.parametrize("problem_id", ["kepler_orbit", "cue_ball_backspin", "top_two_precessions"])
 def test_problems_outside_the_route_keep_the_engines_routes(problem_id):
-    """A free impact, an orbit, a top: not (yet) a student's route; their worked solutions show the
-    engine's derivation as before."""
+    """An orbit, a ball launched with backspin, a top's nutation: not (yet) a student's route; their
+    worked solutions show the engine's derivation as before."""
     solution = Solution(load(problem_id))
     assert solution.student_steps is None and solution.steps() is not None
 
@@ -259,3 +259,136 @@ def test_the_answer_counted_as_the_question_says_keeps_its_name_in_the_document(
     step = tex[tex.index("With the question's sign convention"):]
     assert step[step.index("\\begin{align*}") + len("\\begin{align*}"):].lstrip().startswith("a &=")
     assert "\\lambda" not in tex
+
+
+def _opening(steps) -> list[str]:
+    """Each step's principle by its opening words (the routes of states and of a top)."""
+    kinds = {"Torque about": "torque", "Newton's second law": "newton", "In steady precession": "momentum",
+             "Dividing by the sine of the tilt, the top's condition": "condition", "Solving": "solve",
+             "The question treats the top as fast": "fast top", "At these constant accelerations": "kinematics",
+             "It rolls without slipping once": "rolling", "Then": "kinematics", "The kinetic energy": "energy",
+             "No impulse from outside": "momentum", "Nor has any outside impulse a moment": "angular momentum",
+             "The only impulse from outside the bodies acts at the axle": "angular momentum",
+             "Just after": "after", "Setting the two equal": "solve", "From the rate": "kinematics"}
+    return [next((k for opening, k in kinds.items() if s.text.startswith(opening)), s.text) for s in steps]
+
+
+def _found(steps, name: str) -> sp.Expr:
+    """The last value the steps give `name`."""
+    return [e.rhs for s in steps for e in s.equations if str(e.lhs) == name][-1]
+
+
+def test_the_top_precesses_by_the_torque_about_its_tip_and_the_tops_condition():
+    """Taylor, Classical Mechanics, ch. 10 (the steady precession of a symmetric top: the condition
+    I1 Omega^2 cos(theta) - I3 omega3 Omega + m g R = 0, its two roots); Kleppner & Kolenkow 2nd ed.,
+    ch. 7 (the gyroscope: tau = Omega x L, the fast top's Omega = m g R/(I3 omega))."""
+    solution = Solution(load("top_precession_exact"))
+    (steps,) = solution.student_steps.values()
+    assert _opening(steps) == ["torque", "momentum", "newton", "condition", "solve", "fast top"]
+    m, g, R, I1, I3, w, theta = _symbols("m", "g", "Rcm", "I1", "I3", "omega", "theta")
+    Omega = sp.Symbol("Omega", positive=True)
+    assert _same(steps[0].equations[0].rhs, m * g * R * sp.sin(theta))
+    (condition,) = steps[3].equations
+    assert _same(condition.lhs - condition.rhs, I1 * Omega**2 * sp.cos(theta) - I3 * w * Omega + m * g * R)
+    disc = sp.sqrt(I3**2 * w**2 - 4 * I1 * m * g * R * sp.cos(theta))
+    assert _same(_found(steps, "Omega_slow"), (I3 * w - disc) / (2 * I1 * sp.cos(theta)))
+    assert _same(_found(steps, "Omega_fast"), (I3 * w + disc) / (2 * I1 * sp.cos(theta)))
+    assert _same(_found(steps, "Omega"), m * g * R / (I3 * w))
+    assert sum(len(s.equations) for s in steps) == 8
+
+
+def test_a_fast_top_drops_the_precessions_own_angular_momentum_only_as_the_question_says():
+    """Kleppner & Kolenkow 2nd ed., ch. 7 (the fast top: Omega = m g R/(I omega)); the question says
+    "treating it as a fast top". Its tilt and transverse moment, which it leaves out, are written as a
+    textbook writes them (theta, I_1), never as the engine's own names."""
+    (steps,) = Solution(load("top_precession")).student_steps.values()
+    assert _opening(steps) == ["torque", "momentum", "newton", "condition", "fast top"]
+    m, g, R, inertia, w = _symbols("m", "g", "Rcm", "I", "omega")
+    assert _same(_found(steps, "Omega"), m * g * R / (inertia * w))
+    shown = {x.name for s in steps for e in s.equations for x in e.free_symbols}
+    assert {"theta", "I_1"} <= shown and not any(n.endswith("_top") for n in shown)
+
+
+def test_the_bowling_ball_skids_by_newton_along_the_lane_and_the_torque_about_its_center():
+    """Serway & Jewett, Physics for Scientists and Engineers 9th ed., ch. 10 (a bowling ball launched
+    without spin: kinetic friction slows the center and spins the ball up until v = R omega); Kleppner &
+    Kolenkow 2nd ed., ch. 7: t = 2 v0/(7 mu g), v = 5 v0/7, d = 12 v0^2/(49 mu g), and the kinetic energy
+    lost to friction, M v0^2/7, positive."""
+    (steps,) = Solution(load("skid_to_roll")).student_steps.values()
+    assert _opening(steps) == ["newton", "torque", "kinematics", "rolling", "kinematics", "energy"]
+    M, R, v0, mu, g = _symbols("M", "R", "v0", "mu", "g")
+    assert _same(_found(steps, "a"), -mu * g) and _same(_found(steps, "alpha"), 5 * mu * g / (2 * R))
+    assert _same(_found(steps, "t"), 2 * v0 / (7 * mu * g))
+    assert _same(_found(steps, "V"), sp.Rational(5, 7) * v0)
+    assert _same(_found(steps, "d"), 12 * v0**2 / (49 * mu * g))
+    lost = steps[-1].equations[-1]
+    assert str(lost.lhs) == "K_0 - K_1" and _same(lost.rhs, M * v0**2 / 7)
+    assert sum(len(s.equations) for s in steps) == 17
+
+
+def test_a_clutch_keeps_the_angular_momentum_about_the_axle_and_a_brake_stops_the_pair():
+    """Halliday, Resnick & Walker 10th ed., ch. 11 (two disks on one axle that couple:
+    I1 w1 + I2 w2 = (I1 + I2) w; the kinetic energy lost, positive); ch. 10 (a constant torque
+    stops the pair: (I1 + I2) alpha = tau, t = w/alpha, an angle w^2/(2 alpha))."""
+    steps = Solution(load("clutch_disks_brake")).student_steps
+    clutch, brake = steps.values()
+    assert _opening(clutch) == ["angular momentum", "after", "solve", "energy"]
+    assert _opening(brake) == ["newton", "kinematics"]
+    M1, R1, M2, R2, w1, tau = _symbols("M1", "R1", "M2", "R2", "w1", "tau")
+    w2 = sp.Symbol("w2", real=True)  # the upper disk may turn either way
+    I1, I2 = M1 * R1**2 / 2, M2 * R2**2 / 2
+    w = (I1 * w1 + I2 * w2) / (I1 + I2)
+    assert _same(_found(clutch, "omega"), w)
+    lost = clutch[-1].equations[-1]
+    assert str(lost.lhs) == "K_0 - K_1" and _same(lost.rhs, I1 * I2 * (w1 - w2)**2 / (2 * (I1 + I2)))
+    assert _same(_found(brake, "t"), (I1 + I2) * w / tau)
+    assert _same(_found(brake, "theta"), (I1 + I2) * w**2 / (2 * tau))
+    assert sum(len(s.equations) for s in (*clutch, *brake)) == 11
+
+
+def test_a_sticky_impact_on_a_free_sphere_keeps_momentum_and_the_angular_momentum_about_the_center_of_mass():
+    """Kleppner & Kolenkow 2nd ed., ch. 7 (a bullet that sticks to a free body: the momentum, then
+    the angular momentum about the center of mass, where no outside impulse has a moment):
+    V = m v/(M + m), omega = m v (R - y_cm)/I_cm = 5 m v/(R (2 M + 7 m)); the kinetic energy lost,
+    M m v^2/(2 M + 7 m), positive."""
+    (steps,) = Solution(load("sticky_impact_free")).student_steps.values()
+    assert _opening(steps) == ["momentum", "angular momentum", "after", "solve", "energy"]
+    m, M, R, v = _symbols("m", "M", "R", "v")
+    assert _same(_found(steps, "V_x"), m * v / (M + m))
+    y = m * R / (M + m)
+    assert _same(_found(steps, "y_cm"), y) and _same(steps[1].equations[-1].rhs, m * v * (R - y))
+    assert _same(_found(steps, "I_cm"), sp.Rational(2, 5) * M * R**2 + M * y**2 + m * (R - y)**2)
+    assert _same(_found(steps, "omega"), 5 * m * v / (R * (2 * M + 7 * m)))
+    assert "clockwise" in steps[1].text
+    assert _same(steps[-1].equations[-1].rhs, M * m * v**2 / (2 * M + 7 * m))
+
+
+def test_the_new_routes_agree_with_both_engine_routes_in_derive_check():
+    problems = ("top_precession_exact", "skid_to_roll", "clutch_disks_brake", "sticky_impact_free")
+    done = run_derive("check", *problems)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.count("textbook_route") == len(problems)
+
+
+def test_the_handout_follows_the_students_route_then_the_proof(tmp_path):
+    """`derive handout` shows the student's route first, then the engine's two routes as the proof."""
+    done = run_derive("handout", "skid_to_roll", "--out", str(tmp_path / "h"), "--progress", "none")
+    assert done.returncode == 0, done.stderr
+    tex = (tmp_path / "h" / "skid_to_roll.tex").read_text()
+    route = tex.index(r"\section*{The skid, by Newton along the motion and the torque about the center}")
+    assert route < tex.index(r"\section*{The proof by two routes}")
+    assert "lost" in tex[route:tex.index(r"\section*{Result}")]
+
+
+def test_the_tops_proof_is_its_condition_by_lagrange_and_by_eulers_equations():
+    """Taylor ch. 10 (Lagrange's equation for the tilt in the Euler angles at a steady precession):
+    the proof the handout ends with, the top's condition by both of the engine's routes, in the
+    letters the student's route uses (theta, I_1 for what a fast top's question leaves out)."""
+    proof = Solution(load("top_precession")).steps()
+    assert set(proof) == {"lagrange", "newton_euler"}
+    m, g, R, inertia, w, I1, theta = _symbols("m", "g", "Rcm", "I", "omega", "I_1", "theta")
+    Omega = sp.Symbol("Omega", real=True)
+    for steps in proof.values():
+        (step,) = steps
+        (condition,) = step.equations
+        assert _same(condition.lhs, I1 * Omega**2 * sp.cos(theta) - inertia * w * Omega + m * g * R)

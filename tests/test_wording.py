@@ -107,6 +107,15 @@ def test_one_letter_for_one_kind_of_thing(problem_id):
         assert not turns, turns
 
 
+def test_a_joint_force_gives_way_to_a_radius():
+    """Issue 37: a hoop's radius R beside the nail's force R_x^nail printed one letter for two kinds of
+    thing; the force is printed F_x^nail (the problem's names, and so its key, are its own)."""
+    tex, _ = student_solution("hoop_on_nail")
+    math = " ".join(a or b for a, b in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}|\$([^$]*)\$", tex, flags=re.S))
+    assert re.search(r"(?<![\\\w])R(?![_\w])", math) and not re.search(r"(?<![\\\w])R_\{[xy]\}", math)
+    assert "F_{x}" in math
+
+
 def test_the_letters_give_way_only_to_a_clash():
     """ell only where another L is printed, phi only where the file names a theta, psi where it names phi too."""
     L, theta = sp.Symbol("L", positive=True), sp.Symbol("theta", positive=True)

@@ -11,9 +11,8 @@ impulse equations give (derive.solution.crosschecks).
 >>> import sympy as sp
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
->>> from derive.solution.textbook import impact_route
->>> route = impact_route(Solution(load("sticky_impact_pivoted")))
->>> route.steps[-1].equations
+>>> route = Solution(load("sticky_impact_pivoted")).textbook_route
+>>> list(route.sections.values())[0][-1].equations
 (Eq(omega, 5*b*m*v/(R**2*(2*M + 5*m))),)
 """
 from __future__ import annotations
@@ -32,14 +31,18 @@ from derive.model.directions import TURNS
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene
 from derive.parts.pin import Pin
+from derive.parts.weld import Weld
 
 
 @dataclass(frozen=True)
 class AboutAxle:
-    """The steps, and the engine's rates they give (each coordinate's velocity just after)."""
+    """The steps, the engine's rates they give (each coordinate's velocity just after), and what they
+    find by name: omega (the rate just after, a magnitude), K0 and K1 (the kinetic energy before and
+    after) and lost (their difference, positive), V_x and V_y (the center of mass's velocity after)."""
 
     steps: tuple[Step, ...]
     values: dict[sp.Symbol, sp.Expr]
+    found: dict[str, sp.Expr]
 
 
 def about_axle(scene: Scene, coords: Coordinates, before: dict, after: dict, sample: Callable[[sp.Expr], float],
@@ -71,6 +74,7 @@ def about_axle(scene: Scene, coords: Coordinates, before: dict, after: dict, sam
     L, inertia = sp.Symbol("L"), sp.Symbol("I_axle")
     words = TURNS[0] if sense > 0 else TURNS[1]
     result = leading_plus(tidy(initial / moment))
+    found = {"I_axle": moment}
     steps = [
         Step(f"The only impulse from outside the bodies acts at the axle: its force passes through the axle, so it has "
              f"no moment about it, and the angular momentum about the axle is the same just before and just after "
@@ -80,13 +84,99 @@ def about_axle(scene: Scene, coords: Coordinates, before: dict, after: dict, sam
         Step("Setting the two equal", (sp.Eq(omega, result),)),
     ]
     values = {u: tidy(sense * result * d) for u, d in zip(rates, direction)}
+    found["omega"] = result
     if energy:
-        kinetic, _ = energies(scene, coords)
-        k0, k1 = tidy(kinetic.xreplace(before)), tidy(kinetic.xreplace({**at, **values}))
-        steps.append(Step("The kinetic energy just before and just after; the impact takes the difference",
-                          (sp.Eq(sp.Symbol("K_0"), k0), sp.Eq(sp.Symbol("K_1"), k1),
-                           sp.Eq(sp.Symbol("Delta_K"), tidy(k0 - k1)))))
-    return AboutAxle(tuple(steps), values)
+        steps.append(_energy_taken(scene, coords, before, {**at, **values}, found))
+    return AboutAxle(tuple(steps), values, found)
+
+
+def about_center_of_mass(scene: Scene, coords: Coordinates, before: dict, after: dict,
+                         sample: Callable[[sp.Expr], float], energy: bool = False) -> AboutAxle:
+    """The route for an impact of free bodies (no joint to the ground) after which they move as one
+    rigid body: no outside impulse, so the momentum is the same just before and just after, and so is
+    the angular momentum about the point where their center of mass is as they meet (Kleppner &
+    Kolenkow 2nd ed., ch. 7: a bullet that sticks to a free rod). `before`, `after` and `energy` as
+    for `about_axle`."""
+    if outside(scene) or any(not isinstance(p, (Pin, Weld)) for p in scene.constraints):
+        raise NotAlongALine("a joint to the ground, or a joint that is not rigid")
+    at = {c.q: before[c.q] for c in coords.all}
+    rates = [c.u for c in coords.all]
+    conditions = sp.Matrix([v.xreplace(at) for part in scene.constraints for v in part.conditions(coords)])
+    if len(conditions.jacobian(rates).nullspace(simplify=True)) != 3:
+        raise NotAlongALine("the bodies do not move as one rigid body after the impact")
+    bodies = list(scene.bodies.values())
+    total = sum((b.mass for b in bodies), sp.Integer(0))
+    places = {b.name: coords.position(b.name).xreplace(at) for b in bodies}
+    center = (sum((b.mass * places[b.name] for b in bodies), sp.zeros(2, 1)) / total).applyfunc(tidy)
+    velocity = {b.name: sp.Matrix([before[coords.of(b.name, k).u] for k in ("x", "y")]) for b in bodies}
+    momentum = sum((b.mass * velocity[b.name] for b in bodies), sp.zeros(2, 1)).applyfunc(tidy)
+    turning = [b for b in bodies if b.rotates]
+    if not turning:
+        raise NotAlongALine("nothing turns after the impact")
+    spin = coords.of(turning[0].name, "theta").u
+    sense = 1 if sample(after[spin]) > 0 else -1
+    arms = {b.name: places[b.name] - center for b in bodies}
+    initial = sum((b.mass * (arms[b.name][0] * velocity[b.name][1] - arms[b.name][1] * velocity[b.name][0])
+                   + (b.inertia * before[coords.of(b.name, "theta").u] if b.rotates else 0) for b in bodies),
+                  sp.Integer(0))
+    initial = leading_plus(tidy(sense * initial))
+    inertia = sum((b.mass * arms[b.name].dot(arms[b.name]) + (b.inertia if b.rotates else 0) for b in bodies),
+                  sp.Integer(0))
+    omega, L, I_cm = sp.Symbol("omega", positive=True), sp.Symbol("L"), sp.Symbol("I_cm")
+    result = leading_plus(tidy(initial / tidy(inertia)))
+    shift = {k: tidy(momentum[i] / total) for i, k in enumerate("xy")}
+    words = TURNS[0] if sense > 0 else TURNS[1]
+    axes = [i for i in range(2) if momentum[i] != 0] or [0]
+    places_said = [sp.Eq(sp.Symbol(f"{'xy'[i]}_cm"), center[i]) for i in range(2) if center[i] != 0]
+    steps = [
+        Step("No impulse from outside acts on the bodies: their momentum is the same just before and just after the "
+             "impact, and their center of mass moves on at", tuple(
+                 e for i in axes for e in (sp.Eq(sp.Symbol(f"p_{'xy'[i]}"), momentum[i]),
+                                           sp.Eq(sp.Symbol(f"V_{'xy'[i]}"), shift["xy"[i]])))),
+        Step("Nor has any outside impulse a moment about the point where their center of mass is as they meet (placed "
+             "below in the figure's axes), so the angular momentum about that point is the same just before and just "
+             f"after. Taking {words} as positive, just before it is", (*places_said, sp.Eq(L, initial))),
+        Step(f"Just after, the bodies turn together at the rate omega, {words}, about their center of mass, with their "
+             "moment of inertia about it (each body's own, and its mass times the square of its distance, by the "
+             "parallel-axis theorem)", (sp.Eq(I_cm, tidy(inertia)), sp.Eq(L, I_cm * omega))),
+        Step("Setting the two equal", (sp.Eq(omega, result),)),
+    ]
+    w = sense * result
+    values = {}
+    for b in bodies:
+        arm = arms[b.name]
+        values[coords.of(b.name, "x").u] = tidy(shift["x"] - w * arm[1])
+        values[coords.of(b.name, "y").u] = tidy(shift["y"] + w * arm[0])
+        if b.rotates:
+            values[coords.of(b.name, "theta").u] = tidy(w)
+    found = {"omega": result, "V_x": shift["x"], "V_y": shift["y"]}
+    if energy:
+        steps.append(_energy_taken(scene, coords, before, {**at, **values}, found))
+    return AboutAxle(tuple(steps), values, found)
+
+
+def slowed_to_rest(found: dict, torque: sp.Expr, words: str) -> tuple[Step, ...]:
+    """After an impact about an axle (`found`: its omega, the inertia I_axle about the axle), a
+    constant `torque` against the turning stops the bodies: Newton's second law for the rotation
+    about the axle, then the time and the angle at the constant deceleration (found: t, turn)."""
+    inertia, alpha, t, turn = sp.Symbol("I_axle"), sp.Symbol("alpha", positive=True), sp.Symbol("t"), sp.Symbol("theta")
+    deceleration = tidy(torque / found["I_axle"])
+    found.update(t=tidy(found["omega"] / deceleration), turn=tidy(found["omega"]**2 / (2 * deceleration)))
+    return (Step(f"Newton's second law for the rotation about the axle: the only torque about it is the one against "
+                 f"the turning (the axle's force has no moment about it), so the bodies slow at a constant angular "
+                 f"deceleration, turning {words}", (sp.Eq(inertia * alpha, torque), sp.Eq(alpha, deceleration))),
+            Step("From the rate omega to rest at that constant deceleration: the time, and the angle theta it turns through",
+                 (sp.Eq(t, found["t"]), sp.Eq(turn, found["turn"])), role="solve"))
+
+
+def _energy_taken(scene: Scene, coords: Coordinates, before: dict, after: dict, found: dict) -> Step:
+    """The kinetic energy just before and just after, and the energy the impact takes (positive)."""
+    kinetic, _ = energies(scene, coords)
+    found.update(K0=tidy(kinetic.xreplace(before)), K1=tidy(kinetic.xreplace(after)))
+    found["lost"] = tidy(found["K0"] - found["K1"])
+    K0, K1 = sp.Symbol("K_0"), sp.Symbol("K_1")
+    return Step("The kinetic energy just before and just after; the kinetic energy the impact takes is the difference",
+                (sp.Eq(K0, found["K0"]), sp.Eq(K1, found["K1"]), sp.Eq(K0 - K1, found["lost"])))
 
 
 def _momentum(scene: Scene, coords: Coordinates, at: dict, axle: sp.Matrix, velocities: dict) -> sp.Expr:

@@ -5,13 +5,16 @@ parameter and another of its symbols would share one.
 letter and differ by a subscript but mean different kinds of thing: a rod's length L beside its
 angular momentum L_z or L_O (the length is printed as \ell), an incline's angle theta beside a
 body's turn theta_ball (the turn, a coordinate of the engine, is printed as phi_ball, or psi_ball
-where a name of the file is phi). The problem file keeps its names; its answers' values and the
-keys are those derived.
+where a name of the file is phi), a radius R beside a joint's force R_x^axle (the force is
+printed F_x^axle, or P_x^axle where a name of the file is F). The problem file keeps its names; its
+answers' values and the keys are those derived.
 
 >>> import sympy as sp
 >>> L, theta, turn = sp.Symbol("L", positive=True), sp.Symbol("theta", positive=True), sp.Symbol("theta_ball")
 >>> sorted(printed({"L": L, "theta": theta}, {"L_z"}, {turn, sp.Symbol("thetadot_ball")}).items(), key=str)
 [(L, ell), (theta_ball, phi_ball), (thetadot_ball, phidot_ball)]
+>>> printed({"R": sp.Symbol("R", positive=True)}, set(), {sp.Symbol("R_x^axle", real=True)})
+{R_x^axle: F_x^axle}
 """
 from __future__ import annotations
 
@@ -26,6 +29,9 @@ OTHERWISE = {"L": "ell"}
 #: An engine coordinate's rotation angle (its rates too), and the letters it gives way to, in order.
 TURN = re.compile(r"theta((?:d?dot)?)_(\w+)")
 FREE = ("phi", "psi")
+#: A joint's force (the engine's R_x^axle, or R_y as the student's route prints it), and its letters otherwise.
+JOINT_FORCE = re.compile(r"R(_[xy](?:\^\w+)?)")
+FORCE = ("F", "P")
 
 
 def _letter(name: str) -> str:
@@ -48,6 +54,11 @@ def printed(parameters: Mapping[str, sp.Symbol], asks: Iterable[str], shown: Ite
         for s in shown:
             if free and (turn := TURN.fullmatch(s.name)):
                 change[s] = sp.Symbol(f"{free}{turn[1]}_{turn[2]}", **s.assumptions0)
+    if "R" in parameters:
+        free = next((f for f in FORCE if f not in file_letters and not any(_letter(s.name) == f for s in shown)), None)
+        for s in shown:
+            if free and s.name not in asks and (force := JOINT_FORCE.fullmatch(s.name)):
+                change[s] = sp.Symbol(f"{free}{force[1]}", **s.assumptions0)
     return change
 
 

@@ -166,7 +166,7 @@ class ProblemVariants:
         solution = self.solution
         if "newton_euler" not in solution.steps():
             return {}
-        drawn = free_body.free_bodies(self.problem, solution.dynamics_scene, solution.coordinates)
+        drawn = free_body.free_bodies(self.problem, solution.dynamics_scene, solution.coordinates, None, self.letters)
         return {id(s): drawn[s.body] for s in solution.derivations["newton_euler"].steps
                 if s.body and drawn.get(s.body) is not None}
 
@@ -178,8 +178,10 @@ class ProblemVariants:
         steps, route = self.solution.student_steps, self.solution.textbook_route
         if steps is None or not isinstance(route, AlongMotion):  # a swing, an impact: no body's balance
             return {}
+        names = textbook.names(self.solution)  # f for f^ball, then a letter given way (F_x for R_x beside R)
+        names = {**self.letters, **{u: self.letters.get(v, v) for u, v in names.items()}}
         drawn = free_body.free_bodies(self.problem, self.solution.dynamics_scene, self.solution.coordinates,
-                                      route.acting, textbook.names(self.solution))
+                                      route.acting, names)
         result, seen = {}, set()
         for step in (s for section in steps.values() for s in section):
             if step.body and step.body not in seen and drawn.get(step.body) is not None:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.mechanics import angular_impulse, bearings, fixed_point, free_rotation, rolling_coin
+from derive.mechanics import angular_impulse, bearings, fixed_point, free_rotation, rolling_coin, steady_top
 from derive.text.steps import Step
 from derive.core.tidying import tidy
 from derive.parts.torque import Torque
@@ -207,6 +207,27 @@ class SolidAnswers:
             asked = tuple(sp.Eq(sp.Symbol(n), self._free_rotation(a.quantity, route), evaluate=False)
                           for n, a in self.problem.asks.items() if a.quantity.kind == "free_rotation")
             result[title] = [*steps, Step("Solved for what is asked", asked, role="solve")]
+        return result
+
+    def _steady_precession_steps(self) -> dict[str, list[Step]]:
+        """The proof of a top's steady precessions (the student's route is tau = Omega x L,
+        derive.mechanics.steady_top): each route's equation for the tilt (Lagrange's in the Euler angles,
+        Euler's about the fixed point) with the tilt held and the axis turning at Omega, divided by
+        sin(theta): the top's condition, the same by both. None for a level axle (no division by cos)."""
+        result = {}
+        for name in sorted({a.quantity.target for a in self.problem.asks.values()}):
+            point, top = self.scene.pivot_points[name], self.standing_top(name)
+            if sp.cos(point.tilt) == 0:
+                continue
+            I1 = fixed_point.moments(top[0], top[1], top[3])[0]
+            names = steady_top.as_a_textbook_writes(I1, point.tilt, {p.symbol for p in self.problem.parameters.values()})
+            for route in ("lagrange", "newton_euler"):
+                condition = fixed_point.precession_condition(*top, point.spin, point.tilt, route)
+                shown = tidy(sp.expand((condition * I1 * sp.cos(point.tilt)).xreplace(names)))
+                result.setdefault(route, []).append(Step(
+                    f"The {name}'s equation of motion for its tilt, in the Euler angles, with the tilt held, the axis "
+                    "turning about the vertical at the rate Omega and the spin omega, divided by the sine of the tilt",
+                    (sp.Eq(shown, 0),), role="equations"))
         return result
 
     def _solid_conditions(self) -> list[tuple[sp.Expr, bool, str]]:

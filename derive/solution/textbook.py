@@ -6,12 +6,13 @@ along the motion and torques about the center of mass or a fixed pivot (derive.m
 the time down a slope from the constant acceleration; the least coefficient of friction from the
 friction and normal force found; statics by the balances of forces and of torques about the point
 that removes the most unknowns (derive.mechanics.statics); small oscillations about a pivot by
-tau = -kappa theta (derive.mechanics.small_swings); an impact about an axle by the angular momentum
-about it (derive.mechanics.angular_momentum). Lagrange's method and Newton–Euler stay as the proof (the
+tau = -kappa theta (derive.mechanics.small_swings); a top's steady precession by tau = Omega x L, a
+skid that ends in rolling, an impact by the angular momentum about the axle or about the free bodies'
+center of mass (derive.solution.textbook_routes). Lagrange's method and Newton–Euler stay as the proof (the
 instructor's verification): this route is a third one, which must agree with them
 (derive.solution.crosschecks: the check textbook_route).
 
-Where an ask lies outside these principles (a state reached by impacts, an oscillation, a top), no
+Where an ask lies outside these principles (a chain of states, an oscillation, an orbit), no
 student route is written (`steps` is None) and the worked solution shows the two routes.
 
 >>> from derive.language.problem import load
@@ -28,7 +29,6 @@ import sympy as sp
 
 from derive import quantities
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
-from derive.mechanics.angular_momentum import AboutAxle, about_axle
 from derive.core.tidying import tidy
 from derive.mechanics.derivation import KINETIC
 from derive.text.steps import Step
@@ -36,7 +36,7 @@ from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
 from derive.parts.contact import Contact
-from derive.solution.state_events import in_place
+from derive.solution.textbook_routes import TextbookRoute, state_route, top_route
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -58,36 +58,16 @@ def covered(quantity: Quantity) -> bool:
 SWINGS = {("small_oscillation", "omega"), ("small_oscillation", "period")}
 
 
-#: What the angular momentum about an axle answers just after an impact.
-AFTER_IMPACT = {"angular_velocity", "kinetic_energy_change"}
-
-
-def impact_route(solution) -> AboutAxle | None:
-    """The angular momentum about the axle through a sticking or locking impact from a state moving at
-    given rates, where every ask is read just after it (None otherwise)."""
-    asks = list(solution.problem.asks.values())
-    states = {a.state for a in asks}
-    if len(states) != 1 or None in states or any(a.quantity.kind not in AFTER_IMPACT for a in asks):
-        return None
-    (name,) = states
-    state = solution.scene.states[name]
-    start = solution.scene.states.get(state.start) if state.start else None
-    if state.event is None or state.event.kind not in ("stick", "lock") or start is None or not start.rates:
-        return None
-    scene = solution._scene_with(in_place(solution._struck_with(name), solution._chain.made[name]))
-    try:
-        return about_axle(scene, solution.coordinates, solution.states[state.start].values, solution.states[name].values,
-                          solution._sample, energy=any(a.quantity.kind == "kinetic_energy_change" for a in asks))
-    except NotAlongALine:
-        return None
-
-
-def route(solution) -> AlongMotion | SmallSwing | AboutAxle | None:
+def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
     """The route along the motion of the solution's scene (or its balance, its small swing about a
-    pivot, an impact about an axle), where every ask is one the student's route answers (None otherwise)."""
+    pivot, a top's steady precession, its states: an impact, a skid), where every ask is one the
+    student's route answers (None otherwise)."""
     if solution.scene.states:
-        return impact_route(solution)
+        return state_route(solution)
     asks = solution.problem.asks.values()
+    top = top_route(solution) if solution.scene.pivot_points else None
+    if top is not None:
+        return top
     if asks and {(a.quantity.kind, a.quantity.detail) for a in asks} <= SWINGS and not solution.scene.states:
         try:
             return small_swing(solution.dynamics_scene, solution.coordinates)
@@ -117,8 +97,8 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
         return None
     if isinstance(along, SmallSwing):
         return {"Small oscillations about the pivot": list(along.steps)}
-    if isinstance(along, AboutAxle):
-        return {"The impact, by the angular momentum about the axle": list(along.steps)}
+    if isinstance(along, TextbookRoute):
+        return {title: list(steps) for title, steps in along.sections.items()}
     title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"
     result = {title: list(along.steps)}
     for ask in solution.problem.asks.values():

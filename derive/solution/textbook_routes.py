@@ -1,0 +1,193 @@
+"""The student's routes that are not Newton's second law along the motion at the placement
+(derive.solution.textbook): a top's steady precession by tau = Omega x L (derive.mechanics.steady_top),
+a ball that skids and then rolls (derive.mechanics.skidding), an impact that sticks or locks by the
+angular momentum about the axle or, of free bodies, the momentum and the angular momentum about
+their center of mass (derive.mechanics.angular_momentum), and a pair on an axle braked to rest after
+a clutch locks.
+
+Each gives its sections and what it finds beside what the engine finds for the same thing (the
+rates or accelerations its two routes give, the answers the key prints): the check textbook_route
+(derive.solution.crosschecks) compares every pair.
+
+>>> from derive.language.problem import load
+>>> from derive.solution.answers import Solution
+>>> route = Solution(load("skid_to_roll")).textbook_route
+>>> list(route.sections)
+['The skid, by Newton along the motion and the torque about the center']
+"""
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.mechanics import fixed_point
+from derive.mechanics.along_motion import NotAlongALine
+from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, slowed_to_rest
+from derive.mechanics.skidding import skidding
+from derive.mechanics.steady_top import PRECESSIONS, as_a_textbook_writes, steady_precession
+from derive.model.directions import TURNS
+from derive.parts.contact import Contact
+from derive.parts.surfaces import Plane
+from derive.parts.torque import Torque
+from derive.solution.state_events import in_place
+
+
+@dataclass(frozen=True)
+class TextbookRoute:
+    """A student's route by section, and its findings beside the engine's: (what, the route's value,
+    a function giving the engine's) for each."""
+
+    sections: dict[str, tuple]
+    compared: tuple[tuple[str, sp.Expr, Callable[[], sp.Expr]], ...]
+    principle: str
+
+    def agreement(self, agree: Callable, failure: Callable) -> set[str]:
+        """The methods by which each finding agrees with the engine's (`agree(a, b)`: a method, or None
+        where they differ); raises `failure(what, mine, engine's)` at the first that differs."""
+        methods = set()
+        for what, value, engine in self.compared:
+            expected = engine()
+            method = agree(value, expected)
+            if method is None:
+                raise failure(what, value, expected)
+            methods.add(method)
+        return methods
+
+
+def top_route(solution) -> TextbookRoute | None:
+    """tau = Omega x L for a top's steady precessions, where every ask is one of them (None otherwise)."""
+    asks = list(solution.problem.asks.values())
+    if not asks or any(a.quantity.kind != "pivot_point" or a.quantity.detail not in PRECESSIONS or a.state
+                       for a in asks) or len({a.quantity.target for a in asks}) != 1:
+        return None
+    name = asks[0].quantity.target
+    tensor, mass, g, distance = solution.standing_top(name)
+    point = solution.scene.pivot_points[name]
+    try:
+        I1, I3 = fixed_point.moments(tensor, mass, distance)
+    except fixed_point.NotSymmetric:
+        return None
+    top = steady_precession(I1, I3, mass, g, distance, point.spin, point.tilt, {a.quantity.detail for a in asks})
+    shown = as_a_textbook_writes(I1, point.tilt, {p.symbol for p in solution.problem.parameters.values()})
+    steps = tuple(dataclasses.replace(s, equations=tuple(e.xreplace(shown) for e in s.equations)) for s in top.steps)
+    compared = tuple((f"{a.name} by {route}", top.rates[a.quantity.detail],
+                      (lambda a=a, route=route: solution._pivot_point(a.quantity, route)))
+                     for a in asks for route in ("lagrange", "newton_euler"))
+    return TextbookRoute({"Steady precession, by the torque about the tip": steps}, compared,
+                         "the torque about the tip, tau = Omega x L")
+
+
+def state_route(solution) -> TextbookRoute | None:
+    """The route of a scene's states: a skid that ends in rolling, or an impact (and a braking after
+    it), where every ask is one of what it finds (None otherwise)."""
+    return _skid_route(solution) or _impact_route(solution)
+
+
+#: What each route's findings answer: (the ask's kind, detail) -> the finding's name.
+SKID = {("acceleration", "x"): "a", ("time", None): "time", ("position", "x"): "distance",
+        ("velocity", "x"): "speed", ("kinetic_energy", None): "K1", ("kinetic_energy_change", None): "lost",
+        ("angular_velocity", None): "rate"}
+IMPACT = {("angular_velocity", None): "omega", ("kinetic_energy_change", None): "lost", ("kinetic_energy", None): "K1",
+          ("center_of_mass_velocity", "x"): "V_x", ("center_of_mass_velocity", "y"): "V_y"}
+
+
+def _skid_route(solution) -> TextbookRoute | None:
+    """One body launched without spin on a level floor with kinetic friction, asked about the skid
+    (from the launch) and the state where it grips."""
+    states = solution.scene.states
+    grip = [s for s in states.values() if s.until and s.until[0] == "grips"]
+    if len(states) != 2 or len(grip) != 1 or len(solution.scene.bodies) != 1:
+        return None
+    (state,), (body,) = grip, solution.scene.bodies.values()
+    start = states.get(state.start)
+    contact = next((c for c in solution.scene.constraints if isinstance(c, Contact) and c.body == body.name), None)
+    if start is None or contact is None or contact.rolling or contact.kinetic is None or "radius" not in body.sizes:
+        return None
+    surface = solution.scene.surfaces[contact.surface]
+    rates = {(k, v) for _, k, v in start.rates}
+    launch = next((v for k, v in rates if k == "x"), None)
+    if not isinstance(surface, Plane) or surface.angle != 0 or launch is None or ("theta", 0) not in rates \
+            or solution._sample(launch) <= 0:
+        return None
+    asks = solution.problem.asks
+    for ask in asks.values():
+        key = (ask.quantity.kind, ask.quantity.detail)
+        if key not in SKID or ask.state != (start.name if key == ("acceleration", "x") else state.name):
+            return None
+    energy = any(SKID[a.quantity.kind, a.quantity.detail] in ("K1", "lost") for a in asks.values())
+    skid = skidding(body.mass, body.inertia, body.sizes["radius"], contact.kinetic, solution.scene.gravity.g, launch, energy)
+    x, theta = (solution.coordinates.of(body.name, k).a for k in ("x", "theta"))
+    engine = {x: skid.values["a"], theta: -skid.values["alpha"]}  # forward is +x: it turns clockwise
+    compared = [(f"{a} by {route}", value, (lambda a=a, route=route: solution.in_state(route, start.name).raw[a]))
+                for a, value in engine.items() for route in ("lagrange", "newton_euler")]
+    found = {**skid.values, "a": -skid.values["a"]}  # the key's answers are magnitudes, a direction in words
+    compared += [(name, found[SKID[a.quantity.kind, a.quantity.detail]], (lambda name=name: solution.expression(name)))
+                 for name, a in asks.items()]
+    return TextbookRoute({"The skid, by Newton along the motion and the torque about the center": skid.steps},
+                         tuple(compared), "Newton's second law along the motion and the torque about the center")
+
+
+def _impact_route(solution) -> TextbookRoute | None:
+    """A sticking or locking impact from a state moving at given rates: about the axle, or of free
+    bodies about their center of mass; then, about an axle, a constant torque that stops them."""
+    states = solution.scene.states
+    impact = [s for s in states.values() if s.event is not None]
+    if len(impact) != 1 or impact[0].event.kind not in ("stick", "lock"):
+        return None
+    (state,) = impact
+    start = states.get(state.start)
+    stop = [s for s in states.values() if s.start == state.name and s.until == ("stops", None)]
+    if start is None or not start.rates or len(states) != 2 + len(stop) or len(stop) > 1:
+        return None
+    asks = solution.problem.asks
+    for ask in asks.values():
+        key = (ask.quantity.kind, ask.quantity.detail)
+        fits = (ask.state == state.name and key in IMPACT or ask.state == start.name and key == ("kinetic_energy", None)
+                or stop and ask.state == stop[0].name and key in (("time", None), ("angle", None)))
+        if not fits:
+            return None
+    scene = solution._scene_with(in_place(solution._struck_with(state.name), solution._chain.made[state.name]))
+    energy = any(a.quantity.kind.startswith("kinetic_energy") for a in asks.values())
+    before, after = solution.states[start.name].values, solution.states[state.name].values
+    try:
+        route = about_axle(scene, solution.coordinates, before, after, solution._sample, energy=energy)
+        title = "The impact, by the angular momentum about the axle"
+    except NotAlongALine:
+        try:
+            route = about_center_of_mass(scene, solution.coordinates, before, after, solution._sample, energy=energy)
+        except NotAlongALine:
+            return None
+        title = "The impact, by the momentum and the angular momentum about the center of mass"
+    sections = {title: route.steps}
+    if stop:
+        braking = _braking(solution, scene, route, after)
+        if braking is None:
+            return None
+        sections["Braked to rest, by the torque about the axle"] = braking
+    found = {**route.found}
+    compared = [(str(u), value, (lambda u=u: solution.states[state.name].values[u])) for u, value in route.values.items()]
+    for name, ask in asks.items():
+        key = "K0" if ask.state == start.name else "t" if ask.quantity.kind == "time" else "turn" \
+            if ask.quantity.kind == "angle" else IMPACT[ask.quantity.kind, ask.quantity.detail]
+        value = found[key] if key not in ("V_x", "V_y") else sp.Abs(found[key]) if found[key] != 0 else found[key]
+        compared.append((name, value, (lambda name=name: solution.expression(name))))
+    return TextbookRoute(sections, tuple(compared), "the angular momentum about the point where no outside impulse "
+                                                    "has a moment")
+
+
+def _braking(solution, scene, route, after) -> tuple | None:
+    """The pair on the axle slowed to rest by the constant couples on it (None where they do not slow it)."""
+    if "I_axle" not in route.found:
+        return None
+    couple = sum((p.torque for p in scene.loads if isinstance(p, Torque) and p.axis is None), sp.Integer(0))
+    if any(not isinstance(p, Torque) for p in scene.loads) or couple == 0:
+        return None
+    turning = next(c for c in solution.coordinates.all if c.kind == "theta" and route.values.get(c.u, 0) != 0)
+    sense = 1 if solution._sample(after[turning.u]) > 0 else -1
+    against = -sense * couple
+    if solution._sample(against) <= 0:
+        return None
+    return slowed_to_rest(route.found, against, TURNS[0] if sense > 0 else TURNS[1])
