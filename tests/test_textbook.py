@@ -40,6 +40,12 @@ def _wedge_vy(s):
     return -(1 - s.e) * sp.sqrt(2 * s.g * s.h) / 2
 
 
+def _tangent_cosine(s):
+    """The cosine of the angle a cord makes with a face tangent to a pulley of radius R below it, from a
+    block d along the face from the point of contact to the pulley's far side: 2 atan(R/d)."""
+    return (s.d**2 - s.R**2) / (s.d**2 + s.R**2)
+
+
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
     # From a balance, with a vanishing push (nudged:). Serway & Jewett ch. 10: a rod standing on a smooth floor
@@ -406,6 +412,23 @@ EXPECTED = {
         "v": lambda s: sp.sqrt(4 * s.g * (s.H - s.r) / 7),
         "y": lambda s: s.R + 10 * ((2 * s.H + 3 * s.r) / 5 - s.R) / 17,
         "v_off": lambda s: sp.sqrt(s.g * 10 * ((2 * s.H + 3 * s.r) / 5 - s.R) / 17),
+    },
+    # The same, released where the chute's radius to the ball is at phi0 from the vertical: its center
+    # starts at h = H - (H - r) cos(phi0), so v^2 = (10/7) g (H - r)(1 - cos(phi0)) at the bottom, and it
+    # leaves the loop 10 (h - R)/17 above the loop's center (issue 38: past 400 s, a root's square unfolded).
+    "ball_chute_into_loop_released": {
+        "v": lambda s: sp.sqrt(10 * s.g * (s.H - s.r) * (1 - _cos(s.phi0)) / 7),
+        "y": lambda s: s.R + 10 * (s.H - (s.H - s.r) * _cos(s.phi0) - s.R) / 17,
+        "v_off": lambda s: sp.sqrt(s.g * 10 * (s.H - (s.H - s.r) * _cos(s.phi0) - s.R) / 17),
+    },
+    # Serway & Jewett ch. 10 and ch. 5 on issue 38's own double wedge, each face tangent to the pulley from
+    # below: each cord climbs from its block to the pulley's top at 2 atan(R/d) to its face, cosine k.
+    # From rest (no centripetal terms) the blocks' balances along their faces and the pulley's torque give
+    # a = g (m1 sin(alpha) - m2 sin(beta))/(m1 + m2 + k^2 M/2) and T1 = m1 (g sin(alpha) - a)/k.
+    "double_wedge_tangent_cords": {
+        "a": lambda s: s.g * (s.m1 * _sin(s.alpha) - s.m2 * _sin(s.beta)) / (s.m1 + s.m2 + _tangent_cosine(s) ** 2 * s.M / 2),
+        "T1": lambda s: s.m1 * (s.g * _sin(s.alpha) - s.g * (s.m1 * _sin(s.alpha) - s.m2 * _sin(s.beta))
+                                / (s.m1 + s.m2 + _tangent_cosine(s) ** 2 * s.M / 2)) / _tangent_cosine(s),
     },
     "incline_friction_pulley": {
         "a": lambda s: -s.g * (s.m2 - s.m1 * (_sin(s.theta) + s.mu_k * _cos(s.theta))) / (s.m1 + s.m2 + s.M / 2),

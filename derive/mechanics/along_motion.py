@@ -101,7 +101,9 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
     direction = direction / (leading.speed if leading.heading is not None else definite(sp.Abs(leading.turn), sample))
     moving = [_moving(body, coords, direction, index, sample) for body in scene.bodies.values()]
     leading = next(m for m in moving if m.name == leading.name)
-    flipped = {u: -1 if sample(reference[u]) < 0 else 1 for c in scene.constraints for u in c.unknowns().values()}
+    # each force's sign from its value as solved (a ball decides it): tidying every force of a cord's tangent
+    # geometry on a double wedge (an axle's force, 500 operations in two angles) took minutes, for a sign
+    flipped = {u: -1 if sample(reference.raw[u]) < 0 else 1 for c in scene.constraints for u in c.unknowns().values()}
     loads = all_forces(scene, coords)
     names = _names(moving, leading, scene)
     base = names[leading.name, "a" if leading.heading is not None else "alpha"]
