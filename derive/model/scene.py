@@ -80,6 +80,7 @@ class Body:
     at: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))  # the center of mass, reference configuration
     angle: sp.Expr = sp.Integer(0)  # the body frame's angle from the world's axes there
     composite: CompositeParts | None = None  # a body made of parts: derive.model.composite
+    round_center: tuple[sp.Expr, sp.Expr] | None = None  # its round face's center off its center of mass
 
     @property
     def rotates(self) -> bool:
@@ -504,6 +505,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
                                  f"{surface.carrier}: ask {head}.acceleration.x|y")
             if rest == "min_release_height" and not (isinstance(surface, Circle) and surface.side == "inside"):
                 raise ValueError("min_release_height is for a body riding a loop")
+            if rest in ("speed_at_bottom", "time_to_bottom", "min_release_height") and contact.center is not None:
+                raise ValueError(f"{rest} takes the acceleration along the surface constant; the {head} rests on a "
+                                 "round face off its center of mass, so it changes as the body turns")
             if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
             return Quantity("contact", head, rest)

@@ -239,6 +239,13 @@ class _Figure:
         elif shape == "cone":
             self.add(f"\\draw[body] {_pt(_add(center, (-radius, -radius / 2)))} -- "
                      f"{_pt(_add(center, (radius, -radius / 2)))} -- {_pt(_add(center, (0, radius * 1.2)))} -- cycle;")
+        elif shape == "custom" and body.round_center is not None:  # a hemisphere: its round face about `center`
+            face = self.num(body.sizes["radius"], 1.0)
+            off = [self.num(v, 0.0) / face * radius for v in body.round_center]
+            toward = math.degrees(math.atan2(-off[1], -off[0])) + angle  # from the face's center to the mass's
+            self.add(f"\\draw[body] {_pt(_add(center, _unit(toward - 90), radius))} arc ({_f(toward - 90)}:"
+                     f"{_f(toward + 90)}:{r}) -- cycle;")
+            c = _pt(_add(center, _unit(toward), math.hypot(*off)))
         elif shape == "custom" and "radius" not in body.sizes:
             self.add(f"\\draw[body, rotate around={{{_f(angle)}:{c}}}] {c} ellipse ({r} and {_f(radius * aspect)});")
         elif body.density is not None:
