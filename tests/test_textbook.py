@@ -50,6 +50,9 @@ EXPECTED = {
                            "T": lambda s: 2 * sp.pi * sp.sqrt(26 * s.R / (15 * s.g))},
     "half_cylinder_rocking": {"T": lambda s: 2 * sp.pi / sp.sqrt(8 * s.g / ((9 * sp.pi - 16) * s.R))},
     "loaded_hoop_rocking": {"w": lambda s: sp.sqrt(s.m * s.g / (2 * s.M * s.R))},
+    # A body on a fixed point hanging below it, turning as one in a cone (rod.conical.rate). Kleppner &
+    # Kolenkow ch. 7: a uniform rod pivoted at its upper end, at theta from the vertical: omega^2 = 3 g/(2 L cos(theta)).
+    "rod_conical_pendulum": {"W": lambda s: sp.sqrt(3 * s.g / (2 * s.L * sp.cos(s.theta)))},
     # From a balance, with a vanishing push (nudged:). Serway & Jewett ch. 10: a rod standing on a smooth floor
     # lands flat at v_cm = sqrt(3 g L)/2, omega = sqrt(3 g/L) (clockwise here: it falls to the right).
     "rod_upright_nudged": {"v": lambda s: sp.sqrt(3 * s.g * s.L) / 2, "w": lambda s: -sp.sqrt(3 * s.g / s.L)},

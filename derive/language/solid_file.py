@@ -37,7 +37,8 @@ PRINCIPAL_INERTIA = Keys(principal=Key("vector", "the principal moments [Ix, Iy,
 #: `pivot_point:` a body turning about a fixed point (a top, a gyroscope).
 PIVOT_POINT = Keys(at=Key("any", "where the point is: a distance below the center of mass along the body's axis, "
                                  "tip, end, center or a composite's named point", required=True),
-                   tilt=Key("quantity", "the axis's tilt from the vertical, 0 to pi/2"),
+                   tilt=Key("quantity", "the axis's tilt from the upward vertical, 0 to pi (beyond pi/2 the body hangs "
+                                        "below its point)"),
                    spin=Key("expression", "omega's component along the axis, in rad/s"))
 #: `free_rotation:` a body turning with no torque.
 FREE_ROTATION = Keys(spin=Key("expression", "omega's component along the body's own axis, in rad/s", required=True),
@@ -210,9 +211,14 @@ def pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoin
         offset = tuple(-distance if a == axis else sp.Integer(0) for a in "xyz")
     tilt = (reader.dimensioned(raw["tilt"], f"{here}.tilt", "rad", "a tilt") if "tilt" in raw
             else reader.unspecified(f"tilt_{body.name}", "rad"))
-    if "tilt" in raw and not all(v.is_number and 0 < v <= sp.pi / 2 for v in _at_range_ends(reader, tilt)):
-        raise reader.fail(f"{here}.tilt", "the axis leans from the vertical by more than 0 and at most pi/2 (a "
-                                          "body hanging below its point is not modelled; an upright one has no tilt)")
+    ends = _at_range_ends(reader, tilt) if "tilt" in raw else []
+    if not all(v.is_number and 0 < v < sp.pi for v in ends) or \
+            len({bool(v > sp.pi / 2) for v in ends}) > 1 or offset == (0, 0, 0) and any(v > sp.pi / 2 for v in ends):
+        raise reader.fail(f"{here}.tilt", "the axis from the point through the center of mass leans from the upward "
+                                          "vertical by more than 0 and less than pi, on one side of pi/2 over the "
+                                          "ranges (at most pi/2: it stands; more: it hangs below its point, a rod "
+                                          "swinging in a cone at theta from the downward vertical has tilt: pi - "
+                                          "theta; an upright one has no tilt)")
     about = spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and body.shape != "custom":
         raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body's transverse moment")
@@ -221,9 +227,12 @@ def pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoin
         transverse, axial = axial_inertia(reader, spec, field)
         distance_squared = sum(c**2 for c in offset)
         moments = (transverse - body.mass * distance_squared if about == "pivot" else transverse, axial)
+    if raw.get("spin") == 0:
+        raise reader.fail(f"{here}.spin", "a spin is positive: leave it out where no ask needs it (a body that swings "
+                                          "round in a cone, rod.conical.rate, has no spin of its own to give)")
     spin = (reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin") if "spin" in raw
             else reader.unspecified(f"spin_{body.name}", "rad/s"))  # a sleeping top's least spin needs none
-    return PivotPoint(offset, tilt, spin, moments)
+    return PivotPoint(offset, tilt, spin, moments, hangs=any(v > sp.pi / 2 for v in ends))
 
 
 def free_rotation(reader: Reader, spec: dict, field: str, body: Body) -> FreeRotation:

@@ -376,8 +376,11 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         return Quantity("angular_impulse", head, rest)
     if head in scene.pivot_points and rest not in ("mass", "inertia"):
         if rest not in PIVOT_POINT_QUANTITIES:
-            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, PIVOT_POINT_QUANTITIES))
+            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, conical.rate, mass "
+                             "and inertia" + did_you_mean(rest, (*PIVOT_POINT_QUANTITIES, "conical.rate")))
+        if scene.pivot_points[head].hangs:
+            raise ValueError(f"the {head} hangs below its point: its precessions and nutations are derived for a top "
+                             f"standing on it; ask {head}.conical.rate, its steady turn in a cone")
         return Quantity("pivot_point", head, rest)
     if head in scene.rolls_on_edge and rest not in ("mass", "inertia"):
         if rest not in ROLLING_COIN_QUANTITIES:

@@ -44,12 +44,14 @@ class PivotPoint:
     `tilt` from the vertical; `spin`, omega's component along that axis. At the center of mass
     (`offset` zero: no weight's torque about it) the axis is the body's own symmetry axis, leaning
     by `tilt` from the ground's z toward its x. `inertia`: a custom body's (transverse, axial)
-    moments about its center of mass, else None."""
+    moments about its center of mass, else None. `hangs`: the tilt is beyond pi/2, the center of
+    mass below the point (a rod swinging in a cone)."""
 
     offset: tuple[sp.Expr, sp.Expr, sp.Expr]
     tilt: sp.Expr
     spin: sp.Expr
     inertia: tuple[sp.Expr, sp.Expr] | None = None
+    hangs: bool = False
 
     @property
     def centered(self) -> bool:

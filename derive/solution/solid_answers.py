@@ -76,6 +76,14 @@ class SolidAnswers:
             raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
         return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
 
+    def conical_squared(self, name: str, route: str) -> sp.Expr:
+        """Omega^2 of the steady conical motion of a body on a fixed point, by one route
+        (derive.mechanics.fixed_point; refused for a body that is not symmetric about its axis)."""
+        try:
+            return fixed_point.conical_squared(*self.standing_top(name), self.scene.pivot_points[name].tilt, route)
+        except fixed_point.NotSymmetric as error:
+            raise self.problem.error(f"scene.bodies.{name}", f"{name}.conical.rate: {error}") from None
+
     def impulse_turn(self, name: str) -> tuple:
         """((I1, I3), spin, the axis n, the couple's direction a, tau, dt) of a body on a fixed point
         at its center of mass under a couple for a time (derive.mechanics.angular_impulse): the axis

@@ -136,7 +136,8 @@ class SolidChecks:
         (Euler's equations about the point) and Kane agree term by term, and each asked quantity by
         Lagrange and Newton–Euler; the fast-top rate's relative error against the slow root is reported."""
         methods, notes = {"symbolic"}, []
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "pivot_point"}:
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind in ("pivot_point",
+                                                                                                   "conical")}:
             top = self.standing_top(name)
             found = {route: fixed_point.equations(*top, route) for route in fixed_point.ROUTES}
             for route in fixed_point.ROUTES[1:]:
