@@ -53,6 +53,9 @@ EXPECTED = {
     # A body on a fixed point hanging below it, turning as one in a cone (rod.conical.rate). Kleppner &
     # Kolenkow ch. 7: a uniform rod pivoted at its upper end, at theta from the vertical: omega^2 = 3 g/(2 L cos(theta)).
     "rod_conical_pendulum": {"W": lambda s: sp.sqrt(3 * s.g / (2 * s.L * sp.cos(s.theta)))},
+    # A rotor spinning in bearings whose shaft is itself turned (bearings: {turned: Omega}). Irodov sec. 1.6, a
+    # ship's turbine as the ship turns: the bearings' gyroscopic torque I omega Omega, each bearing's force that over d.
+    "ship_turbine_turning": {"tau": lambda s: s.I * s.omega * s.Omega, "F": lambda s: s.I * s.omega * s.Omega / s.d},
     # From a balance, with a vanishing push (nudged:). Serway & Jewett ch. 10: a rod standing on a smooth floor
     # lands flat at v_cm = sqrt(3 g L)/2, omega = sqrt(3 g/L) (clockwise here: it falls to the right).
     "rod_upright_nudged": {"v": lambda s: sp.sqrt(3 * s.g * s.L) / 2, "w": lambda s: -sp.sqrt(3 * s.g / s.L)},

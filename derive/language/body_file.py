@@ -112,7 +112,7 @@ def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     given = None
     if shape == "custom" and "free_rotation" in spec:
         given = solid_file.free_inertia(reader, spec, field)[2]  # the moment about z; the rest is read with the rotation
-    elif shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec):
+    elif shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec or "bearings" in spec):
         given = solid_file.axial_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the key
     elif shape == "custom":
         if "inertia" not in spec:

@@ -24,7 +24,9 @@ BEARINGS = Keys(rate=Key("expression", "the constant rate about the shaft (the z
                 through=Key("any", "the body's point the shaft passes through: a named point or [x, y, z] in the "
                                    "body's frame (default: its center of mass)"),
                 incline=Key("quantity", "the shaft's angle above the horizontal under gravity, -pi/2 to pi/2"),
-                thrust=Key("name", "the bearing that takes the weight along an inclined shaft", choices=("A", "B")))
+                thrust=Key("name", "the bearing that takes the weight along an inclined shaft", choices=("A", "B")),
+                turned=Key("expression", "the rate at which the shaft itself is turned about the y axis, across it, "
+                                         "in rad/s (a ship's turbine as the ship turns; default 0)"))
 #: `rolls_on_edge:` a thin round body rolling on its rim on the horizontal plane.
 ROLLS_ON_EDGE = Keys(tilt=Key("quantity", "its plane's lean from the vertical in the steady motion, 0 to pi/2"),
                      circle=Key("expression", "the radius of the circle its contact point traces, in m"))
@@ -57,12 +59,16 @@ def bearings(reader: Reader, spec: dict, field: str, body: Body, weighed: bool) 
     turns at a constant rate about a fixed shaft (derive.mechanics.bearings) through its point
     `through` (a named point, or [x, y, z] from the center of mass in the body's own frame; the
     center of mass unless given), a uniform shape of the inertia module or a composite of them,
-    held by nothing else. Under gravity (`weighed`) the shaft is horizontal, or inclined by
-    `incline` with a `thrust` bearing (A, up the shaft, or B) taking the weight along it."""
+    held by nothing else, or a custom body with `inertia: {axial: I3, transverse: I1}` (its own axis
+    z). Under gravity (`weighed`) the shaft is horizontal, or inclined by `incline` with a `thrust`
+    bearing (A, up the shaft, or B) taking the weight along it. `turned: Omega` turns the shaft
+    itself about the y axis at a constant rate (a ship's turbine spinning at `rate` in its bearings
+    as the ship turns: the bearings' gyroscopic torque I3 omega Omega)."""
     field_here = f"{field}.bearings"
-    if body.shape in ("point", "custom") or body.density is not None:
-        raise reader.fail(field_here, "a body in bearings is a uniform shape of derive inertia (not a point or a "
-                                      "custom body, no density) or a composite of them")
+    if body.shape == "point" or body.density is not None:
+        raise reader.fail(field_here, "a body in bearings is a uniform shape of derive inertia (not a point, no "
+                                      "density), a composite of them, or a custom body with inertia: {axial: I3, "
+                                      "transverse: I1}")
     other = next((k for k in ("joint", "on", "path", "velocity") if k in spec), None)
     if other:
         raise reader.fail(f"{field}.{other}", "a body in bearings is held by its shaft alone")
@@ -73,10 +79,17 @@ def bearings(reader: Reader, spec: dict, field: str, body: Body, weighed: bool) 
                                                 "roll: for the rest)")
     through = _through(reader, raw.get("through"), f"{field_here}.through", body)
     incline, thrust = _incline(reader, raw, field_here, weighed)
+    turned = sp.Integer(0)
+    if "turned" in raw:
+        turned = reader.positive(raw["turned"], f"{field_here}.turned", "rad/s", "a rate the shaft is turned at")
+        if any(through) or incline != 0:
+            raise reader.fail(f"{field_here}.turned", "a turned shaft passes through the center of mass and lies "
+                                                      "level (through: and incline: are not modelled with it)")
+    moments = axial_inertia(reader, spec, field) if body.shape == "custom" else None
     return Bearings(reader.positive(raw["rate"], f"{field_here}.rate", "rad/s", "a rotation rate"), tilt,
                     reader.dimensioned(raw.get("roll", 0), f"{field_here}.roll", "rad", "an angle"),
                     reader.positive(raw["apart"], f"{field_here}.apart", "m", "a distance")
-                    if "apart" in raw else None, through, incline, thrust)
+                    if "apart" in raw else None, through, incline, thrust, turned, moments)
 
 
 def _through(reader: Reader, raw, field: str, body: Body) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
@@ -164,6 +177,10 @@ def axial_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.E
         raise reader.fail(f"{field}.inertia", "an axially symmetric custom body (on a fixed point, rolling on its "
                                               "edge, in free rotation) needs inertia: {axial: I3, transverse: I1} "
                                               "(in free rotation, or {principal: [Ix, Iy, Iz]})")
+    if not isinstance(spec["inertia"], dict):
+        raise reader.fail(f"{field}.inertia", "a custom body in 3D gives its moments about its center of mass as "
+                                              "inertia: {axial: I3, transverse: I1}, about its symmetry axis and "
+                                              "across it (transverse may be left out where no answer needs it)")
     raw = reader.mapping(spec["inertia"], f"{field}.inertia", keys=AXIAL_INERTIA)
     axial = reader.positive(raw["axial"], f"{field}.inertia.axial", "kg*m^2", "a moment of inertia")
     if "transverse" not in raw:

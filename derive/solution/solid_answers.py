@@ -29,10 +29,17 @@ class SolidAnswers:
         """L, the bearings' torque and the kinetic energy of a body in bearings by one route
         (derive.mechanics.bearings.ROUTES)."""
         body, held = self.scene.bodies[name], self.scene.bearings[name]
+        return bearings.motion(self.bearing_tensor(name), held.rate, held.tilt, held.roll, own_axis(body.shape), route,
+                               body.mass, held.through, self.shaft_gravity(name), held.apart, held.thrust, held.turned)
+
+    def bearing_tensor(self, name: str) -> sp.ImmutableMatrix:
+        """The tensor about the center of mass, in its own frame, of a body in bearings (a custom
+        body's from its moments, its own axis z)."""
+        body, held = self.scene.bodies[name], self.scene.bearings[name]
+        if held.inertia is not None:
+            return sp.ImmutableMatrix(sp.diag(held.inertia[0], held.inertia[0], held.inertia[1]))
         parts = body.composite.parts if body.composite is not None else None
-        tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        return bearings.motion(tensor, held.rate, held.tilt, held.roll, own_axis(body.shape), route,
-                               body.mass, held.through, self.shaft_gravity(name), held.apart, held.thrust)
+        return bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
 
     def shaft_gravity(self, name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """g's vector in the frame of the shaft of a body in bearings (the shaft is N.z, inclined by

@@ -92,9 +92,9 @@ class SolidChecks:
                                        f"{found['newton_euler'][key]} by Newton–Euler, {found['lagrange'][key]} "
                                        "by Lagrange")
             body = self.scene.bodies[name]
-            if body.composite is None:
+            if body.composite is None and held.inertia is None:  # a uniform shape's elements
                 by_integral = bearings.angular_momentum_by_integral(body.shape, body.mass, tuple(body.sizes.items()),
-                                                                    held.rate, held.tilt, held.roll)
+                                                                    held.rate, held.tilt, held.roll, held.turned)
                 if any(differ(a, b) for a, b in zip(by_integral, found["newton_euler"]["angular_momentum"])):
                     raise CheckFailure(f"{self.problem.id}: the {name}'s L is {list(by_integral)} integrated, "
                                        f"{list(found['newton_euler']['angular_momentum'])} from the tensor")
