@@ -185,6 +185,8 @@ def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body,
     angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
     at = tuple(sp.Matrix(origin) + turned(angle, made.center))
     radius, center = made.radius(reader)
+    if center is not None and "on" not in spec:  # a round part off the center of mass matters only to roll on
+        radius = None
     body = Body(name, "composite", made.mass, {} if radius is None else {"radius": radius}, made.inertia,
                 at=at, angle=angle, composite=made, round_center=center)
     return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
