@@ -101,11 +101,11 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
         if kind == "rolling" and static is None:
             raise reader.fail(f"{field}.friction", "a body rolls as long as static friction holds it: give static: "
                                                    "mu_s (and kinetic: mu_k for when it slips)")
-    if body.round_center is not None and (surfaces[spec["on"]].carrier is not None or "velocity" in spec):
+    if body.face_center is not None and (surfaces[spec["on"]].carrier is not None or "velocity" in spec):
         raise EngineLimit(f"{reader.path}: {field}.on", "follow a body whose round face is off its center of mass on a "
                                                         "moving surface or at a given velocity")
     return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling", static, kinetic,
-                   carrier=surfaces[spec["on"]].carrier, center=body.round_center)
+                   carrier=surfaces[spec["on"]].carrier, center=body.face_center)
 
 
 def _surfaces(reader: Reader, raw) -> dict:
@@ -200,7 +200,7 @@ def _placed(reader: Reader, bodies: dict[str, Body], specs: dict, surfaces: dict
             continue
         if "on" in specs[name] and specs[name]["on"] in surfaces:
             radius = body.sizes.get("radius", sp.Integer(0))
-            off = turned(body.angle, body.round_center or (0, 0))  # from the center of mass to the face's center
+            off = turned(body.angle, body.face_center or (0, 0))  # from the center of mass to the face's center
             result[name] = dataclasses.replace(body, at=tuple(surfaces[specs[name]["on"]].touching(radius) - off))
         elif name in hanging:
             result[name] = dataclasses.replace(body, at=hanging[name])

@@ -103,6 +103,16 @@ class Body:
         return (-center[0], -center[1])
 
     @property
+    def face_center(self) -> tuple[sp.Expr, sp.Expr] | None:
+        """Where the center of its round face lies from the center of mass, in its frame, where that
+        is not the center of mass: a custom body's `round_center`, a composite's round part off it,
+        or the middle of a round shape whose density moves the center of mass; else None."""
+        if self.round_center is not None:
+            return self.round_center
+        middle = self.shape_center
+        return None if middle == (0, 0) or "radius" not in self.sizes else middle
+
+    @property
     def inertia(self) -> sp.Expr:
         if self.given_inertia is not None:
             return self.given_inertia
