@@ -101,7 +101,7 @@ def _bearings(fig: _Figure) -> None:
         c, s = math.cos(turn), math.sin(turn)
         view = Oblique(fig, ((c, s, 0), (-s, c, 0), (0, 0, 1)))
     rate = fig.num(rotation.rate, 1.0)
-    omega = (0.0, 0.0, rate)
+    omega = (0.0, fig.num(rotation.turned, 0.0), rate)  # the shaft's own turn about N.y, where it is turned
     if body.composite is not None:
         reach = fig.num(body.composite.extent(), 1.0)
     else:  # the drawn half-size, 1.6, is a rod's half-length, else the largest size
@@ -112,6 +112,10 @@ def _bearings(fig: _Figure) -> None:
     shaft = view.world((0, 0, 1))
     view.line(_scaled(shaft, -2), _scaled(shaft, 2.2), "axis, ->")
     view.turning(_scaled(shaft, 1.95), shaft, 0.35, fig.m(rotation.rate))
+    if rotation.turned != 0:  # the shaft turned about N.y, drawn as an axis of its own
+        turning = view.world((0, 1, 0))
+        view.line(_scaled(turning, -1.8), _scaled(turning, 2.0), "axis, ->")
+        view.turning(_scaled(turning, 1.75), turning, 0.3, fig.m(rotation.turned))
     if any(abs(c) > 1e-9 for c in cm):
         view.line((0, 0, 0), cm, "thin, dashed")
         view.dot((0, 0, 0))
