@@ -175,13 +175,24 @@ def test_composite_mistakes_are_refused_in_one_line(tmp_path, change, message):
     assert result.stderr.strip().count("\n") == 0 and message in result.stderr, result.stderr
 
 
-def test_a_composite_rolls_only_on_a_round_part_about_its_center_of_mass(tmp_path):
-    """A hoop with a bead fixed on it: its center of mass is off the hoop's center, which the
-    contact does not model (an engine limit is not a quiet answer)."""
+def test_a_composite_rolls_on_a_round_part_off_its_center_of_mass(tmp_path):
+    """A hoop with a hub and a bead fixed on it, released on an incline: it rolls on the hoop, whose
+    center is off its center of mass. At rest the acceleration is alpha about the contact point P,
+    the weight's moment about P over I_P, times the center of mass's distance from P; the time to
+    the bottom, which takes it constant, is refused."""
     text = COMPOSITE_WHEEL.replace(WHEEL_PARTS, "        rim: {shape: ring, mass: M, radius: R}\n"
                                                 "        hub: {shape: disk, mass: m, radius: r, at: [R/2, 0]}\n"
                                                 "        bead: {shape: point, mass: q, at: [R, 0]}\n")
-    result = run_derive("solve", str(write(tmp_path, text)))
-    assert result.returncode == 1
-    assert "scene.bodies.wheel.on: derive cannot yet model a composite's contact with a surface other than by a " \
-           "round part centered at its center of mass" in result.stderr
+    problem = load(str(write(tmp_path, text)))
+    M, m, q, R, r, theta, g = (problem.parameters[n].symbol for n in ("M", "m", "q", "R", "r", "theta", "g"))
+    total, cx = M + m + q, (m * R / 2 + q * R) / (M + m + q)
+    inertia = M * R**2 + m * r**2 / 2 + m * (R / 2 - cx) ** 2 + M * cx**2 + q * (R - cx) ** 2
+    arm = sp.Matrix([cx + R * sp.sin(theta), R * sp.cos(theta)])  # from P to the center of mass
+    alpha = -arm[0] * total * g / (inertia + total * arm.dot(arm))
+    down = alpha * (-arm[1] * sp.cos(theta) - arm[0] * sp.sin(theta))
+    assert sp.simplify(Solution(problem).expression("a") - down) == 0
+    text = text.replace("ramp: {incline: {angle: theta}}", "ramp: {incline: {angle: theta, height: R}}")
+    result = run_derive("solve", str(write(tmp_path, text.replace("wheel.acceleration.down_incline, unit: m/s^2",
+                                                                  "wheel.time_to_bottom, unit: s"))))
+    assert result.returncode == 2 and "ask.a.of" in result.stderr and "round face off its center of mass" in \
+        result.stderr, result.stderr

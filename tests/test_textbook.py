@@ -48,6 +48,20 @@ def _tangent_cosine(s):
 
 #: file stem -> {ask: closed form as a function of the parameter symbols (a namespace)}.
 EXPECTED = {
+    # Rocking without slipping on a round face off the center of mass (a custom body's round_center, a
+    # composite's round part off its center of mass). Morin ch. 8: omega^2 = m g d/(I_cm + m (R - d)^2):
+    # a solid hemisphere (d = 3R/8, I_cm = 83 m R^2/320) 15 g/(26 R); a half-cylinder (d = 4R/(3 pi))
+    # 8 g/((9 pi - 16) R); Kleppner & Kolenkow ch. 7: a hoop loaded at its rim, m g/(2 M R).
+    "hemisphere_rocking": {"w": lambda s: sp.sqrt(15 * s.g / (26 * s.R)),
+                           "T": lambda s: 2 * sp.pi * sp.sqrt(26 * s.R / (15 * s.g))},
+    "half_cylinder_rocking": {"T": lambda s: 2 * sp.pi / sp.sqrt(8 * s.g / ((9 * sp.pi - 16) * s.R))},
+    "loaded_hoop_rocking": {"w": lambda s: sp.sqrt(s.m * s.g / (2 * s.M * s.R))},
+    # A body on a fixed point hanging below it, turning as one in a cone (rod.conical.rate). Kleppner &
+    # Kolenkow ch. 7: a uniform rod pivoted at its upper end, at theta from the vertical: omega^2 = 3 g/(2 L cos(theta)).
+    "rod_conical_pendulum": {"W": lambda s: sp.sqrt(3 * s.g / (2 * s.L * sp.cos(s.theta)))},
+    # A rotor spinning in bearings whose shaft is itself turned (bearings: {turned: Omega}). Irodov sec. 1.6, a
+    # ship's turbine as the ship turns: the bearings' gyroscopic torque I omega Omega, each bearing's force that over d.
+    "ship_turbine_turning": {"tau": lambda s: s.I * s.omega * s.Omega, "F": lambda s: s.I * s.omega * s.Omega / s.d},
     # From a balance, with a vanishing push (nudged:). Serway & Jewett ch. 10: a rod standing on a smooth floor
     # lands flat at v_cm = sqrt(3 g L)/2, omega = sqrt(3 g/L) (clockwise here: it falls to the right).
     "rod_upright_nudged": {"v": lambda s: sp.sqrt(3 * s.g * s.L) / 2, "w": lambda s: -sp.sqrt(3 * s.g / s.L)},

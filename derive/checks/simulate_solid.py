@@ -107,6 +107,8 @@ class _Simulation:
             symbols += [body.mass, *body.sizes.values()]
         for held in solution.scene.pivot_points.values():
             symbols += [held.tilt, held.spin]
+        for held in solution.scene.bearings.values():
+            symbols += [*(held.inertia or ())]  # a custom rotor's transverse moment, open where no ask needs it
         self.point = sample_points(problem, sp.Add(*symbols), count=1)[0]
         self.point.update({size: self.point[size] * SHRINK for size in small})
         self.tolerance, self.magnitude = (LIMIT_TOLERANCE if small else TOLERANCE), False
@@ -397,28 +399,32 @@ class _Simulation:
         of each kind of quantity, against which a zero vector is compared: the moments and forces
         the body's inertia, mass and weight could need at its rate."""
         body, held = self.solution.scene.bodies[name], self.solution.scene.bearings[name]
-        parts = body.composite.parts if body.composite is not None else None
-        tensor = self.matrix(bearings.body_tensor(body.shape, body.mass, body.sizes, parts))
-        tilt, roll, rate = (self.number(v) for v in (held.tilt, held.roll, held.rate))
+        tensor = self.matrix(self.solution.bearing_tensor(name))
+        tilt, roll, rate, turn = (self.number(v) for v in (held.tilt, held.roll, held.rate, held.turned))
         axis = own_axis(body.shape)
         mounted = self.matrix(bearings.mounted_axes(tilt, roll, axis))
         center = -np.array([self.number(c) for c in held.through])  # from the shaft's point, body frame
         mass = self.number(body.mass)
         gravity = np.array([self.number(c) for c in self.solution.shaft_gravity(name)])
         period = 2 * math.pi / rate
-        run = rigid_motion.integrate(rigid_motion.turned(rate), rigid_motion.start(mounted, [0, 0, 0])[:4],
+        run = rigid_motion.integrate(rigid_motion.turned(rate, turn), rigid_motion.start(mounted, [0, 0, 0])[:4],
                                      1.1 * period)
         step = 0.01 / rate
-        samples = [run.sol(period + k * step) for k in (-2, -1, 0, 1, 2)]
-        turns = [rigid_motion.axes(y) for y in samples]
-        omega = rate * rigid_motion.UP
-        momenta = [R @ tensor @ R.T @ omega for R in turns]
+        times = [period + k * step for k in (-2, -1, 0, 1, 2)]
+        turns = [rigid_motion.axes(run.sol(t)) for t in times]
+        omegas = [rate * rigid_motion.shaft(turn, t) + turn * np.array([0.0, 1.0, 0.0]) for t in times]
+        momenta = [R @ tensor @ R.T @ omega for R, omega in zip(turns, omegas)]
         positions = [R @ center for R in turns]
         torque = (momenta[0] - 8 * momenta[1] + 8 * momenta[3] - momenta[4]) / (12 * step)
         velocity = (positions[0] - 8 * positions[1] + 8 * positions[3] - positions[4]) / (12 * step)
         acceleration = (-positions[0] + 16 * positions[1] - 30 * positions[2] + 16 * positions[3]
                         - positions[4]) / (12 * step**2)
         force = mass * (acceleration - gravity)
+        # in the frame of the shaft, turned with it (by nothing where it is not turned): as mounted at the start
+        back = rigid_motion.about_y(turn * period).T
+        momenta[2], torque, force, positions[2], velocity = (back @ v for v in (momenta[2], torque, force,
+                                                                                  positions[2], velocity))
+        omega = back @ omegas[2]
         apart = None if held.apart is None else self.number(held.apart)
         column = sp.Matrix
         found = {"angular_momentum": column(momenta[2]), "torque": column(torque), "force": column(force),

@@ -21,6 +21,7 @@ from derive.core.keys import Key, Keys
 from derive.parts import contact
 from derive.core.errors import InputError
 from derive.parts.pin import Pin
+from derive.parts.places import sample as reader_sample
 from derive.parts.places import turned
 from derive.language.reader import Reader, describe
 from derive.core.expr import TIME
@@ -72,6 +73,9 @@ BODY = Keys(shape=Key("name", "its shape: one of derive inertia's, composite or 
             parts=Key("mapping", "a composite's parts, each {shape, mass, sizes, at, angle} in the body's frame"),
             at=Key("vector", "where its center of mass is placed, [x, y] in m (a composite's: its origin)"),
             velocity=Key("vector", "its velocity [vx, vy] in m/s where it starts (a rolling body's)"),
+            round_center=Key("vector", "a custom body's: the center of its round face of `radius`, [x, y] in m in its "
+                                       "own frame from its center of mass (a hemisphere's, [0, 3*R/8]); it rests on "
+                                       "that face, the half of the circle on the center of mass's side"),
             **{size: Key("expression", "a size of its shape, in m (see derive inertia --help)") for size in ALL_SIZES})
 
 
@@ -108,7 +112,7 @@ def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     given = None
     if shape == "custom" and "free_rotation" in spec:
         given = solid_file.free_inertia(reader, spec, field)[2]  # the moment about z; the rest is read with the rotation
-    elif shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec):
+    elif shape == "custom" and ("pivot_point" in spec or "rolls_on_edge" in spec or "bearings" in spec):
         given = solid_file.axial_inertia(reader, spec, field)[1]  # the axial moment; the rest is read with the key
     elif shape == "custom":
         if "inertia" not in spec:
@@ -136,7 +140,8 @@ def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
     angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
     if angle != 0 and shape == "point":
         raise reader.fail(f"{field}.angle", "a point mass has no orientation")
-    body = Body(name, shape, mass, sizes, given, path, density, at, angle)
+    body = Body(name, shape, mass, sizes, given, path, density, at, angle,
+                round_center=_round_center(reader, spec, field, sizes))
     joint = _joint(reader, body, spec.get("joint"), f"{field}.joint")
     about = "center" if "pivot_point" in spec or "free_rotation" in spec else spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and (given is None or joint is None or joint.name != "pivot"):
@@ -146,6 +151,23 @@ def read(reader: Reader, name: str, spec) -> tuple[Body, Pin | None]:
         distance = joint.offset[0] ** 2 + joint.offset[1] ** 2
         body = Body(name, shape, mass, sizes, given - mass * distance, at=at, angle=angle)
     return body, joint
+
+
+def _round_center(reader: Reader, spec: dict, field: str, sizes: dict) -> tuple[sp.Expr, sp.Expr] | None:
+    """`round_center: [x, y]`: a custom body with a `radius` whose round face is centered off its
+    center of mass (a hemisphere, a half-cylinder), inside the circle and off the center of mass."""
+    if "round_center" not in spec:
+        return None
+    where = f"{field}.round_center"
+    if spec["shape"] != "custom" or "radius" not in sizes:
+        raise reader.fail(where, "only a custom body with a radius has a round face off its center of mass (a "
+                                 "uniform shape's is at its center)")
+    center = reader.vector(spec["round_center"], where, "m", "a position")
+    inside = reader_sample(reader, sizes["radius"] ** 2 - center[0] ** 2 - center[1] ** 2)
+    if not 0 < inside < reader_sample(reader, sizes["radius"] ** 2):
+        raise reader.fail(where, "the round face's center is off the center of mass by less than the radius (not so "
+                                 "at the middle of the ranges; leave it out for a face centered there)")
+    return center
 
 
 def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body, Pin | None]:
@@ -162,9 +184,11 @@ def _composite(reader: Reader, name: str, spec: dict, field: str) -> tuple[Body,
               else (sp.Integer(0), sp.Integer(0)))
     angle = reader.dimensioned(spec.get("angle", 0), f"{field}.angle", "rad", "an angle")
     at = tuple(sp.Matrix(origin) + turned(angle, made.center))
-    radius = made.radius(reader)
+    radius, center = made.radius(reader)
+    if center is not None and "on" not in spec:  # a round part off the center of mass matters only to roll on
+        radius = None
     body = Body(name, "composite", made.mass, {} if radius is None else {"radius": radius}, made.inertia,
-                at=at, angle=angle, composite=made)
+                at=at, angle=angle, composite=made, round_center=center)
     return body, _joint(reader, body, spec.get("joint"), f"{field}.joint")
 
 

@@ -22,7 +22,7 @@ from derive.parts.contact import Contact
 from derive.parts.cord import Attachment, Cord
 from derive.parts.pin import Pin
 from derive.parts.torque import Torque
-from derive.parts.places import Places
+from derive.parts.places import Places, turned
 from derive.parts.surfaces import Circle, Plane
 from derive.language.reader import Reader
 from derive.core.spelling import did_you_mean, no_such
@@ -101,8 +101,11 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
         if kind == "rolling" and static is None:
             raise reader.fail(f"{field}.friction", "a body rolls as long as static friction holds it: give static: "
                                                    "mu_s (and kinetic: mu_k for when it slips)")
+    if body.face_center is not None and (surfaces[spec["on"]].carrier is not None or "velocity" in spec):
+        raise EngineLimit(f"{reader.path}: {field}.on", "follow a body whose round face is off its center of mass on a "
+                                                        "moving surface or at a given velocity")
     return Contact(f"{body.name}_contact", body.name, spec["on"], kind == "rolling", static, kinetic,
-                   carrier=surfaces[spec["on"]].carrier)
+                   carrier=surfaces[spec["on"]].carrier, center=body.face_center)
 
 
 def _surfaces(reader: Reader, raw) -> dict:
@@ -197,7 +200,8 @@ def _placed(reader: Reader, bodies: dict[str, Body], specs: dict, surfaces: dict
             continue
         if "on" in specs[name] and specs[name]["on"] in surfaces:
             radius = body.sizes.get("radius", sp.Integer(0))
-            result[name] = dataclasses.replace(body, at=tuple(surfaces[specs[name]["on"]].touching(radius)))
+            off = turned(body.angle, body.face_center or (0, 0))  # from the center of mass to the face's center
+            result[name] = dataclasses.replace(body, at=tuple(surfaces[specs[name]["on"]].touching(radius) - off))
         elif name in hanging:
             result[name] = dataclasses.replace(body, at=hanging[name])
     return result
@@ -313,7 +317,8 @@ def _check_geometry(reader: Reader, places: Places, scene: Scene) -> None:
             continue
         surface, body = scene.surfaces[c.surface], scene.bodies[c.body]
         if c.point is None:
-            radius, center, field = body.sizes.get("radius", sp.Integer(0)), sp.Matrix(body.at), f"scene.bodies.{c.body}.at"
+            radius, center = body.sizes.get("radius", sp.Integer(0)), places.world(c.body, c.center or (0, 0))
+            field = f"scene.bodies.{c.body}.at"
         else:
             radius, center, field = sp.Integer(0), places.world(c.body, c.point), f"scene.joints.{c.name}.touches"
         off = places.sample(surface.gap(center, radius))
@@ -472,6 +477,11 @@ def read_scene(reader: Reader, raw) -> Scene:
                                    "loads, joints, cords or states (its weight exerts no torque about its center: "
                                    "leave gravity out)")
     states = state_file.read(reader, raw.get("states"), places, [*constraints, *loads])
+    rocking = next((c.body for c in contacts if c.center is not None), None)
+    if rocking and states:
+        raise EngineLimit(f"{reader.path}: scene.states", f"follow the {rocking}, whose round face is off its center "
+                                                          "of mass, to a state: ask its small oscillations or where "
+                                                          "it rests")
     scene = Scene(bodies, tuple(constraints), gravity_part, surfaces, tuple(loads), orbit, motions, wave,
                   internal, held, pivoted, rolling, free, states)
     _check_geometry(reader, places, scene)

@@ -24,7 +24,9 @@ BEARINGS = Keys(rate=Key("expression", "the constant rate about the shaft (the z
                 through=Key("any", "the body's point the shaft passes through: a named point or [x, y, z] in the "
                                    "body's frame (default: its center of mass)"),
                 incline=Key("quantity", "the shaft's angle above the horizontal under gravity, -pi/2 to pi/2"),
-                thrust=Key("name", "the bearing that takes the weight along an inclined shaft", choices=("A", "B")))
+                thrust=Key("name", "the bearing that takes the weight along an inclined shaft", choices=("A", "B")),
+                turned=Key("expression", "the rate at which the shaft itself is turned about the y axis, across it, "
+                                         "in rad/s (a ship's turbine as the ship turns; default 0)"))
 #: `rolls_on_edge:` a thin round body rolling on its rim on the horizontal plane.
 ROLLS_ON_EDGE = Keys(tilt=Key("quantity", "its plane's lean from the vertical in the steady motion, 0 to pi/2"),
                      circle=Key("expression", "the radius of the circle its contact point traces, in m"))
@@ -37,7 +39,8 @@ PRINCIPAL_INERTIA = Keys(principal=Key("vector", "the principal moments [Ix, Iy,
 #: `pivot_point:` a body turning about a fixed point (a top, a gyroscope).
 PIVOT_POINT = Keys(at=Key("any", "where the point is: a distance below the center of mass along the body's axis, "
                                  "tip, end, center or a composite's named point", required=True),
-                   tilt=Key("quantity", "the axis's tilt from the vertical, 0 to pi/2"),
+                   tilt=Key("quantity", "the axis's tilt from the upward vertical, 0 to pi (beyond pi/2 the body hangs "
+                                        "below its point)"),
                    spin=Key("expression", "omega's component along the axis, in rad/s"))
 #: `free_rotation:` a body turning with no torque.
 FREE_ROTATION = Keys(spin=Key("expression", "omega's component along the body's own axis, in rad/s", required=True),
@@ -56,12 +59,16 @@ def bearings(reader: Reader, spec: dict, field: str, body: Body, weighed: bool) 
     turns at a constant rate about a fixed shaft (derive.mechanics.bearings) through its point
     `through` (a named point, or [x, y, z] from the center of mass in the body's own frame; the
     center of mass unless given), a uniform shape of the inertia module or a composite of them,
-    held by nothing else. Under gravity (`weighed`) the shaft is horizontal, or inclined by
-    `incline` with a `thrust` bearing (A, up the shaft, or B) taking the weight along it."""
+    held by nothing else, or a custom body with `inertia: {axial: I3, transverse: I1}` (its own axis
+    z). Under gravity (`weighed`) the shaft is horizontal, or inclined by `incline` with a `thrust`
+    bearing (A, up the shaft, or B) taking the weight along it. `turned: Omega` turns the shaft
+    itself about the y axis at a constant rate (a ship's turbine spinning at `rate` in its bearings
+    as the ship turns: the bearings' gyroscopic torque I3 omega Omega)."""
     field_here = f"{field}.bearings"
-    if body.shape in ("point", "custom") or body.density is not None:
-        raise reader.fail(field_here, "a body in bearings is a uniform shape of derive inertia (not a point or a "
-                                      "custom body, no density) or a composite of them")
+    if body.shape == "point" or body.density is not None:
+        raise reader.fail(field_here, "a body in bearings is a uniform shape of derive inertia (not a point, no "
+                                      "density), a composite of them, or a custom body with inertia: {axial: I3, "
+                                      "transverse: I1}")
     other = next((k for k in ("joint", "on", "path", "velocity") if k in spec), None)
     if other:
         raise reader.fail(f"{field}.{other}", "a body in bearings is held by its shaft alone")
@@ -72,10 +79,17 @@ def bearings(reader: Reader, spec: dict, field: str, body: Body, weighed: bool) 
                                                 "roll: for the rest)")
     through = _through(reader, raw.get("through"), f"{field_here}.through", body)
     incline, thrust = _incline(reader, raw, field_here, weighed)
+    turned = sp.Integer(0)
+    if "turned" in raw:
+        turned = reader.positive(raw["turned"], f"{field_here}.turned", "rad/s", "a rate the shaft is turned at")
+        if any(through) or incline != 0:
+            raise reader.fail(f"{field_here}.turned", "a turned shaft passes through the center of mass and lies "
+                                                      "level (through: and incline: are not modelled with it)")
+    moments = axial_inertia(reader, spec, field) if body.shape == "custom" else None
     return Bearings(reader.positive(raw["rate"], f"{field_here}.rate", "rad/s", "a rotation rate"), tilt,
                     reader.dimensioned(raw.get("roll", 0), f"{field_here}.roll", "rad", "an angle"),
                     reader.positive(raw["apart"], f"{field_here}.apart", "m", "a distance")
-                    if "apart" in raw else None, through, incline, thrust)
+                    if "apart" in raw else None, through, incline, thrust, turned, moments)
 
 
 def _through(reader: Reader, raw, field: str, body: Body) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
@@ -163,6 +177,10 @@ def axial_inertia(reader: Reader, spec: dict, field: str) -> tuple[sp.Expr, sp.E
         raise reader.fail(f"{field}.inertia", "an axially symmetric custom body (on a fixed point, rolling on its "
                                               "edge, in free rotation) needs inertia: {axial: I3, transverse: I1} "
                                               "(in free rotation, or {principal: [Ix, Iy, Iz]})")
+    if not isinstance(spec["inertia"], dict):
+        raise reader.fail(f"{field}.inertia", "a custom body in 3D gives its moments about its center of mass as "
+                                              "inertia: {axial: I3, transverse: I1}, about its symmetry axis and "
+                                              "across it (transverse may be left out where no answer needs it)")
     raw = reader.mapping(spec["inertia"], f"{field}.inertia", keys=AXIAL_INERTIA)
     axial = reader.positive(raw["axial"], f"{field}.inertia.axial", "kg*m^2", "a moment of inertia")
     if "transverse" not in raw:
@@ -210,9 +228,14 @@ def pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoin
         offset = tuple(-distance if a == axis else sp.Integer(0) for a in "xyz")
     tilt = (reader.dimensioned(raw["tilt"], f"{here}.tilt", "rad", "a tilt") if "tilt" in raw
             else reader.unspecified(f"tilt_{body.name}", "rad"))
-    if "tilt" in raw and not all(v.is_number and 0 < v <= sp.pi / 2 for v in _at_range_ends(reader, tilt)):
-        raise reader.fail(f"{here}.tilt", "the axis leans from the vertical by more than 0 and at most pi/2 (a "
-                                          "body hanging below its point is not modelled; an upright one has no tilt)")
+    ends = _at_range_ends(reader, tilt) if "tilt" in raw else []
+    if not all(v.is_number and 0 < v < sp.pi for v in ends) or \
+            len({bool(v > sp.pi / 2) for v in ends}) > 1 or offset == (0, 0, 0) and any(v > sp.pi / 2 for v in ends):
+        raise reader.fail(f"{here}.tilt", "the axis from the point through the center of mass leans from the upward "
+                                          "vertical by more than 0 and less than pi, on one side of pi/2 over the "
+                                          "ranges (at most pi/2: it stands; more: it hangs below its point, a rod "
+                                          "swinging in a cone at theta from the downward vertical has tilt: pi - "
+                                          "theta; an upright one has no tilt)")
     about = spec.get("inertia_about", "center")
     if about not in ("center", "pivot") or about == "pivot" and body.shape != "custom":
         raise reader.fail(f"{field}.inertia_about", "center, or pivot for a custom body's transverse moment")
@@ -221,9 +244,12 @@ def pivot_point(reader: Reader, spec: dict, field: str, body: Body) -> PivotPoin
         transverse, axial = axial_inertia(reader, spec, field)
         distance_squared = sum(c**2 for c in offset)
         moments = (transverse - body.mass * distance_squared if about == "pivot" else transverse, axial)
+    if raw.get("spin") == 0:
+        raise reader.fail(f"{here}.spin", "a spin is positive: leave it out where no ask needs it (a body that swings "
+                                          "round in a cone, rod.conical.rate, has no spin of its own to give)")
     spin = (reader.positive(raw["spin"], f"{here}.spin", "rad/s", "a spin") if "spin" in raw
             else reader.unspecified(f"spin_{body.name}", "rad/s"))  # a sleeping top's least spin needs none
-    return PivotPoint(offset, tilt, spin, moments)
+    return PivotPoint(offset, tilt, spin, moments, hangs=any(v > sp.pi / 2 for v in ends))
 
 
 def free_rotation(reader: Reader, spec: dict, field: str, body: Body) -> FreeRotation:

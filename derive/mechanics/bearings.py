@@ -141,26 +141,28 @@ def _by_halves(moment: sp.Matrix, force: sp.Matrix, apart, thrust) -> dict:
 
 @lru_cache(maxsize=None)
 def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, mass=0, through=(0, 0, 0),
-           gravity=(0, 0, 0), apart=None, thrust=None) -> dict:
+           gravity=(0, 0, 0), apart=None, thrust=None, turned=0) -> dict:
     """{"angular_momentum": L about the center of mass, "torque": tau = dL/dt, what the supports
     supply about the center, "force": their total force, "drive": the couple about the shaft that
     keeps the rate (columns in N), "kinetic_energy": T}, and with `apart` each bearing's force,
     "bearing.A" (at z = apart/2 from the shaft's point) and "bearing.B", by one route. The shaft
     (N.z) passes through the body's point `through` (from the center of mass, in the body's own
     frame); `gravity` is g's vector in N; `thrust` names the bearing that takes the force along
-    the shaft (None: there is none)."""
+    the shaft (None: there is none); `turned`, the rate at which the shaft itself turns about N.y
+    (a ship's turbine as the ship turns), vectors then at the instant the shaft lies along N.z."""
     t = me.dynamicsymbols._t
     ground = me.ReferenceFrame("N")
     origin = me.Point("O")
     origin.set_vel(ground, 0)
     weight = mass * sp.Matrix(gravity)
     if route == "newton_euler":
-        phi = me.dynamicsymbols("phi")
-        body_frame = _mounted(ground.orientnew("S", "Axis", [phi, ground.z]), tilt, roll, axis)
+        phi, psi = me.dynamicsymbols("phi psi")
+        ship = ground.orientnew("T", "Axis", [psi, ground.y])  # the shaft's own turn
+        body_frame = _mounted(ship.orientnew("S", "Axis", [phi, ship.z]), tilt, roll, axis)
         center = origin.locatenew("C", -_along(body_frame, through))
         center.v2pt_theory(origin, ground, body_frame)
         body = me.RigidBody("body", center, body_frame, mass, (_dyadic(body_frame, tensor), center))
-        now = {phi.diff(t, 2): 0, phi.diff(t): rate, phi: 0}
+        now = {phi.diff(t, 2): 0, phi.diff(t): rate, phi: 0, psi.diff(t, 2): 0, psi.diff(t): turned, psi: 0}
         momentum = body.angular_momentum(center, ground)
         acceleration = center.a2pt_theory(origin, ground, body_frame)
         momentum, torque, acceleration, position = (_column(ground, v).subs(now) for v in (
@@ -170,7 +172,8 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
     else:
         q = me.dynamicsymbols("q1:4")
         s = me.dynamicsymbols("s1:4")  # where the shaft's point is
-        free = ground.orientnew("A", "Body", [q[2], q[1], q[0]], "ZYX")
+        ship = ground.orientnew("T", "Axis", [turned * t, ground.y])  # the shaft's own turn, prescribed
+        free = ship.orientnew("A", "Body", [q[2], q[1], q[0]], "ZYX")
         body_frame = _mounted(free, tilt, roll, axis)
         point = origin.locatenew("P", _along(ground, s))
         center = point.locatenew("C", -_along(body_frame, through))
@@ -182,7 +185,7 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
         method = me.LagrangesMethod(lagrangian, coordinates, hol_coneqs=[q[0], q[1], q[2] - rate * t, *s],
                                     frame=ground)
         method.form_lagranges_equations()
-        now = {**{c.diff(t): 0 for c in [*q[:2], *s]}, q[2].diff(t): rate, **{c: 0 for c in coordinates}}
+        now = {**{c.diff(t): 0 for c in [*q[:2], *s]}, q[2].diff(t): rate, **{c: 0 for c in coordinates}, t: 0}
         multipliers = method.solve_multipliers(now)
         # sympy's equations carry the constraints' generalized forces as -lambda
         generalized = sp.Matrix([-multipliers[lam] for lam in method.lam_vec])
@@ -191,10 +194,12 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
         partials = sp.Matrix([[omega.diff(c.diff(t), ground).dot(e) for e in ground] for c in q]).subs(now)
         position = _column(ground, center.pos_from(point)).subs(now)
         momentum = partials.solve(momenta[:3, 0]) - position.cross(momenta[3:, 0])  # about P, less m r x v
+        # T = (p . q' + omega_turn . L)/2: quadratic in the rates, the shaft's turn (its center on it) one of them
+        energy = (sum(p * c.diff(t) for p, c in zip(momenta, coordinates)).subs(now) + turned * momentum[1]) / 2
         force = generalized[3:, 0]  # along the shaft point's partial velocities, N's axes
         moment = partials.solve(generalized[:3, 0])  # the supports' about the shaft's point
         torque = moment - position.cross(force)
-        energy = sum(p * c.diff(t) for p, c in zip(momenta, coordinates)).subs(now) / 2  # T is quadratic
+
     # tidied in this order, L and the torque first: sympy's caches make the later forms depend on it
     momentum, torque = (c.applyfunc(tidy) for c in (momentum, torque))
     energy, force, position = tidy(energy), force.applyfunc(tidy), position.applyfunc(tidy)
@@ -205,15 +210,16 @@ def motion(tensor: sp.ImmutableMatrix, rate, tilt, roll, axis: str, route: str, 
 
 
 @lru_cache(maxsize=None)
-def angular_momentum_by_integral(shape: str, mass, sizes: tuple, rate, tilt, roll) -> sp.Matrix:
-    """L = integral of r x (omega x r) dm over a uniform shape's elements, turned as mounted."""
+def angular_momentum_by_integral(shape: str, mass, sizes: tuple, rate, tilt, roll, turned=0) -> sp.Matrix:
+    """L = integral of r x (omega x r) dm over a uniform shape's elements, turned as mounted; omega is
+    the rate about the shaft N.z plus the shaft's own turn about N.y."""
     shape_data = inertia.SHAPES[shape]
     mapping = {generic: dict(sizes)[name] for name, generic in shape_data.sizes.items()}
     ground = me.ReferenceFrame("N")
     body_frame = _mounted(ground, tilt, roll, own_axis(shape))
     element = _along(body_frame, sp.Matrix(shape_data.position).xreplace(mapping))
     position = element.to_matrix(ground)
-    omega = sp.Matrix([0, 0, rate])
+    omega = sp.Matrix([0, turned, rate])
     limits = [(c, sp.sympify(lo).xreplace(mapping), sp.sympify(hi).xreplace(mapping))  # safe: the module's own limits
               for c, lo, hi in reversed(shape_data.coordinates)]
     measure = shape_data.element.xreplace(mapping)

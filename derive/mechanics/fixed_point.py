@@ -21,6 +21,8 @@ spin omega3 = psi' + phi' cos(theta), the component of omega along the axis):
 - a sleeping top (upright, spinning) is stable for I3^2 omega3^2 > 4 I1 m g l: by Lagrange, the
   effective potential of theta with phi's and psi's momenta held; by Newton–Euler, Euler's
   equations linearized about the vertical in two small tilts (no Euler-angle singularity there);
+- steady conical motion (`conical_squared`): the body turning as one about the vertical, a rod
+  hanging from its end and swinging round in a cone;
 - nutation about the slow steady precession: by Lagrange, the effective potential's curvature;
   by Newton–Euler, the three equations linearized about the steady motion; its leading term for
   a fast top is I3 omega3 / I1.
@@ -164,6 +166,23 @@ def precession_condition(tensor, mass, g, distance, spin, tilt, route: str) -> s
     theta_equation = equations(tensor, mass, g, distance, route)[1]
     condition = sp.expand(sp.simplify(me.msubs(theta_equation, _steady(_angles(), spin, tilt, OMEGA)) / sp.sin(tilt)))
     return sp.expand(condition / condition.coeff(OMEGA, 2))
+
+
+def conical_squared(tensor, mass, g, distance, tilt, route: str) -> sp.Expr:
+    """Omega^2 of steady conical motion, by one route: the body turns as one about the vertical at
+    Omega (no spin of its own, psi' = 0), so omega3 = Omega cos(tilt) and the steady condition
+    becomes (I1 - I3) Omega^2 cos(tilt) + m g l = 0; a rod hanging at theta from the downward
+    vertical (tilt pi - theta) turns at Omega^2 = 3 g/(2 L cos(theta)).
+
+    >>> m, g, L, theta = sp.symbols("m g L theta", positive=True)
+    >>> rod = sp.ImmutableMatrix(sp.diag(m * L**2 / 12, m * L**2 / 12, 0))  # about its center, z along it
+    >>> conical_squared(rod, m, g, L / 2, sp.pi - theta, "lagrange")
+    3*g/(2*L*cos(theta))
+    """
+    spin = sp.Dummy("omega_3")
+    turning = sp.expand(precession_condition(tensor, mass, g, distance, spin, tilt, route)
+                        .subs(spin, OMEGA * sp.cos(tilt)))
+    return tidy(-turning.coeff(OMEGA, 0) / turning.coeff(OMEGA, 2))
 
 
 def roots(tensor, mass, g, distance, spin, tilt, route: str = "lagrange") -> tuple[sp.Expr, sp.Expr]:

@@ -27,6 +27,8 @@ True
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
@@ -118,11 +120,24 @@ def contact_force(y, I1: float, I3: float, mass: float, g: float, radius: float)
     return mass * (-np.cross(acceleration, r) - np.cross(omega, r_rate)) + mass * g * UP
 
 
-def turned(rate: float):
-    """The rates of the orientation of a body turned at `rate` about the ground's z."""
+def turned(rate: float, turn: float = 0.0):
+    """The rates of the orientation of a body turned at `rate` about a shaft along the ground's z at
+    the start, the shaft itself turned at `turn` about the ground's y (`shaft`)."""
     def rates(t, y):
-        return _turning(y[:4], rate * axes(y)[2, :])  # the ground's z in the body frame, the third row
+        omega = rate * shaft(turn, t) + turn * np.array([0.0, 1.0, 0.0])  # in the ground frame
+        return _turning(y[:4], axes(y).T @ omega)
     return rates
+
+
+def shaft(turn: float, t: float) -> np.ndarray:
+    """The ground's z turned about its y by turn t: a shaft turned at `turn` from along z."""
+    return np.array([math.sin(turn * t), 0.0, math.cos(turn * t)])
+
+
+def about_y(angle: float) -> np.ndarray:
+    """The rotation by `angle` about the ground's y (its columns: the turned axes)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
 
 
 def integrate(rates, state, duration: float, events=None, rtol: float = RTOL):

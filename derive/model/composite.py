@@ -13,8 +13,8 @@ the frame it placed the parts in:
   shape names: `tee.stem.end`);
 - `{BODY: [x, y]}`, from the frame's origin.
 
-A composite rolls on its largest round part whose center is the composite's center of mass: the
-contact of a round body off its center of mass is not modelled.
+A composite rolls on its largest round part whose center is the composite's center of mass, or,
+without one, on its largest round part off it (a hoop loaded at its rim rocks on the hoop).
 
 >>> import sympy as sp
 >>> m, L = sp.symbols("m L", positive=True)
@@ -71,12 +71,16 @@ class CompositeParts:
             reaches.append(sp.sqrt((x - cx) ** 2 + (y - cy) ** 2) + own)
         return sp.Max(*reaches)
 
-    def radius(self, reader) -> sp.Expr | None:
-        """The radius it rolls on: its largest round part centered at its center of mass."""
+    def radius(self, reader) -> tuple[sp.Expr | None, tuple[sp.Expr, sp.Expr] | None]:
+        """(the radius it rolls on, that part's center from the center of mass): its largest round part
+        centered at its center of mass (center None), else its largest round part ((None, None): none)."""
         cx, cy = self.center
-        radii = [sizes.get("radius", sizes.get("outer_radius")) for shape, _, sizes, (x, y), _ in self.parts.values()
-                 if shape in ROUND and sp.simplify(x - cx) == 0 and sp.simplify(y - cy) == 0]
-        return max(radii, key=lambda r: sample(reader, r), default=None)
+        rounds = [(sizes.get("radius", sizes.get("outer_radius")), (sp.simplify(x - cx), sp.simplify(y - cy)))
+                  for shape, _, sizes, (x, y), _ in self.parts.values() if shape in ROUND]
+        centered = [radius for radius, off in rounds if off == (0, 0)]
+        if centered:
+            return max(centered, key=lambda r: sample(reader, r)), None
+        return max(rounds, key=lambda pair: sample(reader, pair[0]), default=(None, None))
 
 
 def build(parts: dict) -> CompositeParts:

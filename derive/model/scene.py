@@ -80,6 +80,7 @@ class Body:
     at: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))  # the center of mass, reference configuration
     angle: sp.Expr = sp.Integer(0)  # the body frame's angle from the world's axes there
     composite: CompositeParts | None = None  # a body made of parts: derive.model.composite
+    round_center: tuple[sp.Expr, sp.Expr] | None = None  # its round face's center off its center of mass
 
     @property
     def rotates(self) -> bool:
@@ -100,6 +101,16 @@ class Body:
             return (sp.Integer(0), sp.Integer(0))
         center = inertia.body_center(self.shape, self.sizes, self.density)
         return (-center[0], -center[1])
+
+    @property
+    def face_center(self) -> tuple[sp.Expr, sp.Expr] | None:
+        """Where the center of its round face lies from the center of mass, in its frame, where that
+        is not the center of mass: a custom body's `round_center`, a composite's round part off it,
+        or the middle of a round shape whose density moves the center of mass; else None."""
+        if self.round_center is not None:
+            return self.round_center
+        middle = self.shape_center
+        return None if middle == (0, 0) or "radius" not in self.sizes else middle
 
     @property
     def inertia(self) -> sp.Expr:
@@ -375,8 +386,11 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         return Quantity("angular_impulse", head, rest)
     if head in scene.pivot_points and rest not in ("mass", "inertia"):
         if rest not in PIVOT_POINT_QUANTITIES:
-            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, PIVOT_POINT_QUANTITIES))
+            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, conical.rate, mass "
+                             "and inertia" + did_you_mean(rest, (*PIVOT_POINT_QUANTITIES, "conical.rate")))
+        if scene.pivot_points[head].hangs:
+            raise ValueError(f"the {head} hangs below its point: its precessions and nutations are derived for a top "
+                             f"standing on it; ask {head}.conical.rate, its steady turn in a cone")
         return Quantity("pivot_point", head, rest)
     if head in scene.rolls_on_edge and rest not in ("mass", "inertia"):
         if rest not in ROLLING_COIN_QUANTITIES:
@@ -504,6 +518,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
                                  f"{surface.carrier}: ask {head}.acceleration.x|y")
             if rest == "min_release_height" and not (isinstance(surface, Circle) and surface.side == "inside"):
                 raise ValueError("min_release_height is for a body riding a loop")
+            if rest in ("speed_at_bottom", "time_to_bottom", "min_release_height") and contact.center is not None:
+                raise ValueError(f"{rest} takes the acceleration along the surface constant; the {head} rests on a "
+                                 "round face off its center of mass, so it changes as the body turns")
             if rest in ("speed_at_bottom", "time_to_bottom") and surface.height is None:
                 raise ValueError(f"{rest} needs the height of {contact.surface}")
             return Quantity("contact", head, rest)

@@ -26,7 +26,10 @@ class Bearings:
     about that axis; the shaft passes through the body's point `through` (x, y, z from the center of
     mass in the body's own frame); `apart` is the distance between the two bearings, either side of
     that point (None: not given); `incline`, the shaft's angle above the horizontal under gravity;
-    `thrust`, the bearing ("A" or "B") that takes the weight's part along an inclined shaft."""
+    `thrust`, the bearing ("A" or "B") that takes the weight's part along an inclined shaft;
+    `turned`, the rate at which the shaft itself is turned about the ground's y, across it (a ship's
+    turbine as the ship turns); `inertia`, a custom body's (transverse, axial) moments about its
+    center of mass, its own axis z, else None."""
 
     rate: sp.Expr
     tilt: sp.Expr
@@ -35,6 +38,8 @@ class Bearings:
     through: tuple[sp.Expr, sp.Expr, sp.Expr] = (sp.Integer(0),) * 3
     incline: sp.Expr = sp.Integer(0)
     thrust: str | None = None
+    turned: sp.Expr = sp.Integer(0)
+    inertia: tuple[sp.Expr, sp.Expr] | None = None
 
 
 @dataclass(frozen=True)
@@ -44,12 +49,14 @@ class PivotPoint:
     `tilt` from the vertical; `spin`, omega's component along that axis. At the center of mass
     (`offset` zero: no weight's torque about it) the axis is the body's own symmetry axis, leaning
     by `tilt` from the ground's z toward its x. `inertia`: a custom body's (transverse, axial)
-    moments about its center of mass, else None."""
+    moments about its center of mass, else None. `hangs`: the tilt is beyond pi/2, the center of
+    mass below the point (a rod swinging in a cone)."""
 
     offset: tuple[sp.Expr, sp.Expr, sp.Expr]
     tilt: sp.Expr
     spin: sp.Expr
     inertia: tuple[sp.Expr, sp.Expr] | None = None
+    hangs: bool = False
 
     @property
     def centered(self) -> bool:

@@ -40,7 +40,8 @@ class Contact(Part):
     that carries the surface (None: the ground); it feels the opposite forces, and the contact
     holds the two bodies' velocities at the point of contact together. `slipped`: how far it
     slid before it gripped (rolling, the distance rolled plus R theta is that much off the
-    placement's)."""
+    placement's). `center`: the center of the round face it touches with, in the body's frame
+    from its center of mass (None: the center of mass; a hemisphere's is 3R/8 from it)."""
 
     name: str
     body: str
@@ -52,6 +53,7 @@ class Contact(Part):
     point: tuple[sp.Expr, sp.Expr] | None = None
     carrier: str | None = None
     slipped: sp.Expr = sp.Integer(0)
+    center: tuple[sp.Expr, sp.Expr] | None = None
 
     def bodies(self) -> tuple[str, ...]:
         return (self.body,) if self.carrier is None else (self.body, self.carrier)
@@ -85,14 +87,15 @@ class Contact(Part):
         if self.point is not None:
             return surface, coords.position(self.body, self.point), sp.Integer(0)
         radius = coords.scene.bodies[self.body].sizes.get("radius", sp.Integer(0))
-        return surface, coords.position(self.body), radius
+        return surface, coords.position(self.body, self.center or (0, 0)), radius
 
     def offset(self, coords) -> sp.Matrix:
         """World offset from the body's center to the point touching the surface."""
         if self.point is not None:
             return coords.rotated(self.body, self.point)
         surface, center, radius = self._geometry(coords)
-        return -radius * surface.normal_at(center, radius)
+        off_center = sp.zeros(2, 1) if self.center is None else coords.rotated(self.body, self.center)
+        return off_center - radius * surface.normal_at(center, radius)
 
     def _carrier_offset(self, coords) -> sp.Matrix:
         """World offset from the carrier's center to the point of contact."""

@@ -434,7 +434,7 @@ def _element(reader, places, value, field: str, end: bool) -> dict:
         rigid = places.bodies.get(body)
         if "radius" in spec:
             radius = reader.positive(spec["radius"], f"{field}.radius", "m", "a radius")
-        elif rigid is not None and "radius" in rigid.sizes and not any(offset):
+        elif rigid is not None and "radius" in rigid.sizes and not any(offset) and rigid.round_center is None:
             radius = rigid.sizes["radius"]
         else:
             raise reader.fail(f"{field}.radius", "give the radius the cord goes around (this has none of its own)")

@@ -75,6 +75,7 @@ def points_of(body) -> dict[str, tuple[sp.Expr, sp.Expr]]:
     if body.composite is not None:
         return body.composite.points()
     middle = getattr(body, "shape_center", (ZERO, ZERO))  # a density may move the center of mass off the middle
+    middle = getattr(body, "round_center", None) or middle  # a hemisphere's rim points are its round face's
     return {name: (px, py) if name == "center" else (px + middle[0], py + middle[1])  # center: the center of mass
             for name, (px, py) in body_points(body.shape, body.sizes).items()}
 

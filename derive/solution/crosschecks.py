@@ -90,7 +90,7 @@ class CrossChecks:
             result.append(self._tensor_check())
         if "path" in kinds:
             result.append(self._path_check())
-        if "pivot_point" in kinds:
+        if kinds & {"pivot_point", "conical"}:  # a steady cone's rate is a quantity's: its equations are checked here
             result.append(self._pivot_point_check())
         if "rolls_on_edge" in kinds:
             result.append(self._rolls_on_edge_check())

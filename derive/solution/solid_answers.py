@@ -29,10 +29,17 @@ class SolidAnswers:
         """L, the bearings' torque and the kinetic energy of a body in bearings by one route
         (derive.mechanics.bearings.ROUTES)."""
         body, held = self.scene.bodies[name], self.scene.bearings[name]
+        return bearings.motion(self.bearing_tensor(name), held.rate, held.tilt, held.roll, own_axis(body.shape), route,
+                               body.mass, held.through, self.shaft_gravity(name), held.apart, held.thrust, held.turned)
+
+    def bearing_tensor(self, name: str) -> sp.ImmutableMatrix:
+        """The tensor about the center of mass, in its own frame, of a body in bearings (a custom
+        body's from its moments, its own axis z)."""
+        body, held = self.scene.bodies[name], self.scene.bearings[name]
+        if held.inertia is not None:
+            return sp.ImmutableMatrix(sp.diag(held.inertia[0], held.inertia[0], held.inertia[1]))
         parts = body.composite.parts if body.composite is not None else None
-        tensor = bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
-        return bearings.motion(tensor, held.rate, held.tilt, held.roll, own_axis(body.shape), route,
-                               body.mass, held.through, self.shaft_gravity(name), held.apart, held.thrust)
+        return bearings.body_tensor(body.shape, body.mass, body.sizes, parts)
 
     def shaft_gravity(self, name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """g's vector in the frame of the shaft of a body in bearings (the shaft is N.z, inclined by
@@ -75,6 +82,14 @@ class SolidAnswers:
         except fixed_point.NotSymmetric as error:
             raise self.problem.error(f"scene.bodies.{q.target}", f"{q.target}.{q.detail}: {error}") from None
         return fixed_point.fast_top(exact, point.spin, point.tilt) if q.detail.endswith("fast_top") else exact
+
+    def conical_squared(self, name: str, route: str) -> sp.Expr:
+        """Omega^2 of the steady conical motion of a body on a fixed point, by one route
+        (derive.mechanics.fixed_point; refused for a body that is not symmetric about its axis)."""
+        try:
+            return fixed_point.conical_squared(*self.standing_top(name), self.scene.pivot_points[name].tilt, route)
+        except fixed_point.NotSymmetric as error:
+            raise self.problem.error(f"scene.bodies.{name}", f"{name}.conical.rate: {error}") from None
 
     def impulse_turn(self, name: str) -> tuple:
         """((I1, I3), spin, the axis n, the couple's direction a, tau, dt) of a body on a fixed point

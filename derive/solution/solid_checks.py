@@ -92,9 +92,9 @@ class SolidChecks:
                                        f"{found['newton_euler'][key]} by Newton–Euler, {found['lagrange'][key]} "
                                        "by Lagrange")
             body = self.scene.bodies[name]
-            if body.composite is None:
+            if body.composite is None and held.inertia is None:  # a uniform shape's elements
                 by_integral = bearings.angular_momentum_by_integral(body.shape, body.mass, tuple(body.sizes.items()),
-                                                                    held.rate, held.tilt, held.roll)
+                                                                    held.rate, held.tilt, held.roll, held.turned)
                 if any(differ(a, b) for a, b in zip(by_integral, found["newton_euler"]["angular_momentum"])):
                     raise CheckFailure(f"{self.problem.id}: the {name}'s L is {list(by_integral)} integrated, "
                                        f"{list(found['newton_euler']['angular_momentum'])} from the tensor")
@@ -136,7 +136,8 @@ class SolidChecks:
         (Euler's equations about the point) and Kane agree term by term, and each asked quantity by
         Lagrange and Newton–Euler; the fast-top rate's relative error against the slow root is reported."""
         methods, notes = {"symbolic"}, []
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "pivot_point"}:
+        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind in ("pivot_point",
+                                                                                                   "conical")}:
             top = self.standing_top(name)
             found = {route: fixed_point.equations(*top, route) for route in fixed_point.ROUTES}
             for route in fixed_point.ROUTES[1:]:

@@ -243,9 +243,14 @@ class _Figure:
         return self.num(body.sizes.get(name), default)
 
     def body(self, body: Body, center, radius: float, angle: float = 0.0, block: bool = False,
-             aspect: float = ASPECT) -> None:
-        """A body by its shape, centered at `center`; `radius` is its half-size on the figure (cm)."""
+             aspect: float = ASPECT, face: bool = False) -> None:
+        """A body by its shape, centered at `center`; `radius` is its half-size on the figure (cm).
+        `face`: `center` is its round face's center, which a hemisphere's is off its center of mass
+        (where it rests on a surface); else `center` is its center of mass."""
         c, r = _pt(center), _f(radius)
+        if body.face_center is not None and not face:  # from the center of mass back to the face's center
+            center = _add(center, _unit(self._toward_mass(body, angle)), -self._mass_offset(body, radius))
+        mass = self.mass_center(body, center, radius, angle)
         shape = body.shape
         if shape == "point":
             if block:
@@ -266,6 +271,10 @@ class _Figure:
         elif shape == "cone":
             self.add(f"\\draw[body] {_pt(_add(center, (-radius, -radius / 2)))} -- "
                      f"{_pt(_add(center, (radius, -radius / 2)))} -- {_pt(_add(center, (0, radius * 1.2)))} -- cycle;")
+        elif shape == "custom" and body.round_center is not None:  # a hemisphere: its round face about `center`
+            toward = self._toward_mass(body, angle)
+            self.add(f"\\draw[body] {_pt(_add(center, _unit(toward - 90), radius))} arc ({_f(toward - 90)}:"
+                     f"{_f(toward + 90)}:{r}) -- cycle;")
         elif shape == "custom" and "radius" not in body.sizes:
             self.add(f"\\draw[body, rotate around={{{_f(angle)}:{c}}}] {c} ellipse ({r} and {_f(radius * aspect)});")
         elif body.density is not None:
@@ -277,8 +286,24 @@ class _Figure:
                 ratio = self.size(body, "inner_radius", 1) / self.size(body, "outer_radius", 2)
                 self.add(f"\\draw[fill=white] {c} circle ({_f(radius * _clamp(ratio, 0.2, 0.85))});")
         if shape not in ("point", "rod", "sphere", "thick_spherical_shell", "ring", "cylindrical_shell",
-                         "spherical_shell", "cone"):
-            self.add(f"\\fill {c} circle (0.04);")
+                         "spherical_shell", "cone"):  # the center of mass, off a round face's center (a hemisphere)
+            self.add(f"\\fill {_pt(mass)} circle (0.04);")
+
+    def _toward_mass(self, body: Body, angle: float) -> float:
+        """The direction (degrees) from a round face's center to the center of mass, turned by `angle`."""
+        off = [self.num(v, 0.0) for v in body.face_center]
+        return math.degrees(math.atan2(-off[1], -off[0])) + angle
+
+    def mass_center(self, body: Body, center, radius: float, angle: float = 0.0):
+        """Where the center of mass of a body drawn about `center` (its round face's center, `radius`
+        on the figure) is drawn: off it for a round face off the center of mass (a hemisphere)."""
+        if body.face_center is None:
+            return center
+        return _add(center, _unit(self._toward_mass(body, angle)), self._mass_offset(body, radius))
+
+    def _mass_offset(self, body: Body, radius: float) -> float:
+        """How far the center of mass is drawn from the round face's center (`radius` on the figure)."""
+        return math.hypot(*(self.num(v, 0.0) for v in body.face_center)) / self.num(body.sizes["radius"], 1.0) * radius
 
     def bar(self, a, b) -> None:
         """A rod, or any body drawn as a thick bar, from `a` to `b`."""

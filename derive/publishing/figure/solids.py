@@ -101,7 +101,7 @@ def _bearings(fig: _Figure) -> None:
         c, s = math.cos(turn), math.sin(turn)
         view = Oblique(fig, ((c, s, 0), (-s, c, 0), (0, 0, 1)))
     rate = fig.num(rotation.rate, 1.0)
-    omega = (0.0, 0.0, rate)
+    omega = (0.0, fig.num(rotation.turned, 0.0), rate)  # the shaft's own turn about N.y, where it is turned
     if body.composite is not None:
         reach = fig.num(body.composite.extent(), 1.0)
     else:  # the drawn half-size, 1.6, is a rod's half-length, else the largest size
@@ -112,6 +112,10 @@ def _bearings(fig: _Figure) -> None:
     shaft = view.world((0, 0, 1))
     view.line(_scaled(shaft, -2), _scaled(shaft, 2.2), "axis, ->")
     view.turning(_scaled(shaft, 1.95), shaft, 0.35, fig.m(rotation.rate))
+    if rotation.turned != 0:  # the shaft turned about N.y, drawn as an axis of its own
+        turning = view.world((0, 1, 0))
+        view.line(_scaled(turning, -1.8), _scaled(turning, 2.0), "axis, ->")
+        view.turning(_scaled(turning, 1.75), turning, 0.3, fig.m(rotation.turned))
     if any(abs(c) > 1e-9 for c in cm):
         view.line((0, 0, 0), cm, "thin, dashed")
         view.dot((0, 0, 0))
@@ -142,9 +146,14 @@ def _top_state(fig: _Figure, name: str, top) -> tuple[dict, float]:
     spin is its least spin); a moment left open (it cancels from the answers) at zero; the rate
     is the slow steady precession's, its fast-top limit where only that is asked (none upright)."""
     point = fig.scene.pivot_points[name]
+    fixed = {s: sp.Integer(0) for s in top[0].free_symbols - fig.values.keys()}
+    if any(a.quantity.kind == "conical" for a in fig.problem.asks.values()):  # turning as one in a cone
+        rate = math.sqrt(numbers(fig, [fixed_point.conical_squared(*top, point.tilt, "lagrange")], fixed)[0])
+        if point.spin.free_symbols - fig.values.keys():
+            fixed[point.spin] = sp.Float(rate) * sp.cos(point.tilt)
+        return fixed, rate
     asked = {a.quantity.detail for a in fig.problem.asks.values() if a.quantity.kind == "pivot_point"}
     sleeping = asked <= {"sleeping.min_spin"}
-    fixed = {s: sp.Integer(0) for s in top[0].free_symbols - fig.values.keys()}
     if point.tilt.free_symbols - fig.values.keys():
         fixed[point.tilt] = sp.Integer(0) if sleeping else sp.Rational(1, 2)
     if point.spin.free_symbols - fig.values.keys():
@@ -179,7 +188,10 @@ def _pivot_point(fig: _Figure) -> None:
     floor = -1.6 if level else 0.0
     if level:  # a post under the pivot
         fig.line((0, floor), (0, 0), "line width=1.5pt")
-    fig.ground(-1.2, 1.6, floor)
+    if point.hangs:  # hung from a support above the point
+        fig.support((0, 0), True)
+    else:
+        fig.ground(-1.2, 1.6, floor)
     view.line((0, 0, floor), (0, 0, 3.4), "axis")
     cm = _scaled(e3, 2.0)
     size = _clamp(fig.num(body.sizes.get("radius"), 0.0) * 2.0 / fig.num(distance, 1.0), 0.5, 1.0) \
@@ -187,6 +199,8 @@ def _pivot_point(fig: _Figure) -> None:
     if body.shape in ("disk", "ring", "annulus", "cylinder"):
         fig.line(page((0, 0, 0)), page(_scaled(e3, 2.4)), "line width=1.5pt")
         view.circle(cm, e3, size, "line width=1.8pt" if body.shape == "ring" else "body")
+    elif body.shape == "rod":  # a bar from the point through its center
+        fig.line(page((0, 0, 0)), page(_scaled(e3, 4.0)), "line width=3pt, line cap=round, gray!60!black")
     elif body.shape == "cone":
         base = _scaled(e3, 2.0 * 4 / 3)
         view.circle(base, e3, size)
@@ -210,7 +224,7 @@ def _pivot_point(fig: _Figure) -> None:
     view.turning(_scaled(e3, 2.6), e3, 0.25, fig.m(point.spin) if point.spin not in fixed else None)
     if rate != 0:
         precession = (fig.ask_symbol("pivot_point", name, "precession.slow")
-                      or fig.ask_symbol("pivot_point", name) or r"\Omega")
+                      or fig.ask_symbol("pivot_point", name) or fig.ask_symbol("conical", name) or r"\Omega")
         view.turning((0, 0, 3.1), (0, 0, 1), 0.45, f"${precession}$")
     _vectors(view, (0, 0, 0), omega, momentum, (3.0, 3.5))
     along = sum(m * e for m, e in zip(momentum, e3))
@@ -218,7 +232,8 @@ def _pivot_point(fig: _Figure) -> None:
     axial = _scaled(e3, 3.5 * along / length)
     rest = tuple(3.5 * m / length - a for m, a in zip(momentum, axial))
     if math.sqrt(sum(c * c for c in rest)) > 0.15:  # L's part from the precession, where it shows
-        view.arrow((0, 0, 0), axial, 3.5 * abs(along) / length, "->, thin, dashed, green!40!black")
+        if abs(along) > 0.05 * length:  # and along the axis (a thin rod has none)
+            view.arrow((0, 0, 0), axial, 3.5 * abs(along) / length, "->, thin, dashed, green!40!black")
         view.arrow(axial, rest, math.sqrt(sum(c * c for c in rest)), "->, thin, dashed, green!40!black")
 
 

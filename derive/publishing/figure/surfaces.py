@@ -47,7 +47,7 @@ def _on_surface(fig: _Figure) -> None:
             along = max(along, previous + 1.08)
         foot = _add((0, height), down, along)
         center = _add(foot, normal, r)
-        fig.body(body, center, r, -math.degrees(angle), block=body.shape == "point")
+        fig.body(body, center, r, -math.degrees(angle), block=body.shape == "point", face=True)
         regime = regime_text(fig, contact)
         if several:  # each body's name above it, its regime along the slope under it
             fig.label(_add(center, normal, r + 0.05), normal, f"\\scriptsize {tex_escape(body.name)}")
@@ -55,7 +55,7 @@ def _on_surface(fig: _Figure) -> None:
         else:
             fig.label(_add(_add(foot, down, r + 0.12), normal, 0.02), _add(normal, down), regime)
             if scene.gravity is not None:
-                fig.gravity_arrow(center, body)
+                fig.gravity_arrow(fig.mass_center(body, center, r, -math.degrees(angle)), body)
         previous = along
         along += r + 0.4
     if several and scene.gravity is not None:
@@ -89,12 +89,12 @@ def _floor(fig: _Figure, contacts: list[Contact]) -> None:
                      and p.path[-1].kind == "pulled"), None)
         r = 1.0 if pull else 0.8
         center = (x, r)
-        fig.body(body, center, r, block=body.shape == "point")
+        fig.body(body, center, r, block=body.shape == "point", face=True)
         fig.label((x + r + 0.12, 0.02), (1, 1), regime_text(fig, contact))
         if pull:
             _spool(fig, body, pull, center, r)
         if scene.gravity is not None:
-            fig.gravity_arrow(center, body, r * 0.55, toward=(-1, 0) if pull else (1, 0))
+            fig.gravity_arrow(fig.mass_center(body, center, r), body, r * 0.55, toward=(-1, 0) if pull else (1, 0))
         motion = given_motion(scene, body.name)
         if motion is not None and any(v != 0 for v in motion.velocity):
             v = (fig.num(motion.velocity[0], 1), fig.num(motion.velocity[1], 0))
@@ -157,7 +157,7 @@ def _loop(fig: _Figure, loop: Circle, contacts: list[Contact]) -> None:
         point, tangent = _bezier(start, c1, c2, end, u)
         normal = (-tangent[1], tangent[0])
         centre = _add(point, normal, r)
-        fig.body(body, centre, r, block=body.shape == "point")
+        fig.body(body, centre, r, block=body.shape == "point", face=True)
         regime = regime_text(fig, contact)
         if len(contacts) > 1:
             regime = regime.replace("scriptsize ", f"scriptsize {tex_escape(body.name)}: ")
