@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import re
 
+import sympy as sp
+
 from derive.core.keys import Key, Keys
 from derive.parts import contact
 from derive.parts.contact import Contact
@@ -118,7 +120,8 @@ def _nudge(reader: Reader, raw, field: str, bodies: dict[str, Body]) -> bool | t
 
 #: The events a state may follow: what each makes of the two bodies.
 EVENTS = {"stick": "the body sticks to the other where it touches it",
-          "lock": "the two turning bodies turn together from then on (a clutch)",
+          "lock": "the two turning bodies turn together from then on (a clutch); with at: rims, two round bodies on "
+                  "fixed axles touching at their rims roll on each other from then on",
           "bounce": "a point mass or a round body bounces off a rod or a round body, or off a fixed surface, with "
                     "restitution: e; smooth, or rough with friction: {static: mu} or grips: true",
           "move": "a point mass pinned to a body is carried to the point to: of that body by the scene's own forces "
@@ -135,7 +138,9 @@ EVENT = Keys(**{kind: Key("name", f"the body (or contact) of the event: {meaning
              relative_to=Key("name", "a turn's other body"),
              angle=Key("quantity", "the angle a turn turns through"),
              friction=Key("mapping", "a rough bounce's coefficients", keys=contact.FRICTION),
-             grips=Key("boolean", "a rough bounce that grips (default false)"))
+             grips=Key("boolean", "a rough bounce that grips (default false)"),
+             at=Key("name", "a lock of two round bodies on fixed axles at their rims: rims (they slip until their rims "
+                            "move together, then roll on each other)"))
 #: A state's entry under `scene.states`: exactly one of rates, when and event.
 STATE = Keys(rates=Key("mapping", "rates at the placement: {BODY.angular_velocity: w0, BODY.velocity.x: v0, ...}"),
              when=Key("any", "where the motion from from: gets to: stops, {BODY.x|y|angle: value}, "
@@ -183,6 +188,9 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     for key in ("restitution", "friction", "grips"):
         if key in raw and kind != "bounce":
             raise reader.fail(f"{field}.event.{key}", f"a {kind} has no {key} (a bounce has)")
+    if "at" in raw and (kind != "lock" or raw["at"] != "rims"):
+        raise reader.fail(f"{field}.event.at", "expected at: rims, of a lock (two round bodies on fixed axles that "
+                                               "roll on each other at their rims from then on)")
     if kind == "transfer":
         return State(name, start=spec["from"], event=_transfer(reader, body, to, f"{field}.event", places,
                                                                constraints, spec["from"], found))
@@ -200,7 +208,25 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
                                             "a point mass sticks (stick:)")
     if kind == "bounce":
         return State(name, start=spec["from"], event=_bounce(reader, body, to, raw, f"{field}.event"))
-    return State(name, start=spec["from"], event=Event(kind, body, to))
+    if kind == "lock":
+        _lock(reader, body, to, "at" in raw, f"{field}.event", places, constraints)
+    return State(name, start=spec["from"], event=Event(kind, body, to, rims="at" in raw))
+
+
+def _lock(reader: Reader, body: str, to: str, rims: bool, field: str, places, constraints: list) -> None:
+    """A lock's bodies: a clutch's turn about one axle (their centers held together, or apart only
+    where something else holds them: not two fixed axles); at the rims, two round bodies each on a
+    fixed axle at its center (`joint: fixed_axle`)."""
+    axles = {c.body for c in constraints if isinstance(c, Pin) and c.to is None and not any(c.offset)}
+    if rims:
+        for name in (body, to):
+            if name not in axles or "radius" not in places.bodies[name].sizes:
+                raise reader.fail(field, f"a lock at the rims joins two round bodies each on a fixed axle at its "
+                                         f"center (joint: fixed_axle): the {name} is not")
+    elif {body, to} <= axles and any(sp.simplify(a - b) != 0 for a, b in zip(places.bodies[body].at,
+                                                                               places.bodies[to].at)):
+        raise reader.fail(field, f"the {body} and the {to} turn on two fixed axles: a clutch cannot join them; two "
+                                 "round bodies pressed together at their rims lock with at: rims")
 
 
 def _bounce(reader: Reader, body: str, to: str, raw: dict, field: str) -> Event:

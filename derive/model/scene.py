@@ -165,7 +165,8 @@ def constraint_bodies(part: Part) -> tuple[str, ...]:
 @dataclass(frozen=True)
 class Event:
     """What happens to the scene in an instant, or by its own forces, between two states: an
-    impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
+    impact (`kind` stick, lock or bounce of `body` on `to`, a lock `rims` of two round bodies on
+    fixed axles that roll on each other from then on, a bounce with its coefficient of
     `restitution` and, rough, its `friction` (mu for the grip, mu for the slide) or `grips`
     always; a bounce's `to` may be a fixed surface), a move (`kind` move: the point mass `body` carried to `place` on the body
     `to`, in its frame, where the pin `joint` holds it), a turn (`kind` turn: the body `body`
@@ -186,6 +187,7 @@ class Event:
     place: tuple[sp.Expr, sp.Expr] | None = None
     joint: str | None = None
     angle: sp.Expr | None = None
+    rims: bool = False
 
 
 @dataclass(frozen=True)
