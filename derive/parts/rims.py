@@ -18,7 +18,7 @@ velocity along t (with the centers at rest, s_A omega_A - s_B omega_B = 0).
 >>> R1, R2 = sp.symbols("R1 R2", positive=True)
 >>> scene = Scene({n: Body(n, "custom", sp.Symbol("M"), {}, sp.Symbol("I")) for n in ("one", "two")})
 >>> Rims("grip", "one", "two", (1, 0), R1, -R2).conditions(Coordinates(scene))
-[R1*omega_one + R2*omega_two]
+[R1*thetadot_one + R2*thetadot_two + ydot_one - ydot_two]
 """
 from __future__ import annotations
 
