@@ -451,6 +451,13 @@ EXPECTED = {
     # I2 (w2f - w2) = -R2 F dt, and once they roll, w1f R1 = -w2f R2 (they touch from outside):
     # w1f = (I1 R2^2 w1 - I2 R1 R2 w2)/(I1 R2^2 + I2 R1^2), I = M R^2/2; the kinetic energy lost is
     # the initial minus the final.
+    # Serway & Jewett ch. 11 (a puck on a frictionless table held by a cord through a hole, pulled slowly
+    # from below): the cord's force is central, so m v1 r1 = m v r; the pull's work is the change of kinetic
+    # energy, (m v1^2/2)((r1/r2)^2 - 1).
+    "puck_pulled_through_hole": {
+        "v": lambda s: s.v1 * s.r1 / s.r2,
+        "W": lambda s: s.m * s.v1**2 * ((s.r1 / s.r2) ** 2 - 1) / 2,
+    },
     "disks_pressed_at_rims": {
         "w1f": lambda s: _rims_rate(s),
         "w2f": lambda s: -s.R1 * _rims_rate(s) / s.R2,

@@ -48,6 +48,10 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             raise reader.fail(f"{field}.from", "the name of a state above this one")
         earlier = result.get(spec.get("from"))
         moves_on = isinstance(spec.get("event"), dict) and {"move", "turn"} & set(spec["event"])
+        pulls_on = isinstance(spec.get("event"), dict) and "pull" in spec["event"]
+        if earlier and earlier.event and earlier.event.kind == "pull" and not pulls_on:
+            raise reader.fail(f"{field}.from", f"where the bodies are after the pull {earlier.name} depends on how it "
+                                               "is made: only another pull may follow it")
         if earlier and earlier.event and earlier.event.kind == "move" and not moves_on:
             raise reader.fail(f"{field}.from", f"where the bodies are after the move {earlier.name} depends on how it "
                                                "is made (a turntable turns while a child walks on it): only another "
@@ -129,7 +133,9 @@ EVENTS = {"stick": "the body sticks to the other where it touches it",
           "turn": "a turning body turns through angle: relative to the body relative_to: by a couple between them "
                   "(Elroy's beanie)",
           "transfer": "a body resting on a surface (or a contact joint) passes onto the surface to:, where it "
-                      "touches both and the two meet tangentially (a ball rolling down a ramp into a loop)"}
+                      "touches both and the two meet tangentially (a ball rolling down a ramp into a loop)",
+          "pull": "a cord tied to a ground point (a hole in a table) and to a point mass is drawn in, or let out, "
+                  "slowly through that point until its length is length: (a puck on a table pulled in by its cord)"}
 
 #: `event:` what happens in the state `from:` (exactly one of EVENTS, with what it takes).
 EVENT = Keys(**{kind: Key("name", f"the body (or contact) of the event: {meaning}") for kind, meaning in EVENTS.items()},
@@ -139,6 +145,7 @@ EVENT = Keys(**{kind: Key("name", f"the body (or contact) of the event: {meaning
              angle=Key("quantity", "the angle a turn turns through"),
              friction=Key("mapping", "a rough bounce's coefficients", keys=contact.FRICTION),
              grips=Key("boolean", "a rough bounce that grips (default false)"),
+             length=Key("quantity", "the length a pull leaves the cord at"),
              at=Key("name", "a lock of two round bodies on fixed axles at their rims: rims (they slip until their rims "
                             "move together, then roll on each other)"))
 #: A state's entry under `scene.states`: exactly one of rates, when and event.
@@ -171,6 +178,10 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
     kind = kinds[0]
     body = raw[kind]
+    if kind == "pull":
+        return State(name, start=spec["from"], event=_pull(reader, body, raw, f"{field}.event", places, constraints))
+    if "length" in raw:
+        raise reader.fail(f"{field}.event.length", f"a {kind} has no length (a pull has)")
     # a transfer may name a contact joint (a ladder's foot): the point that passes onto the other surface
     touching = {c.name for c in constraints if isinstance(c, Contact) and c.point is not None} if kind == "transfer" \
         else set()
@@ -291,6 +302,27 @@ def _restitution(reader: Reader, raw, field: str):
     if e.is_negative or (not e.free_symbols and e > 1) or any(b[0] < 0 or b[1] > 1 for b in bounds):
         raise reader.fail(field, "a coefficient of restitution lies in [0, 1]")
     return e
+
+
+def _pull(reader: Reader, cord: str, raw: dict, field: str, places, constraints: list) -> Event:
+    """A pull of a straight cord from a ground point (a hole) to a point mass, to a new length: the
+    event's `body` is the point mass, its `joint` and `to` the cord."""
+    cords = {c.name: c for c in constraints if isinstance(c, Cord)}
+    if not isinstance(cord, str) or cord not in cords:
+        raise reader.fail(f"{field}.pull", no_such("cord", cord, cords, "cords"))
+    path = cords[cord].path
+    ends = sorted(path, key=lambda a: a.body is not None)
+    if len(path) != 2 or any(a.kind != "point" for a in path) or ends[0].body is not None or ends[1].body is None \
+            or places.bodies[ends[1].body].rotates:
+        raise reader.fail(f"{field}.pull", f"a pull draws in a straight cord tied to a ground point (the hole it runs "
+                                           f"through) and to a point mass: {cord}: [hole, puck]")
+    extra = sorted(set(raw) - {"pull", "length"})
+    if extra:
+        raise reader.fail(f"{field}.{extra[0]}", "a pull gives the cord (pull:) and its new length (length:) only")
+    if "length" not in raw:
+        raise reader.fail(f"{field}.length", "missing: a pull gives the cord's new length (length: r2)")
+    length = reader.positive(raw["length"], f"{field}.length", "m", "the cord's new length")
+    return Event("pull", ends[1].body, cord, joint=cord, length=length)
 
 
 def _move(reader: Reader, body: str, to, field: str, places, constraints: list, start: str,

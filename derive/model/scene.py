@@ -171,8 +171,9 @@ class Event:
     always; a bounce's `to` may be a fixed surface), a move (`kind` move: the point mass `body` carried to `place` on the body
     `to`, in its frame, where the pin `joint` holds it), a turn (`kind` turn: the body `body`
     turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie),
-    or a transfer (`kind` transfer: the contact `joint` of the body `body` passes onto the surface
-    `to`, a ball rolling from a ramp into a loop).
+    a transfer (`kind` transfer: the contact `joint` of the body `body` passes onto the surface
+    `to`, a ball rolling from a ramp into a loop), or a pull (`kind` pull: the cord `joint`, from a
+    ground point to the point mass `body`, drawn slowly to the `length`).
 
     >>> Event("stick", "bullet", "rod").restitution is None
     True
@@ -188,6 +189,7 @@ class Event:
     joint: str | None = None
     angle: sp.Expr | None = None
     rims: bool = False
+    length: sp.Expr | None = None
 
 
 @dataclass(frozen=True)

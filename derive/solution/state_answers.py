@@ -125,7 +125,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                         joints[name] = in_place(joints[name], made[name])
                         solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name], made[name])
-                    elif state.event.kind == "turn":
+                    elif state.event.kind in ("turn", "pull"):
                         solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name])
                     elif state.event.kind == "transfer":
@@ -494,7 +494,8 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                     "bounce": f"the {event.body} bounces off the {event.to}",
                     "move": f"the {event.body} is carried to a new place on the {event.to}",
                     "turn": f"the {event.body} turns relative to the {event.to}",
-                    "transfer": f"the {event.body} passes onto the {event.to}"}[event.kind]
+                    "transfer": f"the {event.body} passes onto the {event.to}",
+                    "pull": f"the cord {event.joint} is drawn to a new length"}[event.kind]
             if event.kind == "transfer":
                 what = what.replace("passes", f"passes from the {self.scene_in(state.start).constraint(event.joint).surface}")
             kind = "impact" if event.kind in ("stick", "lock", "bounce") else event.kind
