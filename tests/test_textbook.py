@@ -457,6 +457,7 @@ EXPECTED = {
     "puck_pulled_through_hole": {
         "v": lambda s: s.v1 * s.r1 / s.r2,
         "W": lambda s: s.m * s.v1**2 * ((s.r1 / s.r2) ** 2 - 1) / 2,
+        "T": lambda s: s.m * (s.v1 * s.r1 / s.r2) ** 2 / s.r2,  # the cord holds it on its circle: m v^2/r
     },
     "disks_pressed_at_rims": {
         "w1f": lambda s: _rims_rate(s),

@@ -187,6 +187,15 @@ def pull(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
     return _after(scene, scene, coords, before, kept, positions, route, sample, "pull")
 
 
+def pulled_cord(scene: Scene, coords: Coordinates, before: dict, event: Event) -> Part:
+    """The cord of the pull `event` at its new length (the state `before` it gives its old one)."""
+    cord = scene.constraint(event.joint)
+    at = {c.q: before[c.q] for c in coords.all}
+    hole = sp.Matrix(next(a.offset for a in cord.path if a.body is None))
+    reach = coords.position(event.body).xreplace(at) - hole
+    return dataclasses.replace(cord, drawn=tidy(cord.drawn + sp.sqrt(reach.dot(reach)) - event.length))
+
+
 def turn(scene: Scene, coords: Coordinates, before: dict, event: Event, route: str, sample) -> Moved:
     """The state after the turn `event` (the body `event.body` turned through `event.angle`
     relative to `event.to` by a couple between them, and at rest relative to it again) from the

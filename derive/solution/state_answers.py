@@ -125,7 +125,13 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                         joints[name] = in_place(joints[name], made[name])
                         solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name], made[name])
-                    elif state.event.kind in ("turn", "pull"):
+                    elif state.event.kind == "pull":
+                        solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
+                        made[name] = moves.pulled_cord(self._scene_with(joints[name]), self.coordinates,
+                                                       result[state.start].values, state.event)
+                        joints[name] = in_place(joints[name], made[name])
+                        reached = self._after_move(name, result[state.start].values, solved[name])
+                    elif state.event.kind == "turn":
                         solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name])
                     elif state.event.kind == "transfer":
