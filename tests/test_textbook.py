@@ -459,6 +459,13 @@ EXPECTED = {
         "W": lambda s: s.m * s.v1**2 * ((s.r1 / s.r2) ** 2 - 1) / 2,
         "T": lambda s: s.m * (s.v1 * s.r1 / s.r2) ** 2 / s.r2,  # the cord holds it on its circle: m v^2/r
     },
+    # Serway & Jewett ch. 5 (a block pulled across a board on a frictionless floor): a1 = F/m - mu g,
+    # a2 = mu m g/M; the block gains L on the board after t = sqrt(2 L/(a1 - a2)), the board moving a2 t^2/2
+    # (a state relative to another body: `relative_to: board`).
+    "block_slides_off_plank": {
+        "t": lambda s: sp.sqrt(2 * s.L / (s.F / s.m - s.mu * s.g - s.mu * s.m * s.g / s.M)),
+        "d": lambda s: s.mu * s.m * s.g / s.M * s.L / (s.F / s.m - s.mu * s.g - s.mu * s.m * s.g / s.M),
+    },
     "disks_pressed_at_rims": {
         "w1f": lambda s: _rims_rate(s),
         "w2f": lambda s: -s.R1 * _rims_rate(s) / s.R2,

@@ -90,6 +90,7 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
                                                "{leaves: BODY}, "
                                                "{slack: CORD}, {slips: BODY} and {grips: CLUTCH or BODY}")
         when = reader.mapping(spec["when"], f"{field}.when", free=True)
+        relative = _relative(reader, when.pop("relative_to", None), f"{field}.when", places, when)
         if len(when) != 1:
             raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2) or rate (ball.velocity.y: 0), or stops, "
                                                "{leaves: BODY}, "
@@ -100,10 +101,24 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
                                                                                 constraints)), nudge=nudge)
             continue
         rate = str(key).partition(".")[2] in STATE_RATES
+        if relative and (rate or relative[0] == str(key).partition(".")[0]):
+            raise reader.fail(f"{field}.when.relative_to", "a place relative to another body is of a position "
+                                                           "(x, y or angle) of a body other than that one")
         result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies,
                                                      STATE_RATES if rate else {**STATE_POSITIONS, **STATE_RATES}),
-                             start=start, rate=rate, nudge=nudge)
+                             start=start, rate=rate, nudge=nudge, relative_to=relative)
     return result
+
+
+def _relative(reader: Reader, raw, field: str, places, when: dict) -> tuple | None:
+    """`relative_to: BODY` or a point of it (`plank.end`, `{rod: [x, y]}`): the state's position is
+    measured from that point in that body's frame (None where not given)."""
+    if raw is None:
+        return None
+    if len(when) != 1 or any(k in THRESHOLDS for k in when):
+        raise reader.fail(f"{field}.relative_to", "relative_to goes with one position: {BODY.x|y|angle: value, "
+                                                  "relative_to: OTHER or OTHER.POINT}")
+    return places.point(raw, f"{field}.relative_to", ground=False)
 
 
 def _nudge(reader: Reader, raw, field: str, bodies: dict[str, Body]) -> bool | tuple[str, str, int]:
@@ -150,7 +165,8 @@ EVENT = Keys(**{kind: Key("name", f"the body (or contact) of the event: {meaning
                             "move together, then roll on each other)"))
 #: A state's entry under `scene.states`: exactly one of rates, when and event.
 STATE = Keys(rates=Key("mapping", "rates at the placement: {BODY.angular_velocity: w0, BODY.velocity.x: v0, ...}"),
-             when=Key("any", "where the motion from from: gets to: stops, {BODY.x|y|angle: value}, "
+             when=Key("any", "where the motion from from: gets to: stops, {BODY.x|y|angle: value} (measured from "
+                             "another body or its point with relative_to: OTHER), "
                              "{BODY.velocity.x|y: value}, {leaves: BODY}, {slack: CORD}, {slips: BODY}, {grips: NAME}"),
              event=Key("mapping", "an impact, a move, a turn or a transfer in the state from:", keys=EVENT),
              nudged=Key("any", "the motion from a balance it would never leave (a rod on its end, a ball on a dome's "
@@ -394,6 +410,7 @@ def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body]
     named = re.search(r"\b(" + "|".join(map(re.escape, bodies)) + r")\.[A-Za-z_]", str(value)) if bodies else None
     if named:  # where another body is: a state of the scene, not a value the file gives
         raise reader.fail(f"{field}.{key}", f"a state's value is an expression of the parameters, not of where the "
-                                            f"{named[1]} is ({value}): give the {head}'s {rest} as a number of them "
-                                            "(where the other body is placed, or where it is in the state before)")
+                                            f"{named[1]} is ({value}): give the {head}'s {rest} as a number of them, "
+                                            f"or measured from the {named[1]} with relative_to: {named[1]} (or a point "
+                                            f"of it, {named[1]}.end)")
     return head, kind, reader.dimensioned(value, f"{field}.{key}", unit, "a position" if unit in ("m", "rad") else "a rate")

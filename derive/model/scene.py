@@ -221,6 +221,9 @@ class State:
     # push too small to count (`nudged:`): True, toward where the state is; or (body, kind, +1 or -1), the way
     # that coordinate first moves. The state's speeds and places are the limit of a vanishing push; its time is not.
     nudge: bool | tuple[str, str, int] = False
+    # `when`'s position measured in another body's frame from its point (body, offset in its frame): a block's
+    # x from a plank's end, a bead's along a turning rod from its end (`when: {..., relative_to: rod.end}`).
+    relative_to: tuple[str, tuple[sp.Expr, sp.Expr]] | None = None
 
 
 @dataclass(frozen=True)

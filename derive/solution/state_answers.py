@@ -364,6 +364,9 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             body, kind, value = state.when
             if state.rate:
                 return reaching.GetsRate(self.coordinates.of(body, kind), value)
+            if state.relative_to is not None:
+                return reaching.Gets(self.coordinates.of(body, kind), value, reaching.measured_from(
+                    self.coordinates, body, kind, *state.relative_to))
             return reaching.Gets(self.coordinates.of(body, kind), value - self.scene.bodies[body].placed(kind))
         kind, name = state.until
         if kind == "stops":
