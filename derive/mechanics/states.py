@@ -330,7 +330,7 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
              Step("Work and energy from the start", (sp.Eq(symbol, path.kinetic),), sentences=path.work)]
     vanished = ()
     if isinstance(condition, Gets):
-        position = tidy(condition.at(path.positions))
+        position = condition.at(path.positions) if condition.measured is None else tidy(condition.at(path.positions))
         function = position - condition.value
         s1 = first_root.first(sp.Eq(position, condition.value), function, path, decide,
                     "the motion from the start does not get there")
