@@ -35,16 +35,25 @@ SHAPE_SIZES: dict[str, tuple[str, ...]] = {
 
 
 #: What a point mass on a prescribed path can be asked.
+#: What a path in space (with z) has no meaning for: the plane's polar components and sweep.
+PLANAR_PATH_QUANTITIES = ("acceleration.radial", "acceleration.tangential", "areal_velocity")
 PATH_QUANTITIES = ("velocity.x", "velocity.y", "speed", "acceleration.x", "acceleration.y", "acceleration.radial",
                    "acceleration.tangential", "angular_momentum", "areal_velocity")
 
 
 @dataclass(frozen=True)
 class Path:
-    """A body's prescribed motion: ("polar", (r(t), theta(t))) or ("cartesian", (x(t), y(t)))."""
+    """A body's prescribed motion: ("polar", (r(t), theta(t))) or ("cartesian", (x(t), y(t))),
+    with `z` (t) off the plane for a cartesian path in space (0: in the plane)."""
 
     kind: str
     functions: tuple[sp.Expr, sp.Expr]
+    z: sp.Expr = sp.Integer(0)
+
+    @property
+    def position3(self) -> sp.Matrix:
+        """The position in space, (x, y, z)."""
+        return sp.Matrix([*self.position, self.z])
 
     @property
     def position(self) -> sp.Matrix:
@@ -462,6 +471,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     if head in scene.bodies:
         body = scene.bodies[head]
         if body.path is not None:
+            if body.path.z != 0 and rest in PLANAR_PATH_QUANTITIES:
+                raise ValueError(f"{rest} is of a path in the plane; the {head}'s leaves it (z): ask "
+                                 "velocity.x|y, speed, acceleration.x|y, angular_momentum.x|y|z|magnitude")
             if rest not in PATH_QUANTITIES:
                 raise ValueError(f"a body on a path has {', '.join(PATH_QUANTITIES)}; not {rest!r}")
             return Quantity("path", head, rest)
