@@ -28,7 +28,7 @@ import sympy as sp
 
 from derive import quantities
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
-from derive.mechanics.angular_momentum import AboutAxle, about_axle
+from derive.mechanics.angular_momentum import AboutAxle, about_axle, about_each_axle
 from derive.core.tidying import tidy
 from derive.mechanics.derivation import KINETIC
 from derive.text.steps import Step
@@ -36,6 +36,7 @@ from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
 from derive.parts.contact import Contact
+from derive.parts.rims import Rims
 from derive.solution.state_events import in_place
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
@@ -74,7 +75,11 @@ def impact_route(solution) -> AboutAxle | None:
     start = solution.scene.states.get(state.start) if state.start else None
     if state.event is None or state.event.kind not in ("stick", "lock") or start is None or not start.rates:
         return None
-    scene = solution._scene_with(in_place(solution._struck_with(name), solution._chain.made[name]))
+    made = solution._chain.made[name]
+    scene = solution._scene_with(in_place(solution._struck_with(name), made))
+    if isinstance(made, Rims):  # two axles: the angular impulse about each
+        return about_each_axle(scene, solution.coordinates, solution.states[state.start].values,
+                               made, energy=any(a.quantity.kind == "kinetic_energy_change" for a in asks))
     try:
         return about_axle(scene, solution.coordinates, solution.states[state.start].values, solution.states[name].values,
                           solution._sample, energy=any(a.quantity.kind == "kinetic_energy_change" for a in asks))
@@ -118,7 +123,9 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     if isinstance(along, SmallSwing):
         return {"Small oscillations about the pivot": list(along.steps)}
     if isinstance(along, AboutAxle):
-        return {"The impact, by the angular momentum about the axle": list(along.steps)}
+        title = "by the angular impulse about each axle" if "each axle" in along.steps[0].text else \
+            "by the angular momentum about the axle"
+        return {f"The impact, {title}": list(along.steps)}
     title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"
     result = {title: list(along.steps)}
     for ask in solution.problem.asks.values():
