@@ -675,3 +675,32 @@ def test_a_puck_that_would_strike_beyond_the_rods_end_is_refused(tmp_path):
         "at: [-r, L/2]", "at: [-r, L/2 + r/2]")
     assert "beyond its end: a bounce off a rod's end or corner is not modelled" in refused(
         tmp_path, text, "scene.states.struck")
+
+
+RIMS = textbook("disks_pressed_at_rims").read_text()
+
+
+@pytest.mark.parametrize("change, field, words", [
+    # a clutch cannot join bodies on two separate fixed axles: the rims' lock is meant (it was answered
+    # as a clutch, both disks at one rate, exit 0)
+    ((", at: rims}", "}"), "scene.states.rolling.event", "lock with at: rims"),
+    (("at: rims", "at: edge"), "scene.states.rolling.event.at", "expected at: rims"),
+    (("event: {lock: large, to: small, at: rims}", "event: {stick: large, to: small, at: rims}"),
+     "scene.states.rolling.event.at", "of a lock"),
+    (("at: [R1 + R2, 0]", "at: [R1 + 2*R2, 0]"), "scene.states.rolling", "do not touch at their rims"),
+    (("radius: R1, at: [0, 0], joint: fixed_axle}", "radius: R1, at: [0, 0]}"), "scene.states.rolling.event",
+     "each on a fixed axle"),
+])
+def test_a_wrong_lock_at_the_rims_is_refused(tmp_path, change, field, words):
+    assert words in refused(tmp_path, RIMS.replace(*change), field)
+
+
+def test_the_rims_grip_agrees_with_each_axles_angular_impulse():
+    """Two disks pressed at their rims: each disk's angular impulse about its own axle is the rims'
+    friction impulse times its radius (the same impulse, opposite on each), and the rims move together."""
+    solution = Solution(problem.load(str(textbook("disks_pressed_at_rims"))))
+    s = {name: p.symbol for name, p in solution.problem.parameters.items()}
+    w1f, w2f = solution.signed("w1f"), solution.signed("w2f")
+    i1, i2 = s["M1"] * s["R1"] ** 2 / 2, s["M2"] * s["R2"] ** 2 / 2
+    assert sp.simplify(s["R1"] * w1f + s["R2"] * w2f) == 0
+    assert sp.simplify(i1 * (w1f - s["w1"]) / s["R1"] - i2 * (w2f - s["w2"]) / s["R2"]) == 0

@@ -4,6 +4,8 @@ student on a stool pulling in two weights); here a free body, each refusal, and 
 route shown to catch a wrong move; and turns (`event: {turn: BODY, relative_to: OTHER, angle:
 psi}`), with Elroy's beanie's closed forms in tests/test_events.py."""
 
+import dataclasses
+
 import pytest
 import sympy as sp
 
@@ -223,3 +225,49 @@ def test_no_state_follows_a_turn_that_leaves_the_bodies_loose(tmp_path):
         "    back: {from: turned, event: {turn: inner, relative_to: outer, angle: -pi}}\n").replace(
         "in: turned", "in: back")
     assert "no state may follow it" in refused(tmp_path, text, "scene.states.back")
+
+
+# Pulls (`event: {pull: CORD, length: r2}`): a cord from a ground point (a hole) to a point mass drawn slowly
+# to a new length; Serway & Jewett's puck through a hole is in the textbook suite.
+PUCK = textbook("puck_pulled_through_hole").read_text()
+
+
+@pytest.mark.parametrize("change, field, words", [
+    (("{pull: cord, length: r2}", "{pull: rope, length: r2}"), "scene.states.inner.event.pull", "no cord 'rope'"),
+    (("{pull: cord, length: r2}", "{pull: cord}"), "scene.states.inner.event.length", "missing"),
+    (("{pull: cord, length: r2}", "{pull: cord, length: r2, to: hole}"), "scene.states.inner.event.to",
+     "a pull gives the cord"),
+    (("{pull: cord, length: r2}", "{pull: cord, length: 2}"), "scene.states.inner.event.length", "dimension"),
+    (("{pull: cord, length: r2}", "{move: puck, to: [0, 0], length: r2}"), "scene.states.inner.event.length",
+     "a move has no length"),
+])
+def test_a_wrong_pull_is_refused_naming_its_field(tmp_path, change, field, words):
+    assert words in refused(tmp_path, PUCK.replace(*change), field)
+
+
+def test_a_pull_draws_a_straight_cord_from_a_ground_point_to_a_point_mass(tmp_path):
+    text = PUCK.replace("    cord: [hole, puck]", "    cord: [hole, peg, puck]").replace(
+        "    hole: [0, 0]", "    hole: [0, 0]\n    peg: [0, r1]")
+    assert "a straight cord tied to a ground point" in refused(tmp_path, text, "scene.states.inner.event.pull")
+
+
+def test_only_speeds_and_energies_are_asked_after_a_pull_and_only_a_pull_follows(tmp_path):
+    text = PUCK.replace("of: puck.speed, in: inner", "of: puck.velocity.y, in: inner")
+    assert "depends on how it is made" in refused(tmp_path, text, "ask.v")
+    text = PUCK.replace("    inner: {from: circling, event: {pull: cord, length: r2}}\n",
+                        "    inner: {from: circling, event: {pull: cord, length: r2}}\n"
+                        "    later: {from: inner, when: {puck.x: 0}}\n")
+    assert "only another pull may follow it" in refused(tmp_path, text, "scene.states.later.from")
+
+
+def test_the_second_route_catches_a_wrong_pull(tmp_path, monkeypatch):
+    """The angular momentum about the hole by moments against Lagrange's symmetry: a moment counted
+    about the wrong point is caught."""
+    original = moves.Symmetry.momentum
+
+    def about_the_wrong_point(self, coords):
+        return original(dataclasses.replace(self, about=(sp.Integer(1), sp.Integer(0))), coords)
+
+    monkeypatch.setattr(moves.Symmetry, "momentum", about_the_wrong_point)
+    with pytest.raises(CheckFailure, match="after the pull inner"):
+        report.solve(problem.load(write_problem(tmp_path, PUCK)), {}, 4)

@@ -37,6 +37,13 @@ EXPECTED = {
     # Serway & Jewett ch. 10: from rest under a constant torque, omega^2 = 2 (tau/I) phi, so the angle
     # that reaches w1 is I w1^2/(2 tau), with I = M R^2/2 for a disk.
     "flywheel_turns_to_speed": {"n": lambda s: s.M * s.R**2 * s.w1**2 / (4 * s.tau)},
+    # Serway & Jewett 9th ed., ch. 11: L = r x p of a particle in space, by components, and its size.
+    "particle_angular_momentum_3d": {
+        "Lx": lambda s: s.m * (s.y0 * s.vz - s.z0 * s.vy), "Ly": lambda s: s.m * (s.z0 * s.vx - s.x0 * s.vz),
+        "Lz": lambda s: s.m * (s.x0 * s.vy - s.y0 * s.vx),
+        "L": lambda s: s.m * sp.sqrt((s.y0 * s.vz - s.z0 * s.vy) ** 2 + (s.z0 * s.vx - s.x0 * s.vz) ** 2
+                                     + (s.x0 * s.vy - s.y0 * s.vx) ** 2),
+    },
     # Serway & Jewett ch. 9, example 9.11: the center of mass of three particles.
     "three_masses_center": {
         "x": lambda s: s.m2 * s.a / (s.m1 + s.m2 + s.m3), "y": lambda s: s.m3 * s.b / (s.m1 + s.m2 + s.m3),
@@ -349,3 +356,24 @@ def test_an_axis_is_a_direction_through_the_center_of_mass_or_is_refused(tmp_pat
         path.write_text(text.replace("[w, h, 0]", axis))
         result = run_derive("solve", str(path))
         assert result.returncode == 2 and "ask.I.axis" in result.stderr and message in result.stderr, result.stderr
+
+
+def test_a_path_in_space_answers_in_space_and_refuses_the_planes_quantities(tmp_path):
+    """A particle on a path with z: its speed counts z; its radial acceleration and areal velocity, notions of
+    the plane, are refused; z is a cartesian path's only, and the components are x, y, z and magnitude."""
+    text = (ASKS / "particle_angular_momentum_3d.yaml").read_text()
+    head = text.split("ask:")[0]
+    path = tmp_path / "p.yaml"
+    path.write_text(head + "ask:\n  v: {meaning: speed, of: particle.speed, unit: m/s}\nquestion: |\n  Find it.\n")
+    solution = Solution(load(str(path)))
+    s = {name: p.symbol for name, p in solution.problem.parameters.items()}
+    assert sp.simplify(solution.expression("v") - sp.sqrt(s["vx"] ** 2 + s["vy"] ** 2 + s["vz"] ** 2)) == 0
+    for ask, field, message in (("particle.areal_velocity", "ask.q.of", "of a path in the plane"),
+                                ("particle.angular_momentum.w", "ask.q.of", "angular_momentum.x|y|z|magnitude")):
+        path.write_text(head + f"ask:\n  q: {{meaning: a quantity, of: {ask}, unit: m^2/s}}\nquestion: |\n  Find it.\n")
+        result = run_derive("solve", str(path))
+        assert result.returncode == 2 and field in result.stderr and message in result.stderr, result.stderr
+    polar = text.replace("{cartesian: {x: x0 + vx*t, y: y0 + vy*t, z: z0 + vz*t}}", "{polar: {r: x0, theta: vx*t/x0, z: z0}}")
+    path.write_text(polar)
+    result = run_derive("solve", str(path))
+    assert result.returncode == 2 and "path.polar.z" in result.stderr and "unknown key" in result.stderr, result.stderr

@@ -902,3 +902,31 @@ def test_a_vanishing_push_is_stated_and_read_rightly(tmp_path, change, field, me
     path.write_text(text.replace(*change))
     result = run_derive("solve", str(path))
     assert result.returncode == 2 and field in result.stderr and message in result.stderr, result.stderr
+
+
+# A place relative to another body (`when: {BODY.x: value, relative_to: OTHER or OTHER.POINT}`): Serway &
+# Jewett's block pulled across a board is in the textbook suite.
+BOARD = textbook("block_slides_off_plank").read_text()
+ACROSS = "{when: {block.x: L/2, relative_to: board}}"
+
+
+@pytest.mark.parametrize("when, field, words", [
+    # the newcomer's first try: where the other body is, in the value
+    ("{when: {block.x: board.x + L/2}}", "scene.states.across.when.block.x", "not of where the board is"),
+    ("{when: {block.x: L/2, relative_to: plank}}", "scene.states.across.when.relative_to", "no body or point 'plank'"),
+    ("{when: {block.velocity.x: 1, relative_to: board}}", "scene.states.across.when.relative_to",
+     "of a position"),
+    ("{when: {block.x: L/2, relative_to: block}}", "scene.states.across.when.relative_to", "other than that one"),
+    ("{when: {slack: rope, relative_to: board}}", "scene.states.across.when.relative_to", "goes with one position"),
+])
+def test_a_wrong_place_relative_to_another_body_is_refused(tmp_path, when, field, words):
+    assert words in refused(tmp_path, BOARD.replace(ACROSS, when), field)
+
+
+def test_a_place_relative_to_a_point_of_the_other_body_is_measured_from_it(tmp_path):
+    """`relative_to: {board: [L/2, 0]}` (its far end) at 0 is the state `relative_to: board` at L/2."""
+    path = tmp_path / "problem.yaml"
+    path.write_text(BOARD.replace(ACROSS, "{when: {block.x: 0, relative_to: {board: [L/2, 0]}}}"))
+    moved = report.solve(problem.load(str(path)))["answers"]
+    same = report.solve(problem.load(str(textbook("block_slides_off_plank"))))["answers"]
+    assert {k: a["expr"] for k, a in moved.items()} == {k: a["expr"] for k, a in same.items()}

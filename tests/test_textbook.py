@@ -35,6 +35,12 @@ def _omega_squared(s, phi):
     return 12 * s.g * (_cos(s.theta0) - _cos(phi)) / (s.L * (1 + 3 * _sin(phi) ** 2))
 
 
+def _rims_rate(s):
+    """Two disks on fixed axles pressed at their rims (K&K ch. 7): the first one's final rate."""
+    i1, i2 = s.M1 * s.R1**2 / 2, s.M2 * s.R2**2 / 2
+    return (i1 * s.R2**2 * s.w1 - i2 * s.R1 * s.R2 * s.w2) / (i1 * s.R2**2 + i2 * s.R1**2)
+
+
 def _wedge_vy(s):
     """A ball dropped from h onto a smooth face at 45 degrees: its vertical velocity just after."""
     return -(1 - s.e) * sp.sqrt(2 * s.g * s.h) / 2
@@ -476,6 +482,32 @@ EXPECTED = {
         "a1": lambda s: -s.R1 * s.g * (s.m1 * s.R1 - s.m2 * s.R2) / (s.I + s.m1 * s.R1**2 + s.m2 * s.R2**2),
         "T1": lambda s: s.m1 * s.g * (1 - s.R1 * (s.m1 * s.R1 - s.m2 * s.R2)
                                       / (s.I + s.m1 * s.R1**2 + s.m2 * s.R2**2)),
+    },
+    # Kleppner & Kolenkow ch. 7 (angular impulse about a fixed axis): disks on fixed parallel axles
+    # pressed together at their rims. Friction F on the rims for dt: I1 (w1f - w1) = -R1 F dt,
+    # I2 (w2f - w2) = -R2 F dt, and once they roll, w1f R1 = -w2f R2 (they touch from outside):
+    # w1f = (I1 R2^2 w1 - I2 R1 R2 w2)/(I1 R2^2 + I2 R1^2), I = M R^2/2; the kinetic energy lost is
+    # the initial minus the final.
+    # Serway & Jewett ch. 11 (a puck on a frictionless table held by a cord through a hole, pulled slowly
+    # from below): the cord's force is central, so m v1 r1 = m v r; the pull's work is the change of kinetic
+    # energy, (m v1^2/2)((r1/r2)^2 - 1).
+    "puck_pulled_through_hole": {
+        "v": lambda s: s.v1 * s.r1 / s.r2,
+        "W": lambda s: s.m * s.v1**2 * ((s.r1 / s.r2) ** 2 - 1) / 2,
+        "T": lambda s: s.m * (s.v1 * s.r1 / s.r2) ** 2 / s.r2,  # the cord holds it on its circle: m v^2/r
+    },
+    # Serway & Jewett ch. 5 (a block pulled across a board on a frictionless floor): a1 = F/m - mu g,
+    # a2 = mu m g/M; the block gains L on the board after t = sqrt(2 L/(a1 - a2)), the board moving a2 t^2/2
+    # (a state relative to another body: `relative_to: board`).
+    "block_slides_off_plank": {
+        "t": lambda s: sp.sqrt(2 * s.L / (s.F / s.m - s.mu * s.g - s.mu * s.m * s.g / s.M)),
+        "d": lambda s: s.mu * s.m * s.g / s.M * s.L / (s.F / s.m - s.mu * s.g - s.mu * s.m * s.g / s.M),
+    },
+    "disks_pressed_at_rims": {
+        "w1f": lambda s: _rims_rate(s),
+        "w2f": lambda s: -s.R1 * _rims_rate(s) / s.R2,
+        "dK": lambda s: (s.M1 * s.R1**2 * _rims_rate(s)**2 + s.M2 * s.R1**2 * _rims_rate(s)**2
+                         - s.M1 * s.R1**2 * s.w1**2 - s.M2 * s.R2**2 * s.w2**2) / 4,
     },
 }
 # The same setup with a free length in the positions (how deep the blocks hang), which cancels

@@ -157,7 +157,7 @@ def _jump(solution, name: str, before: dict, values: dict, report: SimulationRep
     state, coords, chain = solution.scene.states[name], solution.coordinates, solution._chain
     closed = solution.states[state.start].values
     at = {**{c.q: closed[c.q] for c in coords.all}, **{c.u: sp.Rational(repr(float(before[c.u]))) for c in coords.all}}
-    if state.event.kind in ("move", "turn"):
+    if state.event.kind in ("move", "turn", "pull"):
         moved = solution._move(name, at, chain.joints[state.start], "lagrange")
         if moved.loose:
             report.unchecked.append((f"where the bodies are after the turn {name} ({', '.join(map(str, moved.loose))})",

@@ -32,7 +32,7 @@ def _of_kind(reader: Reader, raw, field: str, scene: Scene, kind, path: str) -> 
     if kind.state == "change" and state.start is None and state.rates:
         raise reader.fail(field, f"{path} is a change from one state to the next, and the state {raw} is the "
                                  "placement moving at its rates: ask it in a state the motion gets to")
-    if state.event and state.event.kind in ("move", "turn"):
+    if state.event and state.event.kind in ("move", "turn", "pull"):
         raise reader.fail(field, f"after a {state.event.kind}, where the bodies are depends on how it is made: ask "
                                  f"{path} in a state the motion gets to")
     return raw
@@ -67,11 +67,14 @@ def state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pat
         raise reader.fail(field, f"the state {raw} comes from no other state: ask the change of kinetic energy in a "
                                  "state with from:")
     event = scene.states[raw].event
-    if event and event.kind == "move" and quantity.kind not in ("angular_velocity", "kinetic_energy",
-                                                                "kinetic_energy_change", "speed"):
-        raise reader.fail(field, f"after a move, where the bodies are depends on how it is made (a turntable turns "
-                                 f"while a child walks on it), and so do the directions of their velocities and "
-                                 f"forces: in the state {raw} ask an angular velocity, a speed or the kinetic energy")
+    tension = event is not None and event.kind == "pull" and quantity.kind == "force" and \
+        quantity.target == event.joint and quantity.detail == "tension"  # along the cord, wherever the body is
+    if event and event.kind in ("move", "pull") and not tension and quantity.kind not in (
+            "angular_velocity", "kinetic_energy", "kinetic_energy_change", "speed"):
+        raise reader.fail(field, f"after a {event.kind}, where the bodies are depends on how it is made (a turntable "
+                                 f"turns while a child walks on it), and so do the directions of their velocities and "
+                                 f"forces: in the state {raw} ask an angular velocity, a speed or the kinetic energy"
+                                 + (f" (or the tension of the cord {event.joint})" if event.kind == "pull" else ""))
     if quantity.kind == "impulse" and not (event and event.kind in ("stick", "lock", "bounce")):
         raise reader.fail(field, f"an impulse is given in an impact: the state {raw} is not just after one (a state "
                                  "with event: {stick|lock|bounce: ...})")

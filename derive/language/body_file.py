@@ -47,7 +47,9 @@ PIVOT = Keys(distance=Key("expression", "how far the pin is from the center of m
                       choices=("above", "below")))
 #: `path: {polar: ...}` or `{cartesian: ...}`: a prescribed motion.
 PATH = Keys(**{kind: Key("mapping", f"the {kind} coordinates as functions of t (or any)",
-                         keys=Keys(**{c: Key("expression", f"{c}, in {unit}", required=True) for c, unit in names}))
+                         keys=Keys(**{c: Key("expression", f"{c}, in {unit}", required=True) for c, unit in names},
+                                   **({"z": Key("expression", "z, in m, off the plane (a path in space; default 0)")}
+                                      if kind == "cartesian" else {})))
                for kind, names in PATH_COORDINATES.items()})
 #: A body's entry under `scene.bodies`.
 BODY = Keys(shape=Key("name", "its shape: one of derive inertia's, composite or custom", required=True,
@@ -297,7 +299,8 @@ def _path(reader: Reader, raw, field: str, body: str) -> MotionPath:
             functions.append(function)
         else:
             functions.append(reader.dimensioned(spec[name], f"{field}.{kind}.{name}", unit, f"a path's {name}", allowed))
-    return MotionPath(kind, tuple(functions))
+    z = reader.dimensioned(spec["z"], f"{field}.{kind}.z", "m", "a path's z", allowed) if "z" in spec else sp.Integer(0)
+    return MotionPath(kind, tuple(functions), z)
 
 
 def _joint(reader: Reader, body: Body, spec, field: str) -> Pin | None:

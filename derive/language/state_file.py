@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import re
 
+import sympy as sp
+
 from derive.core.keys import Key, Keys
 from derive.parts import contact
 from derive.parts.contact import Contact
@@ -46,6 +48,10 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
             raise reader.fail(f"{field}.from", "the name of a state above this one")
         earlier = result.get(spec.get("from"))
         moves_on = isinstance(spec.get("event"), dict) and {"move", "turn"} & set(spec["event"])
+        pulls_on = isinstance(spec.get("event"), dict) and "pull" in spec["event"]
+        if earlier and earlier.event and earlier.event.kind == "pull" and not pulls_on:
+            raise reader.fail(f"{field}.from", f"where the bodies are after the pull {earlier.name} depends on how it "
+                                               "is made: only another pull may follow it")
         if earlier and earlier.event and earlier.event.kind == "move" and not moves_on:
             raise reader.fail(f"{field}.from", f"where the bodies are after the move {earlier.name} depends on how it "
                                                "is made (a turntable turns while a child walks on it): only another "
@@ -84,6 +90,7 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
                                                "{leaves: BODY}, "
                                                "{slack: CORD}, {slips: BODY} and {grips: CLUTCH or BODY}")
         when = reader.mapping(spec["when"], f"{field}.when", free=True)
+        relative = _relative(reader, when.pop("relative_to", None), f"{field}.when", places, when)
         if len(when) != 1:
             raise reader.fail(f"{field}.when", "give one position (rod.angle: -pi/2) or rate (ball.velocity.y: 0), or stops, "
                                                "{leaves: BODY}, "
@@ -94,10 +101,24 @@ def read(reader: Reader, raw, places, constraints: list) -> dict[str, State]:
                                                                                 constraints)), nudge=nudge)
             continue
         rate = str(key).partition(".")[2] in STATE_RATES
+        if relative and (rate or relative[0] == str(key).partition(".")[0]):
+            raise reader.fail(f"{field}.when.relative_to", "a place relative to another body is of a position "
+                                                           "(x, y or angle) of a body other than that one")
         result[name] = State(name, when=_state_entry(reader, key, value, f"{field}.when", bodies,
                                                      STATE_RATES if rate else {**STATE_POSITIONS, **STATE_RATES}),
-                             start=start, rate=rate, nudge=nudge)
+                             start=start, rate=rate, nudge=nudge, relative_to=relative)
     return result
+
+
+def _relative(reader: Reader, raw, field: str, places, when: dict) -> tuple | None:
+    """`relative_to: BODY` or a point of it (`plank.end`, `{rod: [x, y]}`): the state's position is
+    measured from that point in that body's frame (None where not given)."""
+    if raw is None:
+        return None
+    if len(when) != 1 or any(k in THRESHOLDS for k in when):
+        raise reader.fail(f"{field}.relative_to", "relative_to goes with one position: {BODY.x|y|angle: value, "
+                                                  "relative_to: OTHER or OTHER.POINT}")
+    return places.point(raw, f"{field}.relative_to", ground=False)
 
 
 def _nudge(reader: Reader, raw, field: str, bodies: dict[str, Body]) -> bool | tuple[str, str, int]:
@@ -118,7 +139,8 @@ def _nudge(reader: Reader, raw, field: str, bodies: dict[str, Body]) -> bool | t
 
 #: The events a state may follow: what each makes of the two bodies.
 EVENTS = {"stick": "the body sticks to the other where it touches it",
-          "lock": "the two turning bodies turn together from then on (a clutch)",
+          "lock": "the two turning bodies turn together from then on (a clutch); with at: rims, two round bodies on "
+                  "fixed axles touching at their rims roll on each other from then on",
           "bounce": "a point mass or a round body bounces off a rod or a round body, or off a fixed surface, with "
                     "restitution: e; smooth, or rough with friction: {static: mu} or grips: true",
           "move": "a point mass pinned to a body is carried to the point to: of that body by the scene's own forces "
@@ -126,7 +148,9 @@ EVENTS = {"stick": "the body sticks to the other where it touches it",
           "turn": "a turning body turns through angle: relative to the body relative_to: by a couple between them "
                   "(Elroy's beanie)",
           "transfer": "a body resting on a surface (or a contact joint) passes onto the surface to:, where it "
-                      "touches both and the two meet tangentially (a ball rolling down a ramp into a loop)"}
+                      "touches both and the two meet tangentially (a ball rolling down a ramp into a loop)",
+          "pull": "a cord tied to a ground point (a hole in a table) and to a point mass is drawn in, or let out, "
+                  "slowly through that point until its length is length: (a puck on a table pulled in by its cord)"}
 
 #: `event:` what happens in the state `from:` (exactly one of EVENTS, with what it takes).
 EVENT = Keys(**{kind: Key("name", f"the body (or contact) of the event: {meaning}") for kind, meaning in EVENTS.items()},
@@ -135,10 +159,14 @@ EVENT = Keys(**{kind: Key("name", f"the body (or contact) of the event: {meaning
              relative_to=Key("name", "a turn's other body"),
              angle=Key("quantity", "the angle a turn turns through"),
              friction=Key("mapping", "a rough bounce's coefficients", keys=contact.FRICTION),
-             grips=Key("boolean", "a rough bounce that grips (default false)"))
+             grips=Key("boolean", "a rough bounce that grips (default false)"),
+             length=Key("quantity", "the length a pull leaves the cord at"),
+             at=Key("name", "a lock of two round bodies on fixed axles at their rims: rims (they slip until their rims "
+                            "move together, then roll on each other)"))
 #: A state's entry under `scene.states`: exactly one of rates, when and event.
 STATE = Keys(rates=Key("mapping", "rates at the placement: {BODY.angular_velocity: w0, BODY.velocity.x: v0, ...}"),
-             when=Key("any", "where the motion from from: gets to: stops, {BODY.x|y|angle: value}, "
+             when=Key("any", "where the motion from from: gets to: stops, {BODY.x|y|angle: value} (measured from "
+                             "another body or its point with relative_to: OTHER), "
                              "{BODY.velocity.x|y: value}, {leaves: BODY}, {slack: CORD}, {slips: BODY}, {grips: NAME}"),
              event=Key("mapping", "an impact, a move, a turn or a transfer in the state from:", keys=EVENT),
              nudged=Key("any", "the motion from a balance it would never leave (a rod on its end, a ball on a dome's "
@@ -166,6 +194,10 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
         raise reader.fail(f"{field}.event", "give one of " + "; ".join(f"{k}: BODY ({m})" for k, m in EVENTS.items()))
     kind = kinds[0]
     body = raw[kind]
+    if kind == "pull":
+        return State(name, start=spec["from"], event=_pull(reader, body, raw, f"{field}.event", places, constraints))
+    if "length" in raw:
+        raise reader.fail(f"{field}.event.length", f"a {kind} has no length (a pull has)")
     # a transfer may name a contact joint (a ladder's foot): the point that passes onto the other surface
     touching = {c.name for c in constraints if isinstance(c, Contact) and c.point is not None} if kind == "transfer" \
         else set()
@@ -183,6 +215,9 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
     for key in ("restitution", "friction", "grips"):
         if key in raw and kind != "bounce":
             raise reader.fail(f"{field}.event.{key}", f"a {kind} has no {key} (a bounce has)")
+    if "at" in raw and (kind != "lock" or raw["at"] != "rims"):
+        raise reader.fail(f"{field}.event.at", "expected at: rims, of a lock (two round bodies on fixed axles that "
+                                               "roll on each other at their rims from then on)")
     if kind == "transfer":
         return State(name, start=spec["from"], event=_transfer(reader, body, to, f"{field}.event", places,
                                                                constraints, spec["from"], found))
@@ -200,7 +235,25 @@ def _event(reader: Reader, name: str, spec: dict, field: str, places, constraint
                                             "a point mass sticks (stick:)")
     if kind == "bounce":
         return State(name, start=spec["from"], event=_bounce(reader, body, to, raw, f"{field}.event"))
-    return State(name, start=spec["from"], event=Event(kind, body, to))
+    if kind == "lock":
+        _lock(reader, body, to, "at" in raw, f"{field}.event", places, constraints)
+    return State(name, start=spec["from"], event=Event(kind, body, to, rims="at" in raw))
+
+
+def _lock(reader: Reader, body: str, to: str, rims: bool, field: str, places, constraints: list) -> None:
+    """A lock's bodies: a clutch's turn about one axle (their centers held together, or apart only
+    where something else holds them: not two fixed axles); at the rims, two round bodies each on a
+    fixed axle at its center (`joint: fixed_axle`)."""
+    axles = {c.body for c in constraints if isinstance(c, Pin) and c.to is None and not any(c.offset)}
+    if rims:
+        for name in (body, to):
+            if name not in axles or "radius" not in places.bodies[name].sizes:
+                raise reader.fail(field, f"a lock at the rims joins two round bodies each on a fixed axle at its "
+                                         f"center (joint: fixed_axle): the {name} is not")
+    elif {body, to} <= axles and any(sp.simplify(a - b) != 0 for a, b in zip(places.bodies[body].at,
+                                                                               places.bodies[to].at)):
+        raise reader.fail(field, f"the {body} and the {to} turn on two fixed axles: a clutch cannot join them; two "
+                                 "round bodies pressed together at their rims lock with at: rims")
 
 
 def _bounce(reader: Reader, body: str, to: str, raw: dict, field: str) -> Event:
@@ -265,6 +318,27 @@ def _restitution(reader: Reader, raw, field: str):
     if e.is_negative or (not e.free_symbols and e > 1) or any(b[0] < 0 or b[1] > 1 for b in bounds):
         raise reader.fail(field, "a coefficient of restitution lies in [0, 1]")
     return e
+
+
+def _pull(reader: Reader, cord: str, raw: dict, field: str, places, constraints: list) -> Event:
+    """A pull of a straight cord from a ground point (a hole) to a point mass, to a new length: the
+    event's `body` is the point mass, its `joint` and `to` the cord."""
+    cords = {c.name: c for c in constraints if isinstance(c, Cord)}
+    if not isinstance(cord, str) or cord not in cords:
+        raise reader.fail(f"{field}.pull", no_such("cord", cord, cords, "cords"))
+    path = cords[cord].path
+    ends = sorted(path, key=lambda a: a.body is not None)
+    if len(path) != 2 or any(a.kind != "point" for a in path) or ends[0].body is not None or ends[1].body is None \
+            or places.bodies[ends[1].body].rotates:
+        raise reader.fail(f"{field}.pull", f"a pull draws in a straight cord tied to a ground point (the hole it runs "
+                                           f"through) and to a point mass: {cord}: [hole, puck]")
+    extra = sorted(set(raw) - {"pull", "length"})
+    if extra:
+        raise reader.fail(f"{field}.{extra[0]}", "a pull gives the cord (pull:) and its new length (length:) only")
+    if "length" not in raw:
+        raise reader.fail(f"{field}.length", "missing: a pull gives the cord's new length (length: r2)")
+    length = reader.positive(raw["length"], f"{field}.length", "m", "the cord's new length")
+    return Event("pull", ends[1].body, cord, joint=cord, length=length)
 
 
 def _move(reader: Reader, body: str, to, field: str, places, constraints: list, start: str,
@@ -336,6 +410,7 @@ def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body]
     named = re.search(r"\b(" + "|".join(map(re.escape, bodies)) + r")\.[A-Za-z_]", str(value)) if bodies else None
     if named:  # where another body is: a state of the scene, not a value the file gives
         raise reader.fail(f"{field}.{key}", f"a state's value is an expression of the parameters, not of where the "
-                                            f"{named[1]} is ({value}): give the {head}'s {rest} as a number of them "
-                                            "(where the other body is placed, or where it is in the state before)")
+                                            f"{named[1]} is ({value}): give the {head}'s {rest} as a number of them, "
+                                            f"or measured from the {named[1]} with relative_to: {named[1]} (or a point "
+                                            f"of it, {named[1]}.end)")
     return head, kind, reader.dimensioned(value, f"{field}.{key}", unit, "a position" if unit in ("m", "rad") else "a rate")

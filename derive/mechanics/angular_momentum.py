@@ -31,6 +31,7 @@ from derive.model.directions import TURNS
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene
 from derive.parts.pin import Pin
+from derive.parts.rims import Rims
 from derive.parts.weld import Weld
 
 
@@ -189,3 +190,42 @@ def _momentum(scene: Scene, coords: Coordinates, at: dict, axle: sp.Matrix, velo
         if body.rotates:
             total += body.inertia * velocities[coords.of(body.name, "theta").u]
     return total
+
+
+def about_each_axle(scene: Scene, coords: Coordinates, before: dict, grip: Rims, energy: bool = False) -> AboutAxle:
+    """The route for two round bodies on fixed axles pressed together at their rims (`grip`, the
+    joint the lock made) as a textbook solves it: the rims' friction F acts on each body at the
+    contact, the axles' forces through the axles, so over the slipping the angular impulse about each
+    axle is its body's change of angular momentum, I_A (w_A' - w_A) = s_A J and I_B (w_B' - w_B) =
+    -s_B J with J the friction's impulse on A along the tangent; at the end the rims move together,
+    s_A w_A' = s_B w_B'. `energy`: the kinetic energy before and after too."""
+    names = (grip.body, grip.to)
+    inertia = [scene.bodies[n].inertia for n in names]
+    arms = (grip.reach, -grip.to_reach)
+    rates = [coords.of(n, "theta").u for n in names]
+    after = [sp.Symbol(f"omega_{n}'") for n in names]
+    J = sp.Symbol("J")
+    impulses = [sp.Eq(i * (w1 - before[u]), arm * J) for i, w1, u, arm in zip(inertia, after, rates, arms)]
+    together = sp.Eq(grip.reach * after[0], grip.to_reach * after[1])
+    (solved,) = sp.linsolve([*impulses, together], [*after, J])
+    found = dict(zip([*after, J], (tidy(v) for v in solved)))
+    steps = [
+        Step(f"While the rims slip, friction acts on the {names[0]} and the {names[1]} at the contact, equal and "
+             "opposite, and each axle's force passes through its axle: about each axle only the friction has a "
+             f"moment. With J the friction's impulse on the {names[0]} along the tangent (counter-clockwise about its "
+             "axle), the angular impulse about each axle is that body's change of angular momentum", tuple(impulses)),
+        Step("At the end the rims move together at the contact: the disks roll on each other, turning opposite ways",
+             (together,)),
+        Step("Solving the three equations", tuple(sp.Eq(k, v) for k, v in found.items())),
+    ]
+    values = {c.u: sp.Integer(0) for c in coords.all}
+    values.update({u: found[w] for u, w in zip(rates, after)})
+    if energy:
+        kinetic, _ = energies(scene, coords)
+        at = {c.q: before[c.q] for c in coords.all}
+        k0, k1 = tidy(kinetic.xreplace(before)), tidy(kinetic.xreplace({**at, **values}))
+        steps.append(Step("The kinetic energy just before and once the rims move together; the friction takes the "
+                          "difference", (sp.Eq(sp.Symbol("K_0"), k0), sp.Eq(sp.Symbol("K_1"), k1),
+                                         sp.Eq(sp.Symbol("Delta_K"), tidy(k0 - k1)))))
+        return AboutAxle(tuple(steps), values, {"K0": k0, "K1": k1, "lost": tidy(k0 - k1)})
+    return AboutAxle(tuple(steps), values, {})

@@ -19,9 +19,9 @@ from derive.mechanics.state_errors import StateError, StateLimit
 def toward(positions: dict, condition: Gets, s: sp.Symbol, s0: sp.Expr, decide) -> int:
     """+1 or -1: the way s must go for the state's coordinate to get to its value (the nearest
     such point on the path), 0 where it never does."""
-    if condition.coordinate.q == s:
+    if condition.coordinate.q == s and condition.measured is None:
         return 1 if decide(condition.value - s0) > 0 else -1
-    found = [r for r in roots(positions[condition.coordinate.q] - condition.value, s) if real(r, decide)]
+    found = [r for r in roots(condition.at(positions) - condition.value, s) if real(r, decide)]
     ahead = [decide(r) - decide(s0) for r in found if abs(decide(r) - decide(s0)) > 1e-12]
     return 0 if not ahead else 1 if min(ahead, key=abs) > 0 else -1
 

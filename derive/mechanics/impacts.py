@@ -56,6 +56,7 @@ from derive.mechanics.lagrange import energies
 from derive.parts import AppliedForce, AppliedTorque, Part, Sign, titled
 from derive.parts.clutch import Clutch
 from derive.parts.pin import Pin
+from derive.parts.rims import Rims
 from derive.parts.weld import Weld
 from derive.text.prose import Sentence
 from derive.model.scene import Event, Scene
@@ -191,6 +192,8 @@ def joint(scene: Scene, coords: Coordinates, values: dict, event: Event, name: s
     def turn(a: str, b: str) -> sp.Expr:
         return tidy((coords.angle(a) - coords.angle(b)).xreplace(at))
 
+    if kind == "lock" and event.rims:
+        return _rims(scene, coords, at, name, body, to)
     if kind == "lock":
         return Clutch(name, body, to, turn(body, to))
     if kind == "bounce" and to not in scene.bodies:
@@ -235,6 +238,20 @@ def _on_surface(scene: Scene, coords: Coordinates, at: dict, name: str, body: st
     offset = _in_frame(-coords.orientation(body).xreplace(at), -radius * normal)
     return Touch(name, body, None, tuple(tidy(e) for e in center - radius * normal), tuple(normal), offset, rough,
                  surface)
+
+
+def _rims(scene: Scene, coords: Coordinates, at: dict, name: str, body: str, to: str) -> Rims:
+    """The grip of two round bodies on fixed axles at their rims, touching from outside: the contact
+    on the line of centers, the radius of each from its center."""
+    between = (coords.position(to) - coords.position(body)).xreplace(at)
+    first, second = (scene.bodies[n].sizes["radius"] for n in (body, to))
+    if tidy(between.dot(between) - (first + second) ** 2) != 0:
+        raise ValueError(f"the {body} and the {to} do not touch at their rims where they lock (their centers are "
+                         f"{sp.sstr(tidy(sp.sqrt(between.dot(between))))} apart, not {sp.sstr(first + second)}): "
+                         "place them touching, one outside the other")
+    normal = tuple(tidy(e) for e in between / (first + second))
+    grip = Rims(name, body, to, normal, first, -second)
+    return dataclasses.replace(grip, arc=tidy(grip.gaps(coords)[0].xreplace(at)))
 
 
 def _round(body) -> bool:
@@ -497,6 +514,11 @@ def said(event: Event, made: Part, scene: Scene, kept: bool) -> tuple[Sentence, 
     elif isinstance(made, Weld):
         result.append(Sentence((f"The {body} sticks to the {to}: from then on {made.title} holds them together, and "
                                 "they move as one body (a perfectly inelastic impact).",)))
+    elif isinstance(made, Rims):
+        result.append(Sentence((f"The {body} and the {to} are pressed together at their rims: friction acts between "
+                                "them until the rims move together, and from then on they roll on each other. Only "
+                                "the friction's impulse and the axles' act, so the final rates do not depend on how "
+                                "large the friction is or how long it acts.",)))
     elif isinstance(made, Clutch):
         result.append(Sentence((f"The {body} and the {to} lock together: from then on {made.title} holds their angles "
                                 "together, and they turn as one.",)))

@@ -168,6 +168,34 @@ def move(scene: Scene, coords: Coordinates, before: dict, event: Event, route: s
     return _after(scene, after, coords, before, kept, positions, route, sample, "move")
 
 
+def pull(scene: Scene, coords: Coordinates, before: dict, event: Event, route: str, sample) -> Moved:
+    """The state after the pull `event` (its cord, from a ground point to the point mass
+    `event.body`, drawn slowly to `event.length`: a puck on a table pulled in through a hole)
+    from the state `before` of `scene`, by `route`: the cord's force points at the ground point
+    whatever its size, so the momenta it keeps are found as for a move, the turn about that point
+    among them; the body ends on the line from the point through where it was (where about the
+    point depends on how the pull is made), moving across the cord (slowly: no speed along it).
+
+    Raises MoveLimit where the kept momenta and the cord do not fix the rates (a weight's pull)."""
+    cord = scene.constraint(event.joint)
+    hole = sp.Matrix(next(a.offset for a in cord.path if a.body is None))
+    at = {c.q: before[c.q] for c in coords.all}
+    reach = coords.position(event.body).xreplace(at) - hole
+    there = hole + event.length * reach / sp.sqrt(reach.dot(reach)) - sp.Matrix(scene.bodies[event.body].at)
+    positions = {**at, **{coords.of(event.body, k).q: tidy(v) for k, v in zip(("x", "y"), there)}}
+    kept = symmetries_kept(scene, coords, before, route, sample, (), (tuple(hole),))
+    return _after(scene, scene, coords, before, kept, positions, route, sample, "pull")
+
+
+def pulled_cord(scene: Scene, coords: Coordinates, before: dict, event: Event) -> Part:
+    """The cord of the pull `event` at its new length (the state `before` it gives its old one)."""
+    cord = scene.constraint(event.joint)
+    at = {c.q: before[c.q] for c in coords.all}
+    hole = sp.Matrix(next(a.offset for a in cord.path if a.body is None))
+    reach = coords.position(event.body).xreplace(at) - hole
+    return dataclasses.replace(cord, drawn=tidy(cord.drawn + sp.sqrt(reach.dot(reach)) - event.length))
+
+
 def turn(scene: Scene, coords: Coordinates, before: dict, event: Event, route: str, sample) -> Moved:
     """The state after the turn `event` (the body `event.body` turned through `event.angle`
     relative to `event.to` by a couple between them, and at rest relative to it again) from the
@@ -259,12 +287,13 @@ def _solved(equations: list[sp.Expr], unknowns: list[sp.Symbol]) -> dict:
     return {u: v for u, v in zip(unknowns, solution) if v != u}
 
 
-def symmetries_kept(scene: Scene, coords: Coordinates, before: dict, route: str, sample, free) -> list[Symmetry]:
+def symmetries_kept(scene: Scene, coords: Coordinates, before: dict, route: str, sample, free,
+                    points: tuple = ()) -> list[Symmetry]:
     """The rigid motions whose momenta the scene keeps by `route`, whatever the symbols `free`
-    (the mover's place, the couple of a turn)."""
+    (the mover's place, the couple of a turn); turns about `points` too (a pull's hole)."""
     zero = _zero_test(scene, coords, sample, free)
     test = _kept_by_lagrange if route == "lagrange" else _kept_by_newton_euler
-    return [s for s in _candidates(scene, coords, before) if test(scene, coords, s, zero)]
+    return [s for s in _candidates(scene, coords, before, points) if test(scene, coords, s, zero)]
 
 
 def momentum_of(scene: Scene, coords: Coordinates, symmetry: Symmetry, route: str) -> sp.Expr:
@@ -365,13 +394,13 @@ def _placed(scene: Scene, coords: Coordinates, before: dict, event: Event, kept:
     return positions
 
 
-def _candidates(scene: Scene, coords: Coordinates, before: dict) -> list[Symmetry]:
-    """Turns about each pin to the ground and the origin, and shifts, of every set of bodies,
-    the largest sets first (the whole scene's momentum reads best)."""
+def _candidates(scene: Scene, coords: Coordinates, before: dict, extra: tuple = ()) -> list[Symmetry]:
+    """Turns about each pin to the ground, the `extra` points and the origin, and shifts, of every
+    set of bodies, the largest sets first (the whole scene's momentum reads best)."""
     at = {c.q: before[c.q] for c in coords.all}
     points = [tuple(tidy(e) for e in coords.position(p.body, p.offset).xreplace(at))
               for p in scene.constraints if isinstance(p, Pin) and p.to is None]
-    points = list(dict.fromkeys(points + [(sp.Integer(0), sp.Integer(0))]))
+    points = list(dict.fromkeys(points + [tuple(tidy(e) for e in p) for p in extra] + [(sp.Integer(0), sp.Integer(0))]))
     names = list(scene.bodies)
     return [Symmetry(moved, about=point) if point else Symmetry(moved, along=axis)
             for size in range(len(names), 0, -1) for moved in combinations(names, size)

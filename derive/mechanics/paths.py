@@ -25,7 +25,8 @@ def _simplify(expr: sp.Expr) -> sp.Expr:
 
 
 def quantity(path: Path, mass: sp.Expr, name: str) -> sp.Expr:
-    """A kinematic quantity of a point mass on the path (z components for vectors)."""
+    """A kinematic quantity of a point mass on the path (z components for vectors; the speed in
+    space where the path leaves the plane)."""
     position = path.position
     velocity = position.diff(TIME)
     acceleration = velocity.diff(TIME)
@@ -36,7 +37,7 @@ def quantity(path: Path, mass: sp.Expr, name: str) -> sp.Expr:
     values = {
         "velocity.x": lambda: velocity[0],
         "velocity.y": lambda: velocity[1],
-        "speed": lambda: sp.sqrt(velocity.dot(velocity)),
+        "speed": lambda: sp.sqrt(path.position3.diff(TIME).dot(path.position3.diff(TIME))),  # off the plane too
         "acceleration.x": lambda: acceleration[0],
         "acceleration.y": lambda: acceleration[1],
         "acceleration.radial": lambda: acceleration.dot(r_hat),
@@ -57,7 +58,7 @@ def by_mechanics(path: Path, mass: sp.Expr, name: str) -> sp.Expr:
     turning = inertial.orientnew("A", "Axis", [theta, inertial.z])
     origin = Point("O")
     origin.set_vel(inertial, 0)
-    point = origin.locatenew("P", r * turning.x)
+    point = origin.locatenew("P", r * turning.x + path.z * inertial.z)
     velocity, acceleration = point.vel(inertial), point.acc(inertial)
     values = {
         "velocity.x": lambda: velocity.dot(inertial.x),

@@ -36,10 +36,38 @@ class Reached:
 
 @dataclass(frozen=True)
 class Gets:
-    """The state where a coordinate gets to a value (a displacement from the placement)."""
+    """The state where a coordinate gets to a value (a displacement from the placement); with
+    `measured`, where that expression of the coordinates gets to the value (a block's x measured
+    from a plank's end, in the plank's frame), `coordinate` the body's own, kept free first."""
 
     coordinate: Coordinate
     value: sp.Expr
+    measured: sp.Expr | None = None
+
+    def at(self, positions: dict) -> sp.Expr:
+        """What gets to the value, where the coordinates are `positions` (q -> expression)."""
+        if self.measured is None:
+            return positions[self.coordinate.q]
+        return self.measured.xreplace(positions)
+
+
+def measured_from(coords, body: str, kind: str, host: str, offset) -> sp.Expr:
+    """The `body`'s x, y (its center) or angle measured in the `host`'s frame from its point at
+    `offset` (its frame, from its center of mass): what a state `relative_to` it gets to.
+
+    >>> from derive.model.scene import Body, Scene
+    >>> from derive.model.kinematics import Coordinates
+    >>> L = sp.Symbol("L", positive=True)
+    >>> scene = Scene({"plank": Body("plank", "point", 1, {}), "block": Body("block", "point", 1, {})})
+    >>> measured_from(Coordinates(scene), "block", "x", "plank", (L / 2, 0))
+    -L/2 + x_block - x_plank
+    """
+    if kind == "theta":
+        return coords.orientation(body) - coords.orientation(host)
+    apart = coords.position(body) - coords.position(host, offset)
+    phi = coords.orientation(host)
+    return (sp.cos(phi) * apart[0] + sp.sin(phi) * apart[1] if kind == "x"
+            else -sp.sin(phi) * apart[0] + sp.cos(phi) * apart[1])
 
 
 @dataclass(frozen=True)

@@ -134,7 +134,7 @@ def reach(scene: Scene, coords: Coordinates, start: dict[sp.Symbol, sp.Expr],
         raise StateError("the constraints leave the scene no motion: it never gets to the state")
     heading = _heading(start, coords, derivation, decide)
     target = condition.coordinate if isinstance(condition, Gets) else None
-    if target is not None and not heading[target.q]:  # at rest and not pushed: the way to the state
+    if target is not None and not heading[target.q] and condition.measured is None:  # at rest and not pushed
         heading[target.q] = 1 if decide(condition.value - start[target.q]) > 0 else -1
     # The state's coordinate left free first; where it is extremal at the state (a disk's center
     # at its lowest, whose angle has no derivative in its height there), another, those that
@@ -330,13 +330,16 @@ def _arrive(path: Path, condition, derivation: Derivation, decide,
              Step("Work and energy from the start", (sp.Eq(symbol, path.kinetic),), sentences=path.work)]
     vanished = ()
     if isinstance(condition, Gets):
-        position = path.positions[condition.coordinate.q]
+        position = condition.at(path.positions) if condition.measured is None else tidy(condition.at(path.positions))
         function = position - condition.value
         s1 = first_root.first(sp.Eq(position, condition.value), function, path, decide,
                     "the motion from the start does not get there")
-        if condition.coordinate == path.coordinate:  # every variant's state lies ahead, as the middle's does
+        if condition.coordinate == path.coordinate and condition.measured is None:  # every variant's state lies ahead
             steps_ahead = [(path.direction * (condition.value - s0), f"the state lies behind the start in {s} (the "
                                                                      "motion moves away from it)")]
+        elif condition.measured is not None:  # a place relative to another body: its root ahead in every variant
+            steps_ahead = [(path.direction * (s1 - s0), f"the state lies behind the start in {s} (the motion moves "
+                                                        "away from it)")]
         else:
             steps_ahead = []
     elif isinstance(condition, GetsRate):

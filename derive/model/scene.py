@@ -35,16 +35,25 @@ SHAPE_SIZES: dict[str, tuple[str, ...]] = {
 
 
 #: What a point mass on a prescribed path can be asked.
+#: What a path in space (with z) has no meaning for: the plane's polar components and sweep.
+PLANAR_PATH_QUANTITIES = ("acceleration.radial", "acceleration.tangential", "areal_velocity")
 PATH_QUANTITIES = ("velocity.x", "velocity.y", "speed", "acceleration.x", "acceleration.y", "acceleration.radial",
                    "acceleration.tangential", "angular_momentum", "areal_velocity")
 
 
 @dataclass(frozen=True)
 class Path:
-    """A body's prescribed motion: ("polar", (r(t), theta(t))) or ("cartesian", (x(t), y(t)))."""
+    """A body's prescribed motion: ("polar", (r(t), theta(t))) or ("cartesian", (x(t), y(t))),
+    with `z` (t) off the plane for a cartesian path in space (0: in the plane)."""
 
     kind: str
     functions: tuple[sp.Expr, sp.Expr]
+    z: sp.Expr = sp.Integer(0)
+
+    @property
+    def position3(self) -> sp.Matrix:
+        """The position in space, (x, y, z)."""
+        return sp.Matrix([*self.position, self.z])
 
     @property
     def position(self) -> sp.Matrix:
@@ -176,13 +185,15 @@ def constraint_bodies(part: Part) -> tuple[str, ...]:
 @dataclass(frozen=True)
 class Event:
     """What happens to the scene in an instant, or by its own forces, between two states: an
-    impact (`kind` stick, lock or bounce of `body` on `to`, a bounce with its coefficient of
+    impact (`kind` stick, lock or bounce of `body` on `to`, a lock `rims` of two round bodies on
+    fixed axles that roll on each other from then on, a bounce with its coefficient of
     `restitution` and, rough, its `friction` (mu for the grip, mu for the slide) or `grips`
     always; a bounce's `to` may be a fixed surface), a move (`kind` move: the point mass `body` carried to `place` on the body
     `to`, in its frame, where the pin `joint` holds it), a turn (`kind` turn: the body `body`
     turned through `angle` relative to the body `to` by a couple between them, Elroy's beanie),
-    or a transfer (`kind` transfer: the contact `joint` of the body `body` passes onto the surface
-    `to`, a ball rolling from a ramp into a loop).
+    a transfer (`kind` transfer: the contact `joint` of the body `body` passes onto the surface
+    `to`, a ball rolling from a ramp into a loop), or a pull (`kind` pull: the cord `joint`, from a
+    ground point to the point mass `body`, drawn slowly to the `length`).
 
     >>> Event("stick", "bullet", "rod").restitution is None
     True
@@ -197,6 +208,8 @@ class Event:
     place: tuple[sp.Expr, sp.Expr] | None = None
     joint: str | None = None
     angle: sp.Expr | None = None
+    rims: bool = False
+    length: sp.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -228,6 +241,9 @@ class State:
     # push too small to count (`nudged:`): True, toward where the state is; or (body, kind, +1 or -1), the way
     # that coordinate first moves. The state's speeds and places are the limit of a vanishing push; its time is not.
     nudge: bool | tuple[str, str, int] = False
+    # `when`'s position measured in another body's frame from its point (body, offset in its frame): a block's
+    # x from a plank's end, a bead's along a turning rod from its end (`when: {..., relative_to: rod.end}`).
+    relative_to: tuple[str, tuple[sp.Expr, sp.Expr]] | None = None
 
 
 @dataclass(frozen=True)
@@ -469,6 +485,9 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     if head in scene.bodies:
         body = scene.bodies[head]
         if body.path is not None:
+            if body.path.z != 0 and rest in PLANAR_PATH_QUANTITIES:
+                raise ValueError(f"{rest} is of a path in the plane; the {head}'s leaves it (z): ask "
+                                 "velocity.x|y, speed, acceleration.x|y, angular_momentum.x|y|z|magnitude")
             if rest not in PATH_QUANTITIES:
                 raise ValueError(f"a body on a path has {', '.join(PATH_QUANTITIES)}; not {rest!r}")
             return Quantity("path", head, rest)

@@ -205,10 +205,12 @@ class Segment:
 
 @dataclass(frozen=True)
 class Cord(Part):
-    """A cord along `path` (Attachments, end to end)."""
+    """A cord along `path` (Attachments, end to end); `drawn`: how much shorter a pull has left it
+    than where the file places it (derive.mechanics.moves.pull)."""
 
     name: str
     path: tuple[Attachment, ...]
+    drawn: sp.Expr = sp.Integer(0)
 
     def bodies(self) -> tuple[str, ...]:
         return tuple(dict.fromkeys(a.body for a in self.path if a.body is not None))
@@ -234,7 +236,7 @@ class Cord(Part):
         for s in self.segments():
             if s.symbol is not None:
                 length = s.length(coords)
-                result.append(length.xreplace(rest) - length)
+                result.append(length.xreplace(rest) - self.drawn - length)
         return result
 
     def power(self, coords) -> sp.Expr:
@@ -330,13 +332,15 @@ class Cord(Part):
 
     def extents(self, coords) -> list[tuple[sp.Expr, str]]:
         """Each straight run measured along its direction in the reference configuration: its
-        length there, zero where its ends meet, negative where they have crossed."""
+        length there, zero where its ends meet, negative where they have crossed. A drawn cord's
+        run, its own length: after a pull the body may be anywhere about the point (the puck circles)."""
         rest = coords.at_rest_in_reference()
         result = []
         for s in self.segments():
             for r in s.runs(coords):
                 if r.length is not None:
-                    result.append((r.direction.xreplace(rest).dot(r.end_point - r.start_point),
+                    along = r.length if self.drawn != 0 else r.direction.xreplace(rest).dot(r.end_point - r.start_point)
+                    result.append((along,
                                    f"the cord {self.name}'s run from {describe(r.start)} to {describe(r.end)} would "
                                    "shrink to nothing (its ends would meet)"))
         return result

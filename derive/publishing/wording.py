@@ -47,7 +47,7 @@ PARTS = {"Cord": "cord", "Slider": "guide", "Weld": "weld", "Clutch": "clutch", 
          "TorsionalSpring": "torsion spring"}
 #: The kind words the engine puts before a part's or a state's key (Part.title: "the cord rope").
 KINDS = ("slipping clutch", "torsional spring", "cord", "pin", "slider", "weld", "clutch", "contact", "torque", "force",
-         "spring", "damper", "joint", "couple", "bounce", "impact", "move", "turn", "transfer", "state")
+         "spring", "damper", "joint", "couple", "bounce", "impact", "move", "turn", "transfer", "pull", "state")
 #: Words before "of KEY" in the engine's lists of forces ("reaction of hinge, tension of rope").
 OF = ("reaction", "tension", "force", "torque", "couple", "stretch", "length", "run", "multiplier", "multipliers", "plates")
 #: How a state's coordinate reads in words.
@@ -234,7 +234,7 @@ class Wording:
         if kind == "state" and key in self.states:
             phrase = f"state at the {self.states[key]}" if self.states[key] == "start" else \
                 f"state just after the {self.states[key]}" if self.state_kinds[key].event else "state reached"
-        elif kind in ("bounce", "impact", "move", "turn", "transfer") and key in self.states:
+        elif kind in ("bounce", "impact", "move", "turn", "transfer", "pull") and key in self.states:
             phrase = self.states[key]
         elif kind is not None and key in self.parts:
             phrase = self.parts[key]

@@ -26,7 +26,7 @@ from __future__ import annotations
 from derive.model import directions
 from derive.model.directions import Sense
 from derive.model.scene import Quantity
-from derive.quantities import center_of_mass, conical, distance, position_cm, torque, turns
+from derive.quantities import center_of_mass, conical, distance, particle_angular_momentum, position_cm, torque, turns
 from derive.quantities.base import QuantityKind, StateChange, describe_capitalized
 
 __all__ = ["KINDS", "QuantityKind", "StateChange", "describe_capitalized", "directional", "parse", "sense"]
@@ -35,7 +35,7 @@ __all__ = ["KINDS", "QuantityKind", "StateChange", "describe_capitalized", "dire
 #: Every quantity of this package, by kind.
 KINDS: dict[str, QuantityKind] = {k.kind: k for k in (torque.TORQUE, turns.TURNS, distance.DISTANCE,
                                                       center_of_mass.CENTER_OF_MASS, position_cm.POSITION_CM,
-                                                      conical.CONICAL)}
+                                                      conical.CONICAL, particle_angular_momentum.ANGULAR_MOMENTUM)}
 
 
 def sense(scene, quantity: Quantity, coords, sample) -> Sense | None:

@@ -271,7 +271,7 @@ class CrossChecks:
             if state.rates:
                 continue
             if state.event:
-                (self._move_check if state.event.kind in ("move", "turn") else self._impact_check)(name)
+                (self._move_check if state.event.kind in ("move", "turn", "pull") else self._impact_check)(name)
                 impacts += 1
                 continue
             newton_euler = self.derivations_to(name)["newton_euler"]  # to a grip: with the part slipping

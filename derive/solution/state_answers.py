@@ -125,6 +125,12 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                         joints[name] = in_place(joints[name], made[name])
                         solved[name] = self._move(name, result[state.start].values, joints[state.start], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name], made[name])
+                    elif state.event.kind == "pull":
+                        solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
+                        made[name] = moves.pulled_cord(self._scene_with(joints[name]), self.coordinates,
+                                                       result[state.start].values, state.event)
+                        joints[name] = in_place(joints[name], made[name])
+                        reached = self._after_move(name, result[state.start].values, solved[name])
                     elif state.event.kind == "turn":
                         solved[name] = self._move(name, result[state.start].values, joints[name], "lagrange")
                         reached = self._after_move(name, result[state.start].values, solved[name])
@@ -358,6 +364,9 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
             body, kind, value = state.when
             if state.rate:
                 return reaching.GetsRate(self.coordinates.of(body, kind), value)
+            if state.relative_to is not None:
+                return reaching.Gets(self.coordinates.of(body, kind), value, reaching.measured_from(
+                    self.coordinates, body, kind, *state.relative_to))
             return reaching.Gets(self.coordinates.of(body, kind), value - self.scene.bodies[body].placed(kind))
         kind, name = state.until
         if kind == "stops":
@@ -494,7 +503,8 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                     "bounce": f"the {event.body} bounces off the {event.to}",
                     "move": f"the {event.body} is carried to a new place on the {event.to}",
                     "turn": f"the {event.body} turns relative to the {event.to}",
-                    "transfer": f"the {event.body} passes onto the {event.to}"}[event.kind]
+                    "transfer": f"the {event.body} passes onto the {event.to}",
+                    "pull": f"the cord {event.joint} is drawn to a new length"}[event.kind]
             if event.kind == "transfer":
                 what = what.replace("passes", f"passes from the {self.scene_in(state.start).constraint(event.joint).surface}")
             kind = "impact" if event.kind in ("stick", "lock", "bounce") else event.kind

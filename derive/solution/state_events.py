@@ -147,17 +147,23 @@ class StateEvents:
         return reaching.Reached(dict(before), (), steps)
 
     def _move(self, name: str, before: dict, joints: tuple, route: str) -> moves.Moved:
-        """The move or turn of the state `name` by `route`, in the scene with the joints before it."""
+        """The move, turn or pull of the state `name` by `route`, in the scene with the joints before it."""
         event = self.scene.states[name].event
-        return (moves.turn if event.kind == "turn" else moves.move)(self._scene_with(joints), self.coordinates, before,
-                                                                   event, route, self._sample)
+        made = {"turn": moves.turn, "pull": moves.pull}.get(event.kind, moves.move)
+        return made(self._scene_with(joints), self.coordinates, before, event, route, self._sample)
 
     def _after_move(self, name: str, before: dict, moved: moves.Moved, pin: Pin | None = None) -> reaching.Reached:
-        """The state after a move or a turn, with the kinetic energy the forces that make it add; a
+        """The state after a move, a turn or a pull, with the kinetic energy the forces that make it add; a
         move's `pin` holds the mover at its new place."""
         event = self.scene.states[name].event
         added = tidy(-impacts.energy_lost(self.dynamics_scene, self.coordinates, before, moved.values))
-        if event.kind == "turn":
+        if event.kind == "pull":
+            what = f"The pull: the cord {event.joint} is drawn slowly to the length {sp.sstr(event.length)}"
+            said = Sentence((f"The cord {event.joint} is drawn through the point it is tied at until its length is ",
+                             event.length, f": its force on the {event.body} points at that point whatever its size, "
+                             "and the pull is slow, so at the end the cord is taut at its new length and the "
+                             f"{event.body} moves across it.",))
+        elif event.kind == "turn":
             what = f"The turn: the {event.body} turns relative to the {event.to}"
             said = Sentence((f"The {event.body} turns through ", event.angle, f" relative to the {event.to}, by a couple "
                              "between the two: equal and opposite, it pushes neither's center, and at the end the "
@@ -167,12 +173,15 @@ class StateEvents:
             said = Sentence((f"The {event.body} is carried to ", sp.Tuple(*event.place), f" on the {event.to}, in its "
                              f"frame, by forces inside the scene: {pin.title} holds it to the {event.to} wherever it is, "
                              f"and what carries it pushes back on the {event.to} as much.",))
-        steps = (Step(f"{what} by forces inside the scene (they come in equal and opposite pairs)", (), sentences=(said,)),
+        inside = event.kind != "pull"  # a pull's force comes from outside, through the point the cord is tied at
+        makers = "the forces inside the scene that make it do" if inside else "the pull on the cord does"
+        steps = (Step(f"{what} by forces inside the scene (they come in equal and opposite pairs)" if inside else what,
+                      (), sentences=(said,)),
                  *moved.steps,
                  Step(f"Kinetic energy the {event.kind} adds (the work of the forces that make it)",
                       (sp.Eq(sp.Symbol("Delta_K"), added),), sentences=(Sentence((
-                          f"Kinetic energy is not conserved in a {event.kind}: the forces inside the scene that make it "
-                          "do work, which is the change below." if added != 0 else
+                          f"Kinetic energy is not conserved in a {event.kind}: {makers} work, which is the change "
+                          "below." if added != 0 else
                           f"The forces inside the scene that make the {event.kind} do work on the way, but none in all: "
                           "the kinetic energy after it is the one before.",)),)))
         return reaching.Reached(moved.values, (), steps)

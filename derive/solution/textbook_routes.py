@@ -25,11 +25,12 @@ import sympy as sp
 
 from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
-from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, slowed_to_rest
+from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, about_each_axle, slowed_to_rest
 from derive.mechanics.skidding import skidding
 from derive.mechanics.steady_top import PRECESSIONS, as_a_textbook_writes, steady_precession
 from derive.model.directions import TURNS
 from derive.parts.contact import Contact
+from derive.parts.rims import Rims
 from derive.parts.surfaces import Plane
 from derive.parts.torque import Torque
 from derive.solution.state_events import in_place
@@ -152,9 +153,14 @@ def _impact_route(solution) -> TextbookRoute | None:
     scene = solution._scene_with(in_place(solution._struck_with(state.name), solution._chain.made[state.name]))
     energy = any(a.quantity.kind.startswith("kinetic_energy") for a in asks.values())
     before, after = solution.states[start.name].values, solution.states[state.name].values
+    made = solution._chain.made[state.name]
     try:
-        route = about_axle(scene, solution.coordinates, before, after, solution._sample, energy=energy)
-        title = "The impact, by the angular momentum about the axle"
+        if isinstance(made, Rims):  # two axles: the angular impulse about each
+            route = about_each_axle(scene, solution.coordinates, before, made, energy=energy)
+            title = "The impact, by the angular impulse about each axle"
+        else:
+            route = about_axle(scene, solution.coordinates, before, after, solution._sample, energy=energy)
+            title = "The impact, by the angular momentum about the axle"
     except NotAlongALine:
         try:
             route = about_center_of_mass(scene, solution.coordinates, before, after, solution._sample, energy=energy)
@@ -170,6 +176,10 @@ def _impact_route(solution) -> TextbookRoute | None:
     found = {**route.found}
     compared = [(str(u), value, (lambda u=u: solution.states[state.name].values[u])) for u, value in route.values.items()]
     for name, ask in asks.items():
+        if isinstance(made, Rims) and ask.quantity.kind == "angular_velocity":  # each disk's own rate
+            rate = route.values[solution.coordinates.of(ask.quantity.target, "theta").u]
+            compared.append((name, rate, (lambda name=name: solution.signed(name))))
+            continue
         key = "K0" if ask.state == start.name else "t" if ask.quantity.kind == "time" else "turn" \
             if ask.quantity.kind == "angle" else IMPACT[ask.quantity.kind, ask.quantity.detail]
         value = found[key] if key not in ("V_x", "V_y") else sp.Abs(found[key]) if found[key] != 0 else found[key]

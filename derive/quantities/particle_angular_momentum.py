@@ -1,0 +1,75 @@
+"""The angular momentum of a point mass on a path in space about the origin, as a vector:
+`BODY.angular_momentum.x|y|z|magnitude` for a body with `path: {cartesian: {x, y, z}}` (a particle
+at a given position and velocity: x0 + vx*t, ...), as a textbook asks it in components.
+
+    L = r x p = m r x v
+
+Route 0 (the key's): the cross product of the position and the momentum, by components. Route 1,
+its check: sympy.physics.mechanics, a Particle at a Point located from the origin in an inertial
+frame, its angular_momentum about the origin.
+
+>>> ANGULAR_MOMENTUM.kind, ANGULAR_MOMENTUM.unit
+('particle_angular_momentum', 'kg*m^2/s')
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.core.expr import TIME
+from derive.model.scene import Quantity
+from derive.quantities.base import QuantityKind
+
+COMPONENTS = ("x", "y", "z", "magnitude")
+
+
+class ParticleAngularMomentum(QuantityKind):
+    """A point mass's angular momentum about the origin, in space (see the module)."""
+
+    kind = "particle_angular_momentum"
+    symbol = "L"
+    unit = "kg*m^2/s"
+    routes = ("the cross product m r x v by components", "sympy.physics.mechanics' Particle.angular_momentum")
+
+    def claims(self, scene, head: str, rest: str) -> Quantity | None:
+        body = scene.bodies.get(head)
+        if body is None or body.path is None or body.path.kind != "cartesian" or not rest.startswith("angular_momentum."):
+            return None
+        detail = rest.partition(".")[2]
+        if detail not in COMPONENTS:
+            raise ValueError(f"a point mass's angular momentum in space has angular_momentum.{'|'.join(COMPONENTS)}")
+        return Quantity(self.kind, head, detail)
+
+    def value(self, solution, ask, route: int) -> sp.Expr:
+        body = solution.scene.bodies[ask.quantity.target]
+        vector = _by_components(body) if route == 0 else _by_mechanics(body)
+        if ask.quantity.detail == "magnitude":
+            return sp.simplify(sp.sqrt(vector.dot(vector)))
+        return sp.simplify(vector["xyz".index(ask.quantity.detail)])
+
+    def symbol_for(self, ask) -> str:
+        return "L" if ask.quantity.detail == "magnitude" else f"L_{ask.quantity.detail}"
+
+    def describe(self, ask) -> str:
+        part = "the size" if ask.quantity.detail == "magnitude" else f"the {ask.quantity.detail} component"
+        return f"{part} of the {ask.quantity.target}'s angular momentum about the origin"
+
+
+def _by_components(body) -> sp.Matrix:
+    position = body.path.position3
+    return body.mass * position.cross(position.diff(TIME))
+
+
+def _by_mechanics(body) -> sp.Matrix:
+    from sympy.physics.mechanics import Particle, Point, ReferenceFrame
+
+    frame = ReferenceFrame("N")
+    origin = Point("O")
+    origin.set_vel(frame, 0)
+    x, y, z = body.path.position3
+    point = origin.locatenew("P", x * frame.x + y * frame.y + z * frame.z)
+    point.set_vel(frame, point.pos_from(origin).dt(frame))
+    momentum = Particle("p", point, body.mass).angular_momentum(origin, frame)
+    return sp.Matrix([momentum.dot(frame.x), momentum.dot(frame.y), momentum.dot(frame.z)])
+
+
+ANGULAR_MOMENTUM = ParticleAngularMomentum()
