@@ -55,13 +55,14 @@ def test_the_parallel_axis_check_of_a_named_axis_is_the_bodys_own(tmp_path):
     """axis: end of the graded rod: I_cm (M L^2/18) + M (2L/3)^2 = M L^2/2; it had compared the uniform
     rod's M L^2/12 + M L^2/4 with the uniform rod's integral, which says nothing of this body."""
     from derive.language import problem
+    from derive.quantities.moment_of_inertia import parallel_axis_check, through_center_of_mass
     from derive.solution.answers import Solution
 
     text = GRADED.replace("end: start", "axis: end")
     solution = Solution(problem.load(str(write_problem(tmp_path, text))))
-    check = solution._parallel_axis_check(solution.problem.asks["I_A"])
+    check = parallel_axis_check(solution, solution.problem.asks["I_A"])
     assert check.passed and "center of mass" in check.detail
-    theorem = solution._through_center_of_mass(solution.scene.bodies["rod"], solution.problem.asks["I_A"])
+    theorem = through_center_of_mass(solution, solution.scene.bodies["rod"], solution.problem.asks["I_A"])
     assert close(mpmath.mpf(str(theorem.xreplace(solution.problem.values()).evalf(30))), M * L**2 / 2)
 
 

@@ -240,10 +240,14 @@ def test_a_textbook_ask_of_a_quantity_gives_the_books_closed_form(path):
         assert sp.simplify(solution.expression(name) - closed_form(symbols)) == 0, (name, solution.expression(name))
     result = report.solve(problem, solution=solution)
     assert result["checks"] and all(c["passed"] for c in result["checks"].values())
-    # every quantity of derive.quantities is checked by a second route: its own, or the motion simulated
+    # every quantity of derive.quantities is checked by a second route: its own, or the motion simulated,
+    # or the checks its module names (an inertia's against the tensor)
     for name, ask in problem.asks.items():
         kind = quantities.KINDS.get(ask.quantity.kind)
-        if kind is not None:
+        own = kind.checks(solution, [name]) if kind is not None else None
+        if own is not None:
+            assert all(c.name in result["checks"] for c in own), name  # a mass is given: none
+        elif kind is not None:
             assert kind.kind in result["checks"] or "states" in result["checks"], name
     for (stem, name), words in DIRECTIONS.items():
         if stem == path.stem:

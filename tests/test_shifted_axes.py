@@ -60,13 +60,14 @@ def test_the_parallel_axis_check_goes_through_the_center_of_mass(tmp_path):
     """I_cm about the parallel axis through the center of mass (2L/3 from A), plus M d^2: not the
     named axis's moment plus M h^2, which is M L^2/3 for end B, twice the right M L^2/6."""
     from derive.language import problem
+    from derive.quantities.moment_of_inertia import through_center_of_mass
     from derive.solution.answers import Solution
 
     solution = Solution(problem.load(str(write_problem(tmp_path, GRADED_ROD.replace("SHIFT_B", "[L/2, 0]")))))
     rod = solution.scene.bodies["rod"]
     values = solution.problem.values()
     for name in ("I_B", "I_A", "I_side"):
-        theorem = solution._through_center_of_mass(rod, solution.problem.asks[name])
+        theorem = through_center_of_mass(solution, rod, solution.problem.asks[name])
         assert float(theorem.xreplace(values)) == pytest.approx(float(solution.expressions[name].xreplace(values)), 1e-14)
     naive = M * L**2 / 12 + M * (L / 2) ** 2  # about the middle plus M h^2: the old check's
     assert not close(naive, float(solution.expressions["I_B"].xreplace(values)), 3)

@@ -14,7 +14,6 @@ import itertools
 
 import sympy as sp
 
-from derive.core.tidying import tidy
 
 
 def _positions(count: int) -> list[sp.Matrix]:
@@ -43,12 +42,3 @@ def internal_torque(count: int, route: str) -> sp.Expr:
             gap = x[j] - x[i]
             total += (x[i] - x[j]).cross(_strength(i, j, gap) * gap)
     return sp.simplify(total.norm())
-
-
-def reduced_mass(m1: sp.Expr, m2: sp.Expr) -> sp.Expr:
-    """mu with T = mu rho'^2 / 2 for the separation rho of two masses whose center of mass is at rest."""
-    r1, r2, rho = sp.symbols("r_1 r_2 rho")
-    positions = sp.solve([sp.Eq(m1 * r1 + m2 * r2, 0), sp.Eq(r2 - r1, rho)], [r1, r2])
-    rate = sp.Symbol("rhodot")
-    kinetic = sum(m * (sp.diff(positions[r], rho) * rate) ** 2 / 2 for m, r in ((m1, r1), (m2, r2)))
-    return tidy(2 * kinetic / rate**2)

@@ -22,7 +22,7 @@ from derive.parts import Part
 from derive.parts.contact import Contact
 from derive.parts.gravity import Gravity
 from derive.parts.surfaces import Circle, Plane, Surface
-from derive.model.solid_scene import (BEARING_QUANTITIES, FREE_ROTATION_QUANTITIES, IMPULSE_TURN_QUANTITIES, PIVOT_POINT_QUANTITIES, ROLLING_COIN_QUANTITIES, Bearings, FreeRotation, PivotPoint, RollsOnEdge)
+from derive.model.solid_scene import Bearings, FreeRotation, PivotPoint, RollsOnEdge
 from derive.core.spelling import did_you_mean
 
 #: Body shapes a scene may use, with the size names each needs (from the inertia module's shapes).
@@ -317,8 +317,6 @@ STATE_KINDS = {"acceleration", "angular_acceleration", "force", "contact", "velo
 #: What a state gives: read only with `in: STATE` (positions and times only in a state reached).
 RATE_KINDS = {"velocity", "angular_velocity", "speed", "position", "angle", "time", "kinetic_energy",
               "kinetic_energy_change", "center_of_mass_velocity", "impulse"}
-#: Answered by a small system of derive.mechanics, with a second route of its own.
-SECOND_ROUTE_KINDS = ("standing_wave", "internal_forces", "rolling")
 #: Quantities of the bodies and their arrangement, with no motion.
 STATIC_KINDS = {"inertia", "mass", "position_cm", "system"}
 
@@ -375,74 +373,6 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
     Quantity(kind='acceleration', target='ball', detail='y')
     """
     head, _, rest = path.partition(".")
-    if head in SYSTEMS:
-        attribute, allowed = SYSTEMS[head]
-        if getattr(scene, attribute) is None or rest not in allowed:
-            raise ValueError(f"a scene's {head} has {', '.join(allowed)}")
-        return Quantity(head, None, rest)
-    if head in scene.bearings and rest not in ("mass", "inertia"):
-        if rest not in BEARING_QUANTITIES:
-            raise ValueError(f"a body in bearings has {', '.join(BEARING_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, BEARING_QUANTITIES))
-        held = scene.bearings[head]
-        if rest.startswith(("bearings.force", "bearings.A.", "bearings.B.")) and held.apart is None:
-            raise ValueError(f"{head}.{rest} needs the distance between the bearings: bearings: {{apart: d}}")
-        if rest == "bearings.force" and (scene.gravity is not None or any(c != 0 for c in held.through)):
-            raise ValueError(f"{head}.bearings.force is each bearing's force of a couple: where the weight or an "
-                             "offset shaft puts a net force on them, ask bearings.A.force and bearings.B.force")
-        if rest.startswith("bearings.") and (scene.constraints or scene.loads):
-            raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body under its weight alone: a "
-                             "scene with other loads or joints is not modelled")
-        return Quantity("bearings", head, rest)
-    if head in scene.pivot_points and scene.pivot_points[head].centered and rest not in ("mass", "inertia"):
-        if rest not in IMPULSE_TURN_QUANTITIES:
-            raise ValueError(f"a body on a fixed point at its center of mass (no weight's torque about it) has "
-                             f"{', '.join(IMPULSE_TURN_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, IMPULSE_TURN_QUANTITIES))
-        return Quantity("angular_impulse", head, rest)
-    if head in scene.pivot_points and rest not in ("mass", "inertia"):
-        if rest not in PIVOT_POINT_QUANTITIES:
-            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, conical.rate, mass "
-                             "and inertia" + did_you_mean(rest, (*PIVOT_POINT_QUANTITIES, "conical.rate")))
-        if scene.pivot_points[head].hangs:
-            raise ValueError(f"the {head} hangs below its point: its precessions and nutations are derived for a top "
-                             f"standing on it; ask {head}.conical.rate, its steady turn in a cone")
-        return Quantity("pivot_point", head, rest)
-    if head in scene.rolls_on_edge and rest not in ("mass", "inertia"):
-        if rest not in ROLLING_COIN_QUANTITIES:
-            raise ValueError(f"a body rolling on its edge has {', '.join(ROLLING_COIN_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, ROLLING_COIN_QUANTITIES))
-        rolling = scene.rolls_on_edge[head]
-        if rest.startswith("steady.") and (rolling.tilt is None or rolling.circle is None):
-            raise ValueError(f"{head}.{rest} is read in the steady motion on a circle: give its lean and the contact "
-                             "point's circle, rolls_on_edge: {tilt: theta, circle: R}")
-        return Quantity("rolls_on_edge", head, rest)
-    if head in scene.free_rotations and rest not in ("mass", "inertia"):
-        stable = {"intermediate": "unstable (the tennis-racket theorem): ask rotation.intermediate.growth_rate",
-                  "least": "stable: ask rotation.least.wobble", "greatest": "stable: ask rotation.greatest.wobble"}
-        rank = rest.split(".")[1] if rest.count(".") == 2 and rest.startswith("rotation.") else None
-        if rest not in FREE_ROTATION_QUANTITIES and rank in stable and rest.endswith((".wobble", ".growth_rate")):
-            raise ValueError(f"a steady rotation about the axis of {rank} moment is {stable[rank]}")
-        if rest not in FREE_ROTATION_QUANTITIES:
-            raise ValueError(f"a body in free rotation has {', '.join(FREE_ROTATION_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, FREE_ROTATION_QUANTITIES))
-        return Quantity("free_rotation", head, rest)
-    if head == "system":
-        if rest not in ("inertia", "reduced_mass"):
-            raise ValueError("the system has inertia (about its center of mass) and reduced_mass")
-        if rest == "reduced_mass" and len(scene.bodies) != 2:
-            raise ValueError("a reduced mass is for a system of two bodies")
-        return Quantity("system", None, rest)
-    if head in scene.bodies and rest == "mass":
-        return Quantity("mass", head, None)
-    if head == "orbit":
-        if scene.orbit is None:
-            raise ValueError("the scene has no orbit")
-        if rest not in ORBIT_QUANTITIES:
-            raise ValueError(f"an orbit has {', '.join(ORBIT_QUANTITIES)}; not {rest!r}")
-        if getattr(scene.orbit, ORBIT_QUANTITIES[rest]) is None:
-            raise ValueError(f"orbit.{rest} needs the orbit's {ORBIT_QUANTITIES[rest].replace('_', ' ')}")
-        return Quantity("orbit", None, rest)
     if head == "time":
         if rest or not scene.states:
             raise ValueError("time is asked as of: time, in: STATE (the time the motion takes from the state's "
@@ -484,13 +414,6 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         return Quantity("small_oscillation", None, rest)
     if head in scene.bodies:
         body = scene.bodies[head]
-        if body.path is not None:
-            if body.path.z != 0 and rest in PLANAR_PATH_QUANTITIES:
-                raise ValueError(f"{rest} is of a path in the plane; the {head}'s leaves it (z): ask "
-                                 "velocity.x|y, speed, acceleration.x|y, angular_momentum.x|y|z|magnitude")
-            if rest not in PATH_QUANTITIES:
-                raise ValueError(f"a body on a path has {', '.join(PATH_QUANTITIES)}; not {rest!r}")
-            return Quantity("path", head, rest)
         if rest == "inertia":
             shape = inertia.SHAPES.get(body.shape)
             axes = tuple(shape.axes) if shape else ()
@@ -519,13 +442,6 @@ def parse_quantity(scene: Scene, path: str, axis: str | None = None) -> Quantity
         if rest == "angular_acceleration" and body.rotates:
             return Quantity("angular_acceleration", head, None)
         contact = scene.contact_of(head)
-        if rest.startswith("rolling."):
-            if rest[len("rolling."):] not in ROLLING_QUANTITIES:
-                raise ValueError(f"a rolling body has {', '.join('rolling.' + q for q in ROLLING_QUANTITIES)}")
-            if contact is None or not contact.rolling or head not in scene.motions or "radius" not in body.sizes:
-                raise ValueError(f"{head}.rolling needs a round body rolling on a surface (on:, contact: rolling) "
-                                 "with a velocity")
-            return Quantity("rolling", head, rest[len("rolling."):])
         if contact and rest in CONTACT_QUANTITIES:
             if rest in ("friction", "min_friction_coefficient") and not contact.rolling and not contact.has_friction:
                 raise ValueError(f"{head} slides without friction: it has no {rest}")

@@ -26,16 +26,24 @@ from __future__ import annotations
 from derive.model import directions
 from derive.model.directions import Sense
 from derive.model.scene import Quantity
-from derive.quantities import center_of_mass, conical, distance, particle_angular_momentum, position_cm, torque, turns
+from derive.quantities import (angular_impulse, bearings, center_of_mass, conical, distance, free_rotation, internal_forces,
+                               mass, moment_of_inertia, orbit, particle_angular_momentum, path, pivot_point, position_cm,
+                               rolling, rolls_on_edge, standing_wave, system, torque, turns)
 from derive.quantities.base import QuantityKind, StateChange, describe_capitalized
 
 __all__ = ["KINDS", "QuantityKind", "StateChange", "describe_capitalized", "directional", "parse", "sense"]
 
 
-#: Every quantity of this package, by kind.
+#: Every quantity of this package, by kind, in the order they claim an ask's path (`parse`).
 KINDS: dict[str, QuantityKind] = {k.kind: k for k in (torque.TORQUE, turns.TURNS, distance.DISTANCE,
                                                       center_of_mass.CENTER_OF_MASS, position_cm.POSITION_CM,
-                                                      conical.CONICAL, particle_angular_momentum.ANGULAR_MOMENTUM)}
+                                                      conical.CONICAL, particle_angular_momentum.ANGULAR_MOMENTUM,
+                                                      standing_wave.STANDING_WAVE, internal_forces.INTERNAL_FORCES,
+                                                      bearings.BEARINGS, angular_impulse.ANGULAR_IMPULSE,
+                                                      pivot_point.PIVOT_POINT, rolls_on_edge.ROLLS_ON_EDGE,
+                                                      free_rotation.FREE_ROTATION,
+                                                      system.SYSTEM, mass.MASS, orbit.ORBIT, path.PATH,
+                                                      moment_of_inertia.MOMENT_OF_INERTIA, rolling.ROLLING)}
 
 
 def sense(scene, quantity: Quantity, coords, sample) -> Sense | None:
@@ -43,13 +51,14 @@ def sense(scene, quantity: Quantity, coords, sample) -> Sense | None:
     kind = KINDS.get(quantity.kind)
     if kind is None:
         return directions.sense(scene, quantity, coords, sample)
-    return Sense(*kind.sense) if kind.sense else None
+    words = kind.sense_of(quantity)
+    return Sense(*words) if words else None
 
 
 def directional(quantity: Quantity) -> bool:
     """Whether the quantity points one way or the other, whatever the scene (derive.model.directions)."""
     kind = KINDS.get(quantity.kind)
-    return directions.directional(quantity) if kind is None else kind.sense is not None
+    return directions.directional(quantity) if kind is None else kind.sense_of(quantity) is not None
 
 
 def parse(scene, path: str) -> Quantity | None:

@@ -7,13 +7,31 @@ quantities read between two states (`StateChange`).
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from dataclasses import dataclass
 from typing import ClassVar
 
 import sympy as sp
 
 from derive.core import units
 from derive.model.scene import Quantity
+from derive.numbers.agreement import agree
 from derive.text.steps import Step
+
+
+class CheckFailure(RuntimeError):
+    """Two routes of derivation disagree: a bug in the engine, never bad input."""
+
+
+@dataclass(frozen=True)
+class Check:
+    """One independent check: its `name` and `method`, the `detail` `derive check` and the JSON
+    give, and its `reading`, one sentence a student can read in a worked solution."""
+
+    name: str
+    passed: bool
+    method: str
+    detail: str
+    reading: str
 
 
 class QuantityKind(ABC):
@@ -24,17 +42,21 @@ class QuantityKind(ABC):
     placement at rest, or in a state) or "never"; sense: the words for a positive and a negative value (None: it points no way);
     routes: the two routes' names, in words, the key's first; options: the ask keys it needs
     (`about:`), each required; exact_unit: asked in `unit` itself (turns in rev, where rad and
-    deg would be the same dimension).
+    deg would be the same dimension); own_section: whether the worked solution gives it a section of
+    its own (`steps`) that the student's route (derive.solution.textbook) may carry, or its steps are
+    those of the derivation it is read from (a moment of inertia's integral, an orbit by Binet's
+    equation: derive.solution.answer_steps).
     """
 
     kind: ClassVar[str]
     symbol: ClassVar[str]  # its letter in the steps where the ask's name is a parameter's (tau, N, d)
-    unit: ClassVar[str]
+    unit: ClassVar[str | None]  # None: by what is asked of it (an orbit's period or energy), the ask's unit checked
     state: ClassVar[str] = "never"
     sense: ClassVar[tuple[str, str] | None] = None
     routes: ClassVar[tuple[str, str]]
     options: ClassVar[tuple[str, ...]] = ()
     exact_unit: ClassVar[bool] = False  # asked in `unit` itself (turns in rev), not any unit of its dimension
+    own_section: ClassVar[bool] = True
 
     @abstractmethod
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
@@ -54,6 +76,17 @@ class QuantityKind(ABC):
         """The worked solution's steps for the quantity: by default its value stated, in its ask's unit
         (`shown`) and under its name (`named`)."""
         return [Step("", (sp.Eq(named(self, ask), shown(self, solution, ask)),))]
+
+    def sense_of(self, quantity: Quantity) -> tuple[str, str] | None:
+        """The words for its two signs where what is asked of it points one way or the other: `sense`,
+        whatever is asked, by default."""
+        return self.sense
+
+    def checks(self, solution, names: list[str]) -> list[Check] | None:
+        """Its checks of the problem's asks `names`, every one of
+        this kind, once per problem; None (the default): route 1 against route 0 at points of the ranges,
+        by derive.solution.crosschecks."""
+        return None
 
     def symbol_for(self, ask) -> str:
         """Its letter in the steps where the ask's name is a parameter's (`named`)."""
@@ -88,6 +121,25 @@ def shown(kind: QuantityKind, solution, ask) -> sp.Expr:
     else:
         value, unit = solution.expression(ask.name), ask.unit
     return units.declared_symbols(units.in_unit(value, unit), solution.problem.symbol_units)
+
+
+def second_route(kind: QuantityKind, solution, names: list[str], check: str) -> list[Check]:
+    """The check `check` of a kind a small system of derive.mechanics answers by two routes of its
+    own: route 1 equals route 0 for every ask `names`, symbolically (`QuantityKind.checks`)."""
+    for name in names:
+        first, second = (kind.value(solution, solution.problem.asks[name], r) for r in (0, 1))
+        if agree(first, second) is None:
+            raise CheckFailure(f"{solution.problem.id}: {name} is {first} one way, {second} the other")
+    return [Check(check, True, "symbolic", f"{', '.join(names)} agree",
+                  f"A second, independent derivation gives the same {', '.join(names)}.")]
+
+
+def first_asked(solution, ask, qualifies) -> bool:
+    """Whether `ask` is the problem's first ask of its kind, of its target, for which `qualifies(ask)`:
+    a condition of the body (a top's spin), said once however many of its asks need it."""
+    same = (a for a in solution.problem.asks.values()
+            if a.quantity.kind == ask.quantity.kind and a.quantity.target == ask.quantity.target and qualifies(a))
+    return next(same, None) is ask
 
 
 def describe_capitalized(text: str) -> str:

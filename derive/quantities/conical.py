@@ -23,7 +23,7 @@ import sympy as sp
 
 from derive.core.tidying import tidy
 from derive.model.scene import Quantity
-from derive.quantities.base import QuantityKind
+from derive.quantities.base import Check, QuantityKind
 
 ROUTES = ("lagrange", "newton_euler")
 
@@ -49,6 +49,11 @@ class Conical(QuantityKind):
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         return tidy(sp.sqrt(solution.conical_squared(ask.quantity.target, ROUTES[route])))
+
+    def checks(self, solution, names: list[str]) -> list[Check]:
+        """The body's equations of motion by Lagrange, Euler about the point and Kane, term by term, and
+        the rate by the first two (the fixed point's check, derive.solution.solid_checks)."""
+        return [solution.pivot_point_check(names)]
 
     def conditions(self, solution, ask) -> list[tuple[sp.Expr, bool, str]]:
         body = ask.quantity.target

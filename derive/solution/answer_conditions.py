@@ -49,7 +49,6 @@ class AnswerConditions:
         if orbit is not None and orbit.eccentricity is not None:
             result.append((1 - orbit.eccentricity, True, "e >= 1 is not an ellipse but a parabola or a hyperbola"))
             result.append((orbit.eccentricity, False, "an eccentricity cannot be negative"))
-        result += self._solid_conditions()
         result += [(placed, True, f"the bodies are not placed as at the middle of the ranges, where "
                                   f"{sp.sstr(placed)} > 0 (a cord's run would turn over): the derivation is for that "
                                   "placement") for placed in self.scene.placed]

@@ -139,7 +139,7 @@ class AnswerSteps:
         result = {}
         for ask in self.problem.asks.values():
             kind = quantities.KINDS.get(ask.quantity.kind)
-            if kind is None:
+            if kind is None or not kind.own_section:
                 continue
             title = quantities.describe_capitalized(kind.describe(ask))
             steps = kind.steps(self, ask)

@@ -19,7 +19,6 @@ from flint import ctx
 
 from derive.core.memo import kept
 from derive.numbers import balls
-from derive.model import composite, inertia
 from derive.model.directions import Sense
 from derive.core import limits
 from derive.core.errors import EngineLimit
@@ -34,7 +33,7 @@ from derive.mechanics.normal_modes import NormalModes, normal_modes
 from derive.mechanics.oscillation import (NotAPendulum, Oscillation, OscillationError, OscillationLimit,
                                          exact_period, free_directions, small_oscillation)
 from derive import quantities
-from derive.solution import answer_signs, inverse, system, textbook
+from derive.solution import answer_signs, inverse, textbook
 from derive.solution.answer_conditions import AnswerConditions
 from derive.solution.answer_steps import AnswerSteps
 from derive.solution.crosschecks import CrossChecks, sample_points
@@ -43,7 +42,7 @@ from derive.solution.solid_checks import SolidChecks
 from derive.solution.state_answers import StateAnswers
 from derive.language.problem import Ask, Problem
 from derive.core.expr import TIME
-from derive.model.scene import RATE_KINDS, SECOND_ROUTE_KINDS, Quantity
+from derive.model.scene import RATE_KINDS
 
 class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAnswers, SolidChecks):
     """Everything derived for one problem, computed on first use."""
@@ -363,51 +362,19 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
                     raise self.problem.error(f"ask.{ask.name}", str(error)) from None
         return result
 
-    def _orbit(self, detail: str, route: str) -> sp.Expr:
+    def _orbit(self, detail: str) -> sp.Expr:
+        """An orbit's quantity (derive.quantities.orbit), by Binet's equation and Kepler's laws."""
         orbit = self.scene.orbit
         if detail in ("circular_radius", "effective_potential_minimum"):
             radius, minimum = orbits.circular_orbit(orbit.GM, orbit.angular_momentum)
             return radius if detail == "circular_radius" else minimum
         return orbits.kepler(orbit.GM, orbit.semi_major_axis, orbit.eccentricity)[detail]
 
-    def _path(self, ask: Ask) -> sp.Expr:
+    def _path(self, ask: Ask, route: int = 0) -> sp.Expr:
+        """A path's quantity (derive.quantities.path) by projection (route 0) or by
+        sympy.physics.mechanics' rotating frames (route 1)."""
         body = self.scene.bodies[ask.quantity.target]
-        return paths.quantity(body.path, body.mass, ask.quantity.detail)
-
-    def _inertia(self, ask: Ask, route: str = "integral") -> sp.Expr:
-        body = self.scene.bodies[ask.quantity.target]
-        if ask.quantity.detail is None and route == "integral":
-            return self._within_ranges(body.inertia)
-        if ask.quantity.detail is None:
-            if body.composite is not None:  # the parts' tensors composed, against the scalar parallel-axis sum
-                return composite.moment_by_sum(body.composite)
-            if body.shape not in inertia.SHAPES:
-                return None  # a custom body's inertia is given, not derived
-            ask = Ask(ask.name, ask.meaning, ask.path, Quantity("inertia", body.name, inertia.PLANAR_AXIS[body.shape]),
-                      ask.unit, ask.sig_figs, shift=None if body.density is None else  # through its center of mass
-                      inertia.body_center(body.shape, body.sizes, body.density))
-        return self._inertia_about(body, ask.quantity.detail, route, self.shift_vector(ask))
-
-    def _inertia_about(self, body, axis, route: str = "integral", offset=None) -> sp.Expr:
-        along = None if isinstance(axis, str) else axis  # a direction through the center of mass
-        moment = inertia.body_moment(body.shape, None if along else axis, body.mass, body.sizes, body.density, route,
-                                     offset, along)[1]
-        return self._within_ranges(moment)
-
-    def shift_vector(self, ask: Ask) -> tuple[sp.Expr, sp.Expr, sp.Expr] | None:
-        """How far an ask's axis is moved, as a vector in the body's frame: as the file gives it, or a
-        distance along `inertia.across` the axis, which is allowed only where the named axis passes
-        through the center of mass (else the direction decides the moment: a rod denser at one end
-        has I = ML^2/3 a half-length across its middle axis, ML^2/6 along it to its heavy end)."""
-        if ask.shift is None or isinstance(ask.shift, tuple):
-            return ask.shift
-        body = self.scene.bodies[ask.quantity.target]
-        if inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density) != 0:
-            raise self.problem.error(
-                f"ask.{ask.name}.shift", f"the {body.name}'s {ask.quantity.detail} axis does not pass through its center "
-                f"of mass, so the moment about an axis {ask.shift} from it depends on the direction it is moved: give "
-                f"the shift as [dx, dy] in the {body.name}'s frame, e.g. shift: [{ask.shift}, 0]")
-        return tuple(ask.shift * e for e in inertia.across(inertia.SHAPES[body.shape].axes[ask.quantity.detail][1]))
+        return (paths.quantity if route == 0 else paths.by_mechanics)(body.path, body.mass, ask.quantity.detail)
 
     def _within_ranges(self, expr: sp.Expr, absolute: bool = False) -> sp.Expr:
         """Resolve what an integral left open, using the parameter ranges: the branch of a Piecewise
@@ -437,21 +404,24 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         expr = expr.replace(lambda e: e.is_Pow and e.base == 0 and holds(e.exp > 0), lambda e: sp.Integer(0))
         return tidy(expr)
 
-    def _second_routes(self, q) -> tuple[sp.Expr, sp.Expr, str]:
-        """(answer, the same by a second route, the routes' names) for the small systems."""
-        if q.kind == "standing_wave":
-            w = self.scene.wave
-            if q.detail == "momentum":
-                value = quantum.momentum(w.planck, w.radius, w.wavelengths)
-                return value, quantum.angular_momentum(w.planck, w.radius, w.wavelengths, "operator") / w.radius, \
-                    "wave_vs_operator"
-            return (*(quantum.angular_momentum(w.planck, w.radius, w.wavelengths, r) for r in ("wave", "operator")),
-                    "wave_vs_operator")
-        if q.kind == "rolling":
-            return (*(rolling.rolling(self.scene, q.target, route)[0][q.detail] for route in rolling.ROUTES),
-                    "center_of_mass_vs_contact_point")
-        count = self.scene.internal_forces
-        return (*(many_bodies.internal_torque(count, r) for r in ("direct", "pairs")), "direct_vs_pairs")
+    def _standing_wave(self, detail: str, route: int) -> sp.Expr:
+        """A standing wave's momentum or angular momentum (derive.quantities.standing_wave) from the
+        wavelength (route 0) or the operator (route 1: derive.mechanics.quantum)."""
+        w = self.scene.wave
+        if detail == "momentum" and route == 0:
+            return quantum.momentum(w.planck, w.radius, w.wavelengths)
+        found = quantum.angular_momentum(w.planck, w.radius, w.wavelengths, ("wave", "operator")[route])
+        return found / w.radius if detail == "momentum" else found
+
+    def _internal_torque(self, route: int) -> sp.Expr:
+        """The torque of internal central forces (derive.quantities.internal_forces), summed over the
+        bodies (route 0) or over the pairs (route 1: derive.mechanics.many_bodies)."""
+        return many_bodies.internal_torque(self.scene.internal_forces, ("direct", "pairs")[route])
+
+    def _rolling(self, body: str, detail: str, route: int) -> sp.Expr:
+        """A rolling body's quantity (derive.quantities.rolling) about its center of mass (route 0) or
+        its contact point (route 1: derive.mechanics.rolling)."""
+        return rolling.rolling(self.scene, body, rolling.ROUTES[route])[0][detail]
 
     def _sample(self, expr: sp.Expr) -> float:
         """The value of an expression at the middle of the parameter ranges (SI), to 30 digits:
@@ -526,28 +496,6 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         kind = quantities.KINDS.get(ask.quantity.kind)
         if kind is not None:
             result = kind.value(self, ask, 0)
-        elif ask.quantity.kind == "inertia":
-            result = self._inertia(ask)
-        elif ask.quantity.kind == "path":
-            result = self._path(ask)
-        elif ask.quantity.kind == "orbit":
-            result = self._orbit(ask.quantity.detail, "lagrange")
-        elif ask.quantity.kind == "mass":
-            result = self.scene.bodies[ask.quantity.target].mass
-        elif ask.quantity.kind == "system":
-            result = system.quantity(self.scene, ask.quantity.detail, "sum")
-        elif ask.quantity.kind == "pivot_point":
-            result = self._pivot_point(ask.quantity)
-        elif ask.quantity.kind == "rolls_on_edge":
-            result = self._rolls_on_edge(ask.quantity)
-        elif ask.quantity.kind in SECOND_ROUTE_KINDS:
-            result = self._second_routes(ask.quantity)[0]
-        elif ask.quantity.kind == "bearings":
-            result = self._bearings(ask.quantity, "newton_euler")
-        elif ask.quantity.kind == "free_rotation":
-            result = self._free_rotation(ask.quantity)
-        elif ask.quantity.kind == "angular_impulse":
-            result = self._angular_impulse(ask.quantity)
         else:
             result = self._route_expression(ask, "lagrange")
         if result.has(sp.Piecewise):  # regimes: one case per regime, each in its simplest form

@@ -15,47 +15,25 @@ sympy.physics.mechanics, and the dimensions of every answer. `CrossChecks` is a 
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
 
 import sympy as sp
 
 from derive.core.memo import kept
-from derive.model import inertia, placement
 from derive.core import limits, units
 from derive.numbers import numeric
 from derive.core.errors import EngineLimit
 from derive.numbers.agreement import BITS, METHODS, MIN_POINTS, agree, by_balls, same_ball
-from derive.mechanics import impacts, integrated_motion, lagrange, many_bodies, orbits, paths, reaching
+from derive.mechanics import impacts, integrated_motion, lagrange, orbits, reaching
 from derive.mechanics.oscillation import NotAPendulum, exact_period
 from derive.mechanics.small_swings import SmallSwing
 from derive.mechanics.derivation import row_reduced
-from derive.language.problem import Ask, Problem
-from derive.model.scene import DYNAMIC_KINDS, SECOND_ROUTE_KINDS
+from derive.language.problem import Problem
+from derive.model.scene import DYNAMIC_KINDS
 from derive import quantities
-from derive.solution import system
+from derive.quantities.base import Check, CheckFailure
 from derive.solution.textbook_routes import TextbookRoute
 
 ROUTES = ("lagrange", "newton_euler")
-
-
-#: The parallel-axis check, as a worked solution reads it.
-PARALLEL_AXIS = "The parallel-axis theorem gives the same moment of inertia as direct integration."
-
-
-class CheckFailure(RuntimeError):
-    """Two routes of derivation disagree: a bug in the engine, never bad input."""
-
-
-@dataclass(frozen=True)
-class Check:
-    """One independent check: its `name` and `method`, the `detail` `derive check` and the JSON
-    give, and its `reading`, one sentence a student can read in a worked solution."""
-
-    name: str
-    passed: bool
-    method: str
-    detail: str
-    reading: str
 
 
 class CrossChecks:
@@ -78,52 +56,30 @@ class CrossChecks:
             result.append(self._states_check())
         if "oscillation" in kinds:
             result.append(self._period_check())
-        if "orbit" in kinds:
-            result.append(self._orbit_check())
         if self.energy_balances:
             result.append(self._energy_check())
         if self.textbook_route is not None:
             result.append(self._textbook_check())
-        if "system" in kinds:
-            result.append(self._system_check())
-        if "inertia" in kinds:
-            result.append(self._tensor_check())
-        if "path" in kinds:
-            result.append(self._path_check())
-        if kinds & {"pivot_point", "conical"}:  # a steady cone's rate is a quantity's: its equations are checked here
-            result.append(self._pivot_point_check())
-        if "rolls_on_edge" in kinds:
-            result.append(self._rolls_on_edge_check())
-        if "angular_impulse" in kinds:
-            result.append(self._angular_impulse_check())
-        if "bearings" in kinds:
-            result += self._bearings_checks()
-        if "free_rotation" in kinds:
-            result.append(self._free_rotation_check())
         result += self._quantity_checks()
-        agreed: dict[str, list[str]] = {}
-        for ask in self.problem.asks.values():
-            if ask.quantity.kind in SECOND_ROUTE_KINDS:
-                first, second, name = self._second_routes(ask.quantity)
-                if agree(first, second) is None:
-                    raise CheckFailure(f"{self.problem.id}: {ask.name} is {first} one way, {second} the other")
-                agreed.setdefault(name, []).append(ask.name)
-        result += [Check(name, True, "symbolic", f"{', '.join(asks)} agree",
-                         f"A second, independent derivation gives the same {', '.join(asks)}.")
-                   for name, asks in agreed.items()]
-        for ask in self.problem.asks.values():
-            if ask.quantity.kind == "inertia" and isinstance(ask.quantity.detail, str):  # a named axis
-                check = self._parallel_axis_check(ask)
-                if check:
-                    result.append(check)
         return result
 
     def _quantity_checks(self) -> list[Check]:
-        """Each quantity of derive.quantities by its two routes (a route 1 that is the motion simulated
-        is the states check's)."""
+        """Each quantity of derive.quantities by its own checks (`QuantityKind.checks`), in the order the
+        problem first asks it, else by its two routes (a route 1 that is the motion simulated is the
+        states check's)."""
         agreed: dict[str, tuple[list[str], set[str]]] = {}
+        result = []
+        asked: dict[str, list[str]] = {}
         for name, ask in self.problem.asks.items():
-            kind = quantities.KINDS.get(ask.quantity.kind)
+            if ask.quantity.kind in quantities.KINDS:
+                asked.setdefault(ask.quantity.kind, []).append(name)
+        for kind, names in list(asked.items()):
+            own = quantities.KINDS[kind].checks(self, names)
+            if own is not None:
+                result += own
+                del asked[kind]
+        for name, ask in self.problem.asks.items():
+            kind = quantities.KINDS.get(ask.quantity.kind) if ask.quantity.kind in asked else None
             second = kind.value(self, ask, 1) if kind is not None else None
             if second is None:
                 continue
@@ -135,9 +91,9 @@ class CrossChecks:
             asks, methods = agreed.setdefault(kind.kind, ([], set()))
             asks.append(name)
             methods.add(method)
-        return [Check(kind, True, ", ".join(sorted(methods)), f"{', '.join(asks)} agree by two routes",
-                      f"Two routes give the same {', '.join(asks)}: {quantities.KINDS[kind].routes[0]}, and "
-                      f"{quantities.KINDS[kind].routes[1]}.") for kind, (asks, methods) in agreed.items()]
+        return result + [Check(kind, True, ", ".join(sorted(methods)), f"{', '.join(asks)} agree by two routes",
+                               f"Two routes give the same {', '.join(asks)}: {quantities.KINDS[kind].routes[0]}, and "
+                               f"{quantities.KINDS[kind].routes[1]}.") for kind, (asks, methods) in agreed.items()]
 
     def _dimension_check(self) -> Check:
         found = {}
@@ -152,7 +108,7 @@ class CrossChecks:
                                   f"answer ({error})") from None
             wanted = units.dimension(units.parse_unit(ask.unit))
             kind = quantities.KINDS.get(ask.quantity.kind) if not ask.zero_for else None  # a parameter found: its unit
-            if kind is not None and not units.same_dimension(units.dimension(units.parse_unit(kind.unit)), wanted):
+            if kind is not None and kind.unit and not units.same_dimension(units.dimension(units.parse_unit(kind.unit)), wanted):
                 raise self.problem.error(f"ask.{name}.unit", f"declared {ask.unit}, but a {kind.kind} is in {kind.unit}")
             if not units.same_dimension(dimension, wanted):
                 raise self.problem.error(
@@ -500,35 +456,6 @@ class CrossChecks:
         return Check("lagrange_vs_newton_euler", True, "symbolic", detail,
                      "Lagrange's method and Newton's second law give the same orbit.")
 
-    def _path_check(self) -> Check:
-        """Every path quantity again with sympy.physics.mechanics (a particle, a rotating frame)."""
-        for name, ask in self.problem.asks.items():
-            if ask.quantity.kind == "path":
-                body = self.scene.bodies[ask.quantity.target]
-                other = paths.by_mechanics(body.path, body.mass, ask.quantity.detail)
-                if agree(other, self.expressions[name]) is None:
-                    raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} by projection, "
-                                       f"{other} by sympy.physics.mechanics")
-        return Check("path_vs_mechanics", True, "symbolic", "every path quantity agrees",
-                     "The kinematics of SymPy's mechanics package (rotating frames) give the same velocities and "
-                     "accelerations on the path.")
-
-    def _system_check(self) -> Check:
-        """The scalar parallel-axis sum equals the composed inertia tensor; for two point masses,
-        the inertia about the center of mass is mu d^2."""
-        total, composed = system.quantity(self.scene, "inertia", "sum"), system.quantity(self.scene, "inertia", "tensor")
-        if agree(total, composed) is None:
-            raise CheckFailure(f"{self.problem.id}: the system's inertia is {total} summed, {composed} composed")
-        detail = "parallel-axis sum equals the composed tensor"
-        bodies = list(self.scene.bodies.values())
-        if len(bodies) == 2 and all(b.shape == "point" for b in bodies):
-            gap = placement.position(self.scene, bodies[1].name) - placement.position(self.scene, bodies[0].name)
-            if agree(total, many_bodies.reduced_mass(bodies[0].mass, bodies[1].mass) * gap.dot(gap)) is None:
-                raise CheckFailure(f"{self.problem.id}: I differs from mu d^2")
-            detail += "; I = mu d^2"
-        return Check("system_inertia", True, "symbolic", detail,
-                     "The system's mass and moment of inertia agree by two routes.")
-
     def _energy_check(self) -> Check:
         """Energy conservation gives the same speeds as the accelerations integrated."""
         methods = set()
@@ -542,40 +469,6 @@ class CrossChecks:
                      f"speeds of {', '.join(self.energy_balances)} agree",
                      "Energy conservation and the equations of motion give the same speeds.")
 
-    def _parallel_axis_check(self, ask: Ask) -> Check | None:
-        body = self.scene.bodies[ask.quantity.target]
-        derived = inertia.moment_of_inertia(body.shape, ask.quantity.detail)
-        if ask.shift is not None or body.density is not None:  # the body's own axis, against I_cm + M d^2 through
-            if ask.shift is None and inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density) == 0:
-                return None  # its center of mass: the theorem adds nothing
-            theorem = self._through_center_of_mass(body, ask)
-            if agree(theorem, self.expressions[ask.name]) is None:
-                raise CheckFailure(f"{self.problem.id}: the {'shifted ' * (ask.shift is not None)}axis gives "
-                                   f"{self.expressions[ask.name]}, the parallel-axis theorem {theorem}")
-            return Check("parallel_axis", True, "symbolic",
-                         f"{ask.name}: integration about the {'shifted ' * (ask.shift is not None)}axis equals I_cm + "
-                         f"M h^2, I_cm about the parallel axis through the {body.name}'s center of mass", PARALLEL_AXIS)
-        if derived.distance_from_center == 0:
-            return None
-        center_axis = inertia.PLANAR_AXIS[body.shape]
-        central = inertia.moment_of_inertia(body.shape, center_axis).I
-        theorem = inertia.parallel_axis(central, inertia.M, derived.distance_from_center)
-        if agree(theorem, derived.I) is None:
-            raise CheckFailure(f"{self.problem.id}: the parallel-axis theorem gives {theorem}, integration {derived.I}")
-        return Check(
-            "parallel_axis", True, "symbolic",
-            f"{ask.name}: integration equals I_cm + M d^2 with d = {derived.distance_from_center}", PARALLEL_AXIS,
-        )
-
-
-    def _through_center_of_mass(self, body, ask: Ask) -> sp.Expr:
-        """The parallel-axis theorem for a shifted axis: the moment about the parallel axis through the
-        center of mass, integrated, plus M d^2, d the distance between the two axes. Through the
-        center of mass always: from any other axis the theorem does not hold (a rod denser at one end)."""
-        mass, central = inertia.central_body_moment(body.shape, ask.quantity.detail, body.mass, body.sizes, body.density)
-        apart = inertia.off_axis(body.shape, ask.quantity.detail, body.sizes, body.density,
-                                 self.shift_vector(ask) or (0, 0, 0))
-        return self._within_ranges(central + mass * apart)
 
 def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:
     """Points where `expr` can be evaluated, in SI units like the answers: parameters inside

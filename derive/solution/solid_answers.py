@@ -128,11 +128,11 @@ class SolidAnswers:
         """The angular impulse route's steps (L before, the impulse, the angle), and the Euler route's
         equations (integrated numerically by the check)."""
         result = {}
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "angular_impulse"}:
+        for name in {a.quantity.target for a in self.problem.asks.values()}:  # every ask is an angular impulse's
             (I1, I3), spin, _, _, torque, duration = self.impulse_turn(name)
             before, impulse = sp.Symbol("L_0"), sp.Symbol("J")
             asked = tuple(sp.Eq(sp.Symbol(n), self.expressions[n], evaluate=False) for n, a in self.problem.asks.items()
-                          if a.quantity.kind == "angular_impulse" and a.quantity.target == name)
+                          if a.quantity.target == name)
             axle = any(a.quantity.detail == "turn.axle" for a in self.problem.asks.values())
             result[f"the {name}, by the angular impulse"] = [
                 Step(f"The {name} spins about its own axis with no turning across it, so its angular momentum about "
@@ -220,7 +220,7 @@ class SolidAnswers:
                                                           ("ZXY", details - set(free_rotation.SYMMETRIC))) if asked)
                 steps += free_rotation.steps(self.free_moments(name), route, orders)
             asked = tuple(sp.Eq(sp.Symbol(n), self._free_rotation(a.quantity, route), evaluate=False)
-                          for n, a in self.problem.asks.items() if a.quantity.kind == "free_rotation")
+                          for n, a in self.problem.asks.items())  # every ask is a free rotation's
             result[title] = [*steps, Step("Solved for what is asked", asked, role="solve")]
         return result
 
@@ -245,32 +245,22 @@ class SolidAnswers:
                     (sp.Eq(shown, 0),), role="equations"))
         return result
 
-    def _solid_conditions(self) -> list[tuple[sp.Expr, bool, str]]:
-        """What the 3D answers need in every variant: a top spun fast enough to precess steadily, a
-        coin's center inside its circle, a free body's principal moments in the order of the middle
-        of the ranges."""
-        result = []
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "pivot_point"
-                     and a.quantity.detail not in ("sleeping.min_spin", "precession.fast_top", "nutation.fast_top")}:
-            point, (tensor, mass, g, distance) = self.scene.pivot_points[name], self.standing_top(name)
-            try:
-                I1, I3 = fixed_point.moments(tensor, mass, distance)
-            except fixed_point.NotSymmetric as error:
-                raise self.problem.error(f"scene.bodies.{name}", f"a steady motion is asked: {error}") from None
-            result.append((tidy(I3**2 * point.spin**2 - 4 * I1 * mass * g * distance * sp.cos(point.tilt)), False,
-                           f"no steady precession of the {name}: the spin is too slow "
-                           "(I3^2 w^2 < 4 I1 m g l cos(theta))"))
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "rolls_on_edge"
-                     and a.quantity.detail.startswith("steady.")}:
-            coin = self.scene.rolls_on_edge[name]  # then Omega^2 > 0 too (tests/test_rolling_coin.py)
-            result.append((tidy(coin.circle - coin.radius * sp.sin(coin.tilt)), True,
-                           f"the {name}'s center would be on or across the axis of its contact point's circle "
-                           "(circle <= radius sin(tilt)): not modelled"))
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "free_rotation"
-                     and a.quantity.detail.startswith("rotation.")}:
-            moments = self.free_moments(name)
-            order = [self.free_axis(name, rank) for rank in free_rotation.RANKS]
-            result += [(tidy(moments[high] - moments[low]), True, f"the {name}'s principal moments change order "
-                        f"here ({'xyz'[low]} and {'xyz'[high]}): the axis of each rank is chosen at the middle of "
-                        "the ranges") for low, high in zip(order, order[1:])]
-        return result
+    def top_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
+        """A top asked a steady motion is spun fast enough to precess steadily, in every variant
+        (derive.quantities.pivot_point)."""
+        point, (tensor, mass, g, distance) = self.scene.pivot_points[name], self.standing_top(name)
+        try:
+            I1, I3 = fixed_point.moments(tensor, mass, distance)
+        except fixed_point.NotSymmetric as error:
+            raise self.problem.error(f"scene.bodies.{name}", f"a steady motion is asked: {error}") from None
+        return [(tidy(I3**2 * point.spin**2 - 4 * I1 * mass * g * distance * sp.cos(point.tilt)), False,
+                 f"no steady precession of the {name}: the spin is too slow (I3^2 w^2 < 4 I1 m g l cos(theta))")]
+
+    def free_order_conditions(self, name: str) -> list[tuple[sp.Expr, bool, str]]:
+        """A free body's principal moments keep the order of the middle of the ranges, in every variant
+        (derive.quantities.free_rotation)."""
+        moments = self.free_moments(name)
+        order = [self.free_axis(name, rank) for rank in free_rotation.RANKS]
+        return [(tidy(moments[high] - moments[low]), True, f"the {name}'s principal moments change order "
+                 f"here ({'xyz'[low]} and {'xyz'[high]}): the axis of each rank is chosen at the middle of "
+                 "the ranges") for low, high in zip(order, order[1:])]

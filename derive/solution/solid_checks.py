@@ -1,8 +1,8 @@
 """The cross-checks of the 3D answers, as a part of `derive.solution.answers.Solution` (as
-`derive.solution.solid_answers` holds the answers): the inertia tensor against integration, a couple's
-angular impulse against Euler's equations integrated, and each 3D slice's routes against each
-other (bearings, a fixed point, rolling on an edge, free rotation). `CrossChecks._checks` calls
-them.
+`derive.solution.solid_answers` holds the answers): a couple's angular impulse against Euler's
+equations integrated, and each 3D slice's routes against each other (bearings, a fixed point,
+rolling on an edge, free rotation), each of the asks `names` of its kind. Each kind's module of
+derive.quantities calls its own (`QuantityKind.checks`).
 """
 from __future__ import annotations
 
@@ -19,23 +19,7 @@ from derive.core.tidying import tidy
 class SolidChecks:
     """The 3D checks of a Solution (a mixin: the Solution's scene, problem and answers)."""
 
-    def _tensor_check(self) -> Check:
-        """Each moment of inertia again as n^T I n from the inertia tensor (a different integral)."""
-        compared = []
-        for name, ask in self.problem.asks.items():
-            if ask.quantity.kind != "inertia":
-                continue
-            other = self._inertia(ask, "tensor")
-            if other is None:
-                continue
-            if agree(other, self.expressions[name]) is None:
-                raise CheckFailure(f"{self.problem.id}: {name} is {self.expressions[name]} integrated, {other} "
-                                   "from the tensor")
-            compared.append(name)
-        return Check("tensor_vs_integral", True, "symbolic", ", ".join(compared) or "no derived moment",
-                     "The inertia tensor gives the same moments of inertia as direct integration.")
-
-    def _angular_impulse_check(self) -> Check:
+    def angular_impulse_check(self, names: list[str]) -> Check:
         """A body on a fixed point at its center of mass under a couple for a time: Euler's equations
         integrated with the orientation (angular_impulse.euler) at the middle of the ranges and four
         random points give the angle L turns through as the angular impulse does, and the axle's turn
@@ -43,9 +27,8 @@ class SolidChecks:
         impulse (the turns at a couple s = 10^-3 and 2 s times as large, extrapolated), and its relative
         error to the exact turn is reported. Relative tolerances: 1e-8, and 1e-5 for the limit."""
         notes, worst, scale = [], 0.0, 1e-3
-        for ask_name, ask in self.problem.asks.items():
-            if ask.quantity.kind != "angular_impulse":
-                continue
+        for ask_name in names:
+            ask = self.problem.asks[ask_name]
             moments, spin, axis, couple, torque, duration = self.impulse_turn(ask.quantity.target)
             inputs = sp.Tuple(sp.Tuple(*moments), spin, sp.Tuple(*axis), sp.Tuple(*couple), torque, duration)
             for point in sample_points(self.problem, sp.Tuple(inputs, self.expressions[ask_name]), count=5):
@@ -72,7 +55,7 @@ class SolidChecks:
                      "The turn from the couple's angular impulse about the fixed point agrees with Euler's equations "
                      "integrated over the time the couple acts.")
 
-    def _bearings_checks(self) -> list[Check]:
+    def bearings_checks(self, names: list[str]) -> list[Check]:
         """For every body in bearings, Newton–Euler's and Lagrange's L, bearing torque, kinetic
         energy, the supports' force, the drive's couple and each bearing's force agree component by
         component, and each asked quantity by both; a uniform shape's L again by integrating
@@ -99,8 +82,8 @@ class SolidChecks:
                     raise CheckFailure(f"{self.problem.id}: the {name}'s L is {list(by_integral)} integrated, "
                                        f"{list(found['newton_euler']['angular_momentum'])} from the tensor")
                 integrated.append(name)
-        for ask_name, ask in self.problem.asks.items():
-            if ask.quantity.kind == "bearings" and differ(*(self._bearings(ask.quantity, r) for r in bearings.ROUTES)):
+        for ask_name in names:
+            if differ(*(self._bearings(self.problem.asks[ask_name].quantity, r) for r in bearings.ROUTES)):
                 raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {ask_name}")
         method = " or ".join(m for m in METHODS if m in methods)
         result = [Check("lagrange_vs_newton_euler", True, method,
@@ -115,56 +98,58 @@ class SolidChecks:
                                 "the inertia tensor."))
         return result
 
-    def _free_rotation_check(self) -> Check:
+    def free_rotation_check(self, names: list[str]) -> Check:
         """Every asked free precession, wobble and growth rate by Euler's equations and by
         Lagrange's equations in Euler angles (derive.mechanics.free_rotation)."""
         methods = set()
-        for ask_name, ask in self.problem.asks.items():
-            if ask.quantity.kind == "free_rotation":
-                found = [self._free_rotation(ask.quantity, route) for route in free_rotation.ROUTES]
-                methods.add(agree(*found))
-                if None in methods:
-                    raise CheckFailure(f"{self.problem.id}: {ask_name} is {found[0]} by Euler's equations, "
-                                       f"{found[1]} by Lagrange's")
+        for ask_name in names:
+            found = [self._free_rotation(self.problem.asks[ask_name].quantity, route) for route in free_rotation.ROUTES]
+            methods.add(agree(*found))
+            if None in methods:
+                raise CheckFailure(f"{self.problem.id}: {ask_name} is {found[0]} by Euler's equations, "
+                                   f"{found[1]} by Lagrange's")
         return Check("lagrange_vs_newton_euler", True, " or ".join(m for m in METHODS if m in methods),
                      "free precession, wobble and growth rates agree (Euler's equations, Lagrange in Euler angles)",
                      "Euler's equations with no torque and Lagrange's equations in Euler angles give the same "
                      "precession rates, angles and rates of the small motions about a steady rotation.")
 
-    def _pivot_point_check(self) -> Check:
-        """For every body on a fixed point asked, the equations of motion by Lagrange, Newton–Euler
-        (Euler's equations about the point) and Kane agree term by term, and each asked quantity by
-        Lagrange and Newton–Euler; the fast-top rate's relative error against the slow root is reported."""
+    def pivot_point_check(self, names: list[str]) -> Check:
+        """For every body on a fixed point asked (a top's motion, a steady cone's rate), the equations of
+        motion by Lagrange, Newton–Euler (Euler's equations about the point) and Kane agree term by term,
+        and each asked quantity by Lagrange and Newton–Euler; the fast-top rate's relative error against
+        the slow root is reported."""
         methods, notes = {"symbolic"}, []
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind in ("pivot_point",
-                                                                                                   "conical")}:
+        for name in {self.problem.asks[n].quantity.target for n in names}:
             top = self.standing_top(name)
             found = {route: fixed_point.equations(*top, route) for route in fixed_point.ROUTES}
             for route in fixed_point.ROUTES[1:]:
                 if any(tidy(a - b) != 0 for a, b in zip(found["lagrange"], found[route])):
                     raise CheckFailure(f"{self.problem.id}: the {name}'s equations of motion are "
                                        f"{list(found['lagrange'])} by Lagrange, {list(found[route])} by {route}")
-        for ask_name, ask in self.problem.asks.items():
-            if ask.quantity.kind == "pivot_point":
+        for ask_name in names:
+            ask = self.problem.asks[ask_name]
+            if ask.quantity.kind == "conical":  # a steady cone's rate, derive.quantities.conical
+                methods.add(agree(*(self.conical_squared(ask.quantity.target, r) for r in ("lagrange", "newton_euler"))))
+            else:
                 methods.add(agree(*(self._pivot_point(ask.quantity, r) for r in ("lagrange", "newton_euler"))))
-                if None in methods:
-                    raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {ask_name}")
-                if ask.quantity.detail == "precession.fast_top":
-                    slow = self._pivot_point(replace(ask.quantity, detail="precession.slow"))
-                    error = tidy(self.expressions[ask_name] / slow - 1)
-                    notes.append(f"fast-top rate / slow root - 1 = {sp.sstr(error)}")
+            if None in methods:
+                raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {ask_name}")
+            if ask.quantity.detail == "precession.fast_top":
+                slow = self._pivot_point(replace(ask.quantity, detail="precession.slow"))
+                error = tidy(self.expressions[ask_name] / slow - 1)
+                notes.append(f"fast-top rate / slow root - 1 = {sp.sstr(error)}")
         return Check("lagrange_vs_newton_euler", True, " or ".join(m for m in METHODS if m in methods),
                      "; ".join(["equations of motion agree (Lagrange, Newton–Euler, Kane)", *notes]),
                      "Lagrange's method, Euler's equations about the fixed point and Kane's method give the same "
                      "equations of motion, and the same steady motions.")
 
-    def _rolls_on_edge_check(self) -> Check:
+    def rolls_on_edge_check(self, names: list[str]) -> Check:
         """For every body rolling on its edge that is asked, Lagrange's method and Kane's with the
         rolling constraints and Newton–Euler about the center of mass agree term by term, each asked
         quantity by all three, and in a steady motion the contact force along the heading is zero."""
         methods = {"symbolic"}
         routes = rolling_coin.ROUTES
-        for name in {a.quantity.target for a in self.problem.asks.values() if a.quantity.kind == "rolls_on_edge"}:
+        for name in {self.problem.asks[n].quantity.target for n in names}:
             coin = self.scene.rolls_on_edge[name]
             found = {route: rolling_coin.motion(*self.rolling_coin(name), route)["equations"] for route in routes}
             for route in routes[1:]:
@@ -177,12 +162,11 @@ class SolidChecks:
                 if any(a != 0 for a in along):
                     raise CheckFailure(f"{self.problem.id}: the {name}'s steady motion needs a force along its "
                                        f"heading: {along}")
-        for ask_name, ask in self.problem.asks.items():
-            if ask.quantity.kind == "rolls_on_edge":
-                first, *others = (self._rolls_on_edge(ask.quantity, r) for r in routes)
-                methods.update(agree(first, other) for other in others)
-                if None in methods:
-                    raise CheckFailure(f"{self.problem.id}: Lagrange, Kane and Newton–Euler disagree on {ask_name}")
+        for ask_name in names:
+            first, *others = (self._rolls_on_edge(self.problem.asks[ask_name].quantity, r) for r in routes)
+            methods.update(agree(first, other) for other in others)
+            if None in methods:
+                raise CheckFailure(f"{self.problem.id}: Lagrange, Kane and Newton–Euler disagree on {ask_name}")
         return Check("lagrange_vs_newton_euler", True, " or ".join(m for m in METHODS if m in methods),
                      "equations of motion agree (Lagrange and Kane with the rolling constraints, Newton–Euler about "
                      "the center of mass), and every asked quantity",

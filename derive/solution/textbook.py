@@ -50,7 +50,8 @@ ON_SLOPE = {"speed_at_bottom", "time_to_bottom"}
 def covered(quantity: Quantity) -> bool:
     """Whether the student's route answers the quantity: a quantity of derive.quantities read at the
     placement adds its own section to it (a torque: r x F with the forces the route finds)."""
-    if quantity.kind in ("acceleration", "angular_acceleration", "force") or quantity.kind in quantities.KINDS:
+    kind = quantities.KINDS.get(quantity.kind)
+    if quantity.kind in ("acceleration", "angular_acceleration", "force") or kind is not None and kind.own_section:
         return True
     return quantity.kind == "contact" and quantity.detail in ALONG | ON_SLOPE
 

@@ -66,7 +66,7 @@ def _specimen(fig: _Figure, body: Body, center, slot: float) -> None:
         _label_mass(fig, body, _add(center, (0, -0.12)), (0, -1))
     for point, direction, shift in _asked_axes(fig, body):
         where = _add(center, (point[0] * scale, point[1] * scale))
-        if shift is not None:  # drawn the way the Solution moves it (Solution.shift_vector), to scale up to a clamp
+        if shift is not None:  # moved as derive.quantities.moment_of_inertia.shift_vector does, to scale up to a clamp
             vector = shift if isinstance(shift, tuple) else tuple(shift * e for e in inertia.across(direction))
             dx, dy = fig.num(vector[0], 0), fig.num(vector[1], 0)
             reach = _clamp(math.hypot(dx, dy) * scale, 0.4, half + 0.6) / (math.hypot(dx, dy) or 1)
