@@ -441,7 +441,7 @@ def test_solve_prints_the_textbook_route_and_the_two_routes_with_proof(derive):
     """A rolling sphere: the student's route (Newton's second law along the slope, the torque about the
     center, rolling without slipping) in a few lines; the two routes' equations of motion only with --proof."""
     text = derive("solve", "sphere_rolls_incline").stdout
-    assert "The solution, as a textbook writes it" in text and "Newton's second law for the ball" in text
+    assert "The solution, as a textbook writes it" in text and "Newton's second law for the sphere" in text
     assert "Equations of motion" not in text and "ẋ_ball" not in text
     proof = derive("solve", "sphere_rolls_incline", "--proof").stdout
     assert "Equations of motion, Lagrange's method" in proof and "Equations of motion, Newton–Euler" in proof

@@ -381,3 +381,14 @@ def test_a_path_in_space_answers_in_space_and_refuses_the_planes_quantities(tmp_
     path.write_text(polar)
     result = run_derive("solve", str(path))
     assert result.returncode == 2 and "path.polar.z" in result.stderr and "unknown key" in result.stderr, result.stderr
+
+
+def test_a_torques_worked_solution_names_no_cord_by_its_key():
+    """Issue 37, item 5: the pulley's two sides are tau_1 and tau_2 (one symbol, one meaning), not both
+    tau_rope, and the terminal's solution says "the cord", as the documents do, never the file's key."""
+    solution = Solution(load(str(ASKS / "atwood_pulley_torques.yaml")))
+    sections = [s for title, steps in solution.student_steps.items() if "torque" in title for s in steps]
+    named = [str(e.lhs) for step in sections for e in step.equations if str(e.lhs).startswith("tau")]
+    assert set(named) >= {"tau_1", "tau_2"} and not any("rope" in n for n in named)
+    out = run_derive("solve", str(ASKS / "atwood_pulley_torques.yaml")).stdout
+    assert "rope" not in out.split("Answers:")[0] and "the cord on the pulley" in out

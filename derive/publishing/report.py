@@ -18,7 +18,7 @@ import json
 import sympy as sp
 
 from derive.text.latex import latex_of, symbol_latex
-from derive.publishing import notation
+from derive.publishing import notation, wording
 from derive.numbers import numeric
 from derive.core import units
 from derive.text.terminal import indented, pretty
@@ -185,14 +185,15 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
         lines += ["How the cords run (in the placement, at the middle of the ranges):",
                   *(f"  {step['text']}" for step in windings), ""]
     student = solution.student_steps
-    if student:
+    if student:  # in the student's words, as the documents print it: "the string", not the file's cord key
+        words = wording.Wording(solution.problem)
         lines += ["The solution, as a textbook writes it" + ("" if proof else " (the equations of motion by "
                                                             "Lagrange's method and Newton–Euler: --proof)") + ":"]
         for title, steps in student.items():
-            lines.append(f"  {title}")
+            lines.append(f"  {words(title)}")
             for step in steps:
-                said = [line for s in step.sentences for line in s.text().splitlines()]
-                lines += indented(said + ([step.text.rstrip(":") + ":"] if step.text else []), "    ")
+                said = [line for s in step.sentences for line in words.sentence(s).text().splitlines()]
+                lines += indented(said + ([words(step.text).rstrip(":") + ":"] if step.text else []), "    ")
                 for equation in step.equations:
                     lines += indented(pretty(equation), "      ")
         lines.append("")

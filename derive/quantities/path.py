@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.model.scene import PATH_QUANTITIES, Quantity
+from derive.model.scene import PATH_QUANTITIES, PLANAR_PATH_QUANTITIES, Quantity
 from derive.numbers.agreement import agree
 from derive.quantities.base import Check, CheckFailure, QuantityKind
 
@@ -34,6 +34,9 @@ class Path(QuantityKind):
         body = scene.bodies.get(head)
         if body is None or body.path is None or rest == "mass":
             return None
+        if body.path.z != 0 and rest in PLANAR_PATH_QUANTITIES:
+            raise ValueError(f"{rest} is of a path in the plane; the {head}'s leaves it (z): ask "
+                             "velocity.x|y, speed, acceleration.x|y, angular_momentum.x|y|z|magnitude")
         if rest not in PATH_QUANTITIES:
             raise ValueError(f"a body on a path has {', '.join(PATH_QUANTITIES)}; not {rest!r}")
         return Quantity(self.kind, head, rest)

@@ -27,6 +27,8 @@ Quantity(kind='torque', target='rod', detail='weight')
 """
 from __future__ import annotations
 
+from collections import Counter
+
 import sympy as sp
 
 from derive.core.spelling import did_you_mean
@@ -38,9 +40,29 @@ from derive.quantities.base import QuantityKind, named
 from derive.text.prose import Sentence
 
 #: The subscripts of a load's torque in the worked solution, by its label.
-_SHORT = {"weight": "W", "normal force": "N", "static friction": "f", "kinetic friction": "f"}
+_SHORT = {"weight": "W", "normal force": "N", "static friction": "f", "kinetic friction": "f", "tension": "T",
+          "reaction": "R"}
 #: Loads named by what they are rather than by a part's name.
 NAMED = {"weight": ("weight",), "friction": ("static friction", "kinetic friction"), "normal_force": ("normal force",)}
+
+
+def _symbols(loads) -> list[sp.Symbol]:
+    """Each load's torque as the worked solution names it: by what the load is (tau_W, tau_N, tau_f;
+    a cord's tension tau_T, a joint's reaction tau_R, a given force tau_F), never by a part's key in
+    the file; loads of one kind numbered in order (the two sides of a pulley's cord: tau_1, tau_2).
+
+    >>> from collections import namedtuple
+    >>> Load = namedtuple("Load", "label")
+    >>> _symbols([Load("tension of rope"), Load("tension of rope"), Load("weight")])
+    [tau_1, tau_2, tau_W]
+    """
+    kinds = [_SHORT.get(load.label) or _SHORT.get(load.label.partition(" of ")[0], "F") for load in loads]
+    counts, seen, result = Counter(kinds), Counter(), []
+    alone = sum(1 for n in counts.values() if n > 1) == 1  # one kind repeats: its loads numbered, 1, 2, ...
+    for kind in kinds:
+        seen[kind] += 1
+        result.append(sp.Symbol(f"tau_{kind if counts[kind] == 1 else seen[kind] if alone else f'{kind}{seen[kind]}'}"))
+    return result
 
 
 def _cross(arm: sp.Matrix, force: sp.Matrix) -> sp.Expr:
@@ -156,8 +178,7 @@ class Torque(QuantityKind):
         about (the forces as the Newton–Euler solve above finds them), and their sum."""
         about, result = ask.about.words, []
         moments = self._moments(solution, ask)
-        for load, arm, force, torque in moments:
-            name = sp.Symbol(f"tau_{_SHORT.get(load.label, load.label.rpartition(' ')[2] or 'cord')}")
+        for (load, arm, force, torque), name in zip(moments, _symbols([load for load, *_ in moments])):
             if arm is None:
                 result.append(Step(f"The {load.label} is a couple: its torque is the same about every point", (
                     sp.Eq(name, torque),)))
