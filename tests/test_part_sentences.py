@@ -24,6 +24,7 @@ from derive.parts.damper import Damper
 from derive.parts.force import Force
 from derive.parts.gravity import Gravity
 from derive.parts.pin import Pin
+from derive.parts.rims import Rims
 from derive.parts.slider import Slider
 from derive.parts.slipping_clutch import SlippingClutch
 from derive.parts.spring import Spring
@@ -65,6 +66,7 @@ def _every_part_kind():
              Damper("drag", ("wheel", None), ((0, 0), (0, 0)), c, rotational=True),
              Touch("hit", "block", "rod", (R / 2, 0), (sp.Integer(0), sp.Integer(1)), rough=True),
              Touch("drop", "cart", None, (0, 0), (sp.Integer(0), sp.Integer(1)), surface="floor"),
+             Rims("rims", "wheel", "hub", (sp.Integer(1), sp.Integer(0)), R, -r),
              _Couple("hub", "wheel")]
     return parts, Coordinates(Scene(bodies, surfaces={"floor": floor}))
 

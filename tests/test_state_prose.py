@@ -170,13 +170,15 @@ def test_solutions_print_the_state_sentences_and_headings():
     middle = {name: p.value if p.range is None else p.at(Decimal("0.5")) for name, p in problem.parameters.items()}
     solution, _ = _solved(str(textbook("clutch_disks_brake")))
     context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, [middle]), siunitx=True)
-    sheet = render.render("solutions.tex.j2", problems=[context],
+    sheet = render.render("solutions.tex.j2", problems=[context], verification=True,
                           set=SimpleNamespace(title="Week 9", course="Mechanics", due="Friday"))
-    # the states and parts by what they are, not by the file's keys (derive.publishing.wording)
-    order = [r"\subsection*{The start: the placement moving at the given rates}",
-             r"\subsection*{The impact: the upper disk and the lower disk lock together}",
+    # the states and parts by what they are, not by the file's keys (derive.publishing.wording), in the
+    # verification by two routes (the student's route, the angular momentum about the axle, comes first)
+    order = [r"\section*{Verification by two routes}",
+             r"\subsubsection*{The start: the placement moving at the given rates}",
+             r"\subsubsection*{The impact: the upper disk and the lower disk lock together}",
              r"The only impulse from outside the bodies is that of the axle, at $\left( 0, \  0\right)$",
-             r"\subsection*{From the impact: the motion until it stops}",
+             r"\subsubsection*{From the impact: the motion until it stops}",
              r"The applied torque does work at the rate $- \tau \dot{\theta}_{\mathrm{lower}}$",
              r"So, by the work-energy theorem, the kinetic energy at each $\theta_{\mathrm{lower}}$",
              r"A turning point: the motion, with $\theta_{\mathrm{lower}}$ increasing"]
