@@ -14,6 +14,7 @@ answer the significant figures its inputs support (`figures_supported`).
 from __future__ import annotations
 
 import json
+import re
 
 import sympy as sp
 
@@ -180,13 +181,13 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
     student's route (derive.solution.textbook), it is printed in place of the two routes' equations
     of motion, which `proof` adds (the checks compare them either way)."""
     lines = [f"{result['title']}  ({result['id']}{', ' + result['source'] if result['source'] else ''})", ""]
+    words = wording.Wording(solution.problem)  # the documents' words: "the string", not the file's cord key
     windings = result["steps"].get("how the cords run", [])
     if windings:
         lines += ["How the cords run (in the placement, at the middle of the ranges):",
-                  *(f"  {step['text']}" for step in windings), ""]
+                  *(f"  {words(step['text'])}" for step in windings), ""]
     student = solution.student_steps
-    if student:  # in the student's words, as the documents print it: "the string", not the file's cord key
-        words = wording.Wording(solution.problem)
+    if student:
         lines += ["The solution, as a textbook writes it" + ("" if proof else " (the equations of motion by "
                                                             "Lagrange's method and Newton–Euler: --proof)") + ":"]
         for title, steps in student.items():
@@ -211,7 +212,8 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
             (f"  [{unit}]" if unit else "")
         shown = units.declared_symbols(units.in_unit(solution.expression(name), a["unit"]), solution.problem.symbol_units)
         lines += indented(pretty(sp.Symbol(name), " = ", shown, value))
-        lines.append(f"    ({a['meaning']}{', ' + a['direction'] if a.get('direction') else ''})")
+        said = a.get("direction") and not re.search(rf"\b{re.escape(a['direction'])}\b", a["meaning"])
+        lines.append(f"    ({a['meaning']}{', ' + a['direction'] if said else ''})")  # not "energy lost, lost"
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:
             lines.append(f"    approximates {a['approximation']['exact']}: relative error "
                          f"{a['approximation']['relative_error']}")

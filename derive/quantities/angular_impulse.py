@@ -18,10 +18,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.core.spelling import did_you_mean
 from derive.model.scene import Quantity
 from derive.model.solid_scene import IMPULSE_TURN_QUANTITIES
-from derive.quantities.base import Check, QuantityKind
+from derive.quantities.base import Check, QuantityKind, body_ask
 
 
 class AngularImpulse(QuantityKind):
@@ -34,14 +33,9 @@ class AngularImpulse(QuantityKind):
     own_section = False
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
-        point = scene.pivot_points.get(head)
-        if point is None or not point.centered or rest in ("mass", "inertia"):
-            return None
-        if rest not in IMPULSE_TURN_QUANTITIES:
-            raise ValueError(f"a body on a fixed point at its center of mass (no weight's torque about it) has "
-                             f"{', '.join(IMPULSE_TURN_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, IMPULSE_TURN_QUANTITIES))
-        return Quantity(self.kind, head, rest)
+        centered = {name: point for name, point in scene.pivot_points.items() if point.centered}
+        return body_ask(self.kind, centered, head, rest, IMPULSE_TURN_QUANTITIES,
+                        "a body on a fixed point at its center of mass (no weight's torque about it)")
 
     def value(self, solution, ask, route: int) -> sp.Expr | None:
         return solution._angular_impulse(ask.quantity) if route == 0 else None

@@ -13,7 +13,8 @@ from typing import ClassVar
 import sympy as sp
 
 from derive.core import units
-from derive.model.scene import Quantity
+from derive.core.spelling import did_you_mean
+from derive.model.scene import SYSTEMS, Quantity
 from derive.numbers.agreement import agree
 from derive.text.steps import Step
 
@@ -105,6 +106,35 @@ class QuantityKind(ABC):
     def unknowns(self, solution, ask) -> set[sp.Symbol]:
         """The accelerations and forces of the derivation the answer is made of (shown in the steps)."""
         return set()
+
+
+def body_ask(kind: str, held, head: str, rest: str, allowed, what: str, also=()) -> Quantity | None:
+    """An ask of a body of one of the 3D kinds (`held`: the scene's bodies of that kind, by name): None
+    where `head` is not one of them or its mass or inertia is asked (any body answers those); refused
+    unless `rest` is `allowed` (`also`: the paths another module claims of such a body, named too).
+
+    >>> body_ask("bearings", {"disk": None}, "disk", "bearings.torque", ("bearings.torque",), "a body in bearings")
+    Quantity(kind='bearings', target='disk', detail='bearings.torque')
+    >>> body_ask("bearings", {"disk": None}, "disk", "spin", ("bearings.torque",), "a body in bearings")
+    Traceback (most recent call last):
+    ValueError: a body in bearings has bearings.torque, mass and inertia
+    """
+    if head not in held or rest in ("mass", "inertia"):
+        return None
+    if rest not in allowed:
+        raise ValueError(f"{what} has {', '.join((*allowed, *also))}, mass and inertia" + did_you_mean(rest, (*allowed, *also)))
+    return Quantity(kind, head, rest)
+
+
+def system_ask(kind: str, scene, head: str, rest: str) -> Quantity | None:
+    """An ask of a quantity of the whole scene named by its kind (`SYSTEMS`: internal_forces.torque,
+    standing_wave.momentum): None for another head; refused where the scene has none or `rest` is not one."""
+    if head != kind:
+        return None
+    attribute, allowed = SYSTEMS[head]
+    if getattr(scene, attribute) is None or rest not in allowed:
+        raise ValueError(f"a scene's {head} has {', '.join(allowed)}")
+    return Quantity(kind, None, rest)
 
 
 def named(kind: QuantityKind, ask) -> sp.Symbol:

@@ -18,10 +18,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.core.spelling import did_you_mean
 from derive.model.scene import Quantity
 from derive.model.solid_scene import BEARING_QUANTITIES
-from derive.quantities.base import Check, QuantityKind
+from derive.quantities.base import Check, QuantityKind, body_ask
 
 #: derive.mechanics.bearings.ROUTES: the key's, then its check.
 ROUTES = ("newton_euler", "lagrange")
@@ -37,11 +36,9 @@ class Bearings(QuantityKind):
     own_section = False
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
-        if head not in scene.bearings or rest in ("mass", "inertia"):
+        quantity = body_ask(self.kind, scene.bearings, head, rest, BEARING_QUANTITIES, "a body in bearings")
+        if quantity is None:
             return None
-        if rest not in BEARING_QUANTITIES:
-            raise ValueError(f"a body in bearings has {', '.join(BEARING_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, BEARING_QUANTITIES))
         held = scene.bearings[head]
         if rest.startswith(("bearings.force", "bearings.A.", "bearings.B.")) and held.apart is None:
             raise ValueError(f"{head}.{rest} needs the distance between the bearings: bearings: {{apart: d}}")
@@ -51,7 +48,7 @@ class Bearings(QuantityKind):
         if rest.startswith("bearings.") and (scene.constraints or scene.loads):
             raise ValueError(f"{head}.{rest} is what the bearings supply to turn the body under its weight alone: a "
                              "scene with other loads or joints is not modelled")
-        return Quantity(self.kind, head, rest)
+        return quantity
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         return solution._bearings(ask.quantity, ROUTES[route])

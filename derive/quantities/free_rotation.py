@@ -18,10 +18,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.core.spelling import did_you_mean
 from derive.model.scene import Quantity
 from derive.model.solid_scene import FREE_ROTATION_QUANTITIES
-from derive.quantities.base import Check, QuantityKind, first_asked
+from derive.quantities.base import Check, QuantityKind, body_ask, first_asked
 
 #: derive.mechanics.free_rotation.ROUTES: the key's, then its check.
 ROUTES = ("newton_euler", "lagrange")
@@ -40,15 +39,11 @@ class FreeRotation(QuantityKind):
     own_section = False
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
-        if head not in scene.free_rotations or rest in ("mass", "inertia"):
-            return None
         rank = rest.split(".")[1] if rest.count(".") == 2 and rest.startswith("rotation.") else None
-        if rest not in FREE_ROTATION_QUANTITIES and rank in STABLE and rest.endswith((".wobble", ".growth_rate")):
+        if head in scene.free_rotations and rest not in FREE_ROTATION_QUANTITIES and rank in STABLE \
+                and rest.endswith((".wobble", ".growth_rate")):
             raise ValueError(f"a steady rotation about the axis of {rank} moment is {STABLE[rank]}")
-        if rest not in FREE_ROTATION_QUANTITIES:
-            raise ValueError(f"a body in free rotation has {', '.join(FREE_ROTATION_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, FREE_ROTATION_QUANTITIES))
-        return Quantity(self.kind, head, rest)
+        return body_ask(self.kind, scene.free_rotations, head, rest, FREE_ROTATION_QUANTITIES, "a body in free rotation")
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         return solution._free_rotation(ask.quantity, ROUTES[route])

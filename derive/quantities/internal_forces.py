@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.model.scene import SYSTEMS, Quantity
-from derive.quantities.base import Check, QuantityKind, second_route
+from derive.model.scene import Quantity
+from derive.quantities.base import Check, QuantityKind, second_route, system_ask
 
 
 class InternalForces(QuantityKind):
@@ -29,12 +29,7 @@ class InternalForces(QuantityKind):
     own_section = False
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
-        if head != self.kind:
-            return None
-        attribute, allowed = SYSTEMS[head]
-        if getattr(scene, attribute) is None or rest not in allowed:
-            raise ValueError(f"a scene's {head} has {', '.join(allowed)}")
-        return Quantity(self.kind, None, rest)
+        return system_ask(self.kind, scene, head, rest)
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         return solution._internal_torque(route)

@@ -18,10 +18,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.core.spelling import did_you_mean
 from derive.model.scene import Quantity
 from derive.model.solid_scene import PIVOT_POINT_QUANTITIES
-from derive.quantities.base import Check, QuantityKind, first_asked
+from derive.quantities.base import Check, QuantityKind, body_ask, first_asked
 
 #: derive.mechanics.fixed_point.ROUTES' first two: the key's, then its check.
 ROUTES = ("lagrange", "newton_euler")
@@ -39,15 +38,12 @@ class PivotPoint(QuantityKind):
     own_section = False
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
-        if head not in scene.pivot_points or rest in ("mass", "inertia"):
-            return None
-        if rest not in PIVOT_POINT_QUANTITIES:
-            raise ValueError(f"a body on a fixed point has {', '.join(PIVOT_POINT_QUANTITIES)}, conical.rate, mass "
-                             "and inertia" + did_you_mean(rest, (*PIVOT_POINT_QUANTITIES, "conical.rate")))
-        if scene.pivot_points[head].hangs:
+        quantity = body_ask(self.kind, scene.pivot_points, head, rest, PIVOT_POINT_QUANTITIES, "a body on a fixed point",
+                            also=("conical.rate",))
+        if quantity is not None and scene.pivot_points[head].hangs:
             raise ValueError(f"the {head} hangs below its point: its precessions and nutations are derived for a top "
                              f"standing on it; ask {head}.conical.rate, its steady turn in a cone")
-        return Quantity(self.kind, head, rest)
+        return quantity
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         return solution._pivot_point(ask.quantity, ROUTES[route])

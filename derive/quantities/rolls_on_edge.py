@@ -18,11 +18,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.core.spelling import did_you_mean
 from derive.core.tidying import tidy
 from derive.model.scene import Quantity
 from derive.model.solid_scene import ROLLING_COIN_QUANTITIES
-from derive.quantities.base import Check, QuantityKind, first_asked
+from derive.quantities.base import Check, QuantityKind, body_ask, first_asked
 
 #: derive.mechanics.rolling_coin.ROUTES' first two: the key's, then its check.
 ROUTES = ("lagrange", "kane")
@@ -38,16 +37,13 @@ class RollsOnEdge(QuantityKind):
     own_section = False
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
-        if head not in scene.rolls_on_edge or rest in ("mass", "inertia"):
-            return None
-        if rest not in ROLLING_COIN_QUANTITIES:
-            raise ValueError(f"a body rolling on its edge has {', '.join(ROLLING_COIN_QUANTITIES)}, mass and inertia"
-                             + did_you_mean(rest, ROLLING_COIN_QUANTITIES))
-        rolling = scene.rolls_on_edge[head]
-        if rest.startswith("steady.") and (rolling.tilt is None or rolling.circle is None):
+        quantity = body_ask(self.kind, scene.rolls_on_edge, head, rest, ROLLING_COIN_QUANTITIES,
+                            "a body rolling on its edge")
+        rolling = scene.rolls_on_edge.get(head)
+        if quantity is not None and rest.startswith("steady.") and (rolling.tilt is None or rolling.circle is None):
             raise ValueError(f"{head}.{rest} is read in the steady motion on a circle: give its lean and the contact "
                              "point's circle, rolls_on_edge: {tilt: theta, circle: R}")
-        return Quantity(self.kind, head, rest)
+        return quantity
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         return solution._rolls_on_edge(ask.quantity, ROUTES[route])
