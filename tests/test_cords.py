@@ -7,6 +7,7 @@ import sympy as sp
 from conftest import run_derive
 from derive.solution.answers import Solution
 from derive.language.problem import load
+from derive.publishing import wording
 
 TABLE_AND_PEG = """\
 id: table_peg
@@ -199,16 +200,18 @@ def test_derive_solve_says_which_tangent_a_side_takes(tmp_path):
     assert "How the cords run" in top.stdout
     # theta = 0.7 at the middle of the ranges: the top of the cylinder is 0.7 rad (40 degrees) past the
     # vertical, 50 degrees from its right
-    assert ("The cord cord is wound on the cyl clockwise (side: top) and leaves it at its upper right (50 degrees "
+    # in the documents' words (derive.publishing.wording): the cord, the cylinder, not the file's keys cord and cyl
+    assert ("The cord is wound on the cylinder clockwise (side: top) and leaves it at its upper right (50 degrees "
             "round from its right, counter-clockwise), toward the ground point; side: under, left, bottom would wind "
             "it the other way, on the other tangent.") in top.stdout
-    assert ("The cord cord is wound on the cyl counter-clockwise (side: left) and leaves it at its lower left "
+    assert ("The cord is wound on the cylinder counter-clockwise (side: left) and leaves it at its lower left "
             "(214 degrees round from its right, counter-clockwise), toward the ground point; side: over, right, top "
             "would wind it the other way, on the other tangent.") in left.stdout
     assert "D" not in top.stdout.split("Answers:")[1].split("(acceleration")[0]  # parallel: no free length
     solution = Solution(load(tmp_path / "left.yaml"))
     assert solution.signed("a").has(solution.problem.parameters["D"].symbol)  # at an angle: it has
-    assert solution.steps()["how the cords run"][0].text in left.stdout  # the worked solution says it too
+    said = wording.Wording(solution.problem)(solution.steps()["how the cords run"][0].text)
+    assert said in left.stdout  # the worked solution says it too
 
 
 def test_a_wound_end_leaving_from_the_far_half_of_its_side_is_said(tmp_path):
