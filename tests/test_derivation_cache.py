@@ -42,24 +42,33 @@ def _cached(stderr: str) -> set[str]:
     return set(re.findall(r"deriving (\w+) \(from the cache\)", stderr))
 
 
-def test_a_build_from_the_cache_is_byte_identical_to_one_derived_afresh(tmp_path):
-    fresh = _build(tmp_path / "fresh", "--no-cache", "--jobs", "1")
-    assert not _cached(fresh) and not derivation_cache.entries()  # --no-cache writes nothing either
+@pytest.fixture(scope="module")
+def afresh(tmp_path_factory):
+    """The build derived afresh by one process, without the cache (--no-cache), which the tests below
+    compare theirs with: (its files, its stderr, what it left in the cache folder it was given)."""
+    folder = tmp_path_factory.mktemp("afresh")
+    stderr = _build(folder / "out", "--no-cache", "--jobs", "1", env={"DERIVE_CACHE_DIR": str(folder / "cache")})
+    left = sorted((folder / "cache").rglob("*")) if (folder / "cache").exists() else []
+    return _files(folder / "out"), stderr, left
+
+
+def test_a_build_from_the_cache_is_byte_identical_to_one_derived_afresh(afresh, tmp_path):
+    reference, fresh, left = afresh
+    assert not _cached(fresh) and not left  # --no-cache writes nothing either
     first = _build(tmp_path / "first", "--jobs", "1")
     assert not _cached(first) and len(_derivations()) == len(PROBLEMS)
     warm = _build(tmp_path / "warm", "--jobs", "1")  # another process: only what the files hold
     assert _cached(warm) == set(PROBLEMS)
-    reference = _files(tmp_path / "fresh")
     assert {"key.json", "solutions.tex", "worksheet.tex"} <= set(reference)
     assert _files(tmp_path / "first") == reference
     assert _files(tmp_path / "warm") == reference
 
 
-def test_two_jobs_build_the_same_bytes_as_one(tmp_path):
-    one = _build(tmp_path / "one", "--no-cache", "--jobs", "1")
+def test_two_jobs_build_the_same_bytes_as_one(afresh, tmp_path):
+    reference, one, _ = afresh
     two = _build(tmp_path / "two", "--no-cache", "--jobs", "2")
     assert "running" in two and "running" not in one  # the progress names the derivations under way
-    assert _files(tmp_path / "two") == _files(tmp_path / "one")
+    assert _files(tmp_path / "two") == reference
 
 
 def test_a_new_seed_or_question_derives_nothing_again_a_changed_scene_or_range_does(tmp_path):
