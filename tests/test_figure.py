@@ -762,3 +762,14 @@ def test_a_record_on_a_turntable_meets_it_at_a_felt_inside_its_rim(carried):
     felt = re.search(rf"densely dotted\] {re.escape(_pt(center))} circle \(([\d.]+)\);", drawn)
     assert felt and R2 * scale - 0.15 < float(felt[1]) < R2 * scale
     assert "felt, rough, $C$" in drawn
+
+
+def test_an_orbit_given_at_periapsis_draws_what_is_given_never_its_axis():
+    """A newcomer's comet (Serway & Jewett ch. 13) drew its major axis labelled r_p 2GM/(2GM - r_p v_p^2),
+    and the focus's distance from the center: the aphelion the worksheet asks, given away. The figure
+    draws the distance and speed at periapsis the question gives."""
+    drawn = figure.tikz(problem.load(textbook("comet_from_periapsis")))
+    labels = re.findall(r"\{(\$[^$]*\$)\}", drawn)
+    assert "$r_{p}$" in labels and "$v_{p}$" in labels and "$\\mathit{GM}$" in labels
+    assert not any("frac" in label or "GM} -" in label for label in labels), labels
+    assert "ellipse" in figure.tikz(problem.load("kepler_orbit"))  # an orbit given by its axis still draws 2a

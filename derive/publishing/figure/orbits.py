@@ -7,8 +7,9 @@ from derive.publishing.figure.canvas import _add, _clamp, _f, _Figure, _pt, _uni
 
 
 def _orbit(fig: _Figure) -> None:
-    """The orbit: an ellipse about the central mass at its focus, r to the planet; with only the
-    angular momentum, the effective potential beside it."""
+    """The orbit: an ellipse about the central mass at its focus, r to the planet, with what the file
+    gives of it (its axis, or its distance and speed at periapsis); with only the angular momentum,
+    the effective potential beside it."""
     orbit = fig.scene.orbit
     given = orbit.eccentricity is not None
     e = _clamp(fig.num(orbit.eccentricity, 0.5), 0.0, 0.75) if given else 0.5
@@ -30,6 +31,14 @@ def _orbit(fig: _Figure) -> None:
                dr * math.sin(math.radians(nu)) + r * math.cos(math.radians(nu)))
     norm = math.hypot(*tangent)
     fig.arrow(planet, (0.7 * tangent[0] / norm, 0.7 * tangent[1] / norm), "velocity", "$v$")
+    if orbit.periapsis_speed is not None:
+        # given at periapsis: its distance and speed there, never the axis they give (an answer)
+        distance, speed = orbit.periapsis_speed
+        periapsis = (center[0] + a, 0.0)
+        fig.dimension((0.0, 0.0), periapsis, fig.tex(distance), side=-1, gap=0.35)
+        fig.dot(periapsis, 0.06)
+        fig.arrow(periapsis, (0.0, 0.7), "velocity", fig.m(speed))
+        return
     if given:
         fig.dimension((center[0] - a, -b), (center[0] + a, -b), fig.tex(2 * orbit.semi_major_axis), side=-1, gap=0.25)
         fig.dot(center, 0.03)
