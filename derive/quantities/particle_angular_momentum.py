@@ -41,10 +41,13 @@ class ParticleAngularMomentum(QuantityKind):
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         body = solution.scene.bodies[ask.quantity.target]
-        vector = _by_components(body) if route == 0 else _by_mechanics(body)
+        vector = _by_components(body) if route == 0 else by_mechanics(body)
         if ask.quantity.detail == "magnitude":
             return sp.simplify(sp.sqrt(vector.dot(vector)))
         return sp.simplify(vector["xyz".index(ask.quantity.detail)])
+
+    def axis_of(self, quantity: Quantity) -> str | None:
+        return None if quantity.detail == "magnitude" else quantity.detail
 
     def symbol_for(self, ask) -> str:
         return "L" if ask.quantity.detail == "magnitude" else f"L_{ask.quantity.detail}"
@@ -59,16 +62,18 @@ def _by_components(body) -> sp.Matrix:
     return body.mass * position.cross(position.diff(TIME))
 
 
-def _by_mechanics(body) -> sp.Matrix:
+def by_mechanics(body, about=(0, 0, 0)) -> sp.Matrix:
+    """The body's angular momentum about the fixed point `about` (x, y, z), by sympy.physics.mechanics
+    (also the route of derive.quantities.particle_torque's tau = dL/dt)."""
     from sympy.physics.mechanics import Particle, Point, ReferenceFrame
 
     frame = ReferenceFrame("N")
-    origin = Point("O")
-    origin.set_vel(frame, 0)
-    x, y, z = body.path.position3
-    point = origin.locatenew("P", x * frame.x + y * frame.y + z * frame.z)
-    point.set_vel(frame, point.pos_from(origin).dt(frame))
-    momentum = Particle("p", point, body.mass).angular_momentum(origin, frame)
+    fixed = Point("O")
+    fixed.set_vel(frame, 0)
+    x, y, z = body.path.position3 - sp.Matrix(about)
+    point = fixed.locatenew("P", x * frame.x + y * frame.y + z * frame.z)
+    point.set_vel(frame, point.pos_from(fixed).dt(frame))
+    momentum = Particle("p", point, body.mass).angular_momentum(fixed, frame)
     return sp.Matrix([momentum.dot(frame.x), momentum.dot(frame.y), momentum.dot(frame.z)])
 
 
