@@ -38,6 +38,10 @@ def _projectile(s) -> tuple:
     return (s.vx * TIME, s.vy * TIME - s.g * TIME**2 / 2, s.vz * TIME)
 
 
+def _from(r, point) -> tuple:
+    return tuple(a - b for a, b in zip(r, point))
+
+
 def _conical_rate(s) -> sp.Expr:
     """The conical pendulum's rate (Kleppner & Kolenkow ch. 7): omega^2 = g/(l cos(alpha))."""
     return sp.sqrt(s.g / (s.l * sp.cos(s.alpha)))
@@ -237,6 +241,8 @@ EXPECTED = {
         "netz": lambda s: _r_cross_f(_projectile(s), (0, -s.m * s.g, 0))[2],
         "Lx": lambda s: s.m * _r_cross_f(_projectile(s), [c.diff(TIME) for c in _projectile(s)])[0],
         "Lz": lambda s: s.m * _r_cross_f(_projectile(s), [c.diff(TIME) for c in _projectile(s)])[2],
+        "tpx": lambda s: _r_cross_f(_from(_projectile(s), (0, s.H, s.D)), (0, -s.m * s.g, 0))[0],
+        "Lpx": lambda s: s.m * _r_cross_f(_from(_projectile(s), (0, s.H, s.D)), [c.diff(TIME) for c in _projectile(s)])[0],
     },
     # Kleppner & Kolenkow 2nd ed., ch. 7, the conical pendulum: about the pivot, tau = dL/dt is horizontal, of size
     # m g l sin(alpha) (the weight's; the string's passes through the pivot); L = m l^2 omega sin(alpha), its vertical
@@ -462,6 +468,8 @@ def test_a_particles_torque_in_space_is_the_rate_of_its_angular_momentum():
     assert sp.simplify(solution.expression("Lz").diff(TIME) - solution.expression("netz")) == 0
     assert sp.simplify(solution.expression("Lx").diff(TIME) - solution.expression("tx")) == 0
     assert solution.expression("netz") == solution.expression("tz") != 0
+    # about a fixed point off the launch point too: the weight's torque is the rate of L about it
+    assert sp.simplify(solution.expression("Lpx").diff(TIME) - solution.expression("tpx")) == 0
 
 
 @pytest.mark.parametrize("ask, extra, field, message", [
@@ -472,7 +480,8 @@ def test_a_particles_torque_in_space_is_the_rate_of_its_angular_momentum():
     ("particle.push.torque.x", "about: particle", "ask.q.about", "taken about a fixed point: [x, y, z]"),
     ("particle.push.torque.x", "about: [0, 0, 0, 0]", "ask.q.about", "taken about a fixed point: [x, y, z]"),
     ("particle.push.torque.x", "", "ask.q.about", "give about: [x, y, z]"),
-    ("particle.angular_momentum.x", "about: [0, 0, 0]", "ask.q.about", "only a torque is taken about a point"),
+    ("particle.speed", "about: [0, 0, 0]", "ask.q.about", "only a torque or a particle's angular momentum"),
+    ("particle.angular_momentum.x", "about: particle", "ask.q.about", "taken about a fixed point: [x, y, z]"),
 ])
 def test_a_particles_torque_in_space_refuses_what_it_does_not_model(tmp_path, ask, extra, field, message):
     """One line naming the file and the field, exit 2: a torque is a vector (a component or its size), of the net

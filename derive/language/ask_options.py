@@ -45,7 +45,7 @@ ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
                             "without it a quantity with a direction is asked as its magnitude"),
            about=Key("any", "the point a torque is taken about: a joint's name (the point it holds), BODY (its "
                             "center of mass), BODY.POINT, {BODY: [x, y]} or [x, y] (a fixed point); a particle's torque on a "
-                            "path in space: [x, y, z] (a fixed point)"),
+                            "path in space, or its angular momentum: [x, y, z] (a fixed point; the origin by default for the angular momentum)"),
            **{"in": Key("name", "the state the quantity is asked in")})
 
 
@@ -71,6 +71,8 @@ def about(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity) -> 
     """
     kind = quantities.KINDS.get(quantity.kind)
     takes = kind is not None and "about" in kind.options
+    if raw is None and takes and kind.about_default is not None:
+        raw = list(kind.about_default)  # a particle's angular momentum: about the origin unless told
     if raw is None:
         if takes:
             raise reader.fail(field, f"a {quantity.kind} is taken about a point: give about: " + (
@@ -78,7 +80,8 @@ def about(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity) -> 
                 "a joint's name, BODY, BODY.POINT, {BODY: [x, y]} or [x, y]"))
         return None
     if not takes:
-        raise reader.fail(field, "only a torque is taken about a point: leave about: out")
+        raise reader.fail(field, "only a torque or a particle's angular momentum in space is taken about a point: "
+                                 "leave about: out")
     if kind.about_in_space:
         return fixed_point(reader, raw, field)
     pins = {c.name: c for c in scene.constraints if isinstance(c, Pin)}
@@ -98,8 +101,8 @@ def fixed_point(reader: Reader, raw, field: str) -> Point:
     """`[x, y, z]`, or `[x, y]` in the plane z = 0: a point fixed in space, which a quantity in space is
     taken about (a particle's torque on a path in space); a point of a body, which may move, is refused.
 
-    >>> fixed_point(Reader("x.yaml"), [0, 0, 1], "ask.t.about")
-    Point(body=None, offset=(0, 0, 1), words='the point (0, 0, 1)')
+    >>> fixed_point(Reader("x.yaml"), [0, 0], "ask.t.about")
+    Point(body=None, offset=(0, 0, 0), words='the origin')
     >>> fixed_point(Reader("x.yaml"), "particle", "ask.t.about")
     Traceback (most recent call last):
     derive.core.errors.ProblemError: x.yaml: ask.t.about: a torque in space is taken about a fixed point: [x, y, z], or [x, y] (z = 0)

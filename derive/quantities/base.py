@@ -42,8 +42,9 @@ class QuantityKind(ABC):
     (read in a state, `in: STATE`, as a change from the state it comes from), "optional" (at the
     placement at rest, or in a state) or "never"; sense: the words for a positive and a negative value (None: it points no way);
     routes: the two routes' names, in words, the key's first; options: the ask keys it needs
-    (`about:`), each required; about_in_space: its `about:` is a fixed point [x, y, z] (a particle's
-    torque in space), not a point of the plane or of a body; exact_unit: asked in `unit` itself (turns in rev, where rad and
+    (`about:`), each required but where `about_default` gives the point; about_in_space: its `about:`
+    is a fixed point [x, y, z] (a particle's torque in space), not a point of the plane or of a body;
+    about_default: the point where the ask gives no `about:` (None: required); exact_unit: asked in `unit` itself (turns in rev, where rad and
     deg would be the same dimension); own_section: whether the worked solution gives it a section of
     its own (`steps`) that the student's route (derive.solution.textbook) may carry, or its steps are
     those of the derivation it is read from (a moment of inertia's integral, an orbit by Binet's
@@ -58,6 +59,7 @@ class QuantityKind(ABC):
     routes: ClassVar[tuple[str, str]]
     options: ClassVar[tuple[str, ...]] = ()
     about_in_space: ClassVar[bool] = False
+    about_default: ClassVar[tuple | None] = None
     exact_unit: ClassVar[bool] = False  # asked in `unit` itself (turns in rev), not any unit of its dimension
     own_section: ClassVar[bool] = True
 
