@@ -12,6 +12,7 @@ import sympy as sp
 
 from conftest import run_derive
 from derive import quantities
+from derive.core.expr import TIME
 from derive.language.problem import load
 from derive.numbers import numeric
 from derive.publishing import report
@@ -19,6 +20,32 @@ from derive.solution.answers import Solution
 
 ASKS = Path(__file__).parent / "asks"
 FILES = sorted(ASKS.glob("*.yaml"))
+
+
+def _r_cross_f(r, f) -> tuple:
+    """The books' torque in unit-vector notation, tau = r x F = (y Fz - z Fy) i + (z Fx - x Fz) j + (x Fy - y Fx) k
+    (Halliday, Resnick & Walker 10th ed., module 11-6; Serway & Jewett 9th ed., eq. 11.1), written out."""
+    (x, y, z), (fx, fy, fz) = r, f
+    return (y * fz - z * fy, z * fx - x * fz, x * fy - y * fx)
+
+
+def _size(v) -> sp.Expr:
+    return sp.sqrt(sum(c**2 for c in v))
+
+
+def _projectile(s) -> tuple:
+    """Where a projectile launched from the origin at (vx, vy, vz) is at time t, y up."""
+    return (s.vx * TIME, s.vy * TIME - s.g * TIME**2 / 2, s.vz * TIME)
+
+
+def _from(r, point) -> tuple:
+    return tuple(a - b for a, b in zip(r, point))
+
+
+def _conical_rate(s) -> sp.Expr:
+    """The conical pendulum's rate (Kleppner & Kolenkow ch. 7): omega^2 = g/(l cos(alpha))."""
+    return sp.sqrt(s.g / (s.l * sp.cos(s.alpha)))
+
 
 #: file stem -> {ask: closed form of the parameter symbols (a namespace)}, the magnitude the key gives.
 EXPECTED = {
@@ -186,6 +213,46 @@ EXPECTED = {
     "plate_about_its_diagonal": {"I": lambda s: s.M * s.w**2 * s.h**2 / (6 * (s.w**2 + s.h**2))},
     # Halliday, Resnick & Walker sec. 11-3: a yo-yo turns one radian per R its center falls (rad here, SI).
     "yoyo_turns_from_rest": {"n": lambda s: s.h / s.R, "d": lambda s: s.h},
+    # Halliday, Resnick & Walker 10th ed., ch. 11 (Torque revisited): a particle at (0, -4.0 m, 3.0 m), F1 = (2.0 N) i:
+    # tau = r x F = (6.0 N m) j + (8.0 N m) k; about another point, r is measured from it. Held at rest: no net torque.
+    "force_on_particle_torque_3d": {
+        "tx": lambda s: _r_cross_f((0, s.y0, s.z0), (s.F, 0, 0))[0],
+        "ty": lambda s: _r_cross_f((0, s.y0, s.z0), (s.F, 0, 0))[1],
+        "tz": lambda s: _r_cross_f((0, s.y0, s.z0), (s.F, 0, 0))[2],
+        "t": lambda s: _size(_r_cross_f((0, s.y0, s.z0), (s.F, 0, 0))),
+        "tpy": lambda s: _r_cross_f((-s.a, s.y0, s.z0 - s.c), (s.F, 0, 0))[1],
+        "tpz": lambda s: _r_cross_f((-s.a, s.y0, s.z0 - s.c), (s.F, 0, 0))[2],
+        "net": lambda s: sp.Integer(0),
+    },
+    # Serway & Jewett 9th ed., ch. 11, sec. 11.1 problems: r = (4.00 i + 6.00 j) m, F = (3.00 i + 2.00 j) N, so
+    # tau = (x Fy - y Fx) k = -10.0 k N m; about a point h up the z axis, r - r_P = (x, y, -h).
+    "force_in_plane_torque_vector": {
+        "tz": lambda s: _r_cross_f((s.x0, s.y0, 0), (s.Fx, s.Fy, 0))[2],
+        "t": lambda s: sp.Abs(_r_cross_f((s.x0, s.y0, 0), (s.Fx, s.Fy, 0))[2]),
+        "thx": lambda s: _r_cross_f((s.x0, s.y0, -s.h), (s.Fx, s.Fy, 0))[0],
+        "thy": lambda s: _r_cross_f((s.x0, s.y0, -s.h), (s.Fx, s.Fy, 0))[1],
+        "thz": lambda s: _r_cross_f((s.x0, s.y0, -s.h), (s.Fx, s.Fy, 0))[2],
+    },
+    # Serway & Jewett 9th ed., ch. 11, sec. 11.2 problems: a projectile from the origin, tau = r x m g (= -m g x k in
+    # the plane) and L = m r x v (= -(1/2) m g vx t^2 k in the plane), here with a velocity vz out of the plane too.
+    "projectile_torque_3d": {
+        **{name: (lambda i: lambda s: _r_cross_f(_projectile(s), (0, -s.m * s.g, 0))[i])(i)
+           for i, name in enumerate(("tx", "ty", "tz"))},
+        "netz": lambda s: _r_cross_f(_projectile(s), (0, -s.m * s.g, 0))[2],
+        "Lx": lambda s: s.m * _r_cross_f(_projectile(s), [c.diff(TIME) for c in _projectile(s)])[0],
+        "Lz": lambda s: s.m * _r_cross_f(_projectile(s), [c.diff(TIME) for c in _projectile(s)])[2],
+        "tpx": lambda s: _r_cross_f(_from(_projectile(s), (0, s.H, s.D)), (0, -s.m * s.g, 0))[0],
+        "Lpx": lambda s: s.m * _r_cross_f(_from(_projectile(s), (0, s.H, s.D)), [c.diff(TIME) for c in _projectile(s)])[0],
+    },
+    # Kleppner & Kolenkow 2nd ed., ch. 7, the conical pendulum: about the pivot, tau = dL/dt is horizontal, of size
+    # m g l sin(alpha) (the weight's; the string's passes through the pivot); L = m l^2 omega sin(alpha), its vertical
+    # part m l^2 omega sin(alpha)^2. alpha lies in (0, pi/2): sin(alpha) = |sin(alpha)|, as derive writes it.
+    "conical_pendulum_torque": {
+        "tw": lambda s: s.m * s.g * s.l * sp.Abs(sp.sin(s.alpha)), "net": lambda s: s.m * s.g * s.l * sp.Abs(sp.sin(s.alpha)),
+        "nety": lambda s: sp.Integer(0),
+        "L": lambda s: s.m * s.l**2 * _conical_rate(s) * sp.Abs(sp.sin(s.alpha)),
+        "Ly": lambda s: s.m * s.l**2 * _conical_rate(s) * sp.sin(s.alpha) ** 2,
+    },
 }
 #: The direction in words each directed answer is given with, in every variant.
 DIRECTIONS = {("rod_hinge_torques", "tau"): "clockwise", ("rod_hinge_torques", "netc"): "clockwise",
@@ -392,3 +459,54 @@ def test_a_torques_worked_solution_names_no_cord_by_its_key():
     assert set(named) >= {"tau_1", "tau_2"} and not any("rope" in n for n in named)
     out = run_derive("solve", str(ASKS / "atwood_pulley_torques.yaml")).stdout
     assert "rope" not in out.split("Answers:")[0] and "the cord on the pulley" in out
+
+
+def test_a_particles_torque_in_space_is_the_rate_of_its_angular_momentum():
+    """Serway & Jewett ch. 11: about a fixed point tau = dL/dt, component by component, the torque module's key
+    against the time derivative of the angular momentum module's; under gravity alone the net torque is the weight's."""
+    solution = Solution(load(str(ASKS / "projectile_torque_3d.yaml")))
+    assert sp.simplify(solution.expression("Lz").diff(TIME) - solution.expression("netz")) == 0
+    assert sp.simplify(solution.expression("Lx").diff(TIME) - solution.expression("tx")) == 0
+    assert solution.expression("netz") == solution.expression("tz") != 0
+    # about a fixed point off the launch point too: the weight's torque is the rate of L about it
+    assert sp.simplify(solution.expression("Lpx").diff(TIME) - solution.expression("tpx")) == 0
+
+
+@pytest.mark.parametrize("ask, extra, field, message", [
+    ("particle.push.torque", "about: [0, 0, 0]", "ask.q.of", "is a vector: ask particle.push.torque.x|y|z|magnitude"),
+    ("particle.torque.magnitud", "about: [0, 0, 0]", "ask.q.of", "did you mean 'magnitude'"),
+    ("particle.weight.torque.x", "about: [0, 0, 0]", "ask.q.of", "bears no force 'weight' (no gravity)"),
+    ("particle.coil.torque.x", "about: [0, 0, 0]", "ask.q.of", "the torque of the coil on a body on a path is not modelled"),
+    ("particle.push.torque.x", "about: particle", "ask.q.about", "taken about a fixed point: [x, y, z]"),
+    ("particle.push.torque.x", "about: [0, 0, 0, 0]", "ask.q.about", "taken about a fixed point: [x, y, z]"),
+    ("particle.push.torque.x", "", "ask.q.about", "give about: [x, y, z]"),
+    ("particle.speed", "about: [0, 0, 0]", "ask.q.about", "only a torque or a particle's angular momentum"),
+    ("particle.angular_momentum.x", "about: particle", "ask.q.about", "taken about a fixed point: [x, y, z]"),
+])
+def test_a_particles_torque_in_space_refuses_what_it_does_not_model(tmp_path, ask, extra, field, message):
+    """One line naming the file and the field, exit 2: a torque is a vector (a component or its size), of the net
+    force, the weight (with gravity) or a given force, about a fixed point; a spring on a body on a path is not modelled."""
+    head = (ASKS / "force_on_particle_torque_3d.yaml").read_text().split("ask:")[0]
+    head = head.replace("    - force: {on: particle, magnitude: F, name: push}\n", "    - force: {on: particle, magnitude: F, name: push}\n"
+                        "    - spring: {between: [particle, [a, 0]], stiffness: F/a, name: coil}\n")
+    path = tmp_path / "p.yaml"
+    path.write_text(head + f"ask:\n  q: {{meaning: a torque, of: {ask}, unit: N*m{', ' + extra if extra else ''}}}\n"
+                    "question: |\n  Find it.\n")
+    result = run_derive("solve", str(path))
+    assert result.returncode == 2 and f"{path}: {field}" in result.stderr and message in result.stderr, result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_a_component_in_space_has_its_axis_sign_where_the_question_names_the_axis(tmp_path):
+    """The signs check of derive check: a negative z component passes where the z axis is named, and is refused,
+    naming the ask, where neither the question nor the meaning names it."""
+    from derive.checks import signs
+
+    text = (ASKS / "force_in_plane_torque_vector.yaml").read_text()
+    assert signs.unstated(Solution(load(str(ASKS / "force_in_plane_torque_vector.yaml")))) == []
+    path = tmp_path / "p.yaml"
+    path.write_text(text.replace("z component of the torque about the origin", "the torque about the origin along one line")
+                    .replace("its z component and its size", "one part and its size")
+                    .replace("height of the point above the plane", "height of the point").replace("z axis", "axis"))
+    found = signs.unstated(Solution(load(str(path))))
+    assert len(found) == 1 and found[0].startswith("ask.tz: ") and "names the z axis" in found[0], found

@@ -19,6 +19,7 @@ from derive.model.scene import Quantity
     ("rolling_kinetic_energy", "wheel.rolling.kinetic_energy", Quantity("rolling", "wheel", "kinetic_energy")),
     ("angular_momentum_quantization", "standing_wave.momentum", Quantity("standing_wave", None, "momentum")),
     ("circular_motion_L", "particle.acceleration.radial", Quantity("path", "particle", "acceleration.radial")),
+    ("circular_motion_L", "particle.torque.z", Quantity("particle_torque", "particle", "torque.z")),
 ])
 def test_a_module_claims_its_paths(problem, path, expected):
     assert quantities.parse(load(problem).scene, path) == expected
@@ -32,6 +33,8 @@ def test_a_module_claims_its_paths(problem, path, expected):
     ("disk_tilted_on_shaft", "disk.bearings.torqe.x", "did you mean"),
     ("rolling_kinetic_energy", "wheel.rolling.speed", "a rolling body has rolling.angular_velocity"),
     ("circular_motion_L", "particle.inertia", "a body on a path has"),
+    ("circular_motion_L", "particle.torque", "the torque on a body on a path is a vector: ask particle.torque.x"),
+    ("circular_motion_L", "particle.weight.torque.z", "the particle bears no force 'weight' (no gravity)"),
 ])
 def test_a_module_refuses_a_path_of_its_kind_that_names_nothing(problem, path, words):
     with pytest.raises(ValueError, match=words.replace("(", r"\(").replace(")", r"\)")):

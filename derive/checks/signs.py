@@ -1,7 +1,9 @@
 """No answer a student cannot know the sign of: an asked value that comes out negative where the
 question states no sign convention for it (a rod's angle "from the horizontal" of -1.22 rad, the
-"height of its center" -0.30 m below the pin) marks right answers wrong. `derive check` runs this
-over each problem at points of its ranges (the middle, then draws), where its conditions hold.
+"height of its center" -0.30 m below the pin) marks right answers wrong; a component of a vector in
+space (a torque's z component) has its axis's sign, where the question or the ask's meaning names the
+axis. `derive check` runs this over each problem at points of its ranges (the middle, then draws),
+where its conditions hold.
 
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
@@ -34,6 +36,10 @@ def unstated(solution) -> list[str]:
     for name, ask in problem.asks.items():
         if ask.sign is not None:
             continue
+        kind = quantities.KINDS.get(ask.quantity.kind)
+        axis = kind.axis_of(ask.quantity) if kind is not None else None
+        if axis is not None and re.search(rf"\b{axis}\b", f"{ask.meaning} {problem.question}"):
+            continue  # a component along an axis the question names: its sign is the axis's
         expression = solution.expression(name)
         if expression.atoms(AppliedUndef):  # a general result, r(t)^2 theta'(t)/2: no number in the key
             continue
@@ -45,6 +51,10 @@ def unstated(solution) -> list[str]:
                 value = numeric.evaluate(expression, values, 3)  # as the key evaluates it
             except (ValueError, ZeroDivisionError):  # no real value here: the key's own check says so
                 continue
+            if value is not None and value.startswith("-") and axis is not None:
+                found.append(f"ask.{name}: {value} (SI), a component along {axis}, where neither the question nor "
+                             f"the ask's meaning names the {axis} axis: say which component it is")
+                break
             if value is not None and value.startswith("-"):
                 found.append(f"ask.{name}: {value} (SI) where the question states no sign "
                              "convention: ask its magnitude (magnitude: true) with a meaning that says which way, "

@@ -44,17 +44,19 @@ ASK = Keys(meaning=Key("text", "what the answer is, in words", required=True),
                             "incline positive): the answer is then the component along the way it names positive; "
                             "without it a quantity with a direction is asked as its magnitude"),
            about=Key("any", "the point a torque is taken about: a joint's name (the point it holds), BODY (its "
-                            "center of mass), BODY.POINT, {BODY: [x, y]} or [x, y] (a fixed point)"),
+                            "center of mass), BODY.POINT, {BODY: [x, y]} or [x, y] (a fixed point); a particle's torque on a "
+                            "path in space, or its angular momentum: [x, y, z] (a fixed point; the origin by default for the angular momentum)"),
            **{"in": Key("name", "the state the quantity is asked in")})
 
 
 @dataclass(frozen=True)
 class Point:
     """A point an ask names (`about:`): a body's (`offset` in its frame, from its center of mass) or,
-    with `body` None, the ground's; `words` name it for a student ("the hinge")."""
+    with `body` None, the ground's (x, y; or x, y, z for a quantity in space, `fixed_point`); `words`
+    name it for a student ("the hinge")."""
 
     body: str | None
-    offset: tuple[sp.Expr, sp.Expr]
+    offset: tuple[sp.Expr, ...]
     words: str
 
 
@@ -69,13 +71,19 @@ def about(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity) -> 
     """
     kind = quantities.KINDS.get(quantity.kind)
     takes = kind is not None and "about" in kind.options
+    if raw is None and takes and kind.about_default is not None:
+        raw = list(kind.about_default)  # a particle's angular momentum: about the origin unless told
     if raw is None:
         if takes:
-            raise reader.fail(field, f"a {quantity.kind} is taken about a point: give about: a joint's name, BODY, "
-                                     "BODY.POINT, {BODY: [x, y]} or [x, y]")
+            raise reader.fail(field, f"a {quantity.kind} is taken about a point: give about: " + (
+                "[x, y, z] (a fixed point)" if kind.about_in_space else
+                "a joint's name, BODY, BODY.POINT, {BODY: [x, y]} or [x, y]"))
         return None
     if not takes:
-        raise reader.fail(field, "only a torque is taken about a point: leave about: out")
+        raise reader.fail(field, "only a torque or a particle's angular momentum in space is taken about a point: "
+                                 "leave about: out")
+    if kind.about_in_space:
+        return fixed_point(reader, raw, field)
     pins = {c.name: c for c in scene.constraints if isinstance(c, Pin)}
     if isinstance(raw, str) and raw in pins:
         return Point(pins[raw].body, pins[raw].offset, f"the {raw.replace('_', ' ')}")
@@ -87,6 +95,23 @@ def about(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity) -> 
         return Point(body, offset, f"the {body}'s {named}" if named and named != "center" else
                      f"the {body}'s center of mass")
     return Point(body, offset, f"a point of the {body}")
+
+
+def fixed_point(reader: Reader, raw, field: str) -> Point:
+    """`[x, y, z]`, or `[x, y]` in the plane z = 0: a point fixed in space, which a quantity in space is
+    taken about (a particle's torque on a path in space); a point of a body, which may move, is refused.
+
+    >>> fixed_point(Reader("x.yaml"), [0, 0], "ask.t.about")
+    Point(body=None, offset=(0, 0, 0), words='the origin')
+    >>> fixed_point(Reader("x.yaml"), "particle", "ask.t.about")
+    Traceback (most recent call last):
+    derive.core.errors.ProblemError: x.yaml: ask.t.about: a torque in space is taken about a fixed point: [x, y, z], or [x, y] (z = 0)
+    """
+    if not isinstance(raw, list) or len(raw) not in (2, 3):
+        raise reader.fail(field, "a torque in space is taken about a fixed point: [x, y, z], or [x, y] (z = 0)")
+    x, y, z = (*(reader.dimensioned(v, field, "m", "a coordinate") for v in raw), sp.Integer(0))[:3]
+    words = "the origin" if x == y == z == 0 else f"the point ({sp.sstr(x)}, {sp.sstr(y)}, {sp.sstr(z)})"
+    return Point(None, (x, y, z), words)
 
 
 

@@ -27,17 +27,18 @@ from derive.model import directions
 from derive.model.directions import Sense
 from derive.model.scene import Quantity
 from derive.quantities import (angular_impulse, bearings, center_of_mass, conical, distance, free_rotation, internal_forces,
-                               mass, moment_of_inertia, orbit, particle_angular_momentum, path, pivot_point, position_cm,
-                               rolling, rolls_on_edge, standing_wave, system, torque, turns)
+                               mass, moment_of_inertia, orbit, particle_angular_momentum, particle_torque, path,
+                               pivot_point, position_cm, rolling, rolls_on_edge, standing_wave, system, torque, turns)
 from derive.quantities.base import QuantityKind, StateChange, describe_capitalized
 
 __all__ = ["KINDS", "QuantityKind", "StateChange", "describe_capitalized", "directional", "parse", "sense"]
 
 
 #: Every quantity of this package, by kind, in the order they claim an ask's path (`parse`).
-KINDS: dict[str, QuantityKind] = {k.kind: k for k in (torque.TORQUE, turns.TURNS, distance.DISTANCE,
-                                                      center_of_mass.CENTER_OF_MASS, position_cm.POSITION_CM,
-                                                      conical.CONICAL, particle_angular_momentum.ANGULAR_MOMENTUM,
+KINDS: dict[str, QuantityKind] = {k.kind: k for k in (particle_torque.PARTICLE_TORQUE, torque.TORQUE, turns.TURNS,
+                                                      distance.DISTANCE, center_of_mass.CENTER_OF_MASS,
+                                                      position_cm.POSITION_CM, conical.CONICAL,
+                                                      particle_angular_momentum.ANGULAR_MOMENTUM,
                                                       standing_wave.STANDING_WAVE, internal_forces.INTERNAL_FORCES,
                                                       bearings.BEARINGS, angular_impulse.ANGULAR_IMPULSE,
                                                       pivot_point.PIVOT_POINT, rolls_on_edge.ROLLS_ON_EDGE,

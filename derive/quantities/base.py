@@ -42,7 +42,9 @@ class QuantityKind(ABC):
     (read in a state, `in: STATE`, as a change from the state it comes from), "optional" (at the
     placement at rest, or in a state) or "never"; sense: the words for a positive and a negative value (None: it points no way);
     routes: the two routes' names, in words, the key's first; options: the ask keys it needs
-    (`about:`), each required; exact_unit: asked in `unit` itself (turns in rev, where rad and
+    (`about:`), each required but where `about_default` gives the point; about_in_space: its `about:`
+    is a fixed point [x, y, z] (a particle's torque in space), not a point of the plane or of a body;
+    about_default: the point where the ask gives no `about:` (None: required); exact_unit: asked in `unit` itself (turns in rev, where rad and
     deg would be the same dimension); own_section: whether the worked solution gives it a section of
     its own (`steps`) that the student's route (derive.solution.textbook) may carry, or its steps are
     those of the derivation it is read from (a moment of inertia's integral, an orbit by Binet's
@@ -56,6 +58,8 @@ class QuantityKind(ABC):
     sense: ClassVar[tuple[str, str] | None] = None
     routes: ClassVar[tuple[str, str]]
     options: ClassVar[tuple[str, ...]] = ()
+    about_in_space: ClassVar[bool] = False
+    about_default: ClassVar[tuple | None] = None
     exact_unit: ClassVar[bool] = False  # asked in `unit` itself (turns in rev), not any unit of its dimension
     own_section: ClassVar[bool] = True
 
@@ -82,6 +86,11 @@ class QuantityKind(ABC):
         """The words for its two signs where what is asked of it points one way or the other: `sense`,
         whatever is asked, by default."""
         return self.sense
+
+    def axis_of(self, quantity: Quantity) -> str | None:
+        """The axis ("x", "y", "z") a component asked of it lies along: its sign is the axis's, which the
+        question or the ask's meaning names (derive.checks.signs); None (the default) for any other."""
+        return None
 
     def checks(self, solution, names: list[str]) -> list[Check] | None:
         """Its checks of the problem's asks `names`, every one of

@@ -1,15 +1,16 @@
-"""The angular momentum of a point mass on a path in space about the origin, as a vector:
+"""The angular momentum of a point mass on a path in space about a fixed point, as a vector:
 `BODY.angular_momentum.x|y|z|magnitude` for a body with `path: {cartesian: {x, y, z}}` (a particle
-at a given position and velocity: x0 + vx*t, ...), as a textbook asks it in components.
+at a given position and velocity: x0 + vx*t, ...), as a textbook asks it in components; about the
+origin, or `about: [x, y, z]`.
 
-    L = r x p = m r x v
+    L = (r - r_P) x p = m (r - r_P) x v
 
-Route 0 (the key's): the cross product of the position and the momentum, by components. Route 1,
-its check: sympy.physics.mechanics, a Particle at a Point located from the origin in an inertial
-frame, its angular_momentum about the origin.
+Route 0 (the key's): the cross product of the position from the point and the momentum, by
+components. Route 1, its check: sympy.physics.mechanics, a Particle at a Point located from the fixed
+point in an inertial frame, its angular_momentum about that point.
 
->>> ANGULAR_MOMENTUM.kind, ANGULAR_MOMENTUM.unit
-('particle_angular_momentum', 'kg*m^2/s')
+>>> ANGULAR_MOMENTUM.kind, ANGULAR_MOMENTUM.unit, ANGULAR_MOMENTUM.about_default
+('particle_angular_momentum', 'kg*m^2/s', (0, 0, 0))
 """
 from __future__ import annotations
 
@@ -23,12 +24,15 @@ COMPONENTS = ("x", "y", "z", "magnitude")
 
 
 class ParticleAngularMomentum(QuantityKind):
-    """A point mass's angular momentum about the origin, in space (see the module)."""
+    """A point mass's angular momentum about a fixed point, in space (see the module)."""
 
     kind = "particle_angular_momentum"
     symbol = "L"
     unit = "kg*m^2/s"
     routes = ("the cross product m r x v by components", "sympy.physics.mechanics' Particle.angular_momentum")
+    options = ("about",)
+    about_in_space = True
+    about_default = (0, 0, 0)
 
     def claims(self, scene, head: str, rest: str) -> Quantity | None:
         body = scene.bodies.get(head)
@@ -41,34 +45,40 @@ class ParticleAngularMomentum(QuantityKind):
 
     def value(self, solution, ask, route: int) -> sp.Expr:
         body = solution.scene.bodies[ask.quantity.target]
-        vector = _by_components(body) if route == 0 else _by_mechanics(body)
+        about = ask.about.offset
+        vector = _by_components(body, about) if route == 0 else by_mechanics(body, about)
         if ask.quantity.detail == "magnitude":
             return sp.simplify(sp.sqrt(vector.dot(vector)))
         return sp.simplify(vector["xyz".index(ask.quantity.detail)])
+
+    def axis_of(self, quantity: Quantity) -> str | None:
+        return None if quantity.detail == "magnitude" else quantity.detail
 
     def symbol_for(self, ask) -> str:
         return "L" if ask.quantity.detail == "magnitude" else f"L_{ask.quantity.detail}"
 
     def describe(self, ask) -> str:
         part = "the size" if ask.quantity.detail == "magnitude" else f"the {ask.quantity.detail} component"
-        return f"{part} of the {ask.quantity.target}'s angular momentum about the origin"
+        return f"{part} of the {ask.quantity.target}'s angular momentum about {ask.about.words}"
 
 
-def _by_components(body) -> sp.Matrix:
-    position = body.path.position3
+def _by_components(body, about) -> sp.Matrix:
+    position = body.path.position3 - sp.Matrix(about)
     return body.mass * position.cross(position.diff(TIME))
 
 
-def _by_mechanics(body) -> sp.Matrix:
+def by_mechanics(body, about=(0, 0, 0)) -> sp.Matrix:
+    """The body's angular momentum about the fixed point `about` (x, y, z), by sympy.physics.mechanics
+    (also the route of derive.quantities.particle_torque's tau = dL/dt)."""
     from sympy.physics.mechanics import Particle, Point, ReferenceFrame
 
     frame = ReferenceFrame("N")
-    origin = Point("O")
-    origin.set_vel(frame, 0)
-    x, y, z = body.path.position3
-    point = origin.locatenew("P", x * frame.x + y * frame.y + z * frame.z)
-    point.set_vel(frame, point.pos_from(origin).dt(frame))
-    momentum = Particle("p", point, body.mass).angular_momentum(origin, frame)
+    fixed = Point("O")
+    fixed.set_vel(frame, 0)
+    x, y, z = body.path.position3 - sp.Matrix(about)
+    point = fixed.locatenew("P", x * frame.x + y * frame.y + z * frame.z)
+    point.set_vel(frame, point.pos_from(fixed).dt(frame))
+    momentum = Particle("p", point, body.mass).angular_momentum(fixed, frame)
     return sp.Matrix([momentum.dot(frame.x), momentum.dot(frame.y), momentum.dot(frame.z)])
 
 
