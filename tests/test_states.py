@@ -918,6 +918,8 @@ ACROSS = "{when: {block.x: L/2, relative_to: board}}"
      "of a position"),
     ("{when: {block.x: L/2, relative_to: block}}", "scene.states.across.when.relative_to", "other than that one"),
     ("{when: {slack: rope, relative_to: board}}", "scene.states.across.when.relative_to", "goes with one position"),
+    # a newcomer's "how far in the first t1 seconds": no body named time, and what to state instead
+    ("{when: {time: 2}}", "scene.states.across.when.time", "a state at a given time is not modelled"),
 ])
 def test_a_wrong_place_relative_to_another_body_is_refused(tmp_path, when, field, words):
     assert words in refused(tmp_path, BOARD.replace(ACROSS, when), field)

@@ -76,6 +76,22 @@ EXPECTED = {
     # Serway & Jewett ch. 13: an ellipse from its periapsis r_p and the speed v_p there. The energy gives
     # a = GM r_p/(2 GM - r_p v_p^2); the farthest distance is 2a - r_p; Kepler's second law v_a r_a = v_p r_p;
     # the third, P = 2 pi sqrt(a^3/GM).
+    # Serway & Jewett 9th ed., ch. 10 (a rigid body under constant angular acceleration): a grindstone, a
+    # uniform disk I = M R^2/2 spinning at w0, slowed by a constant friction torque tau on its axle:
+    # alpha = tau/I (clockwise, against its counter-clockwise spin); omega^2 = w0^2 - 2 alpha dtheta gives the
+    # angle turned to rest I w0^2/(2 tau) (asked in turns, compared in rad), after t = I w0/tau.
+    "grindstone_slowed_by_friction": {
+        "alpha": lambda s: -2 * s.tau / (s.M * s.R**2),
+        "n": lambda s: s.M * s.R**2 * s.w0**2 / (4 * s.tau),
+        "t": lambda s: s.M * s.R**2 * s.w0 / (2 * s.tau),
+    },
+    # Halliday, Resnick & Walker 10th ed., ch. 15 (a physical pendulum, T = 2 pi sqrt(I/(m g h))): a rod of mass m
+    # and length L pivoted at its top, a disk of mass M and radius r fixed by its rim to its lower end;
+    # I = m L^2/3 + M r^2/2 + M (L + r)^2 by the parallel-axis theorem, h from the pivot to the center of mass.
+    "rod_disk_clock_pendulum": {
+        "P": lambda s: 2 * sp.pi * sp.sqrt((s.m * s.L**2 / 3 + s.M * s.r**2 / 2 + s.M * (s.L + s.r)**2)
+                                           / (s.g * (s.m * s.L / 2 + s.M * (s.L + s.r)))),
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),

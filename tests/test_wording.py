@@ -10,7 +10,7 @@ import re
 import pytest
 import sympy as sp
 
-from conftest import derived, student_solution
+from conftest import derived, student_solution, textbook
 from derive.core import library
 from derive.language.problem import load
 from derive.publishing import letters
@@ -126,3 +126,13 @@ def test_the_letters_give_way_only_to_a_clash():
     assert letters.printed({"theta": theta}, (), {turn}) == {turn: sp.Symbol("phi_rod", real=True)}
     assert letters.printed({"theta": theta, "phi": sp.Symbol("phi")}, (), {turn}) == {turn: sp.Symbol("psi_rod", real=True)}
     assert letters.printed({"alpha": theta}, (), {turn}) == {}
+
+
+def test_a_body_of_parts_is_called_what_it_is_never_an_abbreviated_key():
+    """A newcomer's clock pendulum (a rod and a disk, `pend:`) read "The pend turns about its pivot" in
+    its worked solution and its LMS feedback: a body of parts that swings from a pivot is the pendulum;
+    a key the question uses as a word (the ladder, the top) stays."""
+    words = Wording(load(textbook("rod_disk_clock_pendulum")))
+    assert words("The pend turns about its pivot") == "The pendulum turns about its pivot"
+    assert bodies(load("ladder_firefighter"))["ladder"] == "ladder"
+    assert bodies(load("elroys_beanie"))["outer"] == "outer body"  # turning in space, about its center: no pendulum

@@ -401,6 +401,10 @@ def _threshold_part(reader: Reader, kind: str, raw, field: str, constraints: lis
 def _state_entry(reader: Reader, key, value, field: str, bodies: dict[str, Body], kinds: dict) -> tuple:
     """(body, coordinate kind, value) from `BODY.angle: -pi/2` (or a rate)."""
     head, _, rest = str(key).partition(".")
+    if head == "time" and head not in bodies:
+        raise reader.fail(f"{field}.{key}", "a state at a given time is not modelled: state where the motion gets "
+                                            "(BODY.angle, BODY.x, a rate, or stops) and ask `of: time` there, or ask "
+                                            "that state's time back for the parameter it needs (find: with equals:)")
     if head not in bodies:
         raise reader.fail(f"{field}.{key}", no_such("body", head, bodies, "bodies"))
     if rest not in kinds or kinds[rest][0] == "theta" and not bodies[head].rotates:

@@ -176,6 +176,7 @@ class ProblemVariants:
         balance (derive.solution.textbook), each force drawn the way it acts, its symbol a magnitude
         (friction up the slope); none where the route is not written."""
         steps, route = self.solution.student_steps, self.solution.textbook_route
+        route = getattr(route, "along", None) or route  # the motion between states starts along the motion
         if steps is None or not isinstance(route, AlongMotion):  # a swing, an impact: no body's balance
             return {}
         names = textbook.names(self.solution)  # f for f^ball, then a letter given way (F_x for R_x beside R)

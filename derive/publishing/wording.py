@@ -101,7 +101,13 @@ def bodies(problem) -> dict[str, str]:
     for key, body in problem.scene.bodies.items():
         if key not in result:
             noun = shared[key] if shared[key] not in (None, "object", "body") else SHAPES.get(body.shape, "body")
-            word = re.fullmatch(r"[a-z]+", key) and not shared[key] and body.shape in ("custom", "composite", "box")
+            if noun == "body" and problem.scene.gravity is not None and any(
+                    isinstance(c, Pin) and c.body == key and c.to is None and any(x != 0 for x in c.offset)
+                    for c in problem.scene.constraints):
+                noun = "pendulum"  # a body of parts that swings under its weight from a pivot off its center
+            # a key that is a word of the question (the beam, the wheel), not an abbreviation (pend, cyl)
+            word = re.fullmatch(r"[a-z]+", key) and not shared[key] and body.shape in ("custom", "composite", "box") \
+                and re.search(rf"\b{key}\b", f"{problem.title} {problem.question}", re.I)
             rest[key] = f"{_place(key)} {noun}" if _place(key) else key if word else noun
     return {key: result.get(key) or _numbered(rest)[key] for key in problem.scene.bodies}
 

@@ -37,6 +37,7 @@ from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
 from derive.parts.contact import Contact
 from derive.solution.textbook_routes import TextbookRoute, state_route, top_route
+from derive.solution.uniform_route import uniform_route
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -64,7 +65,7 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
     pivot, a top's steady precession, its states: an impact, a skid), where every ask is one the
     student's route answers (None otherwise)."""
     if solution.scene.states:
-        return state_route(solution)
+        return state_route(solution) or uniform_route(solution, TextbookRoute)
     asks = solution.problem.asks.values()
     top = top_route(solution) if solution.scene.pivot_points else None
     if top is not None:
@@ -99,7 +100,8 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     if isinstance(along, SmallSwing):
         return {"Small oscillations about the pivot": list(along.steps)}
     if isinstance(along, TextbookRoute):
-        return {title: list(steps) for title, steps in along.sections.items()}
+        change = names(solution)
+        return {title: [_renamed(step, change) for step in steps] for title, steps in along.sections.items()}
     title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"
     result = {title: list(along.steps)}
     for ask in solution.problem.asks.values():
@@ -126,6 +128,7 @@ def names(solution) -> dict[sp.Symbol, sp.Symbol]:
     """How the student's route prints the engine's forces and its own symbols (`_plain_names`,
     `_clashes`): the free-body diagrams beside it label them so too."""
     along = solution.textbook_route
+    along = along.along if isinstance(along, TextbookRoute) else along
     if not isinstance(along, AlongMotion):
         return {}
     return {**_plain_names(solution, along), **_clashes(solution, along)}

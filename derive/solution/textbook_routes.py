@@ -44,6 +44,7 @@ class TextbookRoute:
     sections: dict[str, tuple]
     compared: tuple[tuple[str, sp.Expr, Callable[[], sp.Expr]], ...]
     principle: str
+    along: object = None  # the route along the motion it starts from (derive.mechanics.along_motion), if any
 
     def agreement(self, agree: Callable, failure: Callable) -> set[str]:
         """The methods by which each finding agrees with the engine's (`agree(a, b)`: a method, or None

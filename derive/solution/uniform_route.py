@@ -1,0 +1,253 @@
+"""The student's route from one state to the next at constant acceleration: the forces and torques
+along the motion (derive.mechanics.along_motion) give the acceleration a (or the angular
+acceleration alpha of a body turning on an axle), and the kinematics of constant acceleration take
+the motion from its start to where it stops or to where it has gone a given way:
+
+    v^2 = v_0^2 + 2 a d,    v = v_0 + a t        (omega, alpha and the angle theta for a turning body)
+
+as a solution manual solves a cylinder rolling up a slope until it stops (Serway & Jewett ch. 10) or
+a grindstone slowed by a constant friction torque (Serway & Jewett ch. 10, rigid body under constant
+angular acceleration). Offered only where the motion's acceleration along its way is constant: the
+engine's own states (derive.mechanics.states, by work and energy) must satisfy v^2 - v_0^2 = 2 a d
+at points of the ranges, and every ask must be one the kinematics answer; each of its findings is
+then compared with the key's (the check textbook_route).
+
+>>> from derive.language.problem import load
+>>> from derive.solution.answers import Solution
+>>> list(Solution(load("sphere_rolls_down")).textbook_route.sections)
+['Forces and torques along the motion', 'The motion at constant acceleration']
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.core.tidying import root, tidy
+from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion, definite
+from derive.numbers.agreement import agree
+from derive.solution.crosschecks import sample_points
+from derive.text.steps import Step
+
+#: The asks of the end state the kinematics answer: (kind, detail); and the forces there, where the motion
+#: runs the way it starts from rest (the forces along the motion found at the placement hold all the way).
+ANSWERED = {("time", None), ("speed", None), ("angular_velocity", None), ("distance", None), ("turns", None),
+            ("position", "x"), ("position", "y"), ("velocity", "x"), ("velocity", "y")}
+FORCES = {"force", "contact"}
+#: A contact's asks and the unknowns they read.
+CONTACT = {"normal_force": "normal", "friction": "friction"}
+#: The asks at the placement the forces along the motion answer.
+AT_PLACEMENT = {"acceleration", "angular_acceleration", "force", "contact"}
+
+
+def uniform_route(solution, compose):
+    """The route (built by `compose(sections, compared, principle, along)`: a TextbookRoute) of a scene
+    of one degree of freedom from its placement (at rest, or at given rates) to one state it reaches
+    at constant acceleration; None where the scene, its states or its asks are not such."""
+    states = solution.scene.states
+    ends = [s for s in states.values() if not s.rates and s.event is None]
+    if len(ends) != 1 or len(solution.regimes) != 1:
+        return None
+    (end,) = ends
+    start = states.get(end.start) if end.start is not None else None
+    if end.until not in (None, ("stops", None)) or end.nudge or end.relative_to is not None or end.rate \
+            or len(states) != 1 + (start is not None) or end.start is not None and (start is None or not start.rates):
+        return None
+    for ask in solution.problem.asks.values():
+        key = (ask.quantity.kind, ask.quantity.detail)
+        if ask.finds or ask.state is None and ask.quantity.kind not in AT_PLACEMENT \
+                or ask.state is not None and (ask.state != end.name or key not in ANSWERED
+                                              and ask.quantity.kind not in FORCES):
+            return None
+    try:
+        along = along_motion(solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
+                             solution._sample, solution._needed_unknowns() | solution._needed_unknowns(end.name))
+    except NotAlongALine:
+        return None
+    motion = _Kinematics(solution, along, start, end)
+    if not motion.uniform():
+        return None
+    steps = motion.steps()
+    if steps is None or any(not motion.same(value, solution.expression(name)) for name, value in motion.answers.items()):
+        return None  # an ask the kinematics read otherwise than the key (a signed component): the routes' solution
+    compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", None).raw[u]))
+                for u, value in along.values.items()]
+    compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
+    return compose({"Forces and torques along the motion": along.steps, "The motion at constant acceleration": steps},
+                   tuple(compared), "Newton's second law along the motion, then the kinematics of constant acceleration",
+                   along)
+
+
+class _Kinematics:
+    """The leading body's motion along its way, in the rate s' of derive.mechanics.along_motion (its
+    center's speed, or its rate of turning where it only turns): where it starts, how far it goes,
+    how fast it ends, each read from the engine's states; and the steps that find them."""
+
+    def __init__(self, solution, along: AlongMotion, start, end):
+        self.solution, self.along, self.end = solution, along, end
+        base = along.steps[-1].equations[0].lhs  # the route solves for the leading acceleration first
+        self.acceleration = along.own[base]
+        self.turning = base in {s for (_, kind), s in along.names.items() if kind == "alpha"}
+        self.leader = next(body for (body, _), s in along.names.items() if s == base)
+        coordinates = solution.coordinates.all
+        self.direction = {c: tidy(along.values[c.a] / self.acceleration) for c in coordinates}
+        self.lead = next(c for c in coordinates if self.direction[c] != 0)
+        rest = solution.coordinates.at_rest_in_reference()
+        first = solution.states[start.name].values if start is not None else rest
+        last = solution.states[end.name].values
+        scale = self.direction[self.lead]
+        self.rate0 = tidy(first.get(self.lead.u, rest[self.lead.u]) / scale)
+        self.rate1 = tidy(last[self.lead.u] / scale)
+        self.first, self.rest = first, rest
+        self.way = tidy((last[self.lead.q] - self.start_position(self.lead)) / scale)
+        self.answers: dict[str, sp.Expr] = {}
+
+    def _tidier(self, value: sp.Expr) -> sp.Expr:
+        """`value`, or the same expression as the key prints it where that is shorter (sqrt(sin^3)/sin
+        from a slope's length d sin(theta), where the key has sqrt(10 d g sin(theta)/7))."""
+        forms = [value] + ([root(tidy(value**2))] if self.solution._sample(value) > 0 else [])
+        forms += [self.solution.expression(ask.name) for ask in self.solution.problem.asks.values()
+                  if ask.state == self.end.name and ask.sign is None]
+        return min((form for form in forms if form is value or self.same(value, form)), key=sp.count_ops)
+
+    def start_position(self, coordinate) -> sp.Expr:
+        return self.first.get(coordinate.q, self.rest[coordinate.q])
+
+    def same(self, a: sp.Expr, b: sp.Expr) -> bool:
+        points = sample_points(self.solution.problem, sp.Tuple(a, b), count=3)
+        return agree(a, b, points=points) is not None
+
+    def uniform(self) -> bool:
+        """Whether the engine's states keep the acceleration found at the placement all the way:
+        v^2 - v_0^2 = 2 a d."""
+        return self.same(self.rate1**2 - self.rate0**2, 2 * self.acceleration * self.way)
+
+    def _symbol(self, names: tuple[str, ...], value: sp.Expr) -> sp.Symbol:
+        """The first of `names` that means nothing else in the problem: a parameter's name only where
+        it is the value itself (the slope's length d), an ask's only where it asks the value."""
+        problem = self.solution.problem
+        for name in names:
+            if name in problem.parameters:
+                if problem.parameters[name].symbol == value:
+                    return problem.parameters[name].symbol
+                continue
+            if name not in problem.asks or self.same(self.solution.expression(name), value):
+                return sp.Symbol(name)
+        raise AssertionError(names)
+
+    def steps(self) -> list[Step] | None:
+        """The kinematics to the end state, then each ask read from them (None where an ask is not)."""
+        sample = self.solution._sample
+        sign0 = 0 if self.rate0 == 0 else (1 if sample(self.rate0) > 0 else -1)
+        stops = self.end.until == ("stops", None)
+        if stops and sign0 >= 0:
+            return None
+        speed0 = definite(sp.Abs(self.rate0), sample)
+        found = {"v": self._tidier(definite(sp.Abs(self.rate1), sample)),
+                 "d": self._tidier(definite(sp.Abs(self.way), sample)),
+                 "t": self._tidier(definite(tidy((self.rate1 - self.rate0) / self.acceleration), sample))}
+        letters = {"v0": ("omega_0",) if self.turning else ("v_0", "u"), "v": ("omega", "omega_1") if self.turning
+                   else ("v", "v_1"), "d": ("Delta_theta", "phi") if self.turning else ("d", "s", "ell"), "t": ("t", "t_1")}
+        v, d, t = (self._symbol(letters[k], found[k]) for k in ("v", "d", "t"))
+        v0 = speed0 if isinstance(speed0, sp.Symbol) else self._symbol(letters["v0"], speed0)
+        a = self.along.steps[-1].equations[0].lhs
+        kinds = {ask.quantity.kind for ask in self.solution.problem.asks.values() if ask.state == self.end.name}
+        timed = "time" in kinds
+        moving = "turning" if self.turning else "moving"
+        if sign0 == 0:
+            text = f"The {self.leader} starts from rest and speeds up at the constant acceleration found"
+            relations = (sp.Eq(v**2, 2 * a * d), sp.Eq(v, a * t))
+        elif sign0 < 0:
+            text = f"The {self.leader} starts {moving} against the acceleration found, so it slows down at that constant rate"
+            relations = (sp.Eq(v**2, v0**2 - 2 * a * d), sp.Eq(v, v0 - a * t))
+        else:
+            text = f"The {self.leader} starts {moving} the way of the acceleration found, and speeds up at that constant rate"
+            relations = (sp.Eq(v**2, v0**2 + 2 * a * d), sp.Eq(v, v0 + a * t))
+        given = (sp.Eq(v0, speed0),) if sign0 and v0 != speed0 else ()
+        result = [Step(text, (*given, *(relations if timed else relations[:1])), role="equations")]
+        if stops:
+            solved = (sp.Eq(d, found["d"]),) + ((sp.Eq(t, found["t"]),) if timed else ())
+            result.append(Step(f"It stops where its {'rate of turning' if self.turning else 'speed'} has fallen to zero",
+                               solved, role="solve"))
+        else:
+            solved = ((sp.Eq(d, found["d"]),) if d != found["d"] else ()) + (sp.Eq(v, found["v"]),) + \
+                ((sp.Eq(t, found["t"]),) if timed else ())
+            result.append(Step("Where the state is reached", solved, role="solve"))
+        symbols = {"v": v, "d": d, "t": t}
+        for name, ask in self.solution.problem.asks.items():
+            if ask.state is None:
+                continue
+            if ask.quantity.kind in FORCES:
+                value = self._force(ask, sign0)
+            elif ask.quantity.kind in ("position", "velocity"):
+                value = self._component(name, ask, found, result)
+            else:
+                value = self._read(name, ask, found, symbols, result)
+            if value is None:
+                return None
+            self.answers[name] = value
+        return result
+
+    def _force(self, ask, sign0: int) -> sp.Expr | None:
+        """A force found along the motion, the same all the way where the motion runs the way it starts
+        from rest (a friction's sense would turn with the motion's)."""
+        if sign0 < 0:
+            return None
+        quantity, scene = ask.quantity, self.solution.dynamics_scene
+        if quantity.kind == "force":
+            unknown = scene.constraint(quantity.target).unknowns().get(quantity.detail)
+        else:
+            unknown = scene.contact_of(quantity.target).unknowns().get(CONTACT.get(quantity.detail))
+        if unknown not in self.along.values:
+            return None
+        return tidy(self.along.acting[unknown] * self.along.values[unknown])
+
+    def _component(self, name: str, ask, found: dict, steps: list) -> sp.Expr | None:
+        """A body's position or velocity component in the end state, along its share of the way."""
+        coordinate = self.solution.coordinates.of(ask.quantity.target, ask.quantity.detail)
+        share = self.direction[coordinate]
+        sense = 1 if self.solution._sample(self.rate1 if ask.quantity.kind == "velocity" else self.way) >= 0 else -1
+        if ask.quantity.kind == "velocity":
+            value = definite(tidy(sense * share * found["v"]), self.solution._sample)
+        else:
+            placed = self.solution.scene.bodies[ask.quantity.target].placed(ask.quantity.detail)
+            value = definite(tidy(placed + self.start_position(coordinate) + sense * share * found["d"]),
+                             self.solution._sample)
+        if ask.sign is None and not self.same(value, self.solution.expression(name)):
+            value = -value  # asked as a magnitude, its direction in words
+        if any(self.same(value, found[key]) for key in ("v", "d")):
+            return value  # the speed or the way found, already shown
+        steps.append(Step(f"Its {ask.quantity.detail} {'component' if ask.quantity.kind == 'velocity' else 'position'} "
+                          "there, along the way it went", (sp.Eq(sp.Symbol(name), value),), role="solve"))
+        return value
+
+    def _read(self, name: str, ask, found: dict, symbols: dict, steps: list) -> sp.Expr | None:
+        """An ask of the end state from the kinematics (its SI value): the time, the leading body's speed
+        or way, another body's (or the leader's turning) in proportion, and the turns, with the step that
+        says so."""
+        kind, target = ask.quantity.kind, ask.quantity.target
+        if kind == "time":
+            return found["t"]
+        coordinates, sample = self.solution.coordinates, self.solution._sample
+        if kind in ("speed", "distance"):
+            if self.turning:
+                return None
+            key = "v" if kind == "speed" else "d"
+            factor = definite(sp.sqrt(sum(self.direction[coordinates.of(target, k)] ** 2 for k in ("x", "y"))), sample)
+        else:  # a rate of turning, or the angle turned (in rad; asked in turns)
+            key = "v" if kind == "angular_velocity" else "d"
+            factor = definite(sp.Abs(self.direction[coordinates.of(target, "theta")]), sample)
+        value = tidy(factor * found[key])
+        symbol = sp.Symbol(name)
+        if kind == "turns":
+            steps.append(Step(_WORDS[kind].format(target=target),
+                              (sp.Eq(symbol, factor * symbols[key] / (2 * sp.pi)), sp.Eq(symbol, tidy(value / (2 * sp.pi)))),
+                              role="solve"))
+        elif factor != 1 or target != self.leader:
+            steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, factor * symbols[key]),
+                                                                   sp.Eq(symbol, value)), role="solve"))
+        return value
+
+
+_WORDS = {"speed": "The {target} moves in proportion, as the constraints tie it to the first",
+          "distance": "The {target} goes in proportion, as the constraints tie it to the first",
+          "angular_velocity": "The {target}'s rate of turning follows from the speed, as the constraints tie them",
+          "turns": "The number of turns is the angle turned over the angle of one turn"}
