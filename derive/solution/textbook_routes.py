@@ -29,6 +29,7 @@ from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, 
 from derive.mechanics.skidding import skidding
 from derive.mechanics.steady_top import PRECESSIONS, as_a_textbook_writes, steady_precession
 from derive.model.directions import TURNS
+from derive.numbers import intervals, range_forms
 from derive.parts.contact import Contact
 from derive.parts.rims import Rims
 from derive.parts.surfaces import Plane
@@ -96,8 +97,9 @@ IMPACT = {("angular_velocity", None): "omega", ("kinetic_energy_change", None): 
 
 
 def _skid_route(solution) -> TextbookRoute | None:
-    """One body launched without spin on a level floor with kinetic friction, asked about the skid
-    (from the launch) and the state where it grips."""
+    """One body launched on a level floor with kinetic friction, with or without spin (friction against
+    its bottom's sliding, backward or forward), asked about the skid (from the launch) and the state
+    where it grips."""
     states = solution.scene.states
     grip = [s for s in states.values() if s.until and s.until[0] == "grips"]
     if len(states) != 2 or len(grip) != 1 or len(solution.scene.bodies) != 1:
@@ -108,18 +110,23 @@ def _skid_route(solution) -> TextbookRoute | None:
     if start is None or contact is None or contact.rolling or contact.kinetic is None or "radius" not in body.sizes:
         return None
     surface = solution.scene.surfaces[contact.surface]
-    rates = {(k, v) for _, k, v in start.rates}
-    launch = next((v for k, v in rates if k == "x"), None)
-    if not isinstance(surface, Plane) or surface.angle != 0 or launch is None or ("theta", 0) not in rates \
-            or solution._sample(launch) <= 0:
+    rates = {k: v for _, k, v in start.rates}
+    launch, turning = rates.get("x"), rates.get("theta")
+    if not isinstance(surface, Plane) or surface.angle != 0 or launch is None or turning is None \
+            or _sign_over(solution, launch) != 1:
         return None
+    spin = -turning  # the way it rolls forward, +x: clockwise, against the engine's angle
+    sliding = _sign_over(solution, launch - body.sizes["radius"] * spin)  # its bottom's velocity over the floor
+    if sliding is None or spin != 0 and _sign_over(solution, spin) is None:
+        return None  # friction's direction, or the spin's, changes over the ranges: the engine's routes
     asks = solution.problem.asks
     for ask in asks.values():
         key = (ask.quantity.kind, ask.quantity.detail)
         if key not in SKID or ask.state != (start.name if key == ("acceleration", "x") else state.name):
             return None
-    energy = any(SKID[a.quantity.kind, a.quantity.detail] in ("K1", "lost") for a in asks.values())
-    skid = skidding(body.mass, body.inertia, body.sizes["radius"], contact.kinetic, solution.scene.gravity.g, launch, energy)
+    asked = {SKID[a.quantity.kind, a.quantity.detail] for a in asks.values()}
+    skid = skidding(body.mass, body.inertia, body.sizes["radius"], contact.kinetic, solution.scene.gravity.g, launch,
+                    spin, asked, sliding, spin != 0 and _sign_over(solution, spin) < 0)
     x, theta = (solution.coordinates.of(body.name, k).a for k in ("x", "theta"))
     engine = {x: skid.values["a"], theta: -skid.values["alpha"]}  # forward is +x: it turns clockwise
     compared = [(f"{a} by {route}", value, (lambda a=a, route=route: solution.in_state(route, start.name).raw[a]))
@@ -129,6 +136,15 @@ def _skid_route(solution) -> TextbookRoute | None:
                  for name, a in asks.items()]
     return TextbookRoute({"The skid, by Newton along the motion and the torque about the center": skid.steps},
                          tuple(compared), "Newton's second law along the motion and the torque about the center")
+
+
+def _sign_over(solution, expr: sp.Expr) -> int | None:
+    """+1 or -1 where `expr` keeps that strict sign over the whole box of the parameter ranges (proven
+    in balls, derive.numbers.intervals), None where it is not proven to."""
+    box = range_forms.box(solution.problem)
+    if not expr.free_symbols <= set(box):
+        return None
+    return 1 if intervals.positive_over(expr, box) else -1 if intervals.positive_over(-expr, box) else None
 
 
 def _impact_route(solution) -> TextbookRoute | None:
