@@ -27,7 +27,7 @@ from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
 from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, about_each_axle, slowed_to_rest
 from derive.mechanics.skidding import skidding
-from derive.mechanics.steady_top import PRECESSIONS, as_a_textbook_writes, steady_precession
+from derive.mechanics.steady_top import TOP_RATES, as_a_textbook_writes, steady_precession
 from derive.model.directions import TURNS
 from derive.numbers import intervals, range_forms
 from derive.parts.contact import Contact
@@ -60,9 +60,10 @@ class TextbookRoute:
 
 
 def top_route(solution) -> TextbookRoute | None:
-    """tau = Omega x L for a top's steady precessions, where every ask is one of them (None otherwise)."""
+    """tau = Omega x L for a top's steady precessions, and a fast top's nutation about them, where every
+    ask is one of them (None otherwise)."""
     asks = list(solution.problem.asks.values())
-    if not asks or any(a.quantity.kind != "pivot_point" or a.quantity.detail not in PRECESSIONS or a.state
+    if not asks or any(a.quantity.kind != "pivot_point" or a.quantity.detail not in TOP_RATES or a.state
                        for a in asks) or len({a.quantity.target for a in asks}) != 1:
         return None
     name = asks[0].quantity.target
