@@ -139,12 +139,27 @@ def test_the_compound_pendulum_swings_by_the_torque_about_its_pivot():
     assert sum(len(s.equations) for s in steps) <= 8
 
 
-@pytest.mark.parametrize("problem_id", ["kepler_orbit"])
-def test_problems_outside_the_route_keep_the_engines_routes(problem_id):
-    """An orbit, a ball launched with backspin, a top's nutation: not (yet) a student's route; their
-    worked solutions show the engine's derivation as before."""
-    solution = Solution(load(problem_id))
-    assert solution.student_steps is None and solution.steps() is not None
+def test_keplers_orbit_by_the_conservation_of_angular_momentum_and_of_energy_at_its_turning_points():
+    """Taylor, Classical Mechanics, ch. 8, and Kleppner & Kolenkow 2nd ed., ch. 10 (the Kepler problem):
+    r_p = a (1 - e), r_a = a (1 + e); r_p v_p = r_a v_a (no torque about the Sun); v^2/2 - GM/r the same at
+    both (gravity conservative): l = sqrt(GM a (1 - e^2)), E = -GM/(2 a); Kepler's second law, the area
+    pi a b swept at l/2: P = 2 pi sqrt(a^3/GM)."""
+    (steps,) = Solution(load("kepler_orbit")).student_steps.values()
+    openings = ["The Sun is at a focus", "Conservation of angular momentum", "Conservation of energy", "Solving the two",
+                "The energy per unit mass", "Kepler's second law"]
+    assert [next((o for o in openings if s.text.startswith(o)), s.text) for s in steps] == openings
+    GM, a = _symbols("GM", "a")
+    e = sp.Symbol("e", real=True)
+    rp, ra, vp, va = _symbols("r_p", "r_a", "v_p", "v_a")
+    assert _same(_found(steps, "r_p"), a * (1 - e)) and _same(_found(steps, "r_a"), a * (1 + e))
+    (momentum,) = steps[1].equations
+    assert _same(momentum.lhs - momentum.rhs, rp * vp - ra * va)
+    (energy,) = steps[2].equations
+    assert _same(energy.lhs - energy.rhs, vp**2 / 2 - GM / rp - va**2 / 2 + GM / ra)
+    assert _same(_found(steps, "l") ** 2, GM * a * (1 - e**2))
+    assert _same(_found(steps, "E"), -GM / (2 * a))
+    assert _same(_found(steps, "P"), 2 * sp.pi * sp.sqrt(a**3 / GM))
+    assert sum(len(s.equations) for s in steps) == 9
 
 
 def test_the_solutions_pdf_shows_the_route_and_the_proof_in_an_appendix(tmp_path):
@@ -418,7 +433,7 @@ def test_a_sticky_impact_on_a_free_sphere_keeps_momentum_and_the_angular_momentu
 
 
 def test_the_new_routes_agree_with_both_engine_routes_in_derive_check():
-    problems = ("top_precession_exact", "top_two_precessions", "skid_to_roll", "bowling_ball_skids", "cue_ball_backspin", "clutch_disks_brake",
+    problems = ("top_precession_exact", "top_two_precessions", "kepler_orbit", "skid_to_roll", "bowling_ball_skids", "cue_ball_backspin", "clutch_disks_brake",
                 "sticky_impact_free")
     done = run_derive("check", *problems)
     assert done.returncode == 0, done.stderr

@@ -26,6 +26,8 @@ import sympy as sp
 from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
 from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, about_each_axle, slowed_to_rest
+from derive.mechanics import orbits
+from derive.mechanics.orbit_by_conservation import DETAILS, by_conservation
 from derive.mechanics.skidding import skidding
 from derive.mechanics.steady_top import TOP_RATES, as_a_textbook_writes, steady_precession
 from derive.model.directions import TURNS
@@ -81,6 +83,34 @@ def top_route(solution) -> TextbookRoute | None:
                      for a in asks for route in ("lagrange", "newton_euler"))
     return TextbookRoute({"Steady precession, by the torque about the tip": steps}, compared,
                          "the torque about the tip, tau = Omega x L")
+
+
+def orbit_route(solution) -> TextbookRoute | None:
+    """An ellipse given by its semi-major axis and eccentricity, by the conservation of angular momentum
+    and of energy at its closest and farthest points, where every ask is one of what that finds (None
+    otherwise). Its angular momentum is compared with each engine route's: the one that makes the two
+    distances turning points of the route's radial equation (no net change of the radial speed between them)."""
+    orbit, asks = solution.scene.orbit, solution.problem.asks
+    if orbit.semi_major_axis is None or orbit.periapsis_speed is not None or not asks \
+            or any(a.quantity.kind != "orbit" or a.quantity.detail not in DETAILS for a in asks.values()):
+        return None
+    route = by_conservation(orbit.GM, orbit.semi_major_axis, orbit.eccentricity, {a.quantity.detail for a in asks.values()})
+    compared = [(f"the angular momentum by {way}", route.values["angular_momentum"],
+                 (lambda way=way: _turning_momentum(orbit.GM, route.values["periapsis"], route.values["apoapsis"], way)))
+                for way in ("lagrange", "newton_euler")]
+    compared += [(name, route.values[a.quantity.detail], (lambda name=name: solution.expression(name)))
+                 for name, a in asks.items()]
+    return TextbookRoute({"The orbit, by the conservation of angular momentum and of energy": route.steps},
+                         tuple(compared), "the conservation of angular momentum and of energy at the turning points")
+
+
+def _turning_momentum(GM, near, far, way: str) -> sp.Expr:
+    """The angular momentum per unit mass for which `near` and `far` are the turning points of the radial
+    equation by `way` (derive.mechanics.orbits): the radial acceleration integrated between them is zero."""
+    l = sp.Symbol("l", positive=True)
+    change = sp.integrate(orbits.radial_acceleration(GM, l, way), (orbits.r, near, far))
+    (value,) = [x for x in sp.solve(change, l) if x.is_positive is not False]
+    return value
 
 
 def state_route(solution) -> TextbookRoute | None:
