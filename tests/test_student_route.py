@@ -8,7 +8,7 @@ equations, and the result against the closed form the text prints (written here,
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import run_derive, textbook
 from derive.language.problem import load
 from derive.solution.answers import Solution
 
@@ -160,6 +160,54 @@ def test_keplers_orbit_by_the_conservation_of_angular_momentum_and_of_energy_at_
     assert _same(_found(steps, "E"), -GM / (2 * a))
     assert _same(_found(steps, "P"), 2 * sp.pi * sp.sqrt(a**3 / GM))
     assert sum(len(s.equations) for s in steps) == 9
+
+
+@pytest.mark.parametrize("stem, inertia, kappa", [
+    # Morin, Introduction to Classical Mechanics, ch. 8: a solid hemisphere rocking without slipping, its center
+    # of mass d = 3R/8 below its center: I_P = I_cm + m (R - d)^2 = 13 m R^2/20, kappa = m g d, omega^2 = 15 g/(26 R)
+    ("hemisphere_rocking", lambda m, R: sp.Rational(13, 20) * m * R**2, lambda m, g, R: 3 * m * g * R / 8),
+    # Morin ch. 8: a half-cylinder, d = 4R/(3 pi), I_cm = m R^2/2 - m d^2: I_P = m R^2 (3/2 - 8/(3 pi))
+    ("half_cylinder_rocking", lambda m, R: m * R**2 * (sp.Rational(3, 2) - 8 / (3 * sp.pi)),
+     lambda m, g, R: 4 * m * g * R / (3 * sp.pi)),
+])
+def test_a_body_rocking_on_its_round_face_turns_about_its_point_of_contact(stem, inertia, kappa):
+    """Morin, ch. 8 (and Kleppner & Kolenkow 2nd ed., ch. 7, the instantaneous axis): rocking without
+    slipping, the body turns about its point of contact, at rest for the moment; the weight's torque
+    about it is -m g d sin(theta) ~ -kappa theta; I_P theta'' = -kappa theta. Before, the worked
+    solution printed each route's equations "at rest", which tell a student nothing."""
+    (title, steps), = Solution(load(textbook(stem))).student_steps.items()
+    assert title == "Small oscillations about the point of contact"
+    assert "rocks without slipping" in steps[0].text and "parallel-axis theorem" in steps[0].text and "torque of the loads about the point of contact" in steps[1].text
+    assert steps[2].text.startswith("Newton's second law for the rotation about the point of contact")
+    m, g, R = _symbols("m", "g", "R")
+    assert _same(_found(steps, "I_P"), inertia(m, R)) and _same(_found(steps, "kappa"), kappa(m, g, R))
+    assert _same(_found(steps, "omega") ** 2, kappa(m, g, R) / inertia(m, R))
+    assert sum(len(s.equations) for s in steps) == 9
+
+
+def test_the_puck_pulled_through_the_hole_keeps_its_angular_momentum_about_the_hole():
+    """Serway & Jewett 9th ed., ch. 11 (a puck on a frictionless table pulled in through a hole: the cord's
+    force points at the hole, so m r1 v1 = m r2 v; the pull's work is the change of kinetic energy,
+    W = m v1^2 ((r1/r2)^2 - 1)/2; on the smaller circle T = m v^2/r2 = m v1^2 r1^2/r2^3)."""
+    (title, steps), = Solution(load(textbook("puck_pulled_through_hole"))).student_steps.items()
+    assert title == "The pull, by the angular momentum about the hole"
+    openings = ["Conservation of angular momentum about the hole", "The work-energy theorem",
+                "Newton's second law toward the hole"]
+    assert [next((o for o in openings if s.text.startswith(o)), s.text) for s in steps] == openings
+    m, r1, r2, v1, v = _symbols("m", "r1", "r2", "v1", "v")
+    law = steps[0].equations[0]
+    assert _same(law.lhs - law.rhs, m * r1 * v1 - m * r2 * v)
+    assert _same(_found(steps, "v"), r1 * v1 / r2)
+    assert _same(_found(steps, "W"), m * v1**2 * ((r1 / r2)**2 - 1) / 2)
+    assert _same(_found(steps, "T"), m * v1**2 * r1**2 / r2**3)
+    assert sum(len(s.equations) for s in steps) == 6
+
+
+def test_the_rocking_and_the_pull_agree_with_both_engine_routes_in_derive_check():
+    files = [str(textbook(stem)) for stem in ("hemisphere_rocking", "half_cylinder_rocking", "puck_pulled_through_hole")]
+    done = run_derive("check", *files)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.count("textbook_route") == len(files)
 
 
 def test_the_solutions_pdf_shows_the_route_and_the_proof_in_an_appendix(tmp_path):

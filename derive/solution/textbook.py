@@ -99,7 +99,7 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     if along is None:
         return None
     if isinstance(along, SmallSwing):
-        return {"Small oscillations about the pivot": list(along.steps)}
+        return {f"Small oscillations about {along.about}": list(along.steps)}
     if isinstance(along, TextbookRoute):
         return {title: list(steps) for title, steps in along.sections.items()}
     title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"

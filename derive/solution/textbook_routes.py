@@ -23,11 +23,13 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.tidying import tidy
 from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
 from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, about_each_axle, slowed_to_rest
 from derive.mechanics import orbits
 from derive.mechanics.orbit_by_conservation import DETAILS, by_conservation
+from derive.mechanics.pulled_in import pulled_in
 from derive.mechanics.skidding import skidding
 from derive.mechanics.steady_top import TOP_RATES, as_a_textbook_writes, steady_precession
 from derive.model.directions import TURNS
@@ -116,7 +118,7 @@ def _turning_momentum(GM, near, far, way: str) -> sp.Expr:
 def state_route(solution) -> TextbookRoute | None:
     """The route of a scene's states: a skid that ends in rolling, or an impact (and a braking after
     it), where every ask is one of what it finds (None otherwise)."""
-    return _skid_route(solution) or _impact_route(solution)
+    return _skid_route(solution) or _impact_route(solution) or _pull_route(solution)
 
 
 #: What each route's findings answer: (the ask's kind, detail) -> the finding's name.
@@ -167,6 +169,42 @@ def _skid_route(solution) -> TextbookRoute | None:
                  for name, a in asks.items()]
     return TextbookRoute({"The skid, by Newton along the motion and the torque about the center": skid.steps},
                          tuple(compared), "Newton's second law along the motion and the torque about the center")
+
+
+#: What the pull's route finds: (the ask's kind, detail) -> the finding's name.
+PULL = {("speed", None): "speed", ("kinetic_energy_change", None): "work", ("force", "tension"): "tension"}
+
+
+def _pull_route(solution) -> TextbookRoute | None:
+    """A point mass circling a hole at the end of a cord through it, pulled in slowly to a smaller circle,
+    asked its speed, the pull's work and the cord's tension there."""
+    states = solution.scene.states
+    pulls = [s for s in states.values() if s.event is not None and s.event.kind == "pull"]
+    if len(states) != 2 or len(pulls) != 1 or len(solution.scene.bodies) != 1 or len(solution.scene.constraints) != 1 \
+            or solution.scene.loads:  # on a level table: no load in its plane
+        return None
+    (state,), (body,) = pulls, solution.scene.bodies.values()
+    start, cord = states.get(state.start), solution.scene.constraint(state.event.joint)
+    holes = [a.offset for a in cord.path if a.body is None]
+    if start is None or body.shape != "point" or len(holes) != 1 or len(cord.path) != 2:
+        return None
+    velocity = sp.Matrix([next((v for _, k, v in start.rates if k == axis), 0) for axis in ("x", "y")])
+    reach = sp.Matrix(body.at) - sp.Matrix(holes[0])
+    if tidy(velocity.dot(reach)) != 0 or any(k not in ("x", "y") for _, k, _ in start.rates):
+        return None  # not circling: a speed along the cord too
+    asks = solution.problem.asks
+    if any(a.state != state.name or PULL.get((a.quantity.kind, a.quantity.detail)) is None
+           or a.quantity.target not in (None, body.name, cord.name) for a in asks.values()):
+        return None
+    route = pulled_in(body.mass, tidy(sp.sqrt(reach.dot(reach))), state.event.length,
+                      tidy(sp.sqrt(velocity.dot(velocity))), {PULL[a.quantity.kind, a.quantity.detail] for a in asks.values()}, body.name)
+    after = solution.states[state.name].values
+    x, y = (solution.coordinates.of(body.name, k).u for k in ("x", "y"))
+    compared = [("the speed after the pull", route.values["speed"], lambda: sp.sqrt(after[x]**2 + after[y]**2))]
+    compared += [(name, route.values[PULL[a.quantity.kind, a.quantity.detail]], (lambda name=name: solution.expression(name)))
+                 for name, a in asks.items()]
+    return TextbookRoute({"The pull, by the angular momentum about the hole": route.steps}, tuple(compared),
+                         "the angular momentum about the hole, and the work-energy theorem")
 
 
 def _sign_over(solution, expr: sp.Expr) -> int | None:
