@@ -210,6 +210,37 @@ def test_the_rocking_and_the_pull_agree_with_both_engine_routes_in_derive_check(
     assert done.stdout.count("textbook_route") == len(files)
 
 
+def test_the_least_height_for_the_loop_is_newton_at_its_top_and_energy_from_the_release():
+    """Serway & Jewett 9th ed., ch. 8, and Halliday 10th ed., ch. 8 (the loop-the-loop: at the top
+    m g + N = m v^2/R, N >= 0 gives v^2 >= g R, energy m g (h - 2R) = m v^2/2: h = 5R/2); Halliday ch. 11
+    (a small solid sphere that rolls: + I omega^2/2 with omega = v/r, h = 27R/10). Before, `derive solve`
+    printed each route's equations "at rest" and the worked solution the engine's coordinates."""
+    sections = Solution(load("loop_the_loop")).student_steps
+    assert len(sections) == 2
+    openings = ["Newton's second law toward the center of the loop", "It stays on the track while",
+                "Energy is conserved from the release", "With the least speed at the top"]
+    R, g, m, r = _symbols("R", "g", "m", "r")
+    N, v, omega = sp.Symbol("N", real=True), *_symbols("v", "omega")
+    for steps, height in zip(sections.values(), (5 * R / 2, 27 * R / 10)):
+        assert [next((o for o in openings if s.text.startswith(o)), s.text) for s in steps] == openings
+        top = steps[0].equations[0]
+        assert _same(top.lhs - top.rhs, N + m * g - m * v**2 / R)
+        assert _same(_found(steps, "v"), sp.sqrt(g * R)) and _same(_found(steps, "h"), height)
+    rolling = list(sections.values())[1][2].equations
+    assert _same(rolling[0].rhs, v / r) and _same(rolling[1].rhs, m * v**2 / 2 + m * r**2 * omega**2 / 5)
+    assert sum(len(s.equations) for steps in sections.values() for s in steps) == 9
+
+
+def test_the_loops_approximate_ask_is_one_line_after_the_exact_one():
+    """loop_the_loop_ball (the notes' 27(R - r)/10, and 27R/10 with the ball's radius dropped): the second
+    answer is not derived again."""
+    exact, small = Solution(load("loop_the_loop_ball")).student_steps.values()
+    R, r = _symbols("R", "r")
+    assert _same(_found(exact, "h"), 27 * (R - r) / 10)
+    (step,) = small
+    assert _same(_found(small, "h"), 27 * R / 10) and "radius dropped" in step.text
+
+
 def test_the_solutions_pdf_shows_the_route_and_the_proof_in_an_appendix(tmp_path):
     out = tmp_path / "out"
     done = run_derive("sheet", "rolling_incline", "--out", str(out), "--to", "")
@@ -481,7 +512,8 @@ def test_a_sticky_impact_on_a_free_sphere_keeps_momentum_and_the_angular_momentu
 
 
 def test_the_new_routes_agree_with_both_engine_routes_in_derive_check():
-    problems = ("top_precession_exact", "top_two_precessions", "kepler_orbit", "skid_to_roll", "bowling_ball_skids", "cue_ball_backspin", "clutch_disks_brake",
+    problems = ("top_precession_exact", "top_two_precessions", "kepler_orbit", "loop_the_loop", "loop_the_loop_ball",
+                "skid_to_roll", "bowling_ball_skids", "cue_ball_backspin", "clutch_disks_brake",
                 "sticky_impact_free")
     done = run_derive("check", *problems)
     assert done.returncode == 0, done.stderr

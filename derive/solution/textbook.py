@@ -36,7 +36,7 @@ from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
 from derive.parts.contact import Contact
-from derive.solution.textbook_routes import TextbookRoute, orbit_route, state_route, top_route
+from derive.solution.textbook_routes import TextbookRoute, loop_route, orbit_route, state_route, top_route
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -67,6 +67,9 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
         return state_route(solution)
     if solution.scene.orbit is not None:
         return orbit_route(solution)
+    loop = loop_route(solution)
+    if loop is not None:
+        return loop
     asks = solution.problem.asks.values()
     top = top_route(solution) if solution.scene.pivot_points else None
     if top is not None:

@@ -28,6 +28,7 @@ from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
 from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, about_each_axle, slowed_to_rest
 from derive.mechanics import orbits
+from derive.mechanics.loop_top import loop_top
 from derive.mechanics.orbit_by_conservation import DETAILS, by_conservation
 from derive.mechanics.pulled_in import pulled_in
 from derive.mechanics.skidding import skidding
@@ -39,6 +40,7 @@ from derive.parts.rims import Rims
 from derive.parts.surfaces import Plane
 from derive.parts.torque import Torque
 from derive.solution.state_events import in_place
+from derive.text.steps import Step
 
 
 @dataclass(frozen=True)
@@ -85,6 +87,40 @@ def top_route(solution) -> TextbookRoute | None:
                      for a in asks for route in ("lagrange", "newton_euler"))
     return TextbookRoute({"Steady precession, by the torque about the tip": steps}, compared,
                          "the torque about the tip, tau = Omega x L")
+
+
+def loop_route(solution) -> TextbookRoute | None:
+    """The least release height that carries a body round a loop, by Newton's second law at the top, the
+    normal force not negative there, and energy from the release, where every ask is one (None
+    otherwise): a section for each ask, checked against each engine route's normal force at the top."""
+    asks = solution.problem.asks
+    if not asks or any(a.quantity.kind != "contact" or a.quantity.detail != "min_release_height" or a.state
+                       for a in asks.values()):
+        return None
+    taken = {p.symbol.name for p in solution.problem.parameters.values()}
+    sections, compared = {}, []
+    for name, ask in asks.items():
+        body, contact = solution.scene.bodies[ask.quantity.target], solution.scene.contact_of(ask.quantity.target)
+        if not contact.rolling and contact.has_friction:
+            return None  # friction takes energy on the way: the engine's routes
+        small = {x: 0 for x in ask.small}
+        radius = body.sizes.get("radius", sp.Integer(0))
+        rho = solution.scene.surfaces[contact.surface].path_radius(radius).xreplace(small)
+        plain = {old: sp.Symbol(new, positive=True) for old, new in ((body.mass, "m"), (radius, "r"))
+                 if isinstance(old, sp.Symbol) and old.name not in taken and new not in taken}  # m_ball -> m
+        steps, height = loop_top(body.mass, solution.scene.gravity.g, rho, body.inertia if contact.rolling else None,
+                                 radius, body.name)
+        if ask.exact in asks and set(ask.small) == {radius}:  # the exact ask's steps with the small sizes dropped: its last line only
+            steps = (Step(f"As above, with the {body.name}'s radius dropped beside the loop's", steps[-1].equations,
+                          role="solve"),)
+        sections[ask.meaning[0].upper() + ask.meaning[1:]] = tuple(
+            dataclasses.replace(step, equations=tuple(e.xreplace(plain) for e in step.equations)) for step in steps)
+        compared += [(f"{name} by {route}", height,
+                      (lambda target=ask.quantity.target, route=route, small=small:
+                       solution._release_height(target, route)[0].xreplace(small))) for route in ("lagrange", "newton_euler")]
+        compared.append((name, height, (lambda name=name: solution.expression(name))))
+    return TextbookRoute(sections, tuple(compared), "Newton's second law at the top of the loop and the conservation "
+                                                    "of energy")
 
 
 def orbit_route(solution) -> TextbookRoute | None:
