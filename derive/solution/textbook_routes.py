@@ -297,9 +297,8 @@ def _impact_route(solution) -> TextbookRoute | None:
     found = {**route.found}
     compared = [(str(u), value, (lambda u=u: solution.states[state.name].values[u])) for u, value in route.values.items()]
     for name, ask in asks.items():
-        if isinstance(made, Rims) and ask.quantity.kind == "angular_velocity":  # each disk's own rate
-            rate = route.values[solution.coordinates.of(ask.quantity.target, "theta").u]
-            compared.append((name, rate, (lambda name=name: solution.signed(name))))
+        if ask.quantity.kind == "angular_velocity" and ask.quantity.target in route.rates:  # a body's own, signed
+            compared.append((name, route.rates[ask.quantity.target], (lambda name=name: solution.signed(name))))
             continue
         key = "K0" if ask.state == start.name else "t" if ask.quantity.kind == "time" else "turn" \
             if ask.quantity.kind == "angle" else IMPACT[ask.quantity.kind, ask.quantity.detail]
