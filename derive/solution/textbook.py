@@ -6,13 +6,15 @@ along the motion and torques about the center of mass or a fixed pivot (derive.m
 the time down a slope from the constant acceleration; the least coefficient of friction from the
 friction and normal force found; statics by the balances of forces and of torques about the point
 that removes the most unknowns (derive.mechanics.statics); small oscillations about a pivot by
-tau = -kappa theta (derive.mechanics.small_swings); a top's steady precession by tau = Omega x L, a
-skid that ends in rolling, an impact by the angular momentum about the axle or about the free bodies'
-center of mass (derive.solution.textbook_routes). Lagrange's method and Newton–Euler stay as the proof (the
+tau = -kappa theta (derive.mechanics.small_swings; a body rocking on its round face, about its point
+of contact); a top's steady precession by tau = Omega x L, a skid that ends in rolling, an impact by
+the angular momentum about the axle or about the free bodies' center of mass, a cord pulled in through
+a hole, an ellipse by the conservation of angular momentum and energy at its turning points, the least
+height for a loop by Newton at its top and energy (derive.solution.textbook_routes). Lagrange's method and Newton–Euler stay as the proof (the
 instructor's verification): this route is a third one, which must agree with them
 (derive.solution.crosschecks: the check textbook_route).
 
-Where an ask lies outside these principles (a chain of states, an oscillation, an orbit), no
+Where an ask lies outside these principles (a longer chain of states, an oscillation's amplitude), no
 student route is written (`steps` is None) and the worked solution shows the two routes.
 
 >>> from derive.language.problem import load

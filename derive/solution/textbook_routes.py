@@ -2,8 +2,10 @@
 (derive.solution.textbook): a top's steady precession by tau = Omega x L (derive.mechanics.steady_top),
 a ball that skids and then rolls (derive.mechanics.skidding), an impact that sticks or locks by the
 angular momentum about the axle or, of free bodies, the momentum and the angular momentum about
-their center of mass (derive.mechanics.angular_momentum), and a pair on an axle braked to rest after
-a clutch locks.
+their center of mass (derive.mechanics.angular_momentum), a pair on an axle braked to rest after
+a clutch locks, a cord pulled in through a hole (derive.mechanics.pulled_in), an ellipse by the
+conservation of angular momentum and of energy (derive.mechanics.orbit_by_conservation) and the least
+height for a loop (derive.mechanics.loop_top).
 
 Each gives its sections and what it finds beside what the engine finds for the same thing (the
 rates or accelerations its two routes give, the answers the key prints): the check textbook_route
