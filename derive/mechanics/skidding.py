@@ -14,7 +14,7 @@ The engine finds the same motion from its equations of motion with kinetic frict
 >>> skid.values["time"], skid.values["speed"], skid.values["lost"]
 (2*v0/(7*g*mu), 5*v0/7, M*v0**2/7)
 >>> skidding(M, 2 * M * R**2 / 5, R, mu, g, v0, spin=-w0, asked={"speed"}).values["speed"]
--2*R*w0/7 + 5*v0/7
+(-2*R*w0 + 5*v0)/7
 """
 from __future__ import annotations
 
