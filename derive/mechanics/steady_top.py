@@ -93,22 +93,22 @@ def steady_precession(I1, I3, mass, g, distance, spin, tilt, asked: set[str]) ->
     return SteadyTop(tuple(steps), {d: rates[d] for d in TOP_RATES if d in asked and d in rates})
 
 
-def _nutation(I1, I3, spin, rate) -> Step:
+def _nutation(I1, I3, spin, frequency) -> Step:
     """The fast top's nutation (Kleppner & Kolenkow 1st ed., ch. 8, 2nd ed. ch. 7: the gyroscope's
     nutation at I_s omega_s / I_perp): the axis n tilted a little, u and w across its mean direction;
     L = I3 omega n + I1 n x n', so the components across are I3 omega u - I1 w' and I3 omega w + I1 u';
     the weight's torque, constant, moves only the mean direction (the precession), and the rates
     u', w' turn round at I3 omega / I1."""
-    t, n = sp.Symbol("t"), sp.Symbol("omega_n", positive=True)
-    u, w = sp.Function("u")(t), sp.Function("w")(t)
+    n = sp.Symbol("omega_n", positive=True)
+    rate = {name: sp.Symbol(name, real=True) for name in ("udot", "uddot", "wdot", "wddot")}  # printed with dots
     return Step("Nutation of the fast top: the axis wobbles a little about its mean direction, by small angles u and w "
                 "in two planes at right angles across it. The angular momentum about the tip is then the spin's along "
                 "the tilted axis and the wobble's across it, the rate of each angle times the moment of inertia about a "
                 "transverse axis; its rate of change is the torque, whose constant part, the weight's, only moves the "
                 "mean direction (the steady precession). Across the axis, with the spin's angular momentum much the "
                 "larger, the wobble's rates turn round each other at the nutation frequency",
-                (sp.Eq(I1 * u.diff(t, 2), -I3 * spin * w.diff(t)), sp.Eq(I1 * w.diff(t, 2), I3 * spin * u.diff(t)),
-                 sp.Eq(n, rate)), role="solve")
+                (sp.Eq(I1 * rate["uddot"], -I3 * spin * rate["wdot"]), sp.Eq(I1 * rate["wddot"], I3 * spin * rate["udot"]),
+                 sp.Eq(n, frequency)), role="solve")
 
 
 def as_a_textbook_writes(I1: sp.Expr, tilt: sp.Expr, given: set[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
