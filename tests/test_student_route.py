@@ -8,7 +8,7 @@ equations, and the result against the closed form the text prints (written here,
 import pytest
 import sympy as sp
 
-from conftest import run_derive
+from conftest import run_derive, textbook
 from derive.language.problem import load
 from derive.solution.answers import Solution
 
@@ -139,12 +139,106 @@ def test_the_compound_pendulum_swings_by_the_torque_about_its_pivot():
     assert sum(len(s.equations) for s in steps) <= 8
 
 
-@pytest.mark.parametrize("problem_id", ["kepler_orbit", "cue_ball_backspin", "top_two_precessions"])
-def test_problems_outside_the_route_keep_the_engines_routes(problem_id):
-    """An orbit, a ball launched with backspin, a top's nutation: not (yet) a student's route; their
-    worked solutions show the engine's derivation as before."""
-    solution = Solution(load(problem_id))
-    assert solution.student_steps is None and solution.steps() is not None
+def test_keplers_orbit_by_the_conservation_of_angular_momentum_and_of_energy_at_its_turning_points():
+    """Taylor, Classical Mechanics, ch. 8, and Kleppner & Kolenkow 2nd ed., ch. 10 (the Kepler problem):
+    r_p = a (1 - e), r_a = a (1 + e); r_p v_p = r_a v_a (no torque about the Sun); v^2/2 - GM/r the same at
+    both (gravity conservative): l = sqrt(GM a (1 - e^2)), E = -GM/(2 a); Kepler's second law, the area
+    pi a b swept at l/2: P = 2 pi sqrt(a^3/GM)."""
+    (steps,) = Solution(load("kepler_orbit")).student_steps.values()
+    openings = ["The Sun is at a focus", "Conservation of angular momentum", "Conservation of energy", "Solving the two",
+                "The energy per unit mass", "Kepler's second law"]
+    assert [next((o for o in openings if s.text.startswith(o)), s.text) for s in steps] == openings
+    GM, a = _symbols("GM", "a")
+    e = sp.Symbol("e", real=True)
+    rp, ra, vp, va = _symbols("r_p", "r_a", "v_p", "v_a")
+    assert _same(_found(steps, "r_p"), a * (1 - e)) and _same(_found(steps, "r_a"), a * (1 + e))
+    (momentum,) = steps[1].equations
+    assert _same(momentum.lhs - momentum.rhs, rp * vp - ra * va)
+    (energy,) = steps[2].equations
+    assert _same(energy.lhs - energy.rhs, vp**2 / 2 - GM / rp - va**2 / 2 + GM / ra)
+    assert _same(_found(steps, "l") ** 2, GM * a * (1 - e**2))
+    assert _same(_found(steps, "E"), -GM / (2 * a))
+    assert _same(_found(steps, "P"), 2 * sp.pi * sp.sqrt(a**3 / GM))
+    assert sum(len(s.equations) for s in steps) == 9
+
+
+@pytest.mark.parametrize("stem, inertia, kappa", [
+    # Morin, Introduction to Classical Mechanics, ch. 8: a solid hemisphere rocking without slipping, its center
+    # of mass d = 3R/8 below its center: I_P = I_cm + m (R - d)^2 = 13 m R^2/20, kappa = m g d, omega^2 = 15 g/(26 R)
+    ("hemisphere_rocking", lambda m, R: sp.Rational(13, 20) * m * R**2, lambda m, g, R: 3 * m * g * R / 8),
+    # Morin ch. 8: a half-cylinder, d = 4R/(3 pi), I_cm = m R^2/2 - m d^2: I_P = m R^2 (3/2 - 8/(3 pi))
+    ("half_cylinder_rocking", lambda m, R: m * R**2 * (sp.Rational(3, 2) - 8 / (3 * sp.pi)),
+     lambda m, g, R: 4 * m * g * R / (3 * sp.pi)),
+])
+def test_a_body_rocking_on_its_round_face_turns_about_its_point_of_contact(stem, inertia, kappa):
+    """Morin, ch. 8 (and Kleppner & Kolenkow 2nd ed., ch. 7, the instantaneous axis): rocking without
+    slipping, the body turns about its point of contact, at rest for the moment; the weight's torque
+    about it is -m g d sin(theta) ~ -kappa theta; I_P theta'' = -kappa theta. Before, the worked
+    solution printed each route's equations "at rest", which tell a student nothing."""
+    (title, steps), = Solution(load(textbook(stem))).student_steps.items()
+    assert title == "Small oscillations about the point of contact"
+    assert "rocks without slipping" in steps[0].text and "parallel-axis theorem" in steps[0].text and "torque of the loads about the point of contact" in steps[1].text
+    assert steps[2].text.startswith("Newton's second law for the rotation about the point of contact")
+    m, g, R = _symbols("m", "g", "R")
+    assert _same(_found(steps, "I_P"), inertia(m, R)) and _same(_found(steps, "kappa"), kappa(m, g, R))
+    assert _same(_found(steps, "omega") ** 2, kappa(m, g, R) / inertia(m, R))
+    assert sum(len(s.equations) for s in steps) == 9
+
+
+def test_the_puck_pulled_through_the_hole_keeps_its_angular_momentum_about_the_hole():
+    """Serway & Jewett 9th ed., ch. 11 (a puck on a frictionless table pulled in through a hole: the cord's
+    force points at the hole, so m r1 v1 = m r2 v; the pull's work is the change of kinetic energy,
+    W = m v1^2 ((r1/r2)^2 - 1)/2; on the smaller circle T = m v^2/r2 = m v1^2 r1^2/r2^3)."""
+    (title, steps), = Solution(load(textbook("puck_pulled_through_hole"))).student_steps.items()
+    assert title == "The pull, by the angular momentum about the hole"
+    openings = ["Conservation of angular momentum about the hole", "The work-energy theorem",
+                "Newton's second law toward the hole"]
+    assert [next((o for o in openings if s.text.startswith(o)), s.text) for s in steps] == openings
+    m, r1, r2, v1, v = _symbols("m", "r1", "r2", "v1", "v")
+    law = steps[0].equations[0]
+    assert _same(law.lhs - law.rhs, m * r1 * v1 - m * r2 * v)
+    assert _same(_found(steps, "v"), r1 * v1 / r2)
+    assert _same(_found(steps, "W"), m * v1**2 * ((r1 / r2)**2 - 1) / 2)
+    assert _same(_found(steps, "T"), m * v1**2 * r1**2 / r2**3)
+    assert sum(len(s.equations) for s in steps) == 6
+
+
+def test_the_rocking_and_the_pull_agree_with_both_engine_routes_in_derive_check():
+    files = [str(textbook(stem)) for stem in ("hemisphere_rocking", "half_cylinder_rocking", "puck_pulled_through_hole")]
+    done = run_derive("check", *files)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.count("textbook_route") == len(files)
+
+
+def test_the_least_height_for_the_loop_is_newton_at_its_top_and_energy_from_the_release():
+    """Serway & Jewett 9th ed., ch. 8, and Halliday 10th ed., ch. 8 (the loop-the-loop: at the top
+    m g + N = m v^2/R, N >= 0 gives v^2 >= g R, energy m g (h - 2R) = m v^2/2: h = 5R/2); Halliday ch. 11
+    (a small solid sphere that rolls: + I omega^2/2 with omega = v/r, h = 27R/10). Before, `derive solve`
+    printed each route's equations "at rest" and the worked solution the engine's coordinates."""
+    sections = Solution(load("loop_the_loop")).student_steps
+    assert len(sections) == 2
+    openings = ["Newton's second law toward the center of the loop", "It stays on the track while",
+                "Energy is conserved from the release", "With the least speed at the top"]
+    R, g, m, r = _symbols("R", "g", "m", "r")
+    N, v, omega = sp.Symbol("N", real=True), *_symbols("v", "omega")
+    for steps, height in zip(sections.values(), (5 * R / 2, 27 * R / 10)):
+        assert [next((o for o in openings if s.text.startswith(o)), s.text) for s in steps] == openings
+        top = steps[0].equations[0]
+        assert _same(top.lhs - top.rhs, N + m * g - m * v**2 / R)
+        assert _same(_found(steps, "v"), sp.sqrt(g * R)) and _same(_found(steps, "h"), height)
+    rolling = list(sections.values())[1][2].equations
+    assert _same(rolling[0].rhs, v / r) and _same(rolling[1].rhs, m * v**2 / 2 + m * r**2 * omega**2 / 5)
+    assert sum(len(s.equations) for steps in sections.values() for s in steps) == 9
+
+
+def test_the_loops_approximate_ask_is_one_line_after_the_exact_one():
+    """loop_the_loop_ball (the notes' 27(R - r)/10, and 27R/10 with the ball's radius dropped): the second
+    answer is not derived again."""
+    exact, small = Solution(load("loop_the_loop_ball")).student_steps.values()
+    R, r = _symbols("R", "r")
+    assert _same(_found(exact, "h"), 27 * (R - r) / 10)
+    (step,) = small
+    assert _same(_found(small, "h"), 27 * R / 10) and "radius dropped" in step.text
 
 
 def test_the_solutions_pdf_shows_the_route_and_the_proof_in_an_appendix(tmp_path):
@@ -269,7 +363,8 @@ def _opening(steps) -> list[str]:
              "It rolls without slipping once": "rolling", "Then": "kinematics", "The kinetic energy": "energy",
              "No impulse from outside": "momentum", "Nor has any outside impulse a moment": "angular momentum",
              "The only impulse from outside the bodies acts at the axle": "angular momentum",
-             "Just after": "after", "Setting the two equal": "solve", "From the rate": "kinematics"}
+             "Just after": "after", "Setting the two equal": "solve", "From the rate": "kinematics",
+             "Nutation of the fast top": "nutation"}
     return [next((k for opening, k in kinds.items() if s.text.startswith(opening)), s.text) for s in steps]
 
 
@@ -297,6 +392,27 @@ def test_the_top_precesses_by_the_torque_about_its_tip_and_the_tops_condition():
     assert sum(len(s.equations) for s in steps) == 8
 
 
+def test_the_tops_two_precessions_are_the_roots_of_its_condition_and_the_fast_top_nutates_at_I3_omega_over_I1():
+    """Taylor, Classical Mechanics, ch. 10 (the heavy symmetric top: I1 Omega^2 cos(theta) - I3 omega3 Omega
+    + M g R = 0, a quadratic with a slow and a fast root); Kleppner & Kolenkow 1st ed., ch. 8 (2nd ed.
+    ch. 7: the gyroscope's nutation: I1 u'' = -I3 omega3 w', I1 w'' = I3 omega3 u', omega_n = I3 omega3/I1)."""
+    (steps,) = Solution(load("top_two_precessions")).student_steps.values()
+    assert _opening(steps) == ["torque", "momentum", "newton", "condition", "solve", "nutation"]
+    M, g, R, I1, I3, w, theta = _symbols("M", "g", "R", "I1", "I3", "omega3", "theta")
+    Omega = sp.Symbol("Omega", positive=True)
+    (condition,) = steps[3].equations
+    assert _same(condition.lhs - condition.rhs, I1 * Omega**2 * sp.cos(theta) - I3 * w * Omega + M * g * R)
+    for root in ("Omega_slow", "Omega_fast"):  # each a root of the condition
+        assert _same(sp.expand(condition.lhs.subs(Omega, _found(steps, root))), 0)
+    assert _same(_found(steps, "Omega_fast") - _found(steps, "Omega_slow"),
+                 sp.sqrt(I3**2 * w**2 - 4 * I1 * M * g * R * sp.cos(theta)) / (I1 * sp.cos(theta)))
+    uddot, wdot = (sp.Symbol(n, real=True) for n in ("uddot", "wdot"))
+    wobble = steps[-1].equations
+    assert _same(wobble[0].lhs - wobble[0].rhs, I1 * uddot + I3 * w * wdot)
+    assert _same(_found(steps, "omega_n"), I3 * w / I1)
+    assert sum(len(s.equations) for s in steps) == 9
+
+
 def test_a_fast_top_drops_the_precessions_own_angular_momentum_only_as_the_question_says():
     """Kleppner & Kolenkow 2nd ed., ch. 7 (the fast top: Omega = m g R/(I omega)); the question says
     "treating it as a fast top". Its tilt and transverse moment, which it leaves out, are written as a
@@ -313,9 +429,11 @@ def test_the_bowling_ball_skids_by_newton_along_the_lane_and_the_torque_about_it
     """Serway & Jewett, Physics for Scientists and Engineers 9th ed., ch. 10 (a bowling ball launched
     without spin: kinetic friction slows the center and spins the ball up until v = R omega); Kleppner &
     Kolenkow 2nd ed., ch. 7: t = 2 v0/(7 mu g), v = 5 v0/7, d = 12 v0^2/(49 mu g), and the kinetic energy
-    lost to friction, M v0^2/7, positive."""
+    lost to friction, M v0^2/7, positive. As the solution manual writes it, each law once and each
+    answer once: M a = -mu M g, I alpha = mu M g R, v0 - mu g t = R alpha t, then V, d and the energy
+    (10 equations; 17 before, each answer restated)."""
     (steps,) = Solution(load("skid_to_roll")).student_steps.values()
-    assert _opening(steps) == ["newton", "torque", "kinematics", "rolling", "kinematics", "energy"]
+    assert _opening(steps) == ["newton", "torque", "rolling", "kinematics", "energy"]
     M, R, v0, mu, g = _symbols("M", "R", "v0", "mu", "g")
     assert _same(_found(steps, "a"), -mu * g) and _same(_found(steps, "alpha"), 5 * mu * g / (2 * R))
     assert _same(_found(steps, "t"), 2 * v0 / (7 * mu * g))
@@ -323,7 +441,36 @@ def test_the_bowling_ball_skids_by_newton_along_the_lane_and_the_torque_about_it
     assert _same(_found(steps, "d"), 12 * v0**2 / (49 * mu * g))
     lost = steps[-1].equations[-1]
     assert str(lost.lhs) == "K_0 - K_1" and _same(lost.rhs, M * v0**2 / 7)
-    assert sum(len(s.equations) for s in steps) == 17
+    assert sum(len(s.equations) for s in steps) == 10
+    shown = [str(e.lhs) for s in steps for e in s.equations]
+    assert all(shown.count(name) == 1 for name in ("a", "alpha", "t", "V", "d"))  # each answer stated once
+
+
+def test_the_bowling_balls_kinetic_energy_once_it_rolls_is_its_centers_and_its_rotations():
+    """Serway & Jewett 9th ed., ch. 10 (the bowling ball once it rolls: K = M V^2/2 + I omega^2/2 with
+    omega = V/R, 5 M v0^2/14 for V = 5 v0/7); its acceleration while it skids, asked, is a = -mu g."""
+    (steps,) = Solution(load("bowling_ball_skids")).student_steps.values()
+    assert _opening(steps) == ["newton", "torque", "rolling", "kinematics", "energy"]
+    M, v0, mu, g = _symbols("M", "v0", "mu", "g")
+    assert _same(_found(steps, "a"), -mu * g)
+    assert _same(_found(steps, "K_1"), 5 * M * v0**2 / 14) and "K_0 - K_1" not in {str(e.lhs) for e in steps[-1].equations}
+    assert sum(len(s.equations) for s in steps) == 10
+
+
+def test_the_cue_ball_with_backspin_skids_by_the_same_route_friction_backward():
+    """Kleppner & Kolenkow 2nd ed., ch. 7, and Serway & Jewett ch. 10 (a cue ball struck low, at v0 with
+    backspin w0: its bottom slides forward at v0 + R w0, so kinetic friction acts backward, a = -mu g,
+    alpha = 5 mu g/(2 R) the way it rolls forward; it rolls once v0 - mu g t = -R w0 + 5 mu g t/2:
+    t = 2 (v0 + R w0)/(7 mu g), V = (5 v0 - 2 R w0)/7, as the angular momentum about the contact point
+    gives it)."""
+    (steps,) = Solution(load("cue_ball_backspin")).student_steps.values()
+    assert _opening(steps) == ["newton", "torque", "rolling", "kinematics"]
+    assert "backspin" in steps[0].text and "backward" in steps[0].text
+    R, v0, w0, mu, g = _symbols("R", "v0", "w0", "mu", "g")
+    assert _same(_found(steps, "a"), -mu * g) and _same(_found(steps, "alpha"), 5 * mu * g / (2 * R))
+    assert _same(_found(steps, "t"), 2 * (v0 + R * w0) / (7 * mu * g))
+    assert _same(_found(steps, "V"), (5 * v0 - 2 * R * w0) / 7)
+    assert sum(len(s.equations) for s in steps) == 7
 
 
 def test_a_clutch_keeps_the_angular_momentum_about_the_axle_and_a_brake_stops_the_pair():
@@ -364,7 +511,9 @@ def test_a_sticky_impact_on_a_free_sphere_keeps_momentum_and_the_angular_momentu
 
 
 def test_the_new_routes_agree_with_both_engine_routes_in_derive_check():
-    problems = ("top_precession_exact", "skid_to_roll", "clutch_disks_brake", "sticky_impact_free")
+    problems = ("top_precession_exact", "top_two_precessions", "kepler_orbit", "loop_the_loop", "loop_the_loop_ball",
+                "skid_to_roll", "bowling_ball_skids", "cue_ball_backspin", "clutch_disks_brake",
+                "sticky_impact_free")
     done = run_derive("check", *problems)
     assert done.returncode == 0, done.stderr
     assert done.stdout.count("textbook_route") == len(problems)

@@ -18,7 +18,7 @@ impulse equations give (derive.solution.crosschecks).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -39,11 +39,14 @@ from derive.parts.weld import Weld
 class AboutAxle:
     """The steps, the engine's rates they give (each coordinate's velocity just after), and what they
     find by name: omega (the rate just after, a magnitude), K0 and K1 (the kinetic energy before and
-    after) and lost (their difference, positive), V_x and V_y (the center of mass's velocity after)."""
+    after) and lost (their difference, positive), V_x and V_y (the center of mass's velocity after).
+    `rates`: where the route finds each body's own rate (the rims' two disks), that rate by the body's
+    name, signed counter-clockwise; an ask of that body's angular velocity is compared with it."""
 
     steps: tuple[Step, ...]
     values: dict[sp.Symbol, sp.Expr]
     found: dict[str, sp.Expr]
+    rates: dict[str, sp.Expr] = field(default_factory=dict)
 
 
 def about_axle(scene: Scene, coords: Coordinates, before: dict, after: dict, sample: Callable[[sp.Expr], float],
@@ -220,6 +223,7 @@ def about_each_axle(scene: Scene, coords: Coordinates, before: dict, grip: Rims,
     ]
     values = {c.u: sp.Integer(0) for c in coords.all}
     values.update({u: found[w] for u, w in zip(rates, after)})
+    own = {n: found[w] for n, w in zip(names, after)}
     if energy:
         kinetic, _ = energies(scene, coords)
         at = {c.q: before[c.q] for c in coords.all}
@@ -227,5 +231,5 @@ def about_each_axle(scene: Scene, coords: Coordinates, before: dict, grip: Rims,
         steps.append(Step("The kinetic energy just before and once the rims move together; the friction takes the "
                           "difference", (sp.Eq(sp.Symbol("K_0"), k0), sp.Eq(sp.Symbol("K_1"), k1),
                                          sp.Eq(sp.Symbol("Delta_K"), tidy(k0 - k1)))))
-        return AboutAxle(tuple(steps), values, {"K0": k0, "K1": k1, "lost": tidy(k0 - k1)})
-    return AboutAxle(tuple(steps), values, {})
+        return AboutAxle(tuple(steps), values, {"K0": k0, "K1": k1, "lost": tidy(k0 - k1)}, own)
+    return AboutAxle(tuple(steps), values, {}, own)

@@ -26,54 +26,71 @@ from derive.mechanics.along_motion import NotAlongALine
 from derive.text.steps import Step
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene
+from derive.parts.contact import Contact
 from derive.parts.pin import Pin
+from derive.parts.surfaces import Plane
 
 
 @dataclass(frozen=True)
 class SmallSwing:
-    """The steps, and the angular frequency they give."""
+    """The steps, the angular frequency they give, and the point it turns about in words."""
 
     steps: tuple[Step, ...]
     omega: sp.Expr
+    about: str = "the pivot"
 
 
 def small_swing(scene: Scene, coords: Coordinates) -> SmallSwing:
-    """The route for one body turning about a pin fixed to the ground, placed at rest where it
-    hangs; NotAlongALine for any other scene."""
+    """The route for one body turning about a pin fixed to the ground, or rocking without slipping on
+    a fixed plane (about its point of contact, at rest for the moment: Morin, ch. 8), placed at rest
+    where it hangs or rests; NotAlongALine for any other scene."""
     bodies = list(scene.bodies.values())
-    pins = [c for c in scene.constraints if isinstance(c, Pin) and c.to is None]
-    if len(bodies) != 1 or not bodies[0].rotates or len(pins) != 1 or len(scene.constraints) != 1:
-        raise NotAlongALine("not one body swinging on a fixed pivot")
-    body, (pin,) = bodies[0], pins
+    held_by = [c for c in scene.constraints if isinstance(c, Pin) and c.to is None
+               or isinstance(c, Contact) and c.rolling and c.carrier is None and c.center is not None
+               and isinstance(scene.surfaces[c.surface], Plane)]  # a round face off its center of mass: it rocks
+    if len(bodies) != 1 or not bodies[0].rotates or len(held_by) != 1 or len(scene.constraints) != 1:
+        raise NotAlongALine("not one body swinging on a fixed pivot or rocking on a fixed surface")
+    body, (pin,) = bodies[0], held_by
     x, y, theta = (coords.of(body.name, k) for k in ("x", "y", "theta"))
     held = sp.solve(pin.gaps(coords), [x.q, y.q], dict=True)
     if len(held) != 1:
-        raise NotAlongALine("the pin does not hold the center in one place for each angle")
+        raise NotAlongALine("the pin or the contact does not hold the center in one place for each angle")
     potential = sum((part.potential(coords) for part in scene.parts), sp.Integer(0)).xreplace(held[0])
     angle = sp.Symbol("theta", real=True)
     torque = tidy(-sp.diff(potential, theta.q).xreplace({theta.q: angle}))
     stiffness = tidy(-sp.diff(torque, angle).xreplace({angle: 0}))
     if torque.xreplace({angle: 0}) != 0 or stiffness == 0 or stiffness.is_negative:
         raise NotAlongALine("not placed at a stable equilibrium")
-    point = coords.rotated(body.name, pin.offset).xreplace(coords.at_rest_in_reference())
+    rocks = isinstance(pin, Contact)
+    point = (pin.offset(coords) if rocks else coords.rotated(body.name, pin.offset)).xreplace(coords.at_rest_in_reference())
     distance = tidy(sp.sqrt(point.dot(point)))
     moment = sp.Symbol("I_P")
     about = tidy(body.inertia + body.mass * distance**2)
     omega, period, tau = sp.Symbol("omega"), sp.Symbol("T"), sp.Symbol("tau")
     kappa = stiffness if isinstance(stiffness, sp.Symbol) else sp.Symbol("kappa")  # a torsion spring's own kappa
     frequency = tidy(sp.sqrt(stiffness / about))
-    inertia = (Step(f"The {body.name} turns about its pivot, off its center of mass: by the parallel-axis theorem its "
-                    "moment of inertia about the pivot is", (sp.Eq(moment, body.inertia + body.mass * distance**2),))
-               if distance != 0 else Step(f"The {body.name} turns about an axle through its center of mass, its moment "
-                                          "of inertia about it", (sp.Eq(moment, body.inertia),)))
+    pivot = "point of contact" if rocks else "pivot"
+    if rocks:
+        inertia = Step(f"The {body.name} rocks without slipping: its point of contact is at rest for the moment, and it "
+                       "turns about that point. By the parallel-axis theorem its moment of inertia about it is",
+                       (sp.Eq(moment, sp.Add(body.inertia, sp.Mul(body.mass, sp.Pow(distance, 2, evaluate=False), evaluate=False),
+                                           evaluate=False)),
+                        sp.Eq(moment, about)))
+    elif distance != 0:
+        inertia = Step(f"The {body.name} turns about its pivot, off its center of mass: by the parallel-axis theorem its "
+                       "moment of inertia about the pivot is", (sp.Eq(moment, body.inertia + body.mass * distance**2),))
+    else:
+        inertia = Step(f"The {body.name} turns about an axle through its center of mass, its moment of inertia about it",
+                       (sp.Eq(moment, body.inertia),))
+    held_there = "the normal force and friction act there and have" if rocks else "the pivot's force acts there and has"
     steps = (
         inertia,
         Step(f"Turned by an angle from where it rests, the {body.name} is pulled back by the torque of the loads about "
-             "the pivot (the pivot's force has no moment about it); for a small angle it is proportional to the angle",
+             f"the {pivot} ({held_there} no moment about it); for a small angle it is proportional to the angle",
              (sp.Eq(tau, torque), sp.Eq(tau, -kappa * angle), *((sp.Eq(kappa, stiffness),) if kappa != stiffness else ()))),
-        Step("Newton's second law for the rotation about the pivot is then that of simple harmonic motion, of "
+        Step(f"Newton's second law for the rotation about the {pivot} is then that of simple harmonic motion, of "
              "angular frequency and period", (sp.Eq(moment * sp.Symbol("thetaddot"), -kappa * angle),
                                               sp.Eq(omega, sp.sqrt(kappa / moment)), sp.Eq(omega, frequency),
                                               sp.Eq(period, 2 * sp.pi / omega))),
     )
-    return SmallSwing(steps, frequency)
+    return SmallSwing(steps, frequency, f"the {pivot}")

@@ -34,11 +34,13 @@ from derive.text.steps import Step
 
 #: The steady precessions this route gives (the details of a pivot_point ask).
 PRECESSIONS = ("precession.slow", "precession.fast", "precession.fast_top")
+#: With the fast top's nutation about its steady precession, what the route gives.
+TOP_RATES = (*PRECESSIONS, "nutation.fast_top")
 
 
 @dataclass(frozen=True)
 class SteadyTop:
-    """The steps, and the rate each asked precession has (by its detail, PRECESSIONS)."""
+    """The steps, and the rate each asked precession or nutation has (by its detail, TOP_RATES)."""
 
     steps: tuple[Step, ...]
     rates: dict[str, sp.Expr]
@@ -47,7 +49,7 @@ class SteadyTop:
 def steady_precession(I1, I3, mass, g, distance, spin, tilt, asked: set[str]) -> SteadyTop:
     """The route for a symmetric top on its tip (I1 about a transverse axis through the tip, I3 about
     its own axis, its center a `distance` from the tip) spinning at `spin` with its axis at `tilt`
-    from the vertical, for the precessions `asked` (details of PRECESSIONS)."""
+    from the vertical, for the precessions and the nutation `asked` (details of TOP_RATES)."""
     Omega, tau, L_h = sp.Symbol("Omega", positive=True), sp.Symbol("tau"), sp.Symbol("L_h")
     torque = mass * g * distance * sp.sin(tilt)
     horizontal = I3 * spin * sp.sin(tilt) - I1 * Omega * sp.sin(tilt) * sp.cos(tilt)
@@ -85,7 +87,28 @@ def steady_precession(I1, I3, mass, g, distance, spin, tilt, asked: set[str]) ->
                           "precession's, and the term in the square of Omega is small beside the others. Dropping it",
                           (sp.Eq(-I3 * spin * Omega + mass * g * distance, 0),
                            sp.Eq(Omega, rates["precession.fast_top"])), role="solve"))
-    return SteadyTop(tuple(steps), {d: rates[d] for d in PRECESSIONS if d in asked and d in rates})
+    if "nutation.fast_top" in asked:
+        rates["nutation.fast_top"] = tidy(I3 * spin / I1)
+        steps.append(_nutation(I1, I3, spin, rates["nutation.fast_top"]))
+    return SteadyTop(tuple(steps), {d: rates[d] for d in TOP_RATES if d in asked and d in rates})
+
+
+def _nutation(I1, I3, spin, frequency) -> Step:
+    """The fast top's nutation (Kleppner & Kolenkow 1st ed., ch. 8, 2nd ed. ch. 7: the gyroscope's
+    nutation at I_s omega_s / I_perp): the axis n tilted a little, u and w across its mean direction;
+    L = I3 omega n + I1 n x n', so the components across are I3 omega u - I1 w' and I3 omega w + I1 u';
+    the weight's torque, constant, moves only the mean direction (the precession), and the rates
+    u', w' turn round at I3 omega / I1."""
+    n = sp.Symbol("omega_n", positive=True)
+    rate = {name: sp.Symbol(name, real=True) for name in ("udot", "uddot", "wdot", "wddot")}  # printed with dots
+    return Step("Nutation of the fast top: the axis wobbles a little about its mean direction, by small angles u and w "
+                "in two planes at right angles across it. The angular momentum about the tip is then the spin's along "
+                "the tilted axis and the wobble's across it, the rate of each angle times the moment of inertia about a "
+                "transverse axis; its rate of change is the torque, whose constant part, the weight's, only moves the "
+                "mean direction (the steady precession). Across the axis, with the spin's angular momentum much the "
+                "larger, the wobble's rates turn round each other at the nutation frequency",
+                (sp.Eq(I1 * rate["uddot"], -I3 * spin * rate["wdot"]), sp.Eq(I1 * rate["wddot"], I3 * spin * rate["udot"]),
+                 sp.Eq(n, frequency)), role="solve")
 
 
 def as_a_textbook_writes(I1: sp.Expr, tilt: sp.Expr, given: set[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:

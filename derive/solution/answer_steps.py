@@ -27,7 +27,7 @@ from derive.text.steps import Step
 from derive.parts.cord import Cord
 from derive.language.problem import Ask
 from derive.core.expr import TIME
-from derive.mechanics.steady_top import PRECESSIONS
+from derive.mechanics.steady_top import TOP_RATES
 from derive.model.scene import DYNAMIC_KINDS, STATIC_KINDS
 
 
@@ -97,7 +97,7 @@ class AnswerSteps:
                 for name, coin in self.scene.rolls_on_edge.items() for route in ("lagrange", "newton_euler")}
         if kinds == {"free_rotation"}:
             return self._free_rotation_steps()
-        if {(a.quantity.kind, a.quantity.detail) for a in self.problem.asks.values()} <= {("pivot_point", d) for d in PRECESSIONS}:
+        if {(a.quantity.kind, a.quantity.detail) for a in self.problem.asks.values()} <= {("pivot_point", d) for d in TOP_RATES}:
             return self._steady_precession_steps()
         if kinds == {"angular_impulse"}:
             return self._angular_impulse_steps()

@@ -6,13 +6,15 @@ along the motion and torques about the center of mass or a fixed pivot (derive.m
 the time down a slope from the constant acceleration; the least coefficient of friction from the
 friction and normal force found; statics by the balances of forces and of torques about the point
 that removes the most unknowns (derive.mechanics.statics); small oscillations about a pivot by
-tau = -kappa theta (derive.mechanics.small_swings); a top's steady precession by tau = Omega x L, a
-skid that ends in rolling, an impact by the angular momentum about the axle or about the free bodies'
-center of mass (derive.solution.textbook_routes). Lagrange's method and Newton–Euler stay as the proof (the
+tau = -kappa theta (derive.mechanics.small_swings; a body rocking on its round face, about its point
+of contact); a top's steady precession by tau = Omega x L, a skid that ends in rolling, an impact by
+the angular momentum about the axle or about the free bodies' center of mass, a cord pulled in through
+a hole, an ellipse by the conservation of angular momentum and energy at its turning points, the least
+height for a loop by Newton at its top and energy (derive.solution.textbook_routes). Lagrange's method and Newton–Euler stay as the proof (the
 instructor's verification): this route is a third one, which must agree with them
 (derive.solution.crosschecks: the check textbook_route).
 
-Where an ask lies outside these principles (a chain of states, an oscillation, an orbit), no
+Where an ask lies outside these principles (a longer chain of states, an oscillation's amplitude), no
 student route is written (`steps` is None) and the worked solution shows the two routes.
 
 >>> from derive.language.problem import load
@@ -36,7 +38,7 @@ from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
 from derive.parts.contact import Contact
-from derive.solution.textbook_routes import TextbookRoute, state_route, top_route
+from derive.solution.textbook_routes import TextbookRoute, loop_route, orbit_route, state_route, top_route
 from derive.solution.uniform_route import uniform_route
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
@@ -66,6 +68,11 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
     student's route answers (None otherwise)."""
     if solution.scene.states:
         return state_route(solution) or uniform_route(solution, TextbookRoute)
+    if solution.scene.orbit is not None:
+        return orbit_route(solution)
+    loop = loop_route(solution)
+    if loop is not None:
+        return loop
     asks = solution.problem.asks.values()
     top = top_route(solution) if solution.scene.pivot_points else None
     if top is not None:
@@ -98,7 +105,7 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     if along is None:
         return None
     if isinstance(along, SmallSwing):
-        return {"Small oscillations about the pivot": list(along.steps)}
+        return {f"Small oscillations about {along.about}": list(along.steps)}
     if isinstance(along, TextbookRoute):
         change = names(solution)
         return {title: [_renamed(step, change) for step in steps] for title, steps in along.sections.items()}

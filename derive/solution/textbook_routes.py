@@ -2,8 +2,10 @@
 (derive.solution.textbook): a top's steady precession by tau = Omega x L (derive.mechanics.steady_top),
 a ball that skids and then rolls (derive.mechanics.skidding), an impact that sticks or locks by the
 angular momentum about the axle or, of free bodies, the momentum and the angular momentum about
-their center of mass (derive.mechanics.angular_momentum), and a pair on an axle braked to rest after
-a clutch locks.
+their center of mass (derive.mechanics.angular_momentum), a pair on an axle braked to rest after
+a clutch locks, a cord pulled in through a hole (derive.mechanics.pulled_in), an ellipse by the
+conservation of angular momentum and of energy (derive.mechanics.orbit_by_conservation) and the least
+height for a loop (derive.mechanics.loop_top).
 
 Each gives its sections and what it finds beside what the engine finds for the same thing (the
 rates or accelerations its two routes give, the answers the key prints): the check textbook_route
@@ -23,17 +25,24 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.tidying import tidy
 from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
 from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, about_each_axle, slowed_to_rest
+from derive.mechanics import orbits
+from derive.mechanics.loop_top import loop_top
+from derive.mechanics.orbit_by_conservation import DETAILS, by_conservation
+from derive.mechanics.pulled_in import pulled_in
 from derive.mechanics.skidding import skidding
-from derive.mechanics.steady_top import PRECESSIONS, as_a_textbook_writes, steady_precession
+from derive.mechanics.steady_top import TOP_RATES, as_a_textbook_writes, steady_precession
 from derive.model.directions import TURNS
+from derive.numbers import intervals, range_forms
 from derive.parts.contact import Contact
 from derive.parts.rims import Rims
 from derive.parts.surfaces import Plane
 from derive.parts.torque import Torque
 from derive.solution.state_events import in_place
+from derive.text.steps import Step
 
 
 @dataclass(frozen=True)
@@ -60,9 +69,10 @@ class TextbookRoute:
 
 
 def top_route(solution) -> TextbookRoute | None:
-    """tau = Omega x L for a top's steady precessions, where every ask is one of them (None otherwise)."""
+    """tau = Omega x L for a top's steady precessions, and a fast top's nutation about them, where every
+    ask is one of them (None otherwise)."""
     asks = list(solution.problem.asks.values())
-    if not asks or any(a.quantity.kind != "pivot_point" or a.quantity.detail not in PRECESSIONS or a.state
+    if not asks or any(a.quantity.kind != "pivot_point" or a.quantity.detail not in TOP_RATES or a.state
                        for a in asks) or len({a.quantity.target for a in asks}) != 1:
         return None
     name = asks[0].quantity.target
@@ -82,10 +92,72 @@ def top_route(solution) -> TextbookRoute | None:
                          "the torque about the tip, tau = Omega x L")
 
 
+def loop_route(solution) -> TextbookRoute | None:
+    """The least release height that carries a body round a loop, by Newton's second law at the top, the
+    normal force not negative there, and energy from the release, where every ask is one (None
+    otherwise): a section for each ask, checked against each engine route's normal force at the top."""
+    asks = solution.problem.asks
+    if not asks or any(a.quantity.kind != "contact" or a.quantity.detail != "min_release_height" or a.state
+                       for a in asks.values()):
+        return None
+    taken = {p.symbol.name for p in solution.problem.parameters.values()}
+    sections, compared = {}, []
+    for name, ask in asks.items():
+        body, contact = solution.scene.bodies[ask.quantity.target], solution.scene.contact_of(ask.quantity.target)
+        if not contact.rolling and contact.has_friction:
+            return None  # friction takes energy on the way: the engine's routes
+        small = {x: 0 for x in ask.small}
+        radius = body.sizes.get("radius", sp.Integer(0))
+        rho = solution.scene.surfaces[contact.surface].path_radius(radius).xreplace(small)
+        plain = {old: sp.Symbol(new, positive=True) for old, new in ((body.mass, "m"), (radius, "r"))
+                 if isinstance(old, sp.Symbol) and old.name not in taken and new not in taken}  # m_ball -> m
+        steps, height = loop_top(body.mass, solution.scene.gravity.g, rho, body.inertia if contact.rolling else None,
+                                 radius, body.name)
+        if ask.exact in asks and set(ask.small) == {radius}:  # the exact ask's steps with the small sizes dropped: its last line only
+            steps = (Step(f"As above, with the {body.name}'s radius dropped beside the loop's", steps[-1].equations,
+                          role="solve"),)
+        sections[ask.meaning[0].upper() + ask.meaning[1:]] = tuple(
+            dataclasses.replace(step, equations=tuple(e.xreplace(plain) for e in step.equations)) for step in steps)
+        compared += [(f"{name} by {route}", height,
+                      (lambda target=ask.quantity.target, route=route, small=small:
+                       solution._release_height(target, route)[0].xreplace(small))) for route in ("lagrange", "newton_euler")]
+        compared.append((name, height, (lambda name=name: solution.expression(name))))
+    return TextbookRoute(sections, tuple(compared), "Newton's second law at the top of the loop and the conservation "
+                                                    "of energy")
+
+
+def orbit_route(solution) -> TextbookRoute | None:
+    """An ellipse given by its semi-major axis and eccentricity, by the conservation of angular momentum
+    and of energy at its closest and farthest points, where every ask is one of what that finds (None
+    otherwise). Its angular momentum is compared with each engine route's: the one that makes the two
+    distances turning points of the route's radial equation (no net change of the radial speed between them)."""
+    orbit, asks = solution.scene.orbit, solution.problem.asks
+    if orbit.semi_major_axis is None or orbit.periapsis_speed is not None or not asks \
+            or any(a.quantity.kind != "orbit" or a.quantity.detail not in DETAILS for a in asks.values()):
+        return None
+    route = by_conservation(orbit.GM, orbit.semi_major_axis, orbit.eccentricity, {a.quantity.detail for a in asks.values()})
+    compared = [(f"the angular momentum by {way}", route.values["angular_momentum"],
+                 (lambda way=way: _turning_momentum(orbit.GM, route.values["periapsis"], route.values["apoapsis"], way)))
+                for way in ("lagrange", "newton_euler")]
+    compared += [(name, route.values[a.quantity.detail], (lambda name=name: solution.expression(name)))
+                 for name, a in asks.items()]
+    return TextbookRoute({"The orbit, by the conservation of angular momentum and of energy": route.steps},
+                         tuple(compared), "the conservation of angular momentum and of energy at the turning points")
+
+
+def _turning_momentum(GM, near, far, way: str) -> sp.Expr:
+    """The angular momentum per unit mass for which `near` and `far` are the turning points of the radial
+    equation by `way` (derive.mechanics.orbits): the radial acceleration integrated between them is zero."""
+    l = sp.Symbol("l", positive=True)
+    change = sp.integrate(orbits.radial_acceleration(GM, l, way), (orbits.r, near, far))
+    (value,) = [x for x in sp.solve(change, l) if x.is_positive is not False]
+    return value
+
+
 def state_route(solution) -> TextbookRoute | None:
     """The route of a scene's states: a skid that ends in rolling, or an impact (and a braking after
     it), where every ask is one of what it finds (None otherwise)."""
-    return _skid_route(solution) or _impact_route(solution)
+    return _skid_route(solution) or _impact_route(solution) or _pull_route(solution)
 
 
 #: What each route's findings answer: (the ask's kind, detail) -> the finding's name.
@@ -97,8 +169,9 @@ IMPACT = {("angular_velocity", None): "omega", ("kinetic_energy_change", None): 
 
 
 def _skid_route(solution) -> TextbookRoute | None:
-    """One body launched without spin on a level floor with kinetic friction, asked about the skid
-    (from the launch) and the state where it grips."""
+    """One body launched on a level floor with kinetic friction, with or without spin (friction against
+    its bottom's sliding, backward or forward), asked about the skid (from the launch) and the state
+    where it grips."""
     states = solution.scene.states
     grip = [s for s in states.values() if s.until and s.until[0] == "grips"]
     if len(states) != 2 or len(grip) != 1 or len(solution.scene.bodies) != 1:
@@ -109,18 +182,23 @@ def _skid_route(solution) -> TextbookRoute | None:
     if start is None or contact is None or contact.rolling or contact.kinetic is None or "radius" not in body.sizes:
         return None
     surface = solution.scene.surfaces[contact.surface]
-    rates = {(k, v) for _, k, v in start.rates}
-    launch = next((v for k, v in rates if k == "x"), None)
-    if not isinstance(surface, Plane) or surface.angle != 0 or launch is None or ("theta", 0) not in rates \
-            or solution._sample(launch) <= 0:
+    rates = {k: v for _, k, v in start.rates}
+    launch, turning = rates.get("x"), rates.get("theta")
+    if not isinstance(surface, Plane) or surface.angle != 0 or launch is None or turning is None \
+            or _sign_over(solution, launch) != 1:
         return None
+    spin = -turning  # the way it rolls forward, +x: clockwise, against the engine's angle
+    sliding = _sign_over(solution, launch - body.sizes["radius"] * spin)  # its bottom's velocity over the floor
+    if sliding is None or spin != 0 and _sign_over(solution, spin) is None:
+        return None  # friction's direction, or the spin's, changes over the ranges: the engine's routes
     asks = solution.problem.asks
     for ask in asks.values():
         key = (ask.quantity.kind, ask.quantity.detail)
         if key not in SKID or ask.state != (start.name if key == ("acceleration", "x") else state.name):
             return None
-    energy = any(SKID[a.quantity.kind, a.quantity.detail] in ("K1", "lost") for a in asks.values())
-    skid = skidding(body.mass, body.inertia, body.sizes["radius"], contact.kinetic, solution.scene.gravity.g, launch, energy)
+    asked = {SKID[a.quantity.kind, a.quantity.detail] for a in asks.values()}
+    skid = skidding(body.mass, body.inertia, body.sizes["radius"], contact.kinetic, solution.scene.gravity.g, launch,
+                    spin, asked, sliding, spin != 0 and _sign_over(solution, spin) < 0)
     x, theta = (solution.coordinates.of(body.name, k).a for k in ("x", "theta"))
     engine = {x: skid.values["a"], theta: -skid.values["alpha"]}  # forward is +x: it turns clockwise
     compared = [(f"{a} by {route}", value, (lambda a=a, route=route: solution.in_state(route, start.name).raw[a]))
@@ -130,6 +208,51 @@ def _skid_route(solution) -> TextbookRoute | None:
                  for name, a in asks.items()]
     return TextbookRoute({"The skid, by Newton along the motion and the torque about the center": skid.steps},
                          tuple(compared), "Newton's second law along the motion and the torque about the center")
+
+
+#: What the pull's route finds: (the ask's kind, detail) -> the finding's name.
+PULL = {("speed", None): "speed", ("kinetic_energy_change", None): "work", ("force", "tension"): "tension"}
+
+
+def _pull_route(solution) -> TextbookRoute | None:
+    """A point mass circling a hole at the end of a cord through it, pulled in slowly to a smaller circle,
+    asked its speed, the pull's work and the cord's tension there."""
+    states = solution.scene.states
+    pulls = [s for s in states.values() if s.event is not None and s.event.kind == "pull"]
+    if len(states) != 2 or len(pulls) != 1 or len(solution.scene.bodies) != 1 or len(solution.scene.constraints) != 1 \
+            or solution.scene.loads:  # on a level table: no load in its plane
+        return None
+    (state,), (body,) = pulls, solution.scene.bodies.values()
+    start, cord = states.get(state.start), solution.scene.constraint(state.event.joint)
+    holes = [a.offset for a in cord.path if a.body is None]
+    if start is None or body.shape != "point" or len(holes) != 1 or len(cord.path) != 2:
+        return None
+    velocity = sp.Matrix([next((v for _, k, v in start.rates if k == axis), 0) for axis in ("x", "y")])
+    reach = sp.Matrix(body.at) - sp.Matrix(holes[0])
+    if tidy(velocity.dot(reach)) != 0 or any(k not in ("x", "y") for _, k, _ in start.rates):
+        return None  # not circling: a speed along the cord too
+    asks = solution.problem.asks
+    if any(a.state != state.name or PULL.get((a.quantity.kind, a.quantity.detail)) is None
+           or a.quantity.target not in (None, body.name, cord.name) for a in asks.values()):
+        return None
+    route = pulled_in(body.mass, tidy(sp.sqrt(reach.dot(reach))), state.event.length,
+                      tidy(sp.sqrt(velocity.dot(velocity))), {PULL[a.quantity.kind, a.quantity.detail] for a in asks.values()}, body.name)
+    after = solution.states[state.name].values
+    x, y = (solution.coordinates.of(body.name, k).u for k in ("x", "y"))
+    compared = [("the speed after the pull", route.values["speed"], lambda: sp.sqrt(after[x]**2 + after[y]**2))]
+    compared += [(name, route.values[PULL[a.quantity.kind, a.quantity.detail]], (lambda name=name: solution.expression(name)))
+                 for name, a in asks.items()]
+    return TextbookRoute({"The pull, by the angular momentum about the hole": route.steps}, tuple(compared),
+                         "the angular momentum about the hole, and the work-energy theorem")
+
+
+def _sign_over(solution, expr: sp.Expr) -> int | None:
+    """+1 or -1 where `expr` keeps that strict sign over the whole box of the parameter ranges (proven
+    in balls, derive.numbers.intervals), None where it is not proven to."""
+    box = range_forms.box(solution.problem)
+    if not expr.free_symbols <= set(box):
+        return None
+    return 1 if intervals.positive_over(expr, box) else -1 if intervals.positive_over(-expr, box) else None
 
 
 def _impact_route(solution) -> TextbookRoute | None:
@@ -177,9 +300,8 @@ def _impact_route(solution) -> TextbookRoute | None:
     found = {**route.found}
     compared = [(str(u), value, (lambda u=u: solution.states[state.name].values[u])) for u, value in route.values.items()]
     for name, ask in asks.items():
-        if isinstance(made, Rims) and ask.quantity.kind == "angular_velocity":  # each disk's own rate
-            rate = route.values[solution.coordinates.of(ask.quantity.target, "theta").u]
-            compared.append((name, rate, (lambda name=name: solution.signed(name))))
+        if ask.quantity.kind == "angular_velocity" and ask.quantity.target in route.rates:  # a body's own, signed
+            compared.append((name, route.rates[ask.quantity.target], (lambda name=name: solution.signed(name))))
             continue
         key = "K0" if ask.state == start.name else "t" if ask.quantity.kind == "time" else "turn" \
             if ask.quantity.kind == "angle" else IMPACT[ask.quantity.kind, ask.quantity.detail]
