@@ -15,7 +15,9 @@ from functools import lru_cache
 import sympy as sp
 from sympy.core import random
 
-from derive.core import limits
+from derive.core import limits, trig_memo
+
+trig_memo.install()  # every trigsimp of the process (tidy's, and sympy's simplify and solve's) remembers its nodes
 
 
 def simplest(expr: sp.Expr) -> sp.Expr:
