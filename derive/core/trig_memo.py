@@ -33,9 +33,9 @@ _trigsimp = importlib.import_module("sympy.simplify.trigsimp")  # the module, no
 
 def install() -> None:
     """Remember _futrig's results in this process (idempotent)."""
-    original = _trigsimp._futrig
-    if getattr(original, "remembered", False):
-        return
+    original = getattr(_trigsimp, "_futrig", None)
+    if original is None or getattr(original, "remembered", False):
+        return  # a sympy without it (a later version may rename it): trigsimp as it is, only slower
     cached = functools.lru_cache(maxsize=NODES)(original)
 
     @functools.wraps(original)
