@@ -73,6 +73,11 @@ def test_sines_cosines_and_tangents_as_few_as_can_be():
     assert printed_form.textbook(sp.sin(theta) ** 2 / sp.cos(theta) ** 2) == sp.tan(theta) ** 2
     assert printed_form.textbook(sp.sin(theta) / sp.cos(2 * theta)) == sp.sin(theta) / sp.cos(2 * theta)  # two angles
     assert printed_form.textbook(sp.sin(theta) ** 2 / sp.cos(theta)) == sp.sin(theta) ** 2 / sp.cos(theta)  # kept
+    # a newcomer's cylinder rolling up a slope stopped after 3 v0 cos(theta)/(g sin(2 theta)): a double angle's
+    # sine beside the angle's cosine is 2 sin cos, and cancels; alone it stays
+    v0 = sp.Symbol("v0", positive=True)
+    assert printed_form.textbook(3 * v0 * sp.cos(theta) / (g * sp.sin(2 * theta))) == 3 * v0 / (2 * g * sp.sin(theta))
+    assert printed_form.textbook(v0**2 * sp.sin(2 * theta) / g) == v0**2 * sp.sin(2 * theta) / g
 
 
 def test_a_square_over_its_absolute_value_and_roots_of_unknown_sign():

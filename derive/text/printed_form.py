@@ -35,22 +35,33 @@ def _trigonometric(expression: sp.Basic) -> sp.Basic:
     """Each product's sin^s cos^c tan^t of one angle as sin^(s+t) cos^(c-t), then as tan^n where
     sin^n/cos^n is all of it.
 
-    >>> x = sp.Symbol("x")
+    A double angle's sine beside the angle's own functions is 2 sin cos first (a time up a slope,
+    3 v0 cos(x)/(g sin(2x)), is 3 v0/(2 g sin(x))).
+
+    >>> x, v, g = sp.symbols("x v g")
     >>> _trigonometric(sp.sin(x)**2 / sp.cos(x)**2), _trigonometric(sp.sin(x)**2 / sp.cos(x)), _trigonometric(sp.tan(x) / sp.sin(x))
     (tan(x)**2, sin(x)**2/cos(x), 1/cos(x))
+    >>> _trigonometric(3 * v * sp.cos(x) / (g * sp.sin(2 * x))), _trigonometric(g * sp.sin(2 * x))
+    (3*v/(2*g*sin(x)), g*sin(2*x))
     """
     def trigonometric_product(e) -> bool:
         return isinstance(e, sp.Mul) and sum(1 for f in e.args if _trig_power(f) is not None) > 1
 
     def rewritten(product: sp.Mul) -> sp.Expr:
         powers, rest = defaultdict(lambda: {sp.sin: 0, sp.cos: 0}), []
+        angles = {found[1] for found in map(_trig_power, product.args) if found is not None}
         for factor in product.args:
             found = _trig_power(factor)
             if found is None:
                 rest.append(factor)
                 continue
             function, angle, n = found
-            if function is sp.tan:
+            if function is sp.sin and angle / 2 in angles:  # sin(2x) beside x's: 2 sin(x) cos(x), to cancel
+                angle = angle / 2
+                powers[angle][sp.sin] += n
+                powers[angle][sp.cos] += n
+                rest.append(sp.Integer(2) ** n)
+            elif function is sp.tan:
                 powers[angle][sp.sin] += n
                 powers[angle][sp.cos] -= n
             else:
