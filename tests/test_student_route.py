@@ -541,3 +541,18 @@ def test_the_tops_proof_is_its_condition_by_lagrange_and_by_eulers_equations():
         (step,) = steps
         (condition,) = step.equations
         assert _same(condition.lhs, I1 * Omega**2 * sp.cos(theta) - inertia * w * Omega + m * g * R)
+
+
+def test_a_pendulum_of_parts_takes_each_parts_moment_about_the_pivot_and_the_periods_own_name():
+    """Halliday, Resnick & Walker 10th ed., ch. 15 (a physical pendulum of a rod and a disk: I about the
+    pivot by the parallel-axis theorem, part by part: m L^2/12 + m (L/2)^2 + M r^2/2 + M (L + r)^2). A newcomer's
+    clock pendulum printed I_P as two fractions no one could read, and its route ended T = 2 pi/omega beside
+    the answer P."""
+    from conftest import textbook
+
+    (steps,) = Solution(load(textbook("rod_disk_clock_pendulum"))).student_steps.values()
+    m, L, M, r = _symbols("m", "L", "M", "r")
+    parts = steps[0].equations[0].rhs
+    assert isinstance(parts, sp.Add) and len(parts.args) == 4
+    assert _same(parts.doit(), m * L**2 / 12 + m * (L / 2) ** 2 + M * r**2 / 2 + M * (L + r) ** 2)
+    assert str(steps[-1].equations[-1].lhs) == "P"

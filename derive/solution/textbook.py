@@ -104,8 +104,10 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     along = solution.textbook_route
     if along is None:
         return None
-    if isinstance(along, SmallSwing):
-        return {f"Small oscillations about {along.about}": list(along.steps)}
+    if isinstance(along, SmallSwing):  # the period and the frequency under the names the question asks them by
+        change = {sp.Symbol({"period": "T", "omega": "omega"}[a.quantity.detail]): sp.Symbol(a.name)
+                  for a in solution.problem.asks.values() if a.quantity.kind == "small_oscillation"}
+        return {f"Small oscillations about {along.about}": [_renamed(step, change) for step in along.steps]}
     if isinstance(along, TextbookRoute):
         change = names(solution)
         return {title: [_renamed(step, change) for step in steps] for title, steps in along.sections.items()}
