@@ -145,3 +145,22 @@ def test_no_asked_magnitude_of_the_library_shows_a_minus_sign(everything):
             if directional(ask.quantity) and not ask.sign and not ask.zero_for and answer["value"] is not None:
                 assert not answer["value"].startswith("-"), (problem_id, name, answer["value"])
                 assert "direction" in answer, (problem_id, name)
+
+
+def test_a_handouts_long_source_wraps_within_the_page(tmp_path):
+    """A newcomer's handout set its source (a book, a chapter and the closed form it prints) on one line
+    off the page: the title block's tabular does not wrap, and LaTeX reports no overfull box for it.
+    Measured on the PDF: every word of the first page lies within the paper."""
+    import re
+
+    from conftest import textbook
+
+    source = textbook("rod_disk_clock_pendulum")
+    done = run_derive("handout", str(source), "--out", str(tmp_path / "h"), "--progress", "none")
+    assert done.returncode == 0, done.stderr
+    (pdf,) = (tmp_path / "h").glob("*.pdf")
+    html = subprocess.run(["pdftotext", "-bbox", "-f", "1", "-l", "1", str(pdf), "-"], capture_output=True, text=True,
+                          check=True).stdout
+    width = float(re.search(r'<page width="([\d.]+)"', html)[1])
+    right = [float(x) for x in re.findall(r'xMax="([\d.]+)"', html)]
+    assert right and max(right) < width - 36, (max(right), width)  # inside the paper, with a margin
