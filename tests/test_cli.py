@@ -446,3 +446,10 @@ def test_solve_prints_the_textbook_route_and_the_two_routes_with_proof(derive):
     proof = derive("solve", "sphere_rolls_incline", "--proof").stdout
     assert "Equations of motion, Lagrange's method" in proof and "Equations of motion, Newton–Euler" in proof
     assert "The solution, as a textbook writes it:" in proof
+
+
+def test_solve_writes_a_greek_letter_named_in_a_steps_words_as_the_letter(derive):
+    """A newcomer read "the bodies turn together about the axle at the rate omega" beside equations that
+    print ω: the terminal writes the letter, as the documents set the name as math."""
+    text = derive("solve", "sticky_impact_pivoted").stdout
+    assert "at the rate ω" in text and "rate omega" not in text

@@ -22,7 +22,7 @@ from derive.text.latex import latex_of, symbol_latex
 from derive.publishing import notation, wording
 from derive.numbers import numeric
 from derive.core import units
-from derive.text.terminal import indented, pretty
+from derive.text.terminal import greek, indented, pretty
 from derive.solution import answer_signs
 from derive.solution.answers import Solution
 from derive.mechanics.derivation import at_state
@@ -194,7 +194,7 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
             lines.append(f"  {words(title)}")
             for step in steps:
                 said = [line for s in step.sentences for line in words.sentence(s).text().splitlines()]
-                lines += indented(said + ([words(step.text).rstrip(":") + ":"] if step.text else []), "    ")
+                lines += indented(said + ([greek(words(step.text)).rstrip(":") + ":"] if step.text else []), "    ")
                 for equation in step.equations:
                     lines += indented(pretty(equation), "      ")
         lines.append("")

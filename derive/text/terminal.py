@@ -5,10 +5,15 @@
     -2⋅g
 a = ─────
       3
+>>> greek("the bodies turn together at the rate omega, about the axle")
+'the bodies turn together at the rate ω, about the axle'
 """
 from __future__ import annotations
 
+import re
+
 from sympy.printing.pretty.pretty import PrettyPrinter
+from sympy.printing.pretty.pretty_symbology import greek_unicode
 from sympy.printing.pretty.stringpict import prettyForm, stringPict
 
 from derive.text import printed_form
@@ -26,3 +31,13 @@ def pretty(*parts) -> list[str]:
 
 def indented(lines: list[str], indent: str = "  ") -> list[str]:
     return [indent + line for line in lines]
+
+
+#: A Greek letter's name as a whole word (omega, Omega), which a step's words name a symbol by.
+_GREEK = re.compile(r"\b(" + "|".join(sorted(greek_unicode, key=len, reverse=True)) + r")\b")
+
+
+def greek(text: str) -> str:
+    """A step's words with each Greek letter's name as the letter, as the equations beside it print it
+    (the documents set the name as math: derive.text.prose)."""
+    return _GREEK.sub(lambda m: greek_unicode[m[1]], text)
