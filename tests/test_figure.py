@@ -773,3 +773,13 @@ def test_an_orbit_given_at_periapsis_draws_what_is_given_never_its_axis():
     assert "$r_{p}$" in labels and "$v_{p}$" in labels and "$\\mathit{GM}$" in labels
     assert not any("frac" in label or "GM} -" in label for label in labels), labels
     assert "ellipse" in figure.tikz(problem.load("kepler_orbit"))  # an orbit given by its axis still draws 2a
+
+
+def test_a_body_alone_on_a_slope_of_no_given_length_has_room_to_roll():
+    """A newcomer's cylinder rolling up a slope (no length, no height given) was drawn larger than the slope
+    it rolls on, the slope ending a radius past it: the slope now runs a few times the body's size."""
+    drawn = figure.tikz(problem.load(str(textbook("cylinder_rolls_up_slope"))))
+    wedge = re.search(r"\\draw\[fill=gray!10\] \((-?[\d.]+),(-?[\d.]+)\) -- \((-?[\d.]+),(-?[\d.]+)\)", drawn)
+    radius = float(re.search(r"\\draw\[body\] \([-\d.]+,[-\d.]+\) circle \(([\d.]+)\)", drawn)[1])
+    slope = math.dist((float(wedge[1]), float(wedge[2])), (float(wedge[3]), float(wedge[4])))
+    assert slope >= 3 * radius, (slope, radius)

@@ -92,6 +92,15 @@ EXPECTED = {
         "P": lambda s: 2 * sp.pi * sp.sqrt((s.m * s.L**2 / 3 + s.M * s.r**2 / 2 + s.M * (s.L + s.r)**2)
                                            / (s.g * (s.m * s.L / 2 + s.M * (s.L + s.r)))),
     },
+    # Serway & Jewett 9th ed., ch. 10 (a solid cylinder, I = M R^2/2, rolling without slipping up a slope at v0:
+    # a = 2 g sin(theta)/3 down the slope, static friction M g sin(theta)/3 up it; it stops after
+    # d = v0^2/(2a) = 3 v0^2/(4 g sin(theta)), at t = v0/a = 3 v0/(2 g sin(theta))). A newcomer's file.
+    "cylinder_rolls_up_slope": {
+        "a": lambda s: 2 * s.g * sp.sin(s.theta) / 3,
+        "f": lambda s: s.M * s.g * sp.sin(s.theta) / 3,
+        "d": lambda s: 3 * s.v0**2 / (4 * s.g * sp.sin(s.theta)),
+        "t": lambda s: 3 * s.v0 / (2 * s.g * sp.sin(s.theta)),
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),

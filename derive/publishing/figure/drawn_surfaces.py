@@ -85,7 +85,11 @@ class SurfaceDrawings:
         down, normal = _norm(view.vector(plane.down)), _norm(view.vector(plane.normal))
         on = [c for c in self.contacts if c.surface == plane.name]
         along = [_dot(_sub(self._contact_point(c)[0], through), down) for c in on]
-        around = max([1.1] + [1.3 * self.bodies[c.body].extent for c in on if c.point is None])  # a body on it
+        # a body on it; alone on a slope the file gives no length of, room to roll a few times its size
+        # (at most 2.4 cm, so that the figure stays within its width)
+        alone = plane.height is None and plane.angle != 0 and len(self.bodies) == 1
+        around = max([1.1] + [max(1.3 * e, min(3 * e, 2.4)) if alone else 1.3 * e
+                              for e in (self.bodies[c.body].extent for c in on if c.point is None)])
         margins = [(0.6 if c.point is not None else around) / view.scale for c in on]
         low, high = min(s - m for s, m in zip(along, margins)), max(s + m for s, m in zip(along, margins))
         lowest, highest = min(along), max(along)
