@@ -52,9 +52,14 @@ def symbol_latex(name: str) -> str:
     ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
     >>> symbol_latex("dE"), symbol_latex("vx"), symbol_latex("FAx"), symbol_latex("tb"), symbol_latex("angle")
     ('\\Delta E', 'v_{x}', 'F_{\\mathrm{Ax}}', 't_{b}', '\\mathrm{angle}')
+    >>> symbol_latex("omega_1'")
+    "\\omega_{1}'"
     """
     if name.startswith("\\"):  # a name the engine gives in LaTeX (derivation.LAGRANGIAN)
         return name
+    if name.endswith("'"):  # a value after (omega_1'): the prime after the subscript, as a textbook sets it
+        bare = name.rstrip("'")
+        return symbol_latex(bare) + "'" * (len(name) - len(bare))
     base, supers, subs = split_super_sub(name)
     letter = translate(base)
     if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent
