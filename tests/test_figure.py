@@ -762,3 +762,16 @@ def test_a_record_on_a_turntable_meets_it_at_a_felt_inside_its_rim(carried):
     felt = re.search(rf"densely dotted\] {re.escape(_pt(center))} circle \(([\d.]+)\);", drawn)
     assert felt and R2 * scale - 0.15 < float(felt[1]) < R2 * scale
     assert "felt, rough, $C$" in drawn
+
+
+def test_an_arrows_label_whose_path_a_layout_rewrote_is_placed_as_any_other():
+    """A label written on its arrow's path (`inline`) is taken off the path where it moves; where a
+    layout had rewritten that path without it, the picture raised StopIteration. It is placed as any
+    other label: once, as a node of its own."""
+    from derive.publishing.figure.canvas import _Figure
+
+    fig = _Figure(problem.load("compound_pendulum"))
+    fig.arrow((0, 0), (1, 0), "force", "$F$")
+    fig.lines[-1] = fig.lines[-1].split(" node[")[0] + ";"  # the path as a layout wrote it again
+    picture = fig.text()
+    assert picture.count("{$F$}") == 1 and re.search(r"\\node\[anchor=[a-z ]+, inner sep=1.5pt\] at \(1,0\) \{\$F\$\}", picture)
