@@ -24,7 +24,6 @@ student route is written (`steps` is None) and the worked solution shows the two
 from __future__ import annotations
 
 import dataclasses
-import re
 
 import sympy as sp
 
@@ -137,7 +136,7 @@ def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     """Each constraint force as a textbook names it, where that names one thing: f and N for the one
     contact's friction and normal force (f^ball), T for the one cord's tension (T_string), T_1 and
     T_2 on the two sides of a pulley; where a parameter, or an ask of something else, takes the name,
-    the force on one body is numbered after it (`_number`: f_1), any other keeps the engine's name."""
+    the force on one body is numbered after it (`Scene.numbers`: f_1), any other keeps the engine's name."""
     shown = {x for step in along.steps for e in step.equations for x in e.free_symbols}
     forces = [u for u in along.acting if u in shown]
     plain = {u: _plain(u.name) for u in forces}
@@ -156,7 +155,7 @@ def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
         if name in problem.parameters or name in problem.asks and not _same(solution, name, along.acting[u] * along.values[u]):
             # the file's f is another thing (the friction along +x): f_1, never f^spool after the body's key
             owner = u.name.partition("^")[2]
-            name = f"{name}_{_number(problem.scene, owner)}" if owner in problem.scene.bodies else None
+            name = f"{name}_{solution.dynamics_scene.numbers()[owner]}" if owner in solution.dynamics_scene.bodies else None
             if name is None or symbol_latex(name) in taken:
                 continue
         result[u] = sp.Symbol(name, real=True)
@@ -182,7 +181,7 @@ def _same(solution, name: str, value) -> bool:
 
 def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     """The route's own symbols that a problem file's name takes with another meaning (a parameter a,
-    or an ask a that is the block's y component, y up), each numbered after its body (`_number`: a_1
+    or an ask a that is the block's y component, y up), each numbered after its body (`Scene.numbers`: a_1
     for the acceleration along its motion of the block of mass m1; a_1' where a file's name is a_1),
     never subscripted by the body's key, which is the file's and no word of the student's."""
     problem, result = solution.problem, {}
@@ -191,18 +190,10 @@ def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
         name = str(symbol)
         if name in problem.parameters or name in problem.asks and not _same(solution, name, value):
             owner = next(body for (body, _), named in along.names.items() if named == symbol)
-            numbered = f"{name}_{_number(problem.scene, owner)}"
+            numbered = f"{name}_{solution.dynamics_scene.numbers()[owner]}"
             result[symbol] = sp.Symbol(numbered if symbol_latex(numbered) not in taken else f"{numbered}'", real=True)
             taken.add(symbol_latex(result[symbol].name))
     return result
-
-
-def _number(scene, body: str) -> int:
-    """The number a body's symbols take where no plain name is free: its mass's index where the file
-    numbers the masses (the left block of mass m1: 1), else its place among the scene's bodies."""
-    mass = scene.bodies[body].mass
-    index = re.fullmatch(r"[A-Za-z]+_?(\d+)", mass.name) if isinstance(mass, sp.Symbol) else None
-    return int(index[1]) if index else list(scene.bodies).index(body) + 1
 
 
 def _renamed(step: Step, change: dict) -> Step:
