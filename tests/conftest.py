@@ -128,23 +128,33 @@ def student_solution(reference) -> tuple[str, bool]:
     route): the solutions sheet of that problem alone at the middle of its ranges, without the
     instructor's verification by two routes, its figures and free-body diagrams left out (TikZ,
     no text); derived once for the run (`derived`)."""
+    return _solutions_sheet(reference, verification=False)
+
+
+def instructors_solution(reference) -> str:
+    """The worked solution as the instructor's solutions PDF prints it (`student_solution`), the
+    verification by Lagrange and Newton–Euler included where the student's route is written."""
+    return _solutions_sheet(reference, verification=True)[0]
+
+
+def _solutions_sheet(reference, verification: bool) -> tuple[str, bool]:
     from decimal import Decimal
 
     from derive.publishing import render, variants, worksheets
 
     solution = derived(reference)
-    if solution.problem.path not in _STUDENT:
+    if (solution.problem.path, verification) not in _STUDENT:
         problem = solution.problem
         middle = {n: p.value if p.range is None else p.at(Decimal("0.5")) for n, p in problem.parameters.items()}
         context = worksheets._solutions_context(variants.ProblemVariants(problem, solution, [middle]), siunitx=True)
         context["figure"] = ""
-        for route in context["routes"]:
+        for route in (*context["routes"], *context["verification"]):
             for step in route["steps"]:
                 step["diagram"] = ""
-        tex = render.render("solutions.tex.j2", problems=[context], verification=False,
+        tex = render.render("solutions.tex.j2", problems=[context], verification=verification,
                             set=SimpleNamespace(title="Week 1", course="Mechanics", due="Friday"))
-        _STUDENT[problem.path] = (tex, solution.student_steps is not None)
-    return _STUDENT[solution.problem.path]
+        _STUDENT[problem.path, verification] = (tex, solution.student_steps is not None)
+    return _STUDENT[solution.problem.path, verification]
 
 
 @pytest.fixture(autouse=True)

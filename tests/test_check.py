@@ -230,3 +230,17 @@ def test_check_refuses_a_negative_answer_whose_sign_the_question_does_not_state(
     path.write_text(stated)
     done = run_derive("check", str(path))
     assert done.returncode == 0, done.stdout + done.stderr
+
+
+@pytest.mark.parametrize("problem_id, reading", [
+    ("sticky_impact_pivoted", "Energy is conserved while the bodies move between the events: the constraint forces do "
+                              "no work; the impact, in an instant, is not part of this check."),
+    ("bowling_ball_skids", "The energy changes only by the work of the applied forces and of kinetic friction where "
+                           "it slides: the other constraint forces do no work."),
+    ("rolling_incline", "Energy is conserved: the constraint forces do no work."),
+])
+def test_the_work_energy_reading_is_true_of_the_scene(problem_id, reading):
+    """Issue 37: "Energy is conserved: the constraint forces do no work." stood beside a sticky
+    impact's loss of energy, and "the constraint forces do no work" beside kinetic friction's."""
+    (check,) = [c for c in derived(problem_id).checks() if c.name == "work_energy"]
+    assert check.reading == reading

@@ -783,3 +783,31 @@ def test_a_body_alone_on_a_slope_of_no_given_length_has_room_to_roll():
     radius = float(re.search(r"\\draw\[body\] \([-\d.]+,[-\d.]+\) circle \(([\d.]+)\)", drawn)[1])
     slope = math.dist((float(wedge[1]), float(wedge[2])), (float(wedge[3]), float(wedge[4])))
     assert slope >= 3 * radius, (slope, radius)
+
+
+def test_an_arrows_label_whose_path_a_layout_rewrote_is_placed_as_any_other():
+    """A label written on its arrow's path (`inline`) is taken off the path where it moves; where a
+    layout had rewritten that path without it, the picture raised StopIteration. It is placed as any
+    other label: once, as a node of its own."""
+    from derive.publishing.figure.canvas import _Figure
+
+    fig = _Figure(problem.load("compound_pendulum"))
+    fig.arrow((0, 0), (1, 0), "force", "$F$")
+    fig.lines[-1] = fig.lines[-1].split(" node[")[0] + ";"  # the path as a layout wrote it again
+    picture = fig.text()
+    assert picture.count("{$F$}") == 1 and re.search(r"\\node\[anchor=[a-z ]+, inner sep=1.5pt\] at \(1,0\) \{\$F\$\}", picture)
+
+
+@pytest.mark.parametrize("problem_id", ["rolling_incline", "sphere_speed_at_bottom"])
+def test_an_inclines_height_is_the_drop_of_the_ball_as_drawn(problem_id):
+    """Issue 37, item 9: the ball's speed at the bottom is that of a drop through the height H, but the
+    figure spanned H over the whole incline, with the ball drawn lower. H now spans the drop of the
+    ball as drawn: from the bottom to its point of contact (its center drops as much), read from the
+    TikZ coordinates."""
+    tikz = figure.tikz(problem.load(problem_id))
+    number = r"(-?[\d.]+)"
+    width, height = map(float, re.search(rf"\\draw\[fill=gray!10\] \(0,0\) -- \({number},0\) -- \(0,{number}\)", tikz).groups())
+    x, y, r = map(float, re.search(rf"\\draw \({number},{number}\) circle \({number}\);", tikz).groups())
+    low, high = (float(v) for v in re.search(rf"\\draw\[dim\] \(-?[\d.]+,{number}\) -- \(-?[\d.]+,{number}\)", tikz).groups())
+    foot = y - r * width / math.hypot(width, height)  # the contact point, r from the center along the slope's normal
+    assert low == 0 and abs(high - foot) < 0.02 and high < height - 0.3, (high, foot, height)

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from conftest import student_solution
+from conftest import instructors_solution, student_solution, textbook_files
 from derive.core import library
 from derive.text.latex import latex_of
 
@@ -94,10 +94,15 @@ SCANS = {"a fraction in a fraction": nested_fractions, "acos(sin) or asin(cos)":
          "tan^2 + 1": tangent_squared_plus_one, "a double negative": double_negatives}
 
 
+def _equations(tex: str) -> list[str]:
+    """The displayed equations of `tex` (its align environments), quadratures left out."""
+    return [line for block in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", tex, re.S)
+            for line in block.split("\\\\\n") if r"\int" not in line]
+
+
 def unteacherly(tex: str) -> dict[str, list[str]]:
-    """What each scan finds in the displayed equations of `tex` (its align environments)."""
-    equations = [line for block in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", tex, re.S)
-                 for line in block.split("\\\\\n") if r"\int" not in line]
+    """What each scan finds in the displayed equations of `tex`."""
+    equations = _equations(tex)
     found = {name: [hit for line in equations for hit in scan(line)] for name, scan in SCANS.items()}
     return {name: hits for name, hits in found.items() if hits}
 
@@ -125,3 +130,13 @@ def test_results_are_in_textbook_form(path):
     tex, student_route = student_solution(path)
     shown = tex if student_route else tex[tex.index(r"\subsection*{Results}"):]
     assert unteacherly(shown) == {}
+
+
+@pytest.mark.parametrize("path", sorted({*PROBLEMS, *textbook_files()}), ids=lambda p: Path(p).stem)
+def test_the_proof_by_two_routes_has_no_fraction_in_a_fraction(path):
+    """The instructor's verification by Lagrange and Newton–Euler (or the two routes where they are
+    the worked solution) prints a fraction inside a fraction's numerator or denominator flat, a/b
+    (derive.text.latex): sticky_impact_pivoted's b v (5 m/(2 M + 5 m)) sqrt(...)/R^2 and the
+    bounce's and the pulley's forces had printed one in a script size."""
+    found = [hit for line in _equations(instructors_solution(path)) for hit in nested_fractions(line)]
+    assert found == []

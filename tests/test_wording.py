@@ -10,11 +10,12 @@ import re
 import pytest
 import sympy as sp
 
-from conftest import derived, student_solution, textbook
+from conftest import derived, notes_files, student_solution, textbook, textbook_files
 from derive.core import library
 from derive.language.problem import load
 from derive.publishing import letters
 from derive.publishing.wording import DIRECTIONS, Wording, bodies
+from derive.text.latex import symbol_latex
 
 LIBRARY = [p.stem for p in library.problem_files()]
 
@@ -136,3 +137,23 @@ def test_a_body_of_parts_is_called_what_it_is_never_an_abbreviated_key():
     assert words("The pend turns about its pivot") == "The pendulum turns about its pivot"
     assert bodies(load("ladder_firefighter"))["ladder"] == "ladder"
     assert bodies(load("elroys_beanie"))["outer"] == "outer body"  # turning in space, about its center: no pendulum
+
+
+@pytest.mark.parametrize("path", [*notes_files(), *textbook_files()], ids=lambda p: p.stem)
+def test_no_body_key_as_a_subscript_in_the_students_route(path):
+    """Issue 37, item 5: where no plain name is free, the student's route numbers a symbol by its
+    body's place in the scene (a_1, f_1, omega_1'), never by the body's key (a_block, f^spool,
+    omega_large' had been printed). The parameters' and asks' own names (m_ball) are the file's words
+    in the question too. Only a problem whose student solution takes the student's route: the others
+    still print the engine's coordinates (x_ball, theta_ball), which issue 37 leaves open."""
+    tex, route = student_solution(path)
+    if not route:
+        return
+    problem = derived(path).problem
+    math = " ".join(a or b for a, b in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}|\$([^$]*)\$", tex, flags=re.S))
+    for written in sorted({symbol_latex(n) for n in (*problem.parameters, *problem.asks)} - {*problem.parameters, *problem.asks},
+                          key=len, reverse=True):  # m_{\mathrm{ball}}, not a plain a
+        math = math.replace(written, " ")
+    found = [m[0] for key in problem.scene.bodies
+             for m in re.finditer(r"[_^]\{(?:\\mathrm\{)?" + re.escape(key) + r"'?\}", math)]
+    assert not found, found

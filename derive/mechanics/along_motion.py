@@ -189,17 +189,18 @@ def definite(expr: sp.Expr, sample) -> sp.Expr:
 
 def _names(moving: list[_Moving], leading: _Moving, scene: Scene) -> dict[tuple[str, str], sp.Symbol]:
     """The symbols of each body's acceleration along its motion and angular acceleration: a and
-    alpha where one body has each (or all move alike), else subscripted by the body."""
+    alpha where one body has each (or all move alike), else numbered by the body (`Scene.numbers`)."""
     taken = {str(s) for b in scene.bodies.values() for s in b.mass.free_symbols}
     result = {}
     alike = [m for m in moving if m.heading is not None and tidy(m.speed / leading.speed) == 1] \
         if leading.heading is not None else []
     translating = [m for m in moving if m.heading is not None]
     turning = [m for m in moving if m.turn != 0 and scene.bodies[m.name].rotates]
+    number = scene.numbers()  # a_1, never a_block: the body's key is the file's
     for m in translating:
-        result[m.name, "a"] = sp.Symbol("a" if m in alike or len(translating) == 1 else f"a_{m.name}", real=True)
+        result[m.name, "a"] = sp.Symbol("a" if m in alike or len(translating) == 1 else f"a_{number[m.name]}", real=True)
     for m in turning:
-        result[m.name, "alpha"] = sp.Symbol("alpha" if len(turning) == 1 else f"alpha_{m.name}", real=True)
+        result[m.name, "alpha"] = sp.Symbol("alpha" if len(turning) == 1 else f"alpha_{number[m.name]}", real=True)
     if any(str(s) in taken for s in result.values()):
         raise NotAlongALine("a parameter is named as an acceleration")
     return result

@@ -206,7 +206,7 @@ def about_each_axle(scene: Scene, coords: Coordinates, before: dict, grip: Rims,
     inertia = [scene.bodies[n].inertia for n in names]
     arms = (grip.reach, -grip.to_reach)
     rates = [coords.of(n, "theta").u for n in names]
-    after = [sp.Symbol(f"omega_{n}'") for n in names]
+    after = [sp.Symbol(f"omega_{k}'") for k in (1, 2)]  # numbered as the names give them: no file key in the text
     J = sp.Symbol("J")
     impulses = [sp.Eq(i * (w1 - before[u]), arm * J) for i, w1, u, arm in zip(inertia, after, rates, arms)]
     together = sp.Eq(grip.reach * after[0], grip.to_reach * after[1])

@@ -11,6 +11,7 @@ modules in `derive.mechanics` derive its motion.
 """
 from __future__ import annotations
 
+import itertools
 import re
 from dataclasses import dataclass, field
 
@@ -278,6 +279,23 @@ class Scene:
             if c.name == name:
                 return c
         raise KeyError(name)
+
+    def numbers(self) -> dict[str, int]:
+        """Each body's number, for a symbol of its own where no plain name is free (a_1, alpha_2; never
+        the body's key, which is the file's): its mass's index where the file numbers the masses (m1:
+        1), the other bodies the numbers left, in the scene's order.
+
+        >>> Scene({n: Body(n, "point", sp.Symbol(m), {}) for n, m in (("pulley", "M"), ("left", "m1"),
+        ...                                                          ("right", "m_2"))}).numbers()
+        {'pulley': 3, 'left': 1, 'right': 2}
+        """
+        indexed: dict[str, int] = {}
+        for name, body in self.bodies.items():
+            index = re.fullmatch(r"[A-Za-z]+_?(\d+)", body.mass.name) if isinstance(body.mass, sp.Symbol) else None
+            if index and int(index[1]) not in indexed.values():
+                indexed[name] = int(index[1])
+        left = (n for n in itertools.count(1) if n not in indexed.values())
+        return {name: indexed[name] if name in indexed else next(left) for name in self.bodies}
 
     def degrees_of_freedom(self) -> int:
         """Coordinates (x, y and, for rotating bodies, an angle) less the scalar constraints."""

@@ -34,6 +34,9 @@ from derive.quantities.base import Check, CheckFailure
 from derive.solution.textbook_routes import TextbookRoute
 
 ROUTES = ("lagrange", "newton_euler")
+#: An event's kind (`derive.model.scene.Event`), as the work-energy check names it.
+_EVENT_WORDS = {"stick": "the impact", "lock": "the impact", "bounce": "the impact", "move": "the move",
+                "turn": "the turn", "transfer": "the transfer", "pull": "the pull on the cord"}
 
 
 class CrossChecks:
@@ -385,11 +388,28 @@ class CrossChecks:
                                        + (f" where the {regime.name}" if regime.name else ""))
             kinds.add(ledger["power_nonconservative"] == 0)
         kind = "conserved" if kinds == {True} else "changes by the work of the applied forces"
-        sliding = " and of kinetic friction where it slides" if any("slip" in r.name for r in self.regimes) else ""
-        reading = ("Energy is conserved: the constraint forces do no work." if kinds == {True} else
-                   f"The energy changes only by the work of the applied forces{sliding}: the constraint forces do "
-                   "no work.")
-        return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work", reading)
+        return Check("work_energy", True, "numeric", f"T + V {kind}; constraints do no work",
+                     self._work_energy_reading(kinds == {True}))
+
+    def _work_energy_reading(self, conserved: bool) -> str:
+        """What the work-energy check says, true of this scene: a sliding contact's kinetic friction
+        does work (the other constraint forces none); an event (an impact, a move) changes the energy
+        in an instant the check's motions leave out, so the energy is conserved only between events.
+
+        "Energy is conserved: the constraint forces do no work." had stood beside a sticky impact's loss."""
+        sliding = any("slip" in r.name for r in self.regimes)
+        events = sorted({_EVENT_WORDS[s.event.kind] for s in self.scene.states.values() if s.event is not None})
+        between = " while the bodies move between the events" if events else ""
+        if conserved:
+            reading = f"Energy is conserved{between}: the constraint forces do no work"
+        elif sliding:
+            reading = (f"The energy changes{between} only by the work of the applied forces and of kinetic friction "
+                       "where it slides: the other constraint forces do no work")
+        else:
+            reading = f"The energy changes{between} only by the work of the applied forces: the constraint forces do no work"
+        if events:
+            reading += f"; {' and '.join(events)}, in an instant, is not part of this check"
+        return reading + "."
 
     @kept
     def _check_states(self, index: int) -> list[dict[sp.Symbol, sp.Expr]]:

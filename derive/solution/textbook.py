@@ -33,6 +33,7 @@ from derive import quantities
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
 from derive.core.tidying import tidy
 from derive.mechanics.derivation import KINETIC
+from derive.text.latex import symbol_latex
 from derive.text.steps import Step
 from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
@@ -146,7 +147,8 @@ def names(solution) -> dict[sp.Symbol, sp.Symbol]:
 def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     """Each constraint force as a textbook names it, where that names one thing: f and N for the one
     contact's friction and normal force (f^ball), T for the one cord's tension (T_string), T_1 and
-    T_2 on the two sides of a pulley; a name a parameter takes, or an ask of something else, is kept."""
+    T_2 on the two sides of a pulley; where a parameter, or an ask of something else, takes the name,
+    the force on one body is numbered after it (`Scene.numbers`: f_1), any other keeps the engine's name."""
     shown = {x for step in along.steps for e in step.equations for x in e.free_symbols}
     forces = [u for u in along.acting if u in shown]
     plain = {u: _plain(u.name) for u in forces}
@@ -156,13 +158,18 @@ def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     surfaces = {u: part.surface for part in solution.dynamics_scene.constraints if isinstance(part, Contact)
                 for u in part.unknowns().values()}
     problem, result = solution.problem, {}
+    taken = {symbol_latex(n) for n in (*problem.parameters, *problem.asks)}
     for u, name in plain.items():
         if counts[name] > 1 and u in surfaces:  # two normal forces: N_floor and N_wall
             name = f"{name}_{surfaces[u]}"
-        if counts.get(name, 0) > 1 or name in problem.parameters or name == u.name:
+        if counts.get(name, 0) > 1 or name == u.name:
             continue
-        if name in problem.asks and not _same(solution, name, along.acting[u] * along.values[u]):
-            continue
+        if name in problem.parameters or name in problem.asks and not _same(solution, name, along.acting[u] * along.values[u]):
+            # the file's f is another thing (the friction along +x): f_1, never f^spool after the body's key
+            owner = u.name.partition("^")[2]
+            name = f"{name}_{solution.dynamics_scene.numbers()[owner]}" if owner in solution.dynamics_scene.bodies else None
+            if name is None or symbol_latex(name) in taken:
+                continue
         result[u] = sp.Symbol(name, real=True)
     return result
 
@@ -186,13 +193,18 @@ def _same(solution, name: str, value) -> bool:
 
 def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     """The route's own symbols that a problem file's name takes with another meaning (a parameter a,
-    or an ask a that is the block's y component, y up), each renamed after its body: a_block."""
+    or an ask a that is the block's y component, y up), each numbered after its body (`Scene.numbers`: a_1
+    for the acceleration along its motion of the block of mass m1; a_1' where a file's name is a_1),
+    never subscripted by the body's key, which is the file's and no word of the student's."""
     problem, result = solution.problem, {}
+    taken = {symbol_latex(n) for n in (*problem.parameters, *problem.asks)}
     for symbol, value in along.own.items():
         name = str(symbol)
         if name in problem.parameters or name in problem.asks and not _same(solution, name, value):
             owner = next(body for (body, _), named in along.names.items() if named == symbol)
-            result[symbol] = sp.Symbol(f"{name}_{owner}", real=True)
+            numbered = f"{name}_{solution.dynamics_scene.numbers()[owner]}"
+            result[symbol] = sp.Symbol(numbered if symbol_latex(numbered) not in taken else f"{numbered}'", real=True)
+            taken.add(symbol_latex(result[symbol].name))
     return result
 
 

@@ -14,6 +14,7 @@ from functools import lru_cache
 import sympy as sp
 from sympy.printing.conventions import split_super_sub
 from sympy.printing.latex import LatexPrinter, translate
+from sympy.simplify import fraction
 from sympy.printing.pretty.pretty_symbology import greek_unicode
 from sympy.printing.str import StrPrinter
 
@@ -52,9 +53,14 @@ def symbol_latex(name: str) -> str:
     ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
     >>> symbol_latex("dE"), symbol_latex("vx"), symbol_latex("FAx"), symbol_latex("tb"), symbol_latex("angle")
     ('\\Delta E', 'v_{x}', 'F_{\\mathrm{Ax}}', 't_{b}', '\\mathrm{angle}')
+    >>> symbol_latex("omega_1'")
+    "\\omega_{1}'"
     """
     if name.startswith("\\"):  # a name the engine gives in LaTeX (derivation.LAGRANGIAN)
         return name
+    if name.endswith("'"):  # a value after (omega_1'): the prime after the subscript, as a textbook sets it
+        bare = name.rstrip("'")
+        return symbol_latex(bare) + "'" * (len(name) - len(bare))
     base, supers, subs = split_super_sub(name)
     letter = translate(base)
     if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent
@@ -100,6 +106,36 @@ class _Printer(LatexPrinter):
     >>> latex_of(sp.pi / 2 - a), latex_of(1 - x / (3 * g)), latex_of(x - 1), latex_of(-a - x)
     ('\\frac{\\pi}{2} - \\alpha', '1 - \\frac{x}{3 g}', 'x - 1', '- \\alpha - x')
     """
+
+    _in_fraction = False  # printing a \frac's numerator or denominator
+
+    def _print_Mul(self, expr) -> str:
+        r"""A fraction as \frac, but inside another one's numerator or denominator written flat, a/b
+        (a fraction in a fraction prints in a script size, which no solution manual does: issue 37).
+
+        >>> h, R, w = sp.symbols("h R omega", positive=True)
+        >>> latex_of(w * (3 + h**2 / R**2) / 6), latex_of(1 / (1 + h / (2 * R)))
+        ('\\frac{\\omega \\left(3 + h^{2} / R^{2}\\right)}{6}', '\\frac{1}{1 + h / \\left(2 R\\right)}')
+        """
+        negative = expr.could_extract_minus_sign()
+        numerator, denominator = fraction(-expr if negative else expr, exact=True)
+        if denominator == 1 or not self._in_fraction:
+            self._in_fraction, outer = denominator != 1 or self._in_fraction, self._in_fraction
+            try:
+                return super()._print_Mul(expr)
+            finally:
+                self._in_fraction = outer
+        top, bottom = self._print(numerator), self._print(denominator)
+        if isinstance(numerator, sp.Add):
+            top = rf"\left({top}\right)"
+        if isinstance(denominator, (sp.Add, sp.Mul)):
+            bottom = rf"\left({bottom}\right)"
+        return ("- " if negative else "") + f"{top} / {bottom}"
+
+    def _print_Rational(self, expr) -> str:
+        if self._in_fraction and expr.q != 1:  # a half in a fraction's numerator: 1/2, as _print_Mul
+            return f"{'- ' if expr.p < 0 else ''}{abs(expr.p)} / {expr.q}"
+        return super()._print_Rational(expr)
 
     def _as_ordered_terms(self, expr, order=None):
         terms = super()._as_ordered_terms(expr, order=order)

@@ -226,10 +226,11 @@ class _Figure:
         (derive.publishing.figure.label_places); a label written on its path stays there if clear."""
         lines, nodes = list(self.lines), []
         for label, point, anchor, clear in label_places.placed(self.labels, label_places.strokes(self.lines)):
-            if label.inline:
+            # a label written on its path; where a layout rewrote that path without it, placed as any other
+            at = next((i for i, line in enumerate(lines) if label.inline + ";" in line), None) if label.inline else None
+            if at is not None:
                 if clear and (point, anchor) == (label.point, label.anchor):
                     continue
-                at = next(i for i, line in enumerate(lines) if label.inline + ";" in line)
                 lines[at] = lines[at].replace(label.inline + ";", ";", 1)
             options = [label.options] if label.options else []
             if not clear:  # no place beside its point is clear: the label on a white patch, legible over what it covers

@@ -32,8 +32,6 @@ def _on_surface(fig: _Figure) -> None:
     fig.add(f"\\draw[fill=gray!10] (0,0) -- {_pt((width, 0))} -- {_pt((0, height))} -- cycle;")
     fig.add(f"\\fill[pattern=north east lines] (-0.2,-0.15) rectangle {_pt((width + 0.3, 0))};")
     fig.arc((width, 0), 0.9, 180 - math.degrees(angle), 180, fig.tex(surface.angle), label_radius=1.0)
-    if surface.height is not None:
-        fig.dimension((0, 0), (0, height), fig.tex(surface.height), side=1, gap=0.3)
     down, normal = (math.cos(angle), -math.sin(angle)), (math.sin(angle), math.cos(angle))
     reference = _reference_size(fig, surface.height, height)
     several = len(contacts) > 1
@@ -58,6 +56,13 @@ def _on_surface(fig: _Figure) -> None:
                 fig.gravity_arrow(fig.mass_center(body, center, r, -math.degrees(angle)), body)
         previous = along
         along += r + 0.4
+    if surface.height is not None:
+        # the height a body drops to the foot of the incline: one body's from where it is drawn (its
+        # point of contact, whose drop its center's equals), several bodies' from the top
+        top = height if several else foot[1]
+        if not several:
+            fig.line((0, top), foot, "gray, very thin, dashed")
+        fig.dimension((0, 0), (0, top), fig.tex(surface.height), side=1, gap=0.3)
     if several and scene.gravity is not None:
         fig.arrow((width, 0.85 * height), (0, -0.7), "force", "$\\vec g$")
 
