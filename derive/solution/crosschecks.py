@@ -31,9 +31,8 @@ from derive.language.problem import Problem
 from derive.model.scene import DYNAMIC_KINDS
 from derive import quantities
 from derive.quantities.base import Check, CheckFailure
+from derive.quantities.by_routes import ROUTES, ByRoutes
 from derive.solution.textbook_routes import TextbookRoute
-
-ROUTES = ("lagrange", "newton_euler")
 
 
 class CrossChecks:
@@ -127,9 +126,10 @@ class CrossChecks:
         system solved in balls: simplifying them all would cost far more than the question)."""
         methods, by_balls = set(), True
         for name, ask in self.problem.asks.items():
-            if ask.quantity.kind not in DYNAMIC_KINDS:
+            kind = quantities.KINDS[ask.quantity.kind]
+            if not isinstance(kind, ByRoutes):
                 continue
-            a, b = (self._route_expression(ask, r) for r in ROUTES)
+            a, b = (kind.value(self, ask, r) for r in range(len(ROUTES)))
             method = agree(a, b, points=sample_points(self.problem, sp.Tuple(a, b), count=MIN_POINTS))
             if method is None:
                 raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {name}: {a} vs {b}")
@@ -460,7 +460,7 @@ class CrossChecks:
         """Energy conservation gives the same speeds as the accelerations integrated."""
         methods = set()
         for body, balance in self.energy_balances.items():
-            dynamics = self._contact_expression(body, "speed_at_bottom", self.derivations["lagrange"])
+            dynamics = self.contact_expression(body, "speed_at_bottom", self.derivations["lagrange"])
             method = agree(balance.speed, dynamics)
             if method is None:
                 raise CheckFailure(f"{self.problem.id}: energy gives {balance.speed}, dynamics {dynamics} for {body}")

@@ -411,7 +411,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         at = {where: reached.values[path.s], rate: reached.values[path.coordinate.u]}
         return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general, path.frozen).raw.items()})
 
-    def _refuse_undetermined(self, ask) -> None:
+    def refuse_undetermined(self, ask) -> None:
         """A body's speed after a move is the same however the move is made where the bodies can
         only turn about the ground's pins (a turntable); where a set of them was free to shift (a
         bead on a free rod) it is not, and the ask is refused. After a turn that leaves coordinates
@@ -440,7 +440,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                                                            "coefficients change): ask an angular velocity, a speed or "
                                                            "the kinetic energy there")
 
-    def _rate(self, q: Quantity, name: str) -> sp.Expr:
+    def rate_in(self, q: Quantity, name: str) -> sp.Expr:
         """A body's velocity, speed, angular velocity, position or angle in a named state, the
         kinetic energy of every body there (or its change from the state it comes from), the
         velocity of their center of mass, or the time the motion takes to get there."""
@@ -450,7 +450,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         return self.rate_at(q, self.states[name].values, self.states[start].values if start else None)
 
     def rate_at(self, q: Quantity, values: dict, before: dict | None = None) -> sp.Expr:
-        """A quantity of `_rate` but the time, at the coordinates and velocities `values` (the
+        """A quantity of `rate_in` but the time, at the coordinates and velocities `values` (the
         change of kinetic energy from those `before`): of a state's closed form, or of a
         simulation's state (derive.checks.chain_simulation)."""
         coords = self.coordinates
