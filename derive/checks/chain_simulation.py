@@ -185,7 +185,7 @@ def _answer(solution, report: SimulationReport, name: str, carried: dict, took: 
     elif q.kind in RATE_KINDS:
         start = solution.scene.states[state].start
         simulated = _float(solution.rate_at(q, carried[state], carried.get(start)), values)
-    elif isinstance(quantities.KINDS.get(q.kind), quantities.StateChange):
+    elif isinstance(quantities.KINDS[q.kind], quantities.StateChange):
         start = solution.scene.states[state].start
         before = carried[start] if start else state_motion.rest(coords)
         simulated = _float(quantities.KINDS[q.kind].at(solution, ask, carried[state], before), values)

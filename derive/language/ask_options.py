@@ -67,8 +67,7 @@ def about(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity) -> 
     >>> about(Reader("x.yaml"), "rod.end", "ask.t.about", scene, Quantity("torque", "rod", None))
     Point(body='rod', offset=(L/2, 0), words="the rod's end")
     """
-    kind = quantities.KINDS.get(quantity.kind)
-    takes = kind is not None and "about" in kind.options
+    takes = "about" in quantities.KINDS[quantity.kind].options
     if raw is None:
         if takes:
             raise reader.fail(field, f"a {quantity.kind} is taken about a point: give about: a joint's name, BODY, "

@@ -109,8 +109,8 @@ class AnswerSteps:
         ask's meaning where two describe the same quantity); an inverse ask's ends solving for its parameter."""
         result = {}
         for ask in self.problem.asks.values():
-            kind = quantities.KINDS.get(ask.quantity.kind)
-            if kind is None or not kind.own_section:
+            kind = quantities.KINDS[ask.quantity.kind]
+            if not kind.own_section:
                 continue
             title = quantities.describe_capitalized(kind.describe(ask))
             steps = kind.steps(self, ask)
@@ -124,10 +124,9 @@ class AnswerSteps:
         """An inverse ask's last step: the parameter at which the quantity takes the value asked."""
         parameter = self.problem.parameters[ask.zero_for]
         value = units.in_unit(self.expressions[ask.name], ask.unit)
-        kind = quantities.KINDS.get(ask.quantity.kind)
-        target = units.declared_symbols(units.in_unit(ask.equals, kind.unit) if kind else ask.equals,
-                                        self.problem.symbol_units)
-        quantity = sp.Symbol(kind.symbol_for(ask)) if kind else sp.Symbol(ask.name)
+        kind = quantities.KINDS[ask.quantity.kind]
+        target = units.declared_symbols(units.in_unit(ask.equals, kind.unit), self.problem.symbol_units)
+        quantity = sp.Symbol(kind.symbol_for(ask))
         return Step(f"Where it takes the value asked, solved for {parameter.name}",
                     (sp.Eq(quantity, target), sp.Eq(parameter.symbol, value)))
 

@@ -70,15 +70,14 @@ class CrossChecks:
         result = []
         asked: dict[str, list[str]] = {}
         for name, ask in self.problem.asks.items():
-            if ask.quantity.kind in quantities.KINDS:
-                asked.setdefault(ask.quantity.kind, []).append(name)
+            asked.setdefault(ask.quantity.kind, []).append(name)
         for kind, names in list(asked.items()):
             own = quantities.KINDS[kind].checks(self, names)
             if own is not None:
                 result += own
                 del asked[kind]
         for name, ask in self.problem.asks.items():
-            kind = quantities.KINDS.get(ask.quantity.kind) if ask.quantity.kind in asked else None
+            kind = quantities.KINDS[ask.quantity.kind] if ask.quantity.kind in asked else None
             second = kind.value(self, ask, 1) if kind is not None else None
             if second is None:
                 continue
@@ -106,7 +105,7 @@ class CrossChecks:
                 raise EngineLimit(f"{self.problem.path}: ask.{name}", f"find the dimension of its derived "
                                   f"answer ({error})") from None
             wanted = units.dimension(units.parse_unit(ask.unit))
-            kind = quantities.KINDS.get(ask.quantity.kind) if not ask.zero_for else None  # a parameter found: its unit
+            kind = quantities.KINDS[ask.quantity.kind] if not ask.zero_for else None  # a parameter found: its unit
             if kind is not None and kind.unit and not units.same_dimension(units.dimension(units.parse_unit(kind.unit)), wanted):
                 raise self.problem.error(f"ask.{name}.unit", f"declared {ask.unit}, but a {kind.kind} is in {kind.unit}")
             if not units.same_dimension(dimension, wanted):
