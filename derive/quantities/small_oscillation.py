@@ -42,7 +42,7 @@ class SmallOscillation(ByRoutes):
 
     def conditions(self, solution, ask) -> list[tuple[sp.Expr, bool, str]]:
         """The linearization's conditions, once for every small oscillation asked."""
-        return solution.small_oscillation_conditions() if first_asked(solution, ask, lambda a: True) else []
+        return solution.small_oscillation_conditions(ask.name) if first_asked(solution, ask, lambda a: True) else []
 
     def route_steps(self, solution, asks: list, route: str) -> list[Step]:
         """The route's equations linearized, once for every small oscillation asked."""
