@@ -11,7 +11,7 @@ the least release height that keeps it on the track. Each from one route's solve
 >>> from derive.solution.answers import Solution
 >>> problem = load("rolling_incline")
 >>> CONTACT.value(Solution(problem), problem.asks["a"], 0)
-2*g*sin(theta)/3
+5*g*sin(theta)/7
 """
 from __future__ import annotations
 
