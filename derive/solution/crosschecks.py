@@ -230,7 +230,7 @@ class CrossChecks:
             newton_euler = self.derivations_to(name)["newton_euler"]  # to a grip: with the part slipping
             reached = self.states[name]
             start = reached.path.start if reached.path else self.states[state.start].values
-            time = self._duration(name)[0] if not state.nudge else sp.Integer(0)  # from a vanishing push: unbounded
+            time = self.duration(name)[0] if not state.nudge else sp.Integer(0)  # from a vanishing push: unbounded
             exprs = [*reached.values.values(), *start.values(), time,
                      *(e.lhs - e.rhs for e in newton_euler.balances)]
             values = self.reaching_point(exprs, set(newton_euler.unknowns), name)
