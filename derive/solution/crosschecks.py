@@ -69,14 +69,14 @@ class CrossChecks:
         asked: dict[str, list[str]] = {}
         for name, ask in self.problem.asks.items():
             asked.setdefault(ask.quantity.kind, []).append(name)
-        for kind, names in list(asked.items()):
+        compared = []  # the asks of the kinds with no checks of their own: route 1 against route 0
+        for kind, names in asked.items():
             own = quantities.KINDS[kind].checks(self, names)
-            if own is not None:
-                result += own
-                del asked[kind]
+            result += own if own is not None else []
+            compared += names if own is None else []
         for name, ask in self.problem.asks.items():
-            kind = quantities.KINDS[ask.quantity.kind] if ask.quantity.kind in asked else None
-            second = kind.value(self, ask, 1) if kind is not None else None
+            kind = quantities.KINDS[ask.quantity.kind]
+            second = kind.value(self, ask, 1) if name in compared else None
             if second is None:
                 continue
             first = kind.value(self, ask, 0)
