@@ -41,6 +41,7 @@ from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
 
+
 def covered(quantity: Quantity) -> bool:
     """Whether the student's route answers the quantity (`QuantityKind.student_route`): an acceleration,
     a force; a quantity read at the placement adds its own section to it (a torque: r x F with the
