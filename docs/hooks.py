@@ -80,9 +80,13 @@ PAGES = [
     ("set-file", "The set file", "a set file (problems/sets/)", "derive.language.problem_sets:SET",
      ["derive.language.problem_sets:load_set"]),
 ]
-#: One page per quantity of derive.quantities, from its module: a quantity added there has its page.
-PAGES += [(f"quantity-{kind.replace('_', '-')}", f"Asking: {kind.replace('_', ' ')}", "ask: {NAME: {of: ...}}", None,
-           [type(quantity).__module__]) for kind, quantity in QUANTITIES.items()]
+#: One page per module of derive.quantities, from its docstring: a quantity added there has its page (the
+#: kinds of one module, the states' rates, on one page named after the first).
+MODULES: dict[str, list[str]] = {}
+for kind, quantity in QUANTITIES.items():
+    MODULES.setdefault(type(quantity).__module__, []).append(kind)
+PAGES += [(f"quantity-{kinds[0].replace('_', '-')}", f"Asking: {', '.join(k.replace('_', ' ') for k in kinds)}",
+           "ask: {NAME: {of: ...}}", None, [module]) for module, kinds in MODULES.items()]
 #: Where a page's part shows in a file's scene: (the scene's section, the key within an entry), to list
 #: the library problems that use it.
 USES = {"bodies": ("bodies", None), "surfaces": ("surfaces", None), "pin": ("joints", "pin"),

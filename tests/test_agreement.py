@@ -10,7 +10,8 @@ from derive.numbers import agreement
 from derive.publishing import report
 from derive.numbers.agreement import agree
 from derive.solution.answers import Solution
-from derive.solution.crosschecks import ROUTES, CheckFailure
+from derive.quantities.by_routes import ROUTES, ByRoutes
+from derive.solution.crosschecks import CheckFailure
 from derive.mechanics.derivation import Derivation
 from derive.language.problem import load
 
@@ -53,12 +54,12 @@ def test_piecewise_cases_are_compared_each_on_its_own():
 
 def _solution_with_a_wrong_route(monkeypatch, path, wrong):
     """A Solution whose Newton–Euler answers go through `wrong` (an answer -> a mutated one)."""
-    route_expression = Solution._route_expression
+    value_by = ByRoutes.value
 
-    def mutated(self, ask, route):
-        value = route_expression(self, ask, route)
-        return wrong(value) if route == ROUTES[1] else value
-    monkeypatch.setattr(Solution, "_route_expression", mutated)
+    def mutated(self, solution, ask, route):
+        value = value_by(self, solution, ask, route)
+        return wrong(value) if route == 1 else value
+    monkeypatch.setattr(ByRoutes, "value", mutated)
     return Solution(load(path))
 
 

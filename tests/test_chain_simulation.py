@@ -106,8 +106,8 @@ def test_a_jump_one_percent_off_is_caught(monkeypatch):
 
 def test_a_wrong_time_is_caught():
     solution = Solution(load("skid_to_roll"))
-    took, step = solution._duration("rolling")
-    solution._duration = lambda name: (took * sp.Rational(101, 100), step)
+    took, step = solution.duration("rolling")
+    solution.duration = lambda name: (took * sp.Rational(101, 100), step)
     report = chain_simulation.simulate(solution)
     assert any(n.startswith("rolling: the motion takes") for n in report.notes)
 

@@ -848,7 +848,7 @@ def test_kinetic_friction_asked_in_a_state_opposes_the_slip_there():
     solution = Solution(problem.load(str(textbook("block_down_rough_incline"))))
     contact = solution.scene_in("lower").constraint("block_contact")
     normal = solution.in_state("lagrange", "lower")[contact.unknowns()["normal"]]
-    along = solution._contact_expression("block", "friction", solution.derivations_in("lower")["lagrange"], "lower")
+    along = solution.contact_expression("block", "friction", solution.derivations_in("lower")["lagrange"], "lower")
     slip = contact.slip(solution.coordinates).xreplace(solution.states["lower"].values)
     point = {p.symbol: (p.range[0] + p.range[1]) / 2 if p.range else p.value
              for p in solution.problem.parameters.values()}

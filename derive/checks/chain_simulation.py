@@ -86,7 +86,7 @@ def simulate(solution, variant: dict[sp.Symbol, sp.Expr] | None = None) -> Simul
             report.unchecked.append((f"the time to {name}", "from a vanishing push it is unbounded (the limit the "
                                                             "places and speeds are)"))
         elif name in took:
-            expected = _float(solution._duration(name)[0], values)
+            expected = _float(solution.duration(name)[0], values)
             if abs(took[name] - expected) > TOLERANCE * (1 + expected):
                 report.fail(f"{name}: the motion takes {took[name]:.10g} s simulated, {expected:.10g} s by the closed form")
         expected = {k: _float(v, values) for k, v in closed.items()}
@@ -114,7 +114,7 @@ def _point(solution, variant: dict | None) -> dict[sp.Symbol, sp.Expr]:
         unknowns |= set(derivation.unknowns)
         exprs += [e.lhs - e.rhs for e in derivation.equations]
         if not state.rates and not state.event and not state.nudge:
-            exprs.append(solution._duration(name)[0])
+            exprs.append(solution.duration(name)[0])
     exprs += [solution.expressions[n] for n, a in solution.problem.asks.items() if a.state is not None]
     if variant is None:
         return solution.reaching_point(exprs, unknowns, next(reversed(solution.scene.states)))
@@ -141,7 +141,7 @@ def _segment(solution, name: str, start: dict | None, values: dict) -> tuple[flo
     if state.nudge:
         start, horizon = integrated_motion.nudged_start(solution.states[name], start, values)
     else:
-        horizon = 2 * _float(solution._duration(name)[0], values) + 1
+        horizon = 2 * _float(solution.duration(name)[0], values) + 1
     found = integrated_motion.integrate_to(newton_euler, coords, values, solution.states[name],
                                            solution._condition(state), horizon, start)
     if found is None:
@@ -182,10 +182,7 @@ def _answer(solution, report: SimulationReport, name: str, carried: dict, took: 
     scale = 0.0
     if q.kind == "time":
         simulated = took[state]
-    elif q.kind in RATE_KINDS:
-        start = solution.scene.states[state].start
-        simulated = _float(solution.rate_at(q, carried[state], carried.get(start)), values)
-    elif isinstance(quantities.KINDS.get(q.kind), quantities.StateChange):
+    elif q.kind in RATE_KINDS or isinstance(quantities.KINDS[q.kind], quantities.StateChange):  # `at` a state
         start = solution.scene.states[state].start
         before = carried[start] if start else state_motion.rest(coords)
         simulated = _float(quantities.KINDS[q.kind].at(solution, ask, carried[state], before), values)

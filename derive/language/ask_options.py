@@ -69,8 +69,8 @@ def about(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity) -> 
     >>> about(Reader("x.yaml"), "rod.end", "ask.t.about", scene, Quantity("torque", "rod", None))
     Point(body='rod', offset=(L/2, 0), words="the rod's end")
     """
-    kind = quantities.KINDS.get(quantity.kind)
-    takes = kind is not None and "about" in kind.options
+    kind = quantities.KINDS[quantity.kind]
+    takes = "about" in kind.options
     if raw is None and takes and kind.about_default is not None:
         raw = list(kind.about_default)  # a particle's angular momentum: about the origin unless told
     if raw is None:

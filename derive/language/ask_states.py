@@ -44,8 +44,8 @@ def state(reader: Reader, raw, field: str, scene: Scene, quantity: Quantity, pat
     if raw is None and slipping and quantity.kind in DYNAMIC_KINDS:
         raise reader.fail(field, f"the clutch {slipping} slips only while its plates turn at different rates: ask "
                                  "in a state where they do (in: STATE)")
-    kind = quantities.KINDS.get(quantity.kind)
-    if kind is not None:
+    kind = quantities.KINDS[quantity.kind]
+    if kind.state != "motion":
         return _of_kind(reader, raw, field, scene, kind, path)
     if raw is None:
         if quantity.kind in RATE_KINDS:

@@ -31,7 +31,7 @@ from derive import quantities
 from derive.language import amounts, ask_options, ask_states, derivation_source, labels
 from derive.language.reader import Reader, safe_load
 from derive.parts.contact import Contact
-from derive.model.scene import DYNAMIC_KINDS, Quantity, Scene, parse_quantity
+from derive.model.scene import Quantity, Scene, parse_quantity
 from derive.language.scene_file import SCENE, read_scene
 from derive.core.spelling import did_you_mean
 
@@ -366,8 +366,8 @@ def _asks(reader: Reader, raw, scene: Scene, parameters: dict[str, Parameter], r
         except ValueError as error:
             raise reader.fail(f"{field}.of", str(error)) from None
         zero_for, finds, equals = ask_options.sought(reader, spec, field, parameters, quantity)
-        kind = quantities.KINDS.get(quantity.kind)
-        if kind is not None and kind.exact_unit and not zero_for and str(spec["unit"]).strip() != kind.unit:
+        kind = quantities.KINDS[quantity.kind]
+        if kind.exact_unit and not zero_for and str(spec["unit"]).strip() != kind.unit:
             raise reader.fail(f"{field}.unit", f"{path} is asked in {kind.unit}, not {spec['unit']!r}")
         sig_figs = spec.get("sig_figs")
         if sig_figs is not None and (not isinstance(sig_figs, int) or not 1 <= sig_figs <= 15):
@@ -504,7 +504,6 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
     for name, p in parameters.items():
         if p.symbol not in used and name not in shown:
             raise reader.fail(f"parameters.{name}", "no part of the scene, no ask, condition or the question uses it")
-    kinds = {a.quantity.kind for a in asks.values()}
     read = {a.state for a in asks.values()} | {s.start for s in scene.states.values()}
     unread = next((name for name in scene.states if name not in read), None)
     if unread is not None:
@@ -529,8 +528,7 @@ def _check_used(reader: Reader, raw: dict, scene: Scene, asks: dict, parameters:
                             and a.quantity.target == name for a in asks.values()):
             raise reader.fail(f"scene.bodies.{name}.inertia.transverse", "no ask reads it (the axle's turn, "
                                                                          "turn.axle, does; L's turn does not)")
-    if not kinds & DYNAMIC_KINDS and not any(k.reads_motion(a) for a in asks.values()
-                                             if (k := quantities.KINDS.get(a.quantity.kind)) is not None):
+    if not any(quantities.KINDS[a.quantity.kind].reads_motion(a) for a in asks.values()):
         for c in scene.constraints:
             if isinstance(c, Contact) and c.has_friction:
                 where = f"scene.bodies.{c.body}" if c.point is None else f"scene.joints.{c.name}"

@@ -7,7 +7,7 @@ conserved on the way there (the track's push does no work, nor does static frict
 that does not slip), m g (h - 2 rho) = m v^2/2 (1 + I/(m r^2) for a ball that rolls), so
 h = 2 rho + (1 + I/(m r^2)) rho / 2: 5 R/2 sliding, 27 R/10 for a small solid sphere. The engine
 finds the normal force at the top from its equations of motion by each route
-(derive.solution.answers: _release_height); derive.solution.textbook_routes compares them.
+(derive.solution.answers: release_height); derive.solution.textbook_routes compares them.
 
 >>> m, g, R, r = sp.symbols("m g R r", positive=True)
 >>> loop_top(m, g, R, None, None)[1], loop_top(m, g, R, 2 * m * r**2 / 5, r)[1]

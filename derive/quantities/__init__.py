@@ -10,8 +10,12 @@ A quantity says, through `QuantityKind`, everything the rest of derive needs of 
   ranges, symbolically where that is cheap);
 - the sentence that states it to a student (`describe`).
 
-The answer layer (derive.solution.answers) and the checks ask this protocol; they never branch on
-the kind. Adding a quantity is one module here and one line in `KINDS` (docs/design.md, "Adding a
+The quantities of the equations of motion (an acceleration, a force, a state's rates, an equilibrium,
+an oscillation: `by_routes.ByRoutes`) read their values from the whole derivation's solve, through
+the Solution; derive.model.scene parses their paths.
+
+The answer layer (derive.solution.answers) and the checks ask this protocol for the values; they
+never branch on the kind to find one. Adding a quantity is one module here and one line in `KINDS` (docs/design.md, "Adding a
 quantity", walks through `turns`).
 
 >>> from derive.language.problem import load
@@ -23,18 +27,19 @@ Quantity(kind='torque', target='rod', detail='weight')
 """
 from __future__ import annotations
 
-from derive.model import directions
 from derive.model.directions import Sense
 from derive.model.scene import Quantity
-from derive.quantities import (angular_impulse, bearings, center_of_mass, conical, distance, free_rotation, internal_forces,
-                               mass, moment_of_inertia, orbit, particle_angular_momentum, particle_torque, path,
-                               pivot_point, position_cm, rolling, rolls_on_edge, standing_wave, system, torque, turns)
+from derive.quantities import (acceleration, angular_impulse, bearings, center_of_mass, conical, contact, distance,
+                               equilibrium, force, free_rotation, impulse, internal_forces, mass, moment_of_inertia, orbit,
+                               oscillation, particle_angular_momentum, particle_torque, path, pivot_point, position_cm,
+                               rates, rolling, rolls_on_edge, small_oscillation, standing_wave, system, torque, turns)
 from derive.quantities.base import QuantityKind, StateChange, describe_capitalized
 
 __all__ = ["KINDS", "QuantityKind", "StateChange", "describe_capitalized", "directional", "parse", "sense"]
 
 
-#: Every quantity of this package, by kind, in the order they claim an ask's path (`parse`).
+#: Every quantity of this package, by kind, in the order they claim an ask's path (`parse`: a particle's torque
+#: before a body's) and add their steps to a route's section of the worked solution (`QuantityKind.route_steps`).
 KINDS: dict[str, QuantityKind] = {k.kind: k for k in (particle_torque.PARTICLE_TORQUE, torque.TORQUE, turns.TURNS,
                                                       distance.DISTANCE, center_of_mass.CENTER_OF_MASS,
                                                       position_cm.POSITION_CM, conical.CONICAL,
@@ -44,22 +49,21 @@ KINDS: dict[str, QuantityKind] = {k.kind: k for k in (particle_torque.PARTICLE_T
                                                       pivot_point.PIVOT_POINT, rolls_on_edge.ROLLS_ON_EDGE,
                                                       free_rotation.FREE_ROTATION,
                                                       system.SYSTEM, mass.MASS, orbit.ORBIT, path.PATH,
-                                                      moment_of_inertia.MOMENT_OF_INERTIA, rolling.ROLLING)}
+                                                      moment_of_inertia.MOMENT_OF_INERTIA, rolling.ROLLING,
+                                                      acceleration.ACCELERATION, acceleration.ANGULAR_ACCELERATION,
+                                                      force.FORCE, contact.CONTACT, *rates.RATES, impulse.IMPULSE,
+                                                      small_oscillation.SMALL_OSCILLATION, equilibrium.EQUILIBRIUM,
+                                                      oscillation.OSCILLATION)}
 
 
 def sense(scene, quantity: Quantity, coords, sample) -> Sense | None:
-    """The words for the two ways an asked quantity can point: its kind's here, else derive.model.directions'."""
-    kind = KINDS.get(quantity.kind)
-    if kind is None:
-        return directions.sense(scene, quantity, coords, sample)
-    words = kind.sense_of(quantity)
-    return Sense(*words) if words else None
+    """The words for the two ways an asked quantity can point (`QuantityKind.sense_in`)."""
+    return KINDS[quantity.kind].sense_in(scene, quantity, coords, sample)
 
 
 def directional(quantity: Quantity) -> bool:
-    """Whether the quantity points one way or the other, whatever the scene (derive.model.directions)."""
-    kind = KINDS.get(quantity.kind)
-    return directions.directional(quantity) if kind is None else kind.sense_of(quantity) is not None
+    """Whether the quantity points one way or the other, whatever the scene (`QuantityKind.directional`)."""
+    return KINDS[quantity.kind].directional(quantity)
 
 
 def parse(scene, path: str) -> Quantity | None:

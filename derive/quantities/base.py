@@ -14,6 +14,7 @@ import sympy as sp
 
 from derive.core import units
 from derive.core.spelling import did_you_mean
+from derive.model.directions import Sense
 from derive.model.scene import SYSTEMS, Quantity
 from derive.numbers.agreement import agree
 from derive.text.steps import Step
@@ -40,7 +41,8 @@ class QuantityKind(ABC):
 
     kind: the `Quantity.kind` it answers; unit: the SI unit of its dimension; state: "change"
     (read in a state, `in: STATE`, as a change from the state it comes from), "optional" (at the
-    placement at rest, or in a state) or "never"; sense: the words for a positive and a negative value (None: it points no way);
+    placement at rest, or in a state), "never" or "motion" (derive.language.ask_states' rules for the
+    quantities of the equations of motion: `ByRoutes`); sense: the words for a positive and a negative value (None: it points no way);
     routes: the two routes' names, in words, the key's first; options: the ask keys it needs
     (`about:`), each required but where `about_default` gives the point; about_in_space: its `about:`
     is a fixed point [x, y, z] (a particle's torque in space), not a point of the plane or of a body;
@@ -92,6 +94,16 @@ class QuantityKind(ABC):
         question or the ask's meaning names (derive.checks.signs); None (the default) for any other."""
         return None
 
+    def sense_in(self, scene, quantity: Quantity, coords, sample) -> Sense | None:
+        """The words for its two signs in the scene (`sample`: an expression's value at the middle of the
+        ranges, where the words depend on the geometry): `sense_of`'s, by default."""
+        words = self.sense_of(quantity)
+        return Sense(*words) if words else None
+
+    def directional(self, quantity: Quantity) -> bool:
+        """Whether it points one way or the other, whatever the scene: where `sense_of` has words, by default."""
+        return self.sense_of(quantity) is not None
+
     def checks(self, solution, names: list[str]) -> list[Check] | None:
         """Its checks of the problem's asks `names`, every one of
         this kind, once per problem; None (the default): route 1 against route 0 at points of the ranges,
@@ -115,6 +127,22 @@ class QuantityKind(ABC):
     def unknowns(self, solution, ask) -> set[sp.Symbol]:
         """The accelerations and forces of the derivation the answer is made of (shown in the steps)."""
         return set()
+
+    def student_route(self, quantity: Quantity) -> bool:
+        """Whether the student's route (derive.solution.textbook), at the placement at rest, answers it:
+        a quantity with a section of its own adds it there (a torque: r x F with the forces the route finds)."""
+        return self.own_section
+
+    def sections(self, solution, ask) -> dict[str, list[Step]]:
+        """Sections of the worked solution of its own besides the routes', where it is not `own_section`
+        (a loop's least release height: the normal force at its top, and energy to it): none by default."""
+        return {}
+
+    def route_steps(self, solution, asks: list, route: str) -> list[Step]:
+        """The steps this kind's asks (`asks`, in the problem's order) add to a route's section of the
+        worked solution, after the route's equations and their solve (an equilibrium's, a period's):
+        none by default."""
+        return []
 
 
 def body_ask(kind: str, held, head: str, rest: str, allowed, what: str, also=()) -> Quantity | None:

@@ -60,23 +60,28 @@ class AnswerConditions:
                                                              "is pi/2 or more: a plane's angle lies in [0, pi/2)")]
         if {a.quantity.kind for a in self.problem.asks.values()} & DYNAMIC_KINDS:
             result += self._sign_conditions()
-        if any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()) and self.freedoms > 1:
-            result += list(self.normal_modes["lagrange"].conditions)
-        elif any(a.quantity.kind == "small_oscillation" for a in self.problem.asks.values()):
-            result += self._loaded_at_equilibrium()
-            oscillation = self.oscillations["lagrange"]
-            if not oscillation.proven:  # its sign was read at the middle of the ranges
-                result.append((oscillation.stiffness if oscillation.stable else -oscillation.stiffness, True,
-                               f"the equilibrium is {'un' if oscillation.stable else ''}stable at these parameters "
-                               f"(q'' = {sp.sstr(-oscillation.stiffness)} q)"))
-            if oscillation.damping != 0 and oscillation.stable:
-                result.append((tidy(oscillation.stiffness - oscillation.damping**2 / 4), True,
-                               "the damping is too strong at these parameters: it does not oscillate "
-                               "(overdamped, c^2/4 >= k)"))
         for ask in self.problem.asks.values():
-            kind = quantities.KINDS.get(ask.quantity.kind)
-            result += kind.conditions(self, ask) if kind is not None else []
+            result += quantities.KINDS[ask.quantity.kind].conditions(self, ask)
         return result + self._magnitudes() + self._found_in_range() + self._declared(answers=True)
+
+    def small_oscillation_conditions(self, ask: str) -> list[tuple[sp.Expr, bool, str]]:
+        """What a small oscillation's answers need (derive.quantities.small_oscillation): each normal
+        mode's; of one degree of freedom, the forces that carry the swing positive at the equilibrium,
+        a stability read at the middle of the ranges kept, and no overdamping (`ask`: the first ask of
+        one, named where a force at the equilibrium is zero)."""
+        if self.freedoms > 1:
+            return list(self.normal_modes["lagrange"].conditions)
+        result = self._loaded_at_equilibrium(ask)
+        oscillation = self.oscillations["lagrange"]
+        if not oscillation.proven:  # its sign was read at the middle of the ranges
+            result.append((oscillation.stiffness if oscillation.stable else -oscillation.stiffness, True,
+                           f"the equilibrium is {'un' if oscillation.stable else ''}stable at these parameters "
+                           f"(q'' = {sp.sstr(-oscillation.stiffness)} q)"))
+        if oscillation.damping != 0 and oscillation.stable:
+            result.append((tidy(oscillation.stiffness - oscillation.damping**2 / 4), True,
+                           "the damping is too strong at these parameters: it does not oscillate "
+                           "(overdamped, c^2/4 >= k)"))
+        return result
 
     def _found_in_range(self) -> list[tuple[sp.Expr, bool, str]]:
         """A parameter an inverse ask finds (`find:`) lies in the range the file declares for it, in
@@ -119,7 +124,7 @@ class AnswerConditions:
                            for difference, strict in declared.parts]
         return result
 
-    def _loaded_at_equilibrium(self) -> list[tuple[sp.Expr, bool, str]]:
+    def _loaded_at_equilibrium(self, ask: str) -> list[tuple[sp.Expr, bool, str]]:
         """A small oscillation swings both ways about its equilibrium (the reference configuration,
         derive.mechanics.oscillation): a cord's tension or a contact's normal force zero there and
         changing to first order along the swing would change sign for half of every swing, so each
@@ -128,7 +133,6 @@ class AnswerConditions:
         floor under a block with no gravity) carries nothing and is left to the parts' own signs."""
         solved = self.at_reference("lagrange").raw
         scene = self.dynamics_scene
-        ask = next(name for name, a in self.problem.asks.items() if a.quantity.kind == "small_oscillation")
         first_order = self.oscillations["lagrange"].first_order
         result = []
         for sign in (sign for part in (*scene.constraints, *scene.loads) for sign in part.signs()):

@@ -50,32 +50,8 @@ class AnswerSteps:
     def _needed_unknowns(self, state: str | None = None) -> set[sp.Symbol]:
         """The accelerations and forces the quantities asked in a state (None: the placement at
         rest) are made of."""
-        needed = set()
-        for ask in self.problem.asks.values():
-            q = ask.quantity
-            if ask.state != state:
-                continue
-            if q.kind == "acceleration":
-                needed.add(self.coordinates.of(q.target, q.detail).a)
-            elif q.kind == "angular_acceleration":
-                needed.add(self.coordinates.of(q.target, "theta").a)
-            elif q.kind == "force":
-                needed.add(self.dynamics_scene.constraint(q.target).unknowns()[q.detail])
-            elif q.kind == "contact":
-                forces = self.dynamics_scene.contact_of(q.target).unknowns()
-                if q.detail in ("normal_force", "min_friction_coefficient"):
-                    needed.add(forces["normal"])
-                if q.detail in ("friction", "min_friction_coefficient"):
-                    needed.add(forces["friction"])
-                if q.detail in ("acceleration.down_incline", "speed_at_bottom", "time_to_bottom"):
-                    needed |= {self.coordinates.of(q.target, k).a for k in ("x", "y")}
-            elif q.kind == "small_oscillation" and self.freedoms > 1:
-                needed |= {c.a for c in self.normal_modes["lagrange"].coordinates}
-            elif q.kind in ("small_oscillation", "oscillation"):
-                needed.add(self.oscillations["lagrange"].coordinate.a)
-            elif q.kind in quantities.KINDS:
-                needed |= quantities.KINDS[q.kind].unknowns(self, ask)
-        return needed
+        return {u for ask in self.problem.asks.values() if ask.state == state
+                for u in quantities.KINDS[ask.quantity.kind].unknowns(self, ask)}
 
     def winding_steps(self) -> list[Step]:
         """The sense each cord goes round each circle its file names a `side:` of, where it touches
@@ -114,23 +90,18 @@ class AnswerSteps:
         if needed and len(self.regimes) > 1:
             result.update(self._regime_steps(needed, rest))
         self._state_steps(result)
-        if "small_oscillation" in kinds:
-            for route in result:
-                result[route] += self.linearized[route].steps
-        if "equilibrium" in kinds:
-            for route in result:
-                result[route] += self.equilibria[route].steps
+        by_kind: dict[str, list[Ask]] = {}
         for ask in self.problem.asks.values():
-            if ask.quantity.kind == "oscillation":
+            by_kind.setdefault(ask.quantity.kind, []).append(ask)
+        for kind in quantities.KINDS.values():  # an equilibrium's balance, a period's integral, in KINDS' order
+            if kind.kind in by_kind:
                 for route in result:
-                    result[route] += self._exact_period(ask.amplitude, route)[1]
+                    result[route] += kind.route_steps(self, by_kind[kind.kind], route)
         for body, balance in self.energy_balances.items():
             result[f"energy of the {body}"] = list(balance.steps)
         result.update(self._quantity_sections())
         for ask in self.problem.asks.values():
-            if ask.quantity.kind == "contact" and ask.quantity.detail == "min_release_height":
-                result[f"staying on the loop: the {ask.quantity.target}"] = list(
-                    self._release_height(ask.quantity.target, "lagrange")[1])
+            result.update(quantities.KINDS[ask.quantity.kind].sections(self, ask))
         return {route: steps for route, steps in result.items() if steps}
 
     def _quantity_sections(self) -> dict[str, list[Step]]:
@@ -138,8 +109,8 @@ class AnswerSteps:
         ask's meaning where two describe the same quantity); an inverse ask's ends solving for its parameter."""
         result = {}
         for ask in self.problem.asks.values():
-            kind = quantities.KINDS.get(ask.quantity.kind)
-            if kind is None or not kind.own_section:
+            kind = quantities.KINDS[ask.quantity.kind]
+            if not kind.own_section:
                 continue
             title = quantities.describe_capitalized(kind.describe(ask))
             steps = kind.steps(self, ask)
@@ -153,10 +124,9 @@ class AnswerSteps:
         """An inverse ask's last step: the parameter at which the quantity takes the value asked."""
         parameter = self.problem.parameters[ask.zero_for]
         value = units.in_unit(self.expressions[ask.name], ask.unit)
-        kind = quantities.KINDS.get(ask.quantity.kind)
-        target = units.declared_symbols(units.in_unit(ask.equals, kind.unit) if kind else ask.equals,
-                                        self.problem.symbol_units)
-        quantity = sp.Symbol(kind.symbol_for(ask)) if kind else sp.Symbol(ask.name)
+        kind = quantities.KINDS[ask.quantity.kind]
+        target = units.declared_symbols(units.in_unit(ask.equals, kind.unit), self.problem.symbol_units)
+        quantity = sp.Symbol(kind.symbol_for(ask))
         return Step(f"Where it takes the value asked, solved for {parameter.name}",
                     (sp.Eq(quantity, target), sp.Eq(parameter.symbol, value)))
 

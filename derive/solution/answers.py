@@ -42,7 +42,6 @@ from derive.solution.solid_checks import SolidChecks
 from derive.solution.state_answers import StateAnswers
 from derive.language.problem import Ask, Problem
 from derive.core.expr import TIME
-from derive.model.scene import RATE_KINDS
 
 class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAnswers, SolidChecks):
     """Everything derived for one problem, computed on first use."""
@@ -119,7 +118,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             raise self.problem.error("scene", str(error)) from None
 
     @kept
-    def _exact_period(self, amplitude: sp.Expr, route: str):
+    def period_at_amplitude(self, amplitude: sp.Expr, route: str):
         """(period, steps) at an amplitude: the elliptic integral of a pendulum, else twice the time
         between the turning points (derive.mechanics.durations.period; Newton–Euler's motion
         integrated checks it: crosschecks)."""
@@ -185,43 +184,23 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         except EquilibriumError as error:
             raise self.problem.error("ask", str(error)) from None
 
-    def _route_expression(self, ask: Ask, route: str) -> sp.Expr:
-        q = ask.quantity
-        self._refuse_undetermined(ask)
-        if q.kind == "equilibrium":
-            return self.equilibria[route].position(self.scene, q.target, q.detail)
-        if q.kind == "small_oscillation":
-            if self.freedoms == 1 and q.detail.startswith("modes."):
-                raise self.problem.error(f"ask.{ask.name}.of", "the scene has one degree of freedom, one mode: ask "
-                                         f"small_oscillation.{q.detail.rpartition('.')[2]}")
-            try:
-                return self.linearized[route].quantity(q.detail)
-            except OscillationLimit as error:
-                raise self.problem.limit(str(error)) from None
-            except OscillationError as error:
-                raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
-        if q.kind == "oscillation":
-            try:
-                return self._exact_period(ask.amplitude, route)[0]
-            except OscillationLimit as error:
-                raise EngineLimit(f"{self.problem.path}: ask.{ask.name}", str(error)) from None
-            except OscillationError as error:
-                raise self.problem.error(f"ask.{ask.name}", str(error)) from None
-        if q.kind == "impulse":
-            return self._impulse(q, ask.state, route)
-        if q.kind in RATE_KINDS:
-            return self._rate(q, ask.state)
-        derivation = self.derivations[route]
-        solved = self.in_state(route, ask.state)
-        if q.kind == "acceleration":
-            return solved[self.coordinates.of(q.target, q.detail).a]
-        if q.kind == "angular_acceleration":
-            return solved[self.coordinates.of(q.target, "theta").a]
-        if q.kind == "force":
-            return solved[self.dynamics_scene.constraint(q.target).unknowns()[q.detail]]
-        if q.kind == "contact":
-            return self._contact_expression(q.target, q.detail, derivation, ask.state)
-        raise AssertionError(q.kind)
+    def linearized_quantity(self, ask: Ask, route: str) -> sp.Expr:
+        """A small oscillation's quantity by one route (derive.quantities.small_oscillation)."""
+        try:
+            return self.linearized[route].quantity(ask.quantity.detail)
+        except OscillationLimit as error:
+            raise self.problem.limit(str(error)) from None
+        except OscillationError as error:
+            raise self.problem.error(f"ask.{ask.name}.of", str(error)) from None
+
+    def period(self, ask: Ask, route: str) -> sp.Expr:
+        """The period at the ask's amplitude by one route (derive.quantities.oscillation)."""
+        try:
+            return self.period_at_amplitude(ask.amplitude, route)[0]
+        except OscillationLimit as error:
+            raise EngineLimit(f"{self.problem.path}: ask.{ask.name}", str(error)) from None
+        except OscillationError as error:
+            raise self.problem.error(f"ask.{ask.name}", str(error)) from None
 
     @kept
     def at_reference(self, route: str):
@@ -271,7 +250,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         index = self.regime_index(values)
         return None if index is None else self.regimes[index].name or None
 
-    def _contact_expression(self, body: str, detail: str, derivation: Derivation, state: str | None = None) -> sp.Expr:
+    def contact_expression(self, body: str, detail: str, derivation: Derivation, state: str | None = None) -> sp.Expr:
         """Quantities of a body on a surface, from one route's accelerations and forces (its
         normal force and friction also in a named state)."""
         solved = self.in_state(derivation.route, state)
@@ -290,7 +269,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
             ratio = tidy(stuck[forces["friction"]] / stuck[forces["normal"]])
             return answer_signs.magnitude(self.problem, ratio)
         if detail == "min_release_height":
-            return self._release_height(body, derivation.route)[0]
+            return self.release_height(body, derivation.route)[0]
         acceleration = sp.Matrix([solved[self.coordinates.of(body, k).a] for k in ("x", "y")])
         along = tidy(surface.down.dot(acceleration))
         if detail == "acceleration.down_incline":
@@ -304,7 +283,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
         return root(2 * distance / along)
 
     @kept
-    def _release_height(self, body: str, route: str) -> tuple[sp.Expr, tuple[Step, ...]]:
+    def release_height(self, body: str, route: str) -> tuple[sp.Expr, tuple[Step, ...]]:
         """Lowest release height (of the center, above its lowest point) that keeps the body on a
         loop: the normal force at the top (this route's dynamics) vanishes at the speed energy
         conservation gives after the drop."""
@@ -493,11 +472,7 @@ class Solution(AnswerConditions, AnswerSteps, StateAnswers, CrossChecks, SolidAn
 
     def _expression(self, name: str) -> sp.Expr:
         ask = self.problem.asks[name]
-        kind = quantities.KINDS.get(ask.quantity.kind)
-        if kind is not None:
-            result = kind.value(self, ask, 0)
-        else:
-            result = self._route_expression(ask, "lagrange")
+        result = quantities.KINDS[ask.quantity.kind].value(self, ask, 0)
         if result.has(sp.Piecewise):  # regimes: one case per regime, each in its simplest form
             folded = sp.piecewise_fold(result)
             result = tidy(folded) if isinstance(folded, sp.Piecewise) else folded

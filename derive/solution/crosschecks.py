@@ -31,9 +31,9 @@ from derive.language.problem import Problem
 from derive.model.scene import DYNAMIC_KINDS
 from derive import quantities
 from derive.quantities.base import Check, CheckFailure
+from derive.quantities.by_routes import ROUTES, ByRoutes
 from derive.solution.textbook_routes import TextbookRoute
 
-ROUTES = ("lagrange", "newton_euler")
 #: An event's kind (`derive.model.scene.Event`), as the work-energy check names it.
 _EVENT_WORDS = {"stick": "the impact", "lock": "the impact", "bounce": "the impact", "move": "the move",
                 "turn": "the turn", "transfer": "the transfer", "pull": "the pull on the cord"}
@@ -57,8 +57,6 @@ class CrossChecks:
             result.append(self._work_energy_check())
         if any(not state.rates for state in self.scene.states.values()):
             result.append(self._states_check())
-        if "oscillation" in kinds:
-            result.append(self._period_check())
         if self.energy_balances:
             result.append(self._energy_check())
         if self.textbook_route is not None:
@@ -74,16 +72,15 @@ class CrossChecks:
         result = []
         asked: dict[str, list[str]] = {}
         for name, ask in self.problem.asks.items():
-            if ask.quantity.kind in quantities.KINDS:
-                asked.setdefault(ask.quantity.kind, []).append(name)
-        for kind, names in list(asked.items()):
+            asked.setdefault(ask.quantity.kind, []).append(name)
+        compared = []  # the asks of the kinds with no checks of their own: route 1 against route 0
+        for kind, names in asked.items():
             own = quantities.KINDS[kind].checks(self, names)
-            if own is not None:
-                result += own
-                del asked[kind]
+            result += own if own is not None else []
+            compared += names if own is None else []
         for name, ask in self.problem.asks.items():
-            kind = quantities.KINDS.get(ask.quantity.kind) if ask.quantity.kind in asked else None
-            second = kind.value(self, ask, 1) if kind is not None else None
+            kind = quantities.KINDS[ask.quantity.kind]
+            second = kind.value(self, ask, 1) if name in compared else None
             if second is None:
                 continue
             first = kind.value(self, ask, 0)
@@ -110,7 +107,7 @@ class CrossChecks:
                 raise EngineLimit(f"{self.problem.path}: ask.{name}", f"find the dimension of its derived "
                                   f"answer ({error})") from None
             wanted = units.dimension(units.parse_unit(ask.unit))
-            kind = quantities.KINDS.get(ask.quantity.kind) if not ask.zero_for else None  # a parameter found: its unit
+            kind = quantities.KINDS[ask.quantity.kind] if not ask.zero_for else None  # a parameter found: its unit
             if kind is not None and kind.unit and not units.same_dimension(units.dimension(units.parse_unit(kind.unit)), wanted):
                 raise self.problem.error(f"ask.{name}.unit", f"declared {ask.unit}, but a {kind.kind} is in {kind.unit}")
             if not units.same_dimension(dimension, wanted):
@@ -130,9 +127,10 @@ class CrossChecks:
         system solved in balls: simplifying them all would cost far more than the question)."""
         methods, by_balls = set(), True
         for name, ask in self.problem.asks.items():
-            if ask.quantity.kind not in DYNAMIC_KINDS:
+            kind = quantities.KINDS[ask.quantity.kind]
+            if not isinstance(kind, ByRoutes):
                 continue
-            a, b = (self._route_expression(ask, r) for r in ROUTES)
+            a, b = (kind.value(self, ask, r) for r in range(len(ROUTES)))
             method = agree(a, b, points=sample_points(self.problem, sp.Tuple(a, b), count=MIN_POINTS))
             if method is None:
                 raise CheckFailure(f"{self.problem.id}: Lagrange and Newton–Euler disagree on {name}: {a} vs {b}")
@@ -236,7 +234,7 @@ class CrossChecks:
             newton_euler = self.derivations_to(name)["newton_euler"]  # to a grip: with the part slipping
             reached = self.states[name]
             start = reached.path.start if reached.path else self.states[state.start].values
-            time = self._duration(name)[0] if not state.nudge else sp.Integer(0)  # from a vanishing push: unbounded
+            time = self.duration(name)[0] if not state.nudge else sp.Integer(0)  # from a vanishing push: unbounded
             exprs = [*reached.values.values(), *start.values(), time,
                      *(e.lhs - e.rhs for e in newton_euler.balances)]
             values = self.reaching_point(exprs, set(newton_euler.unknowns), name)
@@ -288,15 +286,14 @@ class CrossChecks:
                                                              "of the parameter ranges: narrow them")
         return values
 
-    def _period_check(self) -> Check:
-        """Each period found by energy between the turning points (not a pendulum's elliptic
-        integral) against Newton–Euler's motion integrated from rest at the amplitude to the turning
-        point on the other side, at the middle of the ranges: twice its time, within 1e-7."""
+    def period_check(self, names: list[str]) -> Check:
+        """The period at its amplitude of each ask `names` (derive.quantities.oscillation) found by
+        energy between the turning points (not a pendulum's elliptic integral) against Newton–Euler's
+        motion integrated from rest at the amplitude to the turning point on the other side, at the
+        middle of the ranges: twice its time, within 1e-7."""
         coords, newton_euler = self.coordinates, self.derivations["newton_euler"]
         compared = 0
-        for ask in self.problem.asks.values():
-            if ask.quantity.kind != "oscillation":
-                continue
+        for ask in (self.problem.asks[name] for name in names):
             try:
                 exact_period(self.scene, self.derivations["lagrange"], ask.amplitude)
                 continue  # a pendulum: the elliptic integral, compared by the routes check
@@ -480,7 +477,7 @@ class CrossChecks:
         """Energy conservation gives the same speeds as the accelerations integrated."""
         methods = set()
         for body, balance in self.energy_balances.items():
-            dynamics = self._contact_expression(body, "speed_at_bottom", self.derivations["lagrange"])
+            dynamics = self.contact_expression(body, "speed_at_bottom", self.derivations["lagrange"])
             method = agree(balance.speed, dynamics)
             if method is None:
                 raise CheckFailure(f"{self.problem.id}: energy gives {balance.speed}, dynamics {dynamics} for {body}")

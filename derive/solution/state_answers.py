@@ -24,7 +24,7 @@ from derive.core import limits
 from derive.mechanics import (durations, friction, grips, impacts, lagrange, moves, newton_euler, reaching, states as state_motion)
 from derive.mechanics.derivation import Solved
 from derive.text.steps import Step
-from derive.core.tidying import root, tidy
+from derive.core.tidying import tidy
 from derive.parts.clutch import Clutch
 from derive.parts.contact import Contact
 from derive.parts.pin import Pin
@@ -32,7 +32,7 @@ from derive.parts.slipping_clutch import SlippingClutch
 from derive.parts.weld import Weld
 from derive.parts.places import extent
 from derive.text.prose import Sentence, capital
-from derive.model.scene import RATE_KINDS, Quantity
+from derive.model.scene import RATE_KINDS
 from derive.solution.state_conditions import StateConditions
 
 #: What the time limit suggests where finding a state of a chain is slow: each state is found from the
@@ -411,7 +411,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         at = {where: reached.values[path.s], rate: reached.values[path.coordinate.u]}
         return Solved({u: v.xreplace(at) for u, v in self._solved(derivation, general, path.frozen).raw.items()})
 
-    def _refuse_undetermined(self, ask) -> None:
+    def refuse_undetermined(self, ask) -> None:
         """A body's speed after a move is the same however the move is made where the bodies can
         only turn about the ground's pins (a turntable); where a set of them was free to shift (a
         bead on a free rod) it is not, and the ask is refused. After a turn that leaves coordinates
@@ -440,40 +440,13 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
                                                            "coefficients change): ask an angular velocity, a speed or "
                                                            "the kinetic energy there")
 
-    def _rate(self, q: Quantity, name: str) -> sp.Expr:
-        """A body's velocity, speed, angular velocity, position or angle in a named state, the
-        kinetic energy of every body there (or its change from the state it comes from), the
-        velocity of their center of mass, or the time the motion takes to get there."""
-        if q.kind == "time":
-            return self._duration(name)[0]
-        start = self.scene.states[name].start
-        return self.rate_at(q, self.states[name].values, self.states[start].values if start else None)
-
-    def rate_at(self, q: Quantity, values: dict, before: dict | None = None) -> sp.Expr:
-        """A quantity of `_rate` but the time, at the coordinates and velocities `values` (the
-        change of kinetic energy from those `before`): of a state's closed form, or of a
-        simulation's state (derive.checks.chain_simulation)."""
-        coords = self.coordinates
-        kinetic = lagrange.energies(self.dynamics_scene, coords)[0]
-        if q.kind == "kinetic_energy":
-            return tidy(kinetic.xreplace(values))
-        if q.kind == "kinetic_energy_change":
-            return tidy(kinetic.xreplace(values) - kinetic.xreplace(before))
-        if q.kind == "center_of_mass_velocity":
-            bodies = self.scene.bodies.values()
-            momentum = sum((b.mass * values[coords.of(b.name, q.detail).u] for b in bodies), sp.Integer(0))
-            return tidy(momentum / sum((b.mass for b in bodies), sp.Integer(0)))
-        if q.kind in ("angle", "position"):
-            kind = "theta" if q.kind == "angle" else q.detail
-            return tidy(self.scene.bodies[q.target].placed(kind) + values[coords.of(q.target, kind).q])
-        if q.kind == "angular_velocity":
-            return values[coords.of(q.target, "theta").u]
-        if q.kind == "velocity":
-            return values[coords.of(q.target, q.detail).u]
-        return root(values[coords.of(q.target, "x").u] ** 2 + values[coords.of(q.target, "y").u] ** 2)
+    @cached_property
+    def kinetic_energy(self) -> sp.Expr:
+        """Every body's kinetic energy in the coordinates and velocities (derive.quantities.rates)."""
+        return lagrange.energies(self.dynamics_scene, self.coordinates)[0]
 
     @kept
-    def _duration(self, name: str) -> tuple[sp.Expr, Step]:
+    def duration(self, name: str) -> tuple[sp.Expr, Step]:
         reached = self.states[name]
         if reached.took is not None:
             return reached.took
@@ -533,7 +506,7 @@ class StateAnswers(StateEvents, StateConditions, StartRegimes):
         for name in self._on_the_way():
             heading = self.state_heading(name)
             result[heading] = list(self.states[name].steps)
-            timed = self._duration(name)[1] if any(a.state == name and a.quantity.kind == "time"
+            timed = self.duration(name)[1] if any(a.state == name and a.quantity.kind == "time"
                                                    for a in self.problem.asks.values()) else None
             if timed is not None and timed not in result[heading]:  # a grip's time is one of its steps already
                 result[heading].append(timed)

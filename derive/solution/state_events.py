@@ -64,7 +64,7 @@ class StateEvents:
         (state_answers._slides_through)."""
         return self._chain.struck.get(name, self._chain.joints[self.scene.states[name].start])
 
-    def _impulse(self, q: Quantity, name: str, route: str) -> sp.Expr:
+    def impulse_in(self, q: Quantity, name: str, route: str) -> sp.Expr:
         """The impulse a body takes in the impact of the state `name`, or a joint gives the body it
         holds (derive.mechanics.impulses): by Lagrange's route from the changes of momentum, by
         Newton–Euler's from the impact's impulse equations."""

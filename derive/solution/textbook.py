@@ -45,19 +45,12 @@ from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
 
-#: The contact quantities the route along the motion gives (at the placement, at rest).
-ALONG = {"acceleration.down_incline", "normal_force", "friction", "min_friction_coefficient"}
-#: What energy and the constant acceleration give, of a body on a slope.
-ON_SLOPE = {"speed_at_bottom", "time_to_bottom"}
-
 
 def covered(quantity: Quantity) -> bool:
-    """Whether the student's route answers the quantity: a quantity of derive.quantities read at the
-    placement adds its own section to it (a torque: r x F with the forces the route finds)."""
-    kind = quantities.KINDS.get(quantity.kind)
-    if quantity.kind in ("acceleration", "angular_acceleration", "force") or kind is not None and kind.own_section:
-        return True
-    return quantity.kind == "contact" and quantity.detail in ALONG | ON_SLOPE
+    """Whether the student's route answers the quantity (`QuantityKind.student_route`): an acceleration,
+    a force; a quantity read at the placement adds its own section to it (a torque: r x F with the
+    forces the route finds)."""
+    return quantities.KINDS[quantity.kind].student_route(quantity)
 
 
 SWINGS = {("small_oscillation", "omega"), ("small_oscillation", "period")}
@@ -83,12 +76,12 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
             return small_swing(solution.dynamics_scene, solution.coordinates)
         except NotAlongALine:
             return None
-    if not asks or any(a.state is not None or a.zero_for and a.quantity.kind not in quantities.KINDS
+    if not asks or any(a.state is not None or a.zero_for and not quantities.KINDS[a.quantity.kind].own_section
                        or not covered(a.quantity) for a in asks):
         return None
     if len(solution.regimes) != 1:
         return None
-    if all(a.quantity.kind in quantities.KINDS for a in asks) and not solution._needed_unknowns():
+    if all(quantities.KINDS[a.quantity.kind].own_section for a in asks) and not solution._needed_unknowns():
         return None  # no force is asked or read: the quantities' own sections are the solution
     arguments = (solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
                  solution._sample, solution._needed_unknowns())

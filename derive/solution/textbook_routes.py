@@ -120,7 +120,7 @@ def loop_route(solution) -> TextbookRoute | None:
             dataclasses.replace(step, equations=tuple(e.xreplace(plain) for e in step.equations)) for step in steps)
         compared += [(f"{name} by {route}", height,
                       (lambda target=ask.quantity.target, route=route, small=small:
-                       solution._release_height(target, route)[0].xreplace(small))) for route in ("lagrange", "newton_euler")]
+                       solution.release_height(target, route)[0].xreplace(small))) for route in ("lagrange", "newton_euler")]
         compared.append((name, height, (lambda name=name: solution.expression(name))))
     return TextbookRoute(sections, tuple(compared), "Newton's second law at the top of the loop and the conservation "
                                                     "of energy")
