@@ -215,8 +215,9 @@ class _Kinematics:
             value = -value  # asked as a magnitude, its direction in words
         if any(self.same(value, found[key]) for key in ("v", "d")):
             return value  # the speed or the way found, already shown
-        steps.append(Step(f"Its {ask.quantity.detail} {'component' if ask.quantity.kind == 'velocity' else 'position'} "
-                          "there, along the way it went", (sp.Eq(sp.Symbol(name), value),), role="solve"))
+        what = "velocity component" if ask.quantity.kind == "velocity" else "position"
+        steps.append(Step(f"The {ask.quantity.target}'s {ask.quantity.detail} {what} there follows from the way it went",
+                          (sp.Eq(sp.Symbol(name), value),), role="solve"))
         return value
 
     def _read(self, name: str, ask, found: dict, symbols: dict, steps: list) -> sp.Expr | None:
