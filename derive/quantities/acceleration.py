@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.quantities.by_routes import ByRoutes
+from derive.quantities.by_routes import OneUnknown
 
 
-class Acceleration(ByRoutes):
+class Acceleration(OneUnknown):
     """A body's acceleration along x or y (see the module)."""
 
     kind = "acceleration"
@@ -28,15 +28,6 @@ class Acceleration(ByRoutes):
 
     def _unknown(self, solution, ask) -> sp.Symbol:
         return solution.coordinates.of(ask.quantity.target, self._coordinate(ask.quantity)).a
-
-    def on_route(self, solution, ask, route: str) -> sp.Expr:
-        return solution.in_state(route, ask.state)[self._unknown(solution, ask)]
-
-    def unknowns(self, solution, ask) -> set[sp.Symbol]:
-        return {self._unknown(solution, ask)}
-
-    def student_route(self, quantity) -> bool:
-        return True
 
 
 class AngularAcceleration(Acceleration):

@@ -61,3 +61,21 @@ class ByRoutes(QuantityKind):
 
     def describe(self, ask) -> str:
         return ask.meaning
+
+
+class OneUnknown(ByRoutes):
+    """A quantity that is one unknown of the routes' solve (a coordinate's acceleration, a constraint's
+    force), read where it is asked (`in_state`), an unknown the student's route finds too."""
+
+    @abstractmethod
+    def _unknown(self, solution, ask) -> sp.Symbol:
+        """The unknown of the routes' solve it is."""
+
+    def on_route(self, solution, ask, route: str) -> sp.Expr:
+        return solution.in_state(route, ask.state)[self._unknown(solution, ask)]
+
+    def unknowns(self, solution, ask) -> set[sp.Symbol]:
+        return {self._unknown(solution, ask)}
+
+    def student_route(self, quantity) -> bool:
+        return True

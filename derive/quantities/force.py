@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.quantities.by_routes import ByRoutes
+from derive.quantities.by_routes import OneUnknown
 
 
-class Force(ByRoutes):
+class Force(OneUnknown):
     """A constraint's force (see the module)."""
 
     kind = "force"
@@ -23,15 +23,6 @@ class Force(ByRoutes):
 
     def _unknown(self, solution, ask) -> sp.Symbol:
         return solution.dynamics_scene.constraint(ask.quantity.target).unknowns()[ask.quantity.detail]
-
-    def on_route(self, solution, ask, route: str) -> sp.Expr:
-        return solution.in_state(route, ask.state)[self._unknown(solution, ask)]
-
-    def unknowns(self, solution, ask) -> set[sp.Symbol]:
-        return {self._unknown(solution, ask)}
-
-    def student_route(self, quantity) -> bool:
-        return True
 
 
 FORCE = Force()
