@@ -164,3 +164,4 @@ def test_a_handouts_long_source_wraps_within_the_page(tmp_path):
     width = float(re.search(r'<page width="([\d.]+)"', html)[1])
     right = [float(x) for x in re.findall(r'xMax="([\d.]+)"', html)]
     assert right and max(right) < width - 36, (max(right), width)  # inside the paper, with a margin
+    assert _overfull(pdf.with_suffix(".tex"), tmp_path) == []  # nor wider than the tabular's column
