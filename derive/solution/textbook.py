@@ -61,7 +61,7 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
     pivot, a top's steady precession, its states: an impact, a skid), where every ask is one the
     student's route answers (None otherwise)."""
     if solution.scene.states:
-        return state_route(solution) or uniform_route(solution, TextbookRoute)
+        return state_route(solution) or uniform_route(solution)
     if solution.scene.orbit is not None:
         return orbit_route(solution)
     loop = loop_route(solution)

@@ -25,6 +25,7 @@ from derive.core.tidying import root, tidy
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion, definite
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
+from derive.solution.textbook_routes import TextbookRoute
 from derive.text.steps import Step
 
 #: The asks of the end state the kinematics answer: (kind, detail); and the forces there, where the motion
@@ -38,10 +39,10 @@ CONTACT = {"normal_force": "normal", "friction": "friction"}
 AT_PLACEMENT = {"acceleration", "angular_acceleration", "force", "contact"}
 
 
-def uniform_route(solution, compose):
-    """The route (built by `compose(sections, compared, principle, along)`: a TextbookRoute) of a scene
-    of one degree of freedom from its placement (at rest, or at given rates) to one state it reaches
-    at constant acceleration; None where the scene, its states or its asks are not such."""
+def uniform_route(solution) -> TextbookRoute | None:
+    """The student's route of a scene of one degree of freedom from its placement (at rest, or at given
+    rates) to one state it reaches at constant acceleration; None where the scene, its states or its
+    asks are not such."""
     states = solution.scene.states
     ends = [s for s in states.values() if not s.rates and s.event is None]
     if len(ends) != 1 or len(solution.regimes) != 1:
@@ -71,9 +72,9 @@ def uniform_route(solution, compose):
     compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", None).raw[u]))
                 for u, value in along.values.items()]
     compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
-    return compose({"Forces and torques along the motion": along.steps, "The motion at constant acceleration": steps},
-                   tuple(compared), "Newton's second law along the motion, then the kinematics of constant acceleration",
-                   along)
+    return TextbookRoute({"Forces and torques along the motion": along.steps, "The motion at constant acceleration": steps},
+                         tuple(compared), "Newton's second law along the motion, then the kinematics of constant "
+                         "acceleration", along)
 
 
 class _Kinematics:
