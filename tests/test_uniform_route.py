@@ -44,17 +44,17 @@ CASES = [
     ("disk_rolls_up_incline", (["newton", "ties", "solve"], ["kinematics", "stops"]),
      {"a": lambda: 2 * _s("g") * sp.sin(_s("theta")) / 3, "d": lambda: 3 * _s("v0")**2 / (4 * _s("g") * sp.sin(_s("theta")))},
      7),
-    # Serway & Jewett 9th ed., ch. 10, Example 10.14 style (a sphere rolling from rest down a slope of height h:
+    # Serway & Jewett 9th ed., ch. 10 (a solid sphere rolling from rest down a slope of height h:
     # a = 5 g sin(theta)/7, v = sqrt(10 g h/7), omega = v/R).
     ("sphere_rolls_down", (["newton", "ties", "solve"], ["kinematics", "reached", "rolling"]),
      {"a": lambda: 5 * _s("g") * sp.sin(_s("theta")) / 7, "v": lambda: sp.sqrt(10 * _s("g") * _s("h") / 7),
       "omega": lambda: sp.sqrt(10 * _s("g") * _s("h") / 7) / _s("R")}, 12),
-    # Halliday 10th ed., ch. 11, Sample Problem (a yo-yo falling on its string): a = 2g/3, T = Mg/3; from rest
+    # Halliday, Resnick & Walker 10th ed., ch. 11 (a yo-yo falling on its string): a = 2g/3, T = Mg/3; from rest
     # v = sqrt(2 a h).
     ("yoyo_falls", (["newton", "ties", "solve"], ["kinematics", "reached"]),
      {"a": lambda: 2 * _s("g") / 3, "T": lambda: _s("M") * _s("g") / 3, "v": lambda: sp.sqrt(4 * _s("g") * _s("h") / 3)},
      10),
-    # Serway & Jewett 9th ed., Example 10.11 (an Atwood machine with a massive pulley, I = M R^2/2, released from
+    # Serway & Jewett 9th ed., ch. 10 (an Atwood machine with a massive pulley, I = M R^2/2, released from
     # rest: v = sqrt(2 (m1 - m2) g h/(m1 + m2 + I/R^2)) after a fall h).
     ("atwood_pulley_speed", (["torque", "newton", "newton", "ties", "solve"], ["kinematics", "reached", "rolling"]),
      {"v": lambda: sp.sqrt(2 * (_s("m1") - _s("m2")) * _s("g") * _s("h") / (_s("m1") + _s("m2") + _s("M") / 2))}, 13),
