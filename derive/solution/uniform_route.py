@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derive import quantities
 from derive.core.tidying import root, tidy
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion, definite
 from derive.numbers.agreement import agree
@@ -33,8 +34,6 @@ from derive.text.steps import Step
 ANSWERED = {("time", None), ("speed", None), ("angular_velocity", None), ("distance", None), ("turns", None),
             ("position", "x"), ("position", "y"), ("velocity", "x"), ("velocity", "y")}
 FORCES = {"force", "contact"}
-#: A contact's asks and the unknowns they read.
-CONTACT = {"normal_force": "normal", "friction": "friction"}
 #: The asks at the placement the forces along the motion answer.
 AT_PLACEMENT = {"acceleration", "angular_acceleration", "force", "contact"}
 
@@ -192,13 +191,10 @@ class _Kinematics:
         from rest (a friction's sense would turn with the motion's)."""
         if sign0 < 0:
             return None
-        quantity, scene = ask.quantity, self.solution.dynamics_scene
-        if quantity.kind == "force":
-            unknown = scene.constraint(quantity.target).unknowns().get(quantity.detail)
-        else:
-            unknown = scene.contact_of(quantity.target).unknowns().get(CONTACT.get(quantity.detail))
-        if unknown not in self.along.values:
+        unknowns = quantities.KINDS[ask.quantity.kind].unknowns(self.solution, ask)  # what the ask reads
+        if len(unknowns) != 1 or not unknowns <= self.along.acting.keys() & self.along.values.keys():
             return None
+        (unknown,) = unknowns
         return tidy(self.along.acting[unknown] * self.along.values[unknown])
 
     def _component(self, name: str, ask, found: dict, steps: list) -> sp.Expr | None:
