@@ -89,8 +89,11 @@ def copy_library(folder: Path) -> Path:
 
 
 #: Where the read-only tests over the library keep each problem's derivation for the whole run, shared by
-#: the workers (pytest-xdist names the run): `derived`.
-SHARED = Path(tempfile.gettempdir()) / f"derive-test-derivations-{os.environ.get('PYTEST_XDIST_TESTRUNUID', os.getpid())}"
+#: the workers: `derived`. The controller names it before it starts the workers, which inherit its
+#: environment; it removes it when the run ends (pytest_sessionfinish).
+if "DERIVE_TEST_SHARED" not in os.environ:
+    os.environ["DERIVE_TEST_SHARED"] = tempfile.mkdtemp(prefix="derive-test-derivations-")
+SHARED = Path(os.environ["DERIVE_TEST_SHARED"])
 _DERIVED: dict = {}
 
 
@@ -293,5 +296,7 @@ def image_kind(data: bytes) -> str:
 
 
 def pytest_sessionfinish(session):
-    """The run's shared derivations go with it (a worker that ends first only costs the other a derivation)."""
-    shutil.rmtree(SHARED, ignore_errors=True)
+    """The run's shared derivations go with it, removed by the controller once every worker has ended
+    (a worker that ended first and removed them broke another's sheet that was reading them)."""
+    if not hasattr(session.config, "workerinput"):
+        shutil.rmtree(SHARED, ignore_errors=True)

@@ -152,6 +152,29 @@ def test_the_cache_keeps_to_its_cap(monkeypatch):
     assert sum(p.stat().st_size for p in kept) <= derivation_cache.size_cap()
 
 
+def test_an_entry_another_build_removes_meanwhile_is_passed_over(monkeypatch):
+    """Two builds sharing the folder: an entry listed by one and removed by the other before its size
+    or age is read is left out of the trim and the count (it had stopped a textbook sheet with
+    FileNotFoundError). Here the entry is there at its first look and gone at every later one."""
+    for name in ("rod_endpoint", "rod_midpoint"):
+        _entry(load(name))
+    gone, other = derivation_cache.entries()
+    real_stat, looks = Path.stat, []
+
+    def stat(path, *args, **kwargs):
+        if path == gone:
+            looks.append(path)
+            if len(looks) > 1:
+                raise FileNotFoundError(2, "removed by another build", str(path))
+        return real_stat(path, *args, **kwargs)
+
+    with monkeypatch.context() as patched:
+        patched.setattr(Path, "stat", stat)
+        derivation_cache.trim(0)
+        assert derivation_cache.info()["entries"] == 0
+    assert not other.exists() and looks
+
+
 def test_derive_cache_info_and_clear(tmp_path):
     _entry(load("rod_endpoint"))
     other = derivation_cache.folder() / "notes.pickle"  # not derive's: kept

@@ -37,6 +37,7 @@ import json
 import os
 import pickle
 import re
+import stat
 import sys
 import tempfile
 from pathlib import Path
@@ -252,23 +253,37 @@ def store(problem: Problem, solution: Solution, entry: str | None = None, payloa
     return write_entry(entry, payload, trimmed=trimmed)
 
 
-def entries() -> list[Path]:
-    """The entry files, the least recently used first."""
+def _listed() -> list[tuple[Path, os.stat_result]]:
+    """The entry files with their status, the least recently used first. Another process sharing the
+    folder (two builds at once) may remove a file between the listing and its status: it is left out."""
+    listed = []
     try:  # only derive's own names: a folder given by DERIVE_CACHE_DIR may hold other files
-        files = [p for p in folder().iterdir() if ENTRY_NAME.fullmatch(p.name) and p.is_file()]
+        names = [p for p in folder().iterdir() if ENTRY_NAME.fullmatch(p.name)]
     except OSError:
         return []
-    return sorted(files, key=lambda p: p.stat().st_mtime)
+    for path in names:
+        try:
+            status = path.stat()
+        except OSError:
+            continue
+        if stat.S_ISREG(status.st_mode):
+            listed.append((path, status))
+    return sorted(listed, key=lambda listing: listing[1].st_mtime)
+
+
+def entries() -> list[Path]:
+    """The entry files, the least recently used first."""
+    return [path for path, _ in _listed()]
 
 
 def trim(cap: int) -> None:
     """Remove the least recently used entries until the folder holds at most `cap` bytes."""
-    files = entries()
-    total = sum(p.stat().st_size for p in files)
-    for path in files:
+    listed = _listed()
+    total = sum(status.st_size for _, status in listed)
+    for path, status in listed:
         if total <= cap:
             return
-        total -= path.stat().st_size
+        total -= status.st_size
         path.unlink(missing_ok=True)
 
 
@@ -282,6 +297,6 @@ def clear() -> int:
 
 def info() -> dict:
     """The folder, its entries, their size and the cap, as `derive cache info` prints them."""
-    files = entries()
-    return {"folder": str(folder()), "entries": len(files), "bytes": sum(p.stat().st_size for p in files),
+    listed = _listed()
+    return {"folder": str(folder()), "entries": len(listed), "bytes": sum(status.st_size for _, status in listed),
             "cap": size_cap()}
