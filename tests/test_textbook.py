@@ -101,6 +101,14 @@ EXPECTED = {
         "d": lambda s: 3 * s.v0**2 / (4 * s.g * sp.sin(s.theta)),
         "t": lambda s: 3 * s.v0 / (2 * s.g * sp.sin(s.theta)),
     },
+    # Serway & Jewett 9th ed., ch. 10 problems (a solid cylinder rolling on a level table, pulled at its axle by
+    # a string over a light pulley to a hanging block: a = m g/(m + 3M/2), T = M a (3/2), f = M a/2 backward).
+    # A newcomer's file (stop 41), answered on the student's route on first contact.
+    "cylinder_pulled_by_hanging_block": {
+        "a": lambda s: s.m * s.g / (s.m + 3 * s.M / 2),
+        "T": lambda s: 3 * s.M / 2 * s.m * s.g / (s.m + 3 * s.M / 2),
+        "f": lambda s: s.M / 2 * s.m * s.g / (s.m + 3 * s.M / 2),
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),
