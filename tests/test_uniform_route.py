@@ -4,6 +4,8 @@ kinematics of constant acceleration take the motion to where it stops or to the 
 coordinate along the motion; no x and y components. Each case cites the text whose route it follows,
 checks the principle of each step and the number of equations, and compares what the route finds with
 the closed form the text prints (written here, not read back)."""
+import re
+
 import pytest
 import sympy as sp
 
@@ -88,6 +90,17 @@ def test_a_motion_between_two_states_at_constant_acceleration_takes_the_textbook
     shown = {str(s) for step in steps for e in step.equations for s in e.free_symbols}
     assert not shown & {"x", "y"} and not any(s.startswith(("xdot", "ydot", "x_", "y_")) for s in shown)
     assert [c for c in solution.checks() if c.name == "textbook_route"][0].passed  # beside both engine routes
+
+
+def test_a_result_read_from_the_kinematics_cites_no_equation_it_does_not_solve():
+    """The sphere's rate of turning, omega = v/R, follows from the speed found and the rolling: the worked
+    solution no longer says it comes "from (6)-(7)", the kinematics' two equations, while the solving of
+    those still cites them."""
+    from conftest import student_solution
+
+    tex, student = student_solution("sphere_rolls_down")
+    assert student and re.search(r"Where the state is reached, from \(\d+\)", tex), tex
+    assert re.search(r"as the constraints tie them:", tex) and "tie them, from" not in tex
 
 
 def test_a_motion_whose_acceleration_changes_keeps_the_engines_routes():

@@ -214,13 +214,13 @@ class _Kinematics:
             return value  # the speed or the way found, already shown
         what = "velocity component" if ask.quantity.kind == "velocity" else "position"
         steps.append(Step(f"The {ask.quantity.target}'s {ask.quantity.detail} {what} there follows from the way it went",
-                          (sp.Eq(sp.Symbol(name), value),), role="solve"))
+                          (sp.Eq(sp.Symbol(name), value),)))
         return value
 
     def _read(self, name: str, ask, found: dict, symbols: dict, steps: list) -> sp.Expr | None:
         """An ask of the end state from the kinematics (its SI value): the time, the leading body's speed
         or way, another body's (or the leader's turning) in proportion, and the turns, with the step that
-        says so."""
+        says so (a reading of what the kinematics found, which solves none of its equations: no "from (6)-(7)")."""
         kind, target = ask.quantity.kind, ask.quantity.target
         if kind == "time":
             return found["t"]
@@ -237,11 +237,10 @@ class _Kinematics:
         symbol = sp.Symbol(name)
         if kind == "turns":
             steps.append(Step(_WORDS[kind].format(target=target),
-                              (sp.Eq(symbol, factor * symbols[key] / (2 * sp.pi)), sp.Eq(symbol, tidy(value / (2 * sp.pi)))),
-                              role="solve"))
+                              (sp.Eq(symbol, factor * symbols[key] / (2 * sp.pi)), sp.Eq(symbol, tidy(value / (2 * sp.pi))))))
         elif factor != 1 or target != self.leader:
             steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, factor * symbols[key]),
-                                                                   sp.Eq(symbol, value)), role="solve"))
+                                                                   sp.Eq(symbol, value))))
         return value
 
 
