@@ -120,6 +120,30 @@ def test_each_arrow_is_drawn_at_its_point_along_its_direction(drawn):
     assert checked == 6 + 9 + 4 + 3
 
 
+def test_the_students_diagram_names_each_force_as_a_textbook_does_even_one_the_route_never_solves_for():
+    """A sphere rolling down a slope from rest to a speed: the route along the slope needs only f, but the
+    diagram draws the normal force too, as N (it was N^ball, the file's key for the sphere)."""
+    from derive.solution import textbook
+
+    solution = Solution(problem.load("sphere_rolls_down"))
+    along = solution.textbook_route.along
+    diagram = free_bodies(solution.problem, solution.dynamics_scene, solution.coordinates, along.acting,
+                          textbook.names(solution))["ball"]
+    assert sorted(a.label for a in diagram.arrows) == ["M g", "N", "f"]
+
+
+def test_two_normal_forces_are_named_after_their_surfaces_where_words_name_them_else_after_their_bodies():
+    """The ladder's N_floor and N_wall; the double wedge's faces are keys (left_side), so its blocks'
+    normal forces are N_1 and N_2, never N_{left, side}."""
+    from conftest import derived
+    from derive.solution import textbook as student
+
+    ladder = {str(u): str(v) for u, v in student.names(derived(textbook("ladder_statics"))).items()}
+    wedge = {str(u): str(v) for u, v in student.names(derived(textbook("double_wedge_pulley"))).items()}
+    assert {ladder["N^foot"], ladder["N^head"]} == {"N_floor", "N_wall"}
+    assert (wedge["N^block1"], wedge["N^block2"]) == ("N_1", "N_2")
+
+
 def test_each_label_is_a_term_of_the_bodys_balance(drawn):
     for name, (solution, diagrams) in drawn.items():
         steps = {s.body: s for s in solution.derivations["newton_euler"].steps if s.body}

@@ -140,11 +140,10 @@ def names(solution) -> dict[sp.Symbol, sp.Symbol]:
 def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     """Each constraint force as a textbook names it, where that names one thing: f and N for the one
     contact's friction and normal force (f^ball), T for the one cord's tension (T_string), T_1 and
-    T_2 on the two sides of a pulley; where a parameter, or an ask of something else, takes the name,
+    T_2 on the two sides of a pulley; two normal forces after their surfaces where a word names each
+    (N_floor, N_wall), else after their bodies (N_1, N_2); where a parameter, or an ask of something else, takes the name,
     the force on one body is numbered after it (`Scene.numbers`: f_1), any other keeps the engine's name."""
-    shown = {x for step in along.steps for e in step.equations for x in e.free_symbols}
-    forces = [u for u in along.acting if u in shown]
-    plain = {u: _plain(u.name) for u in forces}
+    plain = {u: _plain(u.name) for u in along.acting}  # the route's and its free-body diagrams' forces
     counts = {}
     for name in plain.values():
         counts[name] = counts.get(name, 0) + 1
@@ -153,8 +152,10 @@ def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     problem, result = solution.problem, {}
     taken = {symbol_latex(n) for n in (*problem.parameters, *problem.asks)}
     for u, name in plain.items():
-        if counts[name] > 1 and u in surfaces:  # two normal forces: N_floor and N_wall
-            name = f"{name}_{surfaces[u]}"
+        if counts[name] > 1 and u in surfaces:  # two normal forces: N_floor and N_wall, after a surface named by a word
+            owner = u.name.partition("^")[2]
+            name = f"{name}_{surfaces[u]}" if surfaces[u].isalpha() or owner not in solution.dynamics_scene.bodies \
+                else f"{name}_{solution.dynamics_scene.numbers()[owner]}"  # N_1, N_2: no key "left_side" typeset
         if counts.get(name, 0) > 1 or name == u.name:
             continue
         if name in problem.parameters or name in problem.asks and not _same(solution, name, along.acting[u] * along.values[u]):
