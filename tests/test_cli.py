@@ -448,6 +448,16 @@ def test_solve_prints_the_textbook_route_and_the_two_routes_with_proof(derive):
     assert "The solution, as a textbook writes it:" in proof
 
 
+def test_solve_prints_the_answers_as_the_documents_do(derive):
+    """The terminal printed acos(sin(alpha)) and |sin(2 alpha)| where the documents print pi/2 - alpha and
+    sin(2 alpha) over the ranges, and the rod's length L beside its angular momentum |L|: now the
+    documents' forms (derive.numbers.range_forms) and letters (the length as the script l, said so)."""
+    text = derive("solve", "rod_tilted_on_shaft").stdout
+    answers = text.split("Answers:")[1].split("Checks")[0]
+    assert "acos" not in answers and "│" not in answers and "π" in answers, answers
+    assert "printed ℓ for L (length of the rod)" in answers and "M⋅ℓ" in answers and "L ⋅M" not in answers
+
+
 def test_solve_writes_a_greek_letter_named_in_a_steps_words_as_the_letter(derive):
     """A newcomer read "the bodies turn together about the axle at the rate omega" beside equations that
     print ω: the terminal writes the letter, as the documents set the name as math."""

@@ -109,6 +109,15 @@ EXPECTED = {
         "T": lambda s: 3 * s.M / 2 * s.m * s.g / (s.m + 3 * s.M / 2),
         "f": lambda s: s.M / 2 * s.m * s.g / (s.m + 3 * s.M / 2),
     },
+    # Young & Freedman, University Physics 14th ed., ch. 10, secs. 10.1-10.2 (tau = F r sin(phi); a hinged uniform
+    # board, I = M L^2/3 about its edge: alpha = (F L sin(phi) - M g L/2)/I, counter-clockwise positive).
+    # A newcomer's file (stop 41): the torque of each force about the hinge asked directly.
+    "trapdoor_pulled_at_its_edge": {
+        "tauF": lambda s: s.F * s.L * sp.sin(s.phi),
+        "tauW": lambda s: -s.M * s.g * s.L / 2,
+        "tau": lambda s: s.F * s.L * sp.sin(s.phi) - s.M * s.g * s.L / 2,
+        "alpha": lambda s: (s.F * s.L * sp.sin(s.phi) - s.M * s.g * s.L / 2) / (s.M * s.L**2 / 3),
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),

@@ -15,6 +15,8 @@ answers' values and the keys are those derived.
 [(L, ell), (theta_ball, phi_ball), (thetadot_ball, phidot_ball)]
 >>> printed({"R": sp.Symbol("R", positive=True)}, set(), {sp.Symbol("R_x^axle", real=True)})
 {R_x^axle: F_x^axle}
+>>> printed({"L": L}, {"Lmag"}, set())  # the ask prints |L|
+{L: ell}
 """
 from __future__ import annotations
 
@@ -23,6 +25,7 @@ from collections.abc import Iterable, Mapping
 
 import sympy as sp
 from sympy.printing.conventions import split_super_sub
+from sympy.printing.latex import modifier_dict
 
 #: A parameter's letter, and what the documents print for it where another symbol shares that letter.
 OTHERWISE = {"L": "ell"}
@@ -34,8 +37,14 @@ JOINT_FORCE = re.compile(r"R(_[xy](?:\^\w+)?)")
 FORCE = ("F", "P")
 
 
+#: sympy's printers' modifiers of a symbol's name (Lmag prints |L|, vbar v with a bar), longest first.
+_MODIFIERS = re.compile("(" + "|".join(sorted(modifier_dict, key=len, reverse=True)) + ")+$")
+
+
 def _letter(name: str) -> str:
-    return split_super_sub(name)[0]
+    """The letter a symbol's name prints: its base less sympy's modifiers (Lmag, L_z: L)."""
+    base = split_super_sub(name)[0]
+    return _MODIFIERS.sub("", base) or base
 
 
 def printed(parameters: Mapping[str, sp.Symbol], asks: Iterable[str], shown: Iterable[sp.Symbol]) -> dict[sp.Symbol, sp.Symbol]:

@@ -19,7 +19,7 @@ import re
 import sympy as sp
 
 from derive.text.latex import latex_of, symbol_latex
-from derive.publishing import notation, wording
+from derive.publishing import letters, notation, variants, wording
 from derive.numbers import numeric
 from derive.core import units
 from derive.text.terminal import greek, indented, pretty
@@ -206,12 +206,17 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
             lines += indented(pretty(equation))
         lines.append("")
     lines.append("Answers:")
+    otherwise = letters.of_document(solution.problem, solution)
+    renamed = [f"{pretty(otherwise[p.symbol])[0]} for {name} ({p.meaning})"
+               for name, p in solution.problem.parameters.items() if p.symbol in otherwise]
+    if renamed:  # as the documents print it: one letter, one kind of thing
+        lines.append(f"  (printed {', '.join(renamed)}: one letter, one kind of thing)")
+    shown_forms = variants.shown_expressions(solution.problem, solution, otherwise)
     for name, a in result["answers"].items():
         unit = units.unicode_unit(a["unit"])
         value = f" = {a['value']}{' ' + unit if unit else ''}" if a["value"] is not None else \
             (f"  [{unit}]" if unit else "")
-        shown = units.declared_symbols(units.in_unit(solution.expression(name), a["unit"]), solution.problem.symbol_units)
-        lines += indented(pretty(sp.Symbol(name), " = ", shown, value))
+        lines += indented(pretty(sp.Symbol(name), " = ", shown_forms[name], value))
         said = a.get("direction") and not re.search(rf"\b{re.escape(a['direction'])}\b", a["meaning"])
         lines.append(f"    ({a['meaning']}{', ' + a['direction'] if said else ''})")  # not "energy lost, lost"
         if a.get("approximation") and a["approximation"]["relative_error"] is not None:

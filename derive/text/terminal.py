@@ -5,6 +5,11 @@
     -2⋅g
 a = ─────
       3
+>>> print("\\n".join(pretty("L = ", sp.Symbol("M") * sp.Symbol("ell") ** 2 / 12)))
+       2
+    M⋅ℓ
+L = ────
+     12
 >>> greek("the bodies turn together at the rate omega, about the axle")
 'the bodies turn together at the rate ω, about the axle'
 """
@@ -12,14 +17,25 @@ from __future__ import annotations
 
 import re
 
+import sympy as sp
 from sympy.printing.pretty.pretty import PrettyPrinter
 from sympy.printing.pretty.pretty_symbology import greek_unicode
 from sympy.printing.pretty.stringpict import prettyForm, stringPict
 
 from derive.text import printed_form
 
+class _Printer(PrettyPrinter):
+    """sympy's unicode pretty-printer, with the script letter the documents print as \\ell (a length beside
+    an angular momentum L: derive.publishing.letters) drawn as itself, where sympy writes the name ell."""
+
+    def _print_Symbol(self, e, bold_name=False):
+        if e.name == "ell" or e.name.startswith(("ell_", "ell^")):
+            e = sp.Symbol("\N{SCRIPT SMALL L}" + e.name[3:], **e.assumptions0)
+        return super()._print_Symbol(e, bold_name)
+
+
 #: sympy's unicode pretty-printer, lines unbroken (a terminal narrower than the equation scrolls it).
-_PRETTY = PrettyPrinter({"use_unicode": True, "wrap_line": False})
+_PRETTY = _Printer({"use_unicode": True, "wrap_line": False})
 
 
 def pretty(*parts) -> list[str]:
