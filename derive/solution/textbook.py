@@ -41,6 +41,7 @@ from derive.model.scene import Quantity
 from derive.parts.contact import Contact
 from derive.solution.textbook_routes import TextbookRoute, loop_route, orbit_route, state_route, top_route
 from derive.solution.uniform_route import uniform_route
+from derive.solution.swing_route import swing_route
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -61,7 +62,7 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
     pivot, a top's steady precession, its states: an impact, a skid), where every ask is one the
     student's route answers (None otherwise)."""
     if solution.scene.states:
-        return state_route(solution) or uniform_route(solution)
+        return state_route(solution) or uniform_route(solution) or swing_route(solution)
     if solution.scene.orbit is not None:
         return orbit_route(solution)
     loop = loop_route(solution)
