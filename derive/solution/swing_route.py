@@ -99,20 +99,30 @@ def _circle(solution) -> _Circle | None:
 
 
 def swing_route(solution) -> TextbookRoute | None:
-    """The route of a body on a circle from its placement to one state (see the module), or None."""
+    """The route of a body on a circle from its placement (at rest, or at given rates) to the one state
+    asked (through states on the way, which energy needs no more of; see the module), or None."""
     circle = _circle(solution)
     if circle is None or len(solution.regimes) != 1:
         return None
     states = solution.scene.states
     starts = [s for s in states.values() if s.rates]
     ends = [s for s in states.values() if not s.rates]
-    if len(starts) > 1 or len(ends) != 1 or any(s.start is not None or s.event is not None for s in starts):
+    asked = {a.state for a in solution.problem.asks.values()}
+    if len(starts) > 1 or any(s.start is not None or s.event is not None for s in starts):
+        return None
+    start = starts[0] if starts else None
+    on_the_way = [start and start.name]
+    for state in ends:  # each from the start or from a state on the way there (energy needs no more)
+        if state.event is not None or state.rate or state.relative_to is not None or state.start not in on_the_way \
+                or state.when is None and state.until is None:
+            return None
+        on_the_way.append(state.name)
+    ends = [s for s in ends if s.name in asked]
+    if len(ends) != 1:
         return None
     (end,) = ends
-    start = starts[0] if starts else None
     leaves = end.until is not None and end.until == ("leaves", circle.part.name) and circle.holder != "pivot"
-    if end.event is not None or end.rate or end.relative_to is not None or end.start != (start and start.name) \
-            or not (end.when is not None or leaves):
+    if not (end.when is not None or leaves) or any(s.until is not None for s in states.values() if s is not end):
         return None
     asks = solution.problem.asks
     for ask in asks.values():
@@ -224,7 +234,7 @@ class _Swing:
                         ("omega", "omega_1") if self.pivot else ("v", "v_1"))
         omega = self._named((("angular_velocity", None),), self.end.name, ("omega", "omega_1")) if rolls else None
         why = ROLLING if rolls else HOLDERS[circle.holder][2]
-        start_words = "the release" if speed0 == 0 else "the start"
+        start_words = "the release" if speed0 == 0 else self._where(self.start, self._inward(self._place(self.start)), "")[1:]
         end_words = "to where it leaves" if self.leaves else self._where(self.end, self._inward(self._place(self.end)), "to")
         energy_text = (f"Energy is conserved from {start_words} {end_words}: {why}; only gravity does work. The kinetic "
                        + ("energy is that of the rotation about the pivot" if self.pivot else
@@ -362,14 +372,13 @@ class _Swing:
         return sp.Matrix([tidy(c) for c in (self.circle.center - place) / self.circle.radius])
 
     def _where(self, state, inward: sp.Matrix, at: str = "at") -> str:
-        """Where `state` is on the circle, in words."""
-        if state is not self.end:
-            return f"{at} the start"
+        """Where `state` is on the circle, in words: "at the lowest point" (`at` "to": "to the lowest point")."""
         if inward[0] == 0 and inward[1] in (1, -1):
             return f"{at} the lowest point" if inward[1] == 1 else f"{at} the top"
         if inward[1] == 0:
-            return f"{'to where' if at == 'to' else 'where'} the center is level with {HOLDERS[self.circle.holder][0]}"
-        return f"{at} the state asked"
+            what = "it is" if self.circle.body.shape == "point" else "its center is"
+            return f"{'to where' if at == 'to' else 'where'} {what} level with {HOLDERS[self.circle.holder][0]}"
+        return f"{at} the start" if state is not self.end else f"{at} the state asked"
 
     def _torques(self) -> list[Step]:
         """The angular acceleration asked in a state, by the torque about the pivot."""
