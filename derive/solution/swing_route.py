@@ -40,6 +40,8 @@ from derive.text.steps import Step
 #: The asks the route answers in a state: (kind, detail).
 ANSWERED = {("speed", None), ("angular_velocity", None), ("angular_acceleration", None), ("force", "tension"),
             ("contact", "normal_force"), ("force", "reaction.x"), ("force", "reaction.y"), ("position", "y")}
+#: The forces toward the center the route finds: (kind, detail).
+FORCES = (("force", "tension"), ("contact", "normal_force"), ("force", "reaction.x"), ("force", "reaction.y"))
 #: How each holder is said, and why it does no work.
 HOLDERS = {"pivot": ("the pivot", "the pivot's force", "the pivot's force acts at a point that does not move, so it "
                      "does no work"),
@@ -77,7 +79,8 @@ def _circle(solution) -> _Circle | None:
     if isinstance(part, Pin) and part.to is None and body.rotates:
         rest = solution.coordinates.at_rest_in_reference()
         center = solution.coordinates.position(body.name, part.offset).xreplace(rest)
-        return _Circle(body, center, tidy(sp.sqrt((at - center).dot(at - center))), "pivot", part)
+        distance = tidy(sp.sqrt((at - center).dot(at - center)))
+        return _Circle(body, center, distance, "pivot", part) if distance != 0 else None
     if isinstance(part, Cord) and len(part.path) == 2 and part.drawn == 0 and body.shape == "point":
         fixed = [a for a in part.path if a.body is None]
         held = [a for a in part.path if a.body == body.name]
@@ -91,8 +94,8 @@ def _circle(solution) -> _Circle | None:
         if not isinstance(surface, Circle) or surface.carrier is not None or surface.turn != 0:
             return None
         radius = body.sizes.get("radius", sp.Integer(0))
-        if part.rolling and (radius == 0 or body.face_center is not None):
-            return None
+        if part.rolling and (radius == 0 or body.face_center is not None) or not part.rolling and body.rotates:
+            return None  # a body that slides and may spin has two freedoms
         return _Circle(body, surface.middle, tidy(surface.path_radius(radius)), surface.side, part,
                        radius if part.rolling else None)
     return None
@@ -224,81 +227,78 @@ class _Swing:
         return [Step("The moment of inertia about the center", (sp.Eq(self.moment, body.inertia),))]
 
     def sections(self) -> dict[str, tuple[Step, ...]] | None:
-        circle = self.circle
-        center, rho = circle.center, circle.radius
-        start_height = tidy(self._place(self.start)[1] - center[1])
+        """The route's sections, each ask's finding kept in `answers` (None where an ask is left)."""
+        circle, rolls = self.circle, self.circle.rolls is not None
         speed0 = self._rate(self.start)
-        rolls = circle.rolls is not None
-        word = "the rate of turning" if self.pivot else "the speed"
         v = self._named((("angular_velocity", None),) if self.pivot else (("speed", None),), self.end.name,
                         ("omega", "omega_1") if self.pivot else ("v", "v_1"))
         omega = self._named((("angular_velocity", None),), self.end.name, ("omega", "omega_1")) if rolls else None
-        why = ROLLING if rolls else HOLDERS[circle.holder][2]
         start_words = "the release" if speed0 == 0 else self._where(self.start, self._inward(self._place(self.start)), "")[1:]
         end_words = "to where it leaves" if self.leaves else self._where(self.end, self._inward(self._place(self.end)), "to")
-        energy_text = (f"Energy is conserved from {start_words} {end_words}: {why}; only gravity does work. The kinetic "
-                       + ("energy is that of the rotation about the pivot" if self.pivot else
-                          "energy is that of the center's motion and of the rotation, rolling at the speed over its radius"
-                          if rolls else "energy is that of its motion"))
-        ties = [Step("It rolls without slipping", (sp.Eq(omega, v / circle.rolls),))] if rolls else []
-        sections: dict[str, tuple[Step, ...]] = {}
-        newton: list[Step] = []
-        found: dict = {}
-        if self.leaves:
-            height = sp.Symbol(self._height_name(), positive=True)
-            push = sp.Symbol(self._free("N", "n"), real=True)
-            toward = push if circle.holder == "inside" else -push
-            energy = sp.Eq(self._kinetic(v, omega), self._kinetic(speed0) + self.mass * self.g * (start_height - height))
-            (z,) = sp.solve(self._put(energy, v, omega).subs(v, sp.sqrt(self.g * height)), height)
-            z = tidy(z)
-            speed = root(self.g * z)
-            steps = [*self._inertia_steps(), *ties,
-                     Step("Newton's second law toward the center of the curve, with the body's center at a height "
-                          "above the circle's center: the surface's push and the weight's component along the radius "
-                          "give the centripetal acceleration",
-                          (sp.Eq(toward + self.mass * self.g * height / rho, self.mass * v**2 / rho),)),
-                     Step("It leaves the surface where the push has fallen to zero", (sp.Eq(v**2, self.g * height),),
-                          role="solve"),
-                     Step(energy_text, (energy,)),
-                     Step("Where it leaves", (sp.Eq(height, z),), role="solve")]
-            if self._asked((("speed", None), ("angular_velocity", None)), self.end.name):
-                steps.append(Step("Its speed there", (sp.Eq(v, speed),), role="solve"))
-            end_place = sp.Matrix([sp.nan, center[1] + z])
-            found[self.end.name] = speed
-            for name, ask in self._asked((("position", "y"),), self.end.name):
-                self.answers[name] = tidy(center[1] + z)
-                if name != height.name:
-                    steps.append(Step("Its height, from the circle's center", (sp.Eq(sp.Symbol(name), self.answers[name]),),
-                                      role="solve"))
-            sections["Where it leaves the surface, by Newton's second law toward the center and energy"] = steps
-        else:
-            end_place = self._place(self.end)
-            drop = tidy(start_height - (end_place[1] - center[1]))
-            energy = sp.Eq(self._kinetic(v, omega), self._kinetic(speed0) + self.mass * self.g * drop)
-            solved = self._put(energy, v, omega)
-            squared = tidy(sp.solve(solved.subs(v, sp.sqrt(sp.Symbol("s", positive=True))), sp.Symbol("s", positive=True))[0])
-            if self.solution._sample(squared) < 0:
-                raise _Refused("it does not get there")
-            speed = root(squared)
-            found[self.end.name] = speed
-            sections[f"{word[0].upper()}{word[1:]}, by the conservation of energy"] = (
-                *self._inertia_steps(), *ties, Step(energy_text, (energy,)),
-                Step(f"Solving for {word}", (sp.Eq(v, speed),), role="solve"))
-        found[self.start.name if self.start else None] = speed0
-        reading = self._readings(v, speed, omega)
-        if reading:
-            key = next(iter(sections))
-            sections[key] = (*sections[key], *reading)
-        for state, place in ((self.start, self._place(self.start)), (self.end, end_place)):
-            newton += self._newton(state, place, found[state.name if state else None],
-                                   v if state is self.end else None)
+        energy_text = (f"Energy is conserved from {start_words} {end_words}: {ROLLING if rolls else HOLDERS[circle.holder][2]}; "
+                       "only gravity does work. The kinetic energy is that of " + (
+                           "the rotation about the pivot" if self.pivot else "the center's motion and of the rotation, "
+                           "rolling at the speed over its radius" if rolls else "its motion"))
+        first = [*self._inertia_steps(), *([Step("It rolls without slipping", (sp.Eq(omega, v / circle.rolls),))]
+                                           if rolls else [])]
+        title, steps, speed = (self._leaving if self.leaves else self._reaching)(v, omega, speed0, energy_text)
+        sections = {title: (*first, *steps, *self._readings(v, speed, omega))}
+        newton = self._newton(self.start, self._place(self.start), speed0, None)
+        if not self.leaves:
+            newton += self._newton(self.end, self._place(self.end), speed, v)
         if newton:
             sections["The forces, by Newton's second law toward the center"] = tuple(newton)
         torques = self._torques()
         if torques:
             sections["The angular acceleration, by the torque about the pivot"] = tuple(torques)
-        missing = set(self.solution.problem.asks) - set(self.answers)
-        return None if missing else sections
+        return None if set(self.solution.problem.asks) - set(self.answers) else sections
+
+    def _energy(self, v: sp.Symbol, omega: sp.Symbol | None, speed0: sp.Expr, height: sp.Expr) -> sp.Eq:
+        """K + U the same at the start and where the center is `height` above the circle's center."""
+        start_height = tidy(self._place(self.start)[1] - self.circle.center[1])
+        return sp.Eq(self._kinetic(v, omega), self._kinetic(speed0) + self.mass * self.g * tidy(start_height - height))
+
+    def _reaching(self, v: sp.Symbol, omega: sp.Symbol | None, speed0: sp.Expr, text: str) -> tuple:
+        """(title, steps, speed) to a state given where it is: the energy, solved for the speed."""
+        energy = self._energy(v, omega, speed0, self._place(self.end)[1] - self.circle.center[1])
+        square = sp.Symbol("s", positive=True)
+        squared = tidy(sp.solve(self._put(energy, v, omega).subs(v, sp.sqrt(square)), square)[0])
+        if self.solution._sample(squared) < 0:
+            raise _Refused("it does not get there")
+        speed = root(squared)
+        word = "the rate of turning" if self.pivot else "the speed"
+        return (f"{word[0].upper()}{word[1:]}, by the conservation of energy",
+                [Step(text, (energy,)), Step(f"Solving for {word}", (sp.Eq(v, speed),), role="solve")], speed)
+
+    def _leaving(self, v: sp.Symbol, omega: sp.Symbol | None, speed0: sp.Expr, text: str) -> tuple:
+        """(title, steps, speed) to where the body leaves the surface: Newton toward the center with no push,
+        v^2 = g z, and the energy, solved for the height z; each position asked is read from z."""
+        circle, center = self.circle, self.circle.center
+        if self._asked(FORCES, self.end.name):
+            raise _Refused("a force where it leaves")
+        height = sp.Symbol(self._height_name(), positive=True)
+        push = sp.Symbol(self._free("N", "n"), real=True)
+        toward = push if circle.holder == "inside" else -push
+        energy = self._energy(v, omega, speed0, height)
+        (z,) = sp.solve(self._put(energy, v, omega).subs(v, sp.sqrt(self.g * height)), height)
+        z = tidy(z)
+        speed = root(self.g * z)
+        steps = [Step("Newton's second law toward the center of the curve, with the body's center at a height above "
+                      "the circle's center: the surface's push and the weight's component along the radius give the "
+                      "centripetal acceleration",
+                      (sp.Eq(toward + self.mass * self.g * height / circle.radius, self.mass * v**2 / circle.radius),)),
+                 Step("It leaves the surface where the push has fallen to zero", (sp.Eq(v**2, self.g * height),),
+                      role="solve"),
+                 Step(text, (energy,)),
+                 Step("Where it leaves", (sp.Eq(height, z),), role="solve")]
+        if self._asked((("speed", None), ("angular_velocity", None)), self.end.name):
+            steps.append(Step("Its speed there", (sp.Eq(v, speed),), role="solve"))
+        for name, _ in self._asked((("position", "y"),), self.end.name):
+            self.answers[name] = tidy(center[1] + z)
+            if name != height.name:
+                steps.append(Step("Its height, from the circle's center", (sp.Eq(sp.Symbol(name), self.answers[name]),),
+                                  role="solve"))
+        return "Where it leaves the surface, by Newton's second law toward the center and energy", steps, speed
 
     def _height_name(self) -> str:
         """The height of the center above the circle's center: the ask's own name where it asks it."""
@@ -336,10 +336,10 @@ class _Swing:
         return steps
 
     def _newton(self, state, place: sp.Matrix, speed: sp.Expr, v: sp.Symbol | None) -> list[Step]:
-        """Newton's second law toward the center for each force asked in `state`."""
+        """Newton's second law toward the center for each force asked in `state` (where the body is at `place`,
+        moving at `speed`, named `v` where the energy found it)."""
         name = state.name if state else None
-        circle, asked = self.circle, self._asked((("force", "tension"), ("contact", "normal_force"),
-                                                  ("force", "reaction.x"), ("force", "reaction.y")), name)
+        circle, asked = self.circle, self._asked(FORCES, name)
         steps = []
         for ask_name, ask in asked:
             if ask.quantity.target not in (circle.part.name, circle.body.name):
