@@ -139,7 +139,8 @@ def swing_route(solution) -> TextbookRoute | None:
         sections = swing.sections()
     except _Refused:
         return None
-    if sections is None or any(not swing.same(value, solution.expression(name)) for name, value in swing.answers.items()):
+    if sections is None or any(not swing.same(value, solution.expression(name))
+                               for name, value in swing.answers.items()):
         return None  # a finding the key reads otherwise (a signed component): the engine's routes
     compared = [(name, value, (lambda name=name: solution.expression(name))) for name, value in swing.answers.items()]
     return TextbookRoute(sections, tuple(compared), "the conservation of energy and Newton's second law toward the "
@@ -210,11 +211,13 @@ class _Swing:
             return self.moment * speed**2 / 2
         if self.circle.rolls is None:
             return self.mass * speed**2 / 2
-        return self.mass * speed**2 / 2 + self.moment * (omega if omega is not None else speed / self.circle.rolls)**2 / 2
+        turning = omega if omega is not None else speed / self.circle.rolls
+        return self.mass * speed**2 / 2 + self.moment * turning**2 / 2
 
     def _put(self, energy: sp.Eq, v: sp.Symbol, omega: sp.Symbol | None) -> sp.Eq:
         """The energy equation with the moment of inertia's value and the rolling tie put in."""
-        return energy.subs({self.moment: self.moment_value, **({omega: v / self.circle.rolls} if omega is not None else {})})
+        tie = {omega: v / self.circle.rolls} if omega is not None else {}
+        return energy.subs({self.moment: self.moment_value, **tie})
 
     def _inertia_steps(self) -> list[Step]:
         body = self.circle.body
@@ -233,9 +236,10 @@ class _Swing:
         v = self._named((("angular_velocity", None),) if self.pivot else (("speed", None),), self.end.name,
                         ("omega", "omega_1") if self.pivot else ("v", "v_1"))
         omega = self._named((("angular_velocity", None),), self.end.name, ("omega", "omega_1")) if rolls else None
-        start_words = "the release" if speed0 == 0 else self._where(self.start, self._inward(self._place(self.start)), "")[1:]
-        end_words = "to where it leaves" if self.leaves else self._where(self.end, self._inward(self._place(self.end)), "to")
-        energy_text = (f"Energy is conserved from {start_words} {end_words}: {ROLLING if rolls else HOLDERS[circle.holder][2]}; "
+        start_words = "the release" if speed0 == 0 else self._spot(self.start) or "the start"
+        end_words = "where it leaves" if self.leaves else self._spot(self.end) or "the state asked"
+        why = ROLLING if rolls else HOLDERS[circle.holder][2]
+        energy_text = (f"Energy is conserved from {start_words} to {end_words}: {why}; "
                        "only gravity does work. The kinetic energy is that of " + (
                            "the rotation about the pivot" if self.pivot else "the center's motion and of the rotation, "
                            "rolling at the speed over its radius" if rolls else "its motion"))
@@ -292,11 +296,11 @@ class _Swing:
                  Step(text, (energy,)),
                  Step("Where it leaves", (sp.Eq(height, z),), role="solve")]
         if self._asked((("speed", None), ("angular_velocity", None)), self.end.name):
-            steps.append(Step("Its speed there", (sp.Eq(v, speed),), role="solve"))
+            steps.append(Step("The speed there, from the condition for leaving", (sp.Eq(v, speed),), role="solve"))
         for name, _ in self._asked((("position", "y"),), self.end.name):
             self.answers[name] = tidy(center[1] + z)
             if name != height.name:
-                steps.append(Step("Its height, from the circle's center", (sp.Eq(sp.Symbol(name), self.answers[name]),),
+                steps.append(Step("The height, from the circle's center", (sp.Eq(sp.Symbol(name), self.answers[name]),),
                                   role="solve"))
         return "Where it leaves the surface, by Newton's second law toward the center and energy", steps, speed
 
@@ -318,7 +322,8 @@ class _Swing:
                 continue
             if symbol == omega:  # the rolling tie gives it
                 self.answers[name] = tidy(speed / circle.rolls)
-                steps.append(Step("Its rate of turning, rolling", (sp.Eq(symbol, self.answers[name]),), role="solve"))
+                steps.append(Step("The rate of turning there, rolling without slipping",
+                                  (sp.Eq(symbol, self.answers[name]),), role="solve"))
                 continue
             if ask.quantity.kind == "speed" and self.pivot:
                 relation, text = circle.radius * v, ("The center moves on its circle about the pivot at the rate of "
@@ -326,7 +331,7 @@ class _Swing:
             elif ask.quantity.kind == "angular_velocity" and circle.rolls is not None:
                 relation, text = v / circle.rolls, "Rolling without slipping, it turns at its speed over its radius"
             elif ask.quantity.kind == "speed" and not self.pivot:
-                relation, text = v, "Its speed"
+                relation, text = v, "The speed"
             else:
                 raise _Refused(name)
             self.answers[name] = tidy(relation.subs(v, speed))
@@ -361,7 +366,7 @@ class _Swing:
             law = sp.Eq(toward + tidy(self.mass * self.g * height / circle.radius), centripetal)
             value = tidy(sp.solve(law.subs(rate, speed), force)[0])
             self.answers[ask_name] = value
-            where = self._where(state, inward)
+            where = self._at(state)
             steps.append(Step(f"Newton's second law toward {HOLDERS[circle.holder][0]}, {where}: "
                               f"{HOLDERS[circle.holder][1]} and the weight's component along the radius give the "
                               "centripetal acceleration", (*given, law, sp.Eq(force, value))))
@@ -371,14 +376,23 @@ class _Swing:
         """The unit vector from the body's center toward the circle's center."""
         return sp.Matrix([tidy(c) for c in (self.circle.center - place) / self.circle.radius])
 
-    def _where(self, state, inward: sp.Matrix, at: str = "at") -> str:
-        """Where `state` is on the circle, in words: "at the lowest point" (`at` "to": "to the lowest point")."""
+    def _spot(self, state) -> str | None:
+        """Where `state` is on the circle, in words ("the lowest point", "where it is level with the pivot"),
+        or None where it is none of these."""
+        inward = self._inward(self._place(state))
         if inward[0] == 0 and inward[1] in (1, -1):
-            return f"{at} the lowest point" if inward[1] == 1 else f"{at} the top"
+            return "the lowest point" if inward[1] == 1 else "the top"
         if inward[1] == 0:
             what = "it is" if self.circle.body.shape == "point" else "its center is"
-            return f"{'to where' if at == 'to' else 'where'} {what} level with {HOLDERS[self.circle.holder][0]}"
-        return f"{at} the start" if state is not self.end else f"{at} the state asked"
+            return f"where {what} level with {HOLDERS[self.circle.holder][0]}"
+        return None
+
+    def _at(self, state) -> str:
+        """`_spot` after "at" ("at the lowest point"), or "at the start", "there"."""
+        spot = self._spot(state)
+        if spot is None:
+            return "at the start" if state is not self.end else "there"
+        return spot if spot.startswith("where") else f"at {spot}"
 
     def _torques(self) -> list[Step]:
         """The angular acceleration asked in a state, by the torque about the pivot."""
@@ -401,5 +415,6 @@ class _Swing:
             else:
                 steps.append(Step(f"The torque about the pivot {where}: the pivot's force has no moment about it; the "
                                   "weight's arm is the horizontal distance from the pivot to the center",
-                                  (sp.Eq(self.moment * alpha, self.mass * self.g * arm), sp.Eq(alpha, self.answers[name]))))
+                                  (sp.Eq(self.moment * alpha, self.mass * self.g * arm),
+                                   sp.Eq(alpha, self.answers[name]))))
         return steps
