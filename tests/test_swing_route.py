@@ -126,6 +126,43 @@ def test_derive_solve_prints_the_route_first():
     assert "The speed, by the conservation of energy" in done.stdout and "[ok] textbook_route" in done.stdout
 
 
+RELEASED = """
+id: pendulum_tension_at_release
+title: A pendulum's cord at its release and at the bottom
+parameters:
+  m: {meaning: mass, unit: kg, range: [0.1, 2]}
+  L: {meaning: length, unit: m, range: [0.5, 2]}
+  theta0: {meaning: angle of release from the vertical, unit: rad, range: [0.2, 1.2]}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  points:
+    hook: [0, 0]
+  bodies:
+    bob: {shape: point, mass: m, at: [L*sin(theta0), -L*cos(theta0)]}
+  cords:
+    cord: [hook, bob]
+  loads:
+    - gravity: g
+  states:
+    bottom: {when: {bob.x: 0}}
+ask:
+  T0: {meaning: tension at release, of: cord.tension, unit: N}
+  v: {meaning: speed at the bottom, of: bob.speed, in: bottom, unit: m/s}
+question: A pendulum is released.
+"""
+
+
+def test_the_cords_pull_at_the_release_balances_the_weights_component(tmp_path):
+    """Serway & Jewett 9th ed., ch. 8 (the pendulum at its release, at rest: T_A = m g cos(theta_A), no centripetal
+    acceleration yet)."""
+    solution = Solution(load(write_problem(tmp_path, RELEASED)))
+    steps = solution.student_steps[NEWTON]
+    theta0 = _s("theta0")
+    assert "at the release" in steps[0].text and "balance, at rest" in steps[0].text
+    assert _same(_found(steps, "T0"), m * g * sp.cos(theta0))
+    assert _same(_found(solution.student_steps[ENERGY], "v"), sp.sqrt(2 * g * L * (1 - sp.cos(theta0))))
+
+
 ACROSS = """
 id: rod_hinge_across
 title: A rod swings down; the pivot's force across the rod at the bottom

@@ -367,9 +367,10 @@ class _Swing:
             value = tidy(sp.solve(law.subs(rate, speed), force)[0])
             self.answers[ask_name] = value
             where = self._at(state)
+            gives = "balance, at rest" if speed == 0 else "give the centripetal acceleration"
             steps.append(Step(f"Newton's second law toward {HOLDERS[circle.holder][0]}, {where}: "
-                              f"{HOLDERS[circle.holder][1]} and the weight's component along the radius give the "
-                              "centripetal acceleration", (*given, law, sp.Eq(force, value))))
+                              f"{HOLDERS[circle.holder][1]} and the weight's component along the radius {gives}",
+                              (*given, law, sp.Eq(force, value))))
         return steps
 
     def _inward(self, place: sp.Matrix) -> sp.Matrix:
@@ -391,7 +392,7 @@ class _Swing:
         """`_spot` after "at" ("at the lowest point"), or "at the start", "there"."""
         spot = self._spot(state)
         if spot is None:
-            return "at the start" if state is not self.end else "there"
+            return "at the release" if state is None else "at the start" if state is not self.end else "there"
         return spot if spot.startswith("where") else f"at {spot}"
 
     def _torques(self) -> list[Step]:
