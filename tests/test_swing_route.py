@@ -1,7 +1,7 @@
 """The student's route to a state on a circle (derive.solution.swing_route; issue 37): a pendulum, a rod or
 disk on a pivot, a body in a bowl, on a dome or in a loop, by the conservation of energy from the start and
-Newton's second law toward the center (F = 0 where it leaves the surface), in at most eight equations, where the
-engine's two routes took 13 to 25. Each case cites the text whose route it follows and compares what the route
+Newton's second law toward the center (F = 0 where it leaves the surface or the cord goes slack; no kinetic
+energy where it stops), in at most eight equations, where the engine's two routes took 13 to 25. Each case cites the text whose route it follows and compares what the route
 finds with the closed form the text prints (written here, not read back)."""
 import pytest
 import sympy as sp
@@ -15,6 +15,8 @@ ENERGY, SPEED = "The speed, by the conservation of energy", "The rate of turning
 NEWTON, TORQUE = "The forces, by Newton's second law toward the center", \
     "The angular acceleration, by the torque about the pivot"
 LEAVES = "Where it leaves the surface, by Newton's second law toward the center and energy"
+SLACK = "Where the cord goes slack, by Newton's second law toward the center and energy"
+RISES = "How high it rises, by the conservation of energy"
 
 
 def _s(name):
@@ -60,6 +62,13 @@ CASES = [
     # + r)))/17).
     ("ball_rolls_off_dome", [LEAVES],
      {"h": (10 * g * (R + r) + 7 * v0**2) / (17 * g), "omega": sp.sqrt((10 * g * (R + r) + 7 * v0**2) / 17) / r}, 8),
+    # Kleppner & Kolenkow 2nd ed., ch. 4/5 (a mass on a string given v0 at the bottom goes slack where T = 0, at
+    # (v0^2 - 2 g L)/(3 g) above the center, at sqrt((v0^2 - 2 g L)/3)).
+    ("ball_circle_slack", [SLACK], {"h": (v0**2 - 2 * g * L) / (3 * g), "v": sp.sqrt((v0**2 - 2 * g * L) / 3)}, 5),
+    # Serway & Jewett ch. 10 and 6 (a solid ball rolling in a bowl at v0 rises h with (7/10) m v0^2 = m g h; at the
+    # bottom N - m g = m v0^2/(R - r)), its height from the bowl's center y = h - (Rb - r).
+    ("ball_rolls_up_bowl", [RISES, NEWTON],
+     {"y": 7 * v0**2 / (10 * g) - (_s("Rb") - r), "N": m * g + m * v0**2 / (_s("Rb") - r)}, 6),
     # Serway & Jewett 9th ed., ch. 8 (a particle nudged from the top of a smooth hemisphere leaves 2R/3 above its
     # center, at sqrt(2 g R/3)).
     ("particle_off_dome_nudged", [LEAVES], {"h": 2 * R / 3, "v": sp.sqrt(2 * g * R / 3)}, 5),

@@ -6,7 +6,8 @@ on a dome (sliding without friction, or rolling), as a solution manual solves it
                              or I_P omega^2/2 about a fixed pivot (I_P = I_cm + M d^2)
     Newton toward the center: F + M g z/rho = M v^2/rho (z the center's height above the circle's
                              center, rho its radius; F the cord's pull, the pivot's force or the
-                             surface's push toward the center), where it leaves: F = 0, v^2 = g z
+                             surface's push toward the center), where it leaves the surface or the
+                             cord goes slack: F = 0, v^2 = g z; where it stops, no kinetic energy left
     the torque about a pivot: I_P alpha = M g times the weight's arm
 
 Offered only for one body held on its circle by one part (a pin to the ground, a cord from a fixed
@@ -124,18 +125,18 @@ def swing_route(solution) -> TextbookRoute | None:
     if len(ends) != 1:
         return None
     (end,) = ends
-    leaves = end.until is not None and end.until == ("leaves", circle.part.name) and circle.holder != "pivot"
-    if not (end.when is not None or leaves) or any(s.until is not None for s in states.values() if s is not end):
+    found = _found_where(end, circle)
+    if end.when is None and found is None or any(s.until is not None for s in states.values() if s is not end):
         return None
     asks = solution.problem.asks
     for ask in asks.values():
         if ask.finds or ask.small or (ask.quantity.kind, ask.quantity.detail) not in ANSWERED \
                 or ask.state not in (None, end.name, start and start.name):
             return None
-        if ask.quantity.detail == "y" and not (leaves and ask.state == end.name):
-            return None  # a position only where the route finds it: where the body leaves
+        if ask.quantity.detail == "y" and not (found and ask.state == end.name):
+            return None  # a position only where the route finds it: where it leaves, or stops
     try:
-        swing = _Swing(solution, circle, start, end, leaves)
+        swing = _Swing(solution, circle, start, end, found)
         sections = swing.sections()
     except _Refused:
         return None
@@ -147,6 +148,26 @@ def swing_route(solution) -> TextbookRoute | None:
                                                     "center of the circle")
 
 
+def _found_where(end, circle: _Circle) -> str | None:
+    """How the route finds where the state `end` is: "leaves" (a surface's push falls to zero), "slack" (the
+    cord's pull does), "stops"; None where the file gives where it is (or the route does not find it)."""
+    if end.until == ("stops", None):
+        return "stops"
+    if end.until == ("leaves", circle.part.name) and circle.holder in ("inside", "outside"):
+        return "leaves"
+    if end.until == ("slack", circle.part.name) and circle.holder == "cord":
+        return "slack"
+    return None
+
+
+#: How each way of finding the state says it: (where, the force falling to zero).
+FOUND = {"leaves": ("where it leaves", "It leaves the surface where the push has fallen to zero",
+                    "Where it leaves the surface, by Newton's second law toward the center and energy"),
+         "slack": ("where the cord goes slack", "The cord goes slack where its pull has fallen to zero",
+                   "Where the cord goes slack, by Newton's second law toward the center and energy"),
+         "stops": ("where it stops", None, "How high it rises, by the conservation of energy")}
+
+
 class _Refused(Exception):
     """An ask or a state the route does not read."""
 
@@ -155,8 +176,8 @@ class _Swing:
     """The body's motion on its circle: where each state is (the height z of its center above the
     circle's center), its speed there, and the steps that find the asks."""
 
-    def __init__(self, solution, circle: _Circle, start, end, leaves: bool):
-        self.solution, self.circle, self.start, self.end, self.leaves = solution, circle, start, end, leaves
+    def __init__(self, solution, circle: _Circle, start, end, found: str | None):
+        self.solution, self.circle, self.start, self.end, self.found = solution, circle, start, end, found
         body = circle.body
         self.mass, self.g = body.mass, solution.scene.gravity.g
         self.pivot = circle.holder == "pivot"
@@ -237,7 +258,7 @@ class _Swing:
                         ("omega", "omega_1") if self.pivot else ("v", "v_1"))
         omega = self._named((("angular_velocity", None),), self.end.name, ("omega", "omega_1")) if rolls else None
         start_words = "the release" if speed0 == 0 else self._spot(self.start) or "the start"
-        end_words = "where it leaves" if self.leaves else self._spot(self.end) or "the state asked"
+        end_words = FOUND[self.found][0] if self.found else self._spot(self.end) or "the state asked"
         why = ROLLING if rolls else HOLDERS[circle.holder][2]
         energy_text = (f"Energy is conserved from {start_words} to {end_words}: {why}; "
                        "only gravity does work. The kinetic energy is that of " + (
@@ -245,11 +266,14 @@ class _Swing:
                            "rolling at the speed over its radius" if rolls else "its motion"))
         first = [*self._inertia_steps(), *([Step("It rolls without slipping", (sp.Eq(omega, v / circle.rolls),))]
                                            if rolls else [])]
-        title, steps, speed = (self._leaving if self.leaves else self._reaching)(v, omega, speed0, energy_text)
+        way = self._reaching if self.found is None else self._stopping if self.found == "stops" else self._leaving
+        title, steps, speed = way(v, omega, speed0, energy_text)
         sections = {title: (*first, *steps, *self._readings(v, speed, omega))}
         newton = self._newton(self.start, self._place(self.start), speed0, None)
-        if not self.leaves:
+        if self.found is None:
             newton += self._newton(self.end, self._place(self.end), speed, v)
+        elif self._asked(FORCES, self.end.name):
+            raise _Refused("a force where the route finds the state")
         if newton:
             sections["The forces, by Newton's second law toward the center"] = tuple(newton)
         torques = self._torques()
@@ -277,32 +301,47 @@ class _Swing:
     def _leaving(self, v: sp.Symbol, omega: sp.Symbol | None, speed0: sp.Expr, text: str) -> tuple:
         """(title, steps, speed) to where the body leaves the surface: Newton toward the center with no push,
         v^2 = g z, and the energy, solved for the height z; each position asked is read from z."""
-        circle, center = self.circle, self.circle.center
-        if self._asked(FORCES, self.end.name):
-            raise _Refused("a force where it leaves")
-        height = sp.Symbol(self._height_name(), positive=True)
-        push = sp.Symbol(self._free("N", "n"), real=True)
-        toward = push if circle.holder == "inside" else -push
+        circle = self.circle
+        height = sp.Symbol(self._height_name(), real=True)
+        push = sp.Symbol(self._free("T", "F") if circle.holder == "cord" else self._free("N", "n"), real=True)
+        toward = -push if circle.holder == "outside" else push
         energy = self._energy(v, omega, speed0, height)
         (z,) = sp.solve(self._put(energy, v, omega).subs(v, sp.sqrt(self.g * height)), height)
         z = tidy(z)
         speed = root(self.g * z)
-        steps = [Step("Newton's second law toward the center of the curve, with the body's center at a height above "
-                      "the circle's center: the surface's push and the weight's component along the radius give the "
-                      "centripetal acceleration",
+        holder, pushes = HOLDERS[circle.holder][:2]
+        where, zero, title = FOUND[self.found]
+        steps = [Step(f"Newton's second law toward {holder}, with the body at a height above it: {pushes} and the "
+                      "weight's component along the radius give the centripetal acceleration",
                       (sp.Eq(toward + self.mass * self.g * height / circle.radius, self.mass * v**2 / circle.radius),)),
-                 Step("It leaves the surface where the push has fallen to zero", (sp.Eq(v**2, self.g * height),),
-                      role="solve"),
+                 Step(zero, (sp.Eq(v**2, self.g * height),), role="solve"),
                  Step(text, (energy,)),
-                 Step("Where it leaves", (sp.Eq(height, z),), role="solve")]
+                 Step(where[0].upper() + where[1:], (sp.Eq(height, z),), role="solve")]
         if self._asked((("speed", None), ("angular_velocity", None)), self.end.name):
-            steps.append(Step("The speed there, from the condition for leaving", (sp.Eq(v, speed),), role="solve"))
+            steps.append(Step("The speed there, from the same condition", (sp.Eq(v, speed),), role="solve"))
+        return title, steps + self._heights(height, z), speed
+
+    def _stopping(self, v: sp.Symbol, omega: sp.Symbol | None, speed0: sp.Expr, text: str) -> tuple:
+        """(title, steps, speed) to where the motion stops: the energy with no kinetic energy left, solved for
+        the height z; each position asked is read from z."""
+        height = sp.Symbol(self._height_name(), real=True)
+        start_height = tidy(self._place(self.start)[1] - self.circle.center[1])
+        energy = sp.Eq(self._kinetic(speed0), self.mass * self.g * (height - start_height))
+        (z,) = sp.solve(self._put(energy, v, omega), height)
+        z = tidy(z)
+        steps = [Step(f"{text}; where it stops it has none left", (energy,)),
+                 Step("Where it stops", (sp.Eq(height, z),), role="solve")]
+        return FOUND["stops"][2], steps + self._heights(height, z), sp.Integer(0)
+
+    def _heights(self, height: sp.Symbol, z: sp.Expr) -> list[Step]:
+        """Each position asked in the end state, read from the height `z` above the circle's center."""
+        steps = []
         for name, _ in self._asked((("position", "y"),), self.end.name):
-            self.answers[name] = tidy(center[1] + z)
+            self.answers[name] = tidy(self.circle.center[1] + z)
             if name != height.name:
                 steps.append(Step("The height, from the circle's center", (sp.Eq(sp.Symbol(name), self.answers[name]),),
                                   role="solve"))
-        return "Where it leaves the surface, by Newton's second law toward the center and energy", steps, speed
+        return steps
 
     def _height_name(self) -> str:
         """The height of the center above the circle's center: the ask's own name where it asks it."""
@@ -401,7 +440,7 @@ class _Swing:
         for name, ask in self._asked((("angular_acceleration", None),), None) + \
                 self._asked((("angular_acceleration", None),), self.end.name) + \
                 (self._asked((("angular_acceleration", None),), self.start.name) if self.start else []):
-            if not self.pivot or self.leaves and ask.state == self.end.name:
+            if not self.pivot or self.found and ask.state == self.end.name:
                 raise _Refused(name)
             state = self.end if ask.state == self.end.name else self.start if ask.state else None
             arm = tidy(sp.Abs(self._place(state)[0] - self.circle.center[0]))
