@@ -73,6 +73,19 @@ EXPECTED = {
     "rod_upright_nudged": {"v": lambda s: sp.sqrt(3 * s.g * s.L) / 2, "w": lambda s: -sp.sqrt(3 * s.g / s.L)},
     # Serway & Jewett ch. 8: a particle pushed off a smooth dome's top leaves it 2R/3 above the center at sqrt(2gR/3).
     "particle_off_dome_nudged": {"h": lambda s: 2 * s.R / 3, "v": lambda s: sp.sqrt(2 * s.g * s.R / 3)},
+    # Serway & Jewett 9th ed., ch. 8: a pendulum released from rest at thetaA, v_B = sqrt(2 g L (1 - cos thetaA)) and
+    # T_B = m g (3 - 2 cos thetaA) at the lowest point.
+    "pendulum_tension_at_bottom": {"vB": lambda s: sp.sqrt(2 * s.g * s.L * (1 - _cos(s.thetaA))),
+                                   "TB": lambda s: s.m * s.g * (3 - 2 * _cos(s.thetaA))},
+    # Halliday, Resnick & Walker 10th ed., ch. 10: a rod pivoted at one end released from the horizontal,
+    # alpha = 3 g/(2 L) at release, omega = sqrt(3 g/L) hanging, its center at (L/2) omega (counter-clockwise here).
+    "meter_stick_pivoted_at_end": {"alpha0": lambda s: 3 * s.g / (2 * s.L), "w": lambda s: sp.sqrt(3 * s.g / s.L),
+                                   "vc": lambda s: sp.sqrt(3 * s.g * s.L) / 2},
+    # Serway & Jewett 9th ed., ch. 6 and 8: a ball on a cord round a vertical circle, v_top^2 = v0^2 - 4 g R;
+    # T = m (v0^2/R + g) at the bottom, m (v_top^2/R - g) at the top.
+    "ball_whirled_vertical_circle": {"vt": lambda s: sp.sqrt(s.v0**2 - 4 * s.g * s.R),
+                                     "Tb": lambda s: s.m * (s.v0**2 / s.R + s.g),
+                                     "Tt": lambda s: s.m * (s.v0**2 - 5 * s.g * s.R) / s.R},
     # Serway & Jewett ch. 13: an ellipse from its periapsis r_p and the speed v_p there. The energy gives
     # a = GM r_p/(2 GM - r_p v_p^2); the farthest distance is 2a - r_p; Kepler's second law v_a r_a = v_p r_p;
     # the third, P = 2 pi sqrt(a^3/GM).

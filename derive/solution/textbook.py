@@ -10,7 +10,9 @@ tau = -kappa theta (derive.mechanics.small_swings; a body rocking on its round f
 of contact); a top's steady precession by tau = Omega x L, a skid that ends in rolling, an impact by
 the angular momentum about the axle or about the free bodies' center of mass, a cord pulled in through
 a hole, an ellipse by the conservation of angular momentum and energy at its turning points, the least
-height for a loop by Newton at its top and energy (derive.solution.textbook_routes). Lagrange's method and Newton–Euler stay as the proof (the
+height for a loop by Newton at its top and energy (derive.solution.textbook_routes); a speed and a force at
+a state on a circle (a pendulum, a body in a bowl or leaving a dome) by energy and Newton's second law toward the
+center (derive.solution.swing_route). Lagrange's method and Newton–Euler stay as the proof (the
 instructor's verification): this route is a third one, which must agree with them
 (derive.solution.crosschecks: the check textbook_route).
 
@@ -41,6 +43,7 @@ from derive.model.scene import Quantity
 from derive.parts.contact import Contact
 from derive.solution.textbook_routes import TextbookRoute, loop_route, orbit_route, state_route, top_route
 from derive.solution.uniform_route import uniform_route
+from derive.solution.swing_route import swing_route
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -61,7 +64,7 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
     pivot, a top's steady precession, its states: an impact, a skid), where every ask is one the
     student's route answers (None otherwise)."""
     if solution.scene.states:
-        return state_route(solution) or uniform_route(solution)
+        return state_route(solution) or uniform_route(solution) or swing_route(solution)
     if solution.scene.orbit is not None:
         return orbit_route(solution)
     loop = loop_route(solution)
