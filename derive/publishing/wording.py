@@ -221,6 +221,8 @@ class Wording:
             if key in self.contacts and match.string[max(0, match.start() - 3):match.start()] == "at ":
                 return f"its contact with {self.contacts[key]}"  # the normal force on the ball at ball_contact
             return whole if re.fullmatch(r"[a-z]+", key) else self._phrase(key, None, "the")
+        if lead and lead.lower() == "the" and kind is None and self.only_a_state(key) and re.fullmatch(r"[a-z]+", key):
+            return whole  # "the lowest point" of a route's words, beside a state named lowest: English, not the key
         if lead and lead.lower() == "its":
             return f"{lead} {self._phrase(key, kind, '')}"
         if lead and lead.lower() != "the":
@@ -235,6 +237,11 @@ class Wording:
         if match["bare"]:
             return self._phrase(key, match["bare"], "")
         return self._phrase(key, kind, lead)
+
+    def only_a_state(self, key: str) -> bool:
+        """Whether `key` names a state and nothing else (no body, surface or part of the file)."""
+        made_for_the_state = key not in self.parts or self.parts[key].startswith(("joint of the ", "bounce"))
+        return key in self.states and key not in self.problems_bodies and key not in self.surfaces and made_for_the_state
 
     def _phrase(self, key: str, kind: str | None, article: str) -> str:
         if kind == "state" and key in self.states:
