@@ -144,8 +144,8 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
         short, pending = len(symbols) + len(forces) - len(equations), wanted - set(forces)
         if short <= 0 and not pending:
             break
-        step = next((x for x in extra if _forces(x) & pending), None) or \
-            next((x for x in extra if _forces(x) - set(forces) == set() and len(x.equations) <= short), None)
+        step = next((x for x in extra if _forces(x, flipped) & pending), None) or \
+            next((x for x in extra if _forces(x, flipped) <= set(forces) and len(x.equations) <= short), None)
         if step is None:
             raise NotAlongALine("the balances along and across the motion leave a force open")
         extra.remove(step)
@@ -254,8 +254,10 @@ def _product(mass: sp.Expr, acceleration: sp.Symbol) -> sp.Expr:
     return sp.Mul(mass, acceleration, evaluate=False)
 
 
-def _forces(step: Step) -> set[sp.Symbol]:
-    return {s for e in step.equations for s in e.free_symbols}
+def _forces(step: Step, forces) -> set[sp.Symbol]:
+    """The constraint forces (`forces`) a step's equations hold: kinetic friction's mu_k N leaves N open
+    along the motion, which the balance across it, 0 = N - m g cos(theta), gives."""
+    return {s for e in step.equations for s in e.free_symbols if s in forces}
 
 
 def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[Step]:

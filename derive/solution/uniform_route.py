@@ -34,46 +34,81 @@ from derive.text.steps import Step
 ANSWERED = {("time", None), ("speed", None), ("angular_velocity", None), ("distance", None), ("turns", None),
             ("position", "x"), ("position", "y"), ("velocity", "x"), ("velocity", "y")}
 FORCES = {"force", "contact"}
+SECTION = "The motion at constant acceleration"
 #: The asks at the placement the forces along the motion answer.
 AT_PLACEMENT = {"acceleration", "angular_acceleration", "force", "contact"}
 
 
 def uniform_route(solution) -> TextbookRoute | None:
     """The student's route of a scene of one degree of freedom from its placement (at rest, or at given
-    rates) to one state it reaches at constant acceleration; None where the scene, its states or its
-    asks are not such."""
-    states = solution.scene.states
-    ends = [s for s in states.values() if not s.rates and s.event is None]
-    if len(ends) != 1 or len(solution.regimes) != 1:
+    rates) to the states asked, each reached from there at the same constant acceleration; None where the
+    scene, its states or its asks are not such."""
+    states, asks = solution.scene.states, solution.problem.asks.values()
+    ends = [state for name, state in states.items() if any(ask.state == name for ask in asks)]
+    if not ends or len({end.start for end in ends}) != 1:
+        return None  # a state reached from another asked one: a second segment, which may turn back
+    start = states.get(ends[0].start) if ends[0].start is not None else None
+    if ends[0].start is not None and (start is None or not start.rates or start.start is not None) or \
+            any(end.rates or end.event is not None or end.until not in (None, ("stops", None)) or end.nudge
+                or end.relative_to is not None for end in ends):
         return None
-    (end,) = ends
-    start = states.get(end.start) if end.start is not None else None
-    if end.until not in (None, ("stops", None)) or end.nudge or end.relative_to is not None or end.rate \
-            or len(states) != 1 + (start is not None) or end.start is not None and (start is None or not start.rates):
-        return None
-    for ask in solution.problem.asks.values():
+    for ask in asks:
         key = (ask.quantity.kind, ask.quantity.detail)
         if ask.finds or ask.state is None and ask.quantity.kind not in AT_PLACEMENT \
-                or ask.state is not None and (ask.state != end.name or key not in ANSWERED
-                                              and ask.quantity.kind not in FORCES):
+                or ask.state is not None and key not in ANSWERED and ask.quantity.kind not in FORCES:
             return None
+    regimes = [_regime(solution, end) for end in ends]
+    if any(regime is None for regime in regimes) or len({solution._chain.joints[end.name] for end in ends}) > 1:
+        return None  # one end grips, or slides another way than another
+    scene, derivations, opening = regimes[0]
+    needed = solution._needed_unknowns().union(*(solution._needed_unknowns(end.name) for end in ends))
     try:
-        along = along_motion(solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
-                             solution._sample, solution._needed_unknowns() | solution._needed_unknowns(end.name))
+        along = along_motion(scene, solution.coordinates, derivations["newton_euler"], solution._sample, needed)
     except NotAlongALine:
         return None
-    motion = _Kinematics(solution, along, start, end)
-    if not motion.uniform():
-        return None
-    steps = motion.steps()
-    if steps is None or any(not motion.same(value, solution.expression(name)) for name, value in motion.answers.items()):
-        return None  # an ask the kinematics read otherwise than the key (a signed component): the routes' solution
-    compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", None).raw[u]))
+    sections = {"Forces and torques along the motion": (*opening, *along.steps)}
+    at = None if len(solution.regimes) == 1 else ends[0].name  # where the slide's forces are the engine's
+    compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", at).raw[u]))
                 for u, value in along.values.items()]
-    compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
-    return TextbookRoute({"Forces and torques along the motion": along.steps, "The motion at constant acceleration": steps},
-                         tuple(compared), "Newton's second law along the motion, then the kinematics of constant "
-                         "acceleration", along)
+    for end in ends:
+        motion = _Kinematics(solution, along, start, end)
+        if not motion.uniform():
+            return None
+        steps = motion.steps()
+        if steps is None or any(not motion.same(value, solution.expression(name)) for name, value in motion.answers.items()):
+            return None  # an ask the kinematics read otherwise than the key (a signed component): the routes' solution
+        first = next(ask for ask in asks if ask.state == end.name)
+        sections[SECTION if len(ends) == 1 else quantities.describe_capitalized(first.meaning)] = steps
+        compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
+    return TextbookRoute(sections, tuple(compared), "Newton's second law along the motion, then the kinematics of "
+                         "constant acceleration", along)
+
+
+def _regime(solution, end) -> tuple | None:
+    """(the scene, its derivations, the steps that say why) of the motion to the state `end`: the
+    scene's own where no contact's friction coefficients decide a regime; else the one the engine's
+    chain of states proves it slides in with kinetic friction all the way (given rates: against their
+    slip; from rest: derive.solution.start_regimes, a variant that starts otherwise refused). None where
+    the contact grips on the way, or the slide stops and starts again (another regime)."""
+    if len(solution.regimes) == 1:
+        return solution.dynamics_scene, solution.derivations, ()
+    contact = solution._sliding
+    part = next((j for j in solution._chain.joints[end.name] if j.name == contact.name), None)
+    if part is None or part.regime != "kinetic":
+        return None
+    start = solution.starts.get(end.name)
+    opening = (start.step,) if start is not None else (sliding_step(solution, contact),)
+    return solution.scene_in(end.name), solution.derivations_in(end.name), opening
+
+
+def sliding_step(solution, contact) -> Step:
+    """Why kinetic friction acts, and which way, on a body sent sliding: f_k = mu_k N (the equation left
+    out where the file names f_k otherwise)."""
+    f = sp.Symbol("f_k", real=True)
+    taken = {*solution.problem.parameters, *solution.problem.asks}
+    return Step(f"The {contact.body} is sent sliding on the {contact.surface} and slides all the way to the state: "
+                "kinetic friction, its coefficient times the normal force, acts against the slide",
+                () if "f_k" in taken else (sp.Eq(f, contact.kinetic * contact.unknowns()["normal"]),), role="equations")
 
 
 class _Kinematics:
@@ -173,7 +208,7 @@ class _Kinematics:
             result.append(Step("Where the state is reached", solved, role="solve"))
         symbols = {"v": v, "d": d, "t": t}
         for name, ask in self.solution.problem.asks.items():
-            if ask.state is None:
+            if ask.state != self.end.name:
                 continue
             if ask.quantity.kind in FORCES:
                 value = self._force(ask, sign0)
