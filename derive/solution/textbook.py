@@ -25,7 +25,6 @@ student route is written (`steps` is None) and the worked solution shows the two
 """
 from __future__ import annotations
 
-import dataclasses
 
 import sympy as sp
 
@@ -34,13 +33,14 @@ from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_moti
 from derive.core.tidying import tidy
 from derive.mechanics.derivation import KINETIC
 from derive.text.latex import symbol_latex
-from derive.text.steps import Step
+from derive.text.steps import Step, renamed
 from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
 from derive.parts.contact import Contact
 from derive.solution.textbook_routes import TextbookRoute, loop_route, orbit_route, state_route, top_route
 from derive.solution.uniform_route import uniform_route
+from derive.solution.sliding import slide_from_rest
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -80,7 +80,7 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
                        or not covered(a.quantity) for a in asks):
         return None
     if len(solution.regimes) != 1:
-        return None
+        return slide_from_rest(solution, solution._needed_unknowns())
     if all(quantities.KINDS[a.quantity.kind].own_section for a in asks) and not solution._needed_unknowns():
         return None  # no force is asked or read: the quantities' own sections are the solution
     arguments = (solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
@@ -101,10 +101,10 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     if isinstance(along, SmallSwing):  # the period and the frequency under the names the question asks them by
         change = {sp.Symbol({"period": "T", "omega": "omega"}[a.quantity.detail]): sp.Symbol(a.name)
                   for a in solution.problem.asks.values() if a.quantity.kind == "small_oscillation"}
-        return {f"Small oscillations about {along.about}": [_renamed(step, change) for step in along.steps]}
+        return {f"Small oscillations about {along.about}": [renamed(step, change) for step in along.steps]}
     if isinstance(along, TextbookRoute):
         change = names(solution)
-        return {title: [_renamed(step, change) for step in steps] for title, steps in along.sections.items()}
+        return {title: [renamed(step, change) for step in steps] for title, steps in along.sections.items()}
     title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"
     result = {title: list(along.steps)}
     for ask in solution.problem.asks.values():
@@ -122,7 +122,7 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
                 return None
             result["The time to the bottom"] = [step]
     change = names(solution)
-    shown = {title: [_renamed(step, change) for step in steps] for title, steps in result.items()}
+    shown = {title: [renamed(step, change) for step in steps] for title, steps in result.items()}
     shown[title] += counted  # in the ask's own name, which no renaming of the route's symbols touches
     return {**shown, **solution._quantity_sections()}  # each its own section, after the forces it reads
 
@@ -199,12 +199,6 @@ def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
             result[symbol] = sp.Symbol(numbered if symbol_latex(numbered) not in taken else f"{numbered}'", real=True)
             taken.add(symbol_latex(result[symbol].name))
     return result
-
-
-def _renamed(step: Step, change: dict) -> Step:
-    if not change:
-        return step
-    return dataclasses.replace(step, equations=tuple(e.xreplace(change) for e in step.equations))
 
 
 def _energy(solution, body: str, balance, along: AlongMotion) -> list[Step]:

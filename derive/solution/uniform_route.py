@@ -26,6 +26,7 @@ from derive.core.tidying import root, tidy
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion, definite
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
+from derive.solution.sliding import SECTION as FORCES_SECTION, regime_to
 from derive.solution.textbook_routes import TextbookRoute
 from derive.text.steps import Step
 
@@ -57,7 +58,7 @@ def uniform_route(solution) -> TextbookRoute | None:
         if ask.finds or ask.state is None and ask.quantity.kind not in AT_PLACEMENT \
                 or ask.state is not None and key not in ANSWERED and ask.quantity.kind not in FORCES:
             return None
-    regimes = [_regime(solution, end) for end in ends]
+    regimes = [regime_to(solution, end) for end in ends]
     if any(regime is None for regime in regimes) or len({solution._chain.joints[end.name] for end in ends}) > 1:
         return None  # one end grips, or slides another way than another
     scene, derivations, opening = regimes[0]
@@ -66,7 +67,7 @@ def uniform_route(solution) -> TextbookRoute | None:
         along = along_motion(scene, solution.coordinates, derivations["newton_euler"], solution._sample, needed)
     except NotAlongALine:
         return None
-    sections = {"Forces and torques along the motion": (*opening, *along.steps)}
+    sections = {FORCES_SECTION: (*opening, *along.steps)}
     at = None if len(solution.regimes) == 1 else ends[0].name  # where the slide's forces are the engine's
     compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", at).raw[u]))
                 for u, value in along.values.items()]
@@ -82,33 +83,6 @@ def uniform_route(solution) -> TextbookRoute | None:
         compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
     return TextbookRoute(sections, tuple(compared), "Newton's second law along the motion, then the kinematics of "
                          "constant acceleration", along)
-
-
-def _regime(solution, end) -> tuple | None:
-    """(the scene, its derivations, the steps that say why) of the motion to the state `end`: the
-    scene's own where no contact's friction coefficients decide a regime; else the one the engine's
-    chain of states proves it slides in with kinetic friction all the way (given rates: against their
-    slip; from rest: derive.solution.start_regimes, a variant that starts otherwise refused). None where
-    the contact grips on the way, or the slide stops and starts again (another regime)."""
-    if len(solution.regimes) == 1:
-        return solution.dynamics_scene, solution.derivations, ()
-    contact = solution._sliding
-    part = next((j for j in solution._chain.joints[end.name] if j.name == contact.name), None)
-    if part is None or part.regime != "kinetic":
-        return None
-    start = solution.starts.get(end.name)
-    opening = (start.step,) if start is not None else (sliding_step(solution, contact),)
-    return solution.scene_in(end.name), solution.derivations_in(end.name), opening
-
-
-def sliding_step(solution, contact) -> Step:
-    """Why kinetic friction acts, and which way, on a body sent sliding: f_k = mu_k N (the equation left
-    out where the file names f_k otherwise)."""
-    f = sp.Symbol("f_k", real=True)
-    taken = {*solution.problem.parameters, *solution.problem.asks}
-    return Step(f"The {contact.body} is sent sliding on the {contact.surface} and slides all the way to the state: "
-                "kinetic friction, its coefficient times the normal force, acts against the slide",
-                () if "f_k" in taken else (sp.Eq(f, contact.kinetic * contact.unknowns()["normal"]),), role="equations")
 
 
 class _Kinematics:
