@@ -46,10 +46,13 @@ def uniform_route(solution) -> TextbookRoute | None:
     scene, its states or its asks are not such."""
     states, asks = solution.scene.states, solution.problem.asks.values()
     ends = [state for name, state in states.items() if any(ask.state == name for ask in asks)]
-    if not ends or len({end.start for end in ends}) != 1:
-        return None  # a state reached from another asked one: a second segment, which may turn back
-    start = states.get(ends[0].start) if ends[0].start is not None else None
-    if ends[0].start is not None and (start is None or not start.rates or start.start is not None) or \
+    stops = {end.name for end in ends if end.until == ("stops", None)}
+    roots = {end.start for end in ends} - stops
+    if len(roots) != 1 or any(states[end.start].start not in roots for end in ends if end.start in stops):
+        return None  # a state reached from another asked one that is not a stop: another segment
+    (root,) = roots
+    start = states.get(root) if root is not None else None
+    if root is not None and (start is None or not start.rates or start.start is not None) or \
             any(end.rates or end.event is not None or end.until not in (None, ("stops", None)) or end.nudge
                 or end.relative_to is not None for end in ends):
         return None
@@ -60,7 +63,7 @@ def uniform_route(solution) -> TextbookRoute | None:
             return None
     regimes = [regime_to(solution, end) for end in ends]
     if any(regime is None for regime in regimes) or len({solution._chain.joints[end.name] for end in ends}) > 1:
-        return None  # one end grips, or slides another way than another
+        return None  # one end grips, or slides another way than another: back down after a stop, a change of regime
     scene, derivations, opening = regimes[0]
     needed = solution._needed_unknowns().union(*(solution._needed_unknowns(end.name) for end in ends))
     try:
@@ -72,7 +75,7 @@ def uniform_route(solution) -> TextbookRoute | None:
     compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", at).raw[u]))
                 for u, value in along.values.items()]
     for end in ends:
-        motion = _Kinematics(solution, along, start, end)
+        motion = _Kinematics(solution, along, states[end.start] if end.start is not None else None, end)
         if not motion.uniform():
             return None
         steps = motion.steps()
