@@ -28,6 +28,7 @@ two give (derive.solution.textbook checks it).
 from __future__ import annotations
 
 from collections.abc import Callable
+import dataclasses
 from dataclasses import dataclass
 
 import sympy as sp
@@ -62,6 +63,7 @@ class AlongMotion:
     own: dict[sp.Symbol, sp.Expr]
     names: dict[tuple[str, str], sp.Symbol]  # (body, "a" or "alpha"): its symbol
     acting: dict[sp.Symbol, int]  # each constraint force's sense: -1 where it acts against its axis
+    rates: dict = dataclasses.field(default_factory=dict)  # each coordinate's acceleration per the leading one
 
 
 @dataclass(frozen=True)
@@ -91,8 +93,12 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
     if first is None:
         raise NotAlongALine("the scene stays at rest")
     direction = sp.Matrix([tidy(a / accelerations[first]) for a in accelerations])
-    if len(free_directions(scene, coords)) > 1 and _dynamic(direction, scene):
+    free = free_directions(scene, coords)
+    if len(free) > 1 and _dynamic(direction, scene):
         raise NotAlongALine("how the bodies' motions compare depends on their masses, not only on the constraints")
+    if len(free) == 1 and any(isinstance(c, Contact) and c.regime == "kinetic" for c in scene.constraints):
+        # the same line, from the constraints alone: the ratios of accelerations mu_k enters tidy no further
+        direction = sp.Matrix([tidy(x / free[0][first]) for x in free[0]])
     if sample(accelerations[first]) < 0:
         direction = -direction
     moving = [_moving(body, coords, direction, index, sample) for body in scene.bodies.values()]
@@ -161,7 +167,8 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
     steps.append(Step("Solving", tuple(shown), role="solve"))
     values = {c.a: tidy(direction[index[c]] * solved[base]) for c in coords.all}
     values.update({u: tidy(flipped[u] * solved[u]) for u in forces})
-    return AlongMotion(tuple(steps), values, {u: solved[u] for u in symbols}, names, flipped)
+    return AlongMotion(tuple(steps), values, {u: solved[u] for u in symbols}, names, flipped,
+                       {c.a: tidy(direction[index[c]]) for c in coords.all})
 
 
 def _dynamic(direction: sp.Matrix, scene: Scene) -> bool:

@@ -19,13 +19,18 @@ then compared with the key's (the check textbook_route).
 """
 from __future__ import annotations
 
+import dataclasses
+
 import sympy as sp
 
 from derive import quantities
 from derive.core.tidying import root, tidy
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion, definite
 from derive.numbers.agreement import agree
+from derive.parts.contact import Contact
 from derive.solution.crosschecks import sample_points
+from derive.mechanics.derivation import KINETIC
+from derive.solution.work_energy import between_states
 from derive.solution.sliding import SECTION as FORCES_SECTION, regime_to
 from derive.solution.textbook_routes import TextbookRoute
 from derive.text.steps import Step
@@ -33,9 +38,12 @@ from derive.text.steps import Step
 #: The asks of the end state the kinematics answer: (kind, detail); and the forces there, where the motion
 #: runs the way it starts from rest (the forces along the motion found at the placement hold all the way).
 ANSWERED = {("time", None), ("speed", None), ("angular_velocity", None), ("distance", None), ("turns", None),
-            ("position", "x"), ("position", "y"), ("velocity", "x"), ("velocity", "y")}
+            ("position", "x"), ("position", "y"), ("velocity", "x"), ("velocity", "y"), ("kinetic_energy", None)}
+#: The asks of the end state the work–energy theorem answers, where the leading body moves along a line.
+SPEEDS = {"speed", "angular_velocity", "velocity", "kinetic_energy"}
 FORCES = {"force", "contact"}
 SECTION = "The motion at constant acceleration"
+ENERGY_SECTION = "The speed by energy"
 #: The asks at the placement the forces along the motion answer.
 AT_PLACEMENT = {"acceleration", "angular_acceleration", "force", "contact"}
 
@@ -75,14 +83,14 @@ def uniform_route(solution) -> TextbookRoute | None:
     compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", at).raw[u]))
                 for u, value in along.values.items()]
     for end in ends:
-        motion = _Kinematics(solution, along, states[end.start] if end.start is not None else None, end)
+        motion = _Kinematics(solution, along, states[end.start] if end.start is not None else None, end, scene)
         if not motion.uniform():
             return None
         steps = motion.steps()
         if steps is None or any(not motion.same(value, solution.expression(name)) for name, value in motion.answers.items()):
             return None  # an ask the kinematics read otherwise than the key (a signed component): the routes' solution
         first = next(ask for ask in asks if ask.state == end.name)
-        sections[SECTION if len(ends) == 1 else quantities.describe_capitalized(first.meaning)] = steps
+        sections[motion.title if len(ends) == 1 else quantities.describe_capitalized(first.meaning)] = steps
         compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
     return TextbookRoute(sections, tuple(compared), "Newton's second law along the motion, then the kinematics of "
                          "constant acceleration", along)
@@ -93,14 +101,14 @@ class _Kinematics:
     center's speed, or its rate of turning where it only turns): where it starts, how far it goes,
     how fast it ends, each read from the engine's states; and the steps that find them."""
 
-    def __init__(self, solution, along: AlongMotion, start, end):
+    def __init__(self, solution, along: AlongMotion, start, end, scene):
         self.solution, self.along, self.end = solution, along, end
         base = along.steps[-1].equations[0].lhs  # the route solves for the leading acceleration first
         self.acceleration = along.own[base]
         self.turning = base in {s for (_, kind), s in along.names.items() if kind == "alpha"}
         self.leader = next(body for (body, _), s in along.names.items() if s == base)
         coordinates = solution.coordinates.all
-        self.direction = {c: tidy(along.values[c.a] / self.acceleration) for c in coordinates}
+        self.direction = {c: along.rates[c.a] for c in coordinates}
         self.lead = next(c for c in coordinates if self.direction[c] != 0)
         rest = solution.coordinates.at_rest_in_reference()
         first = solution.states[start.name].values if start is not None else rest
@@ -108,9 +116,19 @@ class _Kinematics:
         scale = self.direction[self.lead]
         self.rate0 = tidy(first.get(self.lead.u, rest[self.lead.u]) / scale)
         self.rate1 = tidy(last[self.lead.u] / scale)
-        self.first, self.rest = first, rest
+        self.first, self.rest, self.last, self.scene = first, rest, last, scene
+        self.first_values = {**rest, **first}
         self.way = tidy((last[self.lead.q] - self.start_position(self.lead)) / scale)
         self.answers: dict[str, sp.Expr] = {}
+        self.kinetic: sp.Expr | None = None  # in the end state, where the work–energy theorem found the speed
+
+    @property
+    def title(self) -> str:
+        """The section's title: the speed by energy where the work–energy theorem found it."""
+        if self.kinetic is None:
+            return SECTION
+        timed = any(a.quantity.kind == "time" for a in self.solution.problem.asks.values() if a.state == self.end.name)
+        return ENERGY_SECTION + (", the time at constant acceleration" if timed else "")
 
     def _tidier(self, value: sp.Expr) -> sp.Expr:
         """`value`, or the same expression as the key prints it where that is shorter (sqrt(sin^3)/sin
@@ -174,12 +192,26 @@ class _Kinematics:
             text = f"The {self.leader} starts {moving} the way of the acceleration found, and speeds up at that constant rate"
             relations = (sp.Eq(v**2, v0**2 + 2 * a * d), sp.Eq(v, v0 + a * t))
         given = (sp.Eq(v0, speed0),) if sign0 and v0 != speed0 else ()
-        result = [Step(text, (*given, *(relations if timed else relations[:1])), role="equations")]
+        energy = None if stops or self.turning or not kinds & SPEEDS else \
+            between_states(self.solution, self.along, self.scene, self.leader, (self.first_values, self.last), (self.way, d),
+                           ((speed0, found["v"]), (v0 if sign0 else sp.Integer(0), v)), self.same)
+        if energy is not None:  # the speed by energy; the kinematics only for the time
+            result = [dataclasses.replace(energy[0], equations=(*given, *energy[0].equations)),
+                      Step("Where the state is reached", ((sp.Eq(d, found["d"]),) if d != found["d"] and
+                                                          any(d in e.free_symbols for e in energy[0].equations) else ())
+                           + (sp.Eq(v, found["v"]),), role="solve")]
+            if timed:
+                result.append(Step(f"{text}: the time it takes", (relations[1], sp.Eq(t, found["t"])), role="solve"))
+            self.kinetic = energy[1]
+        elif kinds & {"kinetic_energy"}:
+            return None
+        else:
+            result = [Step(text, (*given, *(relations if timed else relations[:1])), role="equations")]
         if stops:
             solved = (sp.Eq(d, found["d"]),) + ((sp.Eq(t, found["t"]),) if timed else ())
             result.append(Step(f"It stops where its {'rate of turning' if self.turning else 'speed'} has fallen to zero",
                                solved, role="solve"))
-        else:
+        elif energy is None:
             solved = ((sp.Eq(d, found["d"]),) if d != found["d"] else ()) + (sp.Eq(v, found["v"]),) + \
                 ((sp.Eq(t, found["t"]),) if timed else ())
             result.append(Step("Where the state is reached", solved, role="solve"))
@@ -188,7 +220,7 @@ class _Kinematics:
             if ask.state != self.end.name:
                 continue
             if ask.quantity.kind in FORCES:
-                value = self._force(ask, sign0)
+                value = self._force(name, ask, sign0, result)
             elif ask.quantity.kind in ("position", "velocity"):
                 value = self._component(name, ask, found, result)
             else:
@@ -198,11 +230,22 @@ class _Kinematics:
             self.answers[name] = value
         return result
 
-    def _force(self, ask, sign0: int) -> sp.Expr | None:
+    def _force(self, name: str, ask, sign0: int, steps: list) -> sp.Expr | None:
         """A force found along the motion, the same all the way where the motion runs the way it starts
-        from rest (a friction's sense would turn with the motion's)."""
-        if sign0 < 0:
+        from rest (a static friction's sense would turn with the motion's), or where it slides with
+        kinetic friction all the way (against the slide: mu_k N, read from the normal force found)."""
+        sliding = next((c for c in self.scene.constraints if isinstance(c, Contact) and c.regime == "kinetic"
+                        and c.body == ask.quantity.target), None)
+        if sign0 < 0 and sliding is None:
             return None
+        if sliding is not None and (ask.quantity.kind, ask.quantity.detail) == ("contact", "friction"):
+            normal = sliding.unknowns()["normal"]
+            if normal not in self.along.values:
+                return None
+            value = tidy(sliding.kinetic * self.along.acting[normal] * self.along.values[normal])
+            steps.append(Step(f"Kinetic friction on the {sliding.body} there, its coefficient times the normal force",
+                              (sp.Eq(sp.Symbol(name), sliding.kinetic * normal), sp.Eq(sp.Symbol(name), value)), role="solve"))
+            return value
         unknowns = quantities.KINDS[ask.quantity.kind].unknowns(self.solution, ask)  # what the ask reads
         if len(unknowns) != 1 or not unknowns <= self.along.acting.keys() & self.along.values.keys():
             return None
@@ -236,6 +279,13 @@ class _Kinematics:
         kind, target = ask.quantity.kind, ask.quantity.target
         if kind == "time":
             return found["t"]
+        if kind == "kinetic_energy":
+            if name != str(KINETIC):
+                steps.append(Step("Its kinetic energy there", (sp.Eq(sp.Symbol(name), KINETIC), sp.Eq(sp.Symbol(name), self.kinetic)),
+                                  role="solve"))
+            else:
+                steps.append(Step("Its kinetic energy there", (sp.Eq(KINETIC, self.kinetic),), role="solve"))
+            return self.kinetic
         coordinates, sample = self.solution.coordinates, self.solution._sample
         if kind in ("speed", "distance"):
             if self.turning:
