@@ -96,7 +96,7 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
     free = free_directions(scene, coords)
     if len(free) > 1 and _dynamic(direction, scene):
         raise NotAlongALine("how the bodies' motions compare depends on their masses, not only on the constraints")
-    if len(free) == 1 and any(isinstance(c, Contact) and c.regime == "kinetic" for c in scene.constraints):
+    if len(free) == 1 and _sliding(scene):
         # the same line, from the constraints alone: the ratios of accelerations mu_k enters tidy no further
         direction = sp.Matrix([tidy(x / free[0][first]) for x in free[0]])
     if sample(accelerations[first]) < 0:
@@ -278,7 +278,8 @@ def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[St
         if m.heading is not None:
             normal = sp.Matrix([-m.heading[1], m.heading[0]])
             balance = (sp.Eq(0, component(on_body, normal, sample)),)
-            text = f"Across its motion the {m.name}'s center does not accelerate, starting from rest"
+            text = f"Across its motion the {m.name}'s center does not accelerate, " + \
+                ("sliding along a straight line" if _sliding(scene) else "starting from rest")
             if any(isinstance(c, Pin) and c.body == m.name and c.to is None for c in scene.constraints):
                 mass = scene.bodies[m.name].mass  # a pivoted body's balance along its motion is not written yet
                 balance = (sp.Eq(_product(mass, names[m.name, "a"]), component(on_body, m.heading, sample)), *balance)
@@ -289,6 +290,12 @@ def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[St
             text = f"The {m.name}'s center stays put: the forces on it balance"
         steps.append(Step(text, tuple(b for b in balance if isinstance(b, sp.Eq)), role="equations", body=m.name))
     return [s for s in steps if s.equations]
+
+
+def _sliding(scene: Scene) -> bool:
+    """Whether a contact slides with kinetic friction: the route then follows a slide along a line
+    (derive.solution.sliding), at any speed, not only from rest."""
+    return any(isinstance(c, Contact) and c.regime == "kinetic" for c in scene.constraints)
 
 
 def _words(heading: sp.Matrix, sample) -> str:

@@ -42,18 +42,15 @@ def regime_to(solution, end) -> tuple | None:
     if part is None or part.regime != "kinetic":
         return None
     start = solution.starts.get(end.name)
-    opening = (held_or_slips(solution, start.step, contact),) if start is not None else (sent_sliding(solution, contact),)
+    opening = (held_or_slips(solution, start.step, contact),) if start is not None else (sent_sliding(contact),)
     return solution.scene_in(end.name), solution.derivations_in(end.name), opening
 
 
-def sent_sliding(solution, contact) -> Step:
-    """Why kinetic friction acts, and which way, on a body sent sliding: f_k = mu_k N (the equation
-    left out where the file names f_k otherwise)."""
-    f = sp.Symbol("f_k", real=True)
-    taken = {*solution.problem.parameters, *solution.problem.asks}
+def sent_sliding(contact) -> Step:
+    """Why kinetic friction acts, and which way, on a body sent sliding (mu_k N, in the balance along
+    the motion that follows)."""
     return Step(f"The {contact.body} is sent sliding on the {contact.surface}: kinetic friction, its coefficient times "
-                "the normal force, acts against the slide as long as it slides",
-                () if "f_k" in taken else (sp.Eq(f, contact.kinetic * contact.unknowns()["normal"]),), role="equations")
+                "the normal force, acts against the slide as long as it slides")
 
 
 def held_or_slips(solution, step: Step, contact) -> Step:

@@ -301,6 +301,8 @@ class _Kinematics:
             steps.append(Step(_WORDS[kind].format(target=target),
                               (sp.Eq(symbol, factor * symbols[key] / (2 * sp.pi)), sp.Eq(symbol, tidy(value / (2 * sp.pi)))),
                               role="solve"))
+        elif kind == "angular_velocity" and self.kinetic is not None and target == self.leader:  # omega = v/R written
+            steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, value),), role="solve"))
         elif factor != 1 or target != self.leader:
             steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, factor * symbols[key]),
                                                                    sp.Eq(symbol, value)), role="solve"))

@@ -67,7 +67,7 @@ def between_states(solution, along: AlongMotion, scene, body: str, ends: tuple[d
     length, d = way
     friction = tidy(sum((c.power(coords).xreplace(rates).xreplace(rest) for c in sliding), sp.Integer(0))
                     * (1 if solution._sample(length) > 0 else -1)).xreplace(oriented) * d
-    theorem = sp.Eq(KINETIC, gravity + friction)  # from rest; else K - K_0 = W, each K written out
+    theorem = sp.Eq(KINETIC, gravity + friction)  # from rest, where K is asked; else K - K_0 = W, each K written out
     found = {v: value1, v0: value0, d: definite_length(length, solution), **{u: along.acting[u] * along.values[u]
                                                                              for u in along.acting if u in along.values}}
     at_end = kinetic.xreplace(put).xreplace(found)
@@ -80,7 +80,8 @@ def between_states(solution, along: AlongMotion, scene, body: str, ends: tuple[d
     text = (f"The work–energy theorem: the {body}'s kinetic energy changes by {works}{held}. Its kinetic energy is "
             + ("that of its center's motion and of its rotation about the center, with its moment of inertia and its "
                "rate of turning" if given else "that of its motion"))
-    shown = (sp.Eq(KINETIC, kinetic), theorem) if initial == 0 else (sp.Eq(kinetic - initial, gravity + friction),)
+    asked = any(a.quantity.kind == "kinetic_energy" for a in solution.problem.asks.values())
+    shown = (sp.Eq(KINETIC, kinetic), theorem) if initial == 0 and asked else (sp.Eq(kinetic - initial, gravity + friction),)
     return Step(text, (*given, *shown), role="equations"), tidy(at_end)
 
 
