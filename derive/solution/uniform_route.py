@@ -192,6 +192,9 @@ class _Kinematics:
             text = f"The {self.leader} starts {moving} the way of the acceleration found, and speeds up at that constant rate"
             relations = (sp.Eq(v**2, v0**2 + 2 * a * d), sp.Eq(v, v0 + a * t))
         given = (sp.Eq(v0, speed0),) if sign0 and v0 != speed0 else ()
+        known = self.end.rate and not self.turning  # the state is where the speed is given (halved): put it in
+        if known:
+            relations = tuple(r.xreplace({v: found["v"]}) for r in relations)
         energy = None if stops or self.turning or not kinds & SPEEDS else \
             between_states(self.solution, self.along, self.scene, self.leader, (self.first_values, self.last), (self.way, d),
                            ((speed0, found["v"]), (v0 if sign0 else sp.Integer(0), v)), self.same)
@@ -212,7 +215,7 @@ class _Kinematics:
             result.append(Step(f"It stops where its {'rate of turning' if self.turning else 'speed'} has fallen to zero",
                                solved, role="solve"))
         elif energy is None:
-            solved = ((sp.Eq(d, found["d"]),) if d != found["d"] else ()) + (sp.Eq(v, found["v"]),) + \
+            solved = ((sp.Eq(d, found["d"]),) if d != found["d"] else ()) + (() if known else (sp.Eq(v, found["v"]),)) + \
                 ((sp.Eq(t, found["t"]),) if timed else ())
             result.append(Step("Where the state is reached", solved, role="solve"))
         symbols = {"v": v, "d": d, "t": t}
@@ -303,9 +306,9 @@ class _Kinematics:
                               role="solve"))
         elif kind == "angular_velocity" and self.kinetic is not None and target == self.leader:  # omega = v/R written
             steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, value),), role="solve"))
-        elif factor != 1 or target != self.leader:
-            steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, factor * symbols[key]),
-                                                                   sp.Eq(symbol, value)), role="solve"))
+        elif factor != 1 or target != self.leader:  # v = v said nothing: the constraints tie them one to one
+            tie = (sp.Eq(symbol, factor * symbols[key]),) if symbol != factor * symbols[key] else ()
+            steps.append(Step(_WORDS[kind].format(target=target), (*tie, sp.Eq(symbol, value)), role="solve"))
         return value
 
 
