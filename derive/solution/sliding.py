@@ -87,4 +87,4 @@ def slide_from_rest(solution, needed: set) -> TextbookRoute | None:
     reference = solution._solved(derivations["lagrange"], solution.coordinates.at_rest_in_reference())
     compared = tuple((str(u), value, (lambda u=u: reference.raw[u])) for u, value in along.values.items())
     return TextbookRoute({SECTION: (step, *along.steps)}, compared,
-                         "Newton's second law along the motion of a body that slides", along)
+                         "Newton's second law along the motion of a body that slides", along, regime.scene)

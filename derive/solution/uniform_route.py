@@ -93,7 +93,7 @@ def uniform_route(solution) -> TextbookRoute | None:
         sections[motion.title if len(ends) == 1 else quantities.describe_capitalized(first.meaning)] = steps
         compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
     return TextbookRoute(sections, tuple(compared), "Newton's second law along the motion, then the kinematics of "
-                         "constant acceleration", along)
+                         "constant acceleration", along, scene)
 
 
 class _Kinematics:
