@@ -38,7 +38,7 @@ def _opening(steps) -> list[str]:
              "work–energy theorem": "energy", "starts from rest": "kinematics", "starts moving": "kinematics",
              "starts turning": "kinematics", "It stops where": "stops", "Where the state is reached": "reached",
              "rate of turning follows": "rolling", "number of turns": "turns", "rolls without slipping": "ties",
-             "neither stretches": "ties", "Kinetic friction on": "friction", "Its kinetic energy there": "kinetic",
+             "neither stretches": "ties", "Kinetic friction on": "friction", "kinetic energy there follows": "kinetic",
              "there follows from the way": "component", "moves in proportion": "proportion"}
     return [next((k for words, k in kinds.items() if words in step.text), step.text) for step in steps]
 

@@ -283,11 +283,10 @@ class _Kinematics:
         if kind == "time":
             return found["t"]
         if kind == "kinetic_energy":
-            if name != str(KINETIC):
-                steps.append(Step("Its kinetic energy there", (sp.Eq(sp.Symbol(name), KINETIC), sp.Eq(sp.Symbol(name), self.kinetic)),
-                                  role="solve"))
-            else:
-                steps.append(Step("Its kinetic energy there", (sp.Eq(KINETIC, self.kinetic),), role="solve"))
+            symbol = sp.Symbol(name)
+            steps.append(Step("The kinetic energy there follows from the speed found",
+                              ((sp.Eq(symbol, KINETIC),) if symbol != KINETIC else ()) + (sp.Eq(symbol, self.kinetic),),
+                              role="solve"))
             return self.kinetic
         coordinates, sample = self.solution.coordinates, self.solution._sample
         if kind in ("speed", "distance"):
