@@ -7,15 +7,24 @@ the motion from its start to where it stops or to where it has gone a given way:
 
 as a solution manual solves a cylinder rolling up a slope until it stops (Serway & Jewett ch. 10) or
 a grindstone slowed by a constant friction torque (Serway & Jewett ch. 10, rigid body under constant
-angular acceleration). Offered only where the motion's acceleration along its way is constant: the
-engine's own states (derive.mechanics.states, by work and energy) must satisfy v^2 - v_0^2 = 2 a d
-at points of the ranges, and every ask must be one the kinematics answer; each of its findings is
-then compared with the key's (the check textbook_route).
+angular acceleration). Where the end state asks a speed of one moving body, the speed is taken by the
+work–energy theorem instead (derive.solution.work_energy: K - K_0 = the work of gravity and of kinetic
+friction), and the kinematics only give the time. A body that slides with kinetic friction is followed
+where the engine proves it slides the same way all the way (derive.solution.sliding): f = mu_k N
+against the slide, N from the balance across it; a slide that stops and goes back is another regime,
+refused. Several states asked from one start (where a puck stops, where its speed has halved) each
+get a section, titled by what is asked there; a state reached from rest where an asked slide stopped
+follows in the same regime (back down a smooth incline).
+
+Offered only where the motion's acceleration along its way is constant: the engine's own states
+(derive.mechanics.states, by work and energy) must satisfy v^2 - v_0^2 = 2 a d at points of the
+ranges, and every ask must be one the route answers; each of its findings is then compared with the
+key's (the check textbook_route).
 
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
 >>> list(Solution(load("sphere_rolls_down")).textbook_route.sections)
-['Forces and torques along the motion', 'The motion at constant acceleration']
+['Forces and torques along the motion', 'The speed by energy, the time at constant acceleration']
 """
 from __future__ import annotations
 
