@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derive import quantities
 from derive.core.tidying import tidy
 from derive.mechanics import friction
 from derive.mechanics.along_motion import NotAlongALine, along_motion
@@ -28,6 +29,8 @@ from derive.solution.textbook_routes import TextbookRoute
 from derive.text.steps import Step, renamed
 
 SECTION = "Forces and torques along the motion"
+#: The asks the no-state route's Newton along the motion answers with steps of their own (derive.solution.textbook).
+OWN_STEPS = {"min_friction_coefficient", "time_to_bottom", "speed_at_bottom"}
 
 
 def regime_to(solution, end) -> tuple | None:
@@ -68,8 +71,10 @@ def slide_from_rest(solution, needed: set) -> TextbookRoute | None:
     (None elsewhere): the step that says why, then the route along the motion in the slipping
     regime, each of its findings beside the regime's own derivation by Lagrange's method."""
     contact = friction.frictional(solution.scene)
-    if contact is None or contact.kinetic is None:
-        return None
+    if contact is None or contact.kinetic is None or any(
+            ask.sign is not None or quantities.KINDS[ask.quantity.kind].own_section or ask.quantity.detail in OWN_STEPS
+            for ask in solution.problem.asks.values()):
+        return None  # a sign convention, or an ask with steps of its own, which this route does not write
     normal, needs = solution._grip("lagrange")
     ratio, box = tidy(needs / normal), range_forms.box(solution.problem)
     index = next((k for k, regime in enumerate(solution.regimes) if regime.direction
@@ -81,6 +86,8 @@ def slide_from_rest(solution, needed: set) -> TextbookRoute | None:
         along = along_motion(regime.scene, solution.coordinates, derivations["newton_euler"], solution._sample, needed)
     except NotAlongALine:
         return None
+    if not needed <= along.values.keys():
+        return None  # an ask read from what the slide has not (the static friction a stuck block needs)
     held = solution.dynamics_scene.constraint(contact.name)
     step = held_or_slips(solution, solution._start_step(contact, held, regime, tidy(normal), tidy(needs), "at the start"),
                          contact)
