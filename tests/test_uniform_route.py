@@ -126,6 +126,13 @@ CASES.append(
      {"a": lambda: _s("g") * (_s("m2") - _s("mu") * _s("m1")) / (_s("m1") + _s("m2")),
       "T": lambda: _s("g") * _s("m1") * _s("m2") * (1 + _s("mu")) / (_s("m1") + _s("m2")),
       "v": lambda: sp.sqrt(2 * _s("g") * _s("h") * (_s("m2") - _s("mu") * _s("m1")) / (_s("m1") + _s("m2")))}, 13))
+CASES.append(
+    # Serway & Jewett 9th ed., ch. 10 (a block on a rough table tied over a massive pulley, I = M R^2/2, to a hanging
+    # block): a = (m2 - mu_k m1) g/(m1 + m2 + M/2), T_1 = m1 (a + mu_k g), T_2 = m2 (g - a).
+    ("table_block_massive_pulley_friction", {FORCES: ["regime", "newton", "torque", "newton", "ties", "across", "solve"]},
+     {"a": lambda: (_s("m2") - _s("mu_k") * _s("m1")) * _s("g") / (_s("m1") + _s("m2") + _s("M") / 2),
+      "T_1": lambda: _s("m1") * _s("g") * (_s("mu_k") + (_s("m2") - _s("mu_k") * _s("m1")) / (_s("m1") + _s("m2") + _s("M") / 2)),
+      "T_2": lambda: _s("m2") * _s("g") * (1 - (_s("m2") - _s("mu_k") * _s("m1")) / (_s("m1") + _s("m2") + _s("M") / 2))}, 10))
 #: The library problems the route now takes, which had the engine's long route (its equations then).
 MOVED = {"block_incline_kinetic": 39, "block_up_incline": 11, "puck_slides_to_stop": 11, "block_down_rough_incline": 20}
 
@@ -191,3 +198,9 @@ def test_a_block_that_may_stay_put_at_some_values_is_refused(tmp_path):
     gentle.write_text(library.replace("range: [0.8, 1.2]", "range: [0.1, 1.2]"))
     assert Solution(load(str(gentle))).textbook_route is None
     assert _taken(Solution(load("block_incline_kinetic")))
+
+
+def test_a_disk_that_slips_as_it_turns_is_refused():
+    """A disk slipping down a rough incline slides and turns at rates no constraint ties (a = g (sin - mu_k cos),
+    alpha = 2 mu_k g cos(theta)/R): Newton along one line of motion does not describe it."""
+    assert Solution(load("disk_incline_slips")).textbook_route is None

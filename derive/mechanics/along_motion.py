@@ -94,6 +94,8 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
         raise NotAlongALine("the scene stays at rest")
     direction = sp.Matrix([tidy(a / accelerations[first]) for a in accelerations])
     free = free_directions(scene, coords)
+    if len(free) > 1 and _sliding(scene):
+        raise NotAlongALine("a body slipping with kinetic friction moves more than one way: its rates are not tied")
     if len(free) > 1 and _dynamic(direction, scene):
         raise NotAlongALine("how the bodies' motions compare depends on their masses, not only on the constraints")
     if len(free) == 1 and _sliding(scene):

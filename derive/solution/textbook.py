@@ -30,7 +30,6 @@ import sympy as sp
 
 from derive import quantities
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
-from derive.core.tidying import tidy
 from derive.mechanics.derivation import KINETIC
 from derive.text.latex import symbol_latex
 from derive.text.steps import Step, renamed
@@ -41,6 +40,7 @@ from derive.parts.contact import Contact
 from derive.solution.textbook_routes import TextbookRoute, loop_route, orbit_route, state_route, top_route
 from derive.solution.uniform_route import uniform_route
 from derive.solution.sliding import slide_from_rest
+from derive.solution.work_energy import kinetic_energy
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -203,24 +203,15 @@ def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
 
 def _energy(solution, body: str, balance, along: AlongMotion) -> list[Step]:
     """The work-energy theorem as a textbook writes it: K = M v^2/2 + I omega^2/2, with the moment of
-    inertia and the rolling condition omega = v/R put in, then energy conserved from rest (the
-    balance's own last step)."""
-    held = solution.scene.bodies[body]
-    v, omega = sp.Symbol("v"), sp.Symbol("omega")
-    translation = held.mass * v**2 / 2
-    turning = along.names.get((body, "alpha"))
-    if turning is None:
-        return [Step("Energy is conserved: only gravity does work", (sp.Eq(KINETIC, translation),)), balance.steps[-1]]
-    taken = {*solution.problem.parameters, *solution.problem.asks}
-    moment = held.inertia if isinstance(held.inertia, sp.Symbol) else \
-        sp.Symbol(next(n for n in ("I", "I_cm", "I_c", "I_0") if n not in taken))
-    ratio = tidy(along.own[turning] / along.own[along.names[body, "a"]])
-    given = () if moment == held.inertia else (sp.Eq(moment, held.inertia),)
+    inertia and the rolling condition omega = v/R put in (derive.solution.work_energy), then energy
+    conserved from rest (the balance's own last step)."""
+    given, kinetic, _ = kinetic_energy(solution, body, along)
+    if not given:
+        return [Step("Energy is conserved: only gravity does work", (sp.Eq(KINETIC, kinetic),)), balance.steps[-1]]
     return [Step(f"Energy is conserved: gravity does work, the normal force none, and static friction none either, "
                  f"acting at a point of the {body} that does not slip. Its kinetic energy is that of its center's motion "
                  f"and of its rotation about the center, with its moment of inertia and its rate of turning",
-                 (*given, sp.Eq(omega, ratio * v), sp.Eq(KINETIC, translation + moment * omega**2 / 2),
-                  sp.Eq(KINETIC, balance.steps[1].equations[0].rhs))),
+                 (*given, sp.Eq(KINETIC, kinetic), sp.Eq(KINETIC, balance.steps[1].equations[0].rhs))),
             balance.steps[-1]]
 
 
