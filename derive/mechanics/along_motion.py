@@ -94,8 +94,10 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
         raise NotAlongALine("the scene stays at rest")
     direction = sp.Matrix([tidy(a / accelerations[first]) for a in accelerations])
     free = free_directions(scene, coords)
-    if len(free) > 1 and _sliding(scene):
-        raise NotAlongALine("a body slipping with kinetic friction moves more than one way: its rates are not tied")
+    coefficients = {s for c in scene.constraints if isinstance(c, Contact) and c.regime == "kinetic"
+                    for s in c.kinetic.free_symbols}
+    if len(free) > 1 and any(x.free_symbols & coefficients for x in direction):
+        raise NotAlongALine("how the motions compare depends on kinetic friction (a disk that slides as it turns)")
     if len(free) > 1 and _dynamic(direction, scene):
         raise NotAlongALine("how the bodies' motions compare depends on their masses, not only on the constraints")
     if len(free) == 1 and _sliding(scene):
