@@ -93,6 +93,22 @@ EXPECTED = {
     # uniform disk I = M R^2/2 spinning at w0, slowed by a constant friction torque tau on its axle:
     # alpha = tau/I (clockwise, against its counter-clockwise spin); omega^2 = w0^2 - 2 alpha dtheta gives the
     # angle turned to rest I w0^2/(2 tau) (asked in turns, compared in rad), after t = I w0/tau.
+    # Serway & Jewett 9th ed., ch. 10 (energy in rolling motion): a solid cylinder, I = M R^2/2, rolling from rest
+    # down a height h has v = sqrt(2 g h/(1 + I/(M R^2))) = sqrt(4 g h/3).
+    "cylinder_rolls_down_by_energy": {"v": lambda s: sp.sqrt(4 * s.g * s.h / 3)},
+    # Serway & Jewett 9th ed., ch. 8 (work-energy with kinetic friction on an incline): m v^2/2 - m v0^2/2 =
+    # m g d sin(theta) - mu_k m g cos(theta) d; ch. 5: a = g (sin(theta) - mu_k cos(theta)), t = (v - v0)/a.
+    "block_sent_down_rough_incline": {
+        "v": lambda s: sp.sqrt(s.v0**2 + 2 * s.g * s.d * (sp.sin(s.theta) - s.mu * sp.cos(s.theta))),
+        "t": lambda s: (sp.sqrt(s.v0**2 + 2 * s.g * s.d * (sp.sin(s.theta) - s.mu * sp.cos(s.theta))) - s.v0)
+        / (s.g * (sp.sin(s.theta) - s.mu * sp.cos(s.theta))),
+    },
+    # Serway & Jewett 9th ed., ch. 5 (a block sliding up a rough incline): a = -g (sin(theta) + mu_k cos(theta)), so it
+    # stops after d = v0^2/(2 g (sin(theta) + mu_k cos(theta))), in t = v0/(g (sin(theta) + mu_k cos(theta))).
+    "crate_stops_on_rough_ramp": {
+        "d": lambda s: s.v0**2 / (2 * s.g * (sp.sin(s.theta) + s.mu * sp.cos(s.theta))),
+        "t": lambda s: s.v0 / (s.g * (sp.sin(s.theta) + s.mu * sp.cos(s.theta))),
+    },
     "grindstone_slowed_by_friction": {
         "alpha": lambda s: -2 * s.tau / (s.M * s.R**2),
         "n": lambda s: s.M * s.R**2 * s.w0**2 / (4 * s.tau),

@@ -28,6 +28,7 @@ two give (derive.solution.textbook checks it).
 from __future__ import annotations
 
 from collections.abc import Callable
+import dataclasses
 from dataclasses import dataclass
 
 import sympy as sp
@@ -62,6 +63,7 @@ class AlongMotion:
     own: dict[sp.Symbol, sp.Expr]
     names: dict[tuple[str, str], sp.Symbol]  # (body, "a" or "alpha"): its symbol
     acting: dict[sp.Symbol, int]  # each constraint force's sense: -1 where it acts against its axis
+    rates: dict = dataclasses.field(default_factory=dict)  # each coordinate's acceleration per the leading one
 
 
 @dataclass(frozen=True)
@@ -91,8 +93,16 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
     if first is None:
         raise NotAlongALine("the scene stays at rest")
     direction = sp.Matrix([tidy(a / accelerations[first]) for a in accelerations])
-    if len(free_directions(scene, coords)) > 1 and _dynamic(direction, scene):
+    free = free_directions(scene, coords)
+    coefficients = {s for c in scene.constraints if isinstance(c, Contact) and c.regime == "kinetic"
+                    for s in c.kinetic.free_symbols}
+    if len(free) > 1 and any(x.free_symbols & coefficients for x in direction):
+        raise NotAlongALine("how the motions compare depends on kinetic friction (a disk that slides as it turns)")
+    if len(free) > 1 and _dynamic(direction, scene):
         raise NotAlongALine("how the bodies' motions compare depends on their masses, not only on the constraints")
+    if len(free) == 1 and _sliding(scene):
+        # the same line, from the constraints alone: the ratios of accelerations mu_k enters tidy no further
+        direction = sp.Matrix([tidy(x / free[0][first]) for x in free[0]])
     if sample(accelerations[first]) < 0:
         direction = -direction
     moving = [_moving(body, coords, direction, index, sample) for body in scene.bodies.values()]
@@ -144,8 +154,8 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
         short, pending = len(symbols) + len(forces) - len(equations), wanted - set(forces)
         if short <= 0 and not pending:
             break
-        step = next((x for x in extra if _forces(x) & pending), None) or \
-            next((x for x in extra if _forces(x) - set(forces) == set() and len(x.equations) <= short), None)
+        step = next((x for x in extra if _forces(x, flipped) & pending), None) or \
+            next((x for x in extra if _forces(x, flipped) <= set(forces) and len(x.equations) <= short), None)
         if step is None:
             raise NotAlongALine("the balances along and across the motion leave a force open")
         extra.remove(step)
@@ -161,7 +171,8 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
     steps.append(Step("Solving", tuple(shown), role="solve"))
     values = {c.a: tidy(direction[index[c]] * solved[base]) for c in coords.all}
     values.update({u: tidy(flipped[u] * solved[u]) for u in forces})
-    return AlongMotion(tuple(steps), values, {u: solved[u] for u in symbols}, names, flipped)
+    return AlongMotion(tuple(steps), values, {u: solved[u] for u in symbols}, names, flipped,
+                       {c.a: tidy(direction[index[c]]) for c in coords.all})
 
 
 def _dynamic(direction: sp.Matrix, scene: Scene) -> bool:
@@ -254,8 +265,10 @@ def _product(mass: sp.Expr, acceleration: sp.Symbol) -> sp.Expr:
     return sp.Mul(mass, acceleration, evaluate=False)
 
 
-def _forces(step: Step) -> set[sp.Symbol]:
-    return {s for e in step.equations for s in e.free_symbols}
+def _forces(step: Step, forces) -> set[sp.Symbol]:
+    """The constraint forces (`forces`) a step's equations hold: kinetic friction's mu_k N leaves N open
+    along the motion, which the balance across it, 0 = N - m g cos(theta), gives."""
+    return {s for e in step.equations for s in e.free_symbols if s in forces}
 
 
 def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[Step]:
@@ -269,7 +282,8 @@ def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[St
         if m.heading is not None:
             normal = sp.Matrix([-m.heading[1], m.heading[0]])
             balance = (sp.Eq(0, component(on_body, normal, sample)),)
-            text = f"Across its motion the {m.name}'s center does not accelerate, starting from rest"
+            text = f"Across its motion the {m.name}'s center does not accelerate, " + \
+                ("sliding along a straight line" if _sliding(scene) else "starting from rest")
             if any(isinstance(c, Pin) and c.body == m.name and c.to is None for c in scene.constraints):
                 mass = scene.bodies[m.name].mass  # a pivoted body's balance along its motion is not written yet
                 balance = (sp.Eq(_product(mass, names[m.name, "a"]), component(on_body, m.heading, sample)), *balance)
@@ -280,6 +294,12 @@ def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[St
             text = f"The {m.name}'s center stays put: the forces on it balance"
         steps.append(Step(text, tuple(b for b in balance if isinstance(b, sp.Eq)), role="equations", body=m.name))
     return [s for s in steps if s.equations]
+
+
+def _sliding(scene: Scene) -> bool:
+    """Whether a contact slides with kinetic friction: the route then follows a slide along a line
+    (derive.solution.sliding), at any speed, not only from rest."""
+    return any(isinstance(c, Contact) and c.regime == "kinetic" for c in scene.constraints)
 
 
 def _words(heading: sp.Matrix, sample) -> str:

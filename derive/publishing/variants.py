@@ -194,8 +194,8 @@ class ProblemVariants:
             return {}
         names = textbook.names(self.solution)  # f for f^ball, then a letter given way (F_x for R_x beside R)
         names = {**self.letters, **{u: self.letters.get(v, v) for u, v in names.items()}}
-        drawn = free_body.free_bodies(self.problem, self.solution.dynamics_scene, self.solution.coordinates,
-                                      route.acting, names)
+        scene = getattr(self.solution.textbook_route, "scene", None) or self.solution.dynamics_scene  # a slide's own
+        drawn = free_body.free_bodies(self.problem, scene, self.solution.coordinates, route.acting, names)
         result, seen = {}, set()
         for step in (s for section in steps.values() for s in section):
             if step.body and step.body not in seen and drawn.get(step.body) is not None:

@@ -27,16 +27,14 @@ student route is written (`steps` is None) and the worked solution shows the two
 """
 from __future__ import annotations
 
-import dataclasses
 
 import sympy as sp
 
 from derive import quantities
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion
-from derive.core.tidying import tidy
 from derive.mechanics.derivation import KINETIC
 from derive.text.latex import symbol_latex
-from derive.text.steps import Step
+from derive.text.steps import Step, renamed
 from derive.mechanics.small_swings import SmallSwing, small_swing
 from derive.mechanics.statics import statics
 from derive.model.scene import Quantity
@@ -44,6 +42,8 @@ from derive.parts.contact import Contact
 from derive.solution.textbook_routes import TextbookRoute, loop_route, orbit_route, state_route, top_route
 from derive.solution.uniform_route import uniform_route
 from derive.solution.swing_route import swing_route
+from derive.solution.sliding import slide_from_rest
+from derive.solution.work_energy import kinetic_energy
 from derive.numbers.agreement import agree
 from derive.solution.crosschecks import sample_points
 from derive.parts.surfaces import Plane
@@ -83,7 +83,7 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
                        or not covered(a.quantity) for a in asks):
         return None
     if len(solution.regimes) != 1:
-        return None
+        return slide_from_rest(solution, solution._needed_unknowns())
     if all(quantities.KINDS[a.quantity.kind].own_section for a in asks) and not solution._needed_unknowns():
         return None  # no force is asked or read: the quantities' own sections are the solution
     arguments = (solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
@@ -104,10 +104,10 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
     if isinstance(along, SmallSwing):  # the period and the frequency under the names the question asks them by
         change = {sp.Symbol({"period": "T", "omega": "omega"}[a.quantity.detail]): sp.Symbol(a.name)
                   for a in solution.problem.asks.values() if a.quantity.kind == "small_oscillation"}
-        return {f"Small oscillations about {along.about}": [_renamed(step, change) for step in along.steps]}
+        return {f"Small oscillations about {along.about}": [renamed(step, change) for step in along.steps]}
     if isinstance(along, TextbookRoute):
         change = names(solution)
-        return {title: [_renamed(step, change) for step in steps] for title, steps in along.sections.items()}
+        return {title: [renamed(step, change) for step in steps] for title, steps in along.sections.items()}
     title = "Forces and torques along the motion" if along.names else "Forces and torques in balance"
     result = {title: list(along.steps)}
     for ask in solution.problem.asks.values():
@@ -125,7 +125,7 @@ def student_steps(solution) -> dict[str, list[Step]] | None:
                 return None
             result["The time to the bottom"] = [step]
     change = names(solution)
-    shown = {title: [_renamed(step, change) for step in steps] for title, steps in result.items()}
+    shown = {title: [renamed(step, change) for step in steps] for title, steps in result.items()}
     shown[title] += counted  # in the ask's own name, which no renaming of the route's symbols touches
     return {**shown, **solution._quantity_sections()}  # each its own section, after the forces it reads
 
@@ -205,32 +205,17 @@ def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
     return result
 
 
-def _renamed(step: Step, change: dict) -> Step:
-    if not change:
-        return step
-    return dataclasses.replace(step, equations=tuple(e.xreplace(change) for e in step.equations))
-
-
 def _energy(solution, body: str, balance, along: AlongMotion) -> list[Step]:
     """The work-energy theorem as a textbook writes it: K = M v^2/2 + I omega^2/2, with the moment of
-    inertia and the rolling condition omega = v/R put in, then energy conserved from rest (the
-    balance's own last step)."""
-    held = solution.scene.bodies[body]
-    v, omega = sp.Symbol("v"), sp.Symbol("omega")
-    translation = held.mass * v**2 / 2
-    turning = along.names.get((body, "alpha"))
-    if turning is None:
-        return [Step("Energy is conserved: only gravity does work", (sp.Eq(KINETIC, translation),)), balance.steps[-1]]
-    taken = {*solution.problem.parameters, *solution.problem.asks}
-    moment = held.inertia if isinstance(held.inertia, sp.Symbol) else \
-        sp.Symbol(next(n for n in ("I", "I_cm", "I_c", "I_0") if n not in taken))
-    ratio = tidy(along.own[turning] / along.own[along.names[body, "a"]])
-    given = () if moment == held.inertia else (sp.Eq(moment, held.inertia),)
+    inertia and the rolling condition omega = v/R put in (derive.solution.work_energy), then energy
+    conserved from rest (the balance's own last step)."""
+    given, kinetic, _ = kinetic_energy(solution, body, along)
+    if not given:
+        return [Step("Energy is conserved: only gravity does work", (sp.Eq(KINETIC, kinetic),)), balance.steps[-1]]
     return [Step(f"Energy is conserved: gravity does work, the normal force none, and static friction none either, "
                  f"acting at a point of the {body} that does not slip. Its kinetic energy is that of its center's motion "
                  f"and of its rotation about the center, with its moment of inertia and its rate of turning",
-                 (*given, sp.Eq(omega, ratio * v), sp.Eq(KINETIC, translation + moment * omega**2 / 2),
-                  sp.Eq(KINETIC, balance.steps[1].equations[0].rhs))),
+                 (*given, sp.Eq(KINETIC, kinetic), sp.Eq(KINETIC, balance.steps[1].equations[0].rhs))),
             balance.steps[-1]]
 
 

@@ -54,6 +54,7 @@ class TextbookRoute:
     compared: tuple[tuple[str, sp.Expr, Callable[[], sp.Expr]], ...]
     principle: str
     along: object = None  # the route along the motion it starts from (derive.mechanics.along_motion), if any
+    scene: object = None  # the scene `along` is written in, where not the engine's stuck one (a slide's)
 
     def agreement(self, agree: Callable, failure: Callable) -> set[str]:
         """The methods by which each finding agrees with the engine's (`agree(a, b)`: a method, or None

@@ -7,17 +7,28 @@ the motion from its start to where it stops or to where it has gone a given way:
 
 as a solution manual solves a cylinder rolling up a slope until it stops (Serway & Jewett ch. 10) or
 a grindstone slowed by a constant friction torque (Serway & Jewett ch. 10, rigid body under constant
-angular acceleration). Offered only where the motion's acceleration along its way is constant: the
-engine's own states (derive.mechanics.states, by work and energy) must satisfy v^2 - v_0^2 = 2 a d
-at points of the ranges, and every ask must be one the kinematics answer; each of its findings is
-then compared with the key's (the check textbook_route).
+angular acceleration). Where the end state asks a speed of one moving body, the speed is taken by the
+work–energy theorem instead (derive.solution.work_energy: K - K_0 = the work of gravity and of kinetic
+friction), and the kinematics only give the time. A body that slides with kinetic friction is followed
+where the engine proves it slides the same way all the way (derive.solution.sliding): f = mu_k N
+against the slide, N from the balance across it; a slide that stops and goes back is another regime,
+refused. Several states asked from one start (where a puck stops, where its speed has halved) each
+get a section, titled by what is asked there; a state reached from rest where an asked slide stopped
+follows in the same regime (back down a smooth incline).
+
+Offered only where the motion's acceleration along its way is constant: the engine's own states
+(derive.mechanics.states, by work and energy) must satisfy v^2 - v_0^2 = 2 a d at points of the
+ranges, and every ask must be one the route answers; each of its findings is then compared with the
+key's (the check textbook_route).
 
 >>> from derive.language.problem import load
 >>> from derive.solution.answers import Solution
 >>> list(Solution(load("sphere_rolls_down")).textbook_route.sections)
-['Forces and torques along the motion', 'The motion at constant acceleration']
+['Forces and torques along the motion', 'The speed by energy, the time at constant acceleration']
 """
 from __future__ import annotations
+
+import dataclasses
 
 import sympy as sp
 
@@ -25,55 +36,73 @@ from derive import quantities
 from derive.core.tidying import root, tidy
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion, definite
 from derive.numbers.agreement import agree
+from derive.parts.contact import Contact
 from derive.solution.crosschecks import sample_points
+from derive.mechanics.derivation import KINETIC
+from derive.solution.work_energy import between_states
+from derive.solution.sliding import SECTION as FORCES_SECTION, regime_to
 from derive.solution.textbook_routes import TextbookRoute
 from derive.text.steps import Step
 
 #: The asks of the end state the kinematics answer: (kind, detail); and the forces there, where the motion
 #: runs the way it starts from rest (the forces along the motion found at the placement hold all the way).
 ANSWERED = {("time", None), ("speed", None), ("angular_velocity", None), ("distance", None), ("turns", None),
-            ("position", "x"), ("position", "y"), ("velocity", "x"), ("velocity", "y")}
+            ("position", "x"), ("position", "y"), ("velocity", "x"), ("velocity", "y"), ("kinetic_energy", None)}
+#: The asks of the end state the work–energy theorem answers, where the leading body moves along a line.
+SPEEDS = {"speed", "angular_velocity", "velocity", "kinetic_energy"}
 FORCES = {"force", "contact"}
+SECTION = "The motion at constant acceleration"
+ENERGY_SECTION = "The speed by energy"
 #: The asks at the placement the forces along the motion answer.
 AT_PLACEMENT = {"acceleration", "angular_acceleration", "force", "contact"}
 
 
 def uniform_route(solution) -> TextbookRoute | None:
     """The student's route of a scene of one degree of freedom from its placement (at rest, or at given
-    rates) to one state it reaches at constant acceleration; None where the scene, its states or its
-    asks are not such."""
-    states = solution.scene.states
-    ends = [s for s in states.values() if not s.rates and s.event is None]
-    if len(ends) != 1 or len(solution.regimes) != 1:
+    rates) to the states asked, each reached from there at the same constant acceleration; None where the
+    scene, its states or its asks are not such."""
+    states, asks = solution.scene.states, solution.problem.asks.values()
+    ends = [state for name, state in states.items() if any(ask.state == name for ask in asks)]
+    stops = {end.name for end in ends if end.until == ("stops", None)}
+    roots = {end.start for end in ends} - stops
+    if len(roots) != 1 or any(states[end.start].start not in roots for end in ends if end.start in stops):
+        return None  # a state reached from another asked one that is not a stop: another segment
+    (root,) = roots
+    start = states.get(root) if root is not None else None
+    if root is not None and (start is None or not start.rates or start.start is not None) or \
+            any(end.rates or end.event is not None or end.until not in (None, ("stops", None)) or end.nudge
+                or end.relative_to is not None for end in ends):
         return None
-    (end,) = ends
-    start = states.get(end.start) if end.start is not None else None
-    if end.until not in (None, ("stops", None)) or end.nudge or end.relative_to is not None or end.rate \
-            or len(states) != 1 + (start is not None) or end.start is not None and (start is None or not start.rates):
-        return None
-    for ask in solution.problem.asks.values():
+    for ask in asks:
         key = (ask.quantity.kind, ask.quantity.detail)
         if ask.finds or ask.state is None and ask.quantity.kind not in AT_PLACEMENT \
-                or ask.state is not None and (ask.state != end.name or key not in ANSWERED
-                                              and ask.quantity.kind not in FORCES):
+                or ask.state is not None and key not in ANSWERED and ask.quantity.kind not in FORCES:
             return None
+    regimes = [regime_to(solution, end) for end in ends]
+    if any(regime is None for regime in regimes) or len({solution._chain.joints[end.name] for end in ends}) > 1:
+        return None  # one end grips, or slides another way than another: back down after a stop, a change of regime
+    scene, derivations, opening = regimes[0]
+    needed = solution._needed_unknowns().union(*(solution._needed_unknowns(end.name) for end in ends))
     try:
-        along = along_motion(solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
-                             solution._sample, solution._needed_unknowns() | solution._needed_unknowns(end.name))
+        along = along_motion(scene, solution.coordinates, derivations["newton_euler"], solution._sample, needed)
     except NotAlongALine:
         return None
-    motion = _Kinematics(solution, along, start, end)
-    if not motion.uniform():
-        return None
-    steps = motion.steps()
-    if steps is None or any(not motion.same(value, solution.expression(name)) for name, value in motion.answers.items()):
-        return None  # an ask the kinematics read otherwise than the key (a signed component): the routes' solution
-    compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", None).raw[u]))
+    sections = {FORCES_SECTION: (*opening, *along.steps)}
+    at = None if len(solution.regimes) == 1 else ends[0].name  # where the slide's forces are the engine's
+    compared = [(str(u), value, (lambda u=u: solution.in_state("lagrange", at).raw[u]))
                 for u, value in along.values.items()]
-    compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
-    return TextbookRoute({"Forces and torques along the motion": along.steps, "The motion at constant acceleration": steps},
-                         tuple(compared), "Newton's second law along the motion, then the kinematics of constant "
-                         "acceleration", along)
+    for end in ends:
+        motion = _Kinematics(solution, along, states[end.start] if end.start is not None else None, end, scene)
+        if not motion.uniform():
+            return None
+        steps = motion.steps()
+        if steps is None or any(not motion.same(value, solution.expression(name)) for name, value in motion.answers.items()):
+            return None  # an ask the kinematics read otherwise than the key (a signed component): the routes' solution
+        first = next(ask for ask in asks if ask.state == end.name)
+        sections[motion.title if len(ends) == 1 else quantities.describe_capitalized(first.meaning)] = steps
+        compared += [(name, value, (lambda name=name: solution.expression(name))) for name, value in motion.answers.items()]
+    return TextbookRoute(sections, tuple(compared), "Newton's second law along the motion, then the kinematics of "
+                         "constant acceleration", along, scene)
 
 
 class _Kinematics:
@@ -81,14 +110,14 @@ class _Kinematics:
     center's speed, or its rate of turning where it only turns): where it starts, how far it goes,
     how fast it ends, each read from the engine's states; and the steps that find them."""
 
-    def __init__(self, solution, along: AlongMotion, start, end):
+    def __init__(self, solution, along: AlongMotion, start, end, scene):
         self.solution, self.along, self.end = solution, along, end
         base = along.steps[-1].equations[0].lhs  # the route solves for the leading acceleration first
         self.acceleration = along.own[base]
         self.turning = base in {s for (_, kind), s in along.names.items() if kind == "alpha"}
         self.leader = next(body for (body, _), s in along.names.items() if s == base)
         coordinates = solution.coordinates.all
-        self.direction = {c: tidy(along.values[c.a] / self.acceleration) for c in coordinates}
+        self.direction = {c: along.rates[c.a] for c in coordinates}
         self.lead = next(c for c in coordinates if self.direction[c] != 0)
         rest = solution.coordinates.at_rest_in_reference()
         first = solution.states[start.name].values if start is not None else rest
@@ -96,9 +125,19 @@ class _Kinematics:
         scale = self.direction[self.lead]
         self.rate0 = tidy(first.get(self.lead.u, rest[self.lead.u]) / scale)
         self.rate1 = tidy(last[self.lead.u] / scale)
-        self.first, self.rest = first, rest
+        self.first, self.rest, self.last, self.scene = first, rest, last, scene
+        self.first_values = {**rest, **first}
         self.way = tidy((last[self.lead.q] - self.start_position(self.lead)) / scale)
         self.answers: dict[str, sp.Expr] = {}
+        self.kinetic: sp.Expr | None = None  # in the end state, where the work–energy theorem found the speed
+
+    @property
+    def title(self) -> str:
+        """The section's title: the speed by energy where the work–energy theorem found it."""
+        if self.kinetic is None:
+            return SECTION
+        timed = any(a.quantity.kind == "time" for a in self.solution.problem.asks.values() if a.state == self.end.name)
+        return ENERGY_SECTION + (", the time at constant acceleration" if timed else "")
 
     def _tidier(self, value: sp.Expr) -> sp.Expr:
         """`value`, or the same expression as the key prints it where that is shorter (sqrt(sin^3)/sin
@@ -162,21 +201,38 @@ class _Kinematics:
             text = f"The {self.leader} starts {moving} the way of the acceleration found, and speeds up at that constant rate"
             relations = (sp.Eq(v**2, v0**2 + 2 * a * d), sp.Eq(v, v0 + a * t))
         given = (sp.Eq(v0, speed0),) if sign0 and v0 != speed0 else ()
-        result = [Step(text, (*given, *(relations if timed else relations[:1])), role="equations")]
+        known = self.end.rate and not self.turning  # the state is where the speed is given (halved): put it in
+        if known:
+            relations = tuple(r.xreplace({v: found["v"]}) for r in relations)
+        energy = None if stops or self.turning or not kinds & SPEEDS else \
+            between_states(self.solution, self.along, self.scene, self.leader, (self.first_values, self.last), (self.way, d),
+                           ((speed0, found["v"]), (v0 if sign0 else sp.Integer(0), v)), self.same)
+        if energy is not None:  # the speed by energy; the kinematics only for the time
+            result = [dataclasses.replace(energy[0], equations=(*given, *energy[0].equations)),
+                      Step("Where the state is reached", ((sp.Eq(d, found["d"]),) if d != found["d"] and
+                                                          any(d in e.free_symbols for e in energy[0].equations) else ())
+                           + (sp.Eq(v, found["v"]),), role="solve")]
+            if timed:
+                result.append(Step(f"{text}: the time it takes", (relations[1], sp.Eq(t, found["t"]))))  # its own relation
+            self.kinetic = energy[1]
+        elif kinds & {"kinetic_energy"}:
+            return None
+        else:
+            result = [Step(text, (*given, *(relations if timed else relations[:1])), role="equations")]
         if stops:
             solved = (sp.Eq(d, found["d"]),) + ((sp.Eq(t, found["t"]),) if timed else ())
             result.append(Step(f"It stops where its {'rate of turning' if self.turning else 'speed'} has fallen to zero",
                                solved, role="solve"))
-        else:
-            solved = ((sp.Eq(d, found["d"]),) if d != found["d"] else ()) + (sp.Eq(v, found["v"]),) + \
+        elif energy is None:
+            solved = ((sp.Eq(d, found["d"]),) if d != found["d"] else ()) + (() if known else (sp.Eq(v, found["v"]),)) + \
                 ((sp.Eq(t, found["t"]),) if timed else ())
             result.append(Step("Where the state is reached", solved, role="solve"))
         symbols = {"v": v, "d": d, "t": t}
         for name, ask in self.solution.problem.asks.items():
-            if ask.state is None:
+            if ask.state != self.end.name:
                 continue
             if ask.quantity.kind in FORCES:
-                value = self._force(ask, sign0)
+                value = self._force(name, ask, sign0, result)
             elif ask.quantity.kind in ("position", "velocity"):
                 value = self._component(name, ask, found, result)
             else:
@@ -186,11 +242,22 @@ class _Kinematics:
             self.answers[name] = value
         return result
 
-    def _force(self, ask, sign0: int) -> sp.Expr | None:
+    def _force(self, name: str, ask, sign0: int, steps: list) -> sp.Expr | None:
         """A force found along the motion, the same all the way where the motion runs the way it starts
-        from rest (a friction's sense would turn with the motion's)."""
-        if sign0 < 0:
+        from rest (a static friction's sense would turn with the motion's), or where it slides with
+        kinetic friction all the way (against the slide: mu_k N, read from the normal force found)."""
+        sliding = next((c for c in self.scene.constraints if isinstance(c, Contact) and c.regime == "kinetic"
+                        and c.body == ask.quantity.target), None)
+        if sign0 < 0 and sliding is None:
             return None
+        if sliding is not None and (ask.quantity.kind, ask.quantity.detail) == ("contact", "friction"):
+            normal = sliding.unknowns()["normal"]
+            if normal not in self.along.values:
+                return None
+            value = tidy(sliding.kinetic * self.along.acting[normal] * self.along.values[normal])
+            steps.append(Step(f"Kinetic friction on the {sliding.body} there, its coefficient times the normal force",
+                              (sp.Eq(sp.Symbol(name), sliding.kinetic * normal), sp.Eq(sp.Symbol(name), value))))
+            return value
         unknowns = quantities.KINDS[ask.quantity.kind].unknowns(self.solution, ask)  # what the ask reads
         if len(unknowns) != 1 or not unknowns <= self.along.acting.keys() & self.along.values.keys():
             return None
@@ -224,6 +291,11 @@ class _Kinematics:
         kind, target = ask.quantity.kind, ask.quantity.target
         if kind == "time":
             return found["t"]
+        if kind == "kinetic_energy":
+            symbol = sp.Symbol(name)
+            steps.append(Step("The kinetic energy there follows from the speed found",
+                              ((sp.Eq(symbol, KINETIC),) if symbol != KINETIC else ()) + (sp.Eq(symbol, self.kinetic),)))
+            return self.kinetic
         coordinates, sample = self.solution.coordinates, self.solution._sample
         if kind in ("speed", "distance"):
             if self.turning:
@@ -238,9 +310,11 @@ class _Kinematics:
         if kind == "turns":
             steps.append(Step(_WORDS[kind].format(target=target),
                               (sp.Eq(symbol, factor * symbols[key] / (2 * sp.pi)), sp.Eq(symbol, tidy(value / (2 * sp.pi))))))
-        elif factor != 1 or target != self.leader:
-            steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, factor * symbols[key]),
-                                                                   sp.Eq(symbol, value))))
+        elif kind == "angular_velocity" and self.kinetic is not None and target == self.leader:  # omega = v/R written
+            steps.append(Step(_WORDS[kind].format(target=target), (sp.Eq(symbol, value),)))
+        elif factor != 1 or target != self.leader:  # v = v said nothing: the constraints tie them one to one
+            tie = (sp.Eq(symbol, factor * symbols[key]),) if symbol != factor * symbols[key] else ()
+            steps.append(Step(_WORDS[kind].format(target=target), (*tie, sp.Eq(symbol, value))))
         return value
 
 

@@ -8,6 +8,7 @@ quantity writes and the documents typeset (derive.publishing.worksheets).
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import sympy as sp
@@ -28,3 +29,18 @@ class Step:
     role: str = ""
     body: str = ""
     sentences: tuple = ()
+
+
+def renamed(step: Step, change: dict) -> Step:
+    """The step with symbols renamed (`change`) in its equations and in the math of its sentences: the
+    engine's f^block as the student's route prints it.
+
+    >>> f, g = sp.symbols("f g")
+    >>> renamed(Step("Solve", (sp.Eq(f, 2),)), {f: g}).equations
+    (Eq(g, 2),)
+    """
+    if not change:
+        return step
+    sentences = tuple(dataclasses.replace(s, pieces=tuple(p.xreplace(change) if isinstance(p, sp.Basic) else p
+                                                          for p in s.pieces)) for s in step.sentences)
+    return dataclasses.replace(step, equations=tuple(e.xreplace(change) for e in step.equations), sentences=sentences)
