@@ -155,9 +155,17 @@ class Derivation:
         proven invertible at this precision."""
         key = ("balls", tuple(sorted(state.items(), key=lambda item: str(item[0]))), bits)
         if key not in self._cache:
-            residuals = sp.Matrix([e.lhs - e.rhs for e in self._equations_at(state)])
-            matrix = residuals.jacobian(self.unknowns)
-            rhs = -residuals.xreplace({u: 0 for u in self.unknowns})
+            # The balances' coefficients taken in general, once, and the state put into them: the
+            # Jacobian of the balances with the numbers in (a cord's geometry at sample angles) took
+            # most of a double wedge's check.
+            if "balances" not in self._cache:
+                balances = sp.Matrix([e.lhs - e.rhs for e in self.balances])
+                self._cache["balances"] = (balances.jacobian(self.unknowns),
+                                           -balances.xreplace({u: 0 for u in self.unknowns}))
+            coefficients, free = self._cache["balances"]
+            rates = sp.Matrix([e.lhs - e.rhs for e in self._rates_at(state)])
+            matrix = coefficients.xreplace(state).col_join(rates.jacobian(self.unknowns))
+            rhs = free.xreplace(state).col_join(-rates.xreplace({u: 0 for u in self.unknowns}))
             if (matrix.free_symbols | rhs.free_symbols) or not all(balls.mapped(e) for e in [*matrix, *rhs]):
                 raise ValueError("the equations at this state are not all numbers with balls")
             saved, ctx.prec = ctx.prec, bits
@@ -173,13 +181,23 @@ class Derivation:
 
     def _equations_at(self, state: dict[sp.Symbol, sp.Expr]) -> list[sp.Eq]:
         """The equations with `state` put in, in the cheapest form the state allows."""
+        balances = self.at_rest_equations[:len(self.balances)] if self._at_rest(state) else self.balances
+        return [e.xreplace(state) for e in balances] + self._rates_at(state)
+
+    def _at_rest(self, state: dict[sp.Symbol, sp.Expr]) -> bool:
         coords = self.coords.all if self.coords is not None else []
-        if coords and all(state.get(c.u, None) == 0 for c in coords):
-            return [e.xreplace(state) for e in self.at_rest_equations]
+        return bool(coords) and all(state.get(c.u, None) == 0 for c in coords)
+
+    def _rates_at(self, state: dict[sp.Symbol, sp.Expr]) -> list[sp.Eq]:
+        """The rows dv/dt = 0 with `state` put in, in the cheapest form the state allows: at rest
+        (at_rest_equations), in a full state (one derivative along the motion), else in general."""
+        coords = self.coords.all if self.coords is not None else []
+        if self._at_rest(state):
+            return [e.xreplace(state) for e in self.at_rest_equations[len(self.balances):]]
         if coords and all(c.q in state and c.u in state for c in coords) \
                 and all(self._linear(i) for i in range(len(self.rates))):
-            return [e.xreplace(state) for e in self.balances] + self._rates_along(state)
-        return [e.xreplace(state) for e in self.equations]
+            return self._rates_along(state)
+        return [e.xreplace(state) for e in self.equations[len(self.balances):]]
 
     def _slopes(self, i: int) -> list[tuple[sp.Expr, sp.Symbol]]:
         """(dv/du_j, a_j) for the i-th rate v."""
