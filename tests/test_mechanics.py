@@ -68,12 +68,18 @@ def test_routes_agree_on_every_unknown(scene):
         assert sp.simplify(a.at(state)[unknown] - b.at(state)[unknown]) == 0, unknown
 
 
+def free_ball_scene():
+    """A ball nothing holds: balances and no constraint's rows."""
+    return Scene({"ball": Body("ball", "custom", M, {}, I)}, (), Gravity(g))
+
+
 @pytest.mark.parametrize("route", [lagrange, newton_euler])
 @pytest.mark.parametrize("moving", [False, True])
-def test_balls_hold_the_exact_solution_at_a_state(route, moving):
+@pytest.mark.parametrize("scene", [pendulum_scene(), free_ball_scene()], ids=["pinned", "free"])
+def test_balls_hold_the_exact_solution_at_a_state(route, moving, scene):
     """balls_at (the balances' coefficients taken in general, then the state put in) holds every unknown
-    of the exact solution at a state that gives every symbol a number, at rest and moving."""
-    scene = pendulum_scene()
+    of the exact solution at a state that gives every symbol a number, at rest and moving, with and
+    without a constraint's rows."""
     coords = Coordinates(scene)
     derivation = route.derive(scene)
     state = {**{c.q: sp.Rational(k + 1, 5) for k, c in enumerate(coords.all)},

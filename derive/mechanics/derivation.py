@@ -159,13 +159,11 @@ class Derivation:
             # Jacobian of the balances with the numbers in (a cord's geometry at sample angles) took
             # most of a double wedge's check.
             if "balances" not in self._cache:
-                balances = sp.Matrix([e.lhs - e.rhs for e in self.balances])
-                self._cache["balances"] = (balances.jacobian(self.unknowns),
-                                           -balances.xreplace({u: 0 for u in self.unknowns}))
+                self._cache["balances"] = _linear_form(self.balances, self.unknowns)
             coefficients, free = self._cache["balances"]
-            rates = sp.Matrix([e.lhs - e.rhs for e in self._rates_at(state)])
-            matrix = coefficients.xreplace(state).col_join(rates.jacobian(self.unknowns))
-            rhs = free.xreplace(state).col_join(-rates.xreplace({u: 0 for u in self.unknowns}))
+            rates, rates_free = _linear_form(self._rates_at(state), self.unknowns)
+            matrix = coefficients.xreplace(state).col_join(rates)
+            rhs = free.xreplace(state).col_join(rates_free)
             if (matrix.free_symbols | rhs.free_symbols) or not all(balls.mapped(e) for e in [*matrix, *rhs]):
                 raise ValueError("the equations at this state are not all numbers with balls")
             saved, ctx.prec = ctx.prec, bits
@@ -257,6 +255,20 @@ class Derivation:
         return Step(f"Solving {where}", tuple(sp.Eq(u, solved[u]) for u in unknowns), role="solve")
 
 
+def _linear_form(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> tuple[sp.Matrix, sp.Matrix]:
+    """(A, b) of equations linear in the unknowns, A u = b: the Jacobian and what is left at zero
+    (no rows for no equations: a body no constraint holds).
+
+    >>> a, T = sp.symbols("a T")
+    >>> _linear_form([sp.Eq(2*a, T - 2)], [a, T]), _linear_form([], [a, T])[0].shape
+    ((Matrix([[2, -1]]), Matrix([[-2]])), (0, 2))
+    """
+    if not equations:
+        return sp.zeros(0, len(unknowns)), sp.zeros(0, 1)
+    residuals = sp.Matrix([e.lhs - e.rhs for e in equations])
+    return residuals.jacobian(unknowns), -residuals.xreplace({u: 0 for u in unknowns})
+
+
 def worth_showing(equations) -> tuple[sp.Eq, ...]:
     """The constraint equations a worked solution writes out: one that only says a coordinate's
     rate or acceleration is zero (an axle holding a center in place) is said in the step's words
@@ -301,9 +313,7 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol], placed: tupl
     """
     # Linear in the unknowns: the matrix is the Jacobian and the rest is what is left at zero (no
     # expansion of the general equations, which a cord's exact geometry makes long).
-    residuals = sp.Matrix([e.lhs - e.rhs for e in equations])
-    matrix = residuals.jacobian(unknowns)
-    rhs = -residuals.xreplace({u: 0 for u in unknowns})
+    matrix, rhs = _linear_form(equations, unknowns)
     if matrix.free_symbols & set(unknowns):
         raise ValueError("the equations are not linear in the accelerations and forces")
     if matrix.shape[0] != matrix.shape[1]:
