@@ -4,6 +4,7 @@ import math
 import numpy as np
 import pytest
 import sympy as sp
+from flint import arb, ctx
 from scipy.integrate import solve_ivp
 
 from derive.mechanics import lagrange, newton_euler
@@ -65,6 +66,30 @@ def test_routes_agree_on_every_unknown(scene):
                                                             enumerate(Coordinates(scene).all)}}
     for unknown in a.unknowns:
         assert sp.simplify(a.at(state)[unknown] - b.at(state)[unknown]) == 0, unknown
+
+
+def free_ball_scene():
+    """A ball nothing holds: balances and no constraint's rows."""
+    return Scene({"ball": Body("ball", "custom", M, {}, I)}, (), Gravity(g))
+
+
+@pytest.mark.parametrize("route", [lagrange, newton_euler])
+@pytest.mark.parametrize("moving", [False, True])
+@pytest.mark.parametrize("scene", [pendulum_scene(), free_ball_scene()], ids=["pinned", "free"])
+def test_balls_hold_the_exact_solution_at_a_state(route, moving, scene):
+    """balls_at (the balances' coefficients taken in general, then the state put in) holds every unknown
+    of the exact solution at a state that gives every symbol a number, at rest and moving, with and
+    without a constraint's rows."""
+    coords = Coordinates(scene)
+    derivation = route.derive(scene)
+    state = {**{c.q: sp.Rational(k + 1, 5) for k, c in enumerate(coords.all)},
+             **{c.u: sp.Rational(k + 2, 3) if moving else 0 for k, c in enumerate(coords.all)},
+             M: 2, g: sp.Rational(981, 100), d: sp.Rational(1, 2), I: sp.Rational(1, 7)}
+    balls = derivation.balls_at(state)
+    for unknown in derivation.unknowns:
+        with ctx.workprec(320):
+            exact = arb(str(sp.N(derivation.at(state).raw[unknown].xreplace(state), 90)))
+        assert balls[unknown].rad() < 1e-60 and balls[unknown].overlaps(exact), unknown
 
 
 def test_pendulum_equation_of_motion_uses_the_parallel_axis():

@@ -43,3 +43,26 @@ def test_a_float_node_is_not_answered_from_an_exact_one():
     floating = sp.trigsimp(2.0 * sp.cos(x) ** 2 - 1)
     assert exact == sp.cos(2 * x)
     assert floating.has(sp.Float)
+
+
+def test_sympys_simplification_factors_through_the_memo():
+    for module in trig_memo.FACTORING:
+        assert module.factor.remembered
+        assert not getattr(module.factor.__wrapped__, "remembered", False)
+    assert not getattr(sp.factor, "remembered", False)  # derive's own calls are sympy's
+
+
+def test_a_remembered_factoring_is_sympys_and_stays_so_when_asked_again():
+    remembered = trig_memo.FACTORING[0].factor
+    for expr in [R ** 2 - 2 * R * r + r ** 2, (x ** 2 - y ** 2) * sp.cos(x) ** 2 - (x ** 2 - y ** 2) * sp.sin(x) ** 2,
+                 sp.sqrt(R ** 2 - r ** 2) * (R ** 3 - r ** 3) / (R - r)]:
+        assert remembered(expr) == sp.factor(expr)
+        assert remembered(expr) == sp.factor(expr)  # the second time from the memo
+    assert remembered(x ** 2 - 2, extension=sp.sqrt(2)) == sp.factor(x ** 2 - 2, extension=sp.sqrt(2))
+    assert remembered(x ** 2 - 2) == x ** 2 - 2  # the options are part of the key
+
+
+def test_a_float_expression_is_not_factored_from_an_exact_one():
+    remembered = trig_memo.FACTORING[0].factor
+    assert remembered(2 * x ** 2 - 2) == sp.factor(2 * x ** 2 - 2)
+    assert remembered(2.0 * x ** 2 - 2).has(sp.Float)

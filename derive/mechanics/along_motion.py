@@ -148,17 +148,18 @@ def along_motion(scene: Scene, coords: Coordinates, newton: Derivation, sample: 
         steps.append(Step(_ties(scene), tuple(relations), role="equations"))
     symbols = list(dict.fromkeys(names.values()))
     wanted = set(needed) & set(flipped)
-    extra = _across(moving, scene, loads, flipped, rest, sample, names)
+    # The balances across the motion, body by body as they are looked for: where the equations along
+    # it close (a cord over a pulley), none is written (a double wedge's took a tenth of its derivation).
+    extra = _Offered(_across(moving, scene, loads, flipped, rest, sample, names))
     while True:  # the balances across the motion, where the equations along it leave a force open
         forces = sorted({u for e in equations for u in e.free_symbols if u in flipped}, key=str)
         short, pending = len(symbols) + len(forces) - len(equations), wanted - set(forces)
         if short <= 0 and not pending:
             break
-        step = next((x for x in extra if _forces(x, flipped) & pending), None) or \
-            next((x for x in extra if _forces(x, flipped) <= set(forces) and len(x.equations) <= short), None)
+        step = extra.take(lambda x: _forces(x, flipped) & pending) or \
+            extra.take(lambda x: _forces(x, flipped) <= set(forces) and len(x.equations) <= short)
         if step is None:
             raise NotAlongALine("the balances along and across the motion leave a force open")
-        extra.remove(step)
         equations += step.equations
         steps.append(step)
     unknowns = symbols + forces
@@ -271,10 +272,34 @@ def _forces(step: Step, forces) -> set[sp.Symbol]:
     return {s for e in step.equations for s in e.free_symbols if s in forces}
 
 
-def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[Step]:
+class _Offered:
+    """Steps drawn from an iterator only as far as a search needs them, in its order; each taken once.
+
+    >>> offered = _Offered(iter([1, 2, 3, 4]))
+    >>> offered.take(lambda x: x % 2 == 0), offered.take(lambda x: x > 0), offered.take(lambda x: x == 2)
+    (2, 1, None)
+    """
+
+    def __init__(self, steps):
+        self._steps, self._drawn = steps, []
+
+    def take(self, test):
+        """The first step, in the iterator's order, that passes `test` (removed), or None."""
+        found = next((x for x in self._drawn if test(x)), None)
+        while found is None:
+            x = next(self._steps, None)
+            if x is None:
+                return None
+            self._drawn.append(x)
+            found = x if test(x) else None
+        self._drawn.remove(found)
+        return found
+
+
+def _across(moving, scene, loads, flipped, rest, sample, names: dict):
     """Newton's second law across the motion for each body a constraint force acts on: at rest its
-    center has no acceleration across its path (nor any, where it stays put)."""
-    steps = []
+    center has no acceleration across its path (nor any, where it stays put). A generator: each
+    body's balances are written when a search gets to them."""
     for m in moving:
         on_body = [oriented(f, flipped, rest) for f in loads if f.body == m.name]
         if not any(isinstance(f, AppliedForce) and f.force.free_symbols & set(flipped) for f in on_body):
@@ -292,8 +317,9 @@ def _across(moving, scene, loads, flipped, rest, sample, names: dict) -> list[St
         else:
             balance = tuple(sp.Eq(0, component(on_body, axis, sample)) for axis in (sp.Matrix([1, 0]), sp.Matrix([0, 1])))
             text = f"The {m.name}'s center stays put: the forces on it balance"
-        steps.append(Step(text, tuple(b for b in balance if isinstance(b, sp.Eq)), role="equations", body=m.name))
-    return [s for s in steps if s.equations]
+        step = Step(text, tuple(b for b in balance if isinstance(b, sp.Eq)), role="equations", body=m.name)
+        if step.equations:
+            yield step
 
 
 def _sliding(scene: Scene) -> bool:

@@ -155,9 +155,15 @@ class Derivation:
         proven invertible at this precision."""
         key = ("balls", tuple(sorted(state.items(), key=lambda item: str(item[0]))), bits)
         if key not in self._cache:
-            residuals = sp.Matrix([e.lhs - e.rhs for e in self._equations_at(state)])
-            matrix = residuals.jacobian(self.unknowns)
-            rhs = -residuals.xreplace({u: 0 for u in self.unknowns})
+            # The balances' coefficients taken in general, once, and the state put into them: the
+            # Jacobian of the balances with the numbers in (a cord's geometry at sample angles) took
+            # most of a double wedge's check.
+            if "balances" not in self._cache:
+                self._cache["balances"] = _linear_form(self.balances, self.unknowns)
+            coefficients, free = self._cache["balances"]
+            rates, rates_free = _linear_form(self._rates_at(state), self.unknowns)
+            matrix = coefficients.xreplace(state).col_join(rates)
+            rhs = free.xreplace(state).col_join(rates_free)
             if (matrix.free_symbols | rhs.free_symbols) or not all(balls.mapped(e) for e in [*matrix, *rhs]):
                 raise ValueError("the equations at this state are not all numbers with balls")
             saved, ctx.prec = ctx.prec, bits
@@ -173,13 +179,23 @@ class Derivation:
 
     def _equations_at(self, state: dict[sp.Symbol, sp.Expr]) -> list[sp.Eq]:
         """The equations with `state` put in, in the cheapest form the state allows."""
+        balances = self.at_rest_equations[:len(self.balances)] if self._at_rest(state) else self.balances
+        return [e.xreplace(state) for e in balances] + self._rates_at(state)
+
+    def _at_rest(self, state: dict[sp.Symbol, sp.Expr]) -> bool:
         coords = self.coords.all if self.coords is not None else []
-        if coords and all(state.get(c.u, None) == 0 for c in coords):
-            return [e.xreplace(state) for e in self.at_rest_equations]
+        return bool(coords) and all(state.get(c.u, None) == 0 for c in coords)
+
+    def _rates_at(self, state: dict[sp.Symbol, sp.Expr]) -> list[sp.Eq]:
+        """The rows dv/dt = 0 with `state` put in, in the cheapest form the state allows: at rest
+        (at_rest_equations), in a full state (one derivative along the motion), else in general."""
+        coords = self.coords.all if self.coords is not None else []
+        if self._at_rest(state):
+            return [e.xreplace(state) for e in self.at_rest_equations[len(self.balances):]]
         if coords and all(c.q in state and c.u in state for c in coords) \
                 and all(self._linear(i) for i in range(len(self.rates))):
-            return [e.xreplace(state) for e in self.balances] + self._rates_along(state)
-        return [e.xreplace(state) for e in self.equations]
+            return self._rates_along(state)
+        return [e.xreplace(state) for e in self.equations[len(self.balances):]]
 
     def _slopes(self, i: int) -> list[tuple[sp.Expr, sp.Symbol]]:
         """(dv/du_j, a_j) for the i-th rate v."""
@@ -239,6 +255,20 @@ class Derivation:
         return Step(f"Solving {where}", tuple(sp.Eq(u, solved[u]) for u in unknowns), role="solve")
 
 
+def _linear_form(equations: list[sp.Eq], unknowns: list[sp.Symbol]) -> tuple[sp.Matrix, sp.Matrix]:
+    """(A, b) of equations linear in the unknowns, A u = b: the Jacobian and what is left at zero
+    (no rows for no equations: a body no constraint holds).
+
+    >>> a, T = sp.symbols("a T")
+    >>> _linear_form([sp.Eq(2*a, T - 2)], [a, T]), _linear_form([], [a, T])[0].shape
+    ((Matrix([[2, -1]]), Matrix([[-2]])), (0, 2))
+    """
+    if not equations:
+        return sp.zeros(0, len(unknowns)), sp.zeros(0, 1)
+    residuals = sp.Matrix([e.lhs - e.rhs for e in equations])
+    return residuals.jacobian(unknowns), -residuals.xreplace({u: 0 for u in unknowns})
+
+
 def worth_showing(equations) -> tuple[sp.Eq, ...]:
     """The constraint equations a worked solution writes out: one that only says a coordinate's
     rate or acceleration is zero (an axle holding a center in place) is said in the step's words
@@ -283,9 +313,7 @@ def solve_linear(equations: list[sp.Eq], unknowns: list[sp.Symbol], placed: tupl
     """
     # Linear in the unknowns: the matrix is the Jacobian and the rest is what is left at zero (no
     # expansion of the general equations, which a cord's exact geometry makes long).
-    residuals = sp.Matrix([e.lhs - e.rhs for e in equations])
-    matrix = residuals.jacobian(unknowns)
-    rhs = -residuals.xreplace({u: 0 for u in unknowns})
+    matrix, rhs = _linear_form(equations, unknowns)
     if matrix.free_symbols & set(unknowns):
         raise ValueError("the equations are not linear in the accelerations and forces")
     if matrix.shape[0] != matrix.shape[1]:
