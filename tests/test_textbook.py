@@ -13,7 +13,7 @@ from types import SimpleNamespace
 import pytest
 import sympy as sp
 
-from conftest import derived, textbook_files
+from conftest import derived, textbook, textbook_files
 from derive.numbers import numeric
 from derive.publishing import report
 
@@ -146,6 +146,13 @@ EXPECTED = {
         "tauW": lambda s: -s.M * s.g * s.L / 2,
         "tau": lambda s: s.F * s.L * sp.sin(s.phi) - s.M * s.g * s.L / 2,
         "alpha": lambda s: (s.F * s.L * sp.sin(s.phi) - s.M * s.g * s.L / 2) / (s.M * s.L**2 / 3),
+    },
+    # Halliday, Resnick & Walker, Fundamentals of Physics 10th ed., ch. 11, sec. 11-12 (a gyroscope's precession,
+    # Omega = M_tot g r/(I omega); a hoop of mass M on a uniform axle of mass m and length D pivoted at its far end,
+    # so r = (M D + m D/2)/(M + m): Omega = (M + m/2) g D/(M R^2 omega)). A newcomer's file (stop 41), whose key had
+    # printed the root of the quadratic unsimplified at the level axle.
+    "bicycle_wheel_gyroscope": {
+        "Omega": lambda s: (s.M + s.m / 2) * s.g * s.D / (s.M * s.R**2 * s.omega),
     },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
@@ -1237,3 +1244,11 @@ def test_textbook_closed_form(path):
     # what a worked solution prints of them: sentences a student can read
     assert all(c["reading"][:1].isupper() and c["reading"].endswith(".") and "_vs_" not in c["reading"]
                for c in checks.values()), checks
+
+
+def test_a_level_axles_precession_is_the_linear_conditions_root_with_no_square_root():
+    """The bicycle wheel's key had printed 2 D g (M + m)(2M + m)/(2 M^2 R^2 omega + ... + sqrt(2 (M + m)(...)))
+    where the level axle makes the top's condition linear: Omega = m g l/(I3 omega) (Halliday ch. 11)."""
+    answer = derived(textbook("bicycle_wheel_gyroscope")).expression("Omega")
+    assert not answer.atoms(sp.Pow) & {p for p in answer.atoms(sp.Pow) if p.exp == sp.Rational(1, 2)}, answer
+    assert sp.count_ops(answer) <= 9, answer  # D g (2M + m)/(2 M R^2 omega)

@@ -105,8 +105,8 @@ class _Simulation:
         symbols = [p.symbol for p in problem.parameters.values()]
         for body in solution.scene.bodies.values():
             symbols += [body.mass, *body.sizes.values()]
-        for held in solution.scene.pivot_points.values():
-            symbols += [held.tilt, held.spin]
+        for held in solution.scene.pivot_points.values():  # a custom body's transverse moment, open where no ask needs it
+            symbols += [held.tilt, held.spin, *(held.inertia or ())]
         for held in solution.scene.bearings.values():
             symbols += [*(held.inertia or ())]  # a custom rotor's transverse moment, open where no ask needs it
         self.point = sample_points(problem, sp.Add(*symbols), count=1)[0]

@@ -192,6 +192,9 @@ def roots(tensor, mass, g, distance, spin, tilt, route: str = "lagrange") -> tup
     cosine, leaning = sp.Symbol("cos_tilt", positive=True), sp.Symbol("theta_tilt", positive=True)
     condition = precession_condition(tensor, mass, g, distance, spin, leaning, route).subs(sp.cos(leaning), cosine)
     p, q = condition.coeff(OMEGA, 1), condition.coeff(OMEGA, 0)  # p = -I3 w / (I1 cos), q = m g l / (I1 cos)
+    level = tidy(-q / p) if sp.cos(tilt) == 0 else None  # a level axis: the condition is linear, Omega = -q/p
+    if level is not None and not level.has(cosine, leaning):  # the cosines cancelled: slow's limit, in its own form
+        return level, None
     root = sp.sqrt(tidy(p**2 - 4 * q))
     slow = tidy(2 * q / (-p + root))  # = (-p - root)/2, without the cancellation
     fast = tidy((-p + root) / 2)
