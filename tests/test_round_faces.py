@@ -78,3 +78,33 @@ question: |
     g, theta = problem.parameters["g"].symbol, problem.parameters["theta"].symbol
     answer = Solution(problem).expression("a")
     assert sp.simplify(answer - g * sp.sin(theta) * (8 - sp.cos(theta)) / (2 * (6 - sp.cos(theta)))) == 0
+
+
+def test_an_annulus_set_to_roll_is_told_how_to_state_it(tmp_path):
+    """A newcomer's pipe (an annulus) set to roll down a slope was refused "a annulus has no radius to roll on",
+    and `radius:` then drew "did you mean 'outer_radius'?", which it had: now an engine limit that names the way
+    to state it (shape: custom, its outer radius, its moment from `derive inertia`)."""
+    from conftest import refused
+
+    text = """
+id: pipe
+title: A pipe rolls
+parameters:
+  M: {meaning: mass of the pipe, unit: kg, range: [1, 2]}
+  R1: {meaning: inner radius, unit: m, range: [0.05, 0.08]}
+  R2: {meaning: outer radius, unit: m, range: [0.1, 0.2]}
+  g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
+scene:
+  surfaces:
+    ramp: {incline: {angle: 0.3, height: 1}}
+  bodies:
+    pipe: {shape: annulus, mass: M, inner_radius: R1, outer_radius: R2, on: ramp, contact: rolling}
+  loads:
+    - gravity: g
+ask:
+  a: {meaning: acceleration, of: pipe.acceleration.down_incline, unit: m/s^2}
+question: A pipe rolls.
+"""
+    error = refused(tmp_path, text, "scene.bodies.pipe.contact", exit_code=1)
+    assert "derive cannot yet roll an annulus on its outer radius" in error and "shape: custom" in error
+    assert "derive inertia annulus" in error

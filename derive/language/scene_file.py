@@ -94,6 +94,12 @@ def _contact(reader: Reader, body: Body, spec: dict, surfaces: dict, field: str)
     kind = spec.get("contact", "rolling" if "radius" in body.sizes else "sliding")
     if kind not in ("rolling", "sliding"):
         raise reader.fail(f"{field}.contact", "expected rolling or sliding")
+    if kind == "rolling" and "outer_radius" in body.sizes:  # its contact's geometry reads a radius, which it has not
+        raise EngineLimit(f"{reader.path}: {field}.contact",
+                          f"roll {'an' if body.shape[0] in 'aeiou' else 'a'} {body.shape.replace('_', ' ')} on its "
+                          "outer radius; state it as shape: custom with radius: "
+                          "(its outer radius) and inertia: (its moment about its center, `derive inertia "
+                          f"{body.shape}` gives it)")
     if kind == "rolling" and "radius" not in body.sizes:
         raise reader.fail(f"{field}.contact", f"a {body.shape} has no radius to roll on")
     static, kinetic = contact.coefficients(reader, spec, field)
