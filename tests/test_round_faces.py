@@ -96,7 +96,7 @@ parameters:
   g: {meaning: gravitational acceleration, unit: m/s^2, value: 9.81}
 scene:
   surfaces:
-    ramp: {incline: {angle: 0.3, height: 1}}
+    ramp: {incline: {angle: 0.3, height: 5*R2}}
   bodies:
     pipe: {shape: annulus, mass: M, inner_radius: R1, outer_radius: R2, on: ramp, contact: rolling}
   loads:
