@@ -455,7 +455,16 @@ def test_solve_prints_the_answers_as_the_documents_do(derive):
     text = derive("solve", "rod_tilted_on_shaft").stdout
     answers = text.split("Answers:")[1].split("Checks")[0]
     assert "acos" not in answers and "│" not in answers and "π" in answers, answers
-    assert "printed ℓ for L (length of the rod)" in answers and "M⋅ℓ" in answers and "L ⋅M" not in answers
+    assert "Printed here: ℓ is the length of the rod (the file's L)" in text and "M⋅ℓ" in answers and "L ⋅M" not in answers
+
+
+def test_solve_prints_the_students_route_in_the_documents_letters(derive):
+    """A door's width L beside the angular momentum L: the terminal's student route printed L = L m v/2;
+    now the width is the script l there too, and the report says so before the solution."""
+    text = derive("solve", str(ROOT / "tests" / "textbook" / "bullet_into_door.yaml")).stdout
+    route = text.split("The solution, as a textbook writes it")[1].split("Answers:")[0]
+    assert text.index("Printed here: ℓ is the width of the door (the file's L)") < text.index("The solution")
+    assert "ℓ⋅m⋅v" in route and "L⋅m⋅v" not in route
 
 
 def test_solve_writes_a_greek_letter_named_in_a_steps_words_as_the_letter(derive):

@@ -558,3 +558,18 @@ def test_a_pendulum_of_parts_takes_each_parts_moment_about_the_pivot_and_the_per
     assert isinstance(parts, sp.Add) and len(parts.args) == 4
     assert _same(parts.doit(), m * L**2 / 12 + m * (L / 2) ** 2 + M * r**2 / 2 + M * (L + r) ** 2)
     assert str(steps[-1].equations[-1].lhs) == "P"
+
+
+def test_an_impact_about_an_axle_gives_the_axles_impulse_by_the_change_of_momentum():
+    """A bullet into a door (Young & Freedman ch. 10, "crime bust"), asked the hinge's impulse too: the
+    route about the axle had given way to the impulse equations in components; now one more step, the
+    only outside impulse is the change of the bodies' momentum (Serway & Jewett ch. 9)."""
+    from conftest import derived, textbook
+
+    solution = derived(textbook("bullet_into_door"))
+    (section,) = solution.student_steps.values()
+    last = section[-1]
+    assert last.text.startswith("The axle's impulse is the only one from outside") and len(last.equations) == 1
+    M, m, v = (solution.problem.parameters[n].symbol for n in ("M", "m", "v"))
+    assert sp.simplify(last.equations[0].rhs + M * m * v / (4 * M + 3 * m)) == 0
+    assert sum(len(s.equations) for s in section) <= 8

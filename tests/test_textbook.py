@@ -154,6 +154,16 @@ EXPECTED = {
     "bicycle_wheel_gyroscope": {
         "Omega": lambda s: (s.M + s.m / 2) * s.g * s.D / (s.M * s.R**2 * s.omega),
     },
+    # Young & Freedman, University Physics 14th ed., ch. 10, sec. 10.6, "Angular momentum in a crime bust" (a bullet
+    # m at v embeds at the center of a door of width L, mass M, hinged at one edge: m v L/2 = (M L^2/3 + m L^2/4)
+    # omega); the hinge's impulse on the door, the change of the momentum (Serway & Jewett ch. 9):
+    # J = (M + m) omega L/2 - m v, along the bullet's line. A newcomer's file (stop 41).
+    "bullet_into_door": {
+        "omega": lambda s: s.m * s.v * s.L / 2 / (s.M * s.L**2 / 3 + s.m * s.L**2 / 4),
+        "K0": lambda s: s.m * s.v**2 / 2,
+        "K": lambda s: (s.M * s.L**2 / 3 + s.m * s.L**2 / 4) / 2 * (s.m * s.v * s.L / 2 / (s.M * s.L**2 / 3 + s.m * s.L**2 / 4))**2,
+        "J": lambda s: (s.M + s.m) * s.L / 2 * s.m * s.v * s.L / 2 / (s.M * s.L**2 / 3 + s.m * s.L**2 / 4) - s.m * s.v,
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),

@@ -50,10 +50,11 @@ class AboutAxle:
 
 
 def about_axle(scene: Scene, coords: Coordinates, before: dict, after: dict, sample: Callable[[sp.Expr], float],
-               energy: bool = False) -> AboutAxle:
+               energy: bool = False, impulse: tuple[str, ...] = ()) -> AboutAxle:
     """The route for an impact after which the bodies of `scene` (with the joint the impact made) turn
     together about one axle fixed to the ground; `before` and `after` the states' values (the engine's,
-    `after` only for the sense of the turn); `energy`: the kinetic energy before and after too."""
+    `after` only for the sense of the turn); `energy`: the kinetic energy before and after too;
+    `impulse`: the axle's impulse's components ("x", "y") too, the change of the bodies' momentum."""
     grounded = outside(scene)
     if not grounded or any(not isinstance(p, Pin) for p in grounded):
         raise NotAlongALine("no axle fixed to the ground, or another joint to it")
@@ -91,7 +92,22 @@ def about_axle(scene: Scene, coords: Coordinates, before: dict, after: dict, sam
     found["omega"] = result
     if energy:
         steps.append(_energy_taken(scene, coords, before, {**at, **values}, found))
+    if impulse:
+        steps.append(_axle_impulse(scene, coords, before, values, found, impulse))
     return AboutAxle(tuple(steps), values, found)
+
+
+def _axle_impulse(scene: Scene, coords: Coordinates, before: dict, after: dict, found: dict, axes: tuple[str, ...]) -> Step:
+    """The axle's impulse, the one from outside: the change of the bodies' momentum, J = p' - p, in the
+    `axes` asked (Serway & Jewett ch. 9, impulse and momentum), each kept in `found` as J_x, J_y."""
+    equations = []
+    for axis in axes:
+        change = sum((b.mass * (after[coords.of(b.name, axis).u] - before[coords.of(b.name, axis).u])
+                      for b in scene.bodies.values()), sp.Integer(0))
+        found[f"J_{axis}"] = tidy(change)
+        equations.append(sp.Eq(sp.Symbol(f"J_{axis}"), found[f"J_{axis}"]))
+    return Step("The axle's impulse is the only one from outside the bodies, so it is the change of their momentum, "
+                "just after less just before, along " + " and ".join(axes), tuple(equations))
 
 
 def about_center_of_mass(scene: Scene, coords: Coordinates, before: dict, after: dict,

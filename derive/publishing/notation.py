@@ -25,11 +25,12 @@ is V); any other clash it makes is refused, naming its field (`named`).
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import sympy as sp
 
 from derive.text.latex import symbol_latex
+from derive.text.steps import renamed as renamed_step
 from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, KINETIC, LAGRANGIAN, PERIOD, POTENTIAL
 
 #: The engine's symbols of a fixed meaning, and the asks (kind, detail; None: any detail) that mean it.
@@ -147,10 +148,7 @@ def renamed(steps: Mapping[str, list], change: Mapping[sp.Symbol, sp.Symbol]) ->
     """The steps with symbols replaced (`change`), in their equations and their sentences' math;
     a step nothing changes is the same object (a free-body diagram is found by its step's id)."""
     def one(step):
-        if not step_symbols([step]) & set(change):
-            return step
-        return replace(step, equations=tuple(e.xreplace(change) for e in step.equations),
-                       sentences=tuple(s.with_math(lambda m: m.xreplace(change)) for s in step.sentences))
+        return renamed_step(step, change) if step_symbols([step]) & set(change) else step
     return {route: [one(s) for s in route_steps] for route, route_steps in steps.items()}
 
 

@@ -186,7 +186,11 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
     if windings:
         lines += ["How the cords run (in the placement, at the middle of the ranges):",
                   *(f"  {words(step['text'])}" for step in windings), ""]
-    student = solution.student_steps
+    otherwise = letters.of_document(solution.problem, solution)  # the documents' letters: a length as ell beside L
+    student = notation.renamed(solution.student_steps, otherwise) if solution.student_steps else None
+    renamed = [f"{pretty(otherwise[p.symbol])[0]} is the {p.meaning} (the file's {name}), so that {name} means one "
+               "thing" for name, p in solution.problem.parameters.items() if p.symbol in otherwise]
+    lines += [f"Printed here: {'; '.join(renamed)}.", ""] if renamed else []  # as the documents print it
     if student:
         lines += ["The solution, as a textbook writes it" + ("" if proof else " (the equations of motion by "
                                                             "Lagrange's method and Newton–Euler: --proof)") + ":"]
@@ -206,11 +210,6 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
             lines += indented(pretty(equation))
         lines.append("")
     lines.append("Answers:")
-    otherwise = letters.of_document(solution.problem, solution)
-    renamed = [f"{pretty(otherwise[p.symbol])[0]} for {name} ({p.meaning})"
-               for name, p in solution.problem.parameters.items() if p.symbol in otherwise]
-    if renamed:  # as the documents print it: one letter, one kind of thing
-        lines.append(f"  (printed {', '.join(renamed)}: one letter, one kind of thing)")
     shown_forms = variants.shown_expressions(solution.problem, solution, otherwise)
     for name, a in result["answers"].items():
         unit = units.unicode_unit(a["unit"])

@@ -38,6 +38,7 @@ from derive.mechanics.steady_top import TOP_RATES, as_a_textbook_writes, steady_
 from derive.model.directions import TURNS
 from derive.numbers import intervals, range_forms
 from derive.parts.contact import Contact
+from derive.parts.pin import Pin
 from derive.parts.rims import Rims
 from derive.parts.surfaces import Plane
 from derive.parts.torque import Torque
@@ -269,10 +270,14 @@ def _impact_route(solution) -> TextbookRoute | None:
     if start is None or not start.rates or len(states) != 2 + len(stop) or len(stop) > 1:
         return None
     asks = solution.problem.asks
+    axles = {p.name for p in solution.scene.constraints if isinstance(p, Pin) and p.to is None}
+    impulses = tuple(sorted({a.quantity.detail for a in asks.values() if a.quantity.kind == "impulse"}))
     for ask in asks.values():
         key = (ask.quantity.kind, ask.quantity.detail)
         fits = (ask.state == state.name and key in IMPACT or ask.state == start.name and key == ("kinetic_energy", None)
-                or stop and ask.state == stop[0].name and key in (("time", None), ("angle", None)))
+                or stop and ask.state == stop[0].name and key in (("time", None), ("angle", None))
+                or ask.state == state.name and ask.quantity.kind == "impulse" and ask.quantity.target in axles
+                and len(axles) == 1 and ask.quantity.detail in ("x", "y"))
         if not fits:
             return None
     scene = solution._scene_with(in_place(solution._struck_with(state.name), solution._chain.made[state.name]))
@@ -284,7 +289,8 @@ def _impact_route(solution) -> TextbookRoute | None:
             route = about_each_axle(scene, solution.coordinates, before, made, energy=energy)
             title = "The impact, by the angular impulse about each axle"
         else:
-            route = about_axle(scene, solution.coordinates, before, after, solution._sample, energy=energy)
+            route = about_axle(scene, solution.coordinates, before, after, solution._sample, energy=energy,
+                               impulse=impulses)
             title = "The impact, by the angular momentum about the axle"
     except NotAlongALine:
         try:
@@ -305,8 +311,12 @@ def _impact_route(solution) -> TextbookRoute | None:
             compared.append((name, route.rates[ask.quantity.target], (lambda name=name: solution.signed(name))))
             continue
         key = "K0" if ask.state == start.name else "t" if ask.quantity.kind == "time" else "turn" \
-            if ask.quantity.kind == "angle" else IMPACT[ask.quantity.kind, ask.quantity.detail]
-        value = found[key] if key not in ("V_x", "V_y") else sp.Abs(found[key]) if found[key] != 0 else found[key]
+            if ask.quantity.kind == "angle" else f"J_{ask.quantity.detail}" if ask.quantity.kind == "impulse" \
+            else IMPACT[ask.quantity.kind, ask.quantity.detail]
+        if key not in found:
+            return None  # an axle's impulse where the route is not about the axle
+        value = found[key] if key not in ("V_x", "V_y", "J_x", "J_y") else sp.Abs(found[key]) if found[key] != 0 \
+            else found[key]
         compared.append((name, value, (lambda name=name: solution.expression(name))))
     return TextbookRoute(sections, tuple(compared), "the angular momentum about the point where no outside impulse "
                                                     "has a moment")

@@ -41,6 +41,5 @@ def renamed(step: Step, change: dict) -> Step:
     """
     if not change:
         return step
-    sentences = tuple(dataclasses.replace(s, pieces=tuple(p.xreplace(change) if isinstance(p, sp.Basic) else p
-                                                          for p in s.pieces)) for s in step.sentences)
-    return dataclasses.replace(step, equations=tuple(e.xreplace(change) for e in step.equations), sentences=sentences)
+    return dataclasses.replace(step, equations=tuple(e.xreplace(change) for e in step.equations),
+                               sentences=tuple(s.with_math(lambda m: m.xreplace(change)) for s in step.sentences))
