@@ -573,3 +573,13 @@ def test_an_impact_about_an_axle_gives_the_axles_impulse_by_the_change_of_moment
     M, m, v = (solution.problem.parameters[n].symbol for n in ("M", "m", "v"))
     assert sp.simplify(last.equations[0].rhs + M * m * v / (4 * M + 3 * m)) == 0
     assert sum(len(s.equations) for s in section) <= 8
+
+
+def test_an_impacts_kinetic_energies_take_the_asks_names_and_never_one_that_means_another_thing():
+    """A flywheel and a clutch plate (Young & Freedman ch. 10) asked K1, the kinetic energy before: the route
+    printed K_1 for the energy just after, beside the ask K1; now the energy before is K1 and the one after K_f."""
+    from conftest import derived, textbook
+
+    (section,) = derived(textbook("flywheel_clutch_plate")).student_steps.values()
+    energies = next(step for step in section if step.text.startswith("The kinetic energy just before"))
+    assert [str(e.lhs) for e in energies.equations] == ["K1", "K_f", "K1 - K_f"]

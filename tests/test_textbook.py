@@ -164,6 +164,14 @@ EXPECTED = {
         "K": lambda s: (s.M * s.L**2 / 3 + s.m * s.L**2 / 4) / 2 * (s.m * s.v * s.L / 2 / (s.M * s.L**2 / 3 + s.m * s.L**2 / 4))**2,
         "J": lambda s: (s.M + s.m) * s.L / 2 * s.m * s.v * s.L / 2 / (s.M * s.L**2 / 3 + s.m * s.L**2 / 4) - s.m * s.v,
     },
+    # Young & Freedman, University Physics 14th ed., ch. 10, sec. 10.6, "A rotational collision" (a flywheel and a
+    # clutch plate on one axis pushed together: omega = (I_A omega_A + I_B omega_B)/(I_A + I_B); the energy lost,
+    # I_A I_B (omega_A - omega_B)^2/(2 (I_A + I_B))). A newcomer's file (stop 41), whose K1 is the energy before.
+    "flywheel_clutch_plate": {
+        "w": lambda s: (s.IA * s.wA + s.IB * s.wB) / (s.IA + s.IB),
+        "K1": lambda s: (s.IA * s.wA**2 + s.IB * s.wB**2) / 2,
+        "dK": lambda s: -s.IA * s.IB * (s.wA - s.wB)**2 / (2 * (s.IA + s.IB)),  # the change: a loss
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),

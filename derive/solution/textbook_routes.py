@@ -43,7 +43,8 @@ from derive.parts.rims import Rims
 from derive.parts.surfaces import Plane
 from derive.parts.torque import Torque
 from derive.solution.state_events import in_place
-from derive.text.steps import Step
+from derive.text.latex import symbol_latex
+from derive.text.steps import Step, renamed
 
 
 @dataclass(frozen=True)
@@ -318,8 +319,29 @@ def _impact_route(solution) -> TextbookRoute | None:
         value = found[key] if key not in ("V_x", "V_y", "J_x", "J_y") else sp.Abs(found[key]) if found[key] != 0 \
             else found[key]
         compared.append((name, value, (lambda name=name: solution.expression(name))))
-    return TextbookRoute(sections, tuple(compared), "the angular momentum about the point where no outside impulse "
-                                                    "has a moment")
+    return TextbookRoute(_in_the_asks_names(solution, sections, start.name, state.name), tuple(compared),
+                         "the angular momentum about the point where no outside impulse has a moment")
+
+
+#: The impact routes' own symbols of the kinetic energy just before and just after.
+K_BEFORE, K_AFTER = sp.Symbol("K_0"), sp.Symbol("K_1")
+
+
+def _in_the_asks_names(solution, sections: dict, before: str, after: str) -> dict:
+    """The impact's sections with the kinetic energies under the names the question asks them by (K1 for
+    the energy before), and one that prints as an ask's name does (K_1 beside an ask K1 that is the
+    energy before) as a textbook's K_i, K_f: one symbol, one thing."""
+    change = {}
+    for name, ask in solution.problem.asks.items():
+        if ask.quantity.kind == "kinetic_energy" and ask.state in (before, after):
+            change[K_BEFORE if ask.state == before else K_AFTER] = sp.Symbol(name)
+    asked = {symbol_latex(name) for name in solution.problem.asks}
+    for symbol, other in ((K_BEFORE, "K_i"), (K_AFTER, "K_f")):
+        if symbol not in change and symbol_latex(symbol.name) in asked:
+            change[symbol] = sp.Symbol(other)
+    if len({symbol_latex(s.name) for s in change.values()}) < len(change):
+        return sections  # two asks of one thing: the route's own names
+    return {title: tuple(renamed(step, change) for step in steps) for title, steps in sections.items()}
 
 
 def _braking(solution, scene, route, after) -> tuple | None:
