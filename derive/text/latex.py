@@ -53,8 +53,8 @@ def symbol_latex(name: str) -> str:
     ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
     >>> symbol_latex("dE"), symbol_latex("vx"), symbol_latex("FAx"), symbol_latex("tb"), symbol_latex("angle")
     ('\\Delta E', 'v_{x}', 'F_{\\mathrm{Ax}}', 't_{b}', '\\mathrm{angle}')
-    >>> symbol_latex("omega_1'")
-    "\\omega_{1}'"
+    >>> symbol_latex("omega_1'"), symbol_latex("Delta_K"), symbol_latex("Delta_theta")
+    ("\\omega_{1}'", '\\Delta K', '\\Delta \\theta')
     """
     if name.startswith("\\"):  # a name the engine gives in LaTeX (derivation.LAGRANGIAN)
         return name
@@ -63,6 +63,8 @@ def symbol_latex(name: str) -> str:
         return symbol_latex(bare) + "'" * (len(name) - len(bare))
     base, supers, subs = split_super_sub(name)
     letter = translate(base)
+    if base == "Delta" and len(subs) == 1 and not supers and _changed(subs[0]):  # Delta_K, Delta_theta: a change
+        return rf"\Delta {translate(subs[0])}"
     if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent
         index = _INDEXED.fullmatch(base)
         if base[0].isupper() and base[1:].islower() and len(base) <= 3:  # Rcm, Mp; not a word (Mass)
@@ -83,6 +85,11 @@ def symbol_latex(name: str) -> str:
                         for p in parts)
 
     return letter + (f"_{{{script(subs)}}}" if subs else "") + (f"^{{{script(supers)}}}" if supers else "")
+
+
+def _changed(name: str) -> bool:
+    """Whether `name` is what a Delta before it changes: one Latin letter, or a Greek letter's name."""
+    return len(name) == 1 and name.isalpha() or translate(name) != name
 
 
 def latex_of(expression) -> str:

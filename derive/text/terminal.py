@@ -26,11 +26,15 @@ from derive.text import printed_form
 
 class _Printer(PrettyPrinter):
     """sympy's unicode pretty-printer, with the script letter the documents print as \\ell (a length beside
-    an angular momentum L: derive.publishing.letters) drawn as itself, where sympy writes the name ell."""
+    an angular momentum L: derive.publishing.letters) drawn as itself, where sympy writes the name ell, and
+    a change Delta_K, Delta_theta as the documents print it, ΔK and Δθ (sympy writes Δ with a subscript)."""
 
     def _print_Symbol(self, e, bold_name=False):
         if e.name == "ell" or e.name.startswith(("ell_", "ell^")):
             e = sp.Symbol("\N{SCRIPT SMALL L}" + e.name[3:], **e.assumptions0)
+        change = re.fullmatch(r"Delta_([A-Za-z]|[a-zA-Z]+)", e.name)  # the change of K, of theta: as the documents print it
+        if change and (len(change[1]) == 1 or change[1] in greek_unicode):
+            return prettyForm("\N{GREEK CAPITAL LETTER DELTA}" + greek_unicode.get(change[1], change[1]))
         return super()._print_Symbol(e, bold_name)
 
 
