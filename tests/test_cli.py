@@ -467,6 +467,13 @@ def test_solve_prints_the_students_route_in_the_documents_letters(derive):
     assert "ℓ⋅m⋅v" in route and "L⋅m⋅v" not in route
 
 
+def test_solve_prints_a_change_as_delta_and_its_letter(derive):
+    """A grindstone's angle turned printed as a Delta with the word theta in small subscript letters (a
+    newcomer's report); it is the documents' Delta theta."""
+    text = derive("solve", str(ROOT / "tests" / "textbook" / "grindstone_slowed_by_friction.yaml")).stdout
+    assert "Δθ" in text and "ₜₕₑₜₐ" not in text
+
+
 def test_solve_writes_a_greek_letter_named_in_a_steps_words_as_the_letter(derive):
     """A newcomer read "the bodies turn together about the axle at the rate omega" beside equations that
     print ω: the terminal writes the letter, as the documents set the name as math."""
