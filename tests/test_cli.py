@@ -467,6 +467,14 @@ def test_solve_prints_the_students_route_in_the_documents_letters(derive):
     assert "ℓ⋅m⋅v" in route and "L⋅m⋅v" not in route
 
 
+def test_solve_prints_the_students_route_as_it_reads_over_the_ranges(derive):
+    """A beam held by a cable at phi (Serway & Jewett ex. 12.2): the terminal printed T tan(phi) |cos(phi)|
+    where the documents print T sin(phi) over the ranges (derive.numbers.range_forms)."""
+    text = derive("solve", str(ROOT / "tests" / "textbook" / "beam_cable_person.yaml")).stdout
+    route = text.split("The solution, as a textbook writes it")[1].split("Answers:")[0]
+    assert "│" not in route, route
+
+
 def test_solve_prints_a_change_as_delta_and_its_letter(derive):
     """A grindstone's angle turned printed as a Delta with the word theta in small subscript letters (a
     newcomer's report); it is the documents' Delta theta."""

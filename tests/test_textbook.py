@@ -172,6 +172,14 @@ EXPECTED = {
         "K1": lambda s: (s.IA * s.wA**2 + s.IB * s.wB**2) / 2,
         "dK": lambda s: -s.IA * s.IB * (s.wA - s.wB)**2 / (2 * (s.IA + s.IB)),  # the change: a loss
     },
+    # Serway & Jewett 9th ed., ch. 12, Example 12.2, "Standing on a horizontal beam" (torques about the hinge:
+    # T L sin(phi) = m_b g L/2 + m_p g d; R_x = T cos(phi), R_y = (m_b + m_p) g - T sin(phi)). A newcomer's file
+    # (stop 41), whose worked solution the terminal printed with T tan(phi) |cos(phi)|.
+    "beam_cable_person": {
+        "T": lambda s: s.g * (s.mb * s.L / 2 + s.mp * s.d) / (s.L * sp.sin(s.phi)),
+        "Rx": lambda s: s.g * (s.mb * s.L / 2 + s.mp * s.d) / (s.L * sp.sin(s.phi)) * sp.cos(s.phi),
+        "Ry": lambda s: (s.mb + s.mp) * s.g - s.g * (s.mb * s.L / 2 + s.mp * s.d) / s.L,
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),

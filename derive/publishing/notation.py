@@ -152,6 +152,16 @@ def renamed(steps: Mapping[str, list], change: Mapping[sp.Symbol, sp.Symbol]) ->
     return {route: [one(s) for s in route_steps] for route, route_steps in steps.items()}
 
 
+def printed(problem, solution, steps: Mapping[str, list], letters: Mapping[sp.Symbol, sp.Symbol]) -> dict[str, list]:
+    """The steps as the documents and the terminal print them: their symbols `named`, each expression as it
+    reads over the parameter ranges (derive.numbers.range_forms: T cos(phi), not T tan(phi) |cos(phi)|), in
+    the document's `letters` (derive.publishing.letters: ell beside L_z)."""
+    from derive.numbers import range_forms
+
+    within = range_forms.steps_within(named(problem, solution, steps), range_forms.box(problem))
+    return renamed(within, letters)
+
+
 def named(problem, solution, steps: Mapping[str, list]) -> dict[str, list]:
     """The steps of a worked solution as the document prints them: an engine symbol of ENGINE that an
     ask asks printed by the ask's name, one that a problem file's name takes with another meaning

@@ -187,7 +187,8 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
         lines += ["How the cords run (in the placement, at the middle of the ranges):",
                   *(f"  {words(step['text'])}" for step in windings), ""]
     otherwise = letters.of_document(solution.problem, solution)  # the documents' letters: a length as ell beside L
-    student = notation.renamed(solution.student_steps, otherwise) if solution.student_steps else None
+    student = notation.printed(solution.problem, solution, solution.student_steps, otherwise) \
+        if solution.student_steps else None
     renamed = [f"{pretty(otherwise[p.symbol])[0]} is the {p.meaning} (the file's {name}), so that {name} means one "
                "thing" for name, p in solution.problem.parameters.items() if p.symbol in otherwise]
     lines += [f"Printed here: {'; '.join(renamed)}.", ""] if renamed else []  # as the documents print it

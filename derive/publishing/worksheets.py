@@ -26,7 +26,6 @@ from derive.publishing import (answer_keys, canvas, deriving, distractors, expor
                                notation, output_folder, render)
 from derive.text import prose, typesetting
 from derive.core import units
-from derive.numbers import range_forms
 from derive.solution.answers import Solution
 from derive.language.defaults import Defaults
 from derive.core.errors import InputError
@@ -171,9 +170,7 @@ def _routes(item: ProblemVariants, all_steps: dict, numbered, siunitx: bool, dia
     """Routes of a worked solution for the templates: each step's text, its equations numbered on
     from `numbered`, the free-body diagram beside a balance (`diagrams`, by the id of its step), the
     parts' sentences."""
-    printed = notation.named(item.problem, item.solution, all_steps)  # one symbol, one thing (a step renamed keeps its diagram)
-    printed = range_forms.steps_within(printed, range_forms.box(item.problem))  # 1/cos(beta) over the ranges
-    printed = notation.renamed(printed, item.letters)  # one letter, one kind of thing: ell beside L_z
+    printed = notation.printed(item.problem, item.solution, all_steps, item.letters)  # a step renamed keeps its diagram
     names = symbol_names(item.problem, printed)
     words = Wording(item.problem)  # the file's keys in the engine's words, described
     routes = []
