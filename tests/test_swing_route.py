@@ -219,12 +219,24 @@ question: A block slides down a rough bowl.
 
 
 def test_what_the_route_does_not_prove_keeps_the_engines_routes(tmp_path):
-    """A time along the swing (an elliptic integral), a force across the radius (it needs the angular
-    acceleration too), and friction that takes energy on the way: no swing route."""
+    """A time along the swing (an elliptic integral) and friction that takes energy on the way: no swing
+    route (a force across the radius is found with the angular acceleration: it is taken)."""
     assert not isinstance(Solution(load("pendulum_bob_released")).textbook_route, TextbookRoute)
-    across = Solution(load(write_problem(tmp_path, ACROSS)))
-    assert across.textbook_route is None
+    across = Solution(load(write_problem(tmp_path, ACROSS)))  # the force along the tangent: by the torque, below
+    assert isinstance(across.textbook_route, TextbookRoute) and across.expression("Fx") == 0
     (tmp_path / "rough").mkdir()
     rough = Solution(load(write_problem(tmp_path / "rough", ROUGH_BOWL)))
     with pytest.raises(EngineLimit, match="cannot yet decide whether the bead slips"):
         rough.textbook_route  # friction on a curve: the engine's own refusal, never a route of energy conserved
+
+
+def test_a_force_along_the_tangent_comes_from_the_torque_about_the_pivot():
+    """A chimney (a rod on a hinge) falling from upright to the level (Serway & Jewett ch. 10): the hinge's
+    vertical force is along the tangent there; the route finds the angular acceleration by the torque about the
+    pivot and Newton's second law along the tangent, M g/4 up, as the book prints."""
+    solution = derived(textbook("falling_chimney_rod"))
+    steps = [step for section in solution.student_steps.values() for step in section]
+    tangent = next(step for step in steps if step.text.startswith("Newton's second law along the tangent, up"))
+    M, g = (solution.problem.parameters[n].symbol for n in ("M", "g"))
+    assert sp.simplify(tangent.equations[-1].rhs - M * g / 4) == 0
+    assert sum(len(step.equations) for step in steps) == 11  # the speed, then each force: five steps of the book's

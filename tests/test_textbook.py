@@ -180,6 +180,15 @@ EXPECTED = {
         "Rx": lambda s: s.g * (s.mb * s.L / 2 + s.mp * s.d) / (s.L * sp.sin(s.phi)) * sp.cos(s.phi),
         "Ry": lambda s: (s.mb + s.mp) * s.g - s.g * (s.mb * s.L / 2 + s.mp * s.d) / s.L,
     },
+    # Serway & Jewett 9th ed., ch. 10 (a rod pivoted at its lower end falls from upright: M g L/2 = (1/2)(M L^2/3)
+    # omega^2, omega = sqrt(3 g/L); at the level alpha = 3 g/(2 L), the hinge pushes 3 M g/2 toward itself and
+    # M g/4 up). A newcomer's file (stop 41), on the swing route with the force along the tangent.
+    "falling_chimney_rod": {
+        "omega": lambda s: -sp.sqrt(3 * s.g / s.L),  # clockwise: it falls to the right
+        "v": lambda s: sp.sqrt(3 * s.g * s.L) / 2,
+        "Rx": lambda s: -3 * s.M * s.g / 2,
+        "Ry": lambda s: s.M * s.g / 4,
+    },
     "comet_from_periapsis": {
         "ra": lambda s: 2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp,
         "va": lambda s: s.vp * s.rp / (2 * s.GM * s.rp / (2 * s.GM - s.rp * s.vp**2) - s.rp),

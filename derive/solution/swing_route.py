@@ -392,9 +392,12 @@ class _Swing:
             inward = self._inward(place)
             if ask.quantity.kind == "force" and ask.quantity.detail.startswith("reaction"):
                 along, across = (inward[1], inward[0]) if ask.quantity.detail.endswith("y") else (inward[0], inward[1])
+                if along == 0 and across in (1, -1) and self.pivot:  # along the tangent: the torque gives it
+                    steps += self._tangential(ask_name, ask, state, place)
+                    continue
                 if across != 0 or along not in (1, -1):
-                    raise _Refused(ask_name)  # the force's component across the radius: the engine's routes
-                toward = along * force
+                    raise _Refused(ask_name)  # the force's component across the radius and along it: the engine's routes
+                toward = along * force if ask.sign is not None else force  # asked as a size: the size toward the center
             else:
                 toward = -force if circle.holder == "outside" else force
             height = tidy(place[1] - circle.center[1])
@@ -411,6 +414,36 @@ class _Swing:
                               f"{HOLDERS[circle.holder][1]} and the weight's component along the radius {gives}",
                               (*given, law, sp.Eq(force, value))))
         return steps
+
+    def _tangential(self, name: str, ask, state, place: sp.Matrix) -> list[Step]:
+        """The pivot's force along the tangent (the x or y component asked where the radius lies along the
+        other axis): the angular acceleration by the torque about the pivot, I_P alpha = -M g x (x the
+        center's horizontal distance from the pivot, counter-clockwise positive), then Newton's second law
+        along the tangent, F + W = M alpha r, the way the force points where it is asked as a size
+        (Serway & Jewett ch. 10: a chimney falling to the level, M g/4 up on its base)."""
+        arm = tidy(place - self.circle.center)
+        alpha, force = sp.Symbol(self._free("alpha", "alpha_1"), real=True), sp.Symbol(name, real=True)
+        torque = tidy(-self.mass * self.g * arm[0])
+        alpha_value = tidy(torque / self.moment_value)
+
+        def along(e: sp.Matrix) -> tuple:  # (k x r) . e, the tangential acceleration per unit alpha; W . e; F . e
+            lever, weight = tidy(-arm[1] * e[0] + arm[0] * e[1]), tidy(-self.mass * self.g * e[1])
+            return lever, weight, tidy(self.mass * alpha_value * lever - weight)
+        e = sp.Matrix([1, 0]) if ask.quantity.detail.endswith("x") else sp.Matrix([0, 1])
+        lever, weight, value = along(e)
+        if ask.sign is None and self.solution._sample(value) < 0:  # asked as a size: along the way it points
+            e = -e
+            lever, weight, value = along(e)
+        self.answers[name] = value
+        words = {(1, 0): "to the right", (-1, 0): "to the left", (0, 1): "up", (0, -1): "down"}[tuple(e)] \
+            if ask.sign is None else f"along {ask.quantity.detail[-1]}"
+        where = self._at(state)
+        return [Step(f"The torque about the pivot {where}, counter-clockwise positive: the pivot's force has no moment "
+                     "about it, and the weight's is its size times the center's horizontal distance from the pivot",
+                     (sp.Eq(self.moment * alpha, torque), sp.Eq(alpha, alpha_value))),
+                Step(f"Newton's second law along the tangent, {words}, {where}: the pivot's force and the weight give "
+                     "the center's acceleration along it, the angular acceleration times the center's distance from "
+                     "the pivot", (sp.Eq(force + weight, self.mass * alpha * lever), sp.Eq(force, value)))]
 
     def _inward(self, place: sp.Matrix) -> sp.Matrix:
         """The unit vector from the body's center toward the circle's center."""
