@@ -43,7 +43,8 @@ def symbol_latex(name: str) -> str:
     rules are written here: a subscript of two letters or more is upright (a one-letter subscript
     may be an index, x_i, and stays italic); a capital followed by one or two small letters is the
     capital with them as its subscript (Rcm as R_cm; Mass stays a word); a letter then a Greek
-    name is a product (dphi as d phi); d and one letter is a change (dE as Delta E); a letter and an
+    name is a product (dphi as d phi); a Greek name and one small letter is the letter with its index (mus
+    as mu_s); d and one letter is a change (dE as Delta E); a letter and an
     index is the letter with it as its subscript (vx as v_x, vB as v_B, tb as t_b, xtop as x_top); a
     word of small letters is set upright, as a label is (angle); any other name is one italic symbol.
 
@@ -53,6 +54,8 @@ def symbol_latex(name: str) -> str:
     ('d\\phi_{\\mathrm{exact}}', '\\mathit{GM}', 'a_{\\theta}', '\\mathit{Mass}')
     >>> symbol_latex("dE"), symbol_latex("vx"), symbol_latex("FAx"), symbol_latex("tb"), symbol_latex("angle")
     ('\\Delta E', 'v_{x}', 'F_{\\mathrm{Ax}}', 't_{b}', '\\mathrm{angle}')
+    >>> symbol_latex("mus"), symbol_latex("muk"), symbol_latex("thetac")
+    ('\\mu_{s}', '\\mu_{k}', '\\theta_{c}')
     >>> symbol_latex("omega_1'"), symbol_latex("Delta_K"), symbol_latex("Delta_theta")
     ("\\omega_{1}'", '\\Delta K', '\\Delta \\theta')
     """
@@ -71,6 +74,8 @@ def symbol_latex(name: str) -> str:
             letter, subs = base[0], [base[1:], *subs]
         elif translate(base[1:]) != base[1:]:
             letter = base[0] + translate(base[1:])
+        elif (greek := _greek_and_index(base)) and not subs:  # mus, muk: mu_s, mu_k, a coefficient's usual names
+            letter, subs = translate(greek[0]), [greek[1]]
         elif base[0] == "d" and len(base) == 2 and not subs:  # dE, dp: the change of E, of p
             letter = rf"\Delta {translate(base[1])}"
         elif index and not subs and not base.isupper():  # vx, v1x, FAx, tb: a letter and its index (GM is G M)
@@ -85,6 +90,16 @@ def symbol_latex(name: str) -> str:
                         for p in parts)
 
     return letter + (f"_{{{script(subs)}}}" if subs else "") + (f"^{{{script(supers)}}}" if supers else "")
+
+
+def _greek_and_index(name: str) -> tuple[str, str] | None:
+    """(a Greek letter's name, one small Latin letter) where `name` is the two run together (mus: mu, s),
+    else None."""
+    for cut in range(2, len(name)):
+        head, tail = name[:cut], name[cut:]
+        if translate(head) != head and len(tail) == 1 and tail.islower():
+            return head, tail
+    return None
 
 
 def _changed(name: str) -> bool:
