@@ -36,7 +36,7 @@ def _same(a, b) -> bool:
 def _opening(steps) -> list[str]:
     """Each step's principle, by the words it opens with."""
     kinds = {"the time it takes": "time", "Newton's second law": "newton", "Torque about": "torque", "Solving": "solve",
-             "grip or slip": "regime", "is sent sliding": "sent", "Across its motion": "across",
+             "grips or slips": "regime", "is sent sliding": "sent", "Across its motion": "across",
              "work–energy theorem": "energy", "starts from rest": "kinematics", "starts moving": "kinematics",
              "starts turning": "kinematics", "It stops where": "stops", "Where the state is reached": "reached",
              "rate of turning follows": "rolling", "number of turns": "turns", "rolls without slipping": "ties",

@@ -102,7 +102,7 @@ class StartRegimes:
                     ", acts against the slip, the way ", f, " points, as long as it slides.")
         still = "rolling without slipping" if self.regimes[0].name == "rolls" else "at rest"
         compared = "at least" if taken.direction == 0 else "less than"
-        return Step(f"{at.capitalize()}: does the {contact.body} grip or slip?", (sp.Eq(n, normal), sp.Eq(f, needed)),
+        return Step(f"Whether the {contact.body} grips or slips {at}", (sp.Eq(n, normal), sp.Eq(f, needed)),
                     sentences=(Sentence((f"Held by static friction {at}, {still}, the {contact.body} would need the "
                                          "friction ", f, " below, with the normal force ", n, "; static friction gives "
                                          "at most ", friction.static_coefficient(contact) * n, f", {compared} ",
