@@ -29,6 +29,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core import units
+from derive.numbers import range_forms
 from derive.text.latex import symbol_latex
 from derive.text.steps import renamed as renamed_step
 from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, KINETIC, LAGRANGIAN, PERIOD, POTENTIAL
@@ -156,10 +158,25 @@ def printed(problem, solution, steps: Mapping[str, list], letters: Mapping[sp.Sy
     """The steps as the documents and the terminal print them: their symbols `named`, each expression as it
     reads over the parameter ranges (derive.numbers.range_forms: T cos(phi), not T tan(phi) |cos(phi)|), in
     the document's `letters` (derive.publishing.letters: ell beside L_z)."""
-    from derive.numbers import range_forms
-
     within = range_forms.steps_within(named(problem, solution, steps), range_forms.box(problem))
     return renamed(within, letters)
+
+
+def shown_expressions(problem, solution, letters: Mapping[sp.Symbol, sp.Symbol] | None = None) -> dict[str, sp.Expr]:
+    """Each answer's expression as the documents and the terminal print it: in its ask's unit, as it
+    reads over the parameter ranges (derive.numbers.range_forms: pi/2 - alpha, not acos(sin(alpha)); 1/cos(beta),
+    not sqrt(tan(beta)**2 + 1)), in the document's `letters`; the keys keep the derived one.
+
+    >>> from derive.language.problem import load
+    >>> problem = load("rod_tilted_on_shaft")
+    >>> from derive.solution.answers import Solution
+    >>> shown_expressions(problem, Solution(problem))["angle"]
+    -alpha + pi/2
+    """
+    ranges = range_forms.box(problem)
+    return {name: range_forms.within(units.declared_symbols(units.in_unit(expression, problem.asks[name].unit),
+                                                            problem.symbol_units), ranges).xreplace(letters or {})
+            for name, expression in solution.expressions.items()}
 
 
 def named(problem, solution, steps: Mapping[str, list]) -> dict[str, list]:

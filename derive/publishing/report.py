@@ -19,7 +19,7 @@ import re
 import sympy as sp
 
 from derive.text.latex import latex_of, symbol_latex
-from derive.publishing import letters, notation, variants, wording
+from derive.publishing import letters, notation, wording
 from derive.numbers import numeric
 from derive.core import units
 from derive.text.terminal import greek, indented, pretty
@@ -211,7 +211,7 @@ def as_text(result: dict, solution: Solution, proof: bool = False) -> str:
             lines += indented(pretty(equation))
         lines.append("")
     lines.append("Answers:")
-    shown_forms = variants.shown_expressions(solution.problem, solution, otherwise)
+    shown_forms = notation.shown_expressions(solution.problem, solution, otherwise)
     for name, a in result["answers"].items():
         unit = units.unicode_unit(a["unit"])
         value = f" = {a['value']}{' ' + unit if unit else ''}" if a["value"] is not None else \

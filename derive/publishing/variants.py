@@ -26,11 +26,10 @@ from typing import Sequence
 import sympy as sp
 
 from derive.text.latex import latex_of
-from derive.publishing import distractors, letters, lms, typeset_cache
+from derive.publishing import distractors, letters, lms, notation, typeset_cache
 from derive.text import latex_safety
 from derive.numbers import numeric
 from derive.core import units
-from derive.numbers import range_forms
 from derive.mechanics.along_motion import AlongMotion
 from derive.solution import answer_signs, textbook
 from derive.solution.answers import Solution
@@ -103,22 +102,6 @@ def unit_latex(unit: str, siunitx: bool) -> str:
     return units.siunitx_unit(unit) if siunitx else units.latex_unit(unit)
 
 
-def shown_expressions(problem: Problem, solution: Solution, letters: dict | None = None) -> dict[str, sp.Expr]:
-    """Each answer's expression as the documents and the terminal print it: in its ask's unit, as it
-    reads over the parameter ranges (derive.numbers.range_forms: pi/2 - alpha, not acos(sin(alpha)); 1/cos(beta),
-    not sqrt(tan(beta)**2 + 1)), in the document's `letters`; the keys keep the derived one.
-
-    >>> from derive.language.problem import load
-    >>> problem = load("rod_tilted_on_shaft")
-    >>> shown_expressions(problem, Solution(problem))["angle"]
-    -alpha + pi/2
-    """
-    ranges = range_forms.box(problem)
-    return {name: range_forms.within(units.declared_symbols(units.in_unit(expression, problem.asks[name].unit),
-                                                            problem.symbol_units), ranges).xreplace(letters or {})
-            for name, expression in solution.expressions.items()}
-
-
 @dataclass
 class ProblemVariants:
     """One problem of the set: its derivation (shared) and each variant's numbers."""
@@ -148,7 +131,7 @@ class ProblemVariants:
     def shown_expressions(self) -> dict[str, sp.Expr]:
         """Each answer's expression as the documents print it: in its ask's unit (`in_unit`), as it reads over the parameter ranges
         (derive.numbers.range_forms: 1/cos(beta), not sqrt(tan(beta)**2 + 1)); the keys keep the derived one."""
-        return shown_expressions(self.problem, self.solution, self.letters)
+        return notation.shown_expressions(self.problem, self.solution, self.letters)
 
     @cached_property
     def letters(self) -> dict[sp.Symbol, sp.Symbol]:

@@ -30,6 +30,7 @@ from derive.mechanics import fixed_point
 from derive.mechanics.along_motion import NotAlongALine
 from derive.mechanics.angular_momentum import about_axle, about_center_of_mass, about_each_axle, slowed_to_rest
 from derive.mechanics import orbits
+from derive.mechanics.derivation import EXACT_PERIOD, GROWTH_RATE, KINETIC, LAGRANGIAN, PERIOD, POTENTIAL
 from derive.mechanics.loop_top import loop_top
 from derive.mechanics.orbit_by_conservation import DETAILS, by_conservation
 from derive.mechanics.pulled_in import pulled_in
@@ -323,8 +324,10 @@ def _impact_route(solution) -> TextbookRoute | None:
                          "the angular momentum about the point where no outside impulse has a moment")
 
 
-#: The impact routes' own symbols of the kinetic energy just before and just after.
+#: The impact routes' own symbols of the kinetic energy just before and just after; the engine's symbols,
+#: which the documents print by the asks' names (derive.publishing.notation), never taken for them.
 K_BEFORE, K_AFTER = sp.Symbol("K_0"), sp.Symbol("K_1")
+ENGINE = {KINETIC, POTENTIAL, LAGRANGIAN, PERIOD, EXACT_PERIOD, GROWTH_RATE}
 
 
 def _in_the_asks_names(solution, sections: dict, before: str, after: str) -> dict:
@@ -333,8 +336,8 @@ def _in_the_asks_names(solution, sections: dict, before: str, after: str) -> dic
     energy before) as a textbook's K_i, K_f: one symbol, one thing."""
     change = {}
     for name, ask in solution.problem.asks.items():
-        if ask.quantity.kind == "kinetic_energy" and ask.state in (before, after):
-            change[K_BEFORE if ask.state == before else K_AFTER] = sp.Symbol(name)
+        if ask.quantity.kind == "kinetic_energy" and ask.state in (before, after) and sp.Symbol(name) not in ENGINE:
+            change[K_BEFORE if ask.state == before else K_AFTER] = sp.Symbol(name)  # (K is the engine's: as it is)
     asked = {symbol_latex(name) for name in solution.problem.asks}
     for symbol, other in ((K_BEFORE, "K_i"), (K_AFTER, "K_f")):
         if symbol not in change and symbol_latex(symbol.name) in asked:
