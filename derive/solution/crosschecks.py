@@ -487,6 +487,12 @@ class CrossChecks:
                      "Energy conservation and the equations of motion give the same speeds.")
 
 
+def same_at_samples(problem: Problem, a: sp.Expr, b: sp.Expr, count: int = 3) -> bool:
+    """Whether `a` and `b` are the same expression at `count` points of the ranges (`sample_points`), by
+    derive.numbers.agreement: how a student's route tells that a finding is the key's."""
+    return agree(a, b, points=sample_points(problem, sp.Tuple(a, b), count=count)) is not None
+
+
 def sample_points(problem: Problem, expr: sp.Expr, count: int = 5) -> list[dict[sp.Symbol, sp.Expr]]:
     """Points where `expr` can be evaluated, in SI units like the answers: parameters inside
     their ranges (the middle, then random draws), sizes the problem leaves open at positive

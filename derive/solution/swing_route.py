@@ -29,12 +29,11 @@ import sympy as sp
 
 from derive.core.tidying import root, tidy
 from derive.model.scene import Body
-from derive.numbers.agreement import agree
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin
 from derive.parts.surfaces import Circle
-from derive.solution.crosschecks import sample_points
+from derive.solution.crosschecks import same_at_samples
 from derive.solution.textbook_routes import TextbookRoute
 from derive.text.steps import Step
 
@@ -204,7 +203,7 @@ class _Swing:
         return sp.Symbol(asked[0][0] if asked else self._free(*default), positive=True)
 
     def same(self, a: sp.Expr, b: sp.Expr) -> bool:
-        return agree(a, b, points=sample_points(self.solution.problem, sp.Tuple(a, b), count=3)) is not None
+        return same_at_samples(self.solution.problem, a, b)
 
     # where each state is, and how fast it moves there
     def _values(self, state) -> dict:

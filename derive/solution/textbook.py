@@ -44,8 +44,7 @@ from derive.solution.uniform_route import uniform_route
 from derive.solution.swing_route import swing_route
 from derive.solution.sliding import slide_from_rest
 from derive.solution.work_energy import kinetic_energy
-from derive.numbers.agreement import agree
-from derive.solution.crosschecks import sample_points
+from derive.solution.crosschecks import same_at_samples
 from derive.parts.surfaces import Plane
 
 
@@ -184,8 +183,7 @@ def _same(solution, name: str, value) -> bool:
     """Whether the ask `name` is the quantity `value` (the same expression at points of the ranges)."""
     if value is None:
         return False
-    mine = solution.expression(name)
-    return agree(mine, value, points=sample_points(solution.problem, sp.Tuple(mine, value), count=3)) is not None
+    return same_at_samples(solution.problem, solution.expression(name), value)
 
 
 def _clashes(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:

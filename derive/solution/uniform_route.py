@@ -35,9 +35,8 @@ import sympy as sp
 from derive import quantities
 from derive.core.tidying import root, tidy
 from derive.mechanics.along_motion import AlongMotion, NotAlongALine, along_motion, definite
-from derive.numbers.agreement import agree
 from derive.parts.contact import Contact
-from derive.solution.crosschecks import sample_points
+from derive.solution.crosschecks import same_at_samples
 from derive.mechanics.derivation import KINETIC
 from derive.solution.work_energy import between_states
 from derive.solution.sliding import SECTION as FORCES_SECTION, regime_to
@@ -151,8 +150,7 @@ class _Kinematics:
         return self.first.get(coordinate.q, self.rest[coordinate.q])
 
     def same(self, a: sp.Expr, b: sp.Expr) -> bool:
-        points = sample_points(self.solution.problem, sp.Tuple(a, b), count=3)
-        return agree(a, b, points=points) is not None
+        return same_at_samples(self.solution.problem, a, b)
 
     def uniform(self) -> bool:
         """Whether the engine's states keep the acceleration found at the placement all the way:

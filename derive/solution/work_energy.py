@@ -18,7 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.core.tidying import tidy
-from derive.mechanics.along_motion import AlongMotion
+from derive.mechanics.along_motion import AlongMotion, definite
 from derive.mechanics.derivation import KINETIC
 from derive.mechanics.lagrange import energies
 from derive.text.steps import Step
@@ -68,7 +68,7 @@ def between_states(solution, along: AlongMotion, scene, body: str, ends: tuple[d
     friction = tidy(sum((c.power(coords).xreplace(rates).xreplace(rest) for c in sliding), sp.Integer(0))
                     * (1 if solution._sample(length) > 0 else -1)).xreplace(oriented) * d
     theorem = sp.Eq(KINETIC, gravity + friction)  # from rest, where K is asked; else K - K_0 = W, each K written out
-    found = {v: value1, v0: value0, d: definite_length(length, solution), **{u: along.acting[u] * along.values[u]
+    found = {v: value1, v0: value0, d: definite(sp.Abs(length), solution._sample), **{u: along.acting[u] * along.values[u]
                                                                              for u in along.acting if u in along.values}}
     at_end = kinetic.xreplace(put).xreplace(found)
     if not same(at_end - initial.xreplace(put).xreplace(found), (gravity + friction).xreplace(found)):
@@ -84,7 +84,3 @@ def between_states(solution, along: AlongMotion, scene, body: str, ends: tuple[d
     shown = (sp.Eq(KINETIC, kinetic), theorem) if initial == 0 and asked else (sp.Eq(kinetic - initial, gravity + friction),)
     return Step(text, (*given, *shown), role="equations"), tidy(at_end)
 
-
-def definite_length(length: sp.Expr, solution) -> sp.Expr:
-    """|length|, by its sign at the middle of the ranges."""
-    return length if solution._sample(length) >= 0 else -length

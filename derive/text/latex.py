@@ -66,7 +66,7 @@ def symbol_latex(name: str) -> str:
         return symbol_latex(bare) + "'" * (len(name) - len(bare))
     base, supers, subs = split_super_sub(name)
     letter = translate(base)
-    if base == "Delta" and len(subs) == 1 and not supers and _changed(subs[0]):  # Delta_K, Delta_theta: a change
+    if base == "Delta" and len(subs) == 1 and not supers and changes_a_letter(subs[0]):  # Delta_K, Delta_theta: a change
         return rf"\Delta {translate(subs[0])}"
     if letter == base and len(base) > 1:  # a word: not a Greek name, nor a letter with an accent
         index = _INDEXED.fullmatch(base)
@@ -102,7 +102,7 @@ def _greek_and_index(name: str) -> tuple[str, str] | None:
     return None
 
 
-def _changed(name: str) -> bool:
+def changes_a_letter(name: str) -> bool:
     """Whether `name` is what a Delta before it changes: one Latin letter, or a Greek letter's name."""
     return len(name) == 1 and name.isalpha() or translate(name) != name
 

@@ -23,6 +23,7 @@ from sympy.printing.pretty.pretty_symbology import greek_unicode
 from sympy.printing.pretty.stringpict import prettyForm, stringPict
 
 from derive.text import printed_form
+from derive.text.latex import changes_a_letter
 
 class _Printer(PrettyPrinter):
     """sympy's unicode pretty-printer, with the script letter the documents print as \\ell (a length beside
@@ -32,8 +33,8 @@ class _Printer(PrettyPrinter):
     def _print_Symbol(self, e, bold_name=False):
         if e.name == "ell" or e.name.startswith(("ell_", "ell^")):
             e = sp.Symbol("\N{SCRIPT SMALL L}" + e.name[3:], **e.assumptions0)
-        change = re.fullmatch(r"Delta_([A-Za-z]|[a-zA-Z]+)", e.name)  # the change of K, of theta: as the documents print it
-        if change and (len(change[1]) == 1 or change[1] in greek_unicode):
+        change = re.fullmatch(r"Delta_([A-Za-z]+)", e.name)  # the change of K, of theta: as the documents print it
+        if change and changes_a_letter(change[1]):
             return prettyForm("\N{GREEK CAPITAL LETTER DELTA}" + greek_unicode.get(change[1], change[1]))
         return super()._print_Symbol(e, bold_name)
 
