@@ -25,8 +25,11 @@ docs: setup
 
 test: setup
 	$(BIN)/python -m pyflakes derive tests benchmarks docs/hooks.py
+	# the package's bytecode written once: where PYTHONDONTWRITEBYTECODE is set (this machine's CI), each of
+	# the hundreds of `derive` processes the tests start had compiled it afresh, half a second each
+	$(BIN)/python -m compileall -q derive
 	# one worker per core (pytest-xdist), an idle one taking tests queued for a busy one (worksteal):
-	# the suite takes about 20 min on 2 cores, and prints its slowest tests, so that a test grown slow
+	# the suite takes about 25 min on 2 cores, and prints its slowest tests, so that a test grown slow
 	# shows. A fixed hash seed, so that a run can be repeated: sympy orders terms by string hashes
 	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto --dist worksteal --durations=25
 

@@ -320,7 +320,7 @@ def list_problems(topic: str | None, search: str | None, difficulty: str | None,
 
     rows = []
     for path in library.problem_files():
-        p = problem.load(str(path))
+        p = problem.heading(path)
         if topic in (None, p.topic) and difficulty in (None, p.difficulty) and set(tags) <= set(p.tags) \
                 and library.matches(search or "", p.id, p.title, p.question, p.source, *p.tags):
             rows.append((p.id, p.topic, p.difficulty or "-", p.title))

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import re
+from collections.abc import Callable
 from pathlib import Path
 
 from derive.core.errors import InputError
@@ -78,7 +79,9 @@ def problem_files() -> list[Path]:
     return sorted(p for p in root.rglob("*.yaml") if "sets" not in p.relative_to(root).parts)
 
 
-def _find(reference: str, candidates: list[Path], kind: str) -> Path:
+def _find(reference: str, candidates: Callable[[], list[Path]], kind: str) -> Path:
+    """The file `reference` names, or the one of `candidates` (listed only where a library id is given)
+    whose stem it is."""
     path = Path(reference)
     if path.suffix in (".yaml", ".yml") or os.sep in reference:
         if path.is_file():
@@ -86,16 +89,17 @@ def _find(reference: str, candidates: list[Path], kind: str) -> Path:
         raise LibraryError(f"{reference}: no such {kind} file")
     if not ID_PATTERN.fullmatch(reference):
         raise LibraryError(f"{reference!r} is not a file and not a library id (letters, digits, _)")
-    for candidate in candidates:
+    listed = candidates()
+    for candidate in listed:
         if candidate.stem == reference:
             return candidate
-    hint = did_you_mean(reference, [c.stem for c in candidates])
+    hint = did_you_mean(reference, [c.stem for c in listed])
     raise LibraryError(f"no {kind} file or library id {reference!r} (see `derive list`){hint}")
 
 
 def find_problem(reference: str) -> Path:
     """A problem file path, or the library problem with that id."""
-    return _find(reference, problem_files(), "problem")
+    return _find(reference, problem_files, "problem")
 
 
 def set_files() -> list[Path]:
@@ -109,13 +113,13 @@ def find_set_or_problem(reference: str) -> Path:
     >>> find_set_or_problem("demo").parent.name, find_set_or_problem("rod_endpoint").stem
     ('sets', 'rod_endpoint')
     """
-    return _find(reference, set_files() + problem_files(), "set or problem")
+    return _find(reference, lambda: set_files() + problem_files(), "set or problem")
 
 
 def find_set(reference: str) -> Path:
     """A set file path, or the set of that id in problems/sets/. The set's id is the file's
     stem, and names the output folder (build/<id>): it must match SET_ID_PATTERN."""
-    path = _find(reference, set_files(), "set")
+    path = _find(reference, set_files, "set")
     if not SET_ID_PATTERN.fullmatch(path.stem):
         raise LibraryError(f"{reference}: a set's id is its file name, {path.stem!r}: use letters, digits, _ and -, "
                            "starting with a letter")

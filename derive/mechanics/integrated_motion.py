@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
-from scipy.integrate import solve_ivp
 
 from derive.mechanics.derivation import Derivation
 from derive.model.kinematics import Coordinates
@@ -93,6 +92,8 @@ def integrate_to(derivation: Derivation, coords: Coordinates, values: dict, reac
     event.terminal = True
     start = reached.path.start if start is None else start
     y0 = np.array([float(sp.N(start[s].xreplace(values), 20)) for s in state])
+    from scipy.integrate import solve_ivp  # here: half a second to import, and most derivations never integrate
+
     run = solve_ivp(rates, (0, horizon), y0, method="DOP853", rtol=1e-11, atol=1e-13, events=event)
     if not len(run.t_events[0]):
         return None

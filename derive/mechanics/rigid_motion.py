@@ -30,8 +30,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.integrate import solve_ivp
-from scipy.spatial.transform import Rotation
 
 #: The integrator (non-stiff, high order) and its relative tolerance.
 METHOD, RTOL = "DOP853", 1e-12
@@ -49,6 +47,8 @@ def axes(state) -> np.ndarray:
 def start(orientation, omega, *rest) -> np.ndarray:
     """A state: the body's axes in the ground frame (columns of `orientation`), omega in the ground
     frame, then any other entries (a rolling body's center)."""
+    from scipy.spatial.transform import Rotation  # here, as solve_ivp in `integrate`
+
     x, y, z, w = Rotation.from_matrix(np.asarray(orientation, dtype=float)).as_quat()
     return np.array([w, x, y, z, *np.asarray(orientation, dtype=float).T @ np.asarray(omega, dtype=float), *rest])
 
@@ -143,6 +143,8 @@ def about_y(angle: float) -> np.ndarray:
 def integrate(rates, state, duration: float, events=None, rtol: float = RTOL):
     """solve_ivp from `state` over `duration`, dense output; a failed run raises RuntimeError. The
     absolute tolerance of each part of the state (quaternion, omega, the rest) is `rtol`/10 of its size."""
+    from scipy.integrate import solve_ivp  # here: half a second to import, and most derivations never integrate
+
     sizes = [1.0, float(np.linalg.norm(state[4:7])), float(np.linalg.norm(state[7:]))]
     scale = np.concatenate([[sizes[0]] * 4, [sizes[1] or 1.0] * len(state[4:7]), [sizes[2] or 1.0] * len(state[7:])])
     run = solve_ivp(rates, (0.0, duration), state, method=METHOD, rtol=rtol, atol=rtol / 10 * scale,
