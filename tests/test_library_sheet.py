@@ -57,13 +57,14 @@ def test_the_key_equals_derive_solve_at_its_parameters(everything):
 
 @pytest.fixture(scope="module")
 def textbook_sheet(tmp_path_factory):
-    """The library's textbook setups as one set, one variant: its folder."""
+    """The library's textbook setups as one set, one variant, as TeX (the test compiles what it reads; their
+    PDFs, compiled again, had taken a minute of one core): its folder."""
     folder = tmp_path_factory.mktemp("textbook")
     lib = copy_library(folder)
     ids = [p.stem for p in textbook_files() if p.parent.parent == ROOT / "problems"]  # not tests/textbook's
     (lib / "sets" / "textbook.yaml").write_text(f"title: Textbook setups\nproblems: [{', '.join(ids)}]\nseed: 9\n")
     out = folder / "out"
-    done = run_derive("sheet", "textbook", "--variants", "1", "--out", str(out), library=lib, timeout=3600,
+    done = run_derive("sheet", "textbook", "--variants", "1", "--to", "", "--out", str(out), library=lib, timeout=3600,
                       env=SHARED_CACHE)
     assert done.returncode == 0, done.stderr[-2000:]
     return out

@@ -560,6 +560,26 @@ def test_a_pendulum_of_parts_takes_each_parts_moment_about_the_pivot_and_the_per
     assert str(steps[-1].equations[-1].lhs) == "P"
 
 
+def test_a_body_of_parts_on_a_pivot_swings_by_energy_and_torque_part_by_part():
+    """Serway & Jewett 9th ed., ch. 10 (a rod with a ball at its end, pivoted at the rod's other end, released
+    horizontal): I about the pivot part by part, M L^2/3 + m L^2; the energy with each part's drop, M g L/2 + m g L;
+    the torque at release the same sum. A newcomer's rod and ball had no student's route (composites were the
+    engine's alone)."""
+    from conftest import derived, textbook
+
+    solution = derived(textbook("rod_with_ball_swings_down"))
+    energy, torque = solution.student_steps.values()
+    M, m, L, g = _symbols("M", "m", "L", "g")
+    moment = energy[0].equations[0].rhs
+    assert isinstance(moment, sp.Add) and len(moment.args) == 3 and _same(moment.doit(), M * L**2 / 3 + m * L**2)
+    drops = energy[1].equations[0].rhs
+    assert isinstance(drops, sp.Add) and len(drops.args) == 2 and _same(drops.doit(), M * g * L / 2 + m * g * L)
+    turning = torque[0].equations[0].rhs
+    assert len(turning.args) == 2 and _same(turning.doit(), M * g * L / 2 + m * g * L)
+    assert sum(len(s.equations) for section in (energy, torque) for s in section) <= 7
+    assert "textbook_route" in {c.name for c in solution.checks() if c.passed}
+
+
 def test_an_impact_about_an_axle_gives_the_axles_impulse_by_the_change_of_momentum():
     """A bullet into a door (Young & Freedman ch. 10, "crime bust"), asked the hinge's impulse too: the
     route about the axle had given way to the impulse equations in components; now one more step, the

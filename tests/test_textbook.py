@@ -79,6 +79,11 @@ EXPECTED = {
                                    "TB": lambda s: s.m * s.g * (3 - 2 * _cos(s.thetaA))},
     # Halliday, Resnick & Walker 10th ed., ch. 10: a rod pivoted at one end released from the horizontal,
     # alpha = 3 g/(2 L) at release, omega = sqrt(3 g/L) hanging, its center at (L/2) omega (counter-clockwise here).
+    # Serway & Jewett 9th ed., ch. 10: a rod with a small ball at its end, pivoted at the rod's other end and
+    # released horizontal: I = M L^2/3 + m L^2; (1/2) I omega^2 = M g L/2 + m g L; I alpha = M g L/2 + m g L.
+    # The ball starts to the right of the pivot: it swings down clockwise (negative, counter-clockwise positive).
+    "rod_with_ball_swings_down": {"alpha0": lambda s: -3 * s.g * (s.M + 2 * s.m) / (2 * s.L * (s.M + 3 * s.m)),
+                                  "w": lambda s: -sp.sqrt(3 * s.g * (s.M + 2 * s.m) / (s.L * (s.M + 3 * s.m)))},
     "meter_stick_pivoted_at_end": {"alpha0": lambda s: 3 * s.g / (2 * s.L), "w": lambda s: sp.sqrt(3 * s.g / s.L),
                                    "vc": lambda s: sp.sqrt(3 * s.g * s.L) / 2},
     # Serway & Jewett 9th ed., ch. 6 and 8: a ball on a cord round a vertical circle, v_top^2 = v0^2 - 4 g R;

@@ -24,7 +24,6 @@ import sympy as sp
 from derive.core.tidying import tidy
 from derive.mechanics.along_motion import NotAlongALine
 from derive.text.steps import Step
-from derive.model import inertia
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene
 from derive.parts.contact import Contact
@@ -81,7 +80,7 @@ def small_swing(scene: Scene, coords: Coordinates) -> SmallSwing:
         inertia = Step(f"The {body.name} turns about its pivot: by the parallel-axis theorem each part's moment of "
                        "inertia about the pivot is its own about its center plus its mass times the square of its "
                        "distance from the pivot; the body's is their sum",
-                       (sp.Eq(moment, _by_parts(body.composite, pin.offset)), sp.Eq(moment, about)))
+                       (sp.Eq(moment, body.composite.moment_about(pin.offset)), sp.Eq(moment, about)))
     elif distance != 0:
         inertia = Step(f"The {body.name} turns about its pivot, off its center of mass: by the parallel-axis theorem its "
                        "moment of inertia about the pivot is", (sp.Eq(moment, body.inertia + body.mass * distance**2),))
@@ -100,18 +99,3 @@ def small_swing(scene: Scene, coords: Coordinates) -> SmallSwing:
                                               sp.Eq(period, 2 * sp.pi / omega))),
     )
     return SmallSwing(steps, frequency, f"the {pivot}")
-
-
-def _by_parts(composite, pivot: tuple[sp.Expr, sp.Expr]) -> sp.Expr:
-    """A body of parts' moment of inertia about a pivot (body frame, from its center of mass) as a
-    solution manual writes it, part by part, unevaluated: I_rod + m d_rod^2 + I_disk + M d_disk^2
-    (m L^2/12 + m (L/2)^2 + M r^2/2 + M (L + r)^2 for a clock pendulum's rod and bob)."""
-    cx, cy = composite.center
-    terms = []
-    for shape, mass, sizes, (x, y), _ in composite.parts.values():
-        own = tidy(inertia.central_moment(shape, mass, sizes))
-        dx, dy = tidy(x - cx - pivot[0]), tidy(y - cy - pivot[1])
-        apart = tidy(sp.sqrt(dx**2 + dy**2))
-        terms += [own] if own != 0 else []
-        terms += [sp.Mul(mass, sp.Pow(apart, 2, evaluate=False), evaluate=False)] if apart != 0 else []
-    return sp.Add(*terms, evaluate=False)

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.core.tidying import tidy
 from derive.model import inertia
 from derive.parts.places import body_points, extent, sample, turned
 from derive.core.spelling import did_you_mean
@@ -59,6 +60,29 @@ class CompositeParts:
                 px, py = sp.Matrix([x - cx, y - cy]) + turned(angle, offset)
                 result[name if point == "center" else f"{name}.{point}"] = (px, py)
         return result
+
+    def moment_about(self, point: tuple[sp.Expr, sp.Expr]) -> sp.Expr:
+        """The moment of inertia about an axis through `point` (body frame, from the center of mass) as a
+        solution manual writes it, part by part, unevaluated: each part's own about its center plus its mass
+        times the square of its center's distance from the axis (parallel-axis theorem).
+
+        >>> m, M, L, r = sp.symbols("m M L r", positive=True)
+        >>> clock = build({"rod": ("rod", m, {"length": L}, (0, -L / 2), -sp.pi / 2),
+        ...                "bob": ("disk", M, {"radius": r}, (0, -L - r), 0)})
+        >>> cx, cy = clock.center
+        >>> about = clock.moment_about((-cx, -cy))  # the rod's upper end: the frame's origin
+        >>> len(about.args), sp.expand(about.doit() - (m*L**2/3 + M*r**2/2 + M*(L + r)**2))
+        (4, 0)
+        """
+        cx, cy = self.center
+        terms = []
+        for shape, mass, sizes, (x, y), _ in self.parts.values():
+            own = tidy(inertia.central_moment(shape, mass, sizes))
+            dx, dy = tidy(x - cx - point[0]), tidy(y - cy - point[1])
+            apart = tidy(sp.sqrt(dx**2 + dy**2))
+            terms += [own] if own != 0 else []
+            terms += [sp.Mul(mass, sp.Pow(apart, 2, evaluate=False), evaluate=False)] if apart != 0 else []
+        return sp.Add(*terms, evaluate=False)
 
     def extent(self) -> sp.Expr | None:
         """How far from the center of mass a point of the composite can lie (None: a part does not say)."""

@@ -74,7 +74,7 @@ def _circle(solution) -> _Circle | None:
         return None
     (body,), (part,) = scene.bodies.values(), scene.constraints
     at = sp.Matrix(body.at)
-    if body.composite is not None or body.path is not None or body.density is not None:
+    if body.path is not None or body.density is not None:
         return None
     if isinstance(part, Pin) and part.to is None and body.rotates:
         rest = solution.coordinates.at_rest_in_reference()
@@ -88,6 +88,8 @@ def _circle(solution) -> _Circle | None:
             return None
         center = sp.Matrix(fixed[0].offset)
         return _Circle(body, center, tidy(sp.sqrt((at - center).dot(at - center))), "cord", part)
+    if body.composite is not None:  # a body of parts on anything but a pivot: the engine's routes
+        return None
     if isinstance(part, Contact) and not part.has_friction and part.point is None and part.center is None \
             and part.carrier is None:
         surface = scene.surfaces[part.surface]
@@ -241,6 +243,11 @@ class _Swing:
 
     def _inertia_steps(self) -> list[Step]:
         body = self.circle.body
+        if self.pivot and body.composite is not None:
+            return [Step("The moment of inertia about the pivot, by the parallel-axis theorem part by part: each "
+                         "part's own about its center plus its mass times the square of its center's distance from "
+                         "the pivot", (sp.Eq(self.moment, body.composite.moment_about(self.circle.part.offset)),
+                                       sp.Eq(self.moment, self.moment_value)))]
         if self.pivot:
             return [Step("The moment of inertia about the pivot, by the parallel-axis theorem: the moment about the "
                          "center of mass plus the mass times the square of the center's distance from the pivot",
@@ -288,6 +295,9 @@ class _Swing:
     def _reaching(self, v: sp.Symbol, omega: sp.Symbol | None, speed0: sp.Expr, text: str) -> tuple:
         """(title, steps, speed) to a state given where it is: the energy, solved for the speed."""
         energy = self._energy(v, omega, speed0, self._place(self.end)[1] - self.circle.center[1])
+        if self.circle.body.composite is not None:  # each part's weight's work, as a solution manual sums it
+            energy = sp.Eq(energy.lhs, self._kinetic(speed0) + self._drops())
+            text += "; the potential energy each part gives up is its weight times the drop of its center"
         square = sp.Symbol("s", positive=True)
         squared = tidy(sp.solve(self._put(energy, v, omega).subs(v, sp.sqrt(square)), square)[0])
         if self.solution._sample(squared) < 0:
@@ -319,6 +329,26 @@ class _Swing:
         if self._asked((("speed", None), ("angular_velocity", None)), self.end.name):
             steps.append(Step("The speed there, from the same condition", (sp.Eq(v, speed),), role="solve"))
         return title, steps + self._heights(height, z), speed
+
+    def _parts_at(self, state) -> list[tuple[sp.Expr, sp.Matrix]]:
+        """(mass, where its center is) of each part of a body of parts in `state`."""
+        body, coords, values = self.circle.body, self.solution.coordinates, self._values(state)
+        return [(mass, coords.position(body.name, body.composite.points()[name]).xreplace(values))
+                for name, (_, mass, _, _, _) in body.composite.parts.items()]
+
+    def _drops(self) -> sp.Expr:
+        """The work of the weights of a body of parts from the start to the end state, part by part (each part's
+        mass times g times the drop of its center), unevaluated: M g L/2 + m g L for a rod with a ball at its end."""
+        drops = [(mass, tidy(start[1] - end[1])) for (mass, start), (_, end)
+                 in zip(self._parts_at(self.start), self._parts_at(self.end))]
+        return sp.Add(*(sp.Mul(mass, self.g, drop, evaluate=False) for mass, drop in drops if drop != 0), evaluate=False)
+
+    def _part_torques(self, state) -> sp.Expr:
+        """The torques of a body of parts' weights about the pivot in `state`, part by part, unevaluated, each
+        taken the way the whole weight turns it (a part beyond the pivot subtracts)."""
+        way = 1 if self.solution._sample(self._place(state)[0] - self.circle.center[0]) > 0 else -1
+        arms = [(mass, tidy(way * (at[0] - self.circle.center[0]))) for mass, at in self._parts_at(state)]
+        return sp.Add(*(sp.Mul(mass, self.g, arm, evaluate=False) for mass, arm in arms if arm != 0), evaluate=False)
 
     def _stopping(self, v: sp.Symbol, omega: sp.Symbol | None, speed0: sp.Expr, text: str) -> tuple:
         """(title, steps, speed) to where the motion stops: the energy with no kinetic energy left, solved for
@@ -484,6 +514,11 @@ class _Swing:
                 steps.append(Step(f"The torque about the pivot {where}: the weight acts along the line through the "
                                   "pivot and has no moment about it, nor has the pivot's force", (sp.Eq(alpha, 0),),
                                   role="solve"))
+            elif self.circle.body.composite is not None:  # each part's weight's torque, as a solution manual sums it
+                steps.append(Step(f"The torque about the pivot {where}: the pivot's force has no moment about it; each "
+                                  "part's weight's arm is the horizontal distance from the pivot to the part's center",
+                                  (sp.Eq(self.moment * alpha, self._part_torques(state)),
+                                   sp.Eq(alpha, self.answers[name]))))
             else:
                 steps.append(Step(f"The torque about the pivot {where}: the pivot's force has no moment about it; the "
                                   "weight's arm is the horizontal distance from the pivot to the center",
