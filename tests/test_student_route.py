@@ -580,6 +580,39 @@ def test_a_body_of_parts_on_a_pivot_swings_by_energy_and_torque_part_by_part():
     assert "textbook_route" in {c.name for c in solution.checks() if c.passed}
 
 
+def test_a_simple_pendulum_swings_by_the_torque_about_the_cords_end_and_hangs_in_balance():
+    """Halliday, Resnick & Walker 10th ed., ch. 15, Module 15-5 (the simple pendulum: I = m L^2 about the cord's
+    fixed end, tau = -L (m g sin theta) ~ -m g L theta, omega = sqrt(g/L)), and the cord's pull at rest by the
+    balance of forces. Both had been the engine's two routes: a period beside a force, and a bob on a cord."""
+    from conftest import derived
+
+    solution = derived("simple_pendulum_cord")
+    swing, balance = solution.student_steps.values()
+    m, L, g = _symbols("m", "L", "g")
+    assert _same(swing[0].equations[0].rhs, m * L**2)
+    kappa = swing[1].equations[-1].rhs
+    assert _same(kappa, m * g * L) and "no moment" in swing[1].text
+    assert _same(swing[2].equations[2].rhs, sp.sqrt(g / L)) and str(swing[2].equations[-1].lhs) == "T"
+    assert balance[0].text == "The forces on the bob balance"  # a point mass: no torques to balance
+    assert [str(e.lhs) for e in balance[-1].equations] == ["F"]  # the ask's own name: T is the period
+    assert sum(len(s.equations) for section in (swing, balance) for s in section) <= 10
+    assert "textbook_route" in {c.name for c in solution.checks() if c.passed}
+
+
+def test_a_period_beside_a_force_at_rest_takes_the_swing_and_then_the_balance():
+    """Serway & Jewett 9th ed., ch. 15 (a hoop on a nail: I = 2 M R^2 about the nail, T = 2 pi sqrt(2R/g)), and the
+    nail's force at rest, M g up, by the balance; each finding beside the engine's (the check textbook_route)."""
+    from conftest import derived
+
+    solution = derived("hoop_on_nail")
+    assert list(solution.student_steps) == ["Small oscillations about the pivot", "The forces at rest, in balance"]
+    M, g = _symbols("M", "g")
+    (solved,) = solution.student_steps["The forces at rest, in balance"][-1].equations
+    assert _same(solved.rhs, M * g)
+    compared = {what for what, _, _ in solution.textbook_route.compared}
+    assert {"omega^2", "R_x^nail", "R_y^nail"} <= compared  # the frequency, and the nail's force at rest
+
+
 def test_an_impact_about_an_axle_gives_the_axles_impulse_by_the_change_of_momentum():
     """A bullet into a door (Young & Freedman ch. 10, "crime bust"), asked the hinge's impulse too: the
     route about the axle had given way to the impulse equations in components; now one more step, the

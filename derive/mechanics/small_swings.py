@@ -27,6 +27,7 @@ from derive.text.steps import Step
 from derive.model.kinematics import Coordinates
 from derive.model.scene import Scene
 from derive.parts.contact import Contact
+from derive.parts.cord import Cord
 from derive.parts.pin import Pin
 from derive.parts.surfaces import Plane
 
@@ -42,9 +43,13 @@ class SmallSwing:
 
 def small_swing(scene: Scene, coords: Coordinates) -> SmallSwing:
     """The route for one body turning about a pin fixed to the ground, or rocking without slipping on
-    a fixed plane (about its point of contact, at rest for the moment: Morin, ch. 8), placed at rest
-    where it hangs or rests; NotAlongALine for any other scene."""
+    a fixed plane (about its point of contact, at rest for the moment: Morin, ch. 8), or a bob on a cord
+    from a fixed point (`_on_a_cord`), placed at rest where it hangs or rests; NotAlongALine for any other
+    scene."""
     bodies = list(scene.bodies.values())
+    if len(bodies) == 1 and not bodies[0].rotates and len(scene.constraints) == 1 \
+            and isinstance(scene.constraints[0], Cord):
+        return _on_a_cord(scene, coords, bodies[0], scene.constraints[0])
     held_by = [c for c in scene.constraints if isinstance(c, Pin) and c.to is None
                or isinstance(c, Contact) and c.rolling and c.carrier is None and c.center is not None
                and isinstance(scene.surfaces[c.surface], Plane)]  # a round face off its center of mass: it rocks
@@ -99,3 +104,50 @@ def small_swing(scene: Scene, coords: Coordinates) -> SmallSwing:
                                               sp.Eq(period, 2 * sp.pi / omega))),
     )
     return SmallSwing(steps, frequency, f"the {pivot}")
+
+
+def _on_a_cord(scene: Scene, coords: Coordinates, bob, cord: Cord) -> SmallSwing:
+    """A simple pendulum as Halliday, Resnick & Walker (10th ed., ch. 15, Module 15-5) derive it: the bob, hanging
+    at rest straight below the cord's fixed end, moves on a circle about that end; I = m L^2 about it, and the
+    torque of the loads at an angle theta from the vertical (-dV/dtheta, the cord's pull having no moment there),
+    tau = -m g L sin(theta) ~ -kappa theta.
+
+    >>> from derive.language.problem import load
+    >>> from derive.solution.answers import Solution
+    >>> solution = Solution(load("simple_pendulum_cord"))
+    >>> small_swing(solution.dynamics_scene, solution.coordinates).omega
+    sqrt(g)/sqrt(L)
+    """
+    fixed = [a for a in cord.path if a.body is None]
+    held = [a for a in cord.path if a.body == bob.name]
+    if len(cord.path) != 2 or cord.drawn != 0 or len(fixed) != 1 or len(held) != 1 \
+            or any(a.kind != "point" for a in cord.path) or held[0].offset != (0, 0):
+        raise NotAlongALine("not a bob on a straight cord from a fixed point")
+    (end,) = fixed
+    below = tidy(end.offset[1] - bob.at[1])
+    if tidy(end.offset[0] - bob.at[0]) != 0 or not below.is_positive:
+        raise NotAlongALine("the bob does not hang straight below the cord's fixed end")
+    x, y = (coords.of(bob.name, k).q for k in ("x", "y"))
+    angle = sp.Symbol("theta", real=True)
+    on_circle = {x: below * sp.sin(angle), y: below * (1 - sp.cos(angle))}  # displacements from where it hangs
+    potential = sum((part.potential(coords) for part in scene.parts), sp.Integer(0)).xreplace(on_circle)
+    torque = tidy(-sp.diff(potential, angle))
+    stiffness = tidy(-sp.diff(torque, angle).xreplace({angle: 0}))
+    if stiffness.is_positive is not True:
+        raise NotAlongALine("not hanging at a stable equilibrium")
+    moment, omega, period, tau, kappa = (sp.Symbol(n) for n in ("I_P", "omega", "T", "tau", "kappa"))
+    about = tidy(bob.mass * below**2)
+    steps = (
+        Step(f"The {bob.name} moves on a circle about the cord's fixed end: its moment of inertia about that point is",
+             (sp.Eq(moment, about),)),
+        Step(f"Turned by an angle from where it hangs, the {bob.name} is pulled back by the torque of its weight about "
+             "the fixed end (the cord's pull acts along the cord, through that point, and has no moment about it); for "
+             "a small angle it is proportional to the angle", (sp.Eq(tau, torque), sp.Eq(tau, -kappa * angle),
+                                                              sp.Eq(kappa, stiffness))),
+        Step("Newton's second law for the rotation about the fixed end is then that of simple harmonic motion, of "
+             "angular frequency and period", (sp.Eq(moment * sp.Symbol("thetaddot"), -kappa * angle),
+                                              sp.Eq(omega, sp.sqrt(kappa / moment)),
+                                              sp.Eq(omega, tidy(sp.sqrt(stiffness / about))),
+                                              sp.Eq(period, 2 * sp.pi / omega))),
+    )
+    return SmallSwing(steps, tidy(sp.sqrt(stiffness / about)), "the cord's fixed end")

@@ -57,8 +57,8 @@ def statics(scene: Scene, coords: Coordinates, newton: Derivation, sample: Calla
         balances = [b for b in balances if isinstance(b, sp.Eq)]
         where = _where(scene, coords, body.name, point)
         equations += balances
-        steps.append(Step(f"The forces on the {body.name} balance, and so do their torques about {where}",
-                          tuple(balances), role="equations", body=body.name))
+        text = f"The forces on the {body.name} balance" + (f", and so do their torques about {where}" if body.rotates else "")
+        steps.append(Step(text, tuple(balances), role="equations", body=body.name))
     forces = sorted({u for e in equations for u in e.free_symbols if u in flipped}, key=str)
     try:
         solved = solve_linear(equations, forces, newton.placed)

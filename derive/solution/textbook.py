@@ -78,6 +78,8 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
             return small_swing(solution.dynamics_scene, solution.coordinates)
         except NotAlongALine:
             return None
+    if any((a.quantity.kind, a.quantity.detail) in SWINGS for a in asks):
+        return _swing_and_balance(solution)
     if not asks or any(a.state is not None or a.zero_for and not quantities.KINDS[a.quantity.kind].own_section
                        or not covered(a.quantity) for a in asks):
         return None
@@ -95,15 +97,43 @@ def route(solution) -> AlongMotion | SmallSwing | TextbookRoute | None:
     return None
 
 
+def _swing_and_balance(solution) -> TextbookRoute | None:
+    """A body hanging at rest on its pivot, asked the period of its small swings and forces at rest (a hoop on a
+    nail: Halliday, Resnick & Walker 10th ed., ch. 15): the small swings by the torque about the pivot, then the
+    forces by the balance at rest; None where either is not the student's route."""
+    others = [a for a in solution.problem.asks.values() if (a.quantity.kind, a.quantity.detail) not in SWINGS]
+    if solution.scene.states or len(solution.regimes) != 1 or any(
+            a.state is not None or a.zero_for or not covered(a.quantity) or quantities.KINDS[a.quantity.kind].own_section
+            for a in others):
+        return None
+    try:
+        swing = small_swing(solution.dynamics_scene, solution.coordinates)
+        balance = statics(solution.dynamics_scene, solution.coordinates, solution.derivations["newton_euler"],
+                          solution._sample, solution._needed_unknowns())
+    except NotAlongALine:
+        return None
+    at_rest = solution.derivations["lagrange"].at(solution.coordinates.at_rest_in_reference())
+    compared = (("omega^2", swing.omega**2, lambda: solution.oscillations["lagrange"].stiffness),
+                *((str(u), value, (lambda u=u: at_rest[u])) for u, value in balance.values.items()))
+    sections = {f"Small oscillations about {swing.about}": tuple(renamed(step, _swing_names(solution)) for step in swing.steps),
+                "The forces at rest, in balance": balance.steps}
+    return TextbookRoute(sections, compared, f"the torque about {swing.about} for the small swings, and the balance "
+                                             "of forces at rest", along=balance)
+
+
+def _swing_names(solution) -> dict[sp.Symbol, sp.Symbol]:
+    """The small swings' period and frequency under the names the question asks them by."""
+    return {sp.Symbol({"period": "T", "omega": "omega"}[a.quantity.detail]): sp.Symbol(a.name)
+            for a in solution.problem.asks.values() if a.quantity.kind == "small_oscillation"}
+
+
 def student_steps(solution) -> dict[str, list[Step]] | None:
     """The student's worked solution by section, or None where it is not written (`route`)."""
     along = solution.textbook_route
     if along is None:
         return None
     if isinstance(along, SmallSwing):  # the period and the frequency under the names the question asks them by
-        change = {sp.Symbol({"period": "T", "omega": "omega"}[a.quantity.detail]): sp.Symbol(a.name)
-                  for a in solution.problem.asks.values() if a.quantity.kind == "small_oscillation"}
-        return {f"Small oscillations about {along.about}": [renamed(step, change) for step in along.steps]}
+        return {f"Small oscillations about {along.about}": [renamed(step, _swing_names(solution)) for step in along.steps]}
     if isinstance(along, TextbookRoute):
         change = names(solution)
         return {title: [renamed(step, change) for step in steps] for title, steps in along.sections.items()}
@@ -161,10 +191,13 @@ def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
         if counts.get(name, 0) > 1 or name == u.name:
             continue
         if name in problem.parameters or name in problem.asks and not _same(solution, name, along.acting[u] * along.values[u]):
-            # the file's f is another thing (the friction along +x): f_1, never f^spool after the body's key
+            # the file's f is another thing (the friction along +x): the ask's own name where an ask is this force
+            # (F for a cord's pull beside a period T), else f_1, never f^spool after the body's key
             owner = u.name.partition("^")[2]
-            name = f"{name}_{solution.dynamics_scene.numbers()[owner]}" if owner in solution.dynamics_scene.bodies else None
-            if name is None or symbol_latex(name) in taken:
+            asked = next((a for a in problem.asks if _same(solution, a, along.acting[u] * along.values[u])), None)
+            name = asked or (f"{name}_{solution.dynamics_scene.numbers()[owner]}" if owner in solution.dynamics_scene.bodies
+                             else None)
+            if name is None or asked is None and symbol_latex(name) in taken:
                 continue
         result[u] = sp.Symbol(name, real=True)
     return result
