@@ -194,7 +194,9 @@ def _plain_names(solution, along: AlongMotion) -> dict[sp.Symbol, sp.Symbol]:
             # the file's f is another thing (the friction along +x): the ask's own name where an ask is this force
             # (F for a cord's pull beside a period T), else f_1, never f^spool after the body's key
             owner = u.name.partition("^")[2]
-            asked = next((a for a in problem.asks if _same(solution, a, along.acting[u] * along.values[u])), None)
+            part = next((c.name for c in solution.dynamics_scene.constraints if u in c.unknowns().values()), None)
+            asked = next((a for a, ask in problem.asks.items() if ask.quantity.target == part is not None
+                          and _same(solution, a, along.acting[u] * along.values[u])), None)
             name = asked or (f"{name}_{solution.dynamics_scene.numbers()[owner]}" if owner in solution.dynamics_scene.bodies
                              else None)
             if name is None or asked is None and symbol_latex(name) in taken:
