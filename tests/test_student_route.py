@@ -613,6 +613,23 @@ def test_a_period_beside_a_force_at_rest_takes_the_swing_and_then_the_balance():
     assert {"omega^2", "R_x^nail", "R_y^nail"} <= compared  # the frequency, and the nail's force at rest
 
 
+def test_a_ball_rolling_in_a_bowl_swings_by_newton_along_its_path_and_the_torque_about_its_center():
+    """Taylor, Classical Mechanics (2005), ch. 7 and Serway & Jewett 9th ed., ch. 15 (a ball rolling near the bottom of
+    a bowl: M a = f - M g sin(phi), I alpha = f r, alpha = -a/r, so omega^2 = g/((1 + I/(M r^2))(R - r)) = 5g/(7(R - r))).
+    It had been the engine's two routes."""
+    from conftest import derived
+
+    solution = derived("ball_in_bowl")
+    (steps,) = solution.student_steps.values()
+    M, g, R, r = _symbols("M", "g", "R", "r")
+    newton, torque, motion = steps
+    assert newton.text.startswith("The ball's center moves on a circle") and "Newton's second law" in newton.text
+    assert torque.text.startswith("The torque about the center") and _same(torque.equations[-1].rhs, 2 * M * r**2 / 5)
+    omega_squared = next(e.rhs for e in motion.equations if str(e.lhs) == "omega**2")
+    assert _same(omega_squared.subs(sp.Symbol("I"), 2 * M * r**2 / 5), 5 * g / (7 * (R - r)))
+    assert "textbook_route" in {c.name for c in solution.checks() if c.passed}
+
+
 def test_an_impact_about_an_axle_gives_the_axles_impulse_by_the_change_of_momentum():
     """A bullet into a door (Young & Freedman ch. 10, "crime bust"), asked the hinge's impulse too: the
     route about the axle had given way to the impulse equations in components; now one more step, the

@@ -29,7 +29,7 @@ from derive.model.scene import Scene
 from derive.parts.contact import Contact
 from derive.parts.cord import Cord
 from derive.parts.pin import Pin
-from derive.parts.surfaces import Plane
+from derive.parts.surfaces import Circle, Plane
 
 
 @dataclass(frozen=True)
@@ -43,13 +43,16 @@ class SmallSwing:
 
 def small_swing(scene: Scene, coords: Coordinates) -> SmallSwing:
     """The route for one body turning about a pin fixed to the ground, or rocking without slipping on
-    a fixed plane (about its point of contact, at rest for the moment: Morin, ch. 8), or a bob on a cord
-    from a fixed point (`_on_a_cord`), placed at rest where it hangs or rests; NotAlongALine for any other
-    scene."""
+    a fixed plane (about its point of contact, at rest for the moment: Morin, ch. 8), a bob on a cord
+    from a fixed point (`_on_a_cord`), or a round body rolling at the bottom of a bowl (`_rolling_in_a_bowl`),
+    placed at rest where it hangs or rests; NotAlongALine for any other scene."""
     bodies = list(scene.bodies.values())
     if len(bodies) == 1 and not bodies[0].rotates and len(scene.constraints) == 1 \
             and isinstance(scene.constraints[0], Cord):
         return _on_a_cord(scene, coords, bodies[0], scene.constraints[0])
+    if len(bodies) == 1 and len(scene.constraints) == 1 and isinstance(scene.constraints[0], Contact) \
+            and scene.constraints[0].rolling and isinstance(scene.surfaces.get(scene.constraints[0].surface), Circle):
+        return _rolling_in_a_bowl(scene, bodies[0], scene.constraints[0])
     held_by = [c for c in scene.constraints if isinstance(c, Pin) and c.to is None
                or isinstance(c, Contact) and c.rolling and c.carrier is None and c.center is not None
                and isinstance(scene.surfaces[c.surface], Plane)]  # a round face off its center of mass: it rocks
@@ -151,3 +154,46 @@ def _on_a_cord(scene: Scene, coords: Coordinates, bob, cord: Cord) -> SmallSwing
                                               sp.Eq(period, 2 * sp.pi / omega))),
     )
     return SmallSwing(steps, tidy(sp.sqrt(stiffness / about)), "the cord's fixed end")
+
+
+def _rolling_in_a_bowl(scene: Scene, body, contact: Contact) -> SmallSwing:
+    """A round body rolling without slipping near the bottom of a bowl, as Taylor (Classical Mechanics, ch. 7)
+    and Serway & Jewett (ch. 15) solve it: its center on a circle of radius rho = R - r about the bowl's center,
+    at an angle phi from the bottom; Newton's second law along that circle, M rho phi'' = f - M g sin(phi), with
+    friction f at the point of contact along it; the torque about the center, I alpha = f r (counter-clockwise
+    positive), where not slipping at the contact makes alpha = -rho phi''/r; f eliminated, (M + I/r^2) rho phi''
+    = -M g sin(phi) ~ -M g phi.
+
+    >>> from derive.language.problem import load
+    >>> from derive.solution.answers import Solution
+    >>> solution = Solution(load("ball_in_bowl"))
+    >>> R, r, g = (solution.problem.parameters[n].symbol for n in ("R", "r", "g"))
+    >>> sp.simplify(small_swing(solution.dynamics_scene, solution.coordinates).omega ** 2 - 5 * g / (7 * (R - r)))
+    0
+    """
+    bowl, radius = scene.surfaces[contact.surface], body.sizes.get("radius")
+    if bowl.side != "inside" or bowl.carrier is not None or bowl.turn != 0 or radius is None or scene.loads \
+            or scene.gravity is None or body.face_center is not None or contact.carrier is not None \
+            or contact.point is not None or contact.center is not None:
+        raise NotAlongALine("not a round body rolling in a fixed bowl under gravity alone")
+    rho = tidy(bowl.path_radius(radius))
+    if tidy(sp.Matrix(body.at) - (bowl.middle - sp.Matrix([0, rho]))) != sp.zeros(2, 1):
+        raise NotAlongALine("not placed at the bottom of the bowl")
+    mass, g, inertia = body.mass, scene.gravity.g, body.inertia
+    phi, phi2, a = sp.Symbol("phi", real=True), sp.Symbol("phiddot"), sp.Symbol("a")
+    alpha, f, moment, omega, period = (sp.Symbol(n) for n in ("alpha", "f", "I", "omega", "T"))
+    frequency = tidy(sp.sqrt(mass * g / ((mass + inertia / radius**2) * rho)))
+    steps = (
+        Step(f"The {body.name}'s center moves on a circle about the bowl's center; at an angle from the bottom, "
+             "Newton's second law along that circle, with the friction at the point of contact along it",
+             (sp.Eq(mass * a, f - mass * g * sp.sin(phi)), sp.Eq(a, rho * phi2))),
+        Step("The torque about the center, counter-clockwise positive: only friction has a moment about it; "
+             f"not slipping at the point of contact, the {body.name} turns the other way, at its center's "
+             "acceleration over its radius", (sp.Eq(moment * alpha, f * radius), sp.Eq(alpha, -a / radius),
+                                              sp.Eq(moment, inertia))),
+        Step("Eliminating the friction, for a small angle the motion is simple harmonic, of angular frequency and "
+             "period", (sp.Eq((mass + moment / radius**2) * a, -mass * g * phi),
+                        sp.Eq(omega**2, mass * g / ((mass + moment / radius**2) * rho)),
+                        sp.Eq(omega, frequency), sp.Eq(period, 2 * sp.pi / omega))),
+    )
+    return SmallSwing(steps, frequency, "the bottom of the bowl")

@@ -158,9 +158,9 @@ class CrossChecks:
             if method is None:
                 raise CheckFailure(f"{self.problem.id}: the torque about the pivot gives omega^2 = {route.omega**2}, "
                                    f"Lagrange's method {engine}")
-            return Check("textbook_route", True, f"torque about the pivot vs Lagrange, {method}", "omega agrees",
-                         "The torque about the pivot gives the same frequency as Lagrange's method and the "
-                         "Newton–Euler equations.")
+            return Check("textbook_route", True, f"small oscillations about {route.about} vs Lagrange, {method}",
+                         "omega agrees", f"The student's route (small oscillations about {route.about}) gives the same "
+                                         "frequency as Lagrange's method and the Newton–Euler equations.")
         if isinstance(route, TextbookRoute):  # a top, a skid, an impact: each finding beside the engine's
             methods = route.agreement(lambda a, b: agree(a, b, points=sample_points(self.problem, sp.Tuple(a, b), count=5)),
                                       lambda what, a, b: CheckFailure(f"{self.problem.id}: the student's route gives "
