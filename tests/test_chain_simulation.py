@@ -52,7 +52,7 @@ def test_every_library_chain_is_simulated_and_agrees(reference):
 
 @pytest.mark.parametrize("reference", TEXTBOOK_CHAINS, ids=lambda p: Path(p).stem)
 def test_every_textbook_chain_is_simulated_and_agrees(reference, monkeypatch):
-    monkeypatch.setenv("DERIVE_TIME_LIMIT", "off")  # the derivations' time is test_textbook's to guard, not this one's
+    monkeypatch.setenv("DERIVE_TIME_LIMIT", "off")  # the derivations' time is derive bench's to measure
     solution, report = _simulated(reference)
     assert report.passed, report.notes
     _covers_the_chain(solution, report)
