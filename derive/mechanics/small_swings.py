@@ -184,7 +184,7 @@ def _rolling_in_a_bowl(scene: Scene, body, contact: Contact) -> SmallSwing:
     alpha, f, moment, omega, period = (sp.Symbol(n) for n in ("alpha", "f", "I", "omega", "T"))
     frequency = tidy(sp.sqrt(mass * g / ((mass + inertia / radius**2) * rho)))
     steps = (
-        Step(f"The {body.name}'s center moves on a circle about the bowl's center; at an angle from the bottom, "
+        Step(f"The {body.name}'s center moves on a circle about the curve's center; at an angle from the bottom, "
              "Newton's second law along that circle, with the friction at the point of contact along it",
              (sp.Eq(mass * a, f - mass * g * sp.sin(phi)), sp.Eq(a, rho * phi2))),
         Step("The torque about the center, counter-clockwise positive: only friction has a moment about it; "
@@ -196,4 +196,4 @@ def _rolling_in_a_bowl(scene: Scene, body, contact: Contact) -> SmallSwing:
                         sp.Eq(omega**2, mass * g / ((mass + moment / radius**2) * rho)),
                         sp.Eq(omega, frequency), sp.Eq(period, 2 * sp.pi / omega))),
     )
-    return SmallSwing(steps, frequency, "the bottom of the bowl")
+    return SmallSwing(steps, frequency, "the bottom of the curve")
