@@ -461,9 +461,9 @@ class Heading:
     tags: tuple[str, ...]
 
 
-def _read_heading(text: str, path: Path) -> tuple[Reader, dict, dict, Heading]:
-    """(the reader, the file's mapping, its parameters, its heading): the YAML, the parameters (the
-    question's placeholders name them) and the heading's fields validated."""
+def _opened(text: str, path: Path) -> tuple[Reader, dict, str, dict]:
+    """(the reader, the file's mapping, its id, its parameters): the YAML, the id and the parameters validated,
+    first of all, in that order."""
     reader = Reader(path)
     try:
         raw = safe_load(text)
@@ -476,13 +476,18 @@ def _read_heading(text: str, path: Path) -> tuple[Reader, dict, dict, Heading]:
     problem_id = reader.text(raw["id"], "id", NAME_LIMIT)
     if not library.ID_PATTERN.fullmatch(problem_id):
         raise reader.fail("id", "an id is letters, digits and _, starting with a letter")
-    parameters = _parameters(reader, raw["parameters"])
+    return reader, raw, problem_id, _parameters(reader, raw["parameters"])
+
+
+def _heading(reader: Reader, raw: dict, problem_id: str) -> Heading:
+    """The heading's fields validated (the question's placeholders name the parameters read): last, after the
+    scene and the asks, so that a file's first error is reported as it always was."""
     try:
         difficulty = labels.read_difficulty(raw["difficulty"], "difficulty") if "difficulty" in raw else ""
         tags = labels.read_tags(raw["tags"], "tags") if "tags" in raw else ()
     except ValueError as error:
-        raise ProblemError(f"{path}: {error}") from None
-    return reader, raw, parameters, Heading(
+        raise ProblemError(f"{reader.path}: {error}") from None
+    return Heading(
         id=problem_id,
         title=reader.text(raw["title"], "title", TITLE_LIMIT),
         topic=reader.text(raw.get("topic", "general"), "topic", TOPIC_LIMIT),
@@ -494,7 +499,7 @@ def _read_heading(text: str, path: Path) -> tuple[Reader, dict, dict, Heading]:
 
 def parse(text: str, path: Path) -> Problem:
     """Validate the text of a problem file; `path` names it in errors."""
-    reader, raw, parameters, head = _read_heading(text, path)
+    reader, raw, problem_id, parameters = _opened(text, path)
     reader.used = set()
     scene = read_scene(reader, raw["scene"])
     asks = _asks(reader, raw["ask"], scene, parameters, raw["question"])
@@ -507,6 +512,7 @@ def parse(text: str, path: Path) -> Problem:
         {key: reader.text(text, f"corrections[{i}].{key}", CORRECTION_LIMIT) for key, text in
          reader.mapping(c, f"corrections[{i}]", keys=CORRECTION).items()}
         for i, c in enumerate(corrections))
+    head = _heading(reader, raw, problem_id)
     return Problem(
         id=head.id,
         title=head.title,
@@ -577,7 +583,7 @@ def load(reference: str | Path) -> Problem:
 def heading(reference: str | Path) -> Heading:
     """The heading of a problem (`Heading`) by file path or library id, its scene not read."""
     path, text = _text(reference)
-    return _read_heading(text, path)[3]
+    return _heading(*_opened(text, path)[:3])
 
 
 def _text(reference: str | Path) -> tuple[Path, str]:
